@@ -1,0 +1,49 @@
+#include "cli.h"
+
+#include <QCoreApplication>
+#include <QGuiApplication>
+#include <QTextStream>
+#include <memory>
+
+namespace lr::cli {
+
+namespace {
+struct Subcommand {
+    const char* name;
+    int (*fn)(const QStringList&);
+    bool needsGui;  // renders with OpenGL: needs a QGuiApplication (and a display, e.g. xvfb-run)
+};
+const Subcommand kSubcommands[] = {
+    {"validate", runValidate, false},
+    {"format", runFormat, false},
+    {"render", runRender, true},
+    {"bench", runBench, true},
+};
+}  // namespace
+
+QString subcommandOf(int argc, char** argv) {
+    if (argc < 2) return {};
+    const QString first = QString::fromLocal8Bit(argv[1]);
+    for (const Subcommand& s : kSubcommands)
+        if (first == QLatin1String(s.name)) return first;
+    return {};
+}
+
+int run(const QString& subcommand, int argc, char** argv) {
+    for (const Subcommand& s : kSubcommands) {
+        if (subcommand != QLatin1String(s.name)) continue;
+        std::unique_ptr<QCoreApplication> app;
+        if (s.needsGui)
+            app = std::make_unique<QGuiApplication>(argc, argv);
+        else
+            app = std::make_unique<QCoreApplication>(argc, argv);
+        QCoreApplication::setApplicationName(QStringLiteral("lightrig"));
+        QStringList args = QCoreApplication::arguments();
+        args.removeFirst();  // program
+        return s.fn(args);   // args[0] is the subcommand name
+    }
+    QTextStream(stderr) << "lightrig: unknown command " << subcommand << '\n';
+    return Usage;
+}
+
+}  // namespace lr::cli

@@ -1,0 +1,170 @@
+// Every lighting formula of LightRig, written once over GLM and templated on the scalar so that the
+// renderer's GLSL (shaders/lighting.glsl, same names, same guards) has a double-precision twin for tests
+// and the accuracy benchmark. Conventions: right-handed OpenGL view space (eye at the origin looking
+// down -Z; a camera-facing normal has z > 0). L = unit vector surface->light, d = distance, N = unit
+// normal, V = unit vector to the eye. Angles in radians. See docs/lighting-models.md.
+//
+// Guards: no formula relies on max(NaN, 0). Every comparison is written so that NaN falls to the safe
+// branch, pow/acos get arguments inside their domains, and normalising a zero vector returns a fallback.
+#pragma once
+
+#include "types.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+#include <limits>
+
+namespace lr::lighting {
+
+template <typename T> using Vec3 = glm::vec<3, T, glm::defaultp>;
+
+// Floor of d² (inverse-square) and of the inverse-polynomial denominator: attenuation never exceeds 1e4.
+template <typename T> constexpr T kMinDenominator = T(1e-4);
+// Narrowest smooth-cone width (cos inner - cos outer) treated as a smooth edge; below it the cone is hard.
+template <typename T> constexpr T kMinConeWidth = T(1e-7);
+
+// x clamped to [0, 1]; NaN -> 0.
+template <typename T> T saturate(T x) { return x > T(0) ? (x < T(1) ? x : T(1)) : T(0); }
+
+// max(x, 0) that maps NaN to 0.
+template <typename T> T positive(T x) { return x > T(0) ? x : T(0); }
+
+// pow(base, exponent) for base >= 0 (negative or NaN base -> 0) and exponent >= 0 (else treated as 0).
+// pow(0, 0) = 1. Results are finite for base in [0, 1], the only range the formulas feed it.
+template <typename T> T safePow(T base, T exponent) {
+    if (!(exponent > T(0))) return T(1);
+    if (!(base > T(0))) return T(0);
+    return std::pow(base, exponent);
+}
+
+// acos with its argument clamped into [-1, 1] (dot products of unit vectors overshoot by an ulp).
+template <typename T> T safeAcos(T c) { return std::acos(c > T(-1) ? (c < T(1) ? c : T(1)) : T(-1)); }
+
+// v / |v|, scale-invariant (works for denormal and huge components); zero, NaN or Inf -> fallback.
+template <typename T> Vec3<T> safeNormalize(Vec3<T> v, Vec3<T> fallback) {
+    const T m = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+    if (!(m > T(0)) || !(m <= std::numeric_limits<T>::max())) return fallback;
+    v /= m;
+    return v / std::sqrt(glm::dot(v, v));
+}
+
+// ---- distance falloff a(d); range < 0 means "no range" where the range is optional ----
+
+// Doc 000: clamp(1 - d/range, 0, 1)^exponent. range <= 0 or d >= range -> 0.
+template <typename T> T falloffRangePower(T d, T range, T exponent) {
+    if (!(d < range)) return T(0);
+    return safePow(saturate(T(1) - d / range), exponent);
+}
+
+// glTF/Filament smooth range window clamp(1 - (d/range)^4, 0, 1)^2; range < 0 -> 1, d >= range -> 0.
+template <typename T> T rangeWindow(T d, T range) {
+    if (range < T(0)) return T(1);
+    if (!(d < range)) return T(0);
+    const T r = d / range, r2 = r * r;
+    const T w = saturate(T(1) - r2 * r2);
+    return w * w;
+}
+
+// Doc 001 (Direct3D): 1 / (c + l d + q d²), denominator floored at kMinDenominator, windowed by range.
+template <typename T> T falloffInversePolynomial(T d, T constant, T linear, T quadratic, T range) {
+    const T w = rangeWindow(d, range);
+    if (!(w > T(0))) return T(0);
+    T denom = constant + linear * d + quadratic * d * d;
+    if (!(denom > kMinDenominator<T>)) denom = kMinDenominator<T>;
+    return w / denom;  // denom = +Inf -> 0
+}
+
+// Doc 003: clamp(1 - (d/range)², 0, 1). range <= 0 or d >= range -> 0.
+template <typename T> T falloffRangeQuadratic(T d, T range) {
+    if (!(d < range)) return T(0);
+    const T r = d / range;
+    return saturate(T(1) - r * r);
+}
+
+// glTF KHR_lights_punctual: 1 / max(d², kMinDenominator), windowed by range.
+template <typename T> T falloffInverseSquare(T d, T range) {
+    const T w = rangeWindow(d, range);
+    if (!(w > T(0))) return T(0);
+    T d2 = d * d;
+    if (!(d2 > kMinDenominator<T>)) d2 = kMinDenominator<T>;
+    return w / d2;
+}
+
+// ---- spot cone s(cosθ), cosθ = dot(-L, spotDirection) ----
+
+// Doc 000: clamp(1 - acos(cosθ)/outer, 0, 1)^exponent. outer <= 0 -> 0.
+template <typename T> T coneAnglePower(T cosTheta, T outer, T exponent) {
+    const T theta = safeAcos(cosTheta);
+    if (!(theta < outer)) return T(0);
+    return safePow(saturate(T(1) - theta / outer), exponent);
+}
+
+// Doc 001 / glTF: clamp((cosθ - cos outer) / (cos inner - cos outer), 0, 1)^exponent, with the cosines
+// precomputed. Outside the outer cone -> 0; a width below kMinConeWidth (inner = outer) -> hard edge.
+template <typename T> T coneSmooth(T cosTheta, T cosInner, T cosOuter, T exponent) {
+    if (!(cosTheta > cosOuter)) return T(0);
+    const T width = cosInner - cosOuter;
+    if (!(width > kMinConeWidth<T>)) return T(1);
+    return safePow(saturate((cosTheta - cosOuter) / width), exponent);
+}
+
+// Doc 003: cosθ >= cos outer ? 1 : 0.
+template <typename T> T coneHard(T cosTheta, T cosOuter) { return cosTheta >= cosOuter ? T(1) : T(0); }
+
+// ---- surface terms ----
+
+template <typename T> T diffuseLambert(T nDotL) { return positive(nDotL); }
+
+// Doc 001: (N·L · 0.5 + 0.5)².
+template <typename T> T diffuseHalfLambert(T nDotL) {
+    const T h = saturate(nDotL * T(0.5) + T(0.5));
+    return h * h;
+}
+
+// Doc 000: max(0, reflect(-L, N)·V)^shininess.
+template <typename T> T specularPhong(Vec3<T> N, Vec3<T> L, Vec3<T> V, T shininess) {
+    const Vec3<T> R = T(2) * glm::dot(N, L) * N - L;  // reflect(-L, N)
+    return safePow(saturate(glm::dot(R, V)), shininess);
+}
+
+// Doc 004: max(0, N·normalize(L + V))^shininess; L = -V gives H = N.
+template <typename T> T specularBlinnPhong(Vec3<T> N, Vec3<T> L, Vec3<T> V, T shininess) {
+    const Vec3<T> H = safeNormalize(L + V, N);
+    return safePow(saturate(glm::dot(N, H)), shininess);
+}
+
+// Doc 000: ((1 - max(0, direction·N)) (1 - max(0, N·V)))^exponent.
+template <typename T> T rimTerm(Vec3<T> direction, Vec3<T> N, Vec3<T> V, T exponent) {
+    const T p1 = T(1) - saturate(glm::dot(direction, N));
+    const T p2 = T(1) - saturate(glm::dot(N, V));
+    return safePow(p1 * p2, exponent);
+}
+
+// ---- tone mapping and output encoding ----
+
+template <typename T> T toneMap(ToneMap op, T x) {
+    if (!(x > T(0))) return T(0);
+    switch (op) {
+    case ToneMap::Clamp: return saturate(x);
+    case ToneMap::Reinhard: return x < std::numeric_limits<T>::max() ? x / (T(1) + x) : T(1);
+    case ToneMap::Aces: {  // Narkowicz 2015 fit
+        if (!(x < T(1e6))) return T(1);
+        return saturate((x * (T(2.51) * x + T(0.03))) / (x * (T(2.43) * x + T(0.59)) + T(0.14)));
+    }
+    }
+    return T(0);
+}
+
+template <typename T> T linearToSrgb(T x) {
+    x = saturate(x);
+    return x <= T(0.0031308) ? T(12.92) * x : T(1.055) * std::pow(x, T(1) / T(2.4)) - T(0.055);
+}
+
+template <typename T> T srgbToLinear(T x) {
+    x = saturate(x);
+    return x <= T(0.04045) ? x / T(12.92) : std::pow((x + T(0.055)) / T(1.055), T(2.4));
+}
+
+}  // namespace lr::lighting

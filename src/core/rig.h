@@ -1,0 +1,77 @@
+// A light rig as the editor, the renderer and the file format see it. Plain data in double precision;
+// angles are stored in degrees as in files (the formulas take radians), directions are unit length.
+#pragma once
+
+#include "types.h"
+
+#include <QString>
+#include <glm/vec3.hpp>
+#include <optional>
+#include <vector>
+
+namespace lr {
+
+struct Falloff {
+    FalloffModel model = FalloffModel::None;
+    double range = -1.0;    // < 0: no range (only for inverse-polynomial and inverse-square, where it is optional)
+    double exponent = 2.0;  // range-power
+    double constant = 1.0, linear = 0.0, quadratic = 0.0;  // inverse-polynomial
+    bool hasRange() const { return range >= 0.0; }
+    bool operator==(const Falloff&) const = default;
+};
+
+struct Cone {
+    ConeModel model = ConeModel::Smooth;
+    double inner = 20.0;  // degrees, half-angle from the axis (smooth only)
+    double outer = 35.0;  // degrees, half-angle from the axis
+    double exponent = 1.0;  // angle-power and smooth
+    bool operator==(const Cone&) const = default;
+};
+
+struct Light {
+    QString name;
+    LightType type = LightType::Point;
+    bool enabled = true;
+    glm::dvec3 color{1.0};
+    double intensity = 1.0;
+    std::optional<double> temperature;  // kelvin, tints color
+    glm::dvec3 position{0.0};            // point, spot
+    glm::dvec3 direction{0.0, -1.0, 0.0};  // spot, directional, rim: where the light travels
+    Falloff falloff;                       // point, spot
+    Cone cone;                             // spot
+    DiffuseModel diffuse = DiffuseModel::Lambert;  // not rim
+    bool specularIsColor = false;  // file wrote an RGB colour rather than a factor
+    glm::dvec3 specular{1.0};      // factor f is stored as (f, f, f)
+    std::optional<glm::dvec3> ambient;  // not rim
+    double rimExponent = 1.3;           // rim
+
+    bool usesPosition() const { return type == LightType::Point || type == LightType::Spot; }
+    bool usesDirection() const { return type != LightType::Point; }
+    bool usesFalloff() const { return usesPosition(); }
+    bool usesCone() const { return type == LightType::Spot; }
+    bool usesSurfaceModels() const { return type != LightType::Rim; }  // diffuse, specular, ambient
+    // The colour actually emitted: color tinted by temperature (if any), linear RGB.
+    glm::dvec3 effectiveColor() const;
+    bool operator==(const Light&) const = default;
+};
+
+struct Shading {
+    SpecularModel specular = SpecularModel::Phong;
+    ViewerModel viewer = ViewerModel::Local;
+    double shininess = 32.0;  // used when the material has none
+    bool operator==(const Shading&) const = default;
+};
+
+struct Rig {
+    QString name;
+    RigSpace space = RigSpace::World;
+    glm::dvec3 ambient{0.0};
+    Shading shading;
+    std::vector<Light> lights;
+    bool operator==(const Rig&) const = default;
+};
+
+// A default-constructed light of the given type with sensible, valid parameters (used by "Add light").
+Light makeLight(LightType type, const QString& name);
+
+}  // namespace lr

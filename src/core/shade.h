@@ -1,0 +1,105 @@
+// Whole-surface shading: one light's contribution and the sum over a rig, templated on the scalar.
+// This is the reference the GPU is tested and benchmarked against (evaluated in double), and the exact
+// twin of shaders/lighting.glsl's shadeLight()/shadeSurface().
+#pragma once
+
+#include "lighting.h"
+
+#include <span>
+
+namespace lr::lighting {
+
+// One light prepared for evaluation: view-space geometry, intensity and temperature folded into colours,
+// angles as cosines/radians. Built from a Light by prepareLights() (prepare.h).
+template <typename T> struct ShadeLight {
+    LightType type = LightType::Point;
+    Vec3<T> position{0};   // view space (point, spot)
+    Vec3<T> direction{0, 0, -1};  // view space, unit: where the light travels (spot, directional, rim)
+    Vec3<T> color{1};      // effective colour × intensity
+    Vec3<T> specular{1};   // Sc × intensity
+    Vec3<T> ambient{0};    // Ac × intensity
+    FalloffModel falloff = FalloffModel::None;
+    T range = T(-1), falloffExponent = T(2), constant = T(1), linear = T(0), quadratic = T(0);
+    ConeModel cone = ConeModel::Smooth;
+    T cosInner = T(1), cosOuter = T(0), outer = T(1), coneExponent = T(1);  // outer in radians
+    DiffuseModel diffuse = DiffuseModel::Lambert;
+    T rimExponent = T(1.3);
+};
+
+template <typename T> struct Surface {
+    Vec3<T> position{0};  // view space
+    Vec3<T> normal{0, 0, 1};  // view space, unit
+    Vec3<T> albedo{1};
+    Vec3<T> specular{1};  // material specular colour (ks)
+    Vec3<T> emissive{0};
+    T shininess = T(32);
+};
+
+template <typename T> struct ShadeSettings {
+    SpecularModel specular = SpecularModel::Phong;
+    ViewerModel viewer = ViewerModel::Local;
+    Vec3<T> ambient{0};
+    T distanceScale = T(1);  // 1 / bounding radius for rigs in model space, else 1
+};
+
+template <typename T> T evalFalloff(const ShadeLight<T>& l, T d) {
+    switch (l.falloff) {
+    case FalloffModel::None: return T(1);
+    case FalloffModel::RangePower: return falloffRangePower(d, l.range, l.falloffExponent);
+    case FalloffModel::InversePolynomial:
+        return falloffInversePolynomial(d, l.constant, l.linear, l.quadratic, l.range);
+    case FalloffModel::RangeQuadratic: return falloffRangeQuadratic(d, l.range);
+    case FalloffModel::InverseSquare: return falloffInverseSquare(d, l.range);
+    }
+    return T(0);
+}
+
+template <typename T> T evalCone(const ShadeLight<T>& l, T cosTheta) {
+    switch (l.cone) {
+    case ConeModel::AnglePower: return coneAnglePower(cosTheta, l.outer, l.coneExponent);
+    case ConeModel::Smooth: return coneSmooth(cosTheta, l.cosInner, l.cosOuter, l.coneExponent);
+    case ConeModel::Hard: return coneHard(cosTheta, l.cosOuter);
+    }
+    return T(0);
+}
+
+template <typename T> Vec3<T> viewVector(const ShadeSettings<T>& s, const Vec3<T>& P) {
+    const Vec3<T> infinite(0, 0, 1);
+    return s.viewer == ViewerModel::Local ? safeNormalize(-P, infinite) : infinite;
+}
+
+// Radiance one light adds at the surface (linear, HDR).
+template <typename T>
+Vec3<T> shadeLight(const ShadeLight<T>& l, const Surface<T>& s, const ShadeSettings<T>& st, const Vec3<T>& V) {
+    const Vec3<T>& N = s.normal;
+    if (l.type == LightType::Rim) return l.color * rimTerm(l.direction, N, V, l.rimExponent);
+
+    Vec3<T> L = -l.direction;
+    T attenuation = T(1);
+    if (l.type != LightType::Directional) {
+        const Vec3<T> toLight = l.position - s.position;
+        const T d = glm::length(toLight);
+        L = safeNormalize(toLight, N);  // a light on the surface shines along the normal
+        attenuation = evalFalloff(l, d * st.distanceScale);
+        if (l.type == LightType::Spot) attenuation *= evalCone(l, glm::dot(-L, l.direction));
+        if (!(attenuation > T(0))) return Vec3<T>(0);
+    }
+    const T nDotL = glm::dot(N, L);
+    const T D = l.diffuse == DiffuseModel::Lambert ? diffuseLambert(nDotL) : diffuseHalfLambert(nDotL);
+    T S = T(0);
+    if (nDotL > T(0))
+        S = st.specular == SpecularModel::Phong ? specularPhong(N, L, V, s.shininess)
+                                                 : specularBlinnPhong(N, L, V, s.shininess);
+    return attenuation * (l.color * s.albedo * D + l.specular * s.specular * S + l.ambient * s.albedo);
+}
+
+// Scene ambient + every light + emissive.
+template <typename T>
+Vec3<T> shadeSurface(const Surface<T>& s, std::span<const ShadeLight<T>> lights, const ShadeSettings<T>& st) {
+    const Vec3<T> V = viewVector(st, s.position);
+    Vec3<T> sum = st.ambient * s.albedo;
+    for (const ShadeLight<T>& l : lights) sum += shadeLight(l, s, st, V);
+    return sum + s.emissive;
+}
+
+}  // namespace lr::lighting

@@ -1,0 +1,60 @@
+// The vocabulary of LightRig's lighting model: light types and the per-light formula choices.
+// Each enum has a stable file name (used in rig JSON, GLSL #defines and the UI) via toString/fromString.
+#pragma once
+
+#include <QString>
+#include <array>
+#include <optional>
+
+namespace lr {
+
+enum class LightType { Point, Spot, Directional, Rim };
+enum class FalloffModel { None, RangePower, InversePolynomial, RangeQuadratic, InverseSquare };
+enum class ConeModel { AnglePower, Smooth, Hard };
+enum class DiffuseModel { Lambert, HalfLambert };
+enum class SpecularModel { Phong, BlinnPhong };
+enum class ViewerModel { Local, Infinite };
+enum class RigSpace { World, Model };
+enum class ToneMap { Clamp, Reinhard, Aces };
+
+template <typename E> struct EnumNames;  // specialised below: static constexpr std::array names
+
+#define LR_ENUM_NAMES(E, ...)                                                                               \
+    template <> struct EnumNames<E> {                                                                       \
+        static constexpr std::array names{__VA_ARGS__};                                                     \
+    };
+LR_ENUM_NAMES(LightType, "point", "spot", "directional", "rim")
+LR_ENUM_NAMES(FalloffModel, "none", "range-power", "inverse-polynomial", "range-quadratic", "inverse-square")
+LR_ENUM_NAMES(ConeModel, "angle-power", "smooth", "hard")
+LR_ENUM_NAMES(DiffuseModel, "lambert", "half-lambert")
+LR_ENUM_NAMES(SpecularModel, "phong", "blinn-phong")
+LR_ENUM_NAMES(ViewerModel, "local", "infinite")
+LR_ENUM_NAMES(RigSpace, "world", "model")
+LR_ENUM_NAMES(ToneMap, "clamp", "reinhard", "aces")
+#undef LR_ENUM_NAMES
+
+template <typename E> constexpr int enumCount() { return int(EnumNames<E>::names.size()); }
+
+template <typename E> QString toString(E value) {
+    return QString::fromLatin1(EnumNames<E>::names[size_t(value)]);
+}
+
+template <typename E> std::optional<E> fromString(const QString& name) {
+    const auto& names = EnumNames<E>::names;
+    for (size_t i = 0; i < names.size(); ++i)
+        if (name == QLatin1String(names[i])) return E(i);
+    return std::nullopt;
+}
+
+// "a", "b" or "c" — for error messages listing the accepted names.
+template <typename E> QString allowedNames() {
+    QString out;
+    const auto& names = EnumNames<E>::names;
+    for (size_t i = 0; i < names.size(); ++i) {
+        if (i) out += (i + 1 == names.size()) ? QStringLiteral(" or ") : QStringLiteral(", ");
+        out += QLatin1Char('"') + QLatin1String(names[i]) + QLatin1Char('"');
+    }
+    return out;
+}
+
+}  // namespace lr
