@@ -1,0 +1,40 @@
+// Rig files: JSON, format "lightrig", version 1 (docs/rig-format.md). Reading validates everything and
+// reports every error as "FILE: json.path: reason"; writing is canonical (stable key order, only the
+// fields a light's type and models use) and atomic.
+#pragma once
+
+#include "rig.h"
+
+#include <QByteArray>
+#include <QString>
+#include <QStringList>
+#include <optional>
+
+namespace lr {
+
+constexpr int kRigFormatVersion = 1;
+constexpr qint64 kMaxRigFileBytes = 16 * 1024 * 1024;
+constexpr int kMaxRigLights = 4096;
+
+struct RigReadResult {
+    std::optional<Rig> rig;  // set only when errors is empty
+    QStringList errors;      // "FILE: lights[2].falloff.range: must be a finite number > 0, got -5"
+    QStringList warnings;    // unknown keys and the like, same format
+    bool ok() const { return rig.has_value(); }
+};
+
+// displayName is the FILE part of messages (usually the file name as the user gave it).
+RigReadResult readRigJson(const QByteArray& data, const QString& displayName);
+RigReadResult readRigFile(const QString& filePath);
+
+QByteArray writeRigJson(const Rig& rig);
+// Atomic (QSaveFile): on failure the previous file is intact and *error says why (naming the file).
+bool saveRigFile(const Rig& rig, const QString& filePath, QString* error);
+
+// Built-in presets (resources/presets/*.json embedded as :/resources/presets/NAME.json).
+QStringList builtinPresetNames();  // sorted, without ".json"
+QString builtinPresetPath(const QString& name);
+RigReadResult readBuiltinPreset(const QString& name);
+Rig defaultRig();  // the "default" preset; a built-in fallback if it were ever unreadable
+
+}  // namespace lr
