@@ -1,0 +1,107 @@
+// Editable values of a light and of a rig, addressed by id, as QVariants: one vocabulary shared by the undo
+// commands, the light table model and the properties dock. Values are validated here, with the rig format's
+// ranges (docs/rig-format.md), before any command is created: nothing invalid, NaN, Inf or out of range is
+// ever stored.
+//
+// Value types (what lightValue() returns and what validate/apply accept):
+//   Name                 QString (non-empty after trimming, <= kMaxLightNameLength characters)
+//   Type                 lr::LightType (also accepts int index or the file name, e.g. "spot")
+//   Enabled              bool
+//   Color, Position,     glm::dvec3 (also accepts QVector3D; Color also accepts QColor, read as sRGB and
+//   Direction              converted to linear). Direction must be non-zero and is normalised when applied.
+//   Ambient              glm::dvec3, or an invalid QVariant for "none"
+//   Temperature          double kelvin, or an invalid QVariant for "none"
+//   Specular             double factor f (stored as (f,f,f)), or glm::dvec3 colour (specularIsColor)
+//   FalloffModel, ConeModel, Diffuse   the enum (or int index, or file name)
+//   FalloffRange         double > 0, or an invalid QVariant for "no range" (inverse-polynomial, inverse-square)
+//   everything else      double
+// Enums from types.h, RigSpace/SpecularModel/ViewerModel likewise for rig values.
+#pragma once
+
+#include "core/rig.h"
+
+#include <QColor>
+#include <QMetaType>
+#include <QString>
+#include <QVariant>
+#include <glm/vec3.hpp>
+
+Q_DECLARE_METATYPE(glm::dvec3)
+
+namespace lr {
+
+enum class LightProperty {
+    Name,
+    Type,
+    Enabled,
+    Color,
+    Intensity,
+    Temperature,
+    Position,
+    Direction,
+    FalloffModel,
+    FalloffRange,
+    FalloffExponent,
+    FalloffConstant,
+    FalloffLinear,
+    FalloffQuadratic,
+    ConeModel,
+    ConeInner,
+    ConeOuter,
+    ConeExponent,
+    Diffuse,
+    Specular,
+    Ambient,
+    RimExponent,
+    Any  // not a property: "several or all values of the light changed" (in RigChange only)
+};
+constexpr int kLightPropertyCount = int(LightProperty::Any);
+
+enum class RigProperty { Name, Space, Ambient, SpecularModel, ViewerModel, Shininess, Any };
+constexpr int kRigPropertyCount = int(RigProperty::Any);
+
+// Limits the editor enforces (at least as strict as the rig reader, so a saved rig always loads again).
+constexpr int kMaxLightNameLength = 256;
+constexpr double kMaxColorComponent = 1e6;   // linear RGB, HDR allowed
+constexpr double kMaxIntensity = 1e6;
+constexpr double kMinTemperature = 1000.0, kMaxTemperature = 40000.0;  // kelvin
+constexpr double kMaxCoordinate = 1e12;      // |position component|, range
+constexpr double kMaxExponent = 1000.0;      // falloff, cone and rim exponents (all > 0)
+constexpr double kMaxPolynomialCoefficient = 1e12;
+constexpr double kMaxShininess = 1e4;        // > 0
+
+// Human-readable name for undo texts and messages: "intensity", "cone outer angle".
+QString lightPropertyName(LightProperty property);
+QString rigPropertyName(RigProperty property);
+
+// Whether the property means anything for this light (Position: point/spot; Cone*: spot; Falloff*: point/spot;
+// Diffuse/Specular/Ambient: not rim; RimExponent: rim; the rest: all). Commands only touch lights where the
+// property applies.
+bool lightPropertyApplies(const Light& light, LightProperty property);
+
+// The light's current value, in the types listed above.
+QVariant lightValue(const Light& light, LightProperty property);
+QVariant rigValue(const Rig& rig, RigProperty property);
+
+// Context-free check of type and range: empty string when valid, else a reason such as
+// "intensity must be a finite number between 0 and 1e+06, got -1".
+QString validateLightValue(LightProperty property, const QVariant& value);
+// Also checks the light's other values (a smooth cone's inner <= outer, "no range" only for the falloff models
+// that allow it, at least one positive inverse-polynomial coefficient).
+QString validateLightValue(const Light& light, LightProperty property, const QVariant& value);
+QString validateRigValue(RigProperty property, const QVariant& value);
+// Every value of a light / a rig (used for rigs that come from elsewhere: presets, model imports).
+QString validateLight(const Light& light);
+QString validateRig(const Rig& rig);
+
+// Returns the light with the value applied (call only with a value that validated for this light). Keeps the
+// light consistent: a falloff model that needs a range gets one, a cone's inner angle follows its outer angle
+// down, a direction is normalised.
+Light withLightValue(const Light& light, LightProperty property, const QVariant& value);
+void applyRigValue(Rig& rig, RigProperty property, const QVariant& value);
+
+// Linear RGB (HDR) <-> a displayable sRGB QColor. HDR colours are scaled down by their largest component.
+QColor displayColor(const glm::dvec3& linear);
+glm::dvec3 linearFromDisplayColor(const QColor& color);
+
+}  // namespace lr

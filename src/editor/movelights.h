@@ -1,0 +1,32 @@
+// Reordering (drag and drop in the light table) as one undo step: any set of rows is moved to become one
+// contiguous block, in its current order, before the light now at index destination (0..count). Executed as
+// block moves, so views receive rowsMoved, not resets.
+#pragma once
+
+#include "editor/document.h"
+
+#include <QUndoCommand>
+#include <memory>
+
+namespace lr {
+
+class MoveLights : public QUndoCommand {
+public:
+    // nullptr and *error when rows are empty/out of range or destination is outside 0..lightCount(), or when
+    // the move would change nothing (*error empty then).
+    static std::unique_ptr<MoveLights> create(Document* document, const QList<int>& rows, int destination,
+                                              QString* error = nullptr);
+    void undo() override;
+    void redo() override;
+
+    struct BlockMove {
+        int first, count, destination;  // destination as in beginMoveRows (index before the move)
+    };
+
+private:
+    MoveLights(Document* document, QList<BlockMove> moves, int count);
+    Document* m_doc;
+    QList<BlockMove> m_moves;
+};
+
+}  // namespace lr
