@@ -152,6 +152,7 @@ private:
     void moveLightBlock(int first, int count, int destination);  // destination as in beginMoveRows
     void setRigValueNow(RigProperty property, const QVariant& value);
     void resetRig(const Rig& rig, const QList<LightId>& ids);
+    void resetDocument(const Rig& rig, const QString& filePath);
     bool pushChecked(QUndoCommand* command, QString* error, const QString& reason);
     void pruneTransientState();
 
