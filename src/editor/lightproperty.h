@@ -19,6 +19,7 @@
 #pragma once
 
 #include "core/rig.h"
+#include "core/rigjson.h"
 
 #include <QColor>
 #include <QMetaType>
@@ -60,15 +61,15 @@ constexpr int kLightPropertyCount = int(LightProperty::Any);
 enum class RigProperty { Name, Space, Ambient, SpecularModel, ViewerModel, Shininess, Any };
 constexpr int kRigPropertyCount = int(RigProperty::Any);
 
-// Limits the editor enforces (at least as strict as the rig reader, so a saved rig always loads again).
-constexpr int kMaxLightNameLength = 256;
-constexpr double kMaxColorComponent = 1e6;   // linear RGB, HDR allowed
-constexpr double kMaxIntensity = 1e6;
+// Limits the editor enforces: the rig format's own (core/rigjson.h), so a saved rig always loads again.
+constexpr int kMaxLightNameLength = kMaxRigNameLength;  // characters
+constexpr double kMaxColorComponent = kMaxRigIntensity; // linear RGB, HDR allowed; also specular, ambient
+constexpr double kMaxIntensity = kMaxRigIntensity;
 constexpr double kMinTemperature = 1000.0, kMaxTemperature = 40000.0;  // kelvin
-constexpr double kMaxCoordinate = 1e12;      // |position component|, range
-constexpr double kMaxExponent = 1000.0;      // falloff, cone and rim exponents (all > 0)
-constexpr double kMaxPolynomialCoefficient = 1e12;
-constexpr double kMaxShininess = 1e4;        // > 0
+constexpr double kMaxCoordinate = kMaxRigLength;        // |position component|, range
+constexpr double kMaxExponent = kMaxRigExponent;        // falloff, cone and rim exponents (all > 0)
+constexpr double kMaxPolynomialCoefficient = kMaxRigLength;
+constexpr double kMaxShininess = kMaxRigExponent;       // > 0
 
 // Human-readable name for undo texts and messages: "intensity", "cone outer angle".
 QString lightPropertyName(LightProperty property);
