@@ -183,5 +183,3 @@ private:
 };
 
 }  // namespace lr
-
-Q_DECLARE_METATYPE(lr::RigChange)

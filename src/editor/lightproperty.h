@@ -15,7 +15,8 @@
 //   FalloffModel, ConeModel, Diffuse   the enum (or int index, or file name)
 //   FalloffRange         double > 0, or an invalid QVariant for "no range" (inverse-polynomial, inverse-square)
 //   everything else      double
-// Enums from types.h, RigSpace/SpecularModel/ViewerModel likewise for rig values.
+// Enums from types.h, RigSpace/SpecularModel/ViewerModel likewise for rig values. (Qt 6 needs no
+// Q_DECLARE_METATYPE for glm::dvec3 in a QVariant; declaring it here would clash with earlier implicit uses.)
 #pragma once
 
 #include "core/rig.h"
@@ -26,8 +27,6 @@
 #include <QString>
 #include <QVariant>
 #include <glm/vec3.hpp>
-
-Q_DECLARE_METATYPE(glm::dvec3)
 
 namespace lr {
 
