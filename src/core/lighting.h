@@ -43,11 +43,15 @@ template <typename T> T safePow(T base, T exponent) {
 template <typename T> T safeAcos(T c) { return std::acos(c > T(-1) ? (c < T(1) ? c : T(1)) : T(-1)); }
 
 // v / |v|, scale-invariant (works for denormal and huge components); zero, NaN or Inf -> fallback.
+// After the division by the largest magnitude m one component is exactly ±1, so dot(v, v) is in [1, 3]
+// unless a component is NaN (which max() may skip): the second test catches that.
 template <typename T> Vec3<T> safeNormalize(Vec3<T> v, Vec3<T> fallback) {
     const T m = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
     if (!(m > T(0)) || !(m <= std::numeric_limits<T>::max())) return fallback;
     v /= m;
-    return v / std::sqrt(glm::dot(v, v));
+    const T s = glm::dot(v, v);
+    if (!(s >= T(1))) return fallback;
+    return v / std::sqrt(s);
 }
 
 // ---- distance falloff a(d); range < 0 means "no range" where the range is optional ----
@@ -101,21 +105,24 @@ template <typename T> T coneAnglePower(T cosTheta, T outer, T exponent) {
     return safePow(saturate(T(1) - theta / outer), exponent);
 }
 
-// Doc 001 / glTF: clamp((cosθ - cos outer) / (cos inner - cos outer), 0, 1)^exponent, with the cosines
-// precomputed. Outside the outer cone -> 0; a width below kMinConeWidth (inner = outer) -> hard edge.
-template <typename T> T coneSmooth(T cosTheta, T cosInner, T cosOuter, T exponent) {
-    if (!(cosTheta > cosOuter)) return T(0);
-    const T width = cosInner - cosOuter;
-    if (!(width > kMinConeWidth<T>)) return T(1);
-    return safePow(saturate((cosTheta - cosOuter) / width), exponent);
-}
-
 // Doc 003: cosθ >= cos outer ? 1 : 0.
 template <typename T> T coneHard(T cosTheta, T cosOuter) { return cosTheta >= cosOuter ? T(1) : T(0); }
 
+// Doc 001 / glTF: clamp((cosθ - cos outer) / (cos inner - cos outer), 0, 1)^exponent, with the cosines
+// precomputed. Outside the outer cone -> 0 (also with exponent 0); a width below kMinConeWidth
+// (inner = outer, or a cone too narrow for T to resolve) -> exactly the hard cone, edge included.
+template <typename T> T coneSmooth(T cosTheta, T cosInner, T cosOuter, T exponent) {
+    const T width = cosInner - cosOuter;
+    if (!(width > kMinConeWidth<T>)) return coneHard(cosTheta, cosOuter);
+    if (!(cosTheta > cosOuter)) return T(0);
+    return safePow(saturate((cosTheta - cosOuter) / width), exponent);
+}
+
 // ---- surface terms ----
 
-template <typename T> T diffuseLambert(T nDotL) { return positive(nDotL); }
+// Docs 003/004: N·L clamped to [0, 1] (Direct3D's saturate). The upper clamp matters: with float unit
+// vectors N·L can exceed 1 by an ulp or two (dot(normalize(a), normalize(a)) > 1).
+template <typename T> T diffuseLambert(T nDotL) { return saturate(nDotL); }
 
 // Doc 001: (N·L · 0.5 + 0.5)².
 template <typename T> T diffuseHalfLambert(T nDotL) {

@@ -78,9 +78,14 @@ Vec3<T> shadeLight(const ShadeLight<T>& l, const Surface<T>& s, const ShadeSetti
     T attenuation = T(1);
     if (l.type != LightType::Directional) {
         const Vec3<T> toLight = l.position - s.position;
-        const T d = glm::length(toLight);
         L = safeNormalize(toLight, N);  // a light on the surface shines along the normal
-        attenuation = evalFalloff(l, d * st.distanceScale);
+        // |toLight| as dot(toLight, L): no squared intermediate, so no overflow or underflow where
+        // glm::length's would (float: |toLight| > 1.8e19 or < 1e-19), and one sqrt fewer. An overflowing
+        // distance (positions more than ~1.7e38 apart, where L falls back to N) becomes the largest finite
+        // value: every falloff then returns its limit.
+        T d = glm::dot(toLight, L) * st.distanceScale;
+        if (!(std::abs(d) <= std::numeric_limits<T>::max())) d = std::numeric_limits<T>::max();
+        attenuation = evalFalloff(l, d);
         if (l.type == LightType::Spot) attenuation *= evalCone(l, glm::dot(-L, l.direction));
         if (!(attenuation > T(0))) return Vec3<T>(0);
     }
