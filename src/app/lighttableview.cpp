@@ -1,0 +1,61 @@
+#include "app/lighttableview.h"
+
+#include "editor/lighttablemodel.h"
+
+#include <QDropEvent>
+#include <QHeaderView>
+#include <QItemSelectionModel>
+#include <algorithm>
+
+namespace lr {
+
+LightSortProxy::LightSortProxy(LightTableModel* source, QObject* parent)
+    : QSortFilterProxyModel(parent), m_source(source) {
+    setSourceModel(source);
+    setSortRole(LightTableModel::SortRole);
+    setSortCaseSensitivity(Qt::CaseInsensitive);
+    setDynamicSortFilter(true);
+}
+
+QList<int> LightSortProxy::selectedSourceRows() const {
+    QList<int> rows;
+    if (!m_selection) return rows;
+    for (const QModelIndex& i : m_selection->selectedRows()) rows << mapToSource(i).row();
+    std::sort(rows.begin(), rows.end());
+    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+    return rows;
+}
+
+bool LightSortProxy::setData(const QModelIndex& index, const QVariant& value, int role) {
+    if (!index.isValid()) return false;
+    const int row = mapToSource(index).row();
+    const QList<int> rows = selectedSourceRows();
+    if (rows.size() > 1 && rows.contains(row)) return m_source->setDataForRows(rows, index.column(), value, role);
+    return QSortFilterProxyModel::setData(index, value, role);
+}
+
+LightTableView::LightTableView(QWidget* parent) : QTableView(parent) {
+    setSelectionBehavior(SelectRows);
+    setSelectionMode(ExtendedSelection);
+    setDragEnabled(true);
+    setAcceptDrops(true);
+    setDragDropMode(DragDrop);  // the model accepts only its own rows (MoveAction)
+    setDefaultDropAction(Qt::MoveAction);
+    setDragDropOverwriteMode(false);  // drops land between rows
+    setDropIndicatorShown(true);
+    setEditTriggers(DoubleClicked | EditKeyPressed | SelectedClicked);
+    setAlternatingRowColors(true);
+    setWordWrap(false);
+    verticalHeader()->hide();
+    verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 8);
+    horizontalHeader()->setHighlightSections(false);
+    horizontalHeader()->setStretchLastSection(true);
+}
+
+void LightTableView::dropEvent(QDropEvent* event) {
+    QTableView::dropEvent(event);
+    // IgnoreAction (always allowed, unlike Copy when only Move was offered): QDrag::exec then returns no move.
+    if (event->isAccepted() && event->dropAction() == Qt::MoveAction) event->setDropAction(Qt::IgnoreAction);
+}
+
+}  // namespace lr
