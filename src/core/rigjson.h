@@ -15,6 +15,11 @@ namespace lr {
 constexpr int kRigFormatVersion = 1;
 constexpr qint64 kMaxRigFileBytes = 16 * 1024 * 1024;
 constexpr int kMaxRigLights = 4096;
+// Value limits of the format (docs/rig-format.md), for editors that want to stay within them.
+constexpr int kMaxRigNameLength = 256;       // rig and light names, in characters (code points)
+constexpr double kMaxRigIntensity = 1e6;     // intensity, colour components, specular, ambient
+constexpr double kMaxRigLength = 1e12;       // |position components|, ranges, inverse-polynomial terms
+constexpr double kMaxRigExponent = 1e4;      // falloff, cone and rim exponents, shininess
 
 struct RigReadResult {
     std::optional<Rig> rig;  // set only when errors is empty

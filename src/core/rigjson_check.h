@@ -1,0 +1,97 @@
+// Validation helpers for the rig reader (private to rigjson*.cpp): a message collector that formats
+// "FILE: json.path: reason", typed value readers that report what they expected and what they got,
+// and ObjectView, which tracks the keys an object's reader used so the rest become warnings.
+#pragma once
+
+#include "rigjson.h"
+#include "rigjson_json.h"
+#include "types.h"
+
+#include <glm/vec3.hpp>
+#include <optional>
+
+namespace lr::rigjson {
+
+constexpr int kMaxMessages = 200;  // errors (and warnings) listed per file; the rest are counted
+
+// A closed or open bound on a number; infinite values mean "no bound".
+struct Interval {
+    double min = -std::numeric_limits<double>::infinity();
+    bool minInclusive = true;
+    double max = std::numeric_limits<double>::infinity();
+    bool maxInclusive = true;
+    QString describe() const;  // "a finite number > 0 and <= 90"
+    bool contains(double v) const;
+};
+inline Interval positive(double max) { return {0.0, false, max, true}; }
+inline Interval nonNegative(double max) { return {0.0, true, max, true}; }
+
+class Checker {
+public:
+    Checker(const QByteArray& source, const QString& file) : m_source(source), m_file(file) {}
+
+    void error(const QString& path, const QString& reason);
+    void warning(const QString& path, const QString& reason);
+    void fileError(const QString& reason);  // about the whole file: "FILE: reason"
+    bool hasErrors() const { return !m_errors.isEmpty(); }
+    RigReadResult result(std::optional<Rig> rig) const;
+
+    QString describe(const json::Value& v) const { return json::describe(v, m_source); }
+    void expected(const json::Value& v, const QString& path, const QString& what) {
+        error(path, QStringLiteral("must be %1, got %2").arg(what, describe(v)));
+    }
+
+    std::optional<double> number(const json::Value& v, const QString& path, const Interval& in);
+    std::optional<bool> boolean(const json::Value& v, const QString& path);
+    std::optional<QString> name(const json::Value& v, const QString& path);
+    std::optional<glm::dvec3> color(const json::Value& v, const QString& path);
+    std::optional<glm::dvec3> point(const json::Value& v, const QString& path);      // |x| <= kMaxRigLength
+    std::optional<glm::dvec3> direction(const json::Value& v, const QString& path);  // non-zero, normalised
+    bool isObject(const json::Value& v, const QString& path);
+
+    template <typename E> std::optional<E> enumValue(const json::Value& v, const QString& path) {
+        if (v.kind == json::Value::Kind::String)
+            if (const auto e = fromString<E>(v.string)) return e;
+        expected(v, path, allowedNames<E>());
+        return std::nullopt;
+    }
+
+private:
+    std::optional<glm::dvec3> vec3(const json::Value& v, const QString& path, const Interval& in,
+                                   const QString& what);
+    const QByteArray& m_source;
+    QString m_file;
+    QStringList m_errors, m_warnings;
+    int m_droppedErrors = 0, m_droppedWarnings = 0;
+};
+
+// One JSON object being read: take() the keys the format defines for it, reject() the ones it defines
+// elsewhere, and finish() to warn about the rest.
+class ObjectView {
+public:
+    ObjectView(Checker& checker, const json::Value& object, const QString& path);
+
+    const json::Value* take(const char* key);  // first occurrence (duplicates are parse errors)
+    QString path(const char* key) const { return json::appendKey(m_path, QString::fromLatin1(key)); }
+    const QString& path() const { return m_path; }
+    void reject(const char* key, const QString& reason);  // present -> error at path.key
+    void finish();  // every key not taken or rejected -> "unknown key (ignored)" warning
+
+    // take() + the typed reader; leaves `out` alone when the key is absent or invalid.
+    template <typename T, typename Read> void read(const char* key, T& out, Read&& reader) {
+        if (const json::Value* v = take(key))
+            if (auto r = reader(*v, path(key))) out = *r;
+    }
+
+private:
+    Checker& m_checker;
+    const json::Value& m_object;
+    QString m_path;
+    std::vector<bool> m_used;
+};
+
+// Unit length to double precision: vectors already within 1e-12 of unit length are kept bit for bit, so
+// that load -> save -> load is exact; others are scaled (safely for tiny and huge components).
+glm::dvec3 normalizeDirection(const glm::dvec3& v);
+
+}  // namespace lr::rigjson

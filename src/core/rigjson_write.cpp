@@ -1,0 +1,117 @@
+// writeRigJson: the canonical form of a rig file (docs/rig-format.md, "Canonical form"). Fixed key order,
+// only the fields a light's type and models use, shortest round-trip numbers, two-space indentation,
+// one light key per line, small objects and vectors on one line, a final newline.
+#include "rigjson.h"
+#include "rigjson_json.h"
+
+#include <utility>
+#include <vector>
+
+namespace lr {
+
+namespace {
+
+using Fields = std::vector<std::pair<const char*, QByteArray>>;
+
+QByteArray num(double v) { return json::formatNumber(v); }
+QByteArray str(const QString& s) { return json::quote(s); }
+template <typename E> QByteArray name(E e) { return json::quote(toString(e)); }
+QByteArray vec(const glm::dvec3& v) { return '[' + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + ']'; }
+
+QByteArray inlineObject(const Fields& fields) {
+    QByteArray out = "{";
+    for (size_t i = 0; i < fields.size(); ++i) {
+        if (i) out += ", ";
+        out += '"' + QByteArray(fields[i].first) + "\": " + fields[i].second;
+    }
+    return out + '}';
+}
+
+QByteArray blockObject(const Fields& fields, const QByteArray& indent) {
+    QByteArray out = "{\n";
+    for (size_t i = 0; i < fields.size(); ++i) {
+        out += indent + "  \"" + fields[i].first + "\": " + fields[i].second;
+        out += i + 1 < fields.size() ? ",\n" : "\n";
+    }
+    return out + indent + '}';
+}
+
+QByteArray falloff(const Falloff& f) {
+    Fields fields{{"model", name(f.model)}};
+    switch (f.model) {
+    case FalloffModel::None: break;
+    case FalloffModel::RangePower:
+        fields.push_back({"range", num(f.range)});
+        fields.push_back({"exponent", num(f.exponent)});
+        break;
+    case FalloffModel::InversePolynomial:
+        fields.push_back({"constant", num(f.constant)});
+        fields.push_back({"linear", num(f.linear)});
+        fields.push_back({"quadratic", num(f.quadratic)});
+        if (f.hasRange()) fields.push_back({"range", num(f.range)});
+        break;
+    case FalloffModel::RangeQuadratic: fields.push_back({"range", num(f.range)}); break;
+    case FalloffModel::InverseSquare:
+        if (f.hasRange()) fields.push_back({"range", num(f.range)});
+        break;
+    }
+    return inlineObject(fields);
+}
+
+QByteArray cone(const Cone& c) {
+    Fields fields{{"model", name(c.model)}};
+    if (c.model == ConeModel::Smooth) fields.push_back({"inner", num(c.inner)});
+    fields.push_back({"outer", num(c.outer)});
+    if (c.model != ConeModel::Hard) fields.push_back({"exponent", num(c.exponent)});
+    return inlineObject(fields);
+}
+
+QByteArray light(const Light& l) {
+    Fields f{{"name", str(l.name)},
+             {"type", name(l.type)},
+             {"enabled", l.enabled ? "true" : "false"},
+             {"color", vec(l.color)}};
+    if (l.temperature) f.push_back({"temperature", num(*l.temperature)});
+    f.push_back({"intensity", num(l.intensity)});
+    if (l.usesPosition()) f.push_back({"position", vec(l.position)});
+    if (l.usesDirection()) f.push_back({"direction", vec(l.direction)});
+    if (l.usesFalloff()) f.push_back({"falloff", falloff(l.falloff)});
+    if (l.usesCone()) f.push_back({"cone", cone(l.cone)});
+    if (l.usesSurfaceModels()) {
+        if (l.diffuse != DiffuseModel::Lambert) f.push_back({"diffuse", name(l.diffuse)});
+        if (l.specularIsColor)
+            f.push_back({"specular", vec(l.specular)});
+        else if (l.specular.x != 1.0)
+            f.push_back({"specular", num(l.specular.x)});
+        if (l.ambient) f.push_back({"ambient", vec(*l.ambient)});
+    }
+    if (l.type == LightType::Rim) f.push_back({"exponent", num(l.rimExponent)});
+    return blockObject(f, "    ");
+}
+
+}  // namespace
+
+QByteArray writeRigJson(const Rig& rig) {
+    QByteArray lights = "[]";
+    if (!rig.lights.empty()) {
+        lights = "[\n";
+        for (size_t i = 0; i < rig.lights.size(); ++i) {
+            lights += "    " + light(rig.lights[i]);
+            lights += i + 1 < rig.lights.size() ? ",\n" : "\n";
+        }
+        lights += "  ]";
+    }
+    const Fields shading{{"specular", name(rig.shading.specular)},
+                         {"viewer", name(rig.shading.viewer)},
+                         {"shininess", num(rig.shading.shininess)}};
+    const Fields top{{"format", "\"lightrig\""},
+                     {"version", QByteArray::number(kRigFormatVersion)},
+                     {"name", str(rig.name)},
+                     {"space", name(rig.space)},
+                     {"ambient", vec(rig.ambient)},
+                     {"shading", inlineObject(shading)},
+                     {"lights", lights}};
+    return blockObject(top, "") + '\n';
+}
+
+}  // namespace lr
