@@ -3,8 +3,6 @@
 #include <QTextStream>
 namespace lr::cli {
 static int pending(const char* what) { QTextStream(stderr) << "lightrig: " << what << " is not implemented yet\n"; return Failed; }
-int runValidate(const QStringList&) { return pending("validate"); }
-int runFormat(const QStringList&) { return pending("format"); }
 int runRender(const QStringList&) { return pending("render"); }
 int runBench(const QStringList&) { return pending("bench"); }
 }

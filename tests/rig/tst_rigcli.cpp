@@ -1,0 +1,147 @@
+// `lightrig validate` and `lightrig format`, run as the user runs them (QProcess on the built executable):
+// output lines and exit codes 0 (all good), 1 (a file is bad), 2 (usage).
+#include "rigtest.h"
+
+#include <QProcess>
+#include <QTemporaryDir>
+
+using namespace lr;
+using namespace lr::test;
+
+namespace {
+struct Run {
+    int code = -1;
+    QString out, err;
+    QStringList lines() const { return out.split(QLatin1Char('\n'), Qt::SkipEmptyParts); }
+};
+
+Run lightrig(const QStringList& args) {
+    QProcess p;
+    p.setProgram(QStringLiteral(LIGHTRIG_EXECUTABLE));
+    p.setArguments(args);
+    p.start();
+    Run r;
+    if (!p.waitForFinished(30000) || p.exitStatus() != QProcess::NormalExit) return r;
+    r.code = p.exitCode();
+    r.out = QString::fromUtf8(p.readAllStandardOutput());
+    r.err = QString::fromUtf8(p.readAllStandardError());
+    return r;
+}
+
+QString show(const Run& r) { return QStringLiteral("exit %1\nstdout:\n%2\nstderr:\n%3").arg(r.code).arg(r.out, r.err); }
+
+void copy(const QString& from, const QString& to) {
+    QFile::remove(to);
+    QVERIFY(QFile::copy(from, to));
+    QVERIFY(QFile::setPermissions(to, QFile::ReadOwner | QFile::WriteOwner));
+}
+}  // namespace
+
+class TestRigCli : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void validateGood();
+    void validateBad();
+    void validateUsage();
+    void validateEmbeddedPreset();
+    void formatCheck();
+    void formatRewrites();
+    void formatLeavesBadFilesAlone();
+
+private:
+    QTemporaryDir m_dir;
+};
+
+void TestRigCli::initTestCase() {
+    QVERIFY2(QFile::exists(QStringLiteral(LIGHTRIG_EXECUTABLE)), LIGHTRIG_EXECUTABLE);
+    QVERIFY(m_dir.isValid());
+}
+
+void TestRigCli::validateGood() {
+    const QString a = dataPath(QStringLiteral("good/issue-example.json"));
+    const QString b = dataPath(QStringLiteral("good/unknown-keys.json"));
+    const Run r = lightrig({QStringLiteral("validate"), a, b});
+    QVERIFY2(r.code == 0, qPrintable(show(r)));
+    QVERIFY2(r.lines().contains(a + QStringLiteral(": ok")), qPrintable(show(r)));
+    QVERIFY2(r.lines().contains(b + QStringLiteral(": ok")), qPrintable(show(r)));
+    QVERIFY2(r.out.contains(b + QStringLiteral(": lights[0].colour: unknown key")), qPrintable(show(r)));  // warnings shown
+}
+
+void TestRigCli::validateBad() {
+    const QString good = dataPath(QStringLiteral("good/minimal.json"));
+    const QString bad = dataPath(QStringLiteral("bad/studio.json"));
+    const QString missing = m_dir.filePath(QStringLiteral("missing.json"));
+    const Run r = lightrig({QStringLiteral("validate"), good, bad, missing});
+    QVERIFY2(r.code == 1, qPrintable(show(r)));
+    QVERIFY2(r.lines().contains(good + QStringLiteral(": ok")), qPrintable(show(r)));
+    QVERIFY2(r.lines().contains(bad + QStringLiteral(": lights[2].falloff.range: must be a finite number > 0 and <= 1e12, got -5")),
+             qPrintable(show(r)));
+    QVERIFY2(!r.lines().contains(bad + QStringLiteral(": ok")), qPrintable(show(r)));
+    QVERIFY2(r.out.contains(missing + QStringLiteral(": cannot open")), qPrintable(show(r)));
+}
+
+void TestRigCli::validateUsage() {
+    Run r = lightrig({QStringLiteral("validate")});
+    QVERIFY2(r.code == 2 && r.err.contains(QStringLiteral("no files")), qPrintable(show(r)));
+    r = lightrig({QStringLiteral("validate"), QStringLiteral("--frobnicate"), dataPath(QStringLiteral("good/minimal.json"))});
+    QVERIFY2(r.code == 2 && r.err.contains(QStringLiteral("frobnicate")), qPrintable(show(r)));
+    r = lightrig({QStringLiteral("validate"), QStringLiteral("--help")});
+    QVERIFY2(r.code == 0 && r.out.startsWith(QStringLiteral("Usage: lightrig validate")), qPrintable(show(r)));
+    r = lightrig({QStringLiteral("format"), QStringLiteral("--help")});
+    QVERIFY2(r.code == 0 && r.out.contains(QStringLiteral("--check")), qPrintable(show(r)));
+    r = lightrig({QStringLiteral("format"), QStringLiteral("--check")});
+    QVERIFY2(r.code == 2, qPrintable(show(r)));
+}
+
+// The presets are compiled into the executable too: Qt resource paths are files to it.
+void TestRigCli::validateEmbeddedPreset() {
+    const QString path = builtinPresetPath(QStringLiteral("default"));
+    const Run r = lightrig({QStringLiteral("validate"), path});
+    QVERIFY2(r.code == 0 && r.lines() == QStringList{path + QStringLiteral(": ok")}, qPrintable(show(r)));
+}
+
+void TestRigCli::formatCheck() {
+    const QString canonical = m_dir.filePath(QStringLiteral("canonical.json"));
+    copy(QStringLiteral(LIGHTRIG_SOURCE_DIR "/resources/presets/three-point.json"), canonical);
+    const QString loose = m_dir.filePath(QStringLiteral("loose.json"));
+    copy(dataPath(QStringLiteral("good/issue-example.json")), loose);
+    const QByteArray before = readAll(loose);
+    Run r = lightrig({QStringLiteral("format"), QStringLiteral("--check"), canonical});
+    QVERIFY2(r.code == 0, qPrintable(show(r)));
+    r = lightrig({QStringLiteral("format"), QStringLiteral("--check"), canonical, loose});
+    QVERIFY2(r.code == 1 && r.out.contains(loose + QStringLiteral(": not in canonical form")), qPrintable(show(r)));
+    QCOMPARE(readAll(loose), before);  // --check changes nothing
+}
+
+void TestRigCli::formatRewrites() {
+    const QString loose = m_dir.filePath(QStringLiteral("rewrite.json"));
+    copy(dataPath(QStringLiteral("good/issue-example.json")), loose);
+    const RigReadResult original = readRigFile(loose);
+    LR_VERIFY_OK(original);
+    Run r = lightrig({QStringLiteral("format"), loose});
+    QVERIFY2(r.code == 0 && r.out.contains(loose + QStringLiteral(": formatted")), qPrintable(show(r)));
+    const RigReadResult after = readRigFile(loose);
+    LR_VERIFY_OK(after);
+    QVERIFY(*after.rig == *original.rig);
+    QCOMPARE(readAll(loose), writeRigJson(*original.rig));
+    r = lightrig({QStringLiteral("format"), QStringLiteral("--check"), loose});
+    QVERIFY2(r.code == 0, qPrintable(show(r)));
+}
+
+void TestRigCli::formatLeavesBadFilesAlone() {
+    const QString bad = m_dir.filePath(QStringLiteral("bad.json"));
+    copy(dataPath(QStringLiteral("bad/many-errors.json")), bad);
+    const QString unknown = m_dir.filePath(QStringLiteral("unknown.json"));
+    copy(dataPath(QStringLiteral("good/unknown-keys.json")), unknown);
+    const QByteArray badBefore = readAll(bad), unknownBefore = readAll(unknown);
+    const Run r = lightrig({QStringLiteral("format"), bad, unknown});
+    QVERIFY2(r.code == 1, qPrintable(show(r)));
+    QVERIFY2(r.out.contains(bad + QStringLiteral(": lights[1].direction: must not be the zero vector")), qPrintable(show(r)));
+    QVERIFY2(r.out.contains(unknown + QStringLiteral(": not formatted")), qPrintable(show(r)));
+    QCOMPARE(readAll(bad), badBefore);
+    QCOMPARE(readAll(unknown), unknownBefore);
+}
+
+QTEST_GUILESS_MAIN(TestRigCli)
+#include "tst_rigcli.moc"

@@ -1,0 +1,452 @@
+// Reading rig files: what valid files mean (defaults, normalisation), and that every validation rule of
+// docs/rig-format.md rejects its bad input with an error naming the right JSON path.
+#include "rigtest.h"
+
+#include <glm/geometric.hpp>
+
+#include <QDir>
+#include <QTemporaryDir>
+#include <cmath>
+
+using namespace lr;
+using namespace lr::test;
+
+class TestRigRead : public QObject {
+    Q_OBJECT
+private slots:
+    void issueExample();
+    void defaults();
+    void allFields();
+    void unknownKeysAreWarnings();
+    void utf8BomIsAccepted();
+    void rules_data();
+    void rules();
+    void badFiles_data();
+    void badFiles();
+    void everyBadFileIsChecked();
+    void reportsAllErrors();
+    void duplicateKeysAnywhere();
+    void numbersOutOfRange();
+    void overLargeFile();
+    void tooManyLights();
+    void nestingLimit();
+    void directionsAreNormalised();
+    void missingFile();
+};
+
+void TestRigRead::issueExample() {
+    const RigReadResult r = readRigFile(dataPath(QStringLiteral("good/issue-example.json")));
+    LR_VERIFY_OK(r);
+    QVERIFY(r.warnings.isEmpty());
+    const Rig& rig = *r.rig;
+    QCOMPARE(rig.name, QStringLiteral("Studio three-point"));
+    LR_COMPARE(rig.space, RigSpace::Model);
+    QCOMPARE(rig.ambient, glm::dvec3(0.03));
+    LR_COMPARE(rig.shading.specular, SpecularModel::Phong);
+    LR_COMPARE(rig.shading.viewer, ViewerModel::Local);
+    QCOMPARE(rig.shading.shininess, 32.0);
+    QCOMPARE(rig.lights.size(), size_t(4));
+    const Light& key = rig.lights[0];
+    LR_COMPARE(key.type, LightType::Spot);
+    QCOMPARE(key.color, glm::dvec3(1, 0.95, 0.9));
+    QCOMPARE(key.intensity, 4.0);
+    QCOMPARE(key.position, glm::dvec3(2, 2, 2));
+    const double s = 1.0 / std::sqrt(3.0);
+    QVERIFY(std::abs(key.direction.x + s) < 1e-15 && std::abs(key.direction.y + s) < 1e-15 &&
+            std::abs(key.direction.z + s) < 1e-15);
+    LR_COMPARE(key.falloff, (Falloff{FalloffModel::RangePower, 8.0, 2.0}));
+    LR_COMPARE(key.cone, (Cone{ConeModel::Smooth, 20.0, 35.0, 1.0}));
+    const Light& fill = rig.lights[1];
+    LR_COMPARE(fill.type, LightType::Point);
+    LR_COMPARE(fill.falloff.model, FalloffModel::InversePolynomial);
+    QCOMPARE(fill.falloff.constant, 0.0);
+    QCOMPARE(fill.falloff.linear, 0.1);
+    QCOMPARE(fill.falloff.quadratic, 0.05);
+    QVERIFY(!fill.falloff.hasRange());
+    LR_COMPARE(rig.lights[2].type, LightType::Directional);
+    LR_COMPARE(rig.lights[2].diffuse, DiffuseModel::HalfLambert);
+    QCOMPARE(rig.lights[2].direction, glm::dvec3(0, -1, 0));
+    LR_COMPARE(rig.lights[3].type, LightType::Rim);
+    QCOMPARE(rig.lights[3].rimExponent, 1.3);
+    QCOMPARE(rig.lights[3].direction, glm::dvec3(0, 0, -1));
+}
+
+void TestRigRead::defaults() {
+    const RigReadResult r = readRigFile(dataPath(QStringLiteral("good/minimal.json")));
+    LR_VERIFY_OK(r);
+    const Rig& rig = *r.rig;
+    QCOMPARE(rig.name, QString());
+    LR_COMPARE(rig.space, RigSpace::World);
+    QCOMPARE(rig.ambient, glm::dvec3(0.0));
+    LR_COMPARE(rig.shading, Shading{});
+    QCOMPARE(rig.shading.shininess, 32.0);
+    QCOMPARE(rig.lights.size(), size_t(4));
+    for (const Light& l : rig.lights) {
+        QCOMPARE(l.enabled, true);
+        QCOMPARE(l.intensity, 1.0);
+        QCOMPARE(l.color, glm::dvec3(1.0));
+        LR_COMPARE(l.diffuse, DiffuseModel::Lambert);
+        QCOMPARE(l.specularIsColor, false);
+        QCOMPARE(l.specular, glm::dvec3(1.0));
+        QVERIFY(!l.ambient.has_value());
+        QVERIFY(!l.temperature.has_value());
+    }
+    LR_COMPARE(rig.lights[0].falloff.model, FalloffModel::None);
+    LR_COMPARE(rig.lights[1].falloff.model, FalloffModel::InverseSquare);
+    QVERIFY(!rig.lights[1].falloff.hasRange());
+    LR_COMPARE(rig.lights[1].cone, (Cone{ConeModel::Smooth, 20.0, 35.0, 1.0}));  // a spot without "cone"
+    QCOMPARE(rig.lights[1].direction, glm::dvec3(0, -1, 0));
+    QCOMPARE(rig.lights[3].rimExponent, 1.3);
+}
+
+void TestRigRead::allFields() {
+    const RigReadResult r = readRigFile(dataPath(QStringLiteral("good/all-fields.json")));
+    LR_VERIFY_OK(r);
+    const Rig& rig = *r.rig;
+    QCOMPARE(rig.name, QString::fromUtf8("Every field \xc3\xa9\xf0\x9f\x92\xa1 \"quoted\"\ttab"));
+    LR_COMPARE(rig.shading.viewer, ViewerModel::Infinite);
+    const Light& p = rig.lights[0];
+    QCOMPARE(p.enabled, false);
+    QCOMPARE(p.temperature, std::optional(3200.0));
+    QCOMPARE(p.specularIsColor, true);
+    QCOMPARE(p.specular, glm::dvec3(0.1, 0.2, 0.3));
+    QCOMPARE(p.ambient, std::optional(glm::dvec3(0, 0.1, 0)));
+    LR_COMPARE(p.falloff, (Falloff{FalloffModel::InversePolynomial, 40.0, 2.0, 1.0, 0.0, 0.5}));
+    QCOMPARE(rig.lights[1].specular, glm::dvec3(0.0));
+    QCOMPARE(rig.lights[1].specularIsColor, false);
+    LR_COMPARE(rig.lights[1].cone.model, ConeModel::Hard);
+    QCOMPARE(rig.lights[1].cone.outer, 90.0);
+    LR_COMPARE(rig.lights[2].cone.model, ConeModel::AnglePower);
+    QCOMPARE(rig.lights[2].cone.exponent, 1.0);
+    QCOMPARE(rig.lights[3].rimExponent, 1e4);
+}
+
+void TestRigRead::unknownKeysAreWarnings() {
+    const QString file = dataPath(QStringLiteral("good/unknown-keys.json"));
+    const RigReadResult r = readRigFile(file);
+    LR_VERIFY_OK(r);
+    QCOMPARE(r.warnings.size(), 3);
+    QVERIFY2(hasMessage(r.warnings, file, QStringLiteral("comment: unknown key")), qPrintable(describe(r)));
+    QVERIFY2(hasMessage(r.warnings, file, QStringLiteral("lights[0].colour: unknown key")), qPrintable(describe(r)));
+    QVERIFY2(hasMessage(r.warnings, file, QStringLiteral("lights[0].falloff-note: unknown key")), qPrintable(describe(r)));
+    QCOMPARE(r.rig->lights[0].color, glm::dvec3(1.0));  // "colour" is not "color"
+}
+
+void TestRigRead::utf8BomIsAccepted() {
+    const RigReadResult r = readRigFile(dataPath(QStringLiteral("good/utf8-bom.json")));
+    LR_VERIFY_OK(r);
+    QVERIFY(r.rig->lights.empty());
+}
+
+void TestRigRead::rules_data() {
+    QTest::addColumn<QByteArray>("json");
+    QTest::addColumn<QString>("expected");  // "json.path: start of the reason"
+    auto row = [](const char* name, const QByteArray& json, const char* expected) {
+        QTest::newRow(name) << json << QString::fromUtf8(expected);
+    };
+    // The document and its header.
+    row("format missing", R"({"version": 1, "lights": []})", "format: missing");
+    row("format not a string", R"({"format": 1, "version": 1, "lights": []})", "format: must be \"lightrig\"");
+    row("version missing", R"({"format": "lightrig", "lights": []})", "version: missing");
+    row("version 0", R"({"format": "lightrig", "version": 0, "lights": []})", "version: must be the integer 1");
+    row("version 1.5", R"({"format": "lightrig", "version": 1.5, "lights": []})", "version: must be the integer 1");
+    row("version string", R"({"format": "lightrig", "version": "1", "lights": []})", "version: must be the integer 1");
+    row("version 2", R"({"format": "lightrig", "version": 2, "lights": []})", "version: the file is version 2, newer");
+    row("name not a string", rigJson({}, R"("name": 42,)"), "name: must be a string, got 42");
+    row("name too long", rigJson({}, "\"name\": \"" + QByteArray(257, 'x') + "\","), "name: must be at most 256 characters");
+    row("space", rigJson({}, R"("space": "local",)"), "space: must be \"world\" or \"model\", got the string \"local\"");
+    row("ambient 2 components", rigJson({}, R"("ambient": [1, 1],)"), "ambient: must be an RGB colour");
+    row("ambient negative", rigJson({}, R"("ambient": [0, -0.5, 0],)"), "ambient[1]: must be a finite number from 0 to 1000000, got -0.5");
+    row("shading not object", rigJson({}, R"("shading": "phong",)"), "shading: must be an object");
+    row("shading.specular", rigJson({}, R"("shading": {"specular": "gouraud"},)"), "shading.specular: must be \"phong\" or \"blinn-phong\"");
+    row("shading.viewer", rigJson({}, R"("shading": {"viewer": "ortho"},)"), "shading.viewer: must be \"local\" or \"infinite\"");
+    row("shading.shininess 0", rigJson({}, R"("shading": {"shininess": 0},)"), "shading.shininess: must be a finite number > 0 and <= 10000, got 0");
+    row("lights missing", R"({"format": "lightrig", "version": 1})", "lights: missing");
+    row("lights not array", R"({"format": "lightrig", "version": 1, "lights": {}})", "lights: must be an array");
+    row("light not object", rigJson("1"), "lights[0]: must be an object");
+    // Every light.
+    row("type missing", rigJson(R"({"position": [0, 0, 0]})"), "lights[0].type: missing");
+    row("type unknown", rigJson(R"({"type": "area"})"), "lights[0].type: must be \"point\", \"spot\", \"directional\" or \"rim\"");
+    row("light name too long", rigJson(with(kRim, "\"name\": \"" + QByteArray(257, 'y') + '"')), "lights[0].name: must be at most 256 characters, got 257");
+    row("enabled", rigJson(with(kRim, R"("enabled": "yes")")), "lights[0].enabled: must be true or false");
+    row("color 2 components", rigJson(with(kPoint, R"("color": [1, 1])")), "lights[0].color: must be an RGB colour");
+    row("color string", rigJson(with(kPoint, R"("color": "#ffffff")")), "lights[0].color: must be an RGB colour");
+    row("color negative", rigJson(with(kPoint, R"("color": [-1, 0, 0])")), "lights[0].color[0]: must be a finite number from 0 to 1000000, got -1");
+    row("color huge", rigJson(with(kPoint, R"("color": [0, 0, 2e6])")), "lights[0].color[2]: must be a finite number from 0 to 1000000, got 2e6");
+    row("temperature low", rigJson(with(kPoint, R"("temperature": 999)")), "lights[0].temperature: must be a finite number from 1000 to 40000, got 999");
+    row("temperature high", rigJson(with(kRim, R"("temperature": 40001)")), "lights[0].temperature: must be a finite number from 1000 to 40000");
+    row("intensity negative", rigJson(with(kPoint, R"("intensity": -1)")), "lights[0].intensity: must be a finite number from 0 to 1000000, got -1");
+    row("intensity huge", rigJson(with(kPoint, R"("intensity": 1000001)")), "lights[0].intensity: must be a finite number from 0 to 1000000");
+    row("position missing", rigJson(R"({"type": "point", "falloff": {"model": "none"}})"), "lights[0].position: missing");
+    row("position too far", rigJson(R"({"type": "point", "position": [1e13, 0, 0], "falloff": {"model": "none"}})"), "lights[0].position[0]: must be a finite number from -1e12 to 1e12, got 1e13");
+    row("position on directional", rigJson(with(kDirectional, R"("position": [0, 0, 0])")), "lights[0].position: a directional light has no position");
+    row("position on rim", rigJson(with(kRim, R"("position": [0, 0, 0])")), "lights[0].position: a rim light has no position");
+    row("direction missing", rigJson(R"({"type": "directional"})"), "lights[0].direction: missing");
+    row("direction zero", rigJson(R"({"type": "rim", "direction": [0, 0, 0]})"), "lights[0].direction: must not be the zero vector");
+    row("direction component", rigJson(R"({"type": "directional", "direction": [0, "down", 0]})"), "lights[0].direction[1]: must be a finite number, got the string \"down\"");
+    row("direction on point", rigJson(with(kPoint, R"("direction": [0, -1, 0])")), "lights[0].direction: a point light has no direction");
+    row("falloff missing", rigJson(R"({"type": "spot", "position": [0, 0, 0], "direction": [0, -1, 0]})"), "lights[0].falloff: missing");
+    row("falloff on directional", rigJson(with(kDirectional, R"("falloff": {"model": "none"})")), "lights[0].falloff: a directional light has no falloff");
+    row("falloff on rim", rigJson(with(kRim, R"("falloff": {"model": "none"})")), "lights[0].falloff: a rim light has no falloff");
+    row("range on directional", rigJson(with(kDirectional, R"("range": 5)")), "lights[0].range: a directional light has no range");
+    row("range on point", rigJson(with(kPoint, R"("range": 5)")), "lights[0].range: belongs in \"falloff\"");
+    row("quadratic on point", rigJson(with(kPoint, R"("quadratic": 1)")), "lights[0].quadratic: belongs in \"falloff\"");
+    row("inner on point", rigJson(with(kPoint, R"("inner": 10)")), "lights[0].inner: a point light has no inner");
+    row("outer on spot", rigJson(with(kSpot, R"("outer": 10)")), "lights[0].outer: belongs in \"cone\"");
+    row("model on light", rigJson(with(kPoint, R"("model": "none")")), "lights[0].model: belongs in \"falloff\" or \"cone\"");
+    row("cone on point", rigJson(with(kPoint, R"("cone": {"model": "hard", "outer": 10})")), "lights[0].cone: a point light has no cone");
+    row("cone on directional", rigJson(with(kDirectional, R"("cone": {})")), "lights[0].cone: a directional light has no cone");
+    row("diffuse unknown", rigJson(with(kPoint, R"("diffuse": "oren-nayar")")), "lights[0].diffuse: must be \"lambert\" or \"half-lambert\"");
+    row("diffuse on rim", rigJson(with(kRim, R"("diffuse": "lambert")")), "lights[0].diffuse: a rim light has no diffuse term");
+    row("specular negative", rigJson(with(kPoint, R"("specular": -1)")), "lights[0].specular: must be a finite number from 0 to 1000000, got -1");
+    row("specular string", rigJson(with(kPoint, R"("specular": "white")")), "lights[0].specular: must be a factor >= 0 or an RGB colour");
+    row("specular colour", rigJson(with(kPoint, R"("specular": [1, -1, 1])")), "lights[0].specular[1]: must be a finite number from 0");
+    row("specular on rim", rigJson(with(kRim, R"("specular": 1)")), "lights[0].specular: a rim light has no specular term");
+    row("ambient on rim", rigJson(with(kRim, R"("ambient": [0, 0, 0])")), "lights[0].ambient: a rim light has no ambient term");
+    row("light ambient", rigJson(with(kDirectional, R"("ambient": [1, 1])")), "lights[0].ambient: must be an RGB colour");
+    row("exponent on point", rigJson(with(kPoint, R"("exponent": 2)")), "lights[0].exponent: only rim lights have an exponent");
+    row("rim exponent 0", rigJson(with(kRim, R"("exponent": 0)")), "lights[0].exponent: must be a finite number > 0 and <= 10000, got 0");
+    row("rim exponent huge", rigJson(with(kRim, R"("exponent": 1e5)")), "lights[0].exponent: must be a finite number > 0 and <= 10000, got 1e5");
+    // Falloff.
+    row("falloff not object", rigJson(pointWithFalloff("\"none\"")), "lights[0].falloff: must be an object");
+    row("falloff model missing", rigJson(pointWithFalloff(R"({"range": 5})")), "lights[0].falloff.model: missing");
+    row("falloff model unknown", rigJson(pointWithFalloff(R"({"model": "linear"})")), "lights[0].falloff.model: must be \"none\", \"range-power\"");
+    row("range-power no range", rigJson(pointWithFalloff(R"({"model": "range-power", "exponent": 2})")), "lights[0].falloff.range: missing");
+    row("range-power range -5", rigJson(pointWithFalloff(R"({"model": "range-power", "range": -5})")), "lights[0].falloff.range: must be a finite number > 0 and <= 1e12, got -5");
+    row("range-power range 0", rigJson(pointWithFalloff(R"({"model": "range-power", "range": 0})")), "lights[0].falloff.range: must be a finite number > 0 and <= 1e12, got 0");
+    row("range-power exponent 0", rigJson(pointWithFalloff(R"({"model": "range-power", "range": 5, "exponent": 0})")), "lights[0].falloff.exponent: must be a finite number > 0");
+    row("range-power constant", rigJson(pointWithFalloff(R"({"model": "range-power", "range": 5, "constant": 1})")), "lights[0].falloff.constant: the \"range-power\" falloff has no constant term");
+    row("polynomial all zero", rigJson(pointWithFalloff(R"({"model": "inverse-polynomial", "constant": 0, "linear": 0, "quadratic": 0})")), "lights[0].falloff: constant, linear and quadratic are all 0");
+    row("polynomial negative", rigJson(pointWithFalloff(R"({"model": "inverse-polynomial", "linear": -0.1})")), "lights[0].falloff.linear: must be a finite number from 0 to 1e12, got -0.1");
+    row("polynomial exponent", rigJson(pointWithFalloff(R"({"model": "inverse-polynomial", "exponent": 2})")), "lights[0].falloff.exponent: the \"inverse-polynomial\" falloff has no exponent");
+    row("polynomial range 0", rigJson(pointWithFalloff(R"({"model": "inverse-polynomial", "range": 0})")), "lights[0].falloff.range: must be a finite number > 0");
+    row("range-quadratic no range", rigJson(pointWithFalloff(R"({"model": "range-quadratic"})")), "lights[0].falloff.range: missing");
+    row("range-quadratic exponent", rigJson(pointWithFalloff(R"({"model": "range-quadratic", "range": 5, "exponent": 2})")), "lights[0].falloff.exponent: the \"range-quadratic\" falloff has no exponent");
+    row("inverse-square exponent", rigJson(pointWithFalloff(R"({"model": "inverse-square", "exponent": 2})")), "lights[0].falloff.exponent: the \"inverse-square\" falloff has no exponent");
+    row("inverse-square quadratic", rigJson(pointWithFalloff(R"({"model": "inverse-square", "quadratic": 1})")), "lights[0].falloff.quadratic: the \"inverse-square\" falloff has no quadratic term");
+    row("inverse-square range", rigJson(pointWithFalloff(R"({"model": "inverse-square", "range": -1})")), "lights[0].falloff.range: must be a finite number > 0");
+    row("none range", rigJson(pointWithFalloff(R"({"model": "none", "range": 5})")), "lights[0].falloff.range: the \"none\" falloff has no range");
+    row("none exponent", rigJson(pointWithFalloff(R"({"model": "none", "exponent": 1})")), "lights[0].falloff.exponent: the \"none\" falloff has no exponent");
+    row("falloff inner", rigJson(pointWithFalloff(R"({"model": "none", "inner": 1})")), "lights[0].falloff.inner: belongs in \"cone\"");
+    // Cone.
+    row("cone not object", rigJson(spotWithCone("30")), "lights[0].cone: must be an object");
+    row("cone model missing", rigJson(spotWithCone(R"({"outer": 30})")), "lights[0].cone.model: missing");
+    row("cone model unknown", rigJson(spotWithCone(R"({"model": "soft", "outer": 30})")), "lights[0].cone.model: must be \"angle-power\", \"smooth\" or \"hard\"");
+    row("smooth inner missing", rigJson(spotWithCone(R"({"model": "smooth", "outer": 30})")), "lights[0].cone.inner: missing");
+    row("outer missing", rigJson(spotWithCone(R"({"model": "hard"})")), "lights[0].cone.outer: missing");
+    row("inner 0", rigJson(spotWithCone(R"({"model": "smooth", "inner": 0, "outer": 30})")), "lights[0].cone.inner: must be a finite number > 0 and <= 90, got 0");
+    row("outer 91", rigJson(spotWithCone(R"({"model": "angle-power", "outer": 91})")), "lights[0].cone.outer: must be a finite number > 0 and <= 90, got 91");
+    row("inner > outer", rigJson(spotWithCone(R"({"model": "smooth", "inner": 40, "outer": 35})")), "lights[0].cone.inner: must be <= outer (35), got 40");
+    row("angle-power inner", rigJson(spotWithCone(R"({"model": "angle-power", "inner": 10, "outer": 30})")), "lights[0].cone.inner: the \"angle-power\" cone has no inner angle");
+    row("hard inner", rigJson(spotWithCone(R"({"model": "hard", "inner": 10, "outer": 30})")), "lights[0].cone.inner: the \"hard\" cone has no inner angle");
+    row("hard exponent", rigJson(spotWithCone(R"({"model": "hard", "outer": 30, "exponent": 2})")), "lights[0].cone.exponent: the \"hard\" cone has no exponent");
+    row("smooth exponent 0", rigJson(spotWithCone(R"({"model": "smooth", "inner": 10, "outer": 30, "exponent": 0})")), "lights[0].cone.exponent: must be a finite number > 0");
+    row("cone range", rigJson(spotWithCone(R"({"model": "hard", "outer": 30, "range": 4})")), "lights[0].cone.range: belongs in \"falloff\"");
+    row("second light", rigJson(kPoint + ", " + with(kSpot, R"("intensity": -3)")), "lights[1].intensity: must be a finite number from 0");
+}
+
+// Each row breaks exactly one rule: exactly one error, naming the path; no rig comes back.
+void TestRigRead::rules() {
+    QFETCH(QByteArray, json);
+    QFETCH(QString, expected);
+    const QString file = QStringLiteral("rule.json");
+    const RigReadResult r = readRigJson(json, file);
+    QVERIFY2(!r.ok() && !r.rig.has_value(), qPrintable(describe(r)));
+    QVERIFY2(r.errors.size() == 1, qPrintable(describe(r)));
+    QVERIFY2(hasMessage(r.errors, file, expected), qPrintable(QStringLiteral("expected \"%1: %2...\"\n").arg(file, expected) + describe(r)));
+}
+
+// Every file in tests/data/rig/bad and the start of the error it must give ("json.path: reason" or
+// "line L, column C (in json.path): reason"; positions counted by hand, columns in characters).
+static const struct {
+    const char* file;
+    const char* expected;
+} kBadFiles[] = {
+    {"empty.json", "the file is empty"},
+    {"whitespace.json", "the file is empty"},
+    {"truncated.json", "line 2, column 54 (in lights[0].position[2]): unexpected end of file"},
+    {"truncated-string.json", "line 1, column 19 (in format): unexpected end of file"},
+    {"binary.json", "line 1, column 1: not valid UTF-8 text (byte 0x89; is this a binary file?)"},
+    {"invalid-utf8.json", "line 1, column 50: not valid UTF-8 text (byte 0xe9"},
+    {"nul-byte.json", "line 1, column 48: contains a NUL byte"},
+    {"duplicate-key.json", "lights[1].intensity: duplicate key"},
+    {"duplicate-escaped-key.json", "lights: duplicate key"},
+    {"overflow.json", "lights[0].intensity: must be a finite number from 0 to 1000000, got 1e999 (out of the range of a double)"},
+    {"underflow.json", "lights[0].falloff.range: must be a finite number > 0 and <= 1e12, got 1e-400 (out of the range"},
+    {"nan.json", "line 1, column 50 (in ambient[0]): NaN is not a JSON number"},
+    {"infinity.json", "line 1, column 53 (in ambient[1]): -Infinity is not a JSON number"},
+    {"newer-version.json", "version: the file is version 2, newer than this LightRig reads (version 1)"},
+    {"not-lightrig.json", "format: missing"},
+    {"wrong-format.json", "format: must be \"lightrig\""},
+    {"top-level-array.json", "(top level): must be a JSON object"},
+    {"trailing-comma.json", "line 1, column 51: unexpected '}', expected a key in double quotes"},
+    {"trailing-text.json", "line 2, column 1: unexpected text after the end of the JSON document"},
+    {"comment.json", "line 1, column 38: unexpected '/', expected a key in double quotes"},
+    {"single-quotes.json", "line 1, column 2: unexpected ''', expected a key in double quotes"},
+    {"leading-zero.json", "line 1, column 36 (in version): numbers must not have leading zeros"},
+    {"bad-escape.json", "line 1, column 50 (in name): invalid escape '\\L' in a string"},
+    {"lone-surrogate.json", "line 1, column 53 (in name): \\u escape: a high surrogate must be followed by a low one"},
+    {"control-character.json", "line 1, column 50 (in name): control character U+000a inside a string"},
+    {"deep-nesting.json", "line 1, column 78 (in extra[0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0]): nested deeper than 32 levels"},
+    {"studio.json", "lights[2].falloff.range: must be a finite number > 0 and <= 1e12, got -5"},
+    {"many-errors.json", "space: must be \"world\" or \"model\""},
+};
+
+void TestRigRead::badFiles_data() {
+    QTest::addColumn<QString>("file");
+    QTest::addColumn<QString>("expected");
+    for (const auto& b : kBadFiles) QTest::newRow(b.file) << QString::fromLatin1(b.file) << QString::fromUtf8(b.expected);
+}
+
+void TestRigRead::badFiles() {
+    QFETCH(QString, file);
+    QFETCH(QString, expected);
+    const QString path = dataPath(QStringLiteral("bad/") + file);
+    const RigReadResult r = readRigFile(path);
+    QVERIFY2(!r.ok() && !r.rig.has_value(), qPrintable(describe(r)));
+    QVERIFY2(hasMessage(r.errors, path, expected), qPrintable(QStringLiteral("expected \"%1\"\n").arg(expected) + describe(r)));
+    // The same bytes through readRigJson give the same messages under the given display name.
+    const RigReadResult fromBytes = readRigJson(readAll(path), file);
+    QVERIFY2(hasMessage(fromBytes.errors, file, expected), qPrintable(describe(fromBytes)));
+}
+
+void TestRigRead::everyBadFileIsChecked() {
+    QStringList listed;
+    for (const auto& b : kBadFiles) listed << QString::fromLatin1(b.file);
+    listed.sort();
+    const QStringList files = QDir(dataPath(QStringLiteral("bad"))).entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name);
+    QCOMPARE(files, listed);
+}
+
+void TestRigRead::reportsAllErrors() {
+    const QString path = dataPath(QStringLiteral("bad/many-errors.json"));
+    const RigReadResult r = readRigFile(path);
+    const QStringList expected = {
+        QStringLiteral("space: must be"),
+        QStringLiteral("ambient: must be an RGB colour"),
+        QStringLiteral("shading.specular: must be"),
+        QStringLiteral("shading.shininess: must be"),
+        QStringLiteral("lights[0].position: must be a point"),
+        QStringLiteral("lights[0].falloff.range: missing"),
+        QStringLiteral("lights[0].cone: a point light has no cone"),
+        QStringLiteral("lights[1].direction: must not be the zero vector"),
+        QStringLiteral("lights[1].cone.inner: must be <= outer (40), got 50"),
+        QStringLiteral("lights[2].intensity: must be a finite number from 0"),
+        QStringLiteral("lights[2].falloff: a directional light has no falloff"),
+        QStringLiteral("lights[3].diffuse: a rim light has no diffuse term"),
+        QStringLiteral("lights[3].exponent: must be a finite number > 0"),
+    };
+    for (const QString& e : expected)
+        QVERIFY2(hasMessage(r.errors, path, e), qPrintable(QStringLiteral("missing \"%1\"\n").arg(e) + describe(r)));
+    QCOMPARE(r.errors.size(), expected.size());
+}
+
+void TestRigRead::duplicateKeysAnywhere() {
+    const QByteArray deep = rigJson(spotWithCone(R"({"model": "hard", "outer": 10, "outer": 20})"));
+    RigReadResult r = readRigJson(deep, QStringLiteral("d.json"));
+    QVERIFY2(hasMessage(r.errors, QStringLiteral("d.json"), QStringLiteral("lights[0].cone.outer: duplicate key")), qPrintable(describe(r)));
+    // The first of two equal keys wins for the other checks; both are errors anyway.
+    r = readRigJson(R"({"format": "lightrig", "version": 1, "version": 1, "lights": []})", QStringLiteral("v.json"));
+    QCOMPARE(r.errors, QStringList{QStringLiteral("v.json: version: duplicate key; each key may appear only once")});
+    // Many keys (the hashed path of the detector) in an unknown object.
+    QByteArray big = "{";
+    for (int i = 0; i < 100; ++i) big += "\"k" + QByteArray::number(i) + "\": 0, ";
+    big += "\"k57\": 1}";
+    r = readRigJson(rigJson({}, "\"extra\": " + big + ','), QStringLiteral("h.json"));
+    QVERIFY2(hasMessage(r.errors, QStringLiteral("h.json"), QStringLiteral("extra.k57: duplicate key")), qPrintable(describe(r)));
+    QCOMPARE(r.errors.size(), 1);
+}
+
+void TestRigRead::numbersOutOfRange() {
+    for (const char* text : {"1e999", "-1e999", "1e-400", "123e456789"}) {
+        const RigReadResult r = readRigJson(rigJson(with(kPoint, QByteArray(R"("intensity": )") + text)), QStringLiteral("n.json"));
+        QVERIFY2(hasMessage(r.errors, QStringLiteral("n.json"),
+                            QStringLiteral("lights[0].intensity: must be a finite number from 0 to 1000000, got %1 (out of the range of a double)")
+                                .arg(QLatin1String(text))),
+                 qPrintable(describe(r)));
+    }
+    // The largest finite double and a subnormal are numbers (rejected or accepted by their field's rule).
+    RigReadResult r = readRigJson(rigJson(with(kPoint, R"("intensity": 1.7976931348623157e308)")), QStringLiteral("m.json"));
+    QVERIFY2(hasMessage(r.errors, QStringLiteral("m.json"), QStringLiteral("lights[0].intensity: must be a finite number from 0 to 1000000, got 1.7976931348623157e308")),
+             qPrintable(describe(r)));
+    r = readRigJson(rigJson(with(kPoint, R"("intensity": 5e-324)")), QStringLiteral("s.json"));
+    LR_VERIFY_OK(r);
+    QCOMPARE(r.rig->lights[0].intensity, 5e-324);
+}
+
+void TestRigRead::overLargeFile() {
+    // A valid rig padded with spaces past 16 MiB: refused for its size alone, before parsing.
+    QByteArray data = rigJson(kPoint);
+    data.append(QByteArray(kMaxRigFileBytes - data.size() + 1, ' '));
+    const RigReadResult r = readRigJson(data, QStringLiteral("big.json"));
+    QCOMPARE(r.errors, QStringList{QStringLiteral("big.json: the file is 16777217 bytes; rig files are limited to 16 MiB")});
+    data.chop(1);  // exactly 16 MiB is allowed
+    LR_VERIFY_OK(readRigJson(data, QStringLiteral("ok.json")));
+
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("big.json"));
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    QVERIFY(f.resize(qint64(kMaxRigFileBytes) * 4));  // sparse: 64 MiB of NULs, never read
+    f.close();
+    const RigReadResult fromFile = readRigFile(path);
+    QCOMPARE(fromFile.errors, QStringList{path + QStringLiteral(": the file is 67108864 bytes; rig files are limited to 16 MiB")});
+}
+
+void TestRigRead::tooManyLights() {
+    QByteArray lights;
+    for (int i = 0; i < kMaxRigLights; ++i) lights += (i ? ", " : "") + kDirectional;
+    RigReadResult r = readRigJson(rigJson(lights), QStringLiteral("max.json"));
+    LR_VERIFY_OK(r);
+    QCOMPARE(r.rig->lights.size(), size_t(kMaxRigLights));
+    r = readRigJson(rigJson(lights + ", " + kDirectional), QStringLiteral("over.json"));
+    QCOMPARE(r.errors, QStringList{QStringLiteral("over.json: lights: 4097 lights; at most 4096 are allowed")});
+}
+
+void TestRigRead::nestingLimit() {
+    const auto nested = [](int depth) { return QByteArray(depth, '[') + QByteArray(depth, ']'); };
+    // The document object is level 1, so an unknown value may nest 31 more levels.
+    RigReadResult r = readRigJson(rigJson({}, "\"extra\": " + nested(31) + ','), QStringLiteral("ok.json"));
+    LR_VERIFY_OK(r);
+    QCOMPARE(r.warnings.size(), 1);
+    r = readRigJson(rigJson({}, "\"extra\": " + nested(32) + ','), QStringLiteral("deep.json"));
+    QVERIFY2(!r.ok() && r.errors.size() == 1 && r.errors[0].contains(QStringLiteral("nested deeper than 32 levels")),
+             qPrintable(describe(r)));
+    // Far deeper input (a stack-overflow attempt) fails the same way.
+    r = readRigJson(nested(1'000'000), QStringLiteral("bomb.json"));
+    QVERIFY2(!r.ok() && r.errors.size() == 1 && r.errors[0].contains(QStringLiteral("nested deeper")), qPrintable(describe(r)));
+}
+
+void TestRigRead::directionsAreNormalised() {
+    const struct {
+        const char* json;
+        glm::dvec3 expected;
+    } cases[] = {
+        {"[0, 0, -5]", {0, 0, -1}},
+        {"[1e300, 0, 0]", {1, 0, 0}},
+        {"[0, -1e-300, 0]", {0, -1, 0}},
+        {"[3, 0, 4]", {0.6, 0, 0.8}},
+    };
+    for (const auto& c : cases) {
+        const RigReadResult r = readRigJson(rigJson(QByteArray(R"({"type": "rim", "direction": )") + c.json + '}'),
+                                            QStringLiteral("d.json"));
+        LR_VERIFY_OK(r);
+        const glm::dvec3 d = r.rig->lights[0].direction;
+        QVERIFY2(glm::length(d - c.expected) < 1e-15, c.json);
+        QVERIFY(std::abs(glm::dot(d, d) - 1.0) <= 1e-15);
+    }
+}
+
+void TestRigRead::missingFile() {
+    const QString path = dataPath(QStringLiteral("does-not-exist.json"));
+    RigReadResult r = readRigFile(path);
+    QVERIFY(!r.ok());
+    QCOMPARE(r.errors.size(), 1);
+    QVERIFY2(r.errors[0].startsWith(path + QStringLiteral(": cannot open")), qPrintable(r.errors[0]));
+    r = readRigFile(dataPath(QStringLiteral("bad")));
+    QCOMPARE(r.errors, QStringList{dataPath(QStringLiteral("bad")) + QStringLiteral(": is a directory, not a rig file")});
+}
+
+QTEST_GUILESS_MAIN(TestRigRead)
+#include "tst_rigread.moc"

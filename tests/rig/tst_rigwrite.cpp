@@ -1,0 +1,304 @@
+// Writing rig files: write -> read gives the same rig for random valid rigs, the canonical form is stable
+// (byte-identical after load -> save), only used fields are written, and saving is atomic.
+#include "rigtest.h"
+
+#include <QRandomGenerator>
+#include <QTemporaryDir>
+#include <csignal>
+#include <glm/geometric.hpp>
+#include <sys/resource.h>
+#include <unistd.h>
+
+using namespace lr;
+using namespace lr::test;
+
+namespace {
+
+// Random valid rigs: values spread over the allowed ranges (ordinary, round, huge, tiny, subnormal),
+// names with escapes and non-ASCII text, every type and model; unused fields left at their defaults.
+class RigGenerator {
+public:
+    explicit RigGenerator(quint32 seed) : m_rng(seed) {}
+
+    Rig rig() {
+        Rig r;
+        r.name = name();
+        r.space = pick<RigSpace>();
+        r.ambient = color();
+        r.shading = {pick<SpecularModel>(), pick<ViewerModel>(), positive(kMaxRigExponent)};
+        const int n = int(m_rng.bounded(8));
+        for (int i = 0; i < n; ++i) r.lights.push_back(light());
+        return r;
+    }
+
+private:
+    template <typename E> E pick() { return E(m_rng.bounded(enumCount<E>())); }
+    bool chance(double p) { return m_rng.generateDouble() < p; }
+
+    // In [0, max]: mostly ordinary, sometimes 0, max, a round number, tiny or subnormal.
+    double value(double max) {
+        switch (m_rng.bounded(8)) {
+        case 0: return 0.0;
+        case 1: return max;
+        case 2: return double(m_rng.bounded(100)) / 10.0;
+        case 3: return std::ldexp(m_rng.generateDouble(), -int(m_rng.bounded(1060)));  // down to subnormals
+        case 4: return max * m_rng.generateDouble();
+        default: return std::min(max, std::exp(m_rng.generateDouble() * 10.0 - 5.0));
+        }
+    }
+    double positive(double max) {
+        const double v = value(max);
+        return v > 0.0 ? v : 0.5;
+    }
+    double signedLength() { return (chance(0.5) ? -1.0 : 1.0) * value(kMaxRigLength); }
+    glm::dvec3 color() { return {value(kMaxRigIntensity), value(2.0), value(1.0)}; }
+    glm::dvec3 unit() {
+        glm::dvec3 v;
+        do v = {m_rng.generateDouble() * 2 - 1, m_rng.generateDouble() * 2 - 1, m_rng.generateDouble() * 2 - 1};
+        while (glm::dot(v, v) < 1e-6);
+        return glm::normalize(v);
+    }
+    QString name() {
+        static const char16_t pieces[][4] = {u"a", u"Key", u" ", u"\"", u"\\", u"\n", u"\t", u"\u00e9", u"\u6f22",
+                                             u"\U0001F4A1", u"\u0001", u"/", u"\u007f", u"\u2028"};
+        QString s;
+        const int n = int(m_rng.bounded(12));
+        for (int i = 0; i < n; ++i) s += QString::fromUtf16(pieces[m_rng.bounded(int(std::size(pieces)))]);
+        return s;
+    }
+
+    Light light() {
+        Light l;
+        l.type = pick<LightType>();
+        l.name = name();
+        l.enabled = chance(0.8);
+        l.color = color();
+        if (chance(0.3)) l.temperature = 1000.0 + value(39000.0);
+        l.intensity = value(kMaxRigIntensity);
+        if (l.usesPosition()) l.position = {signedLength(), signedLength(), signedLength()};
+        if (l.usesDirection()) l.direction = unit();
+        if (l.usesFalloff()) {
+            Falloff& f = l.falloff;
+            f.model = pick<FalloffModel>();
+            switch (f.model) {
+            case FalloffModel::None: break;
+            case FalloffModel::RangePower: f.range = positive(kMaxRigLength), f.exponent = positive(kMaxRigExponent); break;
+            case FalloffModel::InversePolynomial:
+                f.constant = value(kMaxRigLength), f.linear = value(kMaxRigLength), f.quadratic = value(kMaxRigLength);
+                if (f.constant == 0.0 && f.linear == 0.0 && f.quadratic == 0.0) f.quadratic = 1.0;
+                if (chance(0.5)) f.range = positive(kMaxRigLength);
+                break;
+            case FalloffModel::RangeQuadratic: f.range = positive(kMaxRigLength); break;
+            case FalloffModel::InverseSquare:
+                if (chance(0.5)) f.range = positive(kMaxRigLength);
+                break;
+            }
+        }
+        if (l.usesCone()) {
+            Cone& c = l.cone;
+            c.model = pick<ConeModel>();
+            c.outer = positive(90.0);
+            if (c.model == ConeModel::Smooth) c.inner = std::min(c.outer, positive(90.0));
+            if (c.model != ConeModel::Hard) c.exponent = positive(kMaxRigExponent);
+        }
+        if (l.usesSurfaceModels()) {
+            l.diffuse = pick<DiffuseModel>();
+            if (chance(0.3)) {
+                l.specularIsColor = true;
+                l.specular = color();
+            } else if (chance(0.5)) {
+                l.specular = glm::dvec3(value(kMaxRigIntensity));
+            }
+            if (chance(0.3)) l.ambient = color();
+        }
+        if (l.type == LightType::Rim) l.rimExponent = positive(kMaxRigExponent);
+        return l;
+    }
+
+    QRandomGenerator m_rng;
+};
+
+void writeFile(const QString& path, const QByteArray& data) {
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    QCOMPARE(f.write(data), data.size());
+}
+
+}  // namespace
+
+class TestRigWrite : public QObject {
+    Q_OBJECT
+private slots:
+    void randomRigsRoundTrip();
+    void loadSaveIsByteIdentical_data();
+    void loadSaveIsByteIdentical();
+    void numbersAreShortestAndExact();
+    void onlyUsedFieldsAreWritten();
+    void saveAndReload();
+    void saveRefusesInvalidRig();
+    void failedSaveKeepsOldFile();
+    void readOnlyDirectoryKeepsOldFile();
+    void missingDirectory();
+};
+
+void TestRigWrite::randomRigsRoundTrip() {
+    RigGenerator gen(20261122);
+    for (int i = 0; i < 500; ++i) {
+        const Rig rig = gen.rig();
+        const QByteArray text = writeRigJson(rig);
+        const RigReadResult r = readRigJson(text, QStringLiteral("random.json"));
+        QVERIFY2(r.ok(), qPrintable(describe(r) + QStringLiteral("\n") + QString::fromUtf8(text)));
+        QVERIFY2(r.warnings.isEmpty(), qPrintable(describe(r)));
+        QVERIFY2(*r.rig == rig, qPrintable(QStringLiteral("rig %1 changed:\n").arg(i) + QString::fromUtf8(text)));
+        QCOMPARE(writeRigJson(*r.rig), text);
+    }
+}
+
+void TestRigWrite::loadSaveIsByteIdentical_data() {
+    QTest::addColumn<QString>("file");
+    for (const char* f : {"good/issue-example.json", "good/minimal.json", "good/all-fields.json", "good/utf8-bom.json"})
+        QTest::newRow(f) << dataPath(QString::fromLatin1(f));
+}
+
+// Any valid file: load -> save -> load gives the same rig, and a second save the same bytes.
+void TestRigWrite::loadSaveIsByteIdentical() {
+    QFETCH(QString, file);
+    const RigReadResult first = readRigFile(file);
+    LR_VERIFY_OK(first);
+    const QByteArray saved = writeRigJson(*first.rig);
+    const RigReadResult second = readRigJson(saved, QStringLiteral("saved.json"));
+    LR_VERIFY_OK(second);
+    QVERIFY(*second.rig == *first.rig);
+    QCOMPARE(writeRigJson(*second.rig), saved);
+    QVERIFY(saved.endsWith("}\n"));
+    QVERIFY(!saved.startsWith("\xEF\xBB\xBF"));
+}
+
+void TestRigWrite::numbersAreShortestAndExact() {
+    Rig rig;
+    Light l = makeLight(LightType::Point, QStringLiteral("n"));
+    l.falloff = {FalloffModel::RangePower, 8.0, 2.0};
+    l.intensity = 4.0;
+    l.position = {0.1, 1.0 / 3.0, -0.0};
+    l.color = {1e-7, 123456789.125 / 1e3, 100000.0};
+    rig.lights = {l};
+    const QByteArray text = writeRigJson(rig);
+    // Integers without ".0", the shortest decimal that reads back exactly, -0 as 0.
+    QVERIFY2(text.contains("\"intensity\": 4,"), text.constData());
+    QVERIFY2(text.contains("\"position\": [0.1, 0.3333333333333333, 0]"), text.constData());
+    QVERIFY2(text.contains("\"color\": [1e-7, 123456.789125, 100000]"), text.constData());
+    QVERIFY2(text.contains("\"falloff\": {\"model\": \"range-power\", \"range\": 8, \"exponent\": 2}"), text.constData());
+    const RigReadResult r = readRigJson(text, QStringLiteral("n.json"));
+    LR_VERIFY_OK(r);
+    QCOMPARE(r.rig->lights[0].position.y, 1.0 / 3.0);
+    QCOMPARE(r.rig->lights[0].color, l.color);
+}
+
+void TestRigWrite::onlyUsedFieldsAreWritten() {
+    // A point light whose (editor) state still holds spot fields, a rim light with surface settings.
+    Light point = makeLight(LightType::Point, QStringLiteral("p"));
+    point.cone = {ConeModel::Hard, 5.0, 10.0, 3.0};
+    point.direction = {1, 0, 0};
+    point.rimExponent = 7.0;
+    Light rim = makeLight(LightType::Rim, QStringLiteral("r"));
+    rim.position = {1, 2, 3};
+    rim.diffuse = DiffuseModel::HalfLambert;
+    rim.specular = glm::dvec3(0.5);
+    rim.ambient = glm::dvec3(0.2);
+    rim.falloff = {FalloffModel::RangePower, 3.0, 2.0};
+    Rig rig;
+    rig.lights = {point, rim};
+    const QByteArray text = writeRigJson(rig);
+    for (const char* key : {"\"cone\"", "\"direction\": [1, 0, 0]", "\"diffuse\"", "\"specular\": 0.5", "\"ambient\": [0.2", "\"position\": [1, 2, 3]", "7"})
+        QVERIFY2(!text.contains(key), qPrintable(QStringLiteral("%1 in\n%2").arg(QLatin1String(key), QString::fromUtf8(text))));
+    const RigReadResult r = readRigJson(text, QStringLiteral("u.json"));
+    LR_VERIFY_OK(r);
+    LR_COMPARE(r.rig->lights[0].falloff, point.falloff);
+    QCOMPARE(r.rig->lights[1].direction, rim.direction);
+}
+
+void TestRigWrite::saveAndReload() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("rig.json"));
+    RigGenerator gen(7);
+    Rig rig = gen.rig();
+    QString error;
+    QVERIFY2(saveRigFile(rig, path, &error), qPrintable(error));
+    QVERIFY(error.isEmpty());
+    const RigReadResult r = readRigFile(path);
+    LR_VERIFY_OK(r);
+    QVERIFY(*r.rig == rig);
+    QCOMPARE(readAll(path), writeRigJson(rig));
+    QVERIFY(saveRigFile(rig, path, nullptr));  // overwriting, no error string wanted
+    QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList{QStringLiteral("rig.json")});
+}
+
+void TestRigWrite::saveRefusesInvalidRig() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("rig.json"));
+    writeFile(path, "old contents");
+    Rig rig;
+    Light l = makeLight(LightType::Point, QStringLiteral("bad"));
+    l.falloff = {FalloffModel::RangePower, -1.0, 2.0};  // no range: invalid for range-power
+    rig.lights = {l};
+    QString error;
+    QVERIFY(!saveRigFile(rig, path, &error));
+    QVERIFY2(error.startsWith(path + QStringLiteral(": not saved: the rig is invalid: lights[0].falloff.range: must be")),
+             qPrintable(error));
+    QCOMPARE(readAll(path), QByteArray("old contents"));
+}
+
+// A write that fails half-way (here: the file size limit, which stops root too) leaves the old file.
+void TestRigWrite::failedSaveKeepsOldFile() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("rig.json"));
+    writeFile(path, "old contents");
+    RigGenerator gen(11);
+    Rig rig = gen.rig();
+    while (rig.lights.size() < 4) rig.lights.push_back(makeLight(LightType::Spot, QStringLiteral("spot")));
+
+    rlimit old{};
+    QCOMPARE(getrlimit(RLIMIT_FSIZE, &old), 0);
+    const auto oldHandler = std::signal(SIGXFSZ, SIG_IGN);  // write() fails with EFBIG instead
+    rlimit small = old;
+    small.rlim_cur = 100;
+    QCOMPARE(setrlimit(RLIMIT_FSIZE, &small), 0);
+    QString error;
+    const bool saved = saveRigFile(rig, path, &error);
+    setrlimit(RLIMIT_FSIZE, &old);
+    std::signal(SIGXFSZ, oldHandler);
+
+    QVERIFY(!saved);
+    QVERIFY2(error.startsWith(path + QStringLiteral(": not saved: ")), qPrintable(error));
+    QCOMPARE(readAll(path), QByteArray("old contents"));
+    QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList{QStringLiteral("rig.json")});
+}
+
+void TestRigWrite::readOnlyDirectoryKeepsOldFile() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("rig.json"));
+    writeFile(path, "old contents");
+    QFile::setPermissions(path, QFile::ReadOwner | QFile::WriteOwner);
+    QVERIFY(QFile::setPermissions(dir.path(), QFile::ReadOwner | QFile::ExeOwner));
+    const bool privileged = ::access(qPrintable(dir.path()), W_OK) == 0;  // root ignores the mode
+    QString error;
+    const bool saved = saveRigFile(Rig{}, path, &error);
+    QFile::setPermissions(dir.path(), QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
+    if (privileged) QSKIP("running with privileges that ignore directory permissions (failedSaveKeepsOldFile covers this)");
+    QVERIFY(!saved);
+    QVERIFY2(error.startsWith(path + QStringLiteral(": not saved: ")), qPrintable(error));
+    QCOMPARE(readAll(path), QByteArray("old contents"));
+}
+
+void TestRigWrite::missingDirectory() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("no/such/dir/rig.json"));
+    QString error;
+    QVERIFY(!saveRigFile(Rig{}, path, &error));
+    QVERIFY2(error.startsWith(path + QStringLiteral(": not saved: ")), qPrintable(error));
+    QVERIFY(!QFile::exists(path));
+}
+
+QTEST_GUILESS_MAIN(TestRigWrite)
+#include "tst_rigwrite.moc"
