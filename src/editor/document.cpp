@@ -259,15 +259,25 @@ void Document::pruneTransientState() {
 void Document::setLightsAt(const QList<int>& rows, const std::vector<Light>& lights, LightProperty property) {
     Q_ASSERT(size_t(rows.size()) == lights.size());
     for (int i = 0; i < rows.size(); ++i) m_rig.lights[size_t(rows[i])] = lights[size_t(i)];
-    // One signal per contiguous run of rows (rows are sorted).
+    // One signal per contiguous run of rows (rows are sorted); a scattered multi-edit (many runs) is reported
+    // as one span first..last instead, so views get a handful of signals rather than thousands.
+    int runs = 0;
+    for (int i = 0; i < rows.size(); ++i)
+        if (i == 0 || rows[i] != rows[i - 1] + 1) ++runs;
+    RigChange c;
+    c.kind = RigChange::LightValues;
+    c.lightProperty = property;
+    if (runs > kMaxChangeRuns) {
+        c.first = rows.front();
+        c.last = rows.back();
+        emit rigChanged(c);
+        return;
+    }
     for (int i = 0; i < rows.size();) {
         int j = i;
         while (j + 1 < rows.size() && rows[j + 1] == rows[j] + 1) ++j;
-        RigChange c;
-        c.kind = RigChange::LightValues;
         c.first = rows[i];
         c.last = rows[j];
-        c.lightProperty = property;
         emit rigChanged(c);
         i = j + 1;
     }

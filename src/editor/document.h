@@ -23,11 +23,14 @@
 namespace lr {
 
 using LightId = quint64;  // never 0
+constexpr int kMaxChangeRuns = 16;
 
 // What a change did, so views update minimally. Rows are light indices in the rig.
 struct RigChange {
     enum Kind {
-        LightValues,  // lights first..last changed their lightProperty (Any: several values)
+        LightValues,  // lights first..last changed their lightProperty (Any: several values). One change per
+                      // contiguous run of edited rows, or one span over all of them when there are more than
+                      // kMaxChangeRuns runs (some lights in the span may then be unchanged).
         RigValues,    // a rig-wide value (rigProperty) changed
         Inserted,     // lights first..last inserted (indices after the insertion)
         Removed,      // lights first..last removed (indices before the removal)

@@ -212,6 +212,16 @@ private slots:
         doc.undoStack()->undo();
         QCOMPARE(about.last().kind, RigChange::Inserted);
         QCOMPARE(countAtAbout, 8);
+        // A scattered edit of many rows is one span.
+        after.clear();
+        doc.newRig(lrtest::pointRig(100));
+        after.clear();
+        QList<int> scattered;
+        for (int i = 0; i < 100; i += 3) scattered << i;
+        QVERIFY(doc.setLightValue(scattered, LightProperty::Intensity, 2.0));
+        QCOMPARE(after.size(), 1);
+        QCOMPARE(after[0].first, 0);
+        QCOMPARE(after[0].last, 99);
         QVERIFY(doc.setRigValue(RigProperty::Shininess, 16.0));
         QCOMPARE(after.last().kind, RigChange::RigValues);
         QCOMPARE(after.last().rigProperty, RigProperty::Shininess);
