@@ -50,6 +50,12 @@ struct Document {
 
 Document parse(const QByteArray& data);
 
+// Offset of the first byte of `data` (from `from` on) that is not well-formed UTF-8 (overlong forms,
+// surrogates and code points above U+10FFFF included), or -1.
+qsizetype invalidUtf8At(const QByteArray& data, qsizetype from);
+// Appends code point `cp` (a scalar value) encoded as UTF-8.
+void appendUtf8(QByteArray& out, char32_t cp);
+
 // Path helpers: appendKey("lights[0]", "color") -> "lights[0].color"; keys that are not identifiers are
 // quoted: lights[0]["my key"]. appendIndex("lights", 2) -> "lights[2]".
 QString appendKey(const QString& path, const QString& key);

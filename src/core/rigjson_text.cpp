@@ -18,6 +18,49 @@ bool isIdentifier(const QString& key) {
 }
 }  // namespace
 
+// Offset of the first byte that is not well-formed UTF-8 (overlong forms, surrogates and code points
+// above U+10FFFF included), or -1.
+qsizetype invalidUtf8At(const QByteArray& data, qsizetype from) {
+    const auto* s = reinterpret_cast<const unsigned char*>(data.constData());
+    const qsizetype n = data.size();
+    for (qsizetype i = from; i < n;) {
+        const unsigned c = s[i];
+        if (c < 0x80) { ++i; continue; }
+        int len;
+        unsigned cp, min;
+        if ((c & 0xE0) == 0xC0) len = 2, cp = c & 0x1F, min = 0x80;
+        else if ((c & 0xF0) == 0xE0) len = 3, cp = c & 0x0F, min = 0x800;
+        else if ((c & 0xF8) == 0xF0) len = 4, cp = c & 0x07, min = 0x10000;
+        else return i;
+        if (i + len > n) return i;
+        for (int k = 1; k < len; ++k) {
+            if ((s[i + k] & 0xC0) != 0x80) return i;
+            cp = (cp << 6) | (s[i + k] & 0x3F);
+        }
+        if (cp < min || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) return i;
+        i += len;
+    }
+    return -1;
+}
+
+void appendUtf8(QByteArray& out, char32_t cp) {
+    if (cp < 0x80) {
+        out += char(cp);
+    } else if (cp < 0x800) {
+        out += char(0xC0 | (cp >> 6));
+        out += char(0x80 | (cp & 0x3F));
+    } else if (cp < 0x10000) {
+        out += char(0xE0 | (cp >> 12));
+        out += char(0x80 | ((cp >> 6) & 0x3F));
+        out += char(0x80 | (cp & 0x3F));
+    } else {
+        out += char(0xF0 | (cp >> 18));
+        out += char(0x80 | ((cp >> 12) & 0x3F));
+        out += char(0x80 | ((cp >> 6) & 0x3F));
+        out += char(0x80 | (cp & 0x3F));
+    }
+}
+
 QString appendKey(const QString& path, const QString& key) {
     if (!isIdentifier(key)) return path + QLatin1Char('[') + QString::fromUtf8(quote(key)) + QLatin1Char(']');
     return path.isEmpty() ? key : path + QLatin1Char('.') + key;
