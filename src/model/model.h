@@ -21,8 +21,9 @@ namespace lr {
 struct Vertex {
     glm::vec3 position{0.0f};  // relative to Model::origin (keeps float precision far from the world origin)
     glm::vec3 normal{0.0f, 0.0f, 1.0f};
-    glm::vec2 uv{0.0f};
-    glm::vec4 tangent{1.0f, 0.0f, 0.0f, 1.0f};  // xyz tangent, w handedness
+    glm::vec2 uv{0.0f};  // (0, 0) = top-left texel = first QImage row: upload QImage bits as they are
+    glm::vec4 tangent{1.0f, 0.0f, 0.0f, 1.0f};  // xyz tangent (+u), w handedness: bitangent = w cross(N, T)
+                                                // points up in the image (normal map +Y, as glTF)
     glm::vec4 color{1.0f};                    // linear vertex colour
 };
 

@@ -1,0 +1,197 @@
+// The file's lights (aiLight) into a world-space Rig and its cameras (aiCamera) into Camera, placed by
+// their nodes. Conventions and the Assimp 5.2.5 quirks they undo are documented in modelloader.h.
+#include "importdetail.h"
+
+#include "core/rigjson.h"
+
+#include <QFileInfo>
+#include <assimp/scene.h>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <numbers>
+
+namespace lr::detail {
+
+namespace {
+
+constexpr double kRadToDeg = 180.0 / std::numbers::pi;
+
+bool isFinite(const glm::dvec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+glm::dvec3 unitOr(glm::dvec3 v, const glm::dvec3& fallback) {
+    if (!isFinite(v)) return fallback;
+    const double m = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+    if (!(m > 0.0)) return fallback;
+    v /= m;
+    return v / std::sqrt(glm::dot(v, v));
+}
+
+const aiNode* findNode(const aiScene* scene, const aiString& name) {
+    return scene->mRootNode && name.length ? scene->mRootNode->FindNode(name) : nullptr;
+}
+
+// glTF's optional light range, which Assimp keeps in the light node's metadata.
+double gltfRange(const aiNode* node) {
+    if (!node || !node->mMetaData) return -1.0;
+    float f = 0.0f;
+    double d = 0.0;
+    if (node->mMetaData->Get("PBR_LightRange", f))
+        d = f;
+    else if (!node->mMetaData->Get("PBR_LightRange", d))
+        return -1.0;
+    return std::isfinite(d) && d > 0.0 ? d : -1.0;
+}
+
+// Splits a colour with intensity folded in into (colour with max component 1, intensity).
+void splitIntensity(const aiColor3D& c, Light& light) {
+    glm::dvec3 rgb(c.r, c.g, c.b);
+    for (int i = 0; i < 3; ++i)
+        rgb[i] = std::isfinite(rgb[i]) ? std::max(rgb[i], 0.0) : 0.0;
+    const double m = std::max({rgb.r, rgb.g, rgb.b});
+    if (m > 0.0 && std::isfinite(m)) {
+        light.intensity = m;
+        light.color = rgb / m;
+    } else {
+        light.intensity = 0.0;
+        light.color = glm::dvec3(1.0);
+    }
+}
+
+void setFalloff(const aiLight& al, bool gltf, const aiNode* node, Light& light) {
+    const double c = al.mAttenuationConstant, l = al.mAttenuationLinear, q = al.mAttenuationQuadratic;
+    const bool valid = std::isfinite(c) && std::isfinite(l) && std::isfinite(q) && c >= 0 && l >= 0 && q >= 0;
+    light.falloff.model = FalloffModel::InverseSquare;
+    light.falloff.range = gltf ? gltfRange(node) : -1.0;
+    if (gltf || !valid || (c == 0.0 && l == 0.0)) {
+        if (!gltf && valid && q > 0.0 && q != 1.0) light.intensity /= q; // 1 / (q d²)
+        return;
+    }
+    light.falloff.model = FalloffModel::InversePolynomial;
+    light.falloff.constant = c;
+    light.falloff.linear = l;
+    light.falloff.quadratic = q;
+}
+
+void setCone(const aiLight& al, bool gltf, Light& light) {
+    // glTF: half-angles as KHR_lights_punctual writes them. Elsewhere: full cone angles.
+    const double scale = (gltf ? 1.0 : 0.5) * kRadToDeg;
+    double outer = double(al.mAngleOuterCone) * scale, inner = double(al.mAngleInnerCone) * scale;
+    if (!(outer > 0.0)) outer = 45.0;
+    outer = std::min(outer, 90.0);
+    inner = std::isfinite(inner) ? std::clamp(inner, 0.0, outer) : 0.0;
+    light.cone.model = ConeModel::Smooth;
+    light.cone.inner = inner;
+    light.cone.outer = outer;
+    light.cone.exponent = gltf ? 2.0 : 1.0;
+}
+
+} // namespace
+
+void convertLightsAndCameras(const aiScene* scene, bool gltf, const QString& displayName, Model& model) {
+    Rig& rig = model.lights;
+    rig.name = QFileInfo(displayName).completeBaseName();
+    rig.space = RigSpace::World;
+    for (unsigned i = 0; i < scene->mNumLights && scene->mLights; ++i) {
+        const aiLight* al = scene->mLights[i];
+        if (!al) continue;
+        const QString name =
+            al->mName.length ? QString::fromUtf8(al->mName.C_Str()) : QStringLiteral("Light %1").arg(i);
+        const aiNode* node = findNode(scene, al->mName);
+        const glm::dmat4 world = node ? worldTransform(node) : glm::dmat4(1.0);
+        Light light;
+        light.name = name;
+        splitIntensity(al->mColorDiffuse, light);
+        light.position =
+            glm::dvec3(world * glm::dvec4(al->mPosition.x, al->mPosition.y, al->mPosition.z, 1.0));
+        light.direction =
+            unitOr(glm::dmat3(world) * glm::dvec3(al->mDirection.x, al->mDirection.y, al->mDirection.z),
+                   glm::dvec3(0.0, 0.0, -1.0));
+        switch (al->mType) {
+        case aiLightSource_POINT:
+            light.type = LightType::Point;
+            break;
+        case aiLightSource_SPOT:
+            light.type = LightType::Spot;
+            break;
+        case aiLightSource_DIRECTIONAL:
+            light.type = LightType::Directional;
+            break;
+        case aiLightSource_AMBIENT: {
+            rig.ambient += light.color * light.intensity;
+            continue;
+        }
+        default:
+            model.warnings << QStringLiteral(
+                                  "%1: light %2 of a type LightRig does not model (area or undefined) "
+                                  "skipped")
+                                  .arg(displayName, name);
+            continue;
+        }
+        if (light.usesPosition() && !isFinite(light.position)) {
+            model.warnings
+                << QStringLiteral("%1: light %2 has no finite position; skipped").arg(displayName, name);
+            continue;
+        }
+        if (light.usesFalloff()) setFalloff(*al, gltf, node, light);
+        if (light.usesCone()) setCone(*al, gltf, light);
+        if (int(rig.lights.size()) >= kMaxRigLights) {
+            model.warnings << QStringLiteral("%1: more than %2 lights; the rest are skipped")
+                                  .arg(displayName)
+                                  .arg(kMaxRigLights);
+            break;
+        }
+        rig.lights.push_back(light);
+    }
+    for (int i = 0; i < 3; ++i)
+        rig.ambient[i] = std::isfinite(rig.ambient[i]) ? rig.ambient[i] : 0.0;
+
+    for (unsigned i = 0; i < scene->mNumCameras && scene->mCameras; ++i) {
+        const aiCamera* ac = scene->mCameras[i];
+        if (!ac) continue;
+        const aiNode* node = findNode(scene, ac->mName);
+        const glm::dmat4 world = node ? worldTransform(node) : glm::dmat4(1.0);
+        const glm::dmat3 rot(world);
+        Camera cam;
+        cam.name =
+            ac->mName.length ? QString::fromUtf8(ac->mName.C_Str()) : QStringLiteral("Camera %1").arg(i);
+        // Assimp 5.2.5's glTF importer copies the node's translation into mPosition as well, which would
+        // apply it twice; a glTF camera sits at its node's origin.
+        const aiVector3D local = gltf ? aiVector3D(0.0f, 0.0f, 0.0f) : ac->mPosition;
+        cam.position = glm::dvec3(world * glm::dvec4(local.x, local.y, local.z, 1.0));
+        cam.forward =
+            unitOr(rot * glm::dvec3(ac->mLookAt.x, ac->mLookAt.y, ac->mLookAt.z), glm::dvec3(0, 0, -1));
+        // Up orthogonal to forward; when the file's up is parallel to forward, any perpendicular.
+        const glm::dvec3 up = rot * glm::dvec3(ac->mUp.x, ac->mUp.y, ac->mUp.z);
+        const glm::dvec3 side = std::abs(cam.forward.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+        cam.up =
+            unitOr(up - cam.forward * glm::dot(cam.forward, up), unitOr(glm::cross(cam.forward, side), side));
+        if (!isFinite(cam.position)) {
+            model.warnings
+                << QStringLiteral("%1: camera %2 has no finite position; skipped").arg(displayName, cam.name);
+            continue;
+        }
+        const double aspect = ac->mAspect, hfov = ac->mHorizontalFOV;
+        cam.aspect = std::isfinite(aspect) && aspect > 0.0 ? aspect : 0.0;
+        if (std::isfinite(hfov) && hfov > 0.0 && (gltf || hfov < std::numbers::pi)) {
+            // glTF in 5.2.5: hfov = yfov * aspect (linear, not through the tangent); elsewhere the true
+            // full horizontal angle.
+            const double yfov = cam.aspect > 0.0 ? (gltf ? hfov / cam.aspect
+                                                         : 2.0 * std::atan(std::tan(0.5 * hfov) / cam.aspect))
+                                                 : hfov;
+            cam.yfovDegrees = std::clamp(yfov * kRadToDeg, 1.0, 170.0);
+        } else {
+            model.warnings << QStringLiteral("%1: camera %2 is orthographic or has no usable field of view; "
+                                             "shown as a 45° perspective")
+                                  .arg(displayName, cam.name);
+        }
+        const double znear = ac->mClipPlaneNear, zfar = ac->mClipPlaneFar;
+        if (std::isfinite(znear) && znear > 0.0) cam.znear = znear;
+        cam.zfar = std::isfinite(zfar) && zfar > cam.znear ? zfar : 0.0;
+        model.cameras.push_back(cam);
+    }
+}
+
+} // namespace lr::detail

@@ -1,0 +1,254 @@
+// Assimp materials -> Material, and the textures they use decoded into RGBA8888 QImages: embedded
+// ("*N" or by file name, compressed or raw aiTexel), data URIs, and files beside the model.
+#include "importdetail.h"
+
+#include <QByteArray>
+#include <QDir>
+#include <QFileInfo>
+#include <QHash>
+#include <QImageReader>
+#include <QUrl>
+#include <assimp/material.h>
+#include <assimp/scene.h>
+#include <assimp/texture.h>
+#include <cmath>
+
+namespace lr::detail {
+
+namespace {
+
+constexpr qint64 kMaxRawTexels = qint64(16384) * 16384;
+
+float finiteOr(float v, float fallback) {
+    return std::isfinite(v) ? v : fallback;
+}
+
+class TextureLoader {
+  public:
+    TextureLoader(const aiScene* scene, const ModelFolder& folder, qint64 maxDataUriBytes, Model& model)
+        : m_scene(scene), m_folder(folder), m_maxDataUri(maxDataUriBytes), m_model(model) {}
+
+    // Index into model.textures for the material's first texture of `type`, or -1.
+    int load(const aiMaterial* mat, aiTextureType type, const char* role) {
+        aiString path;
+        if (mat->GetTextureCount(type) == 0 || mat->GetTexture(type, 0, &path) != AI_SUCCESS ||
+            path.length == 0)
+            return -1;
+        const QString ref = QString::fromUtf8(path.C_Str());
+        if (const auto cached = m_byRef.constFind(ref); cached != m_byRef.constEnd()) return *cached;
+        QString name = ref, problem;
+        QImage image;
+        if (const aiTexture* tex = m_scene->GetEmbeddedTexture(path.C_Str())) {
+            image = decodeEmbedded(tex, &problem);
+        } else if (ref.startsWith(QLatin1Char('*'))) {
+            problem = QStringLiteral("no such embedded texture");
+        } else if (ref.startsWith(QLatin1String("data:"), Qt::CaseInsensitive)) {
+            image = decodeDataUri(ref, &problem);
+        } else {
+            name = locate(ref, &problem);
+            if (const auto same = m_byFile.constFind(name); !name.isEmpty() && same != m_byFile.constEnd()) {
+                m_byRef.insert(ref, *same);
+                return *same;
+            }
+            if (!name.isEmpty()) image = readFile(name, &problem);
+        }
+        int index = -1;
+        if (!image.isNull()) {
+            index = int(m_model.textures.size());
+            m_model.textures.push_back({name, image.convertToFormat(QImage::Format_RGBA8888)});
+        } else {
+            m_model.warnings << QStringLiteral("%1: %2 texture %3: %4 (not used)")
+                                    .arg(m_folder.displayName(), QLatin1String(role), ref, problem);
+        }
+        m_byRef.insert(ref, index);
+        if (!name.isEmpty() && name != ref) m_byFile.insert(name, index);
+        return index;
+    }
+
+  private:
+    QImage decodeEmbedded(const aiTexture* tex, QString* problem) {
+        if (!tex->pcData) {
+            *problem = QStringLiteral("embedded texture without data");
+            return {};
+        }
+        if (tex->mHeight == 0) { // compressed file bytes (PNG, JPEG, ...), mWidth of them
+            QImage image = QImage::fromData(reinterpret_cast<const uchar*>(tex->pcData), int(tex->mWidth));
+            if (image.isNull()) *problem = QStringLiteral("could not decode the embedded image");
+            return image;
+        }
+        if (qint64(tex->mWidth) * tex->mHeight > kMaxRawTexels) {
+            *problem = QStringLiteral("embedded image of %1x%2 texels is too large")
+                           .arg(tex->mWidth)
+                           .arg(tex->mHeight);
+            return {};
+        }
+        QImage image(int(tex->mWidth), int(tex->mHeight), QImage::Format_RGBA8888);
+        if (image.isNull()) {
+            *problem = QStringLiteral("out of memory");
+            return {};
+        }
+        for (unsigned y = 0; y < tex->mHeight; ++y) {
+            uchar* line = image.scanLine(int(y));
+            const aiTexel* texel = tex->pcData + std::size_t(y) * tex->mWidth;
+            for (unsigned x = 0; x < tex->mWidth; ++x, ++texel) {
+                line[4 * x + 0] = texel->r;
+                line[4 * x + 1] = texel->g;
+                line[4 * x + 2] = texel->b;
+                line[4 * x + 3] = texel->a;
+            }
+        }
+        return image;
+    }
+
+    QImage decodeDataUri(const QString& ref, QString* problem) {
+        if (ref.size() > m_maxDataUri) {
+            *problem = QStringLiteral("data URI of %1 bytes exceeds the limit of %2")
+                           .arg(ref.size())
+                           .arg(m_maxDataUri);
+            return {};
+        }
+        const qsizetype comma = ref.indexOf(QLatin1Char(','));
+        if (comma < 0) {
+            *problem = QStringLiteral("malformed data URI");
+            return {};
+        }
+        const QString header = ref.left(comma);
+        const QByteArray payload = ref.mid(comma + 1).toLatin1();
+        const QByteArray bytes = header.endsWith(QLatin1String(";base64"), Qt::CaseInsensitive)
+                                     ? QByteArray::fromBase64(payload)
+                                     : QByteArray::fromPercentEncoding(payload);
+        QImage image = QImage::fromData(bytes);
+        if (image.isNull()) *problem = QStringLiteral("could not decode the data URI image");
+        return image;
+    }
+
+    // A readable file for `ref`, trying it as written, percent-decoded, then with another letter case.
+    QString findFile(const QString& ref, QString* refusal) {
+        QStringList tries{ref};
+        const QString decoded = QUrl::fromPercentEncoding(ref.toUtf8());
+        if (decoded != ref) tries << decoded;
+        for (const QString& t : tries) {
+            const QString path = m_folder.resolve(t, refusal);
+            if (path.isEmpty()) continue;
+            if (QFileInfo(path).isFile()) return path;
+            // Files written on Windows or macOS often differ from their references only in case.
+            const QFileInfo info(path);
+            const QDir dir = info.dir();
+            if (!dir.exists()) continue;
+            for (const QString& entry : dir.entryList(QDir::Files))
+                if (entry.compare(info.fileName(), Qt::CaseInsensitive) == 0) return dir.filePath(entry);
+        }
+        return {};
+    }
+
+    // The file a reference names, or empty with *problem set.
+    QString locate(const QString& ref, QString* problem) {
+        QString refusal;
+        const QString path = findFile(ref, &refusal);
+        if (!path.isEmpty()) return path;
+        if (refusal.isEmpty()) {
+            *problem = QStringLiteral("file not found");
+            return {};
+        }
+        // Not followed; a file of that name beside the model is a safe and common stand-in.
+        QString base = ref;
+        base.replace(QLatin1Char('\\'), QLatin1Char('/'));
+        base = base.section(QLatin1Char('/'), -1);
+        QString ignored;
+        const QString local = base.isEmpty() ? QString() : findFile(base, &ignored);
+        if (local.isEmpty()) {
+            *problem = QStringLiteral("refused: %1").arg(refusal);
+            return {};
+        }
+        m_model.warnings << QStringLiteral("%1: texture %2: %3; using %4 from the model's folder instead")
+                                .arg(m_folder.displayName(), ref, refusal, base);
+        return local;
+    }
+
+    static QImage readFile(const QString& path, QString* problem) {
+        QImageReader reader(path);
+        reader.setAutoTransform(false);
+        QImage image = reader.read();
+        if (image.isNull()) *problem = reader.errorString();
+        return image;
+    }
+
+    const aiScene* m_scene;
+    const ModelFolder& m_folder;
+    qint64 m_maxDataUri;
+    Model& m_model;
+    QHash<QString, int> m_byRef, m_byFile;
+};
+
+Material convert(const aiMaterial* am, TextureLoader& textures) {
+    Material m;
+    aiString name;
+    if (am->Get(AI_MATKEY_NAME, name) == AI_SUCCESS) m.name = QString::fromUtf8(name.C_Str());
+
+    aiColor4D c;
+    if (am->Get(AI_MATKEY_BASE_COLOR, c) == AI_SUCCESS || am->Get(AI_MATKEY_COLOR_DIFFUSE, c) == AI_SUCCESS) {
+        m.baseColor = glm::vec4(c.r, c.g, c.b, c.a);
+        float opacity = 1.0f;
+        if (am->Get(AI_MATKEY_BASE_COLOR, c) != AI_SUCCESS &&
+            am->Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS)
+            m.baseColor.a = opacity;
+    }
+    for (int i = 0; i < 3; ++i)
+        m.baseColor[i] = std::max(finiteOr(m.baseColor[i], 1.0f), 0.0f);
+    m.baseColor.a = std::clamp(finiteOr(m.baseColor.a, 1.0f), 0.0f, 1.0f);
+    m.baseColorTexture = textures.load(am, aiTextureType_BASE_COLOR, "base colour");
+    if (m.baseColorTexture < 0) m.baseColorTexture = textures.load(am, aiTextureType_DIFFUSE, "diffuse");
+
+    m.normalTexture = textures.load(am, aiTextureType_NORMALS, "normal");
+
+    aiColor3D e(0.0f, 0.0f, 0.0f);
+    if (am->Get(AI_MATKEY_COLOR_EMISSIVE, e) == AI_SUCCESS) {
+        float strength = 1.0f;
+        if (am->Get(AI_MATKEY_EMISSIVE_INTENSITY, strength) != AI_SUCCESS) strength = 1.0f;
+        for (int i = 0; i < 3; ++i)
+            m.emissive[i] = std::max(finiteOr(e[unsigned(i)] * strength, 0.0f), 0.0f);
+    }
+    m.emissiveTexture = textures.load(am, aiTextureType_EMISSIVE, "emissive");
+    if (m.emissiveTexture < 0)
+        m.emissiveTexture = textures.load(am, aiTextureType_EMISSION_COLOR, "emissive");
+
+    aiColor3D s(1.0f, 1.0f, 1.0f);
+    if (am->Get(AI_MATKEY_COLOR_SPECULAR, s) == AI_SUCCESS) {
+        float strength = 1.0f;
+        if (am->Get(AI_MATKEY_SHININESS_STRENGTH, strength) != AI_SUCCESS || !(strength >= 0.0f))
+            strength = 1.0f;
+        for (int i = 0; i < 3; ++i)
+            m.specular[i] = std::max(finiteOr(s[unsigned(i)] * strength, 1.0f), 0.0f);
+    }
+    float shininess = 0.0f;
+    if (am->Get(AI_MATKEY_SHININESS, shininess) == AI_SUCCESS && std::isfinite(shininess) && shininess > 0.0f)
+        m.shininess = std::min(shininess, 1e4f);
+
+    int twoSided = 0;
+    if (am->Get(AI_MATKEY_TWOSIDED, twoSided) == AI_SUCCESS) m.doubleSided = twoSided != 0;
+    return m;
+}
+
+} // namespace
+
+void convertMaterials(const aiScene* scene, const ModelFolder& folder, qint64 maxDataUriBytes, Model& model) {
+    TextureLoader textures(scene, folder, maxDataUriBytes, model);
+    for (unsigned i = 0; i < scene->mNumMaterials && scene->mMaterials; ++i)
+        model.materials.push_back(scene->mMaterials[i] ? convert(scene->mMaterials[i], textures)
+                                                       : Material{});
+    bool needDefault = model.materials.empty();
+    for (Mesh& mesh : model.meshes) {
+        if (mesh.material < 0 || mesh.material >= int(model.materials.size())) {
+            mesh.material = int(model.materials.size());
+            needDefault = true;
+        }
+    }
+    if (needDefault) {
+        Material grey;
+        grey.name = QStringLiteral("default");
+        grey.baseColor = glm::vec4(0.8f, 0.8f, 0.8f, 1.0f);
+        model.materials.push_back(grey);
+    }
+}
+
+} // namespace lr::detail

@@ -1,0 +1,155 @@
+#include "modelloader.h"
+
+#include "importdetail.h"
+
+#include <QElapsedTimer>
+#include <QFileInfo>
+#include <assimp/Importer.hpp>
+#include <assimp/ProgressHandler.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <exception>
+#include <new>
+
+namespace lr {
+
+namespace {
+
+// Share of the progress bar for Assimp's reading and post-processing; the rest is ours.
+constexpr double kAssimpShare = 0.8;
+
+struct ProgressState {
+    std::function<bool(double)> callback;
+    bool cancelled = false;
+    double last = 0.0;
+    bool report(double fraction) {
+        if (cancelled) return false;
+        if (!callback) return true;
+        if (fraction >= 0.0 && fraction <= 1.0) last = std::max(last, fraction);
+        if (!callback(last)) cancelled = true;
+        return !cancelled;
+    }
+};
+
+// Owned and deleted by the Assimp::Importer, which the ProgressState outlives.
+class AssimpProgress : public Assimp::ProgressHandler {
+  public:
+    explicit AssimpProgress(ProgressState& state) : m_state(state) {}
+    bool Update(float percentage) override {
+        return m_state.report(percentage >= 0.0f ? double(percentage) * kAssimpShare : -1.0);
+    }
+
+  private:
+    ProgressState& m_state;
+};
+
+bool isGltf(const QString& path) {
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    return suffix == QLatin1String("gltf") || suffix == QLatin1String("glb");
+}
+
+ModelLoadResult failure(const QString& displayName, const QString& reason, bool cancelled = false) {
+    ModelLoadResult r;
+    r.error = QStringLiteral("could not import %1: %2").arg(displayName, reason);
+    r.cancelled = cancelled;
+    return r;
+}
+
+ModelLoadResult import(const QString& path, const ModelLoadOptions& options) {
+    QElapsedTimer timer;
+    timer.start();
+    const detail::ModelFolder folder(path, options.allowTexturesOutsideFolder);
+    const QString& name = folder.displayName();
+    const QFileInfo info(folder.modelFile());
+    if (!info.exists()) return failure(name, QStringLiteral("no such file (%1)").arg(path));
+    if (!info.isFile()) return failure(name, QStringLiteral("not a file (%1)").arg(path));
+
+    const bool gltf = isGltf(path);
+    if (const QString refusal = detail::preflight(folder.modelFile(), options.maxDataUriBytes);
+        !refusal.isEmpty())
+        return failure(name, refusal);
+
+    ProgressState progress{options.progress};
+    if (!progress.report(0.0)) return failure(name, QStringLiteral("cancelled"), true);
+
+    Assimp::Importer importer;
+    auto* io = new detail::QtIOSystem(folder);
+    importer.SetIOHandler(io); // the importer owns it
+    importer.SetProgressHandler(new AssimpProgress(progress));
+    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+    importer.SetPropertyFloat(AI_CONFIG_PP_GSN_MAX_SMOOTHING_ANGLE, 80.0f);
+    const unsigned flags = aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_CalcTangentSpace |
+                           aiProcess_JoinIdenticalVertices | aiProcess_SortByPType |
+                           aiProcess_ValidateDataStructure;
+    const aiScene* scene = importer.ReadFile(folder.modelFile().toUtf8().constData(), flags);
+    if (progress.cancelled) return failure(name, QStringLiteral("cancelled"), true);
+
+    const QStringList refusals = io->refusals();
+    if (!scene) {
+        QString reason = QString::fromUtf8(importer.GetErrorString()).trimmed();
+        if (reason.isEmpty()) reason = QStringLiteral("Assimp gave no reason");
+        if (!refusals.isEmpty())
+            reason += QStringLiteral(" (refused: %1)").arg(refusals.join(QStringLiteral("; ")));
+        return failure(name, reason);
+    }
+
+    auto model = std::make_shared<Model>();
+    model->path = path;
+    for (const QString& r : refusals)
+        model->warnings << QStringLiteral("%1: refused: %2").arg(name, r);
+    const auto keepGoing = [&](double f) {
+        return progress.report(kAssimpShare + f * (0.95 - kAssimpShare));
+    };
+    if (!detail::convertMeshes(scene, name, *model, keepGoing))
+        return failure(name, QStringLiteral("cancelled"), true);
+    if (model->meshes.empty()) {
+        QString reason = QStringLiteral("the file has no triangles");
+        if (!model->warnings.isEmpty())
+            reason += QStringLiteral(" (%1)").arg(model->warnings.join(QStringLiteral("; ")));
+        return failure(name, reason);
+    }
+    detail::convertMaterials(scene, folder, options.maxDataUriBytes, *model);
+    detail::convertLightsAndCameras(scene, gltf, name, *model);
+    if (!progress.report(1.0)) return failure(name, QStringLiteral("cancelled"), true);
+    model->loadMs = double(timer.nsecsElapsed()) / 1e6;
+    ModelLoadResult result;
+    result.model = std::move(model);
+    return result;
+}
+
+} // namespace
+
+ModelLoadResult loadModel(const QString& path, const ModelLoadOptions& options) {
+    const QString display = QFileInfo(path).fileName().isEmpty() ? path : QFileInfo(path).fileName();
+    try {
+        return import(path, options);
+    } catch (const std::bad_alloc&) {
+        return failure(display, QStringLiteral("out of memory"));
+    } catch (const std::exception& e) {
+        return failure(display, QString::fromUtf8(e.what()));
+    } catch (...) {
+        return failure(display, QStringLiteral("unknown error"));
+    }
+}
+
+QStringList importableSuffixes() {
+    std::string list;
+    Assimp::Importer().GetExtensionList(list); // "*.3d;*.3ds;..."
+    QStringList out;
+    for (QString s : QString::fromStdString(list).split(QLatin1Char(';'), Qt::SkipEmptyParts)) {
+        s = s.trimmed().toLower();
+        if (s.startsWith(QLatin1String("*."))) s = s.mid(2);
+        if (!s.isEmpty() && !out.contains(s)) out << s;
+    }
+    out.sort();
+    return out;
+}
+
+QString modelFileFilter() {
+    QStringList globs;
+    for (const QString& s : importableSuffixes())
+        globs << QStringLiteral("*.") + s;
+    return QStringLiteral("3D models (%1)").arg(globs.join(QLatin1Char(' ')));
+}
+
+} // namespace lr

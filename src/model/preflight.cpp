@@ -1,0 +1,205 @@
+// Checks run on a model file before Assimp sees it, for inputs known to make Assimp 5.2.5 allocate
+// without bound, abort or crash: glTF data URIs over the size limit, OFF and PLY headers declaring
+// more elements than the file can hold (Assimp allocates by the declared count), and ASCII PLY data
+// with non-numeric lines (a comment inside the data makes the Debian build abort in an ai_assert).
+#include "importdetail.h"
+
+#include <QByteArrayView>
+#include <QFile>
+#include <QFileInfo>
+#include <charconv>
+#include <limits>
+
+namespace lr::detail {
+
+namespace {
+
+struct Bytes {
+    QFile file;
+    QByteArray owned;
+    QByteArrayView view;
+    explicit Bytes(const QString& path) : file(path) {
+        if (!file.open(QIODevice::ReadOnly)) return;
+        const qint64 size = file.size();
+        if (const uchar* mapped = size > 0 ? file.map(0, size) : nullptr) {
+            view = QByteArrayView(reinterpret_cast<const char*>(mapped), size);
+        } else {
+            owned = file.readAll();
+            view = owned;
+        }
+    }
+};
+
+// Next line of `text` starting at *pos (without the line break); false at the end.
+bool nextLine(QByteArrayView text, qsizetype* pos, QByteArrayView* line) {
+    if (*pos >= text.size()) return false;
+    qsizetype end = text.indexOf('\n', *pos);
+    if (end < 0) end = text.size();
+    *line = text.sliced(*pos, end - *pos);
+    if (line->endsWith('\r')) line->chop(1);
+    *pos = end + 1;
+    return true;
+}
+
+std::vector<QByteArrayView> words(QByteArrayView line) {
+    std::vector<QByteArrayView> out;
+    qsizetype i = 0;
+    while (i < line.size()) {
+        while (i < line.size() && (line[i] == ' ' || line[i] == '\t'))
+            ++i;
+        const qsizetype start = i;
+        while (i < line.size() && line[i] != ' ' && line[i] != '\t')
+            ++i;
+        if (i > start) out.push_back(line.sliced(start, i - start));
+    }
+    return out;
+}
+
+// A non-negative decimal count; -1 when it is not one. Saturates instead of wrapping.
+qint64 count(QByteArrayView word) {
+    quint64 v = 0;
+    const auto [ptr, ec] = std::from_chars(word.data(), word.data() + word.size(), v);
+    if (ptr != word.data() + word.size()) return -1;
+    if (ec == std::errc::result_out_of_range || v > quint64(std::numeric_limits<qint64>::max() / 16))
+        return std::numeric_limits<qint64>::max() / 16;
+    return ec == std::errc() ? qint64(v) : -1;
+}
+
+QString tooManyElements(qint64 declared, const char* what, qint64 needed, qint64 available) {
+    return QStringLiteral("the header declares %1 %2, which need at least %3 bytes, but the file has %4")
+        .arg(declared)
+        .arg(QLatin1String(what))
+        .arg(needed)
+        .arg(available);
+}
+
+QString checkOff(QByteArrayView text) {
+    qsizetype pos = 0;
+    QByteArrayView line;
+    std::vector<QByteArrayView> counts;
+    bool sawKeyword = false;
+    while (nextLine(text, &pos, &line)) {
+        std::vector<QByteArrayView> w = words(line);
+        if (w.empty() || w[0].startsWith('#')) continue;
+        if (!sawKeyword) {
+            sawKeyword = true;
+            if (!w[0].endsWith("OFF")) return {};
+            w.erase(w.begin());
+            if (w.empty()) continue;
+        }
+        counts = w;
+        break;
+    }
+    if (counts.size() < 2) return {};
+    const qint64 vertices = count(counts[0]), faces = count(counts[1]);
+    if (vertices < 0 || faces < 0) return {};
+    const qint64 needed = vertices * 6 + faces * 4; // "0 0 0\n" and "1 0\n" at the least
+    if (needed > text.size() - pos)
+        return tooManyElements(vertices + faces, "vertices and faces", needed, text.size());
+    return {};
+}
+
+int plyTypeSize(QByteArrayView type) {
+    for (const auto& [name, size] : {std::pair{"char", 1},
+                                     {"uchar", 1},
+                                     {"int8", 1},
+                                     {"uint8", 1},
+                                     {"short", 2},
+                                     {"ushort", 2},
+                                     {"int16", 2},
+                                     {"uint16", 2},
+                                     {"int", 4},
+                                     {"uint", 4},
+                                     {"int32", 4},
+                                     {"uint32", 4},
+                                     {"float", 4},
+                                     {"float32", 4},
+                                     {"double", 8},
+                                     {"float64", 8}})
+        if (type == QByteArrayView(name)) return size;
+    return 1;
+}
+
+QString checkPly(QByteArrayView text) {
+    qsizetype pos = 0;
+    QByteArrayView line;
+    bool ascii = false, ended = false;
+    qint64 needed = 0, declared = 0, elementCount = 0, elementBytes = 0;
+    while (nextLine(text, &pos, &line)) {
+        const std::vector<QByteArrayView> w = words(line);
+        if (w.empty()) continue;
+        if (w[0] == "format" && w.size() > 1) ascii = w[1] == "ascii";
+        if (w[0] == "element" || w[0] == "end_header") {
+            needed += elementCount * elementBytes;
+            declared += elementCount;
+            elementCount = w.size() > 2 ? std::max<qint64>(count(w[2]), 0) : 0;
+            elementBytes = 0;
+        }
+        if (w[0] == "property" && w.size() > 1) {
+            const bool list = w[1] == "list";
+            elementBytes += ascii ? 2 : plyTypeSize(list && w.size() > 2 ? w[2] : w[1]);
+        }
+        if (w[0] == "end_header") {
+            ended = true;
+            break;
+        }
+        if (needed > std::numeric_limits<qint64>::max() / 4) break;
+    }
+    if (!ended) return {};
+    if (needed > text.size() - pos) return tooManyElements(declared, "elements", needed, text.size());
+    if (!ascii) return {};
+    for (int lineNo = 1; nextLine(text, &pos, &line); ++lineNo) {
+        qsizetype i = 0;
+        while (i < line.size() && (line[i] == ' ' || line[i] == '\t'))
+            ++i;
+        if (i == line.size()) continue;
+        const char c = line[i];
+        if ((c >= '0' && c <= '9') || c == '-' || c == '+' || c == '.') continue;
+        return QStringLiteral(
+                   "line %1 of the data is not a row of numbers (\"%2\"); PLY allows comments only "
+                   "in the header")
+            .arg(lineNo)
+            .arg(QString::fromLatin1(line.first(std::min<qsizetype>(line.size(), 40)).toByteArray()));
+    }
+    return {};
+}
+
+} // namespace
+
+qint64 largestDataUri(QByteArrayView bytes) {
+    if (bytes.startsWith("glTF")) { // GLB: 12-byte header, then the JSON chunk (length, "JSON", data)
+        if (bytes.size() < 20) return -1;
+        const auto u32 = [&](qsizetype at) {
+            return quint32(uchar(bytes[at])) | quint32(uchar(bytes[at + 1])) << 8 |
+                   quint32(uchar(bytes[at + 2])) << 16 | quint32(uchar(bytes[at + 3])) << 24;
+        };
+        bytes = bytes.sliced(20, std::min<qint64>(u32(12), bytes.size() - 20));
+    }
+    qint64 largest = 0;
+    for (qsizetype at = bytes.indexOf("\"data:"); at >= 0; at = bytes.indexOf("\"data:", at + 1)) {
+        qsizetype end = bytes.indexOf('"', at + 1);
+        if (end < 0) end = bytes.size();
+        largest = std::max<qint64>(largest, end - at - 1);
+        at = end;
+        if (at >= bytes.size()) break;
+    }
+    return largest;
+}
+
+QString preflight(const QString& path, qint64 maxDataUriBytes) {
+    const Bytes bytes(path);
+    const QByteArrayView text = bytes.view;
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    if (suffix == QLatin1String("gltf") || suffix == QLatin1String("glb") || text.startsWith("glTF")) {
+        const qint64 largest = largestDataUri(text);
+        if (largest > maxDataUriBytes)
+            return QStringLiteral("a data URI of %1 bytes exceeds the limit of %2 bytes")
+                .arg(largest)
+                .arg(maxDataUriBytes);
+    }
+    if (text.startsWith("ply\n") || text.startsWith("ply\r\n")) return checkPly(text);
+    if (suffix == QLatin1String("off")) return checkOff(text);
+    return {};
+}
+
+} // namespace lr::detail
