@@ -8,6 +8,16 @@
 
 namespace lr {
 
+namespace {
+int runCount(const QList<int>& sortedRows) {
+    int runs = 0;
+    for (int i = 0; i < sortedRows.size(); ++i)
+        if (i == 0 || sortedRows[i] != sortedRows[i - 1] + 1) ++runs;
+    return runs;
+}
+}  // namespace
+
+
 Document::Document(QObject* parent) : QObject(parent) {
     qRegisterMetaType<lr::RigChange>();
     connect(&m_undoStack, &QUndoStack::cleanChanged, this, [this](bool clean) { emit modifiedChanged(!clean); });
@@ -261,9 +271,7 @@ void Document::setLightsAt(const QList<int>& rows, const std::vector<Light>& lig
     for (int i = 0; i < rows.size(); ++i) m_rig.lights[size_t(rows[i])] = lights[size_t(i)];
     // One signal per contiguous run of rows (rows are sorted); a scattered multi-edit (many runs) is reported
     // as one span first..last instead, so views get a handful of signals rather than thousands.
-    int runs = 0;
-    for (int i = 0; i < rows.size(); ++i)
-        if (i == 0 || rows[i] != rows[i - 1] + 1) ++runs;
+    const int runs = runCount(rows);
     RigChange c;
     c.kind = RigChange::LightValues;
     c.lightProperty = property;
@@ -326,6 +334,81 @@ void Document::moveLightBlock(int first, int count, int destination) {
     rotate(m_ids.begin());
     m_rowByIdDirty = true;
     emit rigChanged(c);
+}
+
+void Document::reorderLights(const QList<int>& order) {
+    Q_ASSERT(order.size() == m_ids.size());
+    RigChange c;
+    c.kind = RigChange::Reordered;
+    c.order = order;
+    c.first = 0;
+    c.last = int(order.size()) - 1;
+    emit rigAboutToChange(c);
+    std::vector<Light> lights;
+    lights.reserve(m_rig.lights.size());
+    QList<LightId> ids;
+    ids.reserve(m_ids.size());
+    for (int old : order) {
+        lights.push_back(std::move(m_rig.lights[size_t(old)]));
+        ids.append(m_ids[old]);
+    }
+    m_rig.lights = std::move(lights);
+    m_ids = std::move(ids);
+    m_rowByIdDirty = true;
+    emit rigChanged(c);
+}
+
+void Document::insertLightRows(const QList<int>& rows, const std::vector<Light>& lights, const QList<LightId>& ids) {
+    if (runCount(rows) <= kMaxChangeRuns) {
+        // Runs in ascending order: each run's first row is its final index once the earlier runs are in.
+        for (int i = 0; i < rows.size();) {
+            int j = i;
+            while (j + 1 < rows.size() && rows[j + 1] == rows[j] + 1) ++j;
+            const std::vector<Light> run(lights.begin() + i, lights.begin() + j + 1);
+            insertLightsAt(rows[i], run, ids.mid(i, j - i + 1));
+            i = j + 1;
+        }
+        return;
+    }
+    RigChange c;
+    c.kind = RigChange::Reset;
+    emit rigAboutToChange(c);
+    for (int i = 0; i < rows.size(); ++i) {  // ascending: every earlier index is already final
+        m_rig.lights.insert(m_rig.lights.begin() + rows[i], lights[size_t(i)]);
+        m_ids.insert(rows[i], ids[i]);
+    }
+    m_rowByIdDirty = true;
+    emit rigChanged(c);
+    pruneTransientState();
+}
+
+void Document::removeLightRows(const QList<int>& rows) {
+    if (runCount(rows) <= kMaxChangeRuns) {
+        for (int j = int(rows.size()) - 1; j >= 0;) {  // last run first, so earlier indices stay valid
+            int i = j;
+            while (i > 0 && rows[i - 1] == rows[i] - 1) --i;
+            removeLightsAt(rows[i], j - i + 1);
+            j = i - 1;
+        }
+        return;
+    }
+    RigChange c;
+    c.kind = RigChange::Reset;
+    emit rigAboutToChange(c);
+    QList<bool> removed(m_ids.size(), false);
+    for (int r : rows) removed[r] = true;
+    std::vector<Light> lights;
+    QList<LightId> ids;
+    for (int i = 0; i < m_ids.size(); ++i)
+        if (!removed[i]) {
+            lights.push_back(std::move(m_rig.lights[size_t(i)]));
+            ids.append(m_ids[i]);
+        }
+    m_rig.lights = std::move(lights);
+    m_ids = std::move(ids);
+    m_rowByIdDirty = true;
+    emit rigChanged(c);
+    pruneTransientState();
 }
 
 void Document::setRigValueNow(RigProperty property, const QVariant& value) {

@@ -35,14 +35,18 @@ struct RigChange {
         Inserted,     // lights first..last inserted (indices after the insertion)
         Removed,      // lights first..last removed (indices before the removal)
         Moved,        // lights first..last moved before old index destination (QAbstractItemModel::beginMoveRows)
-        Reset,        // the whole rig was replaced (load, new, preset)
+        Reordered,    // the lights were permuted: order[i] is the old index of the light now at i (a layout
+                      // change: models emit layoutChanged and move their persistent indexes)
+        Reset,        // the whole rig was replaced (load, new, preset), or many scattered rows were inserted
+                      // or removed at once (more than kMaxChangeRuns runs: one reset beats thousands of signals)
     };
     Kind kind = Reset;
     int first = -1, last = -1;
     int destination = -1;
+    QList<int> order;  // Reordered only
     LightProperty lightProperty = LightProperty::Any;
     RigProperty rigProperty = RigProperty::Any;
-    bool isStructural() const { return kind == Inserted || kind == Removed || kind == Moved || kind == Reset; }
+    bool isStructural() const { return kind != LightValues && kind != RigValues; }
 };
 
 class Document : public QObject {
@@ -153,6 +157,10 @@ private:
     void insertLightsAt(int row, const std::vector<Light>& lights, const QList<LightId>& ids);
     void removeLightsAt(int first, int count);
     void moveLightBlock(int first, int count, int destination);  // destination as in beginMoveRows
+    void reorderLights(const QList<int>& order);                  // order[i] = old index of new light i
+    // Any sorted set of rows: per contiguous run, or as one Reset when there are many runs.
+    void insertLightRows(const QList<int>& rows, const std::vector<Light>& lights, const QList<LightId>& ids);
+    void removeLightRows(const QList<int>& rows);
     void setRigValueNow(RigProperty property, const QVariant& value);
     void resetRig(const Rig& rig, const QList<LightId>& ids);
     void resetDocument(const Rig& rig, const QString& filePath);

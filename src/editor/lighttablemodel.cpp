@@ -268,6 +268,10 @@ void LightTableModel::onAboutToChange(const RigChange& c) {
     case RigChange::Removed: beginRemoveRows({}, c.first, c.last); break;
     case RigChange::Moved: beginMoveRows({}, c.first, c.last, {}, c.destination); break;
     case RigChange::Reset: beginResetModel(); break;
+    case RigChange::Reordered:
+        emit layoutAboutToBeChanged({}, QAbstractItemModel::VerticalSortHint);
+        m_layoutPersistent = persistentIndexList();
+        break;
     default: break;
     }
 }
@@ -278,6 +282,18 @@ void LightTableModel::onChanged(const RigChange& c) {
     case RigChange::Removed: endRemoveRows(); break;
     case RigChange::Moved: endMoveRows(); break;
     case RigChange::Reset: endResetModel(); break;
+    case RigChange::Reordered: {
+        QList<int> newRowOf(c.order.size());
+        for (int i = 0; i < c.order.size(); ++i) newRowOf[c.order[i]] = i;
+        QModelIndexList to;
+        to.reserve(m_layoutPersistent.size());
+        for (const QModelIndex& from : std::as_const(m_layoutPersistent))
+            to << index(newRowOf.value(from.row(), from.row()), from.column());
+        changePersistentIndexList(m_layoutPersistent, to);
+        m_layoutPersistent.clear();
+        emit layoutChanged({}, QAbstractItemModel::VerticalSortHint);
+        break;
+    }
     case RigChange::LightValues: {
         int first = 0, last = ColumnCount - 1;
         switch (c.lightProperty) {

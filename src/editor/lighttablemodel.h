@@ -69,7 +69,7 @@ private:
 
     QPointer<Document> m_doc;
     QString m_lastError;
-    bool m_resetting = false;
+    QModelIndexList m_layoutPersistent;  // between the two halves of a Reordered change
 };
 
 }  // namespace lr

@@ -51,15 +51,30 @@ std::unique_ptr<MoveLights> MoveLights::create(Document* doc, const QList<int>& 
 }
 
 MoveLights::MoveLights(Document* doc, QList<BlockMove> moves, int count) : m_doc(doc), m_moves(std::move(moves)) {
+    if (m_moves.size() > 1) {
+        // The same moves as one permutation: simulate them on the identity order.
+        std::vector<int> order(size_t(doc->lightCount()));
+        for (size_t i = 0; i < order.size(); ++i) order[i] = int(i);
+        for (const BlockMove& m : std::as_const(m_moves)) {
+            auto b = order.begin();
+            if (m.destination > m.first) std::rotate(b + m.first, b + m.first + m.count, b + m.destination);
+            else std::rotate(b + m.destination, b + m.first, b + m.first + m.count);
+        }
+        m_order = QList<int>(order.begin(), order.end());
+        m_inverse.resize(m_order.size());
+        for (int i = 0; i < m_order.size(); ++i) m_inverse[m_order[i]] = i;
+    }
     setText(count == 1 ? QCoreApplication::translate("lr::MoveLights", "Move light")
                        : QCoreApplication::translate("lr::MoveLights", "Move %1 lights").arg(count));
 }
 
 void MoveLights::redo() {
+    if (!m_order.isEmpty()) return m_doc->reorderLights(m_order);
     for (const BlockMove& m : std::as_const(m_moves)) m_doc->moveLightBlock(m.first, m.count, m.destination);
 }
 
 void MoveLights::undo() {
+    if (!m_order.isEmpty()) return m_doc->reorderLights(m_inverse);
     for (auto it = m_moves.crbegin(); it != m_moves.crend(); ++it) {
         const BlockMove& m = *it;
         const bool down = m.destination > m.first;

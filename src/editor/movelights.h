@@ -1,6 +1,7 @@
 // Reordering (drag and drop in the light table) as one undo step: any set of rows is moved to become one
-// contiguous block, in its current order, before the light now at index destination (0..count). Executed as
-// block moves, so views receive rowsMoved, not resets.
+// contiguous block, in its current order, before the light now at index destination (0..count). One block
+// is moved as such (views get rowsMoved); several blocks are applied as one permutation (views get one layout
+// change, not one signal per block).
 #pragma once
 
 #include "editor/document.h"
@@ -27,6 +28,7 @@ private:
     MoveLights(Document* document, QList<BlockMove> moves, int count);
     Document* m_doc;
     QList<BlockMove> m_moves;
+    QList<int> m_order, m_inverse;  // permutation (several blocks only)
 };
 
 }  // namespace lr

@@ -27,25 +27,10 @@ RemoveLights::RemoveLights(Document* doc, QList<int> rows) : m_doc(doc), m_rows(
                 : QCoreApplication::translate("lr::RemoveLights", "Delete %1 lights").arg(m_rows.size()));
 }
 
-void RemoveLights::redo() {
-    // Contiguous runs, last first, so earlier indices stay valid.
-    for (int j = int(m_rows.size()) - 1; j >= 0;) {
-        int i = j;
-        while (i > 0 && m_rows[i - 1] == m_rows[i] - 1) --i;
-        m_doc->removeLightsAt(m_rows[i], j - i + 1);
-        j = i - 1;
-    }
-}
+void RemoveLights::redo() { m_doc->removeLightRows(m_rows); }
 
 void RemoveLights::undo() {
-    // Runs in ascending order: each run's first row is its final index once the earlier runs are back.
-    for (int i = 0; i < m_rows.size();) {
-        int j = i;
-        while (j + 1 < m_rows.size() && m_rows[j + 1] == m_rows[j] + 1) ++j;
-        const std::vector<Light> run(m_lights.begin() + i, m_lights.begin() + j + 1);
-        m_doc->insertLightsAt(m_rows[i], run, m_ids.mid(i, j - i + 1));
-        i = j + 1;
-    }
+    m_doc->insertLightRows(m_rows, m_lights, m_ids);
     m_doc->setSelection(QSet<LightId>(m_ids.begin(), m_ids.end()), m_ids.front());
 }
 

@@ -144,6 +144,7 @@ private slots:
         QSignalSpy removed(m_model.get(), &QAbstractItemModel::rowsRemoved);
         QSignalSpy moved(m_model.get(), &QAbstractItemModel::rowsMoved);
         QSignalSpy reset(m_model.get(), &QAbstractItemModel::modelReset);
+        QSignalSpy layout(m_model.get(), &QAbstractItemModel::layoutChanged);
         QVERIFY(m_doc->addLight(LightType::Spot));
         QVERIFY(m_doc->duplicateLights({0, 2}));
         QVERIFY(m_doc->removeLights({1, 4, 5}));
@@ -152,7 +153,8 @@ private slots:
         QVERIFY(m_doc->replaceRig(lrtest::pointRig(3), QStringLiteral("Preset")));
         QVERIFY(inserted.count() >= 2);
         QVERIFY(removed.count() >= 1);
-        QVERIFY(moved.count() >= 2);
+        QCOMPARE(moved.count(), 1);   // one block: rowsMoved
+        QCOMPARE(layout.count(), 1);  // two blocks: one layout change
         QCOMPARE(reset.count(), 1);
         checkMatchesFreshModel();
         // Undo everything, step by step, checking the model each time; then redo.
@@ -170,6 +172,40 @@ private slots:
         // A full document load resets the model.
         m_doc->newRig(lrtest::pointRig(4));
         QCOMPARE(m_model->rowCount(), 4);
+        checkMatchesFreshModel();
+    }
+
+    void scatteredBulkChanges() {
+        m_doc->newRig(lrtest::pointRig(200));
+        QList<int> every3rd;
+        for (int i = 0; i < 200; i += 3) every3rd << i;
+        QPersistentModelIndex p1 = m_model->index(1, LightTableModel::NameColumn);
+        QSignalSpy layout(m_model.get(), &QAbstractItemModel::layoutChanged);
+        QSignalSpy moved(m_model.get(), &QAbstractItemModel::rowsMoved);
+        // Scattered move: one layout change, persistent indexes follow their lights.
+        QVERIFY(m_doc->moveLights(every3rd, 100));
+        QCOMPARE(layout.count(), 1);
+        QCOMPARE(moved.count(), 0);
+        QCOMPARE(p1.data().toString(), QStringLiteral("P1"));
+        QCOMPARE(p1.row(), 0);
+        checkMatchesFreshModel();
+        m_doc->undoStack()->undo();
+        QCOMPARE(p1.row(), 1);
+        checkMatchesFreshModel();
+        // Scattered removal and its undo: one reset each (more runs than kMaxChangeRuns).
+        QSignalSpy reset(m_model.get(), &QAbstractItemModel::modelReset);
+        QSignalSpy removed(m_model.get(), &QAbstractItemModel::rowsRemoved);
+        QVERIFY(m_doc->removeLights(every3rd));
+        QCOMPARE(reset.count(), 1);
+        QCOMPARE(removed.count(), 0);
+        QCOMPARE(m_model->rowCount(), 200 - int(every3rd.size()));
+        checkMatchesFreshModel();
+        m_doc->undoStack()->undo();
+        QCOMPARE(reset.count(), 2);
+        QCOMPARE(m_doc->rig(), lrtest::pointRig(200));
+        QCOMPARE(m_doc->selectedRows(), every3rd);  // undo selects the lights it brought back
+        checkMatchesFreshModel();
+        m_doc->undoStack()->redo();
         checkMatchesFreshModel();
     }
 
