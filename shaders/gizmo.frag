@@ -1,0 +1,42 @@
+// Gizmo fragments: parts hidden by the model (scene depth) are drawn faint, not dropped, so a light
+// behind the model can still be found and picked. Point sprites draw the light icons:
+// shape 0 point (disc), 1 spot (disc with a ring), 2 directional (sun with rays), 3 rim (hollow ring);
+// +8: selected (white outline).
+uniform sampler2D uSceneDepth;
+uniform bool uHasDepth;
+uniform bool uPoints;
+
+in vec4 vColor;
+flat in int vShape;
+
+out vec4 oColor;
+
+void main() {
+    vec4 c = vColor;
+    if (uPoints) {
+        vec2 p = gl_PointCoord * 2.0 - 1.0;
+        float r = length(p);
+        if (r > 1.0) discard;
+        int shape = vShape & 7;
+        bool selected = vShape >= 8;
+        bool inside;
+        if (shape == 2) {  // sun: disc and rays
+            float angle = atan(p.y, p.x);
+            inside = r < 0.45 || (r < 0.85 && abs(fract(angle * 8.0 / 6.2831853) - 0.5) > 0.32);
+        } else if (shape == 3) {
+            inside = r > 0.45 && r < 0.8;
+        } else if (shape == 1) {
+            inside = r < 0.35 || (r > 0.55 && r < 0.8);
+        } else {
+            inside = r < 0.8;
+        }
+        if (inside) c = vec4(c.rgb, 1.0);
+        else if (r > 0.8) c = selected ? vec4(1.0, 1.0, 1.0, 1.0) : vec4(0.0, 0.0, 0.0, 0.85);
+        else c = vec4(0.0, 0.0, 0.0, 0.35);
+    }
+    if (uHasDepth) {
+        float sceneDepth = texelFetch(uSceneDepth, ivec2(gl_FragCoord.xy), 0).r;
+        if (gl_FragCoord.z > sceneDepth + 1e-6) c.a *= 0.3;
+    }
+    oColor = c;
+}

@@ -1,0 +1,357 @@
+// LightRig lighting formulas in GLSL 330: the exact twin of src/core/lighting.h and src/core/shade.h
+// (same function names, same guards, same order of operations). Keep the three files in step.
+//
+// Conventions: right-handed OpenGL view space (eye at the origin looking down -Z); L = unit vector
+// surface->light, d = distance, N = unit normal, V = unit vector to the eye; angles in radians.
+// Guards: no formula relies on max(NaN, 0); pow/acos get arguments inside their domains; normalising a
+// zero vector returns a fallback.
+//
+// The program generator (src/render/shadergen.cpp) prepends the #version line, the enum values
+// (LR_LIGHT_POINT, LR_FALLOFF_RANGE_POWER, ...) and the features the scene uses:
+//   LR_HAS_LIGHT_<TYPE>, LR_HAS_FALLOFF_<MODEL>, LR_HAS_CONE_<MODEL>, LR_HAS_DIFFUSE_<MODEL>: present;
+//   LR_ONLY_LIGHT / LR_ONLY_FALLOFF / LR_ONLY_CONE / LR_ONLY_DIFFUSE: the single value when only one is;
+//   LR_SPECULAR, LR_VIEWER: the rig's models; LR_HAS_LIGHT_AMBIENT: some light has an ambient colour;
+//   LR_LIGHT_TEXELS: RGBA32F texels per light in the light buffer (layout in loadLight below).
+// Code for absent features is not compiled, so a scene pays only for what it uses.
+
+const float kMinDenominator = 1e-4;  // floor of d² and of the inverse-polynomial denominator
+const float kMinConeWidth = 1e-7;    // narrowest smooth-cone width treated as a smooth edge
+const float kFloatMax = 3.402823466e+38;
+
+// x clamped to [0, 1]; NaN -> 0.
+float saturate(float x) { return x > 0.0 ? (x < 1.0 ? x : 1.0) : 0.0; }
+
+// max(x, 0) that maps NaN to 0.
+float positive(float x) { return x > 0.0 ? x : 0.0; }
+
+// pow(base, exponent) for base >= 0 (negative or NaN base -> 0) and exponent >= 0 (else treated as 0).
+float safePow(float base, float exponent) {
+    if (!(exponent > 0.0)) return 1.0;
+    if (!(base > 0.0)) return 0.0;
+    return pow(base, exponent);
+}
+
+// acos with its argument clamped into [-1, 1]. The built-in acos of some drivers (Mesa among them) is a
+// low-order fit with errors near 1e-4 rad; this is Abramowitz & Stegun 4.4.46, |error| <= 2e-8 rad.
+float safeAcos(float c) {
+    float x = c > -1.0 ? (c < 1.0 ? c : 1.0) : -1.0;
+    float a = abs(x);
+    float p = -0.0012624911;
+    p = p * a + 0.0066700901;
+    p = p * a - 0.0170881256;
+    p = p * a + 0.0308918810;
+    p = p * a - 0.0501743046;
+    p = p * a + 0.0889789874;
+    p = p * a - 0.2145988016;
+    p = p * a + 1.5707963050;
+    float r = sqrt(1.0 - a) * p;
+    return x < 0.0 ? 3.14159265358979 - r : r;
+}
+
+// v / |v|, scale-invariant (works for denormal and huge components); zero, NaN or Inf -> fallback.
+vec3 safeNormalize(vec3 v, vec3 fallback) {
+    float m = max(max(abs(v.x), abs(v.y)), abs(v.z));
+    if (!(m > 0.0) || !(m <= kFloatMax)) return fallback;
+    v /= m;
+    return v / sqrt(dot(v, v));
+}
+
+// ---- distance falloff a(d); range < 0 means "no range" where the range is optional ----
+
+float falloffRangePower(float d, float range, float exponent) {
+    if (!(d < range)) return 0.0;
+    return safePow(saturate(1.0 - d / range), exponent);
+}
+
+float rangeWindow(float d, float range) {
+    if (range < 0.0) return 1.0;
+    if (!(d < range)) return 0.0;
+    float r = d / range, r2 = r * r;
+    float w = saturate(1.0 - r2 * r2);
+    return w * w;
+}
+
+float falloffInversePolynomial(float d, float constant, float linear, float quadratic, float range) {
+    float w = rangeWindow(d, range);
+    if (!(w > 0.0)) return 0.0;
+    float denom = constant + linear * d + quadratic * d * d;
+    if (!(denom > kMinDenominator)) denom = kMinDenominator;
+    return w / denom;
+}
+
+float falloffRangeQuadratic(float d, float range) {
+    if (!(d < range)) return 0.0;
+    float r = d / range;
+    return saturate(1.0 - r * r);
+}
+
+float falloffInverseSquare(float d, float range) {
+    float w = rangeWindow(d, range);
+    if (!(w > 0.0)) return 0.0;
+    float d2 = d * d;
+    if (!(d2 > kMinDenominator)) d2 = kMinDenominator;
+    return w / d2;
+}
+
+// ---- spot cone s(cosθ), cosθ = dot(-L, spotDirection) ----
+
+float coneAnglePower(float cosTheta, float outer, float exponent) {
+    float theta = safeAcos(cosTheta);
+    if (!(theta < outer)) return 0.0;
+    return safePow(saturate(1.0 - theta / outer), exponent);
+}
+
+float coneSmooth(float cosTheta, float cosInner, float cosOuter, float exponent) {
+    if (!(cosTheta > cosOuter)) return 0.0;
+    float width = cosInner - cosOuter;
+    if (!(width > kMinConeWidth)) return 1.0;
+    return safePow(saturate((cosTheta - cosOuter) / width), exponent);
+}
+
+float coneHard(float cosTheta, float cosOuter) { return cosTheta >= cosOuter ? 1.0 : 0.0; }
+
+// ---- surface terms ----
+
+float diffuseLambert(float nDotL) { return positive(nDotL); }
+
+float diffuseHalfLambert(float nDotL) {
+    float h = saturate(nDotL * 0.5 + 0.5);
+    return h * h;
+}
+
+float specularPhong(vec3 N, vec3 L, vec3 V, float shininess) {
+    vec3 R = 2.0 * dot(N, L) * N - L;  // reflect(-L, N)
+    return safePow(saturate(dot(R, V)), shininess);
+}
+
+float specularBlinnPhong(vec3 N, vec3 L, vec3 V, float shininess) {
+    vec3 H = safeNormalize(L + V, N);
+    return safePow(saturate(dot(N, H)), shininess);
+}
+
+float rimTerm(vec3 direction, vec3 N, vec3 V, float exponent) {
+    float p1 = 1.0 - saturate(dot(direction, N));
+    float p2 = 1.0 - saturate(dot(N, V));
+    return safePow(p1 * p2, exponent);
+}
+
+// ---- tone mapping and output encoding ----
+
+float toneMap(int op, float x) {
+    if (!(x > 0.0)) return 0.0;
+    if (op == LR_TONEMAP_CLAMP) return saturate(x);
+    if (op == LR_TONEMAP_REINHARD) return x < kFloatMax ? x / (1.0 + x) : 1.0;
+    if (op == LR_TONEMAP_ACES) {  // Narkowicz 2015 fit
+        if (!(x < 1e6)) return 1.0;
+        return saturate((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14));
+    }
+    return 0.0;
+}
+
+float linearToSrgb(float x) {
+    x = saturate(x);
+    return x <= 0.0031308 ? 12.92 * x : 1.055 * pow(x, 1.0 / 2.4) - 0.055;
+}
+
+float srgbToLinear(float x) {
+    x = saturate(x);
+    return x <= 0.04045 ? x / 12.92 : pow((x + 0.055) / 1.055, 2.4);
+}
+
+#ifdef LR_SHADING
+
+// ---- whole-surface shading (shade.h) ----
+
+struct ShadeLight {
+    int type;
+    vec3 position;   // view space (point, spot)
+    vec3 direction;  // view space, unit: where the light travels (spot, directional, rim)
+    vec3 color;      // effective colour × intensity
+    vec3 specular;   // Sc × intensity
+    vec3 ambient;    // Ac × intensity
+    int falloff;
+    float range, falloffExponent, constant, linear, quadratic;
+    int cone;
+    float cosInner, cosOuter, outer, coneExponent;  // outer in radians
+    int diffuse;
+    float rimExponent;
+};
+
+struct Surface {
+    vec3 position;  // view space
+    vec3 normal;    // view space, unit
+    vec3 albedo;
+    vec3 specular;  // material specular colour (ks)
+    vec3 emissive;
+    float shininess;
+};
+
+struct ShadeSettings {
+    vec3 ambient;
+    float distanceScale;  // 1 / bounding radius for rigs in model space, else 1
+};
+
+// Compile-time constants where the scene has a single value: the branches on them fold away.
+#ifdef LR_ONLY_LIGHT
+#define lightTypeOf(l) LR_ONLY_LIGHT
+#else
+#define lightTypeOf(l) (l).type
+#endif
+#ifdef LR_ONLY_FALLOFF
+#define falloffOf(l) LR_ONLY_FALLOFF
+#else
+#define falloffOf(l) (l).falloff
+#endif
+#ifdef LR_ONLY_CONE
+#define coneOf(l) LR_ONLY_CONE
+#else
+#define coneOf(l) (l).cone
+#endif
+#ifdef LR_ONLY_DIFFUSE
+#define diffuseOf(l) LR_ONLY_DIFFUSE
+#else
+#define diffuseOf(l) (l).diffuse
+#endif
+
+#if defined(LR_HAS_LIGHT_POINT) || defined(LR_HAS_LIGHT_SPOT)
+#define LR_HAS_POSITIONAL 1
+#endif
+#if defined(LR_HAS_POSITIONAL) || defined(LR_HAS_LIGHT_DIRECTIONAL)
+#define LR_HAS_SURFACE_LIGHTS 1
+#endif
+
+uniform samplerBuffer uLights;  // LR_LIGHT_TEXELS RGBA32F texels per light, view space
+uniform int uLightCount;
+
+// Texel layout (src/render/lightbuffer.cpp packLight writes it):
+//   0: position.xyz, type        1: direction.xyz, falloff   2: color.xyz, cone   3: specular.xyz, diffuse
+//   4: ambient.xyz, rimExponent  5: range, falloffExponent, constant, linear
+//   6: quadratic, cosInner, cosOuter, outer                  7: coneExponent, 0, 0, 0
+// Unused fields are never read: the compiler drops their fetches.
+ShadeLight loadLight(int index) {
+    int base = index * LR_LIGHT_TEXELS;
+    vec4 t0 = texelFetch(uLights, base + 0);
+    vec4 t1 = texelFetch(uLights, base + 1);
+    vec4 t2 = texelFetch(uLights, base + 2);
+    vec4 t3 = texelFetch(uLights, base + 3);
+    vec4 t4 = texelFetch(uLights, base + 4);
+    vec4 t5 = texelFetch(uLights, base + 5);
+    vec4 t6 = texelFetch(uLights, base + 6);
+    vec4 t7 = texelFetch(uLights, base + 7);
+    ShadeLight l;
+    l.position = t0.xyz;
+    l.type = int(t0.w);
+    l.direction = t1.xyz;
+    l.falloff = int(t1.w);
+    l.color = t2.xyz;
+    l.cone = int(t2.w);
+    l.specular = t3.xyz;
+    l.diffuse = int(t3.w);
+    l.ambient = t4.xyz;
+    l.rimExponent = t4.w;
+    l.range = t5.x;
+    l.falloffExponent = t5.y;
+    l.constant = t5.z;
+    l.linear = t5.w;
+    l.quadratic = t6.x;
+    l.cosInner = t6.y;
+    l.cosOuter = t6.z;
+    l.outer = t6.w;
+    l.coneExponent = t7.x;
+    return l;
+}
+
+float evalFalloff(ShadeLight l, float d) {
+    int m = falloffOf(l);
+#ifdef LR_HAS_FALLOFF_NONE
+    if (m == LR_FALLOFF_NONE) return 1.0;
+#endif
+#ifdef LR_HAS_FALLOFF_RANGE_POWER
+    if (m == LR_FALLOFF_RANGE_POWER) return falloffRangePower(d, l.range, l.falloffExponent);
+#endif
+#ifdef LR_HAS_FALLOFF_INVERSE_POLYNOMIAL
+    if (m == LR_FALLOFF_INVERSE_POLYNOMIAL)
+        return falloffInversePolynomial(d, l.constant, l.linear, l.quadratic, l.range);
+#endif
+#ifdef LR_HAS_FALLOFF_RANGE_QUADRATIC
+    if (m == LR_FALLOFF_RANGE_QUADRATIC) return falloffRangeQuadratic(d, l.range);
+#endif
+#ifdef LR_HAS_FALLOFF_INVERSE_SQUARE
+    if (m == LR_FALLOFF_INVERSE_SQUARE) return falloffInverseSquare(d, l.range);
+#endif
+    return 0.0;
+}
+
+float evalCone(ShadeLight l, float cosTheta) {
+    int m = coneOf(l);
+#ifdef LR_HAS_CONE_ANGLE_POWER
+    if (m == LR_CONE_ANGLE_POWER) return coneAnglePower(cosTheta, l.outer, l.coneExponent);
+#endif
+#ifdef LR_HAS_CONE_SMOOTH
+    if (m == LR_CONE_SMOOTH) return coneSmooth(cosTheta, l.cosInner, l.cosOuter, l.coneExponent);
+#endif
+#ifdef LR_HAS_CONE_HARD
+    if (m == LR_CONE_HARD) return coneHard(cosTheta, l.cosOuter);
+#endif
+    return 0.0;
+}
+
+vec3 viewVector(ShadeSettings s, vec3 P) {
+    const vec3 infinite = vec3(0.0, 0.0, 1.0);
+#if LR_VIEWER == LR_VIEWER_LOCAL
+    return safeNormalize(-P, infinite);
+#else
+    return infinite;
+#endif
+}
+
+// Radiance one light adds at the surface (linear, HDR).
+vec3 shadeLight(ShadeLight l, Surface s, ShadeSettings st, vec3 V) {
+    vec3 N = s.normal;
+#ifdef LR_HAS_LIGHT_RIM
+    if (lightTypeOf(l) == LR_LIGHT_RIM) return l.color * rimTerm(l.direction, N, V, l.rimExponent);
+#endif
+#ifdef LR_HAS_SURFACE_LIGHTS
+    vec3 L = -l.direction;
+    float attenuation = 1.0;
+#ifdef LR_HAS_POSITIONAL
+    if (lightTypeOf(l) != LR_LIGHT_DIRECTIONAL) {
+        vec3 toLight = l.position - s.position;
+        float d = length(toLight);
+        L = safeNormalize(toLight, N);  // a light on the surface shines along the normal
+        attenuation = evalFalloff(l, d * st.distanceScale);
+#ifdef LR_HAS_LIGHT_SPOT
+        if (lightTypeOf(l) == LR_LIGHT_SPOT) attenuation *= evalCone(l, dot(-L, l.direction));
+#endif
+        if (!(attenuation > 0.0)) return vec3(0.0);
+    }
+#endif
+    float nDotL = dot(N, L);
+    float D = diffuseOf(l) == LR_DIFFUSE_LAMBERT ? diffuseLambert(nDotL) : diffuseHalfLambert(nDotL);
+    float S = 0.0;
+#if LR_SPECULAR == LR_SPECULAR_PHONG
+    if (nDotL > 0.0) S = specularPhong(N, L, V, s.shininess);
+#else
+    if (nDotL > 0.0) S = specularBlinnPhong(N, L, V, s.shininess);
+#endif
+#ifdef LR_HAS_LIGHT_AMBIENT
+    return attenuation * (l.color * s.albedo * D + l.specular * s.specular * S + l.ambient * s.albedo);
+#else
+    return attenuation * (l.color * s.albedo * D + l.specular * s.specular * S);
+#endif
+#else
+    return vec3(0.0);
+#endif
+}
+
+// Scene ambient + every light + emissive.
+vec3 shadeSurface(Surface s, ShadeSettings st) {
+    vec3 V = viewVector(st, s.position);
+    vec3 sum = st.ambient * s.albedo;
+#if defined(LR_HAS_SURFACE_LIGHTS) || defined(LR_HAS_LIGHT_RIM)
+    for (int i = 0; i < uLightCount; ++i) sum += shadeLight(loadLight(i), s, st, V);
+#endif
+    return sum + s.emissive;
+}
+
+#endif  // LR_SHADING

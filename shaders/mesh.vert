@@ -1,0 +1,39 @@
+// Mesh vertex stage: positions relative to Model::origin, transformed to view space with a model-view
+// matrix built in double precision on the CPU (precision holds far from the world origin).
+layout(location = 0) in vec3 aPosition;
+layout(location = 1) in vec3 aNormal;
+layout(location = 2) in vec2 aUv;
+layout(location = 3) in vec4 aTangent;
+layout(location = 4) in vec4 aColor;
+
+uniform mat4 uModelView;
+uniform mat3 uNormalMatrix;
+uniform mat4 uProjection;
+
+out vec3 vPosition;  // view space
+out vec3 vNormal;    // view space, not normalised
+#if defined(LR_BASE_COLOR_TEXTURE) || defined(LR_NORMAL_MAP) || defined(LR_EMISSIVE_TEXTURE)
+out vec2 vUv;
+#endif
+#ifdef LR_NORMAL_MAP
+out vec4 vTangent;  // view space xyz, handedness w
+#endif
+#ifdef LR_VERTEX_COLOR
+out vec4 vColor;
+#endif
+
+void main() {
+    vec4 p = uModelView * vec4(aPosition, 1.0);
+    vPosition = p.xyz;
+    vNormal = uNormalMatrix * aNormal;
+#if defined(LR_BASE_COLOR_TEXTURE) || defined(LR_NORMAL_MAP) || defined(LR_EMISSIVE_TEXTURE)
+    vUv = aUv;
+#endif
+#ifdef LR_NORMAL_MAP
+    vTangent = vec4(mat3(uModelView) * aTangent.xyz, aTangent.w);
+#endif
+#ifdef LR_VERTEX_COLOR
+    vColor = aColor;
+#endif
+    gl_Position = uProjection * p;
+}

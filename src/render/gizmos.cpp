@@ -1,0 +1,155 @@
+#include "gizmos.h"
+
+#include "core/lighting.h"
+
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace lr::render {
+
+namespace {
+
+using lighting::safeNormalize;
+constexpr double kTwoPi = 6.283185307179586;
+
+struct Builder {
+    const glm::dmat4& view;
+    GizmoGeometry& out;
+    double nearClip = 0.0;
+
+    glm::dvec3 toView(const glm::dvec3& p) const { return glm::dvec3(view * glm::dvec4(p, 1.0)); }
+    // A world segment, clipped to the half-space in front of the near plane (z <= -nearClip).
+    void line(const glm::dvec3& worldA, const glm::dvec3& worldB, const glm::vec4& c) {
+        glm::dvec3 a = toView(worldA), b = toView(worldB);
+        const double limit = -nearClip;
+        if (!(a.z <= limit) && !(b.z <= limit)) return;
+        if (!(a.z <= limit)) a = b + (a - b) * ((limit - b.z) / (a.z - b.z));
+        else if (!(b.z <= limit)) b = a + (b - a) * ((limit - a.z) / (b.z - a.z));
+        if (!std::isfinite(a.x + a.y + a.z + b.x + b.y + b.z)) return;
+        out.lines.push_back({glm::vec3(a), c, {}});
+        out.lines.push_back({glm::vec3(b), c, {}});
+    }
+    void circle(const glm::dvec3& center, const glm::dvec3& normal, double radius, const glm::vec4& c,
+                int segments = 48) {
+        const glm::dvec3 n = safeNormalize(normal, glm::dvec3(0, 1, 0));
+        const glm::dvec3 u = safeNormalize(glm::cross(n, std::abs(n.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0)),
+                                           glm::dvec3(1, 0, 0));
+        const glm::dvec3 v = glm::cross(n, u);
+        glm::dvec3 prev = center + u * radius;
+        for (int i = 1; i <= segments; ++i) {
+            const double a = kTwoPi * i / segments;
+            const glm::dvec3 p = center + (u * std::cos(a) + v * std::sin(a)) * radius;
+            line(prev, p, c);
+            prev = p;
+        }
+    }
+    void arrow(const glm::dvec3& from, const glm::dvec3& dir, double length, const glm::vec4& c) {
+        const glm::dvec3 tip = from + dir * length;
+        line(from, tip, c);
+        const glm::dvec3 side = safeNormalize(glm::cross(dir, std::abs(dir.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0)),
+                                              glm::dvec3(1, 0, 0));
+        const glm::dvec3 side2 = glm::cross(dir, side);
+        const double head = length * 0.2;
+        for (const glm::dvec3& s : {side, -side, side2, -side2}) line(tip, tip - dir * head + s * head * 0.5, c);
+    }
+};
+
+// A light's colour for display: hue of the effective colour, brightest channel at 1, sRGB-encoded.
+glm::vec4 displayColor(const Light& l, float alpha) {
+    glm::dvec3 c = l.effectiveColor();
+    const double m = std::max({c.x, c.y, c.z});
+    c = m > 0.0 && std::isfinite(m) ? c / m : glm::dvec3(1.0);
+    if (!l.enabled) c = glm::dvec3(0.45);
+    return {float(lighting::linearToSrgb(c.x)), float(lighting::linearToSrgb(c.y)), float(lighting::linearToSrgb(c.z)),
+            alpha};
+}
+
+// The finite world range of a point or spot light, or a negative value when it has none.
+double worldRange(const Rig& rig, const SceneFrame& frame, const Light& l) {
+    const Falloff& f = l.falloff;
+    const bool bounded = f.model == FalloffModel::RangePower || f.model == FalloffModel::RangeQuadratic ||
+                         ((f.model == FalloffModel::InversePolynomial || f.model == FalloffModel::InverseSquare) &&
+                          f.hasRange());
+    if (!bounded) return -1.0;
+    const double r = f.range / distanceScale(rig, frame);
+    return std::isfinite(r) ? r : -1.0;
+}
+
+void addGrid(Builder& b, const Bounds& bounds, double radius) {
+    const double spacing = std::pow(10.0, std::floor(std::log10(radius * 0.5)));
+    const int half = int(std::ceil(radius * 1.5 / spacing));
+    const glm::dvec3 c = bounds.center();
+    const double y = bounds.min.y;
+    const double x0 = std::round(c.x / spacing) * spacing, z0 = std::round(c.z / spacing) * spacing;
+    const double ext = half * spacing;
+    for (int i = -half; i <= half; ++i) {
+        const float a = (i % 5 == 0) ? 0.55f : 0.3f;
+        const glm::vec4 col(0.6f, 0.6f, 0.6f, a);
+        b.line({x0 + i * spacing, y, z0 - ext}, {x0 + i * spacing, y, z0 + ext}, col);
+        b.line({x0 - ext, y, z0 + i * spacing}, {x0 + ext, y, z0 + i * spacing}, col);
+    }
+}
+
+}  // namespace
+
+glm::dvec3 directionalAnchor(const SceneFrame& frame, const glm::dvec3& direction) {
+    return frame.center - safeNormalize(direction, glm::dvec3(0, -1, 0)) * (frame.radius * 1.6);
+}
+
+GizmoGeometry buildGizmos(const Rig& rig, const SceneFrame& frame, const Bounds& bounds, const glm::dmat4& view,
+                          const GizmoOptions& options) {
+    GizmoGeometry out;
+    Builder b{view, out, std::max(options.nearClip, 0.0)};
+    const double radius = frame.radius > 0.0 && std::isfinite(frame.radius) ? frame.radius : 1.0;
+    if (options.grid) addGrid(b, bounds, radius);
+    if (!options.lights) return out;
+    for (size_t i = 0; i < rig.lights.size(); ++i) {
+        const Light& l = rig.lights[i];
+        const bool selected = std::find(options.selected.begin(), options.selected.end(), int(i)) != options.selected.end();
+        const glm::vec4 strong = displayColor(l, selected ? 1.0f : 0.8f);
+        const glm::vec4 faint = displayColor(l, selected ? 0.7f : 0.35f);
+        const glm::dvec3 dir = safeNormalize(l.direction, glm::dvec3(0, -1, 0));
+        glm::dvec3 at;
+        if (l.usesPosition()) {
+            at = rigToWorld(rig, frame, l.position);
+            const double range = worldRange(rig, frame, l);
+            const bool drawRange = range > 0.0 && range < radius * 1e4;
+            if (drawRange && (selected || l.type == LightType::Point)) {
+                b.circle(at, {1, 0, 0}, range, faint);
+                b.circle(at, {0, 1, 0}, range, faint);
+                b.circle(at, {0, 0, 1}, range, faint);
+            }
+            if (l.type == LightType::Spot) {
+                const double len = drawRange ? std::min(range, radius * 3.0) : radius;
+                auto cone = [&](double halfAngleDeg, const glm::vec4& c, int spokes) {
+                    const double a = glm::radians(std::clamp(halfAngleDeg, 0.0, 179.0));
+                    const glm::dvec3 centre = at + dir * (len * std::cos(a));
+                    const double r = len * std::sin(a);
+                    b.circle(centre, dir, r, c, 40);
+                    const glm::dvec3 u = safeNormalize(glm::cross(dir, std::abs(dir.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0)),
+                                                       glm::dvec3(1, 0, 0));
+                    const glm::dvec3 v = glm::cross(dir, u);
+                    for (int k = 0; k < spokes; ++k) {
+                        const double t = kTwoPi * k / spokes;
+                        b.line(at, centre + (u * std::cos(t) + v * std::sin(t)) * r, c);
+                    }
+                };
+                cone(l.cone.outer, strong, 4);
+                if (l.cone.model == ConeModel::Smooth) cone(l.cone.inner, faint, 0);
+            }
+        } else {
+            at = directionalAnchor(frame, dir);
+            b.arrow(at, dir, radius * 0.6, strong);
+        }
+        const float shape = float(int(l.type) + (selected ? 8 : 0));
+        const float size = float(options.iconPixels * (selected ? 1.35 : 1.0));
+        const glm::dvec3 p = b.toView(at);
+        if (p.z <= -b.nearClip && std::isfinite(p.x + p.y + p.z))
+            out.points.push_back({glm::vec3(p), displayColor(l, 1.0f), {size, shape}});
+    }
+    return out;
+}
+
+}  // namespace lr::render

@@ -1,0 +1,99 @@
+#include "gpumodel.h"
+
+#include <QImage>
+#include <cstddef>
+
+namespace lr::render {
+
+
+GLuint GpuModel::texture(QOpenGLFunctions_3_3_Core* gl, int index, bool srgb) {
+    const auto key = std::make_pair(index, srgb);
+    if (auto it = m_textures.find(key); it != m_textures.end()) return it->second;
+    const QImage& source = m_model->textures[size_t(index)].image;
+    // model.h: UV (0, 0) is the top-left texel = the first QImage row, so the rows upload as they are.
+    const QImage image = source.convertToFormat(QImage::Format_RGBA8888);
+    GLuint name = 0;
+    gl->glGenTextures(1, &name);
+    gl->glBindTexture(GL_TEXTURE_2D, name);
+    gl->glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    gl->glPixelStorei(GL_UNPACK_ROW_LENGTH, int(image.bytesPerLine() / 4));
+    gl->glTexImage2D(GL_TEXTURE_2D, 0, srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, image.width(), image.height(), 0, GL_RGBA,
+                     GL_UNSIGNED_BYTE, image.constBits());
+    gl->glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    gl->glGenerateMipmap(GL_TEXTURE_2D);
+    gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    m_textures.emplace(key, name);
+    return name;
+}
+
+bool GpuModel::upload(QOpenGLFunctions_3_3_Core* gl, std::shared_ptr<const Model> model, QString* error) {
+    release(gl);
+    m_model = std::move(model);
+    if (!m_model) return true;
+    while (gl->glGetError() != GL_NO_ERROR) {
+    }
+    for (size_t i = 0; i < m_model->meshes.size(); ++i) {
+        const Mesh& mesh = m_model->meshes[i];
+        if (mesh.vertices.empty() || mesh.indices.size() < 3) continue;
+        GpuDraw d;
+        d.mesh = int(i);
+        d.material = mesh.material >= 0 && size_t(mesh.material) < m_model->materials.size() ? mesh.material : -1;
+        d.features = materialFeatures(*m_model, mesh);
+        d.indexCount = GLsizei(mesh.indices.size() / 3 * 3);
+        gl->glGenVertexArrays(1, &d.vao);
+        gl->glBindVertexArray(d.vao);
+        gl->glGenBuffers(1, &d.vbo);
+        gl->glBindBuffer(GL_ARRAY_BUFFER, d.vbo);
+        gl->glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.vertices.size() * sizeof(Vertex)), mesh.vertices.data(),
+                         GL_STATIC_DRAW);
+        gl->glGenBuffers(1, &d.ibo);
+        gl->glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, d.ibo);
+        gl->glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(size_t(d.indexCount) * sizeof(std::uint32_t)),
+                         mesh.indices.data(), GL_STATIC_DRAW);
+        const auto attrib = [&](GLuint loc, GLint n, std::size_t offset) {
+            gl->glEnableVertexAttribArray(loc);
+            gl->glVertexAttribPointer(loc, n, GL_FLOAT, GL_FALSE, GLsizei(sizeof(Vertex)),
+                                      reinterpret_cast<const void*>(offset));
+        };
+        attrib(0, 3, offsetof(Vertex, position));
+        attrib(1, 3, offsetof(Vertex, normal));
+        attrib(2, 2, offsetof(Vertex, uv));
+        attrib(3, 4, offsetof(Vertex, tangent));
+        attrib(4, 4, offsetof(Vertex, color));
+        gl->glBindVertexArray(0);
+        if (d.material >= 0) {
+            const Material& m = m_model->materials[size_t(d.material)];
+            if (d.features.baseColorTexture) d.baseColorTexture = texture(gl, m.baseColorTexture, true);
+            if (d.features.normalMap) d.normalTexture = texture(gl, m.normalTexture, false);
+            if (d.features.emissiveTexture) d.emissiveTexture = texture(gl, m.emissiveTexture, true);
+        }
+        m_draws.push_back(d);
+        if (const GLenum e = gl->glGetError(); e != GL_NO_ERROR) {
+            if (error)
+                *error = QStringLiteral("uploading mesh %1 of %2 failed (GL error 0x%3)")
+                             .arg(i)
+                             .arg(m_model->path)
+                             .arg(e, 0, 16);
+            release(gl);
+            return false;
+        }
+    }
+    return true;
+}
+
+void GpuModel::release(QOpenGLFunctions_3_3_Core* gl) {
+    for (GpuDraw& d : m_draws) {
+        gl->glDeleteVertexArrays(1, &d.vao);
+        gl->glDeleteBuffers(1, &d.vbo);
+        gl->glDeleteBuffers(1, &d.ibo);
+    }
+    m_draws.clear();
+    for (auto& [key, name] : m_textures) gl->glDeleteTextures(1, &name);
+    m_textures.clear();
+    m_model.reset();
+}
+
+}  // namespace lr::render

@@ -1,0 +1,41 @@
+// A Model uploaded to GL: one vertex array per mesh, textures created on first use (sRGB for base colour
+// and emissive, linear for normal maps), mipmapped. Needs the current context of the owning Renderer.
+#pragma once
+
+#include "model/model.h"
+#include "shadergen.h"
+
+#include <QOpenGLFunctions_3_3_Core>
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace lr::render {
+
+struct GpuDraw {
+    GLuint vao = 0, vbo = 0, ibo = 0;
+    GLsizei indexCount = 0;
+    int mesh = -1;
+    int material = -1;  // valid index into Model::materials, or -1 for the default material
+    MaterialFeatures features;
+    GLuint baseColorTexture = 0, normalTexture = 0, emissiveTexture = 0;
+};
+
+class GpuModel {
+public:
+    // Uploads every non-empty mesh. On failure (e.g. out of GPU memory) releases what it made.
+    bool upload(QOpenGLFunctions_3_3_Core* gl, std::shared_ptr<const Model> model, QString* error);
+    void release(QOpenGLFunctions_3_3_Core* gl);
+
+    const Model* model() const { return m_model.get(); }
+    const std::vector<GpuDraw>& draws() const { return m_draws; }
+
+private:
+    GLuint texture(QOpenGLFunctions_3_3_Core* gl, int index, bool srgb);
+
+    std::shared_ptr<const Model> m_model;
+    std::vector<GpuDraw> m_draws;
+    std::map<std::pair<int, bool>, GLuint> m_textures;  // (texture index, sRGB) -> GL name
+};
+
+}  // namespace lr::render

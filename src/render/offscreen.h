@@ -1,0 +1,69 @@
+// Rendering without a window: a QOffscreenSurface and an OpenGL 3.3 core context of its own driving a
+// Renderer (the same one the viewport uses, so the pixels are the same). Screenshots at any size (tiled
+// beyond the largest render target), supersampled 1–4×, transparent backgrounds; float read-backs of the
+// linear radiance and of the G-buffer for tests and the accuracy benchmark.
+//
+// Create, initialize and use it on the GUI thread of a QGuiApplication (the platform must offer OpenGL:
+// under X11 that means a display, e.g. xvfb-run).
+#pragma once
+
+#include "renderer.h"
+
+#include <QImage>
+#include <QOpenGLFunctions_3_3_Core>
+#include <memory>
+
+class QOffscreenSurface;
+class QOpenGLContext;
+
+namespace lr {
+
+class OffscreenRenderer {
+public:
+    OffscreenRenderer();
+    ~OffscreenRenderer();
+    OffscreenRenderer(const OffscreenRenderer&) = delete;
+    OffscreenRenderer& operator=(const OffscreenRenderer&) = delete;
+
+    // Creates the context (3.3 core profile; a clear error when the platform cannot give one).
+    bool initialize(QString* error);
+    bool makeCurrent();  // initialize() leaves the context current; call this if you switched away
+    Renderer& renderer() { return m_renderer; }
+    QString glDescription() const;  // "llvmpipe (LLVM 15.0.6, 256 bits), OpenGL 4.5 core"
+
+    bool setModel(std::shared_ptr<const Model> model, QString* error = nullptr);
+    void setRig(const Rig& rig) { m_renderer.setRig(rig); }
+
+    // An 8-bit image (QImage::Format_RGBA8888, straight alpha) of `size` pixels, rendered at
+    // size × supersample (1–4; averaged in linear light) in tiles of at most maxTileSize() pixels.
+    // A null image on failure, *error saying why.
+    QImage renderImage(const ViewCamera& camera, QSize size, const RenderSettings& settings, int supersample,
+                       QString* error);
+    // Linear radiance before exposure and tone mapping (RGBA32F target, one tile: size <= maxTileSize()).
+    bool renderRadiance(const ViewCamera& camera, QSize size, const RenderSettings& settings, FloatImage* out,
+                        QString* error);
+    bool renderGBuffer(const ViewCamera& camera, QSize size, const RenderSettings& settings, GBuffer* out,
+                       QString* error);
+
+    // The largest tile side: the driver's limit, at most 4096, or a smaller value set here (tests).
+    int maxTileSize() const;
+    void setMaxTileSize(int pixels) { m_tileLimit = pixels; }
+
+private:
+    bool ensureTarget(QSize size, QString* error);
+    void releaseTarget();
+
+    std::unique_ptr<QOffscreenSurface> m_surface;
+    std::unique_ptr<QOpenGLContext> m_context;
+    QOpenGLFunctions_3_3_Core m_gl;
+    Renderer m_renderer;
+    GLuint m_fbo = 0, m_color = 0;
+    QSize m_targetSize;
+    int m_tileLimit = 4096;
+};
+
+// Box-downsamples an RGBA8888 (straight alpha, sRGB) image by an integer factor, averaging in linear
+// light weighted by alpha. factor 1 returns the image.
+QImage downsampleLinear(const QImage& image, int factor);
+
+}  // namespace lr

@@ -1,0 +1,141 @@
+// LightRig's OpenGL 3.3 core renderer, shared by the viewport, screenshots, the command line and the
+// tests so that all of them produce the same pixels.
+//
+// Frame: the model is shaded into an HDR target (RGBA16F or RGBA32F, optionally MSAA) with every light of
+// the rig that can reach it (view space, a texture buffer of kLightTexels RGBA32F texels per light, any
+// number of lights), resolved, then one full-screen pass applies exposure (×2^EV), the tone map and the
+// sRGB encoding into the caller's framebuffer; gizmos and the grid are drawn over that.
+// Shaders are specialised per FeatureKey (shadergen.h): a value change (colour, position, intensity)
+// only re-uploads light data; a new light type or model compiles one new variant, once.
+//
+// Every call needs the context that was current at initialize() to be current.
+#pragma once
+
+#include "camera.h"
+#include "core/prepare.h"
+#include "core/quality.h"
+#include "core/rig.h"
+#include "floatimage.h"
+#include "model/model.h"
+
+#include <QColor>
+#include <QOpenGLFunctions_3_3_Core>
+#include <QRect>
+#include <QSize>
+#include <QString>
+#include <memory>
+#include <vector>
+
+class QOpenGLContext;
+
+namespace lr {
+
+namespace render {
+class ProgramCache;
+class GpuModel;
+struct Targets;
+}  // namespace render
+
+struct RenderSettings {
+    double exposureEV = 0.0;
+    ToneMap toneMap = ToneMap::Clamp;
+    QColor background = QColor(38, 38, 42);  // sRGB
+    bool transparentBackground = false;      // alpha 0 where there is no model (straight alpha)
+    int msaaSamples = 4;                      // 0 or 1: off; clamped to what the driver offers
+    bool showGizmos = false;
+    bool showGrid = false;
+    std::vector<int> selectedLights;  // indices into the rig's lights, highlighted
+    Quality quality = Quality::Exact;  // only Exact is implemented so far: the others render as Exact
+    bool cullBackFaces = true;         // single-sided materials; double-sided ones are never culled
+    bool hdrFloat32 = false;           // RGBA32F instead of RGBA16F (for read-backs and tests)
+    bool operator==(const RenderSettings&) const = default;
+};
+
+struct RenderStats {
+    int shaderVariantsCompiled = 0;  // since initialize()
+    int shaderVariantsCached = 0;
+    int lightsUploaded = 0;  // in the last frame: enabled and able to reach the model
+    int lightsInRig = 0;
+    qint64 triangles = 0;
+    int drawCalls = 0;
+    double lastGpuMs = -1.0;  // GL_TIME_ELAPSED of a recent frame (asynchronous: a frame or two old); < 0: none yet
+    double lastCpuMs = 0.0;   // CPU time spent in the last render() call (GL submission, not completion)
+};
+
+class Renderer : protected QOpenGLFunctions_3_3_Core {
+public:
+    Renderer();
+    ~Renderer();  // releases GL resources if their context is current, else warns
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    // Needs a current OpenGL 3.3 (or later) core profile context.
+    bool initialize(QString* error);
+    bool isInitialized() const { return m_initialized; }
+    QOpenGLContext* context() const { return m_context; }
+
+    // Uploads the model (nullptr: no model). False (with lastError) if the upload failed; nothing is drawn then.
+    bool setModel(std::shared_ptr<const Model> model);
+    const Model* model() const;
+    void setRig(const Rig& rig);  // cheap: no GL work here; light data is refreshed on the next frame
+    const Rig& rig() const { return m_rig; }
+    // The frame a `model`-space rig is anchored to: the model's bounding sphere (unit sphere without a model).
+    SceneFrame sceneFrame() const;
+    Bounds bounds() const;
+
+    // Renders into targetFbo (0: the default framebuffer), which must be at least `size` (or tile.size()).
+    // `tile`, when valid, is the part of a size-pixel image to draw (image coordinates, top-left origin);
+    // the target then receives only that part. False with lastError() when something failed.
+    bool render(const ViewCamera& camera, QSize size, const RenderSettings& settings, GLuint targetFbo,
+                const QRect& tile = QRect());
+    // The last frame's resolved HDR radiance (before exposure and tone mapping; alpha = coverage).
+    bool readRadiance(FloatImage* out);
+    // Draws the G-buffer for this view and reads it back (no MSAA, float targets).
+    bool renderGBuffer(const ViewCamera& camera, QSize size, const RenderSettings& settings, GBuffer* out,
+                       const QRect& tile = QRect());
+
+    // The camera as render() uses it: automatic clip planes filled in from the scene.
+    ViewCamera effectiveCamera(const ViewCamera& camera) const;
+
+    void releaseResources();  // the viewport calls this from QOpenGLContext::aboutToBeDestroyed
+    const RenderStats& stats() const { return m_stats; }
+    QString lastError() const { return m_lastError; }
+    int maxSamples() const { return m_maxSamples; }
+    int maxTargetSize() const { return m_maxTargetSize; }  // largest width/height of one render target
+
+    // Replace a shader file's text (tests, live editing); empty restores the embedded one. Clears the cache.
+    void setShaderSourceOverride(const QString& name, const QByteArray& source);
+
+private:
+    bool fail(const QString& message);
+    bool ensureTargets(QSize size, int samples, bool float32);
+    void uploadLights(const glm::dmat4& view);
+    bool drawModel(const glm::dmat4& view, const glm::dmat4& projection, const RenderSettings& settings,
+                   bool gbuffer);
+    bool toneMapPass(QSize size, const RenderSettings& settings, GLuint targetFbo);
+    bool gizmoPass(const glm::dmat4& view, const glm::dmat4& projection, double znear,
+                   const RenderSettings& settings, QSize size);
+    void beginTimer();
+    void endTimer();
+    bool readAttachment(GLuint fbo, GLenum attachment, QSize size, FloatImage* out);
+
+    bool m_initialized = false;
+    QOpenGLContext* m_context = nullptr;
+    QString m_lastError;
+    RenderStats m_stats;
+    Rig m_rig;
+    bool m_lightsDirty = true;
+    glm::dmat4 m_uploadedView{0.0};
+    std::unique_ptr<render::ProgramCache> m_programs;
+    std::unique_ptr<render::GpuModel> m_model;
+    std::unique_ptr<render::Targets> m_targets;
+    GLuint m_lightBuffer = 0, m_lightTexture = 0;
+    int m_lightCapacity = 0;  // lights the buffer holds
+    GLuint m_emptyVao = 0;
+    GLuint m_gizmoVao = 0, m_gizmoVbo = 0;
+    GLuint m_queries[4] = {};
+    int m_queryNext = 0, m_queriesPending = 0;
+    int m_maxSamples = 0, m_maxTargetSize = 0;
+};
+
+}  // namespace lr

@@ -1,0 +1,160 @@
+#include "shadergen.h"
+
+#include <QStringList>
+
+namespace lr::render {
+
+namespace {
+
+template <typename E> constexpr std::uint8_t bit(E e) { return std::uint8_t(1u << unsigned(e)); }
+
+// "range-power" -> "RANGE_POWER"
+QByteArray macroName(const char* name) {
+    QByteArray s(name);
+    s.replace('-', '_');
+    return s.toUpper();
+}
+
+// #define LR_<PREFIX>_<NAME> <value> for every value of E.
+template <typename E> void defineEnum(QByteArray& out, const char* prefix) {
+    const auto& names = EnumNames<E>::names;
+    for (size_t i = 0; i < names.size(); ++i)
+        out += "#define LR_" + QByteArray(prefix) + '_' + macroName(names[i]) + ' ' + QByteArray::number(int(i)) +
+               '\n';
+}
+
+// LR_HAS_<PREFIX>_<NAME> for each present value, and LR_ONLY_<onlyName> when exactly one is present.
+template <typename E> void definePresent(QByteArray& out, const char* prefix, const char* onlyName, unsigned mask) {
+    const auto& names = EnumNames<E>::names;
+    int count = 0, last = -1;
+    for (size_t i = 0; i < names.size(); ++i) {
+        if (!(mask & (1u << i))) continue;
+        out += "#define LR_HAS_" + QByteArray(prefix) + '_' + macroName(names[i]) + " 1\n";
+        ++count;
+        last = int(i);
+    }
+    if (count == 1) out += "#define LR_ONLY_" + QByteArray(onlyName) + ' ' + QByteArray::number(last) + '\n';
+}
+
+template <typename E> QString namesIn(unsigned mask) {
+    QStringList parts;
+    for (size_t i = 0; i < EnumNames<E>::names.size(); ++i)
+        if (mask & (1u << i)) parts << QString::fromLatin1(EnumNames<E>::names[i]);
+    return parts.join(QLatin1Char('+'));
+}
+
+void defineAllEnums(QByteArray& out) {
+    defineEnum<LightType>(out, "LIGHT");
+    defineEnum<FalloffModel>(out, "FALLOFF");
+    defineEnum<ConeModel>(out, "CONE");
+    defineEnum<DiffuseModel>(out, "DIFFUSE");
+    defineEnum<SpecularModel>(out, "SPECULAR");
+    defineEnum<ViewerModel>(out, "VIEWER");
+    defineEnum<ToneMap>(out, "TONEMAP");
+}
+
+}  // namespace
+
+std::uint64_t FeatureKey::bits() const {
+    std::uint64_t b = 0;
+    int shift = 0;
+    auto put = [&](std::uint64_t v, int width) {
+        b |= v << shift;
+        shift += width;
+    };
+    put(rig.lightTypes, 4);
+    put(rig.falloffs, 5);
+    put(rig.cones, 3);
+    put(rig.diffuses, 2);
+    put(unsigned(rig.specular), 1);
+    put(unsigned(rig.viewer), 1);
+    put(rig.lightAmbient, 1);
+    put(material.baseColorTexture, 1);
+    put(material.normalMap, 1);
+    put(material.emissiveTexture, 1);
+    put(material.vertexColors, 1);
+    put(material.doubleSided, 1);
+    put(unsigned(quality), 2);
+    put(unsigned(output), 1);
+    return b;
+}
+
+QString FeatureKey::describe() const {
+    QStringList parts;
+    parts << (rig.lightTypes ? namesIn<LightType>(rig.lightTypes) : QStringLiteral("no-lights"));
+    if (rig.falloffs) parts << QStringLiteral("falloff:") + namesIn<FalloffModel>(rig.falloffs);
+    if (rig.cones) parts << QStringLiteral("cone:") + namesIn<ConeModel>(rig.cones);
+    if (rig.diffuses) parts << QStringLiteral("diffuse:") + namesIn<DiffuseModel>(rig.diffuses);
+    parts << QStringLiteral("specular:") + toString(rig.specular) << QStringLiteral("viewer:") + toString(rig.viewer);
+    if (rig.lightAmbient) parts << QStringLiteral("light-ambient");
+    QStringList tex;
+    if (material.baseColorTexture) tex << QStringLiteral("base");
+    if (material.normalMap) tex << QStringLiteral("normal");
+    if (material.emissiveTexture) tex << QStringLiteral("emissive");
+    if (!tex.isEmpty()) parts << QStringLiteral("tex:") + tex.join(QLatin1Char(','));
+    if (material.vertexColors) parts << QStringLiteral("vertex-colors");
+    if (material.doubleSided) parts << QStringLiteral("double-sided");
+    parts << QStringLiteral("quality:") + toString(quality);
+    if (output == ShaderOutput::GBuffer) parts << QStringLiteral("gbuffer");
+    return parts.join(QLatin1Char(' '));
+}
+
+RigFeatures rigFeatures(const Rig& rig) {
+    RigFeatures f;
+    f.specular = rig.shading.specular;
+    f.viewer = rig.shading.viewer;
+    for (const Light& l : rig.lights) {
+        if (!l.enabled) continue;
+        f.lightTypes |= bit(l.type);
+        if (l.usesFalloff()) f.falloffs |= bit(l.falloff.model);
+        if (l.usesCone()) f.cones |= bit(l.cone.model);
+        if (l.usesSurfaceModels()) {
+            f.diffuses |= bit(l.diffuse);
+            if (l.ambient) f.lightAmbient = true;
+        }
+    }
+    return f;
+}
+
+MaterialFeatures materialFeatures(const Model& model, const Mesh& mesh) {
+    MaterialFeatures f;
+    f.vertexColors = mesh.hasVertexColors;
+    if (mesh.material < 0 || size_t(mesh.material) >= model.materials.size()) return f;
+    const Material& m = model.materials[size_t(mesh.material)];
+    const auto valid = [&](int t) { return t >= 0 && size_t(t) < model.textures.size() && !model.textures[size_t(t)].image.isNull(); };
+    f.baseColorTexture = valid(m.baseColorTexture);
+    f.normalMap = valid(m.normalTexture);
+    f.emissiveTexture = valid(m.emissiveTexture);
+    f.doubleSided = m.doubleSided;
+    return f;
+}
+
+QByteArray basicPrelude() {
+    QByteArray out = "#version 330 core\n";
+    defineAllEnums(out);
+    return out;
+}
+
+QByteArray shaderPrelude(const FeatureKey& key) {
+    QByteArray out = basicPrelude();
+    out += "#define LR_SHADING 1\n";
+    out += "#define LR_LIGHT_TEXELS " + QByteArray::number(kLightTexels) + '\n';
+    definePresent<LightType>(out, "LIGHT", "LIGHT", key.rig.lightTypes);
+    definePresent<FalloffModel>(out, "FALLOFF", "FALLOFF", key.rig.falloffs);
+    definePresent<ConeModel>(out, "CONE", "CONE", key.rig.cones);
+    definePresent<DiffuseModel>(out, "DIFFUSE", "DIFFUSE", key.rig.diffuses);
+    out += "#define LR_SPECULAR LR_SPECULAR_" + macroName(EnumNames<SpecularModel>::names[size_t(key.rig.specular)]) +
+           '\n';
+    out += "#define LR_VIEWER LR_VIEWER_" + macroName(EnumNames<ViewerModel>::names[size_t(key.rig.viewer)]) + '\n';
+    if (key.rig.lightAmbient) out += "#define LR_HAS_LIGHT_AMBIENT 1\n";
+    if (key.material.baseColorTexture) out += "#define LR_BASE_COLOR_TEXTURE 1\n";
+    if (key.material.normalMap) out += "#define LR_NORMAL_MAP 1\n";
+    if (key.material.emissiveTexture) out += "#define LR_EMISSIVE_TEXTURE 1\n";
+    if (key.material.vertexColors) out += "#define LR_VERTEX_COLOR 1\n";
+    if (key.material.doubleSided) out += "#define LR_DOUBLE_SIDED 1\n";
+    out += "#define LR_QUALITY_" + macroName(EnumNames<Quality>::names[size_t(key.quality)]) + " 1\n";
+    out += key.output == ShaderOutput::GBuffer ? "#define LR_OUTPUT_GBUFFER 1\n" : "#define LR_OUTPUT_RADIANCE 1\n";
+    return out;
+}
+
+}  // namespace lr::render

@@ -1,0 +1,68 @@
+// Shader specialisation: the features a scene actually uses (light types and models present in the rig,
+// the rig's specular and viewer models, the material's textures) form a FeatureKey; each distinct key is
+// compiled once into a program whose source is shaders/*.glsl with #defines prepended. No GL here.
+#pragma once
+
+#include "core/quality.h"
+#include "core/rig.h"
+#include "model/model.h"
+
+#include <QByteArray>
+#include <QString>
+#include <cstddef>
+#include <cstdint>
+
+namespace lr::render {
+
+enum class ShaderOutput : std::uint8_t { Radiance, GBuffer };
+
+// What the rig contributes to a key. Computed from the enabled lights (whether they reach the model or
+// not), so moving a light never changes it; only adding a light of a new type or model does.
+struct RigFeatures {
+    std::uint8_t lightTypes = 0;  // bit (1 << int(LightType))
+    std::uint8_t falloffs = 0;    // bit per FalloffModel among point and spot lights
+    std::uint8_t cones = 0;       // bit per ConeModel among spot lights
+    std::uint8_t diffuses = 0;    // bit per DiffuseModel among point, spot and directional lights
+    SpecularModel specular = SpecularModel::Phong;
+    ViewerModel viewer = ViewerModel::Local;
+    bool lightAmbient = false;  // some surface light has an ambient colour
+    bool operator==(const RigFeatures&) const = default;
+};
+
+struct MaterialFeatures {
+    bool baseColorTexture = false;
+    bool normalMap = false;
+    bool emissiveTexture = false;
+    bool vertexColors = false;
+    bool doubleSided = false;
+    bool operator==(const MaterialFeatures&) const = default;
+};
+
+struct FeatureKey {
+    RigFeatures rig;
+    MaterialFeatures material;
+    Quality quality = Quality::Exact;
+    ShaderOutput output = ShaderOutput::Radiance;
+
+    std::uint64_t bits() const;  // a unique packing, for hashing and ordering
+    QString describe() const;    // "point+spot falloff:range-power cone:smooth ... tex:base,normal"
+    bool operator==(const FeatureKey&) const = default;
+};
+
+struct FeatureKeyHash {
+    std::size_t operator()(const FeatureKey& k) const { return std::hash<std::uint64_t>()(k.bits()); }
+};
+
+RigFeatures rigFeatures(const Rig& rig);
+// Texture indices out of range count as absent.
+MaterialFeatures materialFeatures(const Model& model, const Mesh& mesh);
+
+// Texels (RGBA32F) per light in the light buffer; the layout is documented in shaders/lighting.glsl.
+constexpr int kLightTexels = 8;
+
+// "#version 330 core" plus the enum values and the key's feature defines (the same for both stages).
+QByteArray shaderPrelude(const FeatureKey& key);
+// The prelude for passes that only need the enum values and the formulas (tone map, gizmos).
+QByteArray basicPrelude();
+
+}  // namespace lr::render
