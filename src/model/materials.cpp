@@ -7,6 +7,8 @@
 #include <QFileInfo>
 #include <QHash>
 #include <QImageReader>
+#include <QThread>
+#include <QThreadPool>
 #include <QUrl>
 #include <assimp/material.h>
 #include <assimp/scene.h>
@@ -23,12 +25,14 @@ float finiteOr(float v, float fallback) {
     return std::isfinite(v) ? v : fallback;
 }
 
+// Resolves the textures materials refer to while they are converted (load), then decodes them all at
+// once on a thread pool (finish): large PNG/JPEG textures dominate the load time of glTF models.
 class TextureLoader {
   public:
     TextureLoader(const aiScene* scene, const ModelFolder& folder, qint64 maxDataUriBytes, Model& model)
         : m_scene(scene), m_folder(folder), m_maxDataUri(maxDataUriBytes), m_model(model) {}
 
-    // Index into model.textures for the material's first texture of `type`, or -1.
+    // A provisional texture index for the material's first texture of `type`, or -1 (see finish).
     int load(const aiMaterial* mat, aiTextureType type, const char* role) {
         aiString path;
         if (mat->GetTextureCount(type) == 0 || mat->GetTexture(type, 0, &path) != AI_SUCCESS ||
@@ -36,37 +40,88 @@ class TextureLoader {
             return -1;
         const QString ref = QString::fromUtf8(path.C_Str());
         if (const auto cached = m_byRef.constFind(ref); cached != m_byRef.constEnd()) return *cached;
-        QString name = ref, problem;
-        QImage image;
-        if (const aiTexture* tex = m_scene->GetEmbeddedTexture(path.C_Str())) {
-            image = decodeEmbedded(tex, &problem);
+        Job job;
+        job.ref = job.name = ref;
+        job.role = QLatin1String(role);
+        if ((job.embedded = m_scene->GetEmbeddedTexture(path.C_Str()))) {
+            job.kind = Job::Embedded;
         } else if (ref.startsWith(QLatin1Char('*'))) {
-            problem = QStringLiteral("no such embedded texture");
+            job.problem = QStringLiteral("no such embedded texture");
         } else if (ref.startsWith(QLatin1String("data:"), Qt::CaseInsensitive)) {
-            image = decodeDataUri(ref, &problem);
+            job.kind = Job::DataUri;
         } else {
-            name = locate(ref, &problem);
-            if (const auto same = m_byFile.constFind(name); !name.isEmpty() && same != m_byFile.constEnd()) {
+            job.name = locate(ref, &job.problem);
+            if (const auto same = m_byFile.constFind(job.name);
+                !job.name.isEmpty() && same != m_byFile.constEnd()) {
                 m_byRef.insert(ref, *same);
                 return *same;
             }
-            if (!name.isEmpty()) image = readFile(name, &problem);
+            if (!job.name.isEmpty()) {
+                job.kind = Job::File;
+                m_byFile.insert(job.name, int(m_jobs.size()));
+            }
         }
-        int index = -1;
-        if (!image.isNull()) {
-            index = int(m_model.textures.size());
-            m_model.textures.push_back({name, image.convertToFormat(QImage::Format_RGBA8888)});
-        } else {
-            m_model.warnings << QStringLiteral("%1: %2 texture %3: %4 (not used)")
-                                    .arg(m_folder.displayName(), QLatin1String(role), ref, problem);
+        m_byRef.insert(ref, int(m_jobs.size()));
+        m_jobs.push_back(std::move(job));
+        return int(m_jobs.size()) - 1;
+    }
+
+    // Decodes every texture, fills model.textures and rewrites the materials' provisional indices;
+    // textures that cannot be decoded become -1 with a warning.
+    void finish() {
+        if (m_jobs.size() == 1) {
+            decode(m_jobs.front());
+        } else if (m_jobs.size() > 1) {
+            QThreadPool pool;
+            pool.setMaxThreadCount(std::clamp(QThread::idealThreadCount(), 1, int(m_jobs.size())));
+            for (Job& job : m_jobs)
+                pool.start([this, &job] { decode(job); });
+            pool.waitForDone();
         }
-        m_byRef.insert(ref, index);
-        if (!name.isEmpty() && name != ref) m_byFile.insert(name, index);
-        return index;
+        std::vector<int> remap(m_jobs.size(), -1);
+        for (std::size_t i = 0; i < m_jobs.size(); ++i) {
+            Job& job = m_jobs[i];
+            if (job.image.isNull()) {
+                m_model.warnings << QStringLiteral("%1: %2 texture %3: %4 (not used)")
+                                        .arg(m_folder.displayName(), job.role, job.ref, job.problem);
+                continue;
+            }
+            remap[i] = int(m_model.textures.size());
+            m_model.textures.push_back({job.name, std::move(job.image)});
+        }
+        for (Material& m : m_model.materials)
+            for (int* t : {&m.baseColorTexture, &m.normalTexture, &m.emissiveTexture})
+                *t = *t >= 0 && *t < int(remap.size()) ? remap[size_t(*t)] : -1;
     }
 
   private:
-    QImage decodeEmbedded(const aiTexture* tex, QString* problem) {
+    struct Job {
+        enum Kind { None, Embedded, DataUri, File } kind = None;
+        QString ref, name, role, problem;
+        const aiTexture* embedded = nullptr;
+        QImage image;
+    };
+
+    // Runs on a pool thread: reads only the scene and the job.
+    void decode(Job& job) const {
+        switch (job.kind) {
+        case Job::None:
+            return;
+        case Job::Embedded:
+            job.image = decodeEmbedded(job.embedded, &job.problem);
+            break;
+        case Job::DataUri:
+            job.image = decodeDataUri(job.ref, &job.problem);
+            break;
+        case Job::File:
+            job.image = readFile(job.name, &job.problem);
+            break;
+        }
+        if (!job.image.isNull()) job.image = std::move(job.image).convertToFormat(QImage::Format_RGBA8888);
+        if (job.image.isNull() && job.problem.isEmpty()) job.problem = QStringLiteral("out of memory");
+    }
+
+    static QImage decodeEmbedded(const aiTexture* tex, QString* problem) {
         if (!tex->pcData) {
             *problem = QStringLiteral("embedded texture without data");
             return {};
@@ -100,7 +155,7 @@ class TextureLoader {
         return image;
     }
 
-    QImage decodeDataUri(const QString& ref, QString* problem) {
+    QImage decodeDataUri(const QString& ref, QString* problem) const {
         if (ref.size() > m_maxDataUri) {
             *problem = QStringLiteral("data URI of %1 bytes exceeds the limit of %2")
                            .arg(ref.size())
@@ -178,6 +233,7 @@ class TextureLoader {
     qint64 m_maxDataUri;
     Model& m_model;
     QHash<QString, int> m_byRef, m_byFile;
+    std::vector<Job> m_jobs;
 };
 
 Material convert(const aiMaterial* am, TextureLoader& textures) {
@@ -236,6 +292,7 @@ void convertMaterials(const aiScene* scene, const ModelFolder& folder, qint64 ma
     for (unsigned i = 0; i < scene->mNumMaterials && scene->mMaterials; ++i)
         model.materials.push_back(scene->mMaterials[i] ? convert(scene->mMaterials[i], textures)
                                                        : Material{});
+    textures.finish();
     bool needDefault = model.materials.empty();
     for (Mesh& mesh : model.meshes) {
         if (mesh.material < 0 || mesh.material >= int(model.materials.size())) {
