@@ -22,7 +22,7 @@ QString formatVec3(const glm::dvec3& v) {
 
 // The colour cell's editor: linear RGB as text (HDR allowed) and a button that opens a colour dialog.
 class ColorEditor : public QWidget {
-public:
+  public:
     explicit ColorEditor(QWidget* parent) : QWidget(parent) {
         setAutoFillBackground(true);
         auto* layout = new QHBoxLayout(this);
@@ -51,16 +51,17 @@ public:
     }
     QLineEdit* edit() const { return m_edit; }
 
-private:
+  private:
     QLineEdit* m_edit;
 };
 
-}  // namespace
+} // namespace
 
 bool parseVec3(const QString& text, double out[3]) {
-    const QStringList parts =
-        text.trimmed().remove(QLatin1Char('[')).remove(QLatin1Char(']')).split(QRegularExpression(QStringLiteral("[,;\\s]+")),
-                                                                          Qt::SkipEmptyParts);
+    const QStringList parts = text.trimmed()
+                                  .remove(QLatin1Char('['))
+                                  .remove(QLatin1Char(']'))
+                                  .split(QRegularExpression(QStringLiteral("[,;\\s]+")), Qt::SkipEmptyParts);
     if (parts.size() != 3) return false;
     for (int i = 0; i < 3; ++i) {
         bool ok = false;
@@ -77,7 +78,7 @@ void ColorSwatchDelegate::paint(QPainter* painter, const QStyleOptionViewItem& o
     const QColor swatch = index.data(Qt::DecorationRole).value<QColor>();
     opt.features &= ~QStyleOptionViewItem::HasDecoration;
     opt.icon = QIcon();
-    QStyledItemDelegate::paint(painter, opt, QModelIndex());  // background and selection only
+    QStyledItemDelegate::paint(painter, opt, QModelIndex()); // background and selection only
     if (!swatch.isValid()) return;
     const QRect r = option.rect.adjusted(4, 3, -4, -3);
     painter->save();
@@ -88,20 +89,25 @@ void ColorSwatchDelegate::paint(QPainter* painter, const QStyleOptionViewItem& o
     painter->restore();
 }
 
-QWidget* ColorSwatchDelegate::createEditor(QWidget* parent, const QStyleOptionViewItem&, const QModelIndex&) const {
+QWidget* ColorSwatchDelegate::createEditor(QWidget* parent, const QStyleOptionViewItem&,
+                                           const QModelIndex&) const {
     return new ColorEditor(parent);
 }
 
 void ColorSwatchDelegate::setEditorData(QWidget* editor, const QModelIndex& index) const {
-    static_cast<ColorEditor*>(editor)->edit()->setText(formatVec3(index.data(Qt::EditRole).value<glm::dvec3>()));
+    static_cast<ColorEditor*>(editor)->edit()->setText(
+        formatVec3(index.data(Qt::EditRole).value<glm::dvec3>()));
 }
 
-void ColorSwatchDelegate::setModelData(QWidget* editor, QAbstractItemModel* model, const QModelIndex& index) const {
+void ColorSwatchDelegate::setModelData(QWidget* editor, QAbstractItemModel* model,
+                                       const QModelIndex& index) const {
     double v[3];
     const QString text = static_cast<ColorEditor*>(editor)->edit()->text();
     // Text that is not three numbers goes to the model as it is, so the refusal carries the model's reason.
-    if (parseVec3(text, v)) model->setData(index, QVariant::fromValue(glm::dvec3(v[0], v[1], v[2])));
-    else model->setData(index, text);
+    if (parseVec3(text, v))
+        model->setData(index, QVariant::fromValue(glm::dvec3(v[0], v[1], v[2])));
+    else
+        model->setData(index, text);
 }
 
 void ColorSwatchDelegate::updateEditorGeometry(QWidget* editor, const QStyleOptionViewItem& option,
@@ -111,7 +117,8 @@ void ColorSwatchDelegate::updateEditorGeometry(QWidget* editor, const QStyleOpti
     editor->setGeometry(r);
 }
 
-QWidget* NumberDelegate::createEditor(QWidget* parent, const QStyleOptionViewItem&, const QModelIndex&) const {
+QWidget* NumberDelegate::createEditor(QWidget* parent, const QStyleOptionViewItem&,
+                                      const QModelIndex&) const {
     auto* edit = new QLineEdit(parent);
     edit->setAlignment(Qt::AlignRight);
     return edit;
@@ -119,15 +126,18 @@ QWidget* NumberDelegate::createEditor(QWidget* parent, const QStyleOptionViewIte
 
 void NumberDelegate::setEditorData(QWidget* editor, const QModelIndex& index) const {
     const QVariant v = index.data(Qt::EditRole);
-    static_cast<QLineEdit*>(editor)->setText(v.isValid() ? QString::number(v.toDouble(), 'g', 10) : QString());
+    static_cast<QLineEdit*>(editor)->setText(v.isValid() ? QString::number(v.toDouble(), 'g', 10)
+                                                         : QString());
 }
 
-void NumberDelegate::setModelData(QWidget* editor, QAbstractItemModel* model, const QModelIndex& index) const {
+void NumberDelegate::setModelData(QWidget* editor, QAbstractItemModel* model,
+                                  const QModelIndex& index) const {
     // Text goes to the model, which parses and validates it (empty = none where the value is optional).
     model->setData(index, static_cast<QLineEdit*>(editor)->text().trimmed());
 }
 
-QWidget* LightTypeDelegate::createEditor(QWidget* parent, const QStyleOptionViewItem&, const QModelIndex&) const {
+QWidget* LightTypeDelegate::createEditor(QWidget* parent, const QStyleOptionViewItem&,
+                                         const QModelIndex&) const {
     auto* combo = new QComboBox(parent);
     for (int i = 0; i < enumCount<LightType>(); ++i) {
         QString name = toString(LightType(i));
@@ -142,8 +152,9 @@ void LightTypeDelegate::setEditorData(QWidget* editor, const QModelIndex& index)
     combo->setCurrentIndex(combo->findData(index.data(Qt::EditRole).toInt()));
 }
 
-void LightTypeDelegate::setModelData(QWidget* editor, QAbstractItemModel* model, const QModelIndex& index) const {
+void LightTypeDelegate::setModelData(QWidget* editor, QAbstractItemModel* model,
+                                     const QModelIndex& index) const {
     model->setData(index, static_cast<QComboBox*>(editor)->currentData().toInt());
 }
 
-}  // namespace lr
+} // namespace lr

@@ -29,7 +29,8 @@ LightsDock::LightsDock(Document* document, QWidget* parent)
     m_toolBar->setObjectName(QStringLiteral("LightsToolBar"));
     m_toolBar->setIconSize(QSize(16, 16));
     m_toolBar->setToolButtonStyle(Qt::ToolButtonTextOnly);
-    const char* labels[4] = {QT_TR_NOOP("Point"), QT_TR_NOOP("Spot"), QT_TR_NOOP("Directional"), QT_TR_NOOP("Rim")};
+    const char* labels[4] = {QT_TR_NOOP("Point"), QT_TR_NOOP("Spot"), QT_TR_NOOP("Directional"),
+                             QT_TR_NOOP("Rim")};
     for (int t = 0; t < 4; ++t) {
         auto* a = new QAction(tr(labels[t]), this);
         a->setObjectName(QStringLiteral("addLight_%1").arg(toString(LightType(t))));
@@ -56,9 +57,10 @@ LightsDock::LightsDock(Document* document, QWidget* parent)
     m_rename->setShortcutContext(Qt::WidgetWithChildrenShortcut);
     connect(m_rename, &QAction::triggered, this, &LightsDock::renameCurrent);
     for (QAction* a : {m_duplicate, m_delete, m_rename}) {
-        a->setToolTip(QStringLiteral("%1 (%2)").arg(a->text(), a->shortcut().toString(QKeySequence::NativeText)));
+        a->setToolTip(
+            QStringLiteral("%1 (%2)").arg(a->text(), a->shortcut().toString(QKeySequence::NativeText)));
         m_toolBar->addAction(a);
-        addAction(a);  // shortcuts work while the dock has focus
+        addAction(a); // shortcuts work while the dock has focus
     }
 
     m_model = new LightTableModel(document, this);
@@ -79,7 +81,7 @@ LightsDock::LightsDock(Document* document, QWidget* parent)
     header->setSortIndicatorClearable(true);
     m_view->setSortingEnabled(true);
     connect(header, &QHeaderView::sortIndicatorChanged, this, [this](int section, Qt::SortOrder order) {
-        if (section < 0) m_proxy->sort(-1, order);  // back to document order
+        if (section < 0) m_proxy->sort(-1, order); // back to document order
         m_view->setDragEnabled(section < 0);
     });
     header->setSectionResizeMode(QHeaderView::Interactive);
@@ -114,13 +116,18 @@ LightsDock::LightsDock(Document* document, QWidget* parent)
     updateActions();
 }
 
-QTableView* LightsDock::view() const { return m_view; }
-
-QList<QAction*> LightsDock::lightActions() const {
-    return {m_addActions[0], m_addActions[1], m_addActions[2], m_addActions[3], m_duplicate, m_delete, m_rename};
+QTableView* LightsDock::view() const {
+    return m_view;
 }
 
-QList<int> LightsDock::selectedRows() const { return static_cast<LightSortProxy*>(m_proxy)->selectedSourceRows(); }
+QList<QAction*> LightsDock::lightActions() const {
+    return {m_addActions[0], m_addActions[1], m_addActions[2], m_addActions[3],
+            m_duplicate,     m_delete,        m_rename};
+}
+
+QList<int> LightsDock::selectedRows() const {
+    return static_cast<LightSortProxy*>(m_proxy)->selectedSourceRows();
+}
 
 void LightsDock::showMessage(const QString& text) {
     m_message->setText(text);
@@ -135,8 +142,10 @@ void LightsDock::showMessage(const QString& text) {
 
 void LightsDock::addLight(LightType type) {
     QString error;
-    if (!m_doc->addLight(type, &error)) showMessage(error);
-    else showMessage({});
+    if (!m_doc->addLight(type, &error))
+        showMessage(error);
+    else
+        showMessage({});
     m_view->setFocus();
 }
 
@@ -156,7 +165,7 @@ void LightsDock::renameCurrent() {
     int row = m_doc->currentRow();
     if (row < 0) return;
     const QModelIndex index = m_proxy->mapFromSource(m_model->index(row, LightTableModel::NameColumn));
-    m_view->setCurrentIndex(index);  // keeps the selection (same row)
+    m_view->setCurrentIndex(index); // keeps the selection (same row)
     m_view->scrollTo(index);
     m_view->edit(index);
 }
@@ -177,13 +186,15 @@ void LightsDock::syncSelectionFromDocument() {
     m_syncing = true;
     // Proxy rows of the selected lights, merged into contiguous ranges.
     QList<int> proxyRows;
-    for (int r : m_doc->selectedRows()) proxyRows << m_proxy->mapFromSource(m_model->index(r, 0)).row();
+    for (int r : m_doc->selectedRows())
+        proxyRows << m_proxy->mapFromSource(m_model->index(r, 0)).row();
     std::sort(proxyRows.begin(), proxyRows.end());
     QItemSelection selection;
     const int lastColumn = m_proxy->columnCount() - 1;
     for (int i = 0; i < proxyRows.size();) {
         int j = i;
-        while (j + 1 < proxyRows.size() && proxyRows[j + 1] == proxyRows[j] + 1) ++j;
+        while (j + 1 < proxyRows.size() && proxyRows[j + 1] == proxyRows[j] + 1)
+            ++j;
         selection.select(m_proxy->index(proxyRows[i], 0), m_proxy->index(proxyRows[j], lastColumn));
         i = j + 1;
     }
@@ -191,7 +202,8 @@ void LightsDock::syncSelectionFromDocument() {
     if (sm->selection() != selection) sm->select(selection, QItemSelectionModel::ClearAndSelect);
     const int cur = m_doc->currentRow();
     if (cur >= 0) {
-        const QModelIndex idx = m_proxy->mapFromSource(m_model->index(cur, std::max(0, sm->currentIndex().column())));
+        const QModelIndex idx =
+            m_proxy->mapFromSource(m_model->index(cur, std::max(0, sm->currentIndex().column())));
         if (sm->currentIndex().row() != idx.row()) {
             sm->setCurrentIndex(idx, QItemSelectionModel::NoUpdate);
             m_view->scrollTo(idx);
@@ -206,7 +218,8 @@ void LightsDock::updateActions() {
     m_duplicate->setEnabled(any);
     m_delete->setEnabled(any);
     m_rename->setEnabled(m_doc->currentRow() >= 0);
-    for (QAction* a : m_addActions) a->setEnabled(m_doc->lightCount() < kMaxRigLights);
+    for (QAction* a : m_addActions)
+        a->setEnabled(m_doc->lightCount() < kMaxRigLights);
 }
 
-}  // namespace lr
+} // namespace lr

@@ -24,8 +24,8 @@ class LightTableView;
 
 class LightsDock : public QDockWidget {
     Q_OBJECT
-public:
-    explicit LightsDock(Document* document, QWidget* parent = nullptr);  // objectName "LightsDock"
+  public:
+    explicit LightsDock(Document* document, QWidget* parent = nullptr); // objectName "LightsDock"
 
     Document* document() const { return m_doc; }
     LightTableModel* model() const { return m_model; }
@@ -34,19 +34,19 @@ public:
     QToolBar* toolBar() const { return m_toolBar; }
 
     QAction* addLightAction(LightType type) const { return m_addActions[int(type)]; }
-    QAction* duplicateAction() const { return m_duplicate; }  // Ctrl+D
-    QAction* deleteAction() const { return m_delete; }        // Delete (while the table has focus)
-    QAction* renameAction() const { return m_rename; }        // F2
-    QList<QAction*> lightActions() const;                     // all of the above, for a menu
+    QAction* duplicateAction() const { return m_duplicate; } // Ctrl+D
+    QAction* deleteAction() const { return m_delete; }       // Delete (while the table has focus)
+    QAction* renameAction() const { return m_rename; }       // F2
+    QList<QAction*> lightActions() const;                    // all of the above, for a menu
 
     // Document rows of the view's selection (sorted). The selection model is kept equal to the document's.
     QList<int> selectedRows() const;
 
-signals:
+  signals:
     // An edit was refused (reason for the status bar); also shown in the dock's message line.
     void editRefused(const QString& reason);
 
-private:
+  private:
     void addLight(LightType type);
     void duplicateSelected();
     void deleteSelected();
@@ -69,4 +69,4 @@ private:
     bool m_syncing = false;
 };
 
-}  // namespace lr
+} // namespace lr

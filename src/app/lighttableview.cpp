@@ -20,7 +20,8 @@ LightSortProxy::LightSortProxy(LightTableModel* source, QObject* parent)
 QList<int> LightSortProxy::selectedSourceRows() const {
     QList<int> rows;
     if (!m_selection) return rows;
-    for (const QModelIndex& i : m_selection->selectedRows()) rows << mapToSource(i).row();
+    for (const QModelIndex& i : m_selection->selectedRows())
+        rows << mapToSource(i).row();
     std::sort(rows.begin(), rows.end());
     rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
     return rows;
@@ -30,7 +31,8 @@ bool LightSortProxy::setData(const QModelIndex& index, const QVariant& value, in
     if (!index.isValid()) return false;
     const int row = mapToSource(index).row();
     const QList<int> rows = selectedSourceRows();
-    if (rows.size() > 1 && rows.contains(row)) return m_source->setDataForRows(rows, index.column(), value, role);
+    if (rows.size() > 1 && rows.contains(row))
+        return m_source->setDataForRows(rows, index.column(), value, role);
     return QSortFilterProxyModel::setData(index, value, role);
 }
 
@@ -39,9 +41,9 @@ LightTableView::LightTableView(QWidget* parent) : QTableView(parent) {
     setSelectionMode(ExtendedSelection);
     setDragEnabled(true);
     setAcceptDrops(true);
-    setDragDropMode(DragDrop);  // the model accepts only its own rows (MoveAction)
+    setDragDropMode(DragDrop); // the model accepts only its own rows (MoveAction)
     setDefaultDropAction(Qt::MoveAction);
-    setDragDropOverwriteMode(false);  // drops land between rows
+    setDragDropOverwriteMode(false); // drops land between rows
     setDropIndicatorShown(true);
     setEditTriggers(DoubleClicked | EditKeyPressed | SelectedClicked);
     setAlternatingRowColors(true);
@@ -54,8 +56,9 @@ LightTableView::LightTableView(QWidget* parent) : QTableView(parent) {
 
 void LightTableView::dropEvent(QDropEvent* event) {
     QTableView::dropEvent(event);
-    // IgnoreAction (always allowed, unlike Copy when only Move was offered): QDrag::exec then returns no move.
+    // IgnoreAction (always allowed, unlike Copy when only Move was offered): QDrag::exec then returns no
+    // move.
     if (event->isAccepted() && event->dropAction() == Qt::MoveAction) event->setDropAction(Qt::IgnoreAction);
 }
 
-}  // namespace lr
+} // namespace lr

@@ -1,6 +1,6 @@
-// The light table's view side: a sort proxy that turns an edit of one selected row into the same edit of every
-// selected row (one undo step, via LightTableModel::setDataForRows), and a QTableView that reorders by drag and
-// drop through the model's MoveLights command (never by the view's own remove-after-move).
+// The light table's view side: a sort proxy that turns an edit of one selected row into the same edit of
+// every selected row (one undo step, via LightTableModel::setDataForRows), and a QTableView that reorders by
+// drag and drop through the model's MoveLights command (never by the view's own remove-after-move).
 #pragma once
 
 #include <QPointer>
@@ -15,7 +15,7 @@ class LightTableModel;
 
 class LightSortProxy : public QSortFilterProxyModel {
     Q_OBJECT
-public:
+  public:
     explicit LightSortProxy(LightTableModel* source, QObject* parent = nullptr);
     LightTableModel* lightModel() const { return m_source; }
     // The selection whose rows an edit applies to (the view's selection model, over this proxy).
@@ -25,20 +25,20 @@ public:
     // When index is one of several selected rows: the edit goes to all of them, as one undo step.
     bool setData(const QModelIndex& index, const QVariant& value, int role = Qt::EditRole) override;
 
-private:
+  private:
     LightTableModel* m_source;
     QPointer<QItemSelectionModel> m_selection;
 };
 
 class LightTableView : public QTableView {
     Q_OBJECT
-public:
+  public:
     explicit LightTableView(QWidget* parent = nullptr);
 
-protected:
+  protected:
     // The model moved the rows itself (a MoveLights command); report no move to the drag source so that
     // QAbstractItemView does not also clear or remove the dragged rows.
     void dropEvent(QDropEvent* event) override;
 };
 
-}  // namespace lr
+} // namespace lr

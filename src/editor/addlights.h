@@ -1,5 +1,5 @@
-// Inserting lights (Add point/spot/directional/rim, paste, import) as one undo step. The new lights get ids on
-// the first redo and keep them through undo/redo; redo selects them.
+// Inserting lights (Add point/spot/directional/rim, paste, import) as one undo step. The new lights get ids
+// on the first redo and keep them through undo/redo; redo selects them.
 #pragma once
 
 #include "editor/document.h"
@@ -11,7 +11,7 @@
 namespace lr {
 
 class AddLights : public QUndoCommand {
-public:
+  public:
     // row: insertion index (-1: append). nullptr and *error when the rig would exceed kMaxRigLights, when
     // lights is empty or a light is invalid (validateLight).
     static std::unique_ptr<AddLights> create(Document* document, int row, std::vector<Light> lights,
@@ -21,14 +21,14 @@ public:
     int row() const { return m_row; }
     int count() const { return int(m_lights.size()); }
 
-protected:
+  protected:
     AddLights(Document* document, int row, std::vector<Light> lights, const QString& text);
 
-private:
+  private:
     Document* m_doc;
     int m_row;
     std::vector<Light> m_lights;
-    QList<LightId> m_ids;  // assigned on first redo
+    QList<LightId> m_ids; // assigned on first redo
 };
 
-}  // namespace lr
+} // namespace lr

@@ -6,8 +6,10 @@
 namespace lr {
 
 namespace {
-QString tr(const char* text) { return QCoreApplication::translate("lr::ChangeLightValue", text); }
-}  // namespace
+QString tr(const char* text) {
+    return QCoreApplication::translate("lr::ChangeLightValue", text);
+}
+} // namespace
 
 std::unique_ptr<ChangeLightValue> ChangeLightValue::create(Document* doc, const QList<int>& rows,
                                                            LightProperty property, const QVariant& value,
@@ -26,11 +28,12 @@ std::unique_ptr<ChangeLightValue> ChangeLightValue::create(Document* doc, const 
     };
     if (property == LightProperty::Any || int(property) < 0 || int(property) >= kLightPropertyCount)
         return fail(tr("not an editable light value"));
-    if (values.size() != rows.size()) return fail(tr("%1 values for %2 lights").arg(values.size()).arg(rows.size()));
+    if (values.size() != rows.size())
+        return fail(tr("%1 values for %2 lights").arg(values.size()).arg(rows.size()));
     if (rows.isEmpty()) return fail(tr("no light selected"));
 
     // Sort by row, drop duplicate rows (the first value wins) and rows where the property does not apply.
-    std::vector<std::pair<int, int>> order;  // (row, index into values)
+    std::vector<std::pair<int, int>> order; // (row, index into values)
     order.reserve(size_t(rows.size()));
     for (int i = 0; i < rows.size(); ++i) {
         if (rows[i] < 0 || rows[i] >= doc->lightCount()) return fail(tr("no light at row %1").arg(rows[i]));
@@ -55,9 +58,9 @@ std::unique_ptr<ChangeLightValue> ChangeLightValue::create(Document* doc, const 
         after.push_back(withLightValue(l, property, values[vi]));
     }
     if (kept.isEmpty())
-        return fail(tr("the %1 does not apply to %2").arg(lightPropertyName(property),
-                                                         rows.size() == 1 ? doc->light(rows[0]).name
-                                                                          : tr("the selected lights")));
+        return fail(tr("the %1 does not apply to %2")
+                        .arg(lightPropertyName(property),
+                             rows.size() == 1 ? doc->light(rows[0]).name : tr("the selected lights")));
     return std::unique_ptr<ChangeLightValue>(
         new ChangeLightValue(doc, std::move(kept), property, std::move(before), std::move(after)));
 }
@@ -71,14 +74,18 @@ ChangeLightValue::ChangeLightValue(Document* doc, QList<int> rows, LightProperty
                                : tr("Change %1 of %2 lights").arg(what).arg(m_rows.size()));
 }
 
-void ChangeLightValue::undo() { m_doc->setLightsAt(m_rows, m_before, m_property); }
+void ChangeLightValue::undo() {
+    m_doc->setLightsAt(m_rows, m_before, m_property);
+}
 
 void ChangeLightValue::redo() {
     m_doc->setLightsAt(m_rows, m_after, m_property);
     updateObsolete();
 }
 
-void ChangeLightValue::updateObsolete() { setObsolete(m_before == m_after); }
+void ChangeLightValue::updateObsolete() {
+    setObsolete(m_before == m_after);
+}
 
 bool ChangeLightValue::mergeWith(const QUndoCommand* other) {
     const auto* o = static_cast<const ChangeLightValue*>(other);
@@ -89,4 +96,4 @@ bool ChangeLightValue::mergeWith(const QUndoCommand* other) {
     return true;
 }
 
-}  // namespace lr
+} // namespace lr

@@ -14,7 +14,7 @@ namespace lr {
 enum CommandId { kChangeLightValueId = 1001, kChangeRigValueId = 1002 };
 
 class ChangeLightValue : public QUndoCommand {
-public:
+  public:
     // Validates every value against its light (validateLightValue). Rows where the property does not apply
     // are skipped. Returns nullptr and sets *error when rows are out of range, when the property applies to
     // none of them, or when any value is invalid (nothing is pushed then).
@@ -33,16 +33,16 @@ public:
     LightProperty property() const { return m_property; }
     const QList<int>& rows() const { return m_rows; }
 
-private:
+  private:
     ChangeLightValue(Document* document, QList<int> rows, LightProperty property, std::vector<Light> before,
                      std::vector<Light> after);
     void updateObsolete();
 
     Document* m_doc;
-    QList<int> m_rows;  // sorted, unique
+    QList<int> m_rows; // sorted, unique
     LightProperty m_property;
-    std::vector<Light> m_before, m_after;  // whole lights: exact undo even when applying adjusted other values
+    std::vector<Light> m_before, m_after; // whole lights: exact undo even when applying adjusted other values
     int m_session;
 };
 
-}  // namespace lr
+} // namespace lr

@@ -5,7 +5,9 @@
 namespace lr {
 
 namespace {
-QString tr(const char* text) { return QCoreApplication::translate("lr::ChangeRigValue", text); }
+QString tr(const char* text) {
+    return QCoreApplication::translate("lr::ChangeRigValue", text);
+}
 
 // Rig-wide values only (no lights): cheap to copy, compares values of any QVariant type exactly.
 Rig settingsWith(const Rig& rig, RigProperty property, const QVariant& value) {
@@ -17,10 +19,10 @@ Rig settingsWith(const Rig& rig, RigProperty property, const QVariant& value) {
     applyRigValue(r, property, value);
     return r;
 }
-}  // namespace
+} // namespace
 
-std::unique_ptr<ChangeRigValue> ChangeRigValue::create(Document* doc, RigProperty property, const QVariant& value,
-                                                       QString* error) {
+std::unique_ptr<ChangeRigValue> ChangeRigValue::create(Document* doc, RigProperty property,
+                                                       const QVariant& value, QString* error) {
     if (int(property) < 0 || int(property) >= kRigPropertyCount) {
         if (error) *error = tr("not an editable rig value");
         return nullptr;
@@ -41,7 +43,9 @@ ChangeRigValue::ChangeRigValue(Document* doc, RigProperty property, QVariant bef
     setText(tr("Change %1").arg(rigPropertyName(property)));
 }
 
-void ChangeRigValue::undo() { m_doc->setRigValueNow(m_property, m_before); }
+void ChangeRigValue::undo() {
+    m_doc->setRigValueNow(m_property, m_before);
+}
 
 void ChangeRigValue::redo() {
     m_doc->setRigValueNow(m_property, m_after);
@@ -56,4 +60,4 @@ bool ChangeRigValue::mergeWith(const QUndoCommand* other) {
     return true;
 }
 
-}  // namespace lr
+} // namespace lr

@@ -1,7 +1,7 @@
 // Rig-wide values (name, space, ambient, shading) as undo steps; merges within a continuous-edit session.
 #pragma once
 
-#include "editor/changelightvalue.h"  // CommandId
+#include "editor/changelightvalue.h" // CommandId
 
 #include <QUndoCommand>
 #include <memory>
@@ -9,17 +9,17 @@
 namespace lr {
 
 class ChangeRigValue : public QUndoCommand {
-public:
+  public:
     // nullptr and *error when the value is invalid (validateRigValue).
-    static std::unique_ptr<ChangeRigValue> create(Document* document, RigProperty property, const QVariant& value,
-                                                  QString* error = nullptr);
+    static std::unique_ptr<ChangeRigValue> create(Document* document, RigProperty property,
+                                                  const QVariant& value, QString* error = nullptr);
     void undo() override;
     void redo() override;
     int id() const override { return kChangeRigValueId; }
     bool mergeWith(const QUndoCommand* other) override;
     RigProperty property() const { return m_property; }
 
-private:
+  private:
     ChangeRigValue(Document* document, RigProperty property, QVariant before, QVariant after);
     Document* m_doc;
     RigProperty m_property;
@@ -27,4 +27,4 @@ private:
     int m_session;
 };
 
-}  // namespace lr
+} // namespace lr

@@ -15,12 +15,12 @@ int runCount(const QList<int>& sortedRows) {
         if (i == 0 || sortedRows[i] != sortedRows[i - 1] + 1) ++runs;
     return runs;
 }
-}  // namespace
-
+} // namespace
 
 Document::Document(QObject* parent) : QObject(parent) {
     qRegisterMetaType<lr::RigChange>();
-    connect(&m_undoStack, &QUndoStack::cleanChanged, this, [this](bool clean) { emit modifiedChanged(!clean); });
+    connect(&m_undoStack, &QUndoStack::cleanChanged, this,
+            [this](bool clean) { emit modifiedChanged(!clean); });
 }
 
 Document::~Document() {
@@ -33,7 +33,8 @@ int Document::rowOf(LightId id) const {
     if (m_rowByIdDirty) {
         m_rowById.clear();
         m_rowById.reserve(m_ids.size());
-        for (int i = 0; i < m_ids.size(); ++i) m_rowById.insert(m_ids[i], i);
+        for (int i = 0; i < m_ids.size(); ++i)
+            m_rowById.insert(m_ids[i], i);
         m_rowByIdDirty = false;
     }
     return m_rowById.value(id, -1);
@@ -69,7 +70,8 @@ QString Document::save() {
 
 QString Document::saveAs(const QString& filePath) {
     QString error;
-    if (!saveRigFile(m_rig, filePath, &error)) return error.isEmpty() ? tr("%1: could not be saved").arg(filePath) : error;
+    if (!saveRigFile(m_rig, filePath, &error))
+        return error.isEmpty() ? tr("%1: could not be saved").arg(filePath) : error;
     m_undoStack.setClean();
     if (filePath != m_filePath) {
         m_filePath = filePath;
@@ -78,13 +80,16 @@ QString Document::saveAs(const QString& filePath) {
     return {};
 }
 
-void Document::newRig(const Rig& rig) { resetDocument(rig, QString()); }
+void Document::newRig(const Rig& rig) {
+    resetDocument(rig, QString());
+}
 
 void Document::resetDocument(const Rig& rig, const QString& filePath) {
-    m_undoStack.clear();  // clean again (emits cleanChanged when it was modified)
+    m_undoStack.clear(); // clean again (emits cleanChanged when it was modified)
     QList<LightId> ids;
     ids.reserve(qsizetype(rig.lights.size()));
-    for (size_t i = 0; i < rig.lights.size(); ++i) ids.append(newLightId());
+    for (size_t i = 0; i < rig.lights.size(); ++i)
+        ids.append(newLightId());
     m_editSession = 0;
     m_editDepth = 0;
     resetRig(rig, ids);
@@ -111,7 +116,7 @@ void Document::endContinuousEdit(int token) {
 bool Document::pushChecked(QUndoCommand* command, QString* error, const QString& reason) {
     if (!command) {
         if (error) *error = reason;
-        return reason.isEmpty();  // refused with no reason: nothing to do, not a failure
+        return reason.isEmpty(); // refused with no reason: nothing to do, not a failure
     }
     m_undoStack.push(command);
     return true;
@@ -139,7 +144,8 @@ bool Document::setRigValue(RigProperty property, const QVariant& value, QString*
 
 QString Document::uniqueLightName(const QString& base) const {
     QSet<QString> names;
-    for (const Light& l : m_rig.lights) names.insert(l.name);
+    for (const Light& l : m_rig.lights)
+        names.insert(l.name);
     if (!names.contains(base)) return base;
     for (int n = 2;; ++n) {
         const QString candidate = QStringLiteral("%1 %2").arg(base).arg(n);
@@ -213,8 +219,10 @@ void Document::setSelection(const QSet<LightId>& ids, LightId current) {
     for (LightId id : ids)
         if (rowOf(id) >= 0) valid.insert(id);
     LightId cur = 0;
-    if (current && valid.contains(current)) cur = current;
-    else if (m_current && valid.contains(m_current)) cur = m_current;
+    if (current && valid.contains(current))
+        cur = current;
+    else if (m_current && valid.contains(m_current))
+        cur = m_current;
     else if (!valid.isEmpty()) {
         int best = -1;
         for (LightId id : valid)
@@ -268,7 +276,8 @@ void Document::pruneTransientState() {
 
 void Document::setLightsAt(const QList<int>& rows, const std::vector<Light>& lights, LightProperty property) {
     Q_ASSERT(size_t(rows.size()) == lights.size());
-    for (int i = 0; i < rows.size(); ++i) m_rig.lights[size_t(rows[i])] = lights[size_t(i)];
+    for (int i = 0; i < rows.size(); ++i)
+        m_rig.lights[size_t(rows[i])] = lights[size_t(i)];
     // One signal per contiguous run of rows (rows are sorted); a scattered multi-edit (many runs) is reported
     // as one span first..last instead, so views get a handful of signals rather than thousands.
     const int runs = runCount(rows);
@@ -283,7 +292,8 @@ void Document::setLightsAt(const QList<int>& rows, const std::vector<Light>& lig
     }
     for (int i = 0; i < rows.size();) {
         int j = i;
-        while (j + 1 < rows.size() && rows[j + 1] == rows[j] + 1) ++j;
+        while (j + 1 < rows.size() && rows[j + 1] == rows[j] + 1)
+            ++j;
         c.first = rows[i];
         c.last = rows[j];
         emit rigChanged(c);
@@ -327,8 +337,10 @@ void Document::moveLightBlock(int first, int count, int destination) {
     c.destination = destination;
     emit rigAboutToChange(c);
     auto rotate = [&](auto begin) {
-        if (destination > first) std::rotate(begin + first, begin + first + count, begin + destination);
-        else std::rotate(begin + destination, begin + first, begin + first + count);
+        if (destination > first)
+            std::rotate(begin + first, begin + first + count, begin + destination);
+        else
+            std::rotate(begin + destination, begin + first, begin + first + count);
     };
     rotate(m_rig.lights.begin());
     rotate(m_ids.begin());
@@ -358,12 +370,14 @@ void Document::reorderLights(const QList<int>& order) {
     emit rigChanged(c);
 }
 
-void Document::insertLightRows(const QList<int>& rows, const std::vector<Light>& lights, const QList<LightId>& ids) {
+void Document::insertLightRows(const QList<int>& rows, const std::vector<Light>& lights,
+                               const QList<LightId>& ids) {
     if (runCount(rows) <= kMaxChangeRuns) {
         // Runs in ascending order: each run's first row is its final index once the earlier runs are in.
         for (int i = 0; i < rows.size();) {
             int j = i;
-            while (j + 1 < rows.size() && rows[j + 1] == rows[j] + 1) ++j;
+            while (j + 1 < rows.size() && rows[j + 1] == rows[j] + 1)
+                ++j;
             const std::vector<Light> run(lights.begin() + i, lights.begin() + j + 1);
             insertLightsAt(rows[i], run, ids.mid(i, j - i + 1));
             i = j + 1;
@@ -373,7 +387,7 @@ void Document::insertLightRows(const QList<int>& rows, const std::vector<Light>&
     RigChange c;
     c.kind = RigChange::Reset;
     emit rigAboutToChange(c);
-    for (int i = 0; i < rows.size(); ++i) {  // ascending: every earlier index is already final
+    for (int i = 0; i < rows.size(); ++i) { // ascending: every earlier index is already final
         m_rig.lights.insert(m_rig.lights.begin() + rows[i], lights[size_t(i)]);
         m_ids.insert(rows[i], ids[i]);
     }
@@ -384,9 +398,10 @@ void Document::insertLightRows(const QList<int>& rows, const std::vector<Light>&
 
 void Document::removeLightRows(const QList<int>& rows) {
     if (runCount(rows) <= kMaxChangeRuns) {
-        for (int j = int(rows.size()) - 1; j >= 0;) {  // last run first, so earlier indices stay valid
+        for (int j = int(rows.size()) - 1; j >= 0;) { // last run first, so earlier indices stay valid
             int i = j;
-            while (i > 0 && rows[i - 1] == rows[i] - 1) --i;
+            while (i > 0 && rows[i - 1] == rows[i] - 1)
+                --i;
             removeLightsAt(rows[i], j - i + 1);
             j = i - 1;
         }
@@ -396,7 +411,8 @@ void Document::removeLightRows(const QList<int>& rows) {
     c.kind = RigChange::Reset;
     emit rigAboutToChange(c);
     QList<bool> removed(m_ids.size(), false);
-    for (int r : rows) removed[r] = true;
+    for (int r : rows)
+        removed[r] = true;
     std::vector<Light> lights;
     QList<LightId> ids;
     for (int i = 0; i < m_ids.size(); ++i)
@@ -430,4 +446,4 @@ void Document::resetRig(const Rig& rig, const QList<LightId>& ids) {
     pruneTransientState();
 }
 
-}  // namespace lr
+} // namespace lr

@@ -22,28 +22,28 @@
 
 namespace lr {
 
-using LightId = quint64;  // never 0
+using LightId = quint64; // never 0
 constexpr int kMaxChangeRuns = 16;
 
 // What a change did, so views update minimally. Rows are light indices in the rig.
 struct RigChange {
     enum Kind {
-        LightValues,  // lights first..last changed their lightProperty (Any: several values). One change per
-                      // contiguous run of edited rows, or one span over all of them when there are more than
-                      // kMaxChangeRuns runs (some lights in the span may then be unchanged).
-        RigValues,    // a rig-wide value (rigProperty) changed
-        Inserted,     // lights first..last inserted (indices after the insertion)
-        Removed,      // lights first..last removed (indices before the removal)
-        Moved,        // lights first..last moved before old index destination (QAbstractItemModel::beginMoveRows)
-        Reordered,    // the lights were permuted: order[i] is the old index of the light now at i (a layout
-                      // change: models emit layoutChanged and move their persistent indexes)
-        Reset,        // the whole rig was replaced (load, new, preset), or many scattered rows were inserted
-                      // or removed at once (more than kMaxChangeRuns runs: one reset beats thousands of signals)
+        LightValues, // lights first..last changed their lightProperty (Any: several values). One change per
+                     // contiguous run of edited rows, or one span over all of them when there are more than
+                     // kMaxChangeRuns runs (some lights in the span may then be unchanged).
+        RigValues,   // a rig-wide value (rigProperty) changed
+        Inserted,    // lights first..last inserted (indices after the insertion)
+        Removed,     // lights first..last removed (indices before the removal)
+        Moved, // lights first..last moved before old index destination (QAbstractItemModel::beginMoveRows)
+        Reordered, // the lights were permuted: order[i] is the old index of the light now at i (a layout
+                   // change: models emit layoutChanged and move their persistent indexes)
+        Reset,     // the whole rig was replaced (load, new, preset), or many scattered rows were inserted
+                   // or removed at once (more than kMaxChangeRuns runs: one reset beats thousands of signals)
     };
     Kind kind = Reset;
     int first = -1, last = -1;
     int destination = -1;
-    QList<int> order;  // Reordered only
+    QList<int> order; // Reordered only
     LightProperty lightProperty = LightProperty::Any;
     RigProperty rigProperty = RigProperty::Any;
     bool isStructural() const { return kind != LightValues && kind != RigValues; }
@@ -51,8 +51,8 @@ struct RigChange {
 
 class Document : public QObject {
     Q_OBJECT
-public:
-    explicit Document(QObject* parent = nullptr);  // an empty, clean, untitled rig
+  public:
+    explicit Document(QObject* parent = nullptr); // an empty, clean, untitled rig
     ~Document() override;
 
     // ---- the rig (read-only access) ----
@@ -61,14 +61,14 @@ public:
     const Light& light(int row) const { return m_rig.lights[size_t(row)]; }
     LightId lightId(int row) const { return m_ids[row]; }
     const QList<LightId>& lightIds() const { return m_ids; }
-    int rowOf(LightId id) const;  // -1 when no such light
+    int rowOf(LightId id) const; // -1 when no such light
     // The rig with solo applied: when any light is soloed, every light that is not soloed is disabled
     // (indices stay those of rig(), so gizmos and selection still match). Without solo, rig() itself.
     Rig renderRig() const;
 
     // ---- file ----
-    QString filePath() const { return m_filePath; }  // empty for an untitled rig
-    QString displayName() const;                     // file name, or "Untitled"
+    QString filePath() const { return m_filePath; } // empty for an untitled rig
+    QString displayName() const;                    // file name, or "Untitled"
     bool isModified() const { return !m_undoStack.isClean(); }
     // Replaces the rig with the file's (fresh ids, empty undo stack, clean, no selection or solo). On failure
     // nothing changes and the error text ("FILE: path: reason", one per line) is returned; empty on success.
@@ -87,7 +87,7 @@ public:
     // Nested begin calls share the outer session.
     int beginContinuousEdit();
     void endContinuousEdit(int token);
-    int continuousEditSession() const { return m_editSession; }  // 0 when none is open
+    int continuousEditSession() const { return m_editSession; } // 0 when none is open
 
     // ---- convenience: validate, create and push one command. Return false (and *error) when refused. ----
     // One value for every row, or one value per row (values.size() == rows.size()). Rows where the property
@@ -116,8 +116,8 @@ public:
 
     // ---- selection (not an undo step) ----
     const QSet<LightId>& selection() const { return m_selection; }
-    QList<int> selectedRows() const;  // sorted
-    LightId currentLight() const { return m_current; }  // the light last made current (0: none); in selection
+    QList<int> selectedRows() const;                   // sorted
+    LightId currentLight() const { return m_current; } // the light last made current (0: none); in selection
     int currentRow() const { return rowOf(m_current); }
     // Unknown ids are dropped. current defaults to one of ids (kept if it was current and still selected).
     void setSelection(const QSet<LightId>& ids, LightId current = 0);
@@ -131,17 +131,17 @@ public:
     void setSoloed(const QList<int>& rows, bool solo);
     void clearSolo();
 
-signals:
+  signals:
     // Before a structural change (Inserted, Removed, Moved, Reset) — models call begin*Rows here.
     void rigAboutToChange(const lr::RigChange& change);
     // After every change of the rig, structural or not (undo and redo included).
     void rigChanged(const lr::RigChange& change);
     void selectionChanged();
     void soloChanged();
-    void fileChanged(const QString& filePath);  // the file path changed (load, save as, new)
-    void modifiedChanged(bool modified);        // the undo stack's clean state changed
+    void fileChanged(const QString& filePath); // the file path changed (load, save as, new)
+    void modifiedChanged(bool modified);       // the undo stack's clean state changed
 
-private:
+  private:
     friend class ChangeLightValue;
     friend class ChangeRigValue;
     friend class AddLights;
@@ -156,8 +156,8 @@ private:
     void setLightsAt(const QList<int>& rows, const std::vector<Light>& lights, LightProperty property);
     void insertLightsAt(int row, const std::vector<Light>& lights, const QList<LightId>& ids);
     void removeLightsAt(int first, int count);
-    void moveLightBlock(int first, int count, int destination);  // destination as in beginMoveRows
-    void reorderLights(const QList<int>& order);                  // order[i] = old index of new light i
+    void moveLightBlock(int first, int count, int destination); // destination as in beginMoveRows
+    void reorderLights(const QList<int>& order);                // order[i] = old index of new light i
     // Any sorted set of rows: per contiguous run, or as one Reset when there are many runs.
     void insertLightRows(const QList<int>& rows, const std::vector<Light>& lights, const QList<LightId>& ids);
     void removeLightRows(const QList<int>& rows);
@@ -168,7 +168,7 @@ private:
     void pruneTransientState();
 
     Rig m_rig;
-    QList<LightId> m_ids;  // parallel to m_rig.lights
+    QList<LightId> m_ids; // parallel to m_rig.lights
     mutable QHash<LightId, int> m_rowById;
     mutable bool m_rowByIdDirty = true;
     LightId m_lastId = 0;
@@ -182,15 +182,15 @@ private:
 
 // RAII continuous edit: Document::beginContinuousEdit() in the constructor, end in the destructor.
 class ContinuousEdit {
-public:
+  public:
     explicit ContinuousEdit(Document* document) : m_doc(document), m_token(document->beginContinuousEdit()) {}
     ~ContinuousEdit() { m_doc->endContinuousEdit(m_token); }
     ContinuousEdit(const ContinuousEdit&) = delete;
     ContinuousEdit& operator=(const ContinuousEdit&) = delete;
 
-private:
+  private:
     Document* m_doc;
     int m_token;
 };
 
-}  // namespace lr
+} // namespace lr

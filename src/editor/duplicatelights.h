@@ -6,12 +6,12 @@
 namespace lr {
 
 class DuplicateLights : public AddLights {
-public:
+  public:
     static std::unique_ptr<DuplicateLights> create(Document* document, const QList<int>& rows,
                                                    QString* error = nullptr);
 
-private:
+  private:
     using AddLights::AddLights;
 };
 
-}  // namespace lr
+} // namespace lr

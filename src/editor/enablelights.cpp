@@ -25,14 +25,15 @@ std::unique_ptr<EnableLights> EnableLights::create(Document* doc, const QList<in
         if (error) error->clear();
         return nullptr;
     }
-    return std::unique_ptr<EnableLights>(new EnableLights(doc, std::move(changing), std::move(before), enabled));
+    return std::unique_ptr<EnableLights>(
+        new EnableLights(doc, std::move(changing), std::move(before), enabled));
 }
 
 EnableLights::EnableLights(Document* doc, QList<int> rows, QList<bool> before, bool enabled)
     : m_doc(doc), m_rows(std::move(rows)), m_before(std::move(before)), m_enabled(enabled) {
-    const QString what = m_rows.size() == 1 ? doc->light(m_rows.front()).name
-                                            : QCoreApplication::translate("lr::EnableLights", "%1 lights")
-                                                  .arg(m_rows.size());
+    const QString what =
+        m_rows.size() == 1 ? doc->light(m_rows.front()).name
+                           : QCoreApplication::translate("lr::EnableLights", "%1 lights").arg(m_rows.size());
     setText(enabled ? QCoreApplication::translate("lr::EnableLights", "Switch on %1").arg(what)
                     : QCoreApplication::translate("lr::EnableLights", "Switch off %1").arg(what));
 }
@@ -48,7 +49,11 @@ void EnableLights::apply(bool undo) {
     m_doc->setLightsAt(m_rows, lights, LightProperty::Enabled);
 }
 
-void EnableLights::undo() { apply(true); }
-void EnableLights::redo() { apply(false); }
+void EnableLights::undo() {
+    apply(true);
+}
+void EnableLights::redo() {
+    apply(false);
+}
 
-}  // namespace lr
+} // namespace lr

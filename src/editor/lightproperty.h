@@ -13,8 +13,8 @@
 //   Temperature          double kelvin, or an invalid QVariant for "none"
 //   Specular             double factor f (stored as (f,f,f)), or glm::dvec3 colour (specularIsColor)
 //   FalloffModel, ConeModel, Diffuse   the enum (or int index, or file name)
-//   FalloffRange         double > 0, or an invalid QVariant for "no range" (inverse-polynomial, inverse-square)
-//   everything else      double
+//   FalloffRange         double > 0, or an invalid QVariant for "no range" (inverse-polynomial,
+//   inverse-square) everything else      double
 // Enums from types.h, RigSpace/SpecularModel/ViewerModel likewise for rig values. (Qt 6 needs no
 // Q_DECLARE_METATYPE for glm::dvec3 in a QVariant; declaring it here would clash with earlier implicit uses.)
 #pragma once
@@ -53,7 +53,7 @@ enum class LightProperty {
     Specular,
     Ambient,
     RimExponent,
-    Any  // not a property: "several or all values of the light changed" (in RigChange only)
+    Any // not a property: "several or all values of the light changed" (in RigChange only)
 };
 constexpr int kLightPropertyCount = int(LightProperty::Any);
 
@@ -64,19 +64,19 @@ constexpr int kRigPropertyCount = int(RigProperty::Any);
 constexpr int kMaxLightNameLength = kMaxRigNameLength;  // characters
 constexpr double kMaxColorComponent = kMaxRigIntensity; // linear RGB, HDR allowed; also specular, ambient
 constexpr double kMaxIntensity = kMaxRigIntensity;
-constexpr double kMinTemperature = 1000.0, kMaxTemperature = 40000.0;  // kelvin
-constexpr double kMaxCoordinate = kMaxRigLength;        // |position component|, range
-constexpr double kMaxExponent = kMaxRigExponent;        // falloff, cone and rim exponents (all > 0)
+constexpr double kMinTemperature = 1000.0, kMaxTemperature = 40000.0; // kelvin
+constexpr double kMaxCoordinate = kMaxRigLength;                      // |position component|, range
+constexpr double kMaxExponent = kMaxRigExponent; // falloff, cone and rim exponents (all > 0)
 constexpr double kMaxPolynomialCoefficient = kMaxRigLength;
-constexpr double kMaxShininess = kMaxRigExponent;       // > 0
+constexpr double kMaxShininess = kMaxRigExponent; // > 0
 
 // Human-readable name for undo texts and messages: "intensity", "cone outer angle".
 QString lightPropertyName(LightProperty property);
 QString rigPropertyName(RigProperty property);
 
-// Whether the property means anything for this light (Position: point/spot; Cone*: spot; Falloff*: point/spot;
-// Diffuse/Specular/Ambient: not rim; RimExponent: rim; the rest: all). Commands only touch lights where the
-// property applies.
+// Whether the property means anything for this light (Position: point/spot; Cone*: spot; Falloff*:
+// point/spot; Diffuse/Specular/Ambient: not rim; RimExponent: rim; the rest: all). Commands only touch lights
+// where the property applies.
 bool lightPropertyApplies(const Light& light, LightProperty property);
 
 // The light's current value, in the types listed above.
@@ -86,8 +86,8 @@ QVariant rigValue(const Rig& rig, RigProperty property);
 // Context-free check of type and range: empty string when valid, else a reason such as
 // "intensity must be a finite number between 0 and 1e+06, got -1".
 QString validateLightValue(LightProperty property, const QVariant& value);
-// Also checks the light's other values (a smooth cone's inner <= outer, "no range" only for the falloff models
-// that allow it, at least one positive inverse-polynomial coefficient).
+// Also checks the light's other values (a smooth cone's inner <= outer, "no range" only for the falloff
+// models that allow it, at least one positive inverse-polynomial coefficient).
 QString validateLightValue(const Light& light, LightProperty property, const QVariant& value);
 QString validateRigValue(RigProperty property, const QVariant& value);
 // Every value of a light / a rig (used for rigs that come from elsewhere: presets, model imports).
@@ -104,4 +104,4 @@ void applyRigValue(Rig& rig, RigProperty property, const QVariant& value);
 QColor displayColor(const glm::dvec3& linear);
 glm::dvec3 linearFromDisplayColor(const QColor& color);
 
-}  // namespace lr
+} // namespace lr

@@ -15,11 +15,15 @@ QString typeLabel(LightType t) {
     return s;
 }
 
-QString formatNumber(double v) { return QString::number(v, 'g', 4); }
+QString formatNumber(double v) {
+    return QString::number(v, 'g', 4);
+}
 
-bool hasRangeColumn(const Light& l) { return l.usesFalloff() && l.falloff.model != FalloffModel::None; }
+bool hasRangeColumn(const Light& l) {
+    return l.usesFalloff() && l.falloff.model != FalloffModel::None;
+}
 
-}  // namespace
+} // namespace
 
 LightTableModel::LightTableModel(Document* document, QObject* parent)
     : QAbstractTableModel(parent), m_doc(document) {
@@ -32,17 +36,26 @@ int LightTableModel::rowCount(const QModelIndex& parent) const {
     return parent.isValid() || !m_doc ? 0 : m_doc->lightCount();
 }
 
-int LightTableModel::columnCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : ColumnCount; }
+int LightTableModel::columnCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : ColumnCount;
+}
 
 LightProperty LightTableModel::propertyOf(int column) {
     switch (column) {
-    case NameColumn: return LightProperty::Name;
-    case TypeColumn: return LightProperty::Type;
-    case OnColumn: return LightProperty::Enabled;
-    case ColorColumn: return LightProperty::Color;
-    case IntensityColumn: return LightProperty::Intensity;
-    case FalloffColumn: return LightProperty::FalloffRange;
-    default: return LightProperty::Any;
+    case NameColumn:
+        return LightProperty::Name;
+    case TypeColumn:
+        return LightProperty::Type;
+    case OnColumn:
+        return LightProperty::Enabled;
+    case ColorColumn:
+        return LightProperty::Color;
+    case IntensityColumn:
+        return LightProperty::Intensity;
+    case FalloffColumn:
+        return LightProperty::FalloffRange;
+    default:
+        return LightProperty::Any;
     }
 }
 
@@ -52,7 +65,8 @@ QVariant LightTableModel::data(const QModelIndex& index, int role) const {
     const Light& l = m_doc->light(index.row());
     const int col = index.column();
     switch (role) {
-    case LightIdRole: return QVariant::fromValue(m_doc->lightId(index.row()));
+    case LightIdRole:
+        return QVariant::fromValue(m_doc->lightId(index.row()));
     case PropertyRole:
         return propertyOf(col) == LightProperty::Any ? QVariant() : QVariant(int(propertyOf(col)));
     case Qt::CheckStateRole:
@@ -64,36 +78,53 @@ QVariant LightTableModel::data(const QModelIndex& index, int role) const {
         return {};
     case Qt::DisplayRole:
         switch (col) {
-        case NameColumn: return l.name;
-        case TypeColumn: return typeLabel(l.type);
-        case IntensityColumn: return formatNumber(l.intensity);
+        case NameColumn:
+            return l.name;
+        case TypeColumn:
+            return typeLabel(l.type);
+        case IntensityColumn:
+            return formatNumber(l.intensity);
         case FalloffColumn:
             return hasRangeColumn(l) && l.falloff.hasRange() ? formatNumber(l.falloff.range)
                                                              : QStringLiteral("—");
-        default: return {};
+        default:
+            return {};
         }
     case Qt::EditRole:
         switch (col) {
-        case NameColumn: return l.name;
-        case TypeColumn: return int(l.type);
-        case ColorColumn: return QVariant::fromValue(l.color);
-        case IntensityColumn: return l.intensity;
-        case FalloffColumn: return hasRangeColumn(l) && l.falloff.hasRange() ? QVariant(l.falloff.range) : QVariant();
-        default: return {};
+        case NameColumn:
+            return l.name;
+        case TypeColumn:
+            return int(l.type);
+        case ColorColumn:
+            return QVariant::fromValue(l.color);
+        case IntensityColumn:
+            return l.intensity;
+        case FalloffColumn:
+            return hasRangeColumn(l) && l.falloff.hasRange() ? QVariant(l.falloff.range) : QVariant();
+        default:
+            return {};
         }
     case SortRole:
         switch (col) {
-        case NameColumn: return l.name.toLower();
-        case TypeColumn: return int(l.type);
-        case OnColumn: return int(l.enabled);
-        case SoloColumn: return int(m_doc->isSoloed(index.row()));
+        case NameColumn:
+            return l.name.toLower();
+        case TypeColumn:
+            return int(l.type);
+        case OnColumn:
+            return int(l.enabled);
+        case SoloColumn:
+            return int(m_doc->isSoloed(index.row()));
         case ColorColumn: {
             const glm::dvec3 c = l.effectiveColor();
             return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
         }
-        case IntensityColumn: return l.intensity;
-        case FalloffColumn: return hasRangeColumn(l) && l.falloff.hasRange() ? l.falloff.range : -1.0;
-        default: return {};
+        case IntensityColumn:
+            return l.intensity;
+        case FalloffColumn:
+            return hasRangeColumn(l) && l.falloff.hasRange() ? l.falloff.range : -1.0;
+        default:
+            return {};
         }
     case Qt::ToolTipRole:
         switch (col) {
@@ -106,13 +137,16 @@ QVariant LightTableModel::data(const QModelIndex& index, int role) const {
         case FalloffColumn:
             if (!l.usesFalloff()) return tr("%1 lights have no distance falloff").arg(typeLabel(l.type));
             return tr("Falloff: %1").arg(toString(l.falloff.model));
-        case SoloColumn: return tr("Solo: while any light is soloed, only soloed lights render (not saved)");
-        default: return {};
+        case SoloColumn:
+            return tr("Solo: while any light is soloed, only soloed lights render (not saved)");
+        default:
+            return {};
         }
     case Qt::TextAlignmentRole:
         if (col == IntensityColumn || col == FalloffColumn) return int(Qt::AlignRight | Qt::AlignVCenter);
         return {};
-    default: return {};
+    default:
+        return {};
     }
 }
 
@@ -120,17 +154,26 @@ QVariant LightTableModel::headerData(int section, Qt::Orientation orientation, i
     if (orientation != Qt::Horizontal) return QAbstractTableModel::headerData(section, orientation, role);
     if (role == Qt::DisplayRole) {
         switch (section) {
-        case NameColumn: return tr("Name");
-        case TypeColumn: return tr("Type");
-        case OnColumn: return tr("On");
-        case SoloColumn: return tr("Solo");
-        case ColorColumn: return tr("Colour");
-        case IntensityColumn: return tr("Intensity");
-        case FalloffColumn: return tr("Range");
-        default: return {};
+        case NameColumn:
+            return tr("Name");
+        case TypeColumn:
+            return tr("Type");
+        case OnColumn:
+            return tr("On");
+        case SoloColumn:
+            return tr("Solo");
+        case ColorColumn:
+            return tr("Colour");
+        case IntensityColumn:
+            return tr("Intensity");
+        case FalloffColumn:
+            return tr("Range");
+        default:
+            return {};
         }
     }
-    if (role == Qt::ToolTipRole && section == FalloffColumn) return tr("The distance falloff's range (— when none)");
+    if (role == Qt::ToolTipRole && section == FalloffColumn)
+        return tr("The distance falloff's range (— when none)");
     return {};
 }
 
@@ -139,11 +182,15 @@ Qt::ItemFlags LightTableModel::flags(const QModelIndex& index) const {
     Qt::ItemFlags f = Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemIsDragEnabled;
     switch (index.column()) {
     case OnColumn:
-    case SoloColumn: f |= Qt::ItemIsUserCheckable; break;
+    case SoloColumn:
+        f |= Qt::ItemIsUserCheckable;
+        break;
     case FalloffColumn:
         if (m_doc && hasRangeColumn(m_doc->light(index.row()))) f |= Qt::ItemIsEditable;
         break;
-    default: f |= Qt::ItemIsEditable; break;
+    default:
+        f |= Qt::ItemIsEditable;
+        break;
     }
     return f;
 }
@@ -168,7 +215,8 @@ bool LightTableModel::setDataForRows(const QList<int>& rows, int column, const Q
     bool ok = false;
     if (role == Qt::CheckStateRole) {
         const bool on = value.toInt() == Qt::Checked;
-        if (column == OnColumn) ok = m_doc->setLightsEnabled(rows, on, &error);
+        if (column == OnColumn)
+            ok = m_doc->setLightsEnabled(rows, on, &error);
         else if (column == SoloColumn) {
             m_doc->setSoloed(rows, on);
             ok = true;
@@ -176,8 +224,10 @@ bool LightTableModel::setDataForRows(const QList<int>& rows, int column, const Q
             error = tr("this column has no checkbox");
     } else if (role == Qt::EditRole) {
         if (column == NameColumn) {
-            if (rows.size() == 1) ok = m_doc->renameLight(rows.front(), value.toString(), &error);
-            else ok = m_doc->setLightValue(rows, LightProperty::Name, value, &error);
+            if (rows.size() == 1)
+                ok = m_doc->renameLight(rows.front(), value.toString(), &error);
+            else
+                ok = m_doc->setLightValue(rows, LightProperty::Name, value, &error);
         } else if (column == OnColumn) {
             ok = m_doc->setLightsEnabled(rows, value.toBool(), &error);
         } else if (column == SoloColumn) {
@@ -186,7 +236,8 @@ bool LightTableModel::setDataForRows(const QList<int>& rows, int column, const Q
         } else if (propertyOf(column) != LightProperty::Any) {
             QVariant v = value;
             // A number typed as text ("2.5") is fine; an empty range cell means "no range".
-            if (column == FalloffColumn && v.metaType().id() == QMetaType::QString && v.toString().trimmed().isEmpty())
+            if (column == FalloffColumn && v.metaType().id() == QMetaType::QString &&
+                v.toString().trimmed().isEmpty())
                 v = QVariant();
             ok = m_doc->setLightValue(rows, propertyOf(column), v, &error);
         } else {
@@ -201,7 +252,9 @@ bool LightTableModel::setDataForRows(const QList<int>& rows, int column, const Q
 
 // ---- drag and drop ----
 
-QStringList LightTableModel::mimeTypes() const { return {QString::fromLatin1(kMimeType)}; }
+QStringList LightTableModel::mimeTypes() const {
+    return {QString::fromLatin1(kMimeType)};
+}
 
 QMimeData* LightTableModel::mimeData(const QModelIndexList& indexes) const {
     QList<int> rows;
@@ -227,7 +280,7 @@ QList<int> decodeRows(const QMimeData* data) {
     if (in.status() != QDataStream::Ok) rows.clear();
     return rows;
 }
-}  // namespace
+} // namespace
 
 bool LightTableModel::canDropMimeData(const QMimeData* data, Qt::DropAction action, int, int,
                                       const QModelIndex&) const {
@@ -254,7 +307,8 @@ bool LightTableModel::moveRows(const QModelIndex& sourceParent, int sourceRow, i
                                const QModelIndex& destinationParent, int destinationChild) {
     if (!m_doc || sourceParent.isValid() || destinationParent.isValid() || count <= 0) return false;
     QList<int> rows;
-    for (int i = 0; i < count; ++i) rows.append(sourceRow + i);
+    for (int i = 0; i < count; ++i)
+        rows.append(sourceRow + i);
     QString error;
     if (!m_doc->moveLights(rows, destinationChild, &error)) return refuse(error);
     return true;
@@ -264,27 +318,45 @@ bool LightTableModel::moveRows(const QModelIndex& sourceParent, int sourceRow, i
 
 void LightTableModel::onAboutToChange(const RigChange& c) {
     switch (c.kind) {
-    case RigChange::Inserted: beginInsertRows({}, c.first, c.last); break;
-    case RigChange::Removed: beginRemoveRows({}, c.first, c.last); break;
-    case RigChange::Moved: beginMoveRows({}, c.first, c.last, {}, c.destination); break;
-    case RigChange::Reset: beginResetModel(); break;
+    case RigChange::Inserted:
+        beginInsertRows({}, c.first, c.last);
+        break;
+    case RigChange::Removed:
+        beginRemoveRows({}, c.first, c.last);
+        break;
+    case RigChange::Moved:
+        beginMoveRows({}, c.first, c.last, {}, c.destination);
+        break;
+    case RigChange::Reset:
+        beginResetModel();
+        break;
     case RigChange::Reordered:
         emit layoutAboutToBeChanged({}, QAbstractItemModel::VerticalSortHint);
         m_layoutPersistent = persistentIndexList();
         break;
-    default: break;
+    default:
+        break;
     }
 }
 
 void LightTableModel::onChanged(const RigChange& c) {
     switch (c.kind) {
-    case RigChange::Inserted: endInsertRows(); break;
-    case RigChange::Removed: endRemoveRows(); break;
-    case RigChange::Moved: endMoveRows(); break;
-    case RigChange::Reset: endResetModel(); break;
+    case RigChange::Inserted:
+        endInsertRows();
+        break;
+    case RigChange::Removed:
+        endRemoveRows();
+        break;
+    case RigChange::Moved:
+        endMoveRows();
+        break;
+    case RigChange::Reset:
+        endResetModel();
+        break;
     case RigChange::Reordered: {
         QList<int> newRowOf(c.order.size());
-        for (int i = 0; i < c.order.size(); ++i) newRowOf[c.order[i]] = i;
+        for (int i = 0; i < c.order.size(); ++i)
+            newRowOf[c.order[i]] = i;
         QModelIndexList to;
         to.reserve(m_layoutPersistent.size());
         for (const QModelIndex& from : std::as_const(m_layoutPersistent))
@@ -297,26 +369,40 @@ void LightTableModel::onChanged(const RigChange& c) {
     case RigChange::LightValues: {
         int first = 0, last = ColumnCount - 1;
         switch (c.lightProperty) {
-        case LightProperty::Name: first = last = NameColumn; break;
-        case LightProperty::Enabled: first = last = OnColumn; break;
+        case LightProperty::Name:
+            first = last = NameColumn;
+            break;
+        case LightProperty::Enabled:
+            first = last = OnColumn;
+            break;
         case LightProperty::Color:
-        case LightProperty::Temperature: first = last = ColorColumn; break;
-        case LightProperty::Intensity: first = last = IntensityColumn; break;
+        case LightProperty::Temperature:
+            first = last = ColorColumn;
+            break;
+        case LightProperty::Intensity:
+            first = last = IntensityColumn;
+            break;
         case LightProperty::FalloffModel:
-        case LightProperty::FalloffRange: first = last = FalloffColumn; break;
+        case LightProperty::FalloffRange:
+            first = last = FalloffColumn;
+            break;
         case LightProperty::Type:
-        case LightProperty::Any: break;
-        default: return;  // not shown in the table
+        case LightProperty::Any:
+            break;
+        default:
+            return; // not shown in the table
         }
         emit dataChanged(index(c.first, first), index(c.last, last));
         break;
     }
-    case RigChange::RigValues: break;
+    case RigChange::RigValues:
+        break;
     }
 }
 
 void LightTableModel::onSoloChanged() {
-    if (rowCount() > 0) emit dataChanged(index(0, SoloColumn), index(rowCount() - 1, SoloColumn), {Qt::CheckStateRole});
+    if (rowCount() > 0)
+        emit dataChanged(index(0, SoloColumn), index(rowCount() - 1, SoloColumn), {Qt::CheckStateRole});
 }
 
-}  // namespace lr
+} // namespace lr

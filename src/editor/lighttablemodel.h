@@ -14,22 +14,31 @@ namespace lr {
 
 class LightTableModel : public QAbstractTableModel {
     Q_OBJECT
-public:
-    enum Column { NameColumn, TypeColumn, OnColumn, SoloColumn, ColorColumn, IntensityColumn, FalloffColumn,
-                  ColumnCount };
+  public:
+    enum Column {
+        NameColumn,
+        TypeColumn,
+        OnColumn,
+        SoloColumn,
+        ColorColumn,
+        IntensityColumn,
+        FalloffColumn,
+        ColumnCount
+    };
     enum Role {
-        LightIdRole = Qt::UserRole + 1,  // LightId (quint64) of the row
-        SortRole,                        // a sortable scalar per column (name, type index, 0/1, luminance, ...)
-        PropertyRole,                    // the LightProperty the cell edits (int), invalid when none
+        LightIdRole = Qt::UserRole + 1, // LightId (quint64) of the row
+        SortRole,     // a sortable scalar per column (name, type index, 0/1, luminance, ...)
+        PropertyRole, // the LightProperty the cell edits (int), invalid when none
     };
     static constexpr const char* kMimeType = "application/x-lightrig-light-rows";
 
     explicit LightTableModel(Document* document, QObject* parent = nullptr);
     Document* document() const { return m_doc; }
 
-    // Roles: DisplayRole formatted text; EditRole the raw value (QString name, int type index, glm::dvec3 linear
-    // colour, double intensity/range, invalid range for none); CheckStateRole for on and solo; DecorationRole
-    // the colour swatch (QColor, effective colour incl. temperature, HDR scaled); ToolTipRole details.
+    // Roles: DisplayRole formatted text; EditRole the raw value (QString name, int type index, glm::dvec3
+    // linear colour, double intensity/range, invalid range for none); CheckStateRole for on and solo;
+    // DecorationRole the colour swatch (QColor, effective colour incl. temperature, HDR scaled); ToolTipRole
+    // details.
     int rowCount(const QModelIndex& parent = {}) const override;
     int columnCount(const QModelIndex& parent = {}) const override;
     QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
@@ -53,15 +62,16 @@ public:
                          const QModelIndex& parent) const override;
     bool dropMimeData(const QMimeData* data, Qt::DropAction action, int row, int column,
                       const QModelIndex& parent) override;
-    bool moveRows(const QModelIndex& sourceParent, int sourceRow, int count, const QModelIndex& destinationParent,
-                  int destinationChild) override;  // -> MoveLights (one undo step)
+    bool moveRows(const QModelIndex& sourceParent, int sourceRow, int count,
+                  const QModelIndex& destinationParent,
+                  int destinationChild) override; // -> MoveLights (one undo step)
 
-    static LightProperty propertyOf(int column);  // Any when the column edits no light property
+    static LightProperty propertyOf(int column); // Any when the column edits no light property
 
-signals:
+  signals:
     void editRefused(const QString& reason);
 
-private:
+  private:
     void onAboutToChange(const RigChange& change);
     void onChanged(const RigChange& change);
     void onSoloChanged();
@@ -69,7 +79,7 @@ private:
 
     QPointer<Document> m_doc;
     QString m_lastError;
-    QModelIndexList m_layoutPersistent;  // between the two halves of a Reordered change
+    QModelIndexList m_layoutPersistent; // between the two halves of a Reordered change
 };
 
-}  // namespace lr
+} // namespace lr

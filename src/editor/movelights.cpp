@@ -19,11 +19,11 @@ std::unique_ptr<MoveLights> MoveLights::create(Document* doc, const QList<int>& 
     struct Run {
         int first, count;
     };
-    QList<Run> before, after;  // runs above destination (move down) and at/below it (move up)
+    QList<Run> before, after; // runs above destination (move down) and at/below it (move up)
     for (int i = 0; i < sorted.size();) {
         int j = i;
-        while (j + 1 < sorted.size() && sorted[j + 1] == sorted[j] + 1 && (sorted[j + 1] < destination) ==
-                                                                              (sorted[i] < destination))
+        while (j + 1 < sorted.size() && sorted[j + 1] == sorted[j] + 1 &&
+               (sorted[j + 1] < destination) == (sorted[i] < destination))
             ++j;
         (sorted[i] < destination ? before : after).append({sorted[i], j - i + 1});
         i = j + 1;
@@ -50,19 +50,24 @@ std::unique_ptr<MoveLights> MoveLights::create(Document* doc, const QList<int>& 
     return std::unique_ptr<MoveLights>(new MoveLights(doc, std::move(moves), int(sorted.size())));
 }
 
-MoveLights::MoveLights(Document* doc, QList<BlockMove> moves, int count) : m_doc(doc), m_moves(std::move(moves)) {
+MoveLights::MoveLights(Document* doc, QList<BlockMove> moves, int count)
+    : m_doc(doc), m_moves(std::move(moves)) {
     if (m_moves.size() > 1) {
         // The same moves as one permutation: simulate them on the identity order.
         std::vector<int> order(size_t(doc->lightCount()));
-        for (size_t i = 0; i < order.size(); ++i) order[i] = int(i);
+        for (size_t i = 0; i < order.size(); ++i)
+            order[i] = int(i);
         for (const BlockMove& m : std::as_const(m_moves)) {
             auto b = order.begin();
-            if (m.destination > m.first) std::rotate(b + m.first, b + m.first + m.count, b + m.destination);
-            else std::rotate(b + m.destination, b + m.first, b + m.first + m.count);
+            if (m.destination > m.first)
+                std::rotate(b + m.first, b + m.first + m.count, b + m.destination);
+            else
+                std::rotate(b + m.destination, b + m.first, b + m.first + m.count);
         }
         m_order = QList<int>(order.begin(), order.end());
         m_inverse.resize(m_order.size());
-        for (int i = 0; i < m_order.size(); ++i) m_inverse[m_order[i]] = i;
+        for (int i = 0; i < m_order.size(); ++i)
+            m_inverse[m_order[i]] = i;
     }
     setText(count == 1 ? QCoreApplication::translate("lr::MoveLights", "Move light")
                        : QCoreApplication::translate("lr::MoveLights", "Move %1 lights").arg(count));
@@ -70,7 +75,8 @@ MoveLights::MoveLights(Document* doc, QList<BlockMove> moves, int count) : m_doc
 
 void MoveLights::redo() {
     if (!m_order.isEmpty()) return m_doc->reorderLights(m_order);
-    for (const BlockMove& m : std::as_const(m_moves)) m_doc->moveLightBlock(m.first, m.count, m.destination);
+    for (const BlockMove& m : std::as_const(m_moves))
+        m_doc->moveLightBlock(m.first, m.count, m.destination);
 }
 
 void MoveLights::undo() {
@@ -83,4 +89,4 @@ void MoveLights::undo() {
     }
 }
 
-}  // namespace lr
+} // namespace lr

@@ -12,7 +12,7 @@
 namespace lr {
 
 class MoveLights : public QUndoCommand {
-public:
+  public:
     // nullptr and *error when rows are empty/out of range or destination is outside 0..lightCount(), or when
     // the move would change nothing (*error empty then).
     static std::unique_ptr<MoveLights> create(Document* document, const QList<int>& rows, int destination,
@@ -21,14 +21,14 @@ public:
     void redo() override;
 
     struct BlockMove {
-        int first, count, destination;  // destination as in beginMoveRows (index before the move)
+        int first, count, destination; // destination as in beginMoveRows (index before the move)
     };
 
-private:
+  private:
     MoveLights(Document* document, QList<BlockMove> moves, int count);
     Document* m_doc;
     QList<BlockMove> m_moves;
-    QList<int> m_order, m_inverse;  // permutation (several blocks only)
+    QList<int> m_order, m_inverse; // permutation (several blocks only)
 };
 
-}  // namespace lr
+} // namespace lr

@@ -27,11 +27,13 @@ RemoveLights::RemoveLights(Document* doc, QList<int> rows) : m_doc(doc), m_rows(
                 : QCoreApplication::translate("lr::RemoveLights", "Delete %1 lights").arg(m_rows.size()));
 }
 
-void RemoveLights::redo() { m_doc->removeLightRows(m_rows); }
+void RemoveLights::redo() {
+    m_doc->removeLightRows(m_rows);
+}
 
 void RemoveLights::undo() {
     m_doc->insertLightRows(m_rows, m_lights, m_ids);
     m_doc->setSelection(QSet<LightId>(m_ids.begin(), m_ids.end()), m_ids.front());
 }
 
-}  // namespace lr
+} // namespace lr

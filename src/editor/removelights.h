@@ -11,19 +11,19 @@
 namespace lr {
 
 class RemoveLights : public QUndoCommand {
-public:
+  public:
     // nullptr and *error when rows is empty or out of range. Duplicate rows are ignored.
     static std::unique_ptr<RemoveLights> create(Document* document, const QList<int>& rows,
                                                 QString* error = nullptr);
     void undo() override;
     void redo() override;
 
-private:
+  private:
     RemoveLights(Document* document, QList<int> rows);
     Document* m_doc;
-    QList<int> m_rows;  // sorted ascending
+    QList<int> m_rows; // sorted ascending
     std::vector<Light> m_lights;
     QList<LightId> m_ids;
 };
 
-}  // namespace lr
+} // namespace lr

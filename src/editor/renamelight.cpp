@@ -4,7 +4,8 @@
 
 namespace lr {
 
-std::unique_ptr<RenameLight> RenameLight::create(Document* doc, int row, const QString& name, QString* error) {
+std::unique_ptr<RenameLight> RenameLight::create(Document* doc, int row, const QString& name,
+                                                 QString* error) {
     if (row < 0 || row >= doc->lightCount()) {
         if (error) *error = QCoreApplication::translate("lr::RenameLight", "no light at row %1").arg(row);
         return nullptr;
@@ -37,4 +38,4 @@ void RenameLight::redo() {
     m_doc->setLightsAt({m_row}, {l}, LightProperty::Name);
 }
 
-}  // namespace lr
+} // namespace lr

@@ -9,7 +9,7 @@
 namespace lr {
 
 class RenameLight : public QUndoCommand {
-public:
+  public:
     // nullptr and *error when row is out of range or the name is invalid (validateLightValue(Name, ...)), or
     // when it equals the current name (*error empty then).
     static std::unique_ptr<RenameLight> create(Document* document, int row, const QString& name,
@@ -17,11 +17,11 @@ public:
     void undo() override;
     void redo() override;
 
-private:
+  private:
     RenameLight(Document* document, int row, QString before, QString after);
     Document* m_doc;
     int m_row;
     QString m_before, m_after;
 };
 
-}  // namespace lr
+} // namespace lr

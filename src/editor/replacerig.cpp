@@ -2,7 +2,8 @@
 
 namespace lr {
 
-std::unique_ptr<ReplaceRig> ReplaceRig::create(Document* doc, const Rig& rig, const QString& text, QString* error) {
+std::unique_ptr<ReplaceRig> ReplaceRig::create(Document* doc, const Rig& rig, const QString& text,
+                                               QString* error) {
     if (const QString e = validateRig(rig); !e.isEmpty()) {
         if (error) *error = e;
         return nullptr;
@@ -15,14 +16,17 @@ ReplaceRig::ReplaceRig(Document* doc, Rig rig, const QString& text)
     setText(text);
 }
 
-void ReplaceRig::undo() { m_doc->resetRig(m_before, m_beforeIds); }
+void ReplaceRig::undo() {
+    m_doc->resetRig(m_before, m_beforeIds);
+}
 
 void ReplaceRig::redo() {
     if (m_afterIds.size() != qsizetype(m_after.lights.size())) {
         m_afterIds.clear();
-        for (size_t i = 0; i < m_after.lights.size(); ++i) m_afterIds.append(m_doc->newLightId());
+        for (size_t i = 0; i < m_after.lights.size(); ++i)
+            m_afterIds.append(m_doc->newLightId());
     }
     m_doc->resetRig(m_after, m_afterIds);
 }
 
-}  // namespace lr
+} // namespace lr

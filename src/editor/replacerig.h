@@ -10,18 +10,18 @@
 namespace lr {
 
 class ReplaceRig : public QUndoCommand {
-public:
+  public:
     // nullptr and *error when the rig has more than kMaxRigLights lights or an invalid value (validateRig).
     static std::unique_ptr<ReplaceRig> create(Document* document, const Rig& rig, const QString& text,
                                               QString* error = nullptr);
     void undo() override;
     void redo() override;
 
-private:
+  private:
     ReplaceRig(Document* document, Rig rig, const QString& text);
     Document* m_doc;
     Rig m_before, m_after;
     QList<LightId> m_beforeIds, m_afterIds;
 };
 
-}  // namespace lr
+} // namespace lr

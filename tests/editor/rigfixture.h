@@ -10,21 +10,36 @@
 // QTest's QCOMPARE prints values with toString(); lr::toString<E> (types.h) is an unconstrained template that
 // would make the call ambiguous for every type in namespace lr, so these exact overloads win.
 namespace lr {
-inline char* toString(const Rig& rig) { return qstrdup(writeRigJson(rig).constData()); }
+inline char* toString(const Rig& rig) {
+    return qstrdup(writeRigJson(rig).constData());
+}
 inline char* toString(const Light& light) {
     Rig rig;
     rig.lights.push_back(light);
     return toString(rig);
 }
 inline char* toString(const Cone& c) {
-    return qstrdup(QStringLiteral("cone(%1, %2, %3, %4)").arg(int(c.model)).arg(c.inner).arg(c.outer).arg(c.exponent)
-                       .toUtf8().constData());
+    return qstrdup(QStringLiteral("cone(%1, %2, %3, %4)")
+                       .arg(int(c.model))
+                       .arg(c.inner)
+                       .arg(c.outer)
+                       .arg(c.exponent)
+                       .toUtf8()
+                       .constData());
 }
-inline char* toString(LightType v) { return qstrdup(QByteArray::number(int(v)).constData()); }
-inline char* toString(LightProperty v) { return qstrdup(QByteArray::number(int(v)).constData()); }
-inline char* toString(RigProperty v) { return qstrdup(QByteArray::number(int(v)).constData()); }
-inline char* toString(RigChange::Kind v) { return qstrdup(QByteArray::number(int(v)).constData()); }
-}  // namespace lr
+inline char* toString(LightType v) {
+    return qstrdup(QByteArray::number(int(v)).constData());
+}
+inline char* toString(LightProperty v) {
+    return qstrdup(QByteArray::number(int(v)).constData());
+}
+inline char* toString(RigProperty v) {
+    return qstrdup(QByteArray::number(int(v)).constData());
+}
+inline char* toString(RigChange::Kind v) {
+    return qstrdup(QByteArray::number(int(v)).constData());
+}
+} // namespace lr
 
 namespace lrtest {
 
@@ -63,12 +78,15 @@ inline lr::Rig pointRig(int n) {
     return rig;
 }
 
-inline QByteArray bytes(const lr::Document& doc) { return lr::writeRigJson(doc.rig()); }
+inline QByteArray bytes(const lr::Document& doc) {
+    return lr::writeRigJson(doc.rig());
+}
 
 inline QStringList names(const lr::Document& doc) {
     QStringList out;
-    for (const lr::Light& l : doc.rig().lights) out << l.name;
+    for (const lr::Light& l : doc.rig().lights)
+        out << l.name;
     return out;
 }
 
-}  // namespace lrtest
+} // namespace lrtest

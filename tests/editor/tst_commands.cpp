@@ -19,8 +19,8 @@ Q_DECLARE_METATYPE(lr::RigProperty)
 class TestCommands : public QObject {
     Q_OBJECT
 
-    // Pushes through `push`, then checks: one new undo step; undo gives the exact old bytes; redo the new ones;
-    // a second undo/redo cycle too (commands must be repeatable).
+    // Pushes through `push`, then checks: one new undo step; undo gives the exact old bytes; redo the new
+    // ones; a second undo/redo cycle too (commands must be repeatable).
     template <typename F> void checkDoUndoRedo(Document& doc, F push) {
         const QByteArray before = bytes(doc);
         const int count = doc.undoStack()->count();
@@ -36,7 +36,7 @@ class TestCommands : public QObject {
         }
     }
 
-private slots:
+  private slots:
     void changeLightValue_data() {
         QTest::addColumn<int>("row");
         QTest::addColumn<LightProperty>("property");
@@ -52,22 +52,24 @@ private slots:
         QTest::newRow("temperature") << 0 << LightProperty::Temperature << QVariant(3200.0);
         QTest::newRow("position") << 0 << LightProperty::Position << v3(-3, 1, 1);
         QTest::newRow("direction") << 2 << LightProperty::Direction << v3(0, -2, 0.5);
-        QTest::newRow("falloff model") << 0 << LightProperty::FalloffModel
-                                       << QVariant::fromValue(FalloffModel::RangeQuadratic);
-        QTest::newRow("falloff model needing a range") << 4 << LightProperty::FalloffModel
-                                                       << QVariant::fromValue(FalloffModel::RangePower);
+        QTest::newRow("falloff model")
+            << 0 << LightProperty::FalloffModel << QVariant::fromValue(FalloffModel::RangeQuadratic);
+        QTest::newRow("falloff model needing a range")
+            << 4 << LightProperty::FalloffModel << QVariant::fromValue(FalloffModel::RangePower);
         QTest::newRow("range") << 0 << LightProperty::FalloffRange << QVariant(12.5);
         QTest::newRow("optional range set") << 4 << LightProperty::FalloffRange << QVariant(40.0);
         QTest::newRow("falloff exponent") << 0 << LightProperty::FalloffExponent << QVariant(3.0);
         QTest::newRow("constant") << 4 << LightProperty::FalloffConstant << QVariant(1.0);
         QTest::newRow("linear") << 4 << LightProperty::FalloffLinear << QVariant(0.3);
         QTest::newRow("quadratic") << 4 << LightProperty::FalloffQuadratic << QVariant(0.2);
-        QTest::newRow("cone model") << 1 << LightProperty::ConeModel << QVariant::fromValue(ConeModel::AnglePower);
+        QTest::newRow("cone model") << 1 << LightProperty::ConeModel
+                                    << QVariant::fromValue(ConeModel::AnglePower);
         QTest::newRow("cone inner") << 1 << LightProperty::ConeInner << QVariant(10.0);
         QTest::newRow("cone outer") << 1 << LightProperty::ConeOuter << QVariant(60.0);
         QTest::newRow("hard cone outer below inner") << 5 << LightProperty::ConeOuter << QVariant(5.0);
         QTest::newRow("cone exponent") << 1 << LightProperty::ConeExponent << QVariant(3.2);
-        QTest::newRow("diffuse") << 0 << LightProperty::Diffuse << QVariant::fromValue(DiffuseModel::HalfLambert);
+        QTest::newRow("diffuse") << 0 << LightProperty::Diffuse
+                                 << QVariant::fromValue(DiffuseModel::HalfLambert);
         QTest::newRow("specular factor") << 0 << LightProperty::Specular << QVariant(0.5);
         QTest::newRow("specular colour") << 0 << LightProperty::Specular << v3(1, 0.5, 0.25);
         QTest::newRow("light ambient") << 2 << LightProperty::Ambient << v3(0.1, 0.1, 0.2);
@@ -86,10 +88,12 @@ private slots:
         QVERIFY2(error.isEmpty(), qPrintable(error));
         // The stored value reads back as given (modulo normalisation and colour conversion) and is valid.
         QVERIFY(validateLight(doc.light(row)).isEmpty());
-        QCOMPARE(validateLightValue(doc.light(row), property, lightValue(doc.light(row), property)), QString());
+        QCOMPARE(validateLightValue(doc.light(row), property, lightValue(doc.light(row), property)),
+                 QString());
         if (property == LightProperty::Intensity || property == LightProperty::FalloffRange)
             QCOMPARE(lightValue(doc.light(row), property).toDouble(), value.toDouble());
-        if (property == LightProperty::Direction) QVERIFY(std::abs(glm::length(doc.light(row).direction) - 1.0) < 1e-12);
+        if (property == LightProperty::Direction)
+            QVERIFY(std::abs(glm::length(doc.light(row).direction) - 1.0) < 1e-12);
         // The saved form of the new rig reads back to the same rig.
         const RigReadResult back = readRigJson(bytes(doc), QStringLiteral("edited.json"));
         QVERIFY2(back.ok(), qPrintable(back.errors.join(QLatin1Char('\n'))));
@@ -101,7 +105,8 @@ private slots:
         doc.newRig(lrtest::sampleRig());
         // L4 has no range; switching to range-power must give it one, and undo must take it away again.
         QVERIFY(!doc.light(4).falloff.hasRange());
-        QVERIFY(doc.setLightValue({4}, LightProperty::FalloffModel, QVariant::fromValue(FalloffModel::RangePower)));
+        QVERIFY(doc.setLightValue({4}, LightProperty::FalloffModel,
+                                  QVariant::fromValue(FalloffModel::RangePower)));
         QVERIFY(doc.light(4).falloff.hasRange());
         doc.undoStack()->undo();
         QVERIFY(!doc.light(4).falloff.hasRange());
@@ -158,7 +163,8 @@ private slots:
         QTest::newRow("intensity Inf") << 0 << LightProperty::Intensity << QVariant(inf);
         QTest::newRow("intensity negative") << 0 << LightProperty::Intensity << QVariant(-1.0);
         QTest::newRow("intensity too large") << 0 << LightProperty::Intensity << QVariant(1e7);
-        QTest::newRow("intensity text") << 0 << LightProperty::Intensity << QVariant(QStringLiteral("bright"));
+        QTest::newRow("intensity text")
+            << 0 << LightProperty::Intensity << QVariant(QStringLiteral("bright"));
         QTest::newRow("intensity none") << 0 << LightProperty::Intensity << QVariant();
         QTest::newRow("colour negative") << 0 << LightProperty::Color << v3(1, -0.1, 1);
         QTest::newRow("colour NaN") << 0 << LightProperty::Color << v3(1, nan, 1);
@@ -177,7 +183,8 @@ private slots:
         QTest::newRow("falloff exponent zero") << 0 << LightProperty::FalloffExponent << QVariant(0.0);
         QTest::newRow("polynomial all zero") << 4 << LightProperty::FalloffLinear << QVariant(0.0);
         QTest::newRow("polynomial negative") << 4 << LightProperty::FalloffConstant << QVariant(-1.0);
-        QTest::newRow("falloff model unknown") << 0 << LightProperty::FalloffModel << QVariant(QStringLiteral("cubic"));
+        QTest::newRow("falloff model unknown")
+            << 0 << LightProperty::FalloffModel << QVariant(QStringLiteral("cubic"));
         QTest::newRow("falloff model index") << 0 << LightProperty::FalloffModel << QVariant(99);
         QTest::newRow("cone outer > 90") << 1 << LightProperty::ConeOuter << QVariant(91.0);
         QTest::newRow("cone outer zero") << 1 << LightProperty::ConeOuter << QVariant(0.0);
@@ -188,7 +195,8 @@ private slots:
         QTest::newRow("specular negative") << 0 << LightProperty::Specular << QVariant(-1.0);
         QTest::newRow("light ambient negative") << 0 << LightProperty::Ambient << v3(-1, 0, 0);
         QTest::newRow("empty name") << 0 << LightProperty::Name << QVariant(QStringLiteral("   "));
-        QTest::newRow("name too long") << 0 << LightProperty::Name << QVariant(QString(300, QLatin1Char('x')));
+        QTest::newRow("name too long")
+            << 0 << LightProperty::Name << QVariant(QString(300, QLatin1Char('x')));
         QTest::newRow("name with newline") << 0 << LightProperty::Name << QVariant(QStringLiteral("a\nb"));
         QTest::newRow("type unknown") << 0 << LightProperty::Type << QVariant(QStringLiteral("laser"));
         QTest::newRow("enabled not bool") << 0 << LightProperty::Enabled << QVariant(QStringLiteral("yes"));
@@ -218,10 +226,11 @@ private slots:
     void contextFreeValidation() {
         QVERIFY(validateLightValue(LightProperty::Intensity, 1.0).isEmpty());
         QVERIFY(!validateLightValue(LightProperty::Intensity, std::nan("")).isEmpty());
-        QVERIFY(validateLightValue(LightProperty::Temperature, QVariant()).isEmpty());  // none
+        QVERIFY(validateLightValue(LightProperty::Temperature, QVariant()).isEmpty()); // none
         QVERIFY(validateLightValue(LightProperty::ConeOuter, 90.0).isEmpty());
         QVERIFY(!validateLightValue(LightProperty::ConeOuter, 90.5).isEmpty());
-        QVERIFY(validateLightValue(LightProperty::Intensity, QStringLiteral(" 2.5 ")).isEmpty());  // typed text
+        QVERIFY(
+            validateLightValue(LightProperty::Intensity, QStringLiteral(" 2.5 ")).isEmpty()); // typed text
         QVERIFY(!validateLightValue(LightProperty::Any, 1.0).isEmpty());
     }
 
@@ -231,7 +240,8 @@ private slots:
         const QByteArray before = bytes(doc);
         {
             ContinuousEdit drag(&doc);
-            for (int i = 1; i <= 50; ++i) QVERIFY(doc.setLightValue({0, 1}, LightProperty::Intensity, i * 0.1));
+            for (int i = 1; i <= 50; ++i)
+                QVERIFY(doc.setLightValue({0, 1}, LightProperty::Intensity, i * 0.1));
         }
         QCOMPARE(doc.undoStack()->count(), 1);
         QCOMPARE(doc.light(1).intensity, 5.0);
@@ -254,9 +264,12 @@ private slots:
         // In one session: another property, or other lights, start new steps.
         {
             ContinuousEdit drag(&doc);
-            QVERIFY(doc.setLightValue({0}, LightProperty::Position, QVariant::fromValue(glm::dvec3(1, 1, 1))));
-            QVERIFY(doc.setLightValue({0}, LightProperty::Position, QVariant::fromValue(glm::dvec3(2, 1, 1))));
-            QVERIFY(doc.setLightValue({1}, LightProperty::Position, QVariant::fromValue(glm::dvec3(2, 1, 1))));
+            QVERIFY(
+                doc.setLightValue({0}, LightProperty::Position, QVariant::fromValue(glm::dvec3(1, 1, 1))));
+            QVERIFY(
+                doc.setLightValue({0}, LightProperty::Position, QVariant::fromValue(glm::dvec3(2, 1, 1))));
+            QVERIFY(
+                doc.setLightValue({1}, LightProperty::Position, QVariant::fromValue(glm::dvec3(2, 1, 1))));
             QVERIFY(doc.setLightValue({1}, LightProperty::Intensity, 7.0));
             QVERIFY(doc.setLightValue({1}, LightProperty::Intensity, 8.0));
         }
@@ -268,7 +281,8 @@ private slots:
             ContinuousEdit drag(&doc);
             QVERIFY(doc.setLightValue({2}, LightProperty::Intensity, 9.0));
             QVERIFY(doc.setLightValue({2}, LightProperty::Intensity, doc.rig().lights[2].intensity));
-            QVERIFY(doc.setLightValue({2}, LightProperty::Intensity, lrtest::sampleRig().lights[2].intensity));
+            QVERIFY(
+                doc.setLightValue({2}, LightProperty::Intensity, lrtest::sampleRig().lights[2].intensity));
         }
         QCOMPARE(doc.undoStack()->count(), 7);
         QCOMPARE(bytes(doc), here);
@@ -292,7 +306,8 @@ private slots:
         QTest::newRow("name") << RigProperty::Name << QVariant(QStringLiteral("Studio"));
         QTest::newRow("space") << RigProperty::Space << QVariant::fromValue(RigSpace::Model);
         QTest::newRow("ambient") << RigProperty::Ambient << QVariant::fromValue(glm::dvec3(0.1, 0.2, 0.3));
-        QTest::newRow("specular") << RigProperty::SpecularModel << QVariant::fromValue(SpecularModel::BlinnPhong);
+        QTest::newRow("specular") << RigProperty::SpecularModel
+                                  << QVariant::fromValue(SpecularModel::BlinnPhong);
         QTest::newRow("viewer") << RigProperty::ViewerModel << QVariant(QStringLiteral("infinite"));
         QTest::newRow("shininess") << RigProperty::Shininess << QVariant(64.0);
     }
@@ -312,7 +327,8 @@ private slots:
         QString error;
         QVERIFY(!doc.setRigValue(RigProperty::Shininess, 0.0, &error));
         QVERIFY(!error.isEmpty());
-        QVERIFY(!doc.setRigValue(RigProperty::Ambient, QVariant::fromValue(glm::dvec3(std::nan(""), 0, 0)), &error));
+        QVERIFY(!doc.setRigValue(RigProperty::Ambient, QVariant::fromValue(glm::dvec3(std::nan(""), 0, 0)),
+                                 &error));
         QVERIFY(!doc.setRigValue(RigProperty::Space, QStringLiteral("galaxy"), &error));
         QCOMPARE(bytes(doc), before);
         QCOMPARE(doc.undoStack()->count(), 0);
@@ -335,7 +351,7 @@ private slots:
             checkDoUndoRedo(doc, [&] { return doc.addLight(t); });
             QCOMPARE(doc.lightCount(), n + 1);
             QCOMPARE(doc.light(n).type, t);
-            QCOMPARE(doc.selectedRows(), QList<int>{n});  // the new light is selected
+            QCOMPARE(doc.selectedRows(), QList<int>{n}); // the new light is selected
         }
         // Unique names.
         QVERIFY(doc.addLight(LightType::Spot));
@@ -343,8 +359,9 @@ private slots:
         // Insert several in the middle as one step, keeping ids stable through undo/redo.
         const LightId idOf3 = doc.lightId(3);
         checkDoUndoRedo(doc, [&] {
-            return doc.addLights(1, {makeLight(LightType::Point, QStringLiteral("A")),
-                                     makeLight(LightType::Spot, QStringLiteral("B"))},
+            return doc.addLights(1,
+                                 {makeLight(LightType::Point, QStringLiteral("A")),
+                                  makeLight(LightType::Spot, QStringLiteral("B"))},
                                  QStringLiteral("Paste"));
         });
         QCOMPARE(doc.light(1).name, QStringLiteral("A"));
@@ -353,7 +370,7 @@ private slots:
         doc.undoStack()->undo();
         QCOMPARE(doc.rowOf(idA), -1);
         doc.undoStack()->redo();
-        QCOMPARE(doc.rowOf(idA), 1);  // same id after redo
+        QCOMPARE(doc.rowOf(idA), 1); // same id after redo
         QString error;
         Light bad = makeLight(LightType::Point, QStringLiteral("bad"));
         bad.intensity = std::nan("");
@@ -368,9 +385,9 @@ private slots:
         doc.setSelectedRows({1, 4});
         checkDoUndoRedo(doc, [&] { return doc.removeLights({4, 1, 2}); });
         QCOMPARE(names(doc), (QStringList{"L0", "L3", "L5"}));
-        QVERIFY(doc.selection().isEmpty());  // removed lights leave the selection
+        QVERIFY(doc.selection().isEmpty()); // removed lights leave the selection
         doc.undoStack()->undo();
-        QCOMPARE(doc.lightIds(), ids);  // ids come back with their lights
+        QCOMPARE(doc.lightIds(), ids); // ids come back with their lights
         QCOMPARE(doc.selectedRows(), (QList<int>{1, 2, 4}));
         QString error;
         QVERIFY(!doc.removeLights({}, &error));
@@ -415,8 +432,10 @@ private slots:
         QStringList expected, moved, tail;
         for (int i = 0; i < 8; ++i) {
             const QString n = doc.light(i).name;
-            if (rows.contains(i)) moved << n;
-            else (i < destination ? expected : tail) << n;
+            if (rows.contains(i))
+                moved << n;
+            else
+                (i < destination ? expected : tail) << n;
         }
         expected << moved << tail;
         const QList<LightId> ids = doc.lightIds();
@@ -424,9 +443,11 @@ private slots:
         checkDoUndoRedo(doc, [&] { return doc.moveLights(rows, destination); });
         QCOMPARE(names(doc), expected);
         // Ids travel with their lights; the selection stays on the moved lights.
-        for (int i = 0; i < 8; ++i) QCOMPARE(doc.light(doc.rowOf(ids[i])).name, QStringLiteral("P%1").arg(i));
+        for (int i = 0; i < 8; ++i)
+            QCOMPARE(doc.light(doc.rowOf(ids[i])).name, QStringLiteral("P%1").arg(i));
         QCOMPARE(doc.selectedRows().size(), rows.size());
-        for (int r : doc.selectedRows()) QVERIFY(moved.contains(doc.light(r).name));
+        for (int r : doc.selectedRows())
+            QVERIFY(moved.contains(doc.light(r).name));
     }
 
     void moveThatChangesNothingIsNoStep() {
@@ -458,12 +479,13 @@ private slots:
         doc.newRig(lrtest::sampleRig());
         QVERIFY(doc.setLightValue({2}, LightProperty::Enabled, false));
         checkDoUndoRedo(doc, [&] { return doc.setLightsEnabled({0, 1, 2, 3}, false); });
-        for (int r = 0; r < 4; ++r) QVERIFY(!doc.light(r).enabled);
+        for (int r = 0; r < 4; ++r)
+            QVERIFY(!doc.light(r).enabled);
         checkDoUndoRedo(doc, [&] { return doc.setLightsEnabled({2, 3}, true); });
         QVERIFY(doc.light(2).enabled && doc.light(3).enabled && !doc.light(1).enabled);
         doc.undoStack()->undo();
         doc.undoStack()->undo();
-        QVERIFY(!doc.light(2).enabled);  // the light that was already off stays off
+        QVERIFY(!doc.light(2).enabled); // the light that was already off stays off
         QVERIFY(doc.light(0).enabled);
     }
 
@@ -473,7 +495,8 @@ private slots:
         const QList<LightId> ids = doc.lightIds();
         doc.setSelectedRows({1});
         doc.setSoloed({1}, true);
-        checkDoUndoRedo(doc, [&] { return doc.replaceRig(lrtest::pointRig(3), QStringLiteral("Apply preset")); });
+        checkDoUndoRedo(doc,
+                        [&] { return doc.replaceRig(lrtest::pointRig(3), QStringLiteral("Apply preset")); });
         QCOMPARE(doc.rig(), lrtest::pointRig(3));
         QVERIFY(doc.selection().isEmpty());
         QVERIFY(!doc.anySoloed());

@@ -22,7 +22,7 @@ class TestDocument : public QObject {
         f.write(data);
     }
 
-private slots:
+  private slots:
     void initTestCase() { QVERIFY(m_dir.isValid()); }
 
     void newDocumentIsEmptyAndClean() {
@@ -32,7 +32,7 @@ private slots:
         QVERIFY(doc.filePath().isEmpty());
         QCOMPARE(doc.displayName(), QStringLiteral("Untitled"));
         QString error;
-        QVERIFY(!doc.save().isEmpty());  // untitled: save needs a path
+        QVERIFY(!doc.save().isEmpty()); // untitled: save needs a path
     }
 
     void saveLoadAndModifiedFlag() {
@@ -64,7 +64,7 @@ private slots:
         QCOMPARE(f.readAll(), bytes(doc));
         Document other;
         QCOMPARE(other.load(p), QString());
-        QCOMPARE(writeRigJson(other.rig()), bytes(doc));  // unused fields (a point light's cone) are not saved
+        QCOMPARE(writeRigJson(other.rig()), bytes(doc)); // unused fields (a point light's cone) are not saved
         QVERIFY(!other.isModified());
         QCOMPARE(other.undoStack()->count(), 0);
         QCOMPARE(other.filePath(), p);
@@ -140,7 +140,8 @@ private slots:
         // Rendering: only soloed lights that are on; indices unchanged.
         const Rig render = doc.renderRig();
         QCOMPARE(render.lights.size(), doc.rig().lights.size());
-        for (int i = 0; i < doc.lightCount(); ++i) QCOMPARE(render.lights[size_t(i)].enabled, i == 1);
+        for (int i = 0; i < doc.lightCount(); ++i)
+            QCOMPARE(render.lights[size_t(i)].enabled, i == 1);
         // Solo follows its light through a reorder and survives undo/redo of unrelated edits.
         QVERIFY(doc.moveLights({1}, 0));
         QVERIFY(doc.isSoloed(0));
@@ -169,7 +170,7 @@ private slots:
         QCOMPARE(spy.count(), 1);
         QCOMPARE(doc.selectedRows(), (QList<int>{1, 4}));
         QCOMPARE(doc.currentRow(), 4);
-        doc.setSelectedRows({4, 1}, 4);  // same: no signal
+        doc.setSelectedRows({4, 1}, 4); // same: no signal
         QCOMPARE(spy.count(), 1);
         // Reordering keeps the selection on the same lights.
         QVERIFY(doc.moveLights({4}, 0));
@@ -217,7 +218,8 @@ private slots:
         doc.newRig(lrtest::pointRig(100));
         after.clear();
         QList<int> scattered;
-        for (int i = 0; i < 100; i += 3) scattered << i;
+        for (int i = 0; i < 100; i += 3)
+            scattered << i;
         QVERIFY(doc.setLightValue(scattered, LightProperty::Intensity, 2.0));
         QCOMPARE(after.size(), 1);
         QCOMPARE(after[0].first, 0);
@@ -235,15 +237,16 @@ private slots:
         QCOMPARE(doc.lightCount(), 4096);
         const QByteArray start = bytes(doc);
         QString error;
-        QVERIFY(!doc.addLight(LightType::Point, &error));  // the format's limit
+        QVERIFY(!doc.addLight(LightType::Point, &error)); // the format's limit
         QVERIFY(error.contains(QStringLiteral("4096")));
-        doc.undoStack()->setUndoLimit(0);  // unlimited
+        doc.undoStack()->setUndoLimit(0); // unlimited
         for (int i = 0; i < 10000; ++i) {
             const int row = (i * 37) % kMaxRigLights;
             if (i % 2)
                 QVERIFY(doc.setLightValue({row}, LightProperty::Intensity, 1.0 + i * 1e-3));
             else
-                QVERIFY(doc.setLightValue({row}, LightProperty::Position, QVariant::fromValue(glm::dvec3(i, 1, 2))));
+                QVERIFY(doc.setLightValue({row}, LightProperty::Position,
+                                          QVariant::fromValue(glm::dvec3(i, 1, 2))));
         }
         QCOMPARE(doc.undoStack()->count(), 10000);
         const QByteArray end = bytes(doc);
@@ -258,10 +261,12 @@ private slots:
         Document doc;
         doc.newRig(lrtest::pointRig(2000));
         QList<int> rows;
-        for (int i = 0; i < 1000; ++i) rows << i * 2;
+        for (int i = 0; i < 1000; ++i)
+            rows << i * 2;
         doc.setSelectedRows(rows);
         const QByteArray before = bytes(doc);
-        QVERIFY(doc.setLightValue(doc.selectedRows(), LightProperty::Color, QVariant::fromValue(glm::dvec3(1, 0.5, 0))));
+        QVERIFY(doc.setLightValue(doc.selectedRows(), LightProperty::Color,
+                                  QVariant::fromValue(glm::dvec3(1, 0.5, 0))));
         QCOMPARE(doc.undoStack()->count(), 1);
         for (int i = 0; i < 2000; ++i)
             QCOMPARE(doc.light(i).color, i % 2 ? glm::dvec3(1.0) : glm::dvec3(1, 0.5, 0));
@@ -272,7 +277,7 @@ private slots:
         QCOMPARE(doc.lightCount(), 3000);
         QVERIFY(doc.moveLights(rows, 0));
         QVERIFY(doc.removeLights(rows));
-        QCOMPARE(doc.undoStack()->count(), 3);  // the undone colour edit was discarded by the first push
+        QCOMPARE(doc.undoStack()->count(), 3); // the undone colour edit was discarded by the first push
         doc.undoStack()->setIndex(0);
         QCOMPARE(doc.lightCount(), 2000);
         QCOMPARE(bytes(doc), before);

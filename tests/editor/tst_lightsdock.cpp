@@ -40,7 +40,8 @@ class TestLightsDock : public QObject {
     }
     void selectInView(const QList<int>& sourceRows) {
         QItemSelection sel;
-        for (int r : sourceRows) sel.select(cell(r, 0), cell(r, LightTableModel::ColumnCount - 1));
+        for (int r : sourceRows)
+            sel.select(cell(r, 0), cell(r, LightTableModel::ColumnCount - 1));
         view()->selectionModel()->select(sel, QItemSelectionModel::ClearAndSelect);
         view()->selectionModel()->setCurrentIndex(cell(sourceRows.first(), 0), QItemSelectionModel::NoUpdate);
     }
@@ -65,7 +66,7 @@ class TestLightsDock : public QObject {
         QTRY_VERIFY(!editorOpen());
     }
 
-private slots:
+  private slots:
     void init() {
         m_window = std::make_unique<QMainWindow>();
         m_doc = new Document(m_window.get());
@@ -76,7 +77,7 @@ private slots:
         m_window->resize(900, 600);
         m_window->show();
         QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
-        m_window->activateWindow();  // no window manager under Xvfb: ask for focus directly
+        m_window->activateWindow(); // no window manager under Xvfb: ask for focus directly
         QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
         QCOMPARE(m_dock->objectName(), QStringLiteral("LightsDock"));
     }
@@ -108,12 +109,14 @@ private slots:
         m_doc->setSelectedRows({0, 2, 4}, 2);
         typeIntoCell(2, LightTableModel::IntensityColumn, QStringLiteral("6.5"));
         QCOMPARE(m_doc->selectedRows(), (QList<int>{0, 2, 4}));
-        for (int r : {0, 2, 4}) QCOMPARE(m_doc->light(r).intensity, 6.5);
+        for (int r : {0, 2, 4})
+            QCOMPARE(m_doc->light(r).intensity, 6.5);
         QCOMPARE(m_doc->light(1).intensity, lrtest::sampleRig().lights[1].intensity);
         QCOMPARE(m_doc->undoStack()->count(), 1);
         // Colour as linear HDR text.
         typeIntoCell(0, LightTableModel::ColorColumn, QStringLiteral("15, 0, 0"));
-        for (int r : {0, 2, 4}) QCOMPARE(m_doc->light(r).color, glm::dvec3(15, 0, 0));
+        for (int r : {0, 2, 4})
+            QCOMPARE(m_doc->light(r).color, glm::dvec3(15, 0, 0));
         QCOMPARE(m_doc->undoStack()->count(), 2);
         // An invalid value is refused with a reason and stores nothing.
         QSignalSpy refused(m_dock, &LightsDock::editRefused);
@@ -139,11 +142,13 @@ private slots:
         // The proxy is what the view's check box click writes to.
         QAbstractItemModel* proxy = m_dock->proxyModel();
         QVERIFY(proxy->setData(cell(1, LightTableModel::OnColumn), Qt::Unchecked, Qt::CheckStateRole));
-        for (int r : {0, 1, 2}) QVERIFY(!m_doc->light(r).enabled);
+        for (int r : {0, 1, 2})
+            QVERIFY(!m_doc->light(r).enabled);
         QVERIFY(m_doc->light(3).enabled);
         QCOMPARE(m_doc->undoStack()->count(), 1);
         QVERIFY(proxy->setData(cell(2, LightTableModel::SoloColumn), Qt::Checked, Qt::CheckStateRole));
-        for (int r : {0, 1, 2}) QVERIFY(m_doc->isSoloed(r));
+        for (int r : {0, 1, 2})
+            QVERIFY(m_doc->isSoloed(r));
         QCOMPARE(m_doc->undoStack()->count(), 1);
         // A row outside the selection is edited alone.
         QVERIFY(proxy->setData(cell(5, LightTableModel::OnColumn), Qt::Unchecked, Qt::CheckStateRole));
@@ -189,7 +194,7 @@ private slots:
         QCOMPARE(m_doc->lightCount(), 10);
         QVERIFY(!names(*m_doc).contains(QStringLiteral("L0 copy")));
         QVERIFY(!m_dock->deleteAction()->isEnabled());
-        QCOMPARE(m_doc->undoStack()->count(), 6);  // 4 adds, duplicate, delete
+        QCOMPARE(m_doc->undoStack()->count(), 6); // 4 adds, duplicate, delete
         // F2 renames the current light in place.
         m_doc->setSelectedRows({2}, 2);
         view()->setFocus();
@@ -206,20 +211,23 @@ private slots:
     }
 
     void sortingIsAViewOnly() {
-        QVERIFY(m_doc->setLightValues({0, 1, 2, 3, 4, 5}, LightProperty::Intensity, {5.0, 1.0, 4.0, 2.0, 6.0, 3.0}));
+        QVERIFY(m_doc->setLightValues({0, 1, 2, 3, 4, 5}, LightProperty::Intensity,
+                                      {5.0, 1.0, 4.0, 2.0, 6.0, 3.0}));
         const QStringList order = names(*m_doc);
         view()->horizontalHeader()->setSortIndicator(LightTableModel::IntensityColumn, Qt::AscendingOrder);
         QStringList shown;
-        for (int r = 0; r < 6; ++r) shown << view()->model()->index(r, LightTableModel::NameColumn).data().toString();
+        for (int r = 0; r < 6; ++r)
+            shown << view()->model()->index(r, LightTableModel::NameColumn).data().toString();
         QCOMPARE(shown, (QStringList{"L1", "L3", "L5", "L2", "L0", "L4"}));
-        QCOMPARE(names(*m_doc), order);  // the rig's order is unchanged
+        QCOMPARE(names(*m_doc), order); // the rig's order is unchanged
         QVERIFY(!view()->dragEnabled());
         // Selection sync maps through the sort.
         m_doc->setSelectedRows({4});
         QCOMPARE(view()->selectionModel()->selectedRows().first().row(), 5);
         // Clearing the sort returns to rig order and enables dragging.
         view()->horizontalHeader()->setSortIndicator(-1, Qt::AscendingOrder);
-        QCOMPARE(view()->model()->index(0, LightTableModel::NameColumn).data().toString(), QStringLiteral("L0"));
+        QCOMPARE(view()->model()->index(0, LightTableModel::NameColumn).data().toString(),
+                 QStringLiteral("L0"));
         QVERIFY(view()->dragEnabled());
     }
 
@@ -238,7 +246,7 @@ private slots:
         QApplication::sendEvent(view()->viewport(), &drop);
         QCOMPARE(names(*m_doc), (QStringList{"L2", "L3", "L4", "L0", "L1", "L5"}));
         QCOMPARE(m_doc->undoStack()->count(), 1);
-        QVERIFY(drop.dropAction() != Qt::MoveAction);  // the view must not remove the dragged rows itself
+        QVERIFY(drop.dropAction() != Qt::MoveAction); // the view must not remove the dragged rows itself
         QCOMPARE(viewSelectedSourceRows(), (QList<int>{3, 4}));
         m_doc->undoStack()->undo();
         QCOMPARE(m_doc->rig(), lrtest::sampleRig());
@@ -248,7 +256,8 @@ private slots:
         m_doc->newRig(lrtest::pointRig(kMaxRigLights));
         QCOMPARE(view()->model()->rowCount(), kMaxRigLights);
         QList<int> rows;
-        for (int i = 0; i < 1000; ++i) rows << i;
+        for (int i = 0; i < 1000; ++i)
+            rows << i;
         m_doc->setSelectedRows(rows, 0);
         QCOMPARE(view()->selectionModel()->selectedRows().size(), 1000);
         QVERIFY(m_dock->proxyModel()->setData(cell(10, LightTableModel::IntensityColumn), 3.0));

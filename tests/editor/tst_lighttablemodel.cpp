@@ -34,13 +34,13 @@ class TestLightTableModel : public QObject {
         QCOMPARE(cells(*m_model), cells(fresh));
     }
 
-private slots:
+  private slots:
     void init() {
         m_doc = std::make_unique<Document>();
         m_doc->newRig(lrtest::sampleRig());
         m_model = std::make_unique<LightTableModel>(m_doc.get());
-        m_tester = std::make_unique<QAbstractItemModelTester>(m_model.get(),
-                                                              QAbstractItemModelTester::FailureReportingMode::Fatal);
+        m_tester = std::make_unique<QAbstractItemModelTester>(
+            m_model.get(), QAbstractItemModelTester::FailureReportingMode::Fatal);
     }
     void cleanup() {
         m_tester.reset();
@@ -53,9 +53,14 @@ private slots:
         QCOMPARE(m_model->columnCount(), int(LightTableModel::ColumnCount));
         QCOMPARE(m_model->index(1, LightTableModel::NameColumn).data().toString(), QStringLiteral("L1"));
         QCOMPARE(m_model->index(1, LightTableModel::TypeColumn).data().toString(), QStringLiteral("Spot"));
-        QCOMPARE(m_model->index(1, LightTableModel::OnColumn).data(Qt::CheckStateRole).toInt(), int(Qt::Checked));
-        QCOMPARE(m_model->index(1, LightTableModel::SoloColumn).data(Qt::CheckStateRole).toInt(), int(Qt::Unchecked));
-        QVERIFY(m_model->index(1, LightTableModel::ColorColumn).data(Qt::DecorationRole).value<QColor>().isValid());
+        QCOMPARE(m_model->index(1, LightTableModel::OnColumn).data(Qt::CheckStateRole).toInt(),
+                 int(Qt::Checked));
+        QCOMPARE(m_model->index(1, LightTableModel::SoloColumn).data(Qt::CheckStateRole).toInt(),
+                 int(Qt::Unchecked));
+        QVERIFY(m_model->index(1, LightTableModel::ColorColumn)
+                    .data(Qt::DecorationRole)
+                    .value<QColor>()
+                    .isValid());
         QCOMPARE(m_model->index(0, LightTableModel::FalloffColumn).data().toString(), QStringLiteral("8"));
         // No range: an em dash, and the cell is not editable for lights without falloff.
         QCOMPARE(m_model->index(2, LightTableModel::FalloffColumn).data().toString(), QStringLiteral("—"));
@@ -63,11 +68,14 @@ private slots:
         QVERIFY(!(m_model->flags(m_model->index(2, LightTableModel::FalloffColumn)) & Qt::ItemIsEditable));
         QVERIFY(m_model->flags(m_model->index(4, LightTableModel::FalloffColumn)) & Qt::ItemIsEditable);
         QVERIFY(m_model->flags(m_model->index(0, LightTableModel::OnColumn)) & Qt::ItemIsUserCheckable);
-        QCOMPARE(m_model->index(3, LightTableModel::NameColumn).data(LightTableModel::LightIdRole).value<LightId>(),
+        QCOMPARE(m_model->index(3, LightTableModel::NameColumn)
+                     .data(LightTableModel::LightIdRole)
+                     .value<LightId>(),
                  m_doc->lightId(3));
         // HDR colour: the swatch is scaled, not clipped to white.
         QVERIFY(m_doc->setLightValue({0}, LightProperty::Color, QVariant::fromValue(glm::dvec3(15, 0, 0))));
-        const QColor swatch = m_model->index(0, LightTableModel::ColorColumn).data(Qt::DecorationRole).value<QColor>();
+        const QColor swatch =
+            m_model->index(0, LightTableModel::ColorColumn).data(Qt::DecorationRole).value<QColor>();
         QCOMPARE(swatch.red(), 255);
         QCOMPARE(swatch.green(), 0);
     }
@@ -88,11 +96,13 @@ private slots:
         QCOMPARE(m_doc->light(1).color, glm::dvec3(1, 0, 0));
         QVERIFY(m_model->setData(m_model->index(1, LightTableModel::FalloffColumn), QStringLiteral("12")));
         QCOMPARE(m_doc->light(1).falloff.range, 12.0);
-        QVERIFY(m_model->setData(m_model->index(1, LightTableModel::OnColumn), Qt::Unchecked, Qt::CheckStateRole));
+        QVERIFY(m_model->setData(m_model->index(1, LightTableModel::OnColumn), Qt::Unchecked,
+                                 Qt::CheckStateRole));
         QVERIFY(!m_doc->light(1).enabled);
         QCOMPARE(m_doc->undoStack()->count(), 6);
         // Solo: transient, no undo step.
-        QVERIFY(m_model->setData(m_model->index(2, LightTableModel::SoloColumn), Qt::Checked, Qt::CheckStateRole));
+        QVERIFY(m_model->setData(m_model->index(2, LightTableModel::SoloColumn), Qt::Checked,
+                                 Qt::CheckStateRole));
         QVERIFY(m_doc->isSoloed(2));
         QCOMPARE(m_doc->undoStack()->count(), 6);
         checkMatchesFreshModel();
@@ -105,9 +115,11 @@ private slots:
         QSignalSpy refused(m_model.get(), &LightTableModel::editRefused);
         const QByteArray before = bytes(*m_doc);
         QVERIFY(!m_model->setData(m_model->index(0, LightTableModel::IntensityColumn), -3.0));
-        QVERIFY(!m_model->setData(m_model->index(0, LightTableModel::IntensityColumn), QStringLiteral("nan")));
+        QVERIFY(
+            !m_model->setData(m_model->index(0, LightTableModel::IntensityColumn), QStringLiteral("nan")));
         QVERIFY(!m_model->setData(m_model->index(0, LightTableModel::NameColumn), QString()));
-        QVERIFY(!m_model->setData(m_model->index(0, LightTableModel::FalloffColumn), QString()));  // range-power needs one
+        QVERIFY(!m_model->setData(m_model->index(0, LightTableModel::FalloffColumn),
+                                  QString())); // range-power needs one
         QVERIFY(!m_model->setData(m_model->index(0, LightTableModel::TypeColumn), 42));
         QCOMPARE(refused.count(), 5);
         QVERIFY(!m_model->lastError().isEmpty());
@@ -123,19 +135,22 @@ private slots:
         const QByteArray before = bytes(*m_doc);
         QVERIFY(m_model->setDataForRows({0, 2, 4}, LightTableModel::IntensityColumn, 3.0));
         QCOMPARE(m_doc->undoStack()->count(), 1);
-        for (int r : {0, 2, 4}) QCOMPARE(m_doc->light(r).intensity, 3.0);
+        for (int r : {0, 2, 4})
+            QCOMPARE(m_doc->light(r).intensity, 3.0);
         QCOMPARE(m_doc->light(1).intensity, lrtest::sampleRig().lights[1].intensity);
         // Range on a mix: lights without falloff are skipped.
         QVERIFY(m_model->setDataForRows({0, 1, 2, 3}, LightTableModel::FalloffColumn, 20.0));
         QCOMPARE(m_doc->light(1).falloff.range, 20.0);
-        QVERIFY(m_model->setDataForRows({0, 1, 5}, LightTableModel::OnColumn, Qt::Unchecked, Qt::CheckStateRole));
-        QVERIFY(m_model->setDataForRows({1, 3}, LightTableModel::SoloColumn, Qt::Checked, Qt::CheckStateRole));
+        QVERIFY(
+            m_model->setDataForRows({0, 1, 5}, LightTableModel::OnColumn, Qt::Unchecked, Qt::CheckStateRole));
+        QVERIFY(
+            m_model->setDataForRows({1, 3}, LightTableModel::SoloColumn, Qt::Checked, Qt::CheckStateRole));
         QVERIFY(m_model->setDataForRows({1, 3}, LightTableModel::NameColumn, QStringLiteral("Same")));
         QCOMPARE(m_doc->undoStack()->count(), 4);
         checkMatchesFreshModel();
         m_doc->undoStack()->setIndex(0);
         QCOMPARE(bytes(*m_doc), before);
-        QVERIFY(m_doc->isSoloed(1));  // solo untouched by undo
+        QVERIFY(m_doc->isSoloed(1)); // solo untouched by undo
         checkMatchesFreshModel();
     }
 
@@ -153,8 +168,8 @@ private slots:
         QVERIFY(m_doc->replaceRig(lrtest::pointRig(3), QStringLiteral("Preset")));
         QVERIFY(inserted.count() >= 2);
         QVERIFY(removed.count() >= 1);
-        QCOMPARE(moved.count(), 1);   // one block: rowsMoved
-        QCOMPARE(layout.count(), 1);  // two blocks: one layout change
+        QCOMPARE(moved.count(), 1);  // one block: rowsMoved
+        QCOMPARE(layout.count(), 1); // two blocks: one layout change
         QCOMPARE(reset.count(), 1);
         checkMatchesFreshModel();
         // Undo everything, step by step, checking the model each time; then redo.
@@ -178,7 +193,8 @@ private slots:
     void scatteredBulkChanges() {
         m_doc->newRig(lrtest::pointRig(200));
         QList<int> every3rd;
-        for (int i = 0; i < 200; i += 3) every3rd << i;
+        for (int i = 0; i < 200; i += 3)
+            every3rd << i;
         QPersistentModelIndex p1 = m_model->index(1, LightTableModel::NameColumn);
         QSignalSpy layout(m_model.get(), &QAbstractItemModel::layoutChanged);
         QSignalSpy moved(m_model.get(), &QAbstractItemModel::rowsMoved);
@@ -203,7 +219,7 @@ private slots:
         m_doc->undoStack()->undo();
         QCOMPARE(reset.count(), 2);
         QCOMPARE(m_doc->rig(), lrtest::pointRig(200));
-        QCOMPARE(m_doc->selectedRows(), every3rd);  // undo selects the lights it brought back
+        QCOMPARE(m_doc->selectedRows(), every3rd); // undo selects the lights it brought back
         checkMatchesFreshModel();
         m_doc->undoStack()->redo();
         checkMatchesFreshModel();
@@ -257,17 +273,20 @@ private slots:
         m_doc->setSoloed({2}, true);
         QCOMPARE(changed.count(), 1);
         QCOMPARE(changed[0][0].toModelIndex().column(), int(LightTableModel::SoloColumn));
-        QCOMPARE(m_model->index(2, LightTableModel::SoloColumn).data(Qt::CheckStateRole).toInt(), int(Qt::Checked));
+        QCOMPARE(m_model->index(2, LightTableModel::SoloColumn).data(Qt::CheckStateRole).toInt(),
+                 int(Qt::Checked));
     }
 
     void manyLights() {
         m_doc->newRig(lrtest::pointRig(kMaxRigLights));
         QCOMPARE(m_model->rowCount(), kMaxRigLights);
         QList<int> rows;
-        for (int i = 0; i < 1000; ++i) rows << i * 4;
+        for (int i = 0; i < 1000; ++i)
+            rows << i * 4;
         QVERIFY(m_model->setDataForRows(rows, LightTableModel::IntensityColumn, 2.0));
         QCOMPARE(m_doc->undoStack()->count(), 1);
-        QCOMPARE(m_model->index(3996, LightTableModel::IntensityColumn).data().toString(), QStringLiteral("2"));
+        QCOMPARE(m_model->index(3996, LightTableModel::IntensityColumn).data().toString(),
+                 QStringLiteral("2"));
     }
 };
 
