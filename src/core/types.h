@@ -33,13 +33,16 @@ LR_ENUM_NAMES(RigSpace, "world", "model")
 LR_ENUM_NAMES(ToneMap, "clamp", "reinhard", "aces")
 #undef LR_ENUM_NAMES
 
-template <typename E> constexpr int enumCount() { return int(EnumNames<E>::names.size()); }
+template <typename E>
+concept NamedEnum = requires { EnumNames<E>::names; };
 
-template <typename E> QString toString(E value) {
+template <NamedEnum E> constexpr int enumCount() { return int(EnumNames<E>::names.size()); }
+
+template <NamedEnum E> QString toString(E value) {
     return QString::fromLatin1(EnumNames<E>::names[size_t(value)]);
 }
 
-template <typename E> std::optional<E> fromString(const QString& name) {
+template <NamedEnum E> std::optional<E> fromString(const QString& name) {
     const auto& names = EnumNames<E>::names;
     for (size_t i = 0; i < names.size(); ++i)
         if (name == QLatin1String(names[i])) return E(i);
@@ -47,7 +50,7 @@ template <typename E> std::optional<E> fromString(const QString& name) {
 }
 
 // "a", "b" or "c" — for error messages listing the accepted names.
-template <typename E> QString allowedNames() {
+template <NamedEnum E> QString allowedNames() {
     QString out;
     const auto& names = EnumNames<E>::names;
     for (size_t i = 0; i < names.size(); ++i) {
