@@ -43,15 +43,22 @@ void print(QTextStream& out, const QStringList& lines) {
     for (const QString& l : lines) out << l << '\n';
 }
 
+// "FILE: path: reason" -> "FILE: warning: path: reason", so warnings after "FILE: ok" read as such.
+void printWarnings(QTextStream& out, const QString& file, const QStringList& warnings) {
+    for (const QString& w : warnings)
+        out << (w.startsWith(file + QStringLiteral(": ")) ? file + QStringLiteral(": warning: ") + w.mid(file.size() + 2) : w)
+            << '\n';
+}
+
 }  // namespace
 
 int runValidate(const QStringList& args) {
     QCommandLineParser parser;
     if (const int rc = parse(parser, args, QStringLiteral("lightrig validate [options] FILE..."),
                              QStringLiteral("Checks LightRig rig files (docs/rig-format.md) and lists every error "
-                                            "as FILE: json.path: reason.\nPrints FILE: ok for a valid file "
-                                            "(then its warnings, e.g. unknown keys).\nExit status: 0 all files are "
-                                            "valid, 1 a file is not, 2 usage error."));
+                                            "as\nFILE: json.path: reason. Prints FILE: ok for a valid file, then "
+                                            "its warnings\n(FILE: warning: json.path: reason, e.g. unknown keys).\n"
+                                            "Exit status: 0 all files are valid, 1 a file is not, 2 usage error."));
         rc >= 0)
         return rc;
     QTextStream out(stdout);
@@ -64,7 +71,7 @@ int runValidate(const QStringList& args) {
             print(out, r.errors);
             rc = Failed;
         }
-        print(out, r.warnings);
+        printWarnings(out, file, r.warnings);
     }
     return rc;
 }
@@ -75,11 +82,11 @@ int runFormat(const QStringList& args) {
                                    QStringLiteral("Change nothing; exit with 1 if a file is not in canonical form."));
     parser.addOption(check);
     if (const int rc = parse(parser, args, QStringLiteral("lightrig format [--check] FILE..."),
-                             QStringLiteral("Rewrites valid rig files in the canonical form (stable key order, "
-                                            "only the fields each light uses, shortest exact numbers), atomically.\n"
-                                            "Invalid files and files with unknown keys are left alone.\nExit "
+                             QStringLiteral("Rewrites valid rig files in the canonical form (stable key order, only "
+                                            "the fields\neach light uses, shortest exact numbers), atomically. "
+                                            "Invalid files and files with\nunknown keys are left alone.\nExit "
                                             "status: 0 done, 1 a file is invalid, not canonical (--check) or not "
-                                            "writable, 2 usage error."));
+                                            "writable,\n2 usage error."));
         rc >= 0)
         return rc;
     QTextStream out(stdout);
@@ -87,7 +94,7 @@ int runFormat(const QStringList& args) {
     for (const QString& file : parser.positionalArguments()) {
         const RigReadResult r = readRigFile(file);
         print(out, r.errors);
-        print(out, r.warnings);
+        printWarnings(out, file, r.warnings);
         if (!r.ok()) {
             rc = Failed;
             continue;
