@@ -66,7 +66,8 @@ QString appendIndex(const QString& path, qsizetype index);
 QString describe(const Value& v, const QByteArray& source);
 
 // Shortest text that reads back as exactly v (std::to_chars digits, JavaScript-style layout: fixed for
-// 1e-6 <= |v| < 1e21, else exponent form). Integers have no ".0"; -0 is written as 0.
+// 1e-6 <= |v| < 1e21, else exponent form). Integers have no ".0"; -0 is written as 0; NaN and
+// infinities as null, which no numeric field accepts (so saveRigFile refuses such a rig).
 QByteArray formatNumber(double v);
 // A JSON string literal: quotes, \" \\ \b \f \n \r \t, other control characters as \u00XX, the rest as
 // UTF-8 (an unpaired surrogate, which UTF-8 cannot hold, becomes U+FFFD as in QString::toUtf8).

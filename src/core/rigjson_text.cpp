@@ -90,7 +90,8 @@ QString describe(const Value& v, const QByteArray& source) {
 }
 
 QByteArray formatNumber(double v) {
-    if (v == 0.0 || !std::isfinite(v)) return QByteArrayLiteral("0");  // -0 -> 0; callers never pass Inf/NaN
+    if (!std::isfinite(v)) return QByteArrayLiteral("null");  // not JSON numbers: the reader rejects null
+    if (v == 0.0) return QByteArrayLiteral("0");               // and -0
     // Shortest round-trip digits, in scientific form: [-]d[.ddd]e[+-]x
     char buf[64];
     const auto r = std::to_chars(buf, buf + sizeof buf, std::abs(v), std::chars_format::scientific);

@@ -24,6 +24,7 @@ private slots:
     void everyBadFileIsChecked();
     void reportsAllErrors();
     void duplicateKeysAnywhere();
+    void nameLengthInCharacters();
     void numbersOutOfRange();
     void overLargeFile();
     void tooManyLights();
@@ -235,6 +236,19 @@ void TestRigRead::duplicateKeysAnywhere() {
     r = readRigJson(rigJson({}, "\"extra\": " + big + ','), QStringLiteral("h.json"));
     QVERIFY2(hasMessage(r.errors, QStringLiteral("h.json"), QStringLiteral("extra.k57: duplicate key")), qPrintable(describe(r)));
     QCOMPARE(r.errors.size(), 1);
+}
+
+// Names are limited in characters (code points), not UTF-16 units or bytes: 256 emoji are fine.
+void TestRigRead::nameLengthInCharacters() {
+    const QByteArray emoji = "\xf0\x9f\x92\xa1";  // U+1F4A1, two UTF-16 units, four bytes
+    QByteArray name;
+    for (int i = 0; i < kMaxRigNameLength; ++i) name += emoji;
+    RigReadResult r = readRigJson(rigJson(with(kRim, "\"name\": \"" + name + '"'), "\"name\": \"" + name + "\","),
+                                  QStringLiteral("n.json"));
+    LR_VERIFY_OK(r);
+    QCOMPARE(r.rig->name.size(), 2 * kMaxRigNameLength);
+    r = readRigJson(rigJson(with(kRim, "\"name\": \"" + name + "x\"")), QStringLiteral("n.json"));
+    QCOMPARE(r.errors, QStringList{QStringLiteral("n.json: lights[0].name: must be at most 256 characters, got 257")});
 }
 
 void TestRigRead::numbersOutOfRange() {

@@ -136,6 +136,7 @@ private slots:
     void onlyUsedFieldsAreWritten();
     void saveAndReload();
     void saveRefusesInvalidRig();
+    void nonFiniteValuesAreNotSaved();
     void failedSaveKeepsOldFile();
     void readOnlyDirectoryKeepsOldFile();
     void missingDirectory();
@@ -250,6 +251,21 @@ void TestRigWrite::saveRefusesInvalidRig() {
 }
 
 // A write that fails half-way (here: the file size limit, which stops root too) leaves the old file.
+void TestRigWrite::nonFiniteValuesAreNotSaved() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("rig.json"));
+    writeFile(path, "old contents");
+    for (const double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+        Rig rig;
+        rig.lights = {makeLight(LightType::Directional, QStringLiteral("d"))};
+        rig.lights[0].intensity = bad;
+        QString error;
+        QVERIFY(!saveRigFile(rig, path, &error));
+        QVERIFY2(error.contains(QStringLiteral("lights[0].intensity: must be a finite number")), qPrintable(error));
+        QCOMPARE(readAll(path), QByteArray("old contents"));
+    }
+}
+
 void TestRigWrite::failedSaveKeepsOldFile() {
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("rig.json"));
