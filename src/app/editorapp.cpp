@@ -1,15 +1,90 @@
 #include "editorapp.h"
 
+#include "commandline.h"
+#include "documentfiles.h"
+#include "editor/document.h"
+#include "mainwindow.h"
+#include "sessionsafety.h"
+#include "viewport.h"
+
 #include <QApplication>
-#include <QLabel>
-#include <QMainWindow>
+#include <QDir>
+#include <QFileInfo>
+#include <QSurfaceFormat>
+#include <QTimer>
+#include <cstdio>
 
 namespace lr {
+
+namespace {
+
+// README screenshot mode: wait for the model and a rendered frame, select a spot light (adding one when the
+// rig has none), let the window settle, grab it and quit. Exit code 0 on success, 1 when it cannot.
+void scheduleScreenshot(MainWindow* window, const QString& path) {
+    auto grab = [window, path] {
+        Document* doc = window->document();
+        int spot = -1;
+        for (int i = 0; i < doc->lightCount() && spot < 0; ++i)
+            if (doc->light(i).type == LightType::Spot) spot = i;
+        if (spot < 0) {
+            doc->addLight(LightType::Spot);
+            spot = doc->lightCount() - 1;
+        }
+        doc->setSelectedRows({spot}, spot);
+        // Two more frames so the selection highlight and docks are painted, then grab.
+        QTimer::singleShot(500, window, [window, path] {
+            window->viewport()->update();
+            QTimer::singleShot(500, window, [window, path] {
+                const QImage image = window->grab().toImage();
+                const bool ok = !image.isNull() && image.save(path);
+                std::fprintf(ok ? stdout : stderr, ok ? "lightrig: wrote %s (%dx%d)\n" : "lightrig: could not write %s\n",
+                             qPrintable(QDir::toNativeSeparators(path)), image.width(), image.height());
+                QCoreApplication::exit(ok ? 0 : 1);
+            });
+        });
+    };
+    auto waitForFrame = [window, grab] {
+        if (window->viewport()->hasRenderedFrame()) grab();
+        else QObject::connect(window->viewport(), &Viewport::firstFrame, window, grab, Qt::SingleShotConnection);
+    };
+    QObject::connect(window->files(), &DocumentFiles::modelLoadFinished, window, waitForFrame,
+                     Qt::SingleShotConnection);
+    QTimer::singleShot(120000, window, [path] {
+        std::fprintf(stderr, "lightrig: gave up on the screenshot %s after 120 s\n", qPrintable(path));
+        QCoreApplication::exit(1);
+    });
+}
+
+}  // namespace
+
+void setApplicationIdentity() {
+    QCoreApplication::setOrganizationName(QStringLiteral("LightRig"));
+    QCoreApplication::setOrganizationDomain(QStringLiteral("lightrig.example"));
+    QCoreApplication::setApplicationName(QStringLiteral("lightrig"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(LIGHTRIG_VERSION));
+    QGuiApplication::setApplicationDisplayName(QStringLiteral("LightRig"));
+}
+
 int runEditor(int argc, char** argv) {
+    Viewport::setDefaultSurfaceFormat();  // before the QApplication: OpenGL 3.3 core for every context
     QApplication app(argc, argv);
-    QMainWindow w;
-    w.setCentralWidget(new QLabel(QStringLiteral("LightRig")));
-    w.show();
+    setApplicationIdentity();
+    const CommandLineResult cl = parseEditorCommandLine(QCoreApplication::arguments());
+    if (!cl.options) {
+        std::fputs(qPrintable(cl.message), cl.exitCode == 0 ? stdout : stderr);
+        return cl.exitCode;
+    }
+    MainWindow window;
+    window.openInitial(*cl.options);
+    // Autosave, crash recovery, on-disk change checks (issue 6; sessionsafety.h). Recovery is offered only in
+    // interactive runs: --no-restore and screenshot mode are scripted and must not stop at a question.
+    installSessionSafety(&window, cl.options->restoreSession);
+    if (!cl.options->screenshotPath.isEmpty()) {
+        window.resize(1600, 1000);
+        scheduleScreenshot(&window, QFileInfo(cl.options->screenshotPath).absoluteFilePath());
+    }
+    window.show();
     return app.exec();
 }
+
 }  // namespace lr

@@ -1,0 +1,79 @@
+#include "colorbutton.h"
+
+#include "core/lighting.h"
+
+#include <QColorDialog>
+#include <QPainter>
+#include <QPixmap>
+#include <algorithm>
+
+namespace lr {
+
+ColorButton::ColorButton(QWidget* parent) : QToolButton(parent) {
+    setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+    connect(this, &QToolButton::clicked, this, &ColorButton::pick);
+    updateSwatch();
+}
+
+void ColorButton::setColor(const glm::dvec3& linear) {
+    m_color = linear;
+    m_mixed = false;
+    updateSwatch();
+}
+
+void ColorButton::setMixed(bool mixed) {
+    m_mixed = mixed;
+    updateSwatch();
+}
+
+double ColorButton::hdrScale(const glm::dvec3& c) { return std::max({1.0, c.r, c.g, c.b}); }
+
+QColor ColorButton::toDisplay(const glm::dvec3& linear) {
+    const double s = hdrScale(linear);
+    auto channel = [s](double v) {
+        const double x = std::isfinite(v) ? std::clamp(v / s, 0.0, 1.0) : 0.0;
+        return int(std::lround(lighting::linearToSrgb(x) * 255.0));
+    };
+    return QColor(channel(linear.r), channel(linear.g), channel(linear.b));
+}
+
+glm::dvec3 ColorButton::fromDisplay(const QColor& srgb, double scale) {
+    return glm::dvec3(lighting::srgbToLinear(srgb.redF()), lighting::srgbToLinear(srgb.greenF()),
+                      lighting::srgbToLinear(srgb.blueF())) *
+           scale;
+}
+
+void ColorButton::pick() {
+    const QColor initial = toDisplay(m_color);
+    const QColor chosen = QColorDialog::getColor(initial, this, tr("Light colour"));
+    if (!chosen.isValid() || (chosen.rgb() == initial.rgb() && !m_mixed)) return;
+    const glm::dvec3 picked = fromDisplay(chosen, m_mixed ? 1.0 : hdrScale(m_color));
+    setColor(picked);
+    emit colorPicked(picked);
+}
+
+void ColorButton::updateSwatch() {
+    QPixmap pm(28, 16);
+    pm.fill(m_mixed ? palette().color(QPalette::Button) : toDisplay(m_color));
+    QPainter p(&pm);
+    p.setPen(palette().color(QPalette::Dark));
+    p.drawRect(pm.rect().adjusted(0, 0, -1, -1));
+    if (m_mixed) p.drawText(pm.rect(), Qt::AlignCenter, QStringLiteral("…"));
+    p.end();
+    setIcon(QIcon(pm));
+    setIconSize(pm.size());
+    if (m_mixed) {
+        setText(tr("(mixed)"));
+        setToolTip(tr("The selected lights have different colours"));
+    } else {
+        setText(QStringLiteral("%1, %2, %3")
+                    .arg(m_color.r, 0, 'g', 3)
+                    .arg(m_color.g, 0, 'g', 3)
+                    .arg(m_color.b, 0, 'g', 3));
+        setToolTip(tr("Linear RGB %1. Click to choose a colour%2")
+                       .arg(text(), hdrScale(m_color) > 1.0 ? tr(" (its HDR brightness is kept)") : QString()));
+    }
+}
+
+}  // namespace lr

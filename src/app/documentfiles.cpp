@@ -1,0 +1,225 @@
+#include "documentfiles.h"
+
+#include "editor/document.h"
+#include "errordialog.h"
+#include "lightimport.h"
+#include "recentfiles.h"
+#include "scene.h"
+
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMessageBox>
+#include <QSettings>
+#include <QtConcurrent/QtConcurrentRun>
+
+namespace lr {
+
+namespace {
+const QString kRigFilter = QObject::tr("LightRig rigs (*.json);;All files (*)");
+
+QString lastDir() { return QSettings().value(QStringLiteral("files/lastDir"), QDir::homePath()).toString(); }
+void rememberDir(const QString& path) {
+    QSettings().setValue(QStringLiteral("files/lastDir"), QFileInfo(path).absolutePath());
+}
+}  // namespace
+
+struct DocumentFiles::Load {
+    QString path;
+    std::atomic<bool> cancelled{false};
+};
+
+DocumentFiles::DocumentFiles(Document* document, Scene* scene, RecentFiles* recent, QWidget* window)
+    : QObject(window), m_doc(document), m_scene(scene), m_recent(recent), m_window(window) {
+    askUnsaved = [this](const QString& name) {
+        const auto answer = QMessageBox::warning(
+            m_window, tr("Unsaved changes"), tr("The rig %1 has unsaved changes. Save them?").arg(name),
+            QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+        return answer == QMessageBox::Save      ? UnsavedAnswer::Save
+               : answer == QMessageBox::Discard ? UnsavedAnswer::Discard
+                                                : UnsavedAnswer::Cancel;
+    };
+    askOpenPath = [this](const QString& title, const QString& filter) {
+        const QString p = QFileDialog::getOpenFileName(m_window, title, lastDir(), filter);
+        if (!p.isEmpty()) rememberDir(p);
+        return p;
+    };
+    askSavePath = [this](const QString& title, const QString& suggested, const QString& filter) {
+        const QString p = QFileDialog::getSaveFileName(m_window, title, suggested, filter);
+        if (!p.isEmpty()) rememberDir(p);
+        return p;
+    };
+}
+
+DocumentFiles::~DocumentFiles() {
+    if (m_loading) m_loading->cancelled = true;
+    if (m_watcher) m_watcher->waitForFinished();
+}
+
+bool DocumentFiles::isRigFile(const QString& path) {
+    return QFileInfo(path).suffix().compare(QLatin1String("json"), Qt::CaseInsensitive) == 0;
+}
+
+bool DocumentFiles::maybeSave() {
+    if (!m_doc->isModified()) return true;
+    switch (askUnsaved(m_doc->displayName())) {
+    case UnsavedAnswer::Save: return save();
+    case UnsavedAnswer::Discard: return true;
+    case UnsavedAnswer::Cancel: return false;
+    }
+    return false;
+}
+
+bool DocumentFiles::newRig() {
+    if (!maybeSave()) return false;
+    m_doc->newRig(Rig{});
+    emit statusMessage(tr("New rig"));
+    return true;
+}
+
+bool DocumentFiles::openRig(const QString& requested) {
+    QString path = requested;
+    if (path.isEmpty()) path = askOpenPath(tr("Open rig"), kRigFilter);
+    if (path.isEmpty()) return false;
+    if (!maybeSave()) return false;
+    QStringList warnings;
+    const QString error = m_doc->load(path, &warnings);
+    if (!error.isEmpty()) {
+        const QStringList lines = error.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        showError(m_window, {tr("Open rig"),
+                             tr("Could not open %1: %n error(s). The rig that was open is unchanged.", nullptr,
+                                int(lines.size()))
+                                 .arg(QFileInfo(path).fileName()),
+                             lines});
+        return false;
+    }
+    m_recent->add(path);
+    emit statusMessage(warnings.isEmpty() ? tr("Opened %1").arg(QDir::toNativeSeparators(path))
+                                          : tr("Opened %1 with %n warning(s): %2", nullptr, int(warnings.size()))
+                                                .arg(QDir::toNativeSeparators(path), warnings.first()));
+    return true;
+}
+
+bool DocumentFiles::save() {
+    if (m_doc->filePath().isEmpty() || m_doc->filePath().startsWith(QLatin1String(":/"))) return saveAs();
+    if (confirmWrite && !confirmWrite(m_doc->filePath())) return false;
+    const QString error = m_doc->save();
+    if (!error.isEmpty()) {
+        showError(m_window, {tr("Save rig"), tr("Could not save the rig."), error.split(QLatin1Char('\n'))});
+        return false;
+    }
+    emit statusMessage(tr("Saved %1").arg(QDir::toNativeSeparators(m_doc->filePath())));
+    return true;
+}
+
+bool DocumentFiles::saveAs(const QString& requested) {
+    QString path = requested;
+    if (path.isEmpty()) {
+        const QString name = m_doc->rig().name.isEmpty() ? tr("rig") : m_doc->rig().name;
+        const QString suggested = m_doc->filePath().isEmpty() || m_doc->filePath().startsWith(QLatin1String(":/"))
+                                      ? QDir(lastDir()).filePath(name + QStringLiteral(".json"))
+                                      : m_doc->filePath();
+        path = askSavePath(tr("Save rig as"), suggested, kRigFilter);
+    }
+    if (path.isEmpty()) return false;
+    if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".json");
+    if (confirmWrite && !confirmWrite(path)) return false;
+    const QString error = m_doc->saveAs(path);
+    if (!error.isEmpty()) {
+        showError(m_window, {tr("Save rig"), tr("Could not save the rig."), error.split(QLatin1Char('\n'))});
+        return false;
+    }
+    m_recent->add(path);
+    emit statusMessage(tr("Saved %1").arg(QDir::toNativeSeparators(path)));
+    return true;
+}
+
+bool DocumentFiles::openModel(const QString& requested) {
+    QString path = requested;
+    if (path.isEmpty()) path = askOpenPath(tr("Open model"), modelFileFilter() + tr(";;All files (*)"));
+    if (path.isEmpty()) return false;
+    cancelModelLoad();  // a newer request supersedes a running one
+    auto load = std::make_shared<Load>();
+    load->path = path;
+    m_loading = load;
+    emit modelLoadStarted(path);
+    emit statusMessage(tr("Loading %1…").arg(QDir::toNativeSeparators(path)));
+    ModelLoadOptions options;
+    QPointer<DocumentFiles> self(this);
+    options.progress = [load, self](double fraction) {
+        if (self)
+            QMetaObject::invokeMethod(self.data(), [self, load, fraction] {
+                if (self && self->m_loading == load) emit self->modelLoadProgress(fraction);
+            }, Qt::QueuedConnection);
+        return !load->cancelled.load();
+    };
+    auto* watcher = new QFutureWatcher<ModelLoadResult>(this);
+    connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, load] {
+        watcher->deleteLater();
+        if (m_watcher == watcher) m_watcher = nullptr;
+        const ModelLoadResult result = watcher->result();
+        if (m_loading != load) return;  // superseded or cancelled: its result is dropped
+        m_loading.reset();
+        if (result.ok()) {
+            m_scene->setModel(result.model, load->path);
+            if (!load->path.startsWith(QLatin1String(":/"))) m_recent->add(load->path);
+            const auto& m = *result.model;
+            emit statusMessage(tr("Loaded %1: %2 triangles, %3 meshes, %4 materials in %5 ms%6")
+                                   .arg(QFileInfo(load->path).fileName())
+                                   .arg(m.triangleCount())
+                                   .arg(m.meshes.size())
+                                   .arg(m.materials.size())
+                                   .arg(m.loadMs, 0, 'f', 0)
+                                   .arg(m.warnings.isEmpty() ? QString() : tr(" (%n warning(s))", nullptr, int(m.warnings.size()))));
+            emit modelLoaded(load->path);
+        } else if (!result.cancelled) {
+            emit modelLoadFailed(load->path, result.error);
+            showError(m_window, {tr("Open model"),
+                                 tr("Could not open %1. The model that was open is unchanged.")
+                                     .arg(QFileInfo(load->path).fileName()),
+                                 {result.error}});
+        }
+        emit modelLoadFinished();
+    });
+    m_watcher = watcher;
+    watcher->setFuture(QtConcurrent::run([path, options] { return loadModel(path, options); }));
+    return true;
+}
+
+void DocumentFiles::cancelModelLoad() {
+    if (!m_loading) return;
+    m_loading->cancelled = true;
+    m_loading.reset();
+    emit statusMessage(tr("Model loading cancelled"));
+    emit modelLoadFinished();
+}
+
+bool DocumentFiles::importLightsFromModel() {
+    const Model& model = *m_scene->model();
+    if (model.lights.lights.empty()) {
+        showError(m_window, {tr("Import lights from model"),
+                             tr("%1 has no lights of its own.")
+                                 .arg(m_scene->path().isEmpty() ? tr("The model") : QFileInfo(m_scene->path()).fileName()),
+                             {}});
+        return false;
+    }
+    const std::vector<Light> lights = lightsInRigSpace(model.lights, m_doc->rig(), m_scene->frame());
+    QString error;
+    if (!m_doc->addLights(-1, lights, tr("Import %n light(s) from the model", nullptr, int(lights.size())), &error)) {
+        showError(m_window, {tr("Import lights from model"), tr("Could not import the model's lights."), {error}});
+        return false;
+    }
+    emit statusMessage(tr("Imported %n light(s) from the model", nullptr, int(lights.size())));
+    return true;
+}
+
+bool DocumentFiles::openFile(const QString& path) {
+    if (!QFileInfo(path).isFile() && !path.startsWith(QLatin1String(":/"))) {
+        showError(m_window, {tr("Open"), tr("%1: no such file").arg(QDir::toNativeSeparators(path)), {}});
+        m_recent->remove(path);
+        return false;
+    }
+    return isRigFile(path) ? openRig(path) : openModel(path);
+}
+
+}  // namespace lr

@@ -1,0 +1,75 @@
+// File handling for the main window: new/open/save rigs (with the Save/Discard/Cancel question for unsaved
+// changes), opening models in the background (the current scene stays interactive; cancellable; a newer
+// request supersedes an older one), importing a model's lights, and opening whatever is dropped on the
+// window. A failed open changes nothing and reports FILE: field: reason in a copyable message.
+#pragma once
+
+#include <QFutureWatcher>
+#include <QObject>
+#include <QPointer>
+#include <atomic>
+#include <functional>
+#include <memory>
+
+#include "model/modelloader.h"
+
+class QWidget;
+
+namespace lr {
+
+class Document;
+class RecentFiles;
+class Scene;
+
+class DocumentFiles : public QObject {
+    Q_OBJECT
+public:
+    enum class UnsavedAnswer { Save, Discard, Cancel };
+
+    DocumentFiles(Document* document, Scene* scene, RecentFiles* recent, QWidget* window);
+    ~DocumentFiles() override;
+
+    // Hooks for tests and scripted runs: the question asked before unsaved changes would be lost, and the
+    // file dialogs (return "" for cancel). Defaults use QMessageBox / QFileDialog.
+    std::function<UnsavedAnswer(const QString& documentName)> askUnsaved;
+    std::function<QString(const QString& title, const QString& filter)> askOpenPath;
+    std::function<QString(const QString& title, const QString& suggested, const QString& filter)> askSavePath;
+    // Asked before the rig is written to a path (sessionsafety.cpp: "changed on disk since opened, overwrite?");
+    // false cancels the save. Unset: always write.
+    std::function<bool(const QString& path)> confirmWrite;
+
+    bool maybeSave();  // true when it is fine to drop the current rig (saved, discarded or unmodified)
+    bool newRig();
+    bool openRig(const QString& path = QString());  // "" asks for a file
+    bool save();                                    // untitled: save as
+    bool saveAs(const QString& path = QString());
+    // Starts loading a model ("" asks for a file); returns false only when nothing was started.
+    bool openModel(const QString& path = QString());
+    bool isLoadingModel() const { return m_loading != nullptr; }
+    void cancelModelLoad();
+    bool importLightsFromModel();
+    // A dropped or recent file: rig files (.json) open as rigs, anything else as a model.
+    bool openFile(const QString& path);
+    static bool isRigFile(const QString& path);
+
+signals:
+    void modelLoadStarted(const QString& path);
+    void modelLoadProgress(double fraction);
+    void modelLoaded(const QString& path);
+    void modelLoadFailed(const QString& path, const QString& error);  // not emitted for cancellation
+    void modelLoadFinished();  // after loaded, failed or cancelled
+    void statusMessage(const QString& text);
+
+private:
+    struct Load;
+    void finishModelLoad();
+
+    Document* m_doc;
+    Scene* m_scene;
+    RecentFiles* m_recent;
+    QPointer<QWidget> m_window;
+    std::shared_ptr<Load> m_loading;
+    QFutureWatcher<ModelLoadResult>* m_watcher = nullptr;
+};
+
+}  // namespace lr

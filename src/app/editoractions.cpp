@@ -1,0 +1,184 @@
+#include "editoractions.h"
+
+#include "documentfiles.h"
+#include "editor/document.h"
+#include "errordialog.h"
+#include "lightsdock.h"
+#include "mainwindow.h"
+#include "presetsdock.h"
+#include "recentfiles.h"
+#include "render/camera.h"
+#include "scene.h"
+#include "screenshotdialog.h"
+#include "viewport.h"
+#include "viewsettings.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QDir>
+#include <QDockWidget>
+#include <QFileInfo>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QStatusBar>
+#include <QUndoStack>
+
+namespace lr {
+
+EditorActions::EditorActions(MainWindow* window) : QObject(window), m_window(window) {
+    createFileMenu();
+    createEditMenu();
+    createViewMenu();
+    createOtherMenus();
+    Document* doc = m_window->document();
+    connect(doc, &Document::selectionChanged, this, &EditorActions::updateEnabled);
+    connect(doc, &Document::rigChanged, this, &EditorActions::updateEnabled);
+    connect(m_window->scene(), &Scene::modelChanged, this, [this] {
+        rebuildModelCameras();
+        updateEnabled();
+    });
+    rebuildModelCameras();
+    updateEnabled();
+}
+
+void EditorActions::createFileMenu() {
+    DocumentFiles* files = m_window->files();
+    QMenu* menu = m_window->menuBar()->addMenu(tr("&File"));
+    auto add = [&](const QString& text, QKeySequence key, auto slot) {
+        QAction* a = menu->addAction(text);
+        if (!key.isEmpty()) a->setShortcut(key);
+        connect(a, &QAction::triggered, this, slot);
+        return a;
+    };
+    newRig = add(tr("&New rig"), QKeySequence::New, [files] { files->newRig(); });
+    openRig = add(tr("&Open rig…"), QKeySequence::Open, [files] { files->openRig(); });
+    openModel = add(tr("Open &model…"), QKeySequence(tr("Ctrl+Shift+O")), [files] { files->openModel(); });
+    recentMenu = menu->addMenu(tr("Open &recent"));
+    m_window->recentFiles()->attachMenu(recentMenu);
+    connect(m_window->recentFiles(), &RecentFiles::openRequested, files, &DocumentFiles::openFile);
+    menu->addSeparator();
+    save = add(tr("&Save"), QKeySequence::Save, [files] { files->save(); });
+    saveAs = add(tr("Save &as…"), QKeySequence::SaveAs, [files] { files->saveAs(); });
+    menu->addSeparator();
+    importLights = add(tr("&Import lights from model"), QKeySequence(), [files] { files->importLightsFromModel(); });
+    exportScreenshot = add(tr("&Export screenshot…"), QKeySequence(tr("Ctrl+E")),
+                           [this] { exportScreenshotInteractive(); });
+    menu->addSeparator();
+    quit = add(tr("&Quit"), QKeySequence::Quit, [this] { m_window->close(); });
+    quit->setMenuRole(QAction::QuitRole);
+}
+
+void EditorActions::createEditMenu() {
+    QMenu* menu = m_window->menuBar()->addMenu(tr("&Edit"));
+    QUndoStack* stack = m_window->document()->undoStack();
+    undo = stack->createUndoAction(this, tr("&Undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    redo = stack->createRedoAction(this, tr("&Redo"));
+    redo->setShortcut(QKeySequence::Redo);
+    menu->addAction(undo);
+    menu->addAction(redo);
+    menu->addSeparator();
+    QMenu* lights = menu->addMenu(tr("&Lights"));
+    for (QAction* a : m_window->lightsDock()->lightActions()) lights->addAction(a);
+}
+
+void EditorActions::createViewMenu() {
+    QMenu* menu = m_window->menuBar()->addMenu(tr("&View"));
+    Viewport* viewport = m_window->viewport();
+    frame = menu->addAction(tr("&Frame selection"));
+    frame->setShortcut(QKeySequence(Qt::Key_F));
+    frame->setToolTip(tr("Frame the selected lights, or the whole scene when no light is selected (F)"));
+    connect(frame, &QAction::triggered, viewport, &Viewport::frameSelectionOrAll);
+    frameAll = menu->addAction(tr("Frame &all"));
+    frameAll->setShortcut(QKeySequence(Qt::Key_Home));
+    connect(frameAll, &QAction::triggered, viewport, &Viewport::frameAll);
+    standardViewsMenu = menu->addMenu(tr("&Standard views"));
+    int key = Qt::Key_1;
+    for (const QString& name : standardViewNames()) {
+        QAction* a = standardViewsMenu->addAction(name);
+        a->setShortcut(QKeySequence(key++));
+        connect(a, &QAction::triggered, viewport, [viewport, name] { viewport->setStandardView(name); });
+    }
+    modelCamerasMenu = menu->addMenu(tr("&Model cameras"));
+    lookThroughLight = menu->addAction(tr("&Look through light"));
+    lookThroughLight->setShortcut(QKeySequence(Qt::Key_L));
+    lookThroughLight->setToolTip(tr("View the scene from the selected spot light, along its axis"));
+    connect(lookThroughLight, &QAction::triggered, viewport,
+            [this, viewport] { viewport->lookThroughLight(m_window->document()->currentRow()); });
+    menu->addSeparator();
+    ViewSettings* settings = m_window->viewSettings();
+    showGizmos = menu->addAction(tr("Light &gizmos"));
+    showGizmos->setCheckable(true);
+    showGizmos->setShortcut(QKeySequence(Qt::Key_G));
+    connect(showGizmos, &QAction::toggled, settings, &ViewSettings::setGizmos);
+    showGrid = menu->addAction(tr("Ground g&rid"));
+    showGrid->setCheckable(true);
+    connect(showGrid, &QAction::toggled, settings, &ViewSettings::setGrid);
+    auto sync = [this, settings] {
+        showGizmos->setChecked(settings->options().gizmos);
+        showGrid->setChecked(settings->options().grid);
+    };
+    connect(settings, &ViewSettings::changed, this, sync);
+    sync();
+}
+
+void EditorActions::createOtherMenus() {
+    QMenu* presets = m_window->menuBar()->addMenu(tr("&Presets"));
+    m_window->presetsDock()->attachMenu(presets);
+    QMenu* windows = m_window->menuBar()->addMenu(tr("&Window"));
+    for (QDockWidget* dock : m_window->findChildren<QDockWidget*>()) windows->addAction(dock->toggleViewAction());
+    QMenu* help = m_window->menuBar()->addMenu(tr("&Help"));
+    QAction* about = help->addAction(tr("&About LightRig"));
+    connect(about, &QAction::triggered, m_window, [this] {
+        QMessageBox::about(m_window, tr("About LightRig"),
+                           tr("<b>LightRig %1</b><p>Design light rigs on 3D models: point, spot, directional and rim "
+                              "lights with the falloff and cone models of classic real-time rendering.</p>"
+                              "<p>Viewport: left drag orbits, middle drag or Shift+left drag pans, the wheel "
+                              "dollies. Click a light to select it, drag it to move it (Ctrl or Alt: along the "
+                              "view axis), drag a spot's cone edge to change its angle, Shift+click the model "
+                              "to aim the selected light there.</p>")
+                               .arg(QApplication::applicationVersion()));
+    });
+}
+
+void EditorActions::rebuildModelCameras() {
+    modelCamerasMenu->clear();
+    const auto& cameras = m_window->scene()->model()->cameras;
+    for (int i = 0; i < int(cameras.size()); ++i) {
+        const QString name = cameras[size_t(i)].name.isEmpty() ? tr("Camera %1").arg(i + 1) : cameras[size_t(i)].name;
+        QAction* a = modelCamerasMenu->addAction(name);
+        connect(a, &QAction::triggered, m_window->viewport(), [this, i] { m_window->viewport()->setModelCamera(i); });
+    }
+    modelCamerasMenu->setEnabled(!cameras.empty());
+}
+
+void EditorActions::updateEnabled() {
+    const Document* doc = m_window->document();
+    const int row = doc->currentRow();
+    lookThroughLight->setEnabled(row >= 0 && doc->light(row).type == LightType::Spot);
+    importLights->setEnabled(!m_window->scene()->model()->lights.lights.empty());
+}
+
+void EditorActions::exportScreenshotInteractive() {
+    const QString base = m_window->document()->filePath().isEmpty()
+                             ? QDir::home().filePath(QStringLiteral("lightrig.png"))
+                             : QFileInfo(m_window->document()->filePath()).dir().filePath(
+                                   QFileInfo(m_window->document()->filePath()).completeBaseName() + QStringLiteral(".png"));
+    ScreenshotDialog dialog(m_window->viewport()->size() * m_window->viewport()->devicePixelRatio(), base, m_window);
+    if (dialog.exec() != QDialog::Accepted) return;
+    const ScreenshotOptions o = dialog.options();
+    QApplication::setOverrideCursor(Qt::WaitCursor);
+    const QString error = m_window->viewport()->exportScreenshot(o);
+    QApplication::restoreOverrideCursor();
+    if (!error.isEmpty()) {
+        showError(m_window, {tr("Export screenshot"), tr("Could not export the screenshot."), {error}});
+        return;
+    }
+    m_window->statusBar()->showMessage(tr("Wrote %1 (%2×%3)")
+                                           .arg(QDir::toNativeSeparators(o.path))
+                                           .arg(o.size.width())
+                                           .arg(o.size.height()),
+                                       8000);
+}
+
+}  // namespace lr

@@ -1,0 +1,51 @@
+// The main window's menus and actions (File, Edit, View, Presets, Window, Help) with the standard shortcuts.
+// Actions are public by name so tests and the screenshot mode can trigger them.
+#pragma once
+
+#include <QObject>
+
+class QAction;
+class QMenu;
+
+namespace lr {
+
+class MainWindow;
+
+class EditorActions : public QObject {
+    Q_OBJECT
+public:
+    explicit EditorActions(MainWindow* window);
+
+    QAction* newRig = nullptr;
+    QAction* openRig = nullptr;
+    QAction* openModel = nullptr;
+    QAction* save = nullptr;
+    QAction* saveAs = nullptr;
+    QAction* importLights = nullptr;
+    QAction* exportScreenshot = nullptr;
+    QAction* quit = nullptr;
+    QAction* undo = nullptr;
+    QAction* redo = nullptr;
+    QAction* frame = nullptr;  // F: the selected lights, or everything when none is selected
+    QAction* frameAll = nullptr;
+    QAction* lookThroughLight = nullptr;
+    QAction* showGizmos = nullptr;
+    QAction* showGrid = nullptr;
+    QMenu* recentMenu = nullptr;
+    QMenu* standardViewsMenu = nullptr;
+    QMenu* modelCamerasMenu = nullptr;
+
+    void exportScreenshotInteractive();
+
+private:
+    void createFileMenu();
+    void createEditMenu();
+    void createViewMenu();
+    void createOtherMenus();
+    void rebuildModelCameras();
+    void updateEnabled();
+
+    MainWindow* m_window;
+};
+
+}  // namespace lr

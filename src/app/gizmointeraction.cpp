@@ -1,0 +1,191 @@
+#include "gizmointeraction.h"
+
+#include "render/gizmos.h"
+#include "scene.h"
+
+#include <cmath>
+
+#include <QLineF>
+#include <glm/geometric.hpp>
+
+namespace lr {
+
+glm::dvec3 lightAnchor(const Rig& rig, const SceneFrame& frame, const Light& light) {
+    if (light.usesPosition()) return rigToWorld(rig, frame, light.position);
+    return render::directionalAnchor(frame, light.direction);
+}
+
+double spotGizmoLength(const Rig& rig, const SceneFrame& frame, const Light& light) {
+    // As render/gizmos.cpp draws it: the range (at most 3 radii) when the light has a finite one, else a radius.
+    const double radius = frame.radius > 0.0 && std::isfinite(frame.radius) ? frame.radius : 1.0;
+    const Falloff& f = light.falloff;
+    const bool bounded = f.model == FalloffModel::RangePower || f.model == FalloffModel::RangeQuadratic ||
+                         ((f.model == FalloffModel::InversePolynomial || f.model == FalloffModel::InverseSquare) &&
+                          f.hasRange());
+    const double range = bounded ? f.range / distanceScale(rig, frame) : -1.0;
+    return range > 0.0 && std::isfinite(range) && range < radius * 1e4 ? std::min(range, radius * 3.0) : radius;
+}
+
+GizmoInteraction::GizmoInteraction(Document* document, Scene* scene) : m_doc(document), m_scene(scene) {}
+GizmoInteraction::~GizmoInteraction() = default;
+
+int GizmoInteraction::pickLight(const ScreenProjector& projector, const QPointF& screen) const {
+    const Rig& rig = m_doc->rig();
+    const SceneFrame frame = m_scene->frame();
+    std::vector<glm::dvec3> anchors;
+    anchors.reserve(rig.lights.size());
+    for (const Light& l : rig.lights) anchors.push_back(lightAnchor(rig, frame, l));
+    return pickNearest(projector, anchors, screen, kPickPixels);
+}
+
+int GizmoInteraction::pickConeEdge(const ScreenProjector& projector, const QPointF& screen) const {
+    const Rig& rig = m_doc->rig();
+    const SceneFrame frame = m_scene->frame();
+    int best = -1;
+    double bestDist = kPickPixels;
+    for (int row : m_doc->selectedRows()) {
+        const Light& l = rig.lights[size_t(row)];
+        if (l.type != LightType::Spot) continue;
+        const auto rim = coneRim(lightAnchor(rig, frame, l), l.direction, l.cone.outer, spotGizmoLength(rig, frame, l));
+        const double d = distanceToConeRim(projector, rim, screen);
+        if (d <= bestDist) {
+            best = row;
+            bestDist = d;
+        }
+    }
+    return best;
+}
+
+bool GizmoInteraction::press(const ScreenProjector& projector, const QPointF& screen, Qt::KeyboardModifiers modifiers) {
+    release();
+    m_pressPos = screen;
+    const int cone = pickConeEdge(projector, screen);
+    const int row = cone >= 0 ? -1 : pickLight(projector, screen);
+    if (cone < 0 && row < 0) return false;
+    if (cone >= 0) {
+        m_drag = Drag::ConeOuter;
+        m_rows = {cone};
+        return true;
+    }
+    // Select: a plain click makes it the selection (keeping a multi-selection it belongs to, so several
+    // lights can be dragged together); Ctrl toggles it.
+    const LightId id = m_doc->lightId(row);
+    QSet<LightId> selection = m_doc->selection();
+    if (modifiers & Qt::ControlModifier && !(modifiers & Qt::AltModifier)) {
+        if (selection.contains(id)) {
+            selection.remove(id);
+            m_doc->setSelection(selection);
+            return true;  // deselected: nothing to drag
+        }
+        selection.insert(id);
+    } else if (!selection.contains(id)) {
+        selection = {id};
+    }
+    m_doc->setSelection(selection, id);
+    m_rows = m_doc->selectedRows();
+    const Rig& rig = m_doc->rig();
+    const SceneFrame frame = m_scene->frame();
+    m_startWorld.clear();
+    for (int r : m_rows) m_startWorld.push_back(lightAnchor(rig, frame, rig.lights[size_t(r)]));
+    m_pickedAnchor = lightAnchor(rig, frame, rig.lights[size_t(row)]);
+    m_drag = Drag::Move;
+    return true;
+}
+
+void GizmoInteraction::move(const ScreenProjector& projector, const QPointF& screen, Qt::KeyboardModifiers modifiers) {
+    if (m_drag == Drag::None) return;
+    if (!m_started) {
+        if (QLineF(m_pressPos, screen).length() < kDragThreshold) return;
+        m_started = true;
+        m_edit = std::make_unique<ContinuousEdit>(m_doc);
+    }
+    if (m_drag == Drag::ConeOuter) {
+        const int row = m_rows.value(0, -1);
+        if (row < 0 || row >= m_doc->lightCount()) return;
+        const Light& l = m_doc->light(row);
+        const auto angle = coneAngleUnderCursor(projector, lightAnchor(m_doc->rig(), m_scene->frame(), l), l.direction,
+                                                screen);
+        if (angle) m_doc->setLightValue({row}, LightProperty::ConeOuter, std::clamp(*angle, 0.5, 90.0));
+        return;
+    }
+    const bool alongView = modifiers & (Qt::ControlModifier | Qt::AltModifier);
+    m_drag = alongView ? Drag::MoveAlongView : Drag::Move;
+    applyMove(projector, screen, alongView);
+}
+
+void GizmoInteraction::applyMove(const ScreenProjector& projector, const QPointF& screen, bool alongView) {
+    // Every dragged light moves by the same world offset as the picked one.
+    glm::dvec3 offset;
+    if (alongView) {
+        const double depth = std::max(projector.depth(m_pickedAnchor), 1e-6);
+        offset = dragAlongViewAxis(projector, m_pickedAnchor, m_pressPos, screen, projector.worldPerPixel(depth)) -
+                 m_pickedAnchor;
+    } else {
+        offset = dragInViewPlane(projector, m_pickedAnchor, m_pressPos, screen) - m_pickedAnchor;
+    }
+    const Rig& rig = m_doc->rig();
+    const SceneFrame frame = m_scene->frame();
+    QList<int> positionRows, directionRows;
+    QVariantList positions, directions;
+    for (int i = 0; i < m_rows.size(); ++i) {
+        const int row = m_rows[i];
+        if (row < 0 || row >= m_doc->lightCount()) continue;
+        const Light& l = rig.lights[size_t(row)];
+        const glm::dvec3 world = m_startWorld[size_t(i)] + offset;
+        if (l.usesPosition()) {
+            positionRows.append(row);
+            positions.append(QVariant::fromValue(worldToRig(rig, frame, world)));
+        } else {
+            // Directional and rim lights: moving the gizmo around the scene turns the light towards the centre.
+            const glm::dvec3 d = frame.center - world;
+            if (glm::length(d) > 1e-9 * std::max(1.0, frame.radius)) {
+                directionRows.append(row);
+                directions.append(QVariant::fromValue(glm::normalize(d)));
+            }
+        }
+    }
+    if (!positionRows.isEmpty()) m_doc->setLightValues(positionRows, LightProperty::Position, positions);
+    if (!directionRows.isEmpty()) m_doc->setLightValues(directionRows, LightProperty::Direction, directions);
+}
+
+void GizmoInteraction::release() {
+    m_edit.reset();
+    m_drag = Drag::None;
+    m_started = false;
+    m_rows.clear();
+    m_startWorld.clear();
+}
+
+bool GizmoInteraction::aimSelectedAt(const ScreenProjector& projector, const QPointF& screen, QString* message) {
+    QList<int> rows;
+    for (int row : m_doc->selectedRows())
+        if (m_doc->light(row).usesDirection()) rows.append(row);
+    if (rows.isEmpty()) {
+        if (message) *message = QObject::tr("Select a spot, directional or rim light to aim it.");
+        return false;
+    }
+    const auto hit = intersectModel(*m_scene->model(), projector.ray(screen));
+    if (!hit) {
+        if (message) *message = QObject::tr("Shift+click a point on the model to aim the selected light at it.");
+        return false;
+    }
+    const Rig& rig = m_doc->rig();
+    const SceneFrame frame = m_scene->frame();
+    QList<int> aimed;
+    QVariantList directions;
+    for (int row : rows) {
+        const glm::dvec3 d = *hit - lightAnchor(rig, frame, rig.lights[size_t(row)]);
+        if (!(glm::length(d) > 0.0)) continue;
+        aimed.append(row);
+        directions.append(QVariant::fromValue(glm::normalize(d)));
+    }
+    if (aimed.isEmpty()) return false;
+    QString error;
+    if (!m_doc->setLightValues(aimed, LightProperty::Direction, directions, &error)) {
+        if (message) *message = error;
+        return false;
+    }
+    return true;
+}
+
+}  // namespace lr

@@ -1,0 +1,67 @@
+// Direct manipulation of lights in the viewport, independent of GL: picking a light's gizmo, dragging it in
+// the view plane (Ctrl or Alt: along the view axis), dragging a spot's cone edge to change its outer angle,
+// and aiming the selected lights at a point of the model. Every change goes through the Document's commands;
+// one drag is one undo step (a continuous-edit session from press to release).
+#pragma once
+
+#include "core/prepare.h"
+#include "editor/document.h"
+#include "picking.h"
+
+#include <QPointF>
+#include <memory>
+#include <optional>
+
+namespace lr {
+
+class Scene;
+
+// Where a light's gizmo is drawn (world): its position for point and spot lights; for directional and rim
+// lights (which have no position) outside the scene's bounding sphere, against the light's direction.
+glm::dvec3 lightAnchor(const Rig& rig, const SceneFrame& frame, const Light& light);
+// Length (world) of a spot light's cone gizmo: its range when it has one (capped), else the scene's radius.
+double spotGizmoLength(const Rig& rig, const SceneFrame& frame, const Light& light);
+
+class GizmoInteraction {
+public:
+    static constexpr double kPickPixels = 12.0;  // how near a click must be to a gizmo
+    static constexpr double kDragThreshold = 3.0;
+
+    enum class Drag { None, Move, MoveAlongView, ConeOuter };
+
+    GizmoInteraction(Document* document, Scene* scene);
+    ~GizmoInteraction();
+
+    // Light row whose gizmo is nearest to `screen` (within kPickPixels), or -1.
+    int pickLight(const ScreenProjector& projector, const QPointF& screen) const;
+    // Selected spot light row whose outer cone rim passes within kPickPixels of `screen`, or -1.
+    int pickConeEdge(const ScreenProjector& projector, const QPointF& screen) const;
+
+    // Left button pressed (without Shift). Returns true when it hit a gizmo (the caller then does not orbit);
+    // the light is selected (Ctrl: added to / removed from the selection) and a drag may follow.
+    bool press(const ScreenProjector& projector, const QPointF& screen, Qt::KeyboardModifiers modifiers);
+    // Mouse moved with the button held; `worldPerPixel` converts pixels to world units at the light's depth.
+    void move(const ScreenProjector& projector, const QPointF& screen, Qt::KeyboardModifiers modifiers);
+    void release();
+    bool isDragging() const { return m_drag != Drag::None; }
+    Drag drag() const { return m_drag; }
+
+    // Aims the selected spot, directional and rim lights at the model point under `screen` (one undo step).
+    // Returns false (and *message) when nothing is hit or no selected light has a direction.
+    bool aimSelectedAt(const ScreenProjector& projector, const QPointF& screen, QString* message);
+
+private:
+    void applyMove(const ScreenProjector& projector, const QPointF& screen, bool alongView);
+
+    Document* m_doc;
+    Scene* m_scene;
+    Drag m_drag = Drag::None;
+    bool m_started = false;  // the mouse moved past kDragThreshold
+    QPointF m_pressPos;
+    QList<int> m_rows;                   // lights being dragged
+    std::vector<glm::dvec3> m_startWorld;  // their anchors at the press (world)
+    glm::dvec3 m_pickedAnchor{0.0};
+    std::unique_ptr<ContinuousEdit> m_edit;
+};
+
+}  // namespace lr

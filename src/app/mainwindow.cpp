@@ -1,0 +1,164 @@
+#include "mainwindow.h"
+
+#include "commandline.h"
+#include "core/rigjson.h"
+#include "documentfiles.h"
+#include "editor/document.h"
+#include "editoractions.h"
+#include "editorstatusbar.h"
+#include "lightsdock.h"
+#include "presetsdock.h"
+#include "presetstore.h"
+#include "propertiesdock.h"
+#include "recentfiles.h"
+#include "rendersettingsdock.h"
+#include "scene.h"
+#include "sessionsettings.h"
+#include "viewport.h"
+#include "viewsettings.h"
+
+#include <QCloseEvent>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QFileInfo>
+#include <QMimeData>
+#include <QUndoView>
+
+namespace lr {
+
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent), m_doc(new Document(this)), m_scene(new Scene(this)), m_viewSettings(new ViewSettings(this)),
+      m_recent(new RecentFiles(this)), m_presets(new PresetStore(QString(), this)),
+      m_files(new DocumentFiles(m_doc, m_scene, m_recent, this)),
+      m_viewport(new Viewport(m_doc, m_scene, m_viewSettings, this)), m_status(new EditorStatusBar(this)) {
+    setObjectName(QStringLiteral("MainWindow"));
+    m_viewSettings->load();
+    setCentralWidget(m_viewport);
+    setStatusBar(m_status);
+    setDockNestingEnabled(true);
+    setAcceptDrops(true);
+    createDocks();
+    m_actions = new EditorActions(this);
+    connectStatus();
+    connect(m_doc, &Document::fileChanged, this, &MainWindow::updateTitle);
+    connect(m_doc, &Document::modifiedChanged, this, &MainWindow::updateTitle);
+    updateTitle();
+    resize(1280, 800);
+}
+
+MainWindow::~MainWindow() = default;
+
+QString MainWindow::bundledModelPath() { return QStringLiteral(":/resources/models/suzanne/Suzanne.gltf"); }
+
+void MainWindow::createDocks() {
+    m_lightsDock = new LightsDock(m_doc, this);
+    m_propertiesDock = new PropertiesDock(m_doc, this);
+    m_renderDock = new RenderSettingsDock(m_doc, m_viewSettings, this);
+    m_presetsDock = new PresetsDock(m_doc, m_presets, this);
+    m_presetsDock->setThumbnailRenderer(
+        [this](const Rig& rig, const QSize& size) { return m_viewport->renderThumbnail(rig, size); });
+    m_historyDock = new QDockWidget(tr("History"), this);
+    m_historyDock->setObjectName(QStringLiteral("HistoryDock"));
+    auto* history = new QUndoView(m_doc->undoStack(), m_historyDock);
+    history->setEmptyLabel(tr("<opened>"));
+    m_historyDock->setWidget(history);
+
+    addDockWidget(Qt::LeftDockWidgetArea, m_lightsDock);
+    addDockWidget(Qt::LeftDockWidgetArea, m_presetsDock);
+    addDockWidget(Qt::RightDockWidgetArea, m_propertiesDock);
+    addDockWidget(Qt::RightDockWidgetArea, m_renderDock);
+    addDockWidget(Qt::RightDockWidgetArea, m_historyDock);
+    tabifyDockWidget(m_renderDock, m_historyDock);
+    m_propertiesDock->raise();
+    resizeDocks({m_lightsDock, m_propertiesDock}, {380, 320}, Qt::Horizontal);
+}
+
+void MainWindow::connectStatus() {
+    connect(m_files, &DocumentFiles::statusMessage, this, [this](const QString& t) { m_status->showMessage(t, 8000); });
+    connect(m_lightsDock, &LightsDock::editRefused, this, [this](const QString& t) { m_status->showMessage(t, 8000); });
+    connect(m_viewport, &Viewport::statusMessage, this, [this](const QString& t) { m_status->showMessage(t, 8000); });
+    connect(m_viewport, &Viewport::frameRendered, m_status, &EditorStatusBar::setFrameTime);
+    connect(m_files, &DocumentFiles::modelLoadStarted, this,
+            [this](const QString& path) { m_status->showLoading(QFileInfo(path).fileName()); });
+    connect(m_files, &DocumentFiles::modelLoadProgress, m_status, &EditorStatusBar::setLoadProgress);
+    connect(m_files, &DocumentFiles::modelLoadFinished, m_status, &EditorStatusBar::hideLoading);
+    connect(m_status, &EditorStatusBar::cancelLoadRequested, m_files, &DocumentFiles::cancelModelLoad);
+    auto summary = [this] {
+        const int n = m_doc->lightCount();
+        int on = 0;
+        for (int i = 0; i < n; ++i) on += m_doc->light(i).enabled ? 1 : 0;
+        m_status->setRigSummary(tr("%n light(s), %1 on", nullptr, n).arg(on) +
+                                (m_doc->anySoloed() ? tr(" (solo)") : QString()));
+    };
+    connect(m_doc, &Document::rigChanged, this, summary);
+    connect(m_doc, &Document::soloChanged, this, summary);
+    summary();
+}
+
+void MainWindow::updateTitle() {
+    setWindowTitle(tr("%1[*] — LightRig").arg(m_doc->displayName()));
+    setWindowFilePath(m_doc->filePath());
+    setWindowModified(m_doc->isModified());
+}
+
+void MainWindow::openInitial(const EditorOptions& options) {
+    m_restoreSession = options.restoreSession;
+    if (options.restoreSession) SessionSettings::restoreWindow(this);
+    QString model = options.modelPath;
+    if (model.isEmpty() && options.restoreSession) model = SessionSettings::lastModel();
+    if (model.isEmpty()) model = bundledModelPath();
+    QString rig = options.rigPath;
+    if (rig.isEmpty() && options.modelPath.isEmpty() && options.restoreSession) rig = SessionSettings::lastRig();
+    m_doc->newRig(defaultRig());
+    if (!rig.isEmpty()) m_files->openRig(rig);  // on failure the default rig stays and the error is shown
+    if (model != bundledModelPath()) {
+        // A model that cannot be loaded leaves an empty scene: fall back to the bundled model then.
+        connect(m_files, &DocumentFiles::modelLoadFailed, this, [this] {
+            if (m_scene->isEmpty()) m_files->openModel(bundledModelPath());
+        }, Qt::SingleShotConnection);
+    }
+    m_files->openModel(model);
+}
+
+void MainWindow::saveSession() {
+    if (!m_restoreSession) return;  // a scripted/defaults-only run leaves the user's session alone
+    SessionSettings::saveWindow(this);
+    SessionSettings::setLastModel(m_scene->path() == bundledModelPath() ? QString() : m_scene->path());
+    SessionSettings::setLastRig(m_doc->filePath());
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    if (!m_files->maybeSave()) {
+        event->ignore();
+        return;
+    }
+    m_files->cancelModelLoad();
+    saveSession();
+    event->accept();
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+    const QMimeData* mime = event->mimeData();
+    if (mime->hasUrls()) {
+        for (const QUrl& url : mime->urls()) {
+            if (url.isLocalFile()) {
+                event->acceptProposedAction();
+                return;
+            }
+        }
+    }
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+    // A rig and a model may be dropped together: the rig first (it may ask to save), then the model.
+    QStringList rigs, models;
+    for (const QUrl& url : event->mimeData()->urls()) {
+        if (!url.isLocalFile()) continue;
+        (DocumentFiles::isRigFile(url.toLocalFile()) ? rigs : models).append(url.toLocalFile());
+    }
+    event->acceptProposedAction();
+    if (!rigs.isEmpty()) m_files->openFile(rigs.first());
+    if (!models.isEmpty()) m_files->openFile(models.first());
+}
+
+}  // namespace lr

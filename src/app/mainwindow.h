@@ -1,0 +1,81 @@
+// The editor's main window: a central Viewport and the docks (Lights, Properties, Render settings, Presets,
+// History). It wires the parts together and little else: menus and actions live in EditorActions, file
+// handling in DocumentFiles, persistence in SessionSettings/ViewSettings/RecentFiles.
+#pragma once
+
+#include <QMainWindow>
+
+class QUndoView;
+
+namespace lr {
+
+class Document;
+class DocumentFiles;
+class EditorActions;
+class EditorStatusBar;
+class LightsDock;
+class PresetStore;
+class PresetsDock;
+class PropertiesDock;
+class RecentFiles;
+class RenderSettingsDock;
+class Scene;
+class ViewSettings;
+class Viewport;
+struct EditorOptions;
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    Document* document() const { return m_doc; }
+    Scene* scene() const { return m_scene; }
+    ViewSettings* viewSettings() const { return m_viewSettings; }
+    DocumentFiles* files() const { return m_files; }
+    RecentFiles* recentFiles() const { return m_recent; }
+    PresetStore* presetStore() const { return m_presets; }
+    Viewport* viewport() const { return m_viewport; }
+    LightsDock* lightsDock() const { return m_lightsDock; }
+    PropertiesDock* propertiesDock() const { return m_propertiesDock; }
+    RenderSettingsDock* renderSettingsDock() const { return m_renderDock; }
+    PresetsDock* presetsDock() const { return m_presetsDock; }
+    QDockWidget* historyDock() const { return m_historyDock; }
+    EditorActions* actions() const { return m_actions; }
+    EditorStatusBar* editorStatusBar() const { return m_status; }
+
+    // Startup: the model and rig from the command line, else the last session's (when restoring), else the
+    // bundled model lit by the default preset. Restores geometry and dock layout when options allow it.
+    void openInitial(const EditorOptions& options);
+    static QString bundledModelPath();  // ":/resources/models/suzanne/Suzanne.gltf"
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
+
+private:
+    void createDocks();
+    void connectStatus();
+    void updateTitle();
+    void saveSession();
+
+    Document* m_doc;
+    Scene* m_scene;
+    ViewSettings* m_viewSettings;
+    RecentFiles* m_recent;
+    PresetStore* m_presets;
+    DocumentFiles* m_files;
+    Viewport* m_viewport;
+    EditorStatusBar* m_status;
+    LightsDock* m_lightsDock = nullptr;
+    PropertiesDock* m_propertiesDock = nullptr;
+    RenderSettingsDock* m_renderDock = nullptr;
+    PresetsDock* m_presetsDock = nullptr;
+    QDockWidget* m_historyDock = nullptr;
+    EditorActions* m_actions = nullptr;
+    bool m_restoreSession = true;
+};
+
+}  // namespace lr

@@ -1,0 +1,86 @@
+#include "numberedit.h"
+
+#include <QLineEdit>
+#include <cmath>
+#include <limits>
+
+namespace lr {
+
+NumberEdit::NumberEdit(QWidget* parent) : QDoubleSpinBox(parent) {
+    setDecimals(323);  // no rounding of stored values; display is 'g' (textFromValue)
+    setStepType(QAbstractSpinBox::AdaptiveDecimalStepType);
+    setKeyboardTracking(false);
+    setAccelerated(true);
+    setCorrectionMode(QAbstractSpinBox::CorrectToPreviousValue);
+    setRange(-1e30, 1e30);
+    connect(this, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+        if (!m_quiet) emit valueEdited(v);
+    });
+    connect(lineEdit(), &QLineEdit::textEdited, this, [this] {
+        QString text = lineEdit()->text();
+        int pos = 0;
+        if (validate(text, pos) == QValidator::Acceptable) emit accepted();
+    });
+}
+
+void NumberEdit::setLimits(double min, double max, bool minExclusive) {
+    m_minExclusive = minExclusive;
+    const double lo = minExclusive ? std::nextafter(min, std::numeric_limits<double>::infinity()) : min;
+    m_quiet = true;
+    setRange(lo, max);
+    m_quiet = false;
+}
+
+void NumberEdit::setValueQuietly(double v) {
+    m_quiet = true;
+    setValue(v);
+    m_quiet = false;
+}
+
+QString NumberEdit::rule() const {
+    const double lo = m_minExclusive ? std::nextafter(minimum(), -std::numeric_limits<double>::infinity())
+                                     : minimum();
+    const QString name = m_what.isEmpty() ? tr("value") : m_what;
+    return tr("%1 must be a number %2 %3 and ≤ %4")
+        .arg(name, m_minExclusive ? QStringLiteral(">") : QStringLiteral("≥"), locale().toString(lo, 'g', 6),
+             locale().toString(maximum(), 'g', 6));
+}
+
+bool NumberEdit::accepts(double v) const { return std::isfinite(v) && v >= minimum() && v <= maximum(); }
+
+QValidator::State NumberEdit::validate(QString& input, int& /*pos*/) const {
+    const QString t = input.trimmed();
+    if (t.isEmpty() || t == QLatin1String("-") || t == QLatin1String("+") || t == locale().decimalPoint() ||
+        t.endsWith(QLatin1Char('e'), Qt::CaseInsensitive) || t.endsWith(QLatin1String("e-")) ||
+        t.endsWith(QLatin1String("e+")))
+        return QValidator::Intermediate;
+    bool ok = false;
+    const double v = locale().toDouble(t, &ok);
+    auto refuse = [&](const QString& why) {
+        emit const_cast<NumberEdit*>(this)->rejected(why);
+        return QValidator::Invalid;
+    };
+    if (!ok) return refuse(tr("\"%1\" is not a number; %2").arg(t, rule()));
+    if (!std::isfinite(v)) return refuse(tr("%1 is not finite; %2").arg(t, rule()));
+    if (accepts(v)) return QValidator::Acceptable;
+    // A value below a positive minimum may still grow into range as digits are typed ("0" → "0.5").
+    if (v >= 0.0 && v < minimum() && maximum() > 0.0) {
+        emit const_cast<NumberEdit*>(this)->rejected(rule());
+        return QValidator::Intermediate;
+    }
+    return refuse(tr("%1 is out of range: %2").arg(t, rule()));
+}
+
+QString NumberEdit::textFromValue(double value) const {
+    QString s = locale().toString(value, 'g', 7);
+    s.remove(locale().groupSeparator());
+    return s;
+}
+
+double NumberEdit::valueFromText(const QString& text) const {
+    bool ok = false;
+    const double v = locale().toDouble(text.trimmed(), &ok);
+    return ok && std::isfinite(v) ? v : value();
+}
+
+}  // namespace lr

@@ -1,0 +1,75 @@
+// Viewport picking and drag geometry on the CPU, independent of GL and widgets (unit-testable):
+// project points to the screen, cast rays, pick the nearest light gizmo within a pixel radius, hit the
+// model's triangles, and turn mouse motion into world-space moves and cone angles.
+// Screen coordinates are widget pixels, origin top-left, y down.
+#pragma once
+
+#include <QPointF>
+#include <QSizeF>
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+#include <optional>
+#include <vector>
+
+namespace lr {
+
+struct Model;
+
+struct Ray {
+    glm::dvec3 origin{0.0};
+    glm::dvec3 direction{0.0, 0.0, -1.0};  // unit
+    glm::dvec3 at(double t) const { return origin + t * direction; }
+};
+
+class ScreenProjector {
+public:
+    ScreenProjector() = default;
+    ScreenProjector(const glm::dmat4& view, const glm::dmat4& projection, const QSizeF& size);
+
+    // Screen position of a world point; nullopt when it is behind the camera (or at its plane).
+    std::optional<QPointF> project(const glm::dvec3& world) const;
+    // World-space ray through a screen position (from the near plane, or the eye for perspective).
+    Ray ray(const QPointF& screen) const;
+    // Unit world-space direction the camera looks along.
+    glm::dvec3 viewDirection() const;
+    glm::dvec3 eye() const;
+    // View-space depth (distance along the view direction) of a world point.
+    double depth(const glm::dvec3& world) const;
+    // World units per screen pixel (vertically) at a view depth.
+    double worldPerPixel(double depth) const;
+    const QSizeF& size() const { return m_size; }
+
+private:
+    glm::dmat4 m_view{1.0}, m_proj{1.0}, m_inverseViewProj{1.0}, m_inverseView{1.0};
+    QSizeF m_size{1.0, 1.0};
+};
+
+// Index of the anchor nearest to `screen` within maxPixels (ties: nearer the camera), or -1.
+int pickNearest(const ScreenProjector& projector, const std::vector<glm::dvec3>& anchors, const QPointF& screen,
+                double maxPixels);
+
+// Ray parameter of the intersection with a plane (point, normal), or nullopt when parallel/behind.
+std::optional<double> intersectPlane(const Ray& ray, const glm::dvec3& point, const glm::dvec3& normal);
+
+// Nearest hit of the ray with the model's triangles (world space), or nullopt.
+std::optional<glm::dvec3> intersectModel(const Model& model, const Ray& ray);
+
+// Moves `start` so that it follows the mouse from `from` to `to` in the plane through `start` facing
+// the camera. Returns `start` when the plane cannot be hit.
+glm::dvec3 dragInViewPlane(const ScreenProjector& projector, const glm::dvec3& start, const QPointF& from,
+                           const QPointF& to);
+// Moves `start` along the view direction: dragging up pushes away, `unitsPerPixel` world units a pixel.
+glm::dvec3 dragAlongViewAxis(const ScreenProjector& projector, const glm::dvec3& start, const QPointF& from,
+                             const QPointF& to, double unitsPerPixel);
+
+// Points on a spot's outer cone rim (world) at `length` along the axis, for picking its edge.
+std::vector<glm::dvec3> coneRim(const glm::dvec3& apex, const glm::dvec3& axis, double outerDegrees,
+                                double length, int segments = 32);
+// Distance in pixels from `screen` to the projected rim polygon (infinity when none is visible).
+double distanceToConeRim(const ScreenProjector& projector, const std::vector<glm::dvec3>& rim, const QPointF& screen);
+// The half-angle (degrees, 0..90) of the cone whose edge passes under the mouse: the cursor ray meets the
+// plane through the axis that faces the camera best; the angle is between the axis and apex→hit.
+std::optional<double> coneAngleUnderCursor(const ScreenProjector& projector, const glm::dvec3& apex,
+                                           const glm::dvec3& axis, const QPointF& screen);
+
+}  // namespace lr

@@ -1,0 +1,119 @@
+#include "rendersettingsdock.h"
+
+#include "colorbutton.h"
+#include "editor/document.h"
+#include "numberedit.h"
+#include "ui_rendersettings.h"
+#include "viewsettings.h"
+
+#include <QColorDialog>
+#include <QPainter>
+#include <QSignalBlocker>
+#include <cmath>
+
+namespace lr {
+
+namespace {
+template <typename E> void fillCombo(QComboBox* combo) {
+    for (int i = 0; i < enumCount<E>(); ++i) combo->addItem(toString(E(i)));
+}
+
+QIcon swatch(const QColor& c) {
+    QPixmap pm(28, 16);
+    pm.fill(c);
+    QPainter p(&pm);
+    p.setPen(Qt::darkGray);
+    p.drawRect(pm.rect().adjusted(0, 0, -1, -1));
+    return QIcon(pm);
+}
+}  // namespace
+
+RenderSettingsDock::RenderSettingsDock(Document* document, ViewSettings* settings, QWidget* parent)
+    : QDockWidget(tr("Render settings"), parent), m_ui(std::make_unique<Ui::RenderSettingsForm>()),
+      m_doc(document), m_settings(settings) {
+    setObjectName(QStringLiteral("RenderSettingsDock"));
+    auto* body = new QWidget(this);
+    m_ui->setupUi(body);
+    setWidget(body);
+    fillCombo<ToneMap>(m_ui->toneMap);
+    fillCombo<Quality>(m_ui->quality);
+    fillCombo<SpecularModel>(m_ui->specularModel);
+    fillCombo<ViewerModel>(m_ui->viewerModel);
+    m_ui->shininess->setLimits(0.0, kMaxShininess, true);
+    m_ui->shininess->setWhat(rigPropertyName(RigProperty::Shininess));
+
+    // View settings: immediate, not undoable.
+    connect(m_ui->exposure, &QDoubleSpinBox::valueChanged, m_settings, &ViewSettings::setExposure);
+    connect(m_ui->exposureSlider, &QSlider::valueChanged, this,
+            [this](int v) { m_settings->setExposure(v / 10.0); });
+    connect(m_ui->toneMap, &QComboBox::activated, this, [this](int i) { m_settings->setToneMap(ToneMap(i)); });
+    connect(m_ui->quality, &QComboBox::activated, this, [this](int i) { m_settings->setQuality(Quality(i)); });
+    connect(m_ui->grid, &QCheckBox::toggled, m_settings, &ViewSettings::setGrid);
+    connect(m_ui->gizmos, &QCheckBox::toggled, m_settings, &ViewSettings::setGizmos);
+    connect(m_ui->background, &QToolButton::clicked, this, [this] {
+        const QColor c = QColorDialog::getColor(m_settings->options().background, this, tr("Background colour"));
+        if (c.isValid()) m_settings->setBackground(c);
+    });
+    connect(m_settings, &ViewSettings::changed, this, &RenderSettingsDock::loadView);
+
+    // Rig shading: undoable document edits.
+    connect(m_ui->specularModel, &QComboBox::activated, this, [this](int i) {
+        setRigValue(int(RigProperty::SpecularModel), toString(SpecularModel(i)), false);
+    });
+    connect(m_ui->viewerModel, &QComboBox::activated, this, [this](int i) {
+        setRigValue(int(RigProperty::ViewerModel), toString(ViewerModel(i)), false);
+    });
+    connect(m_ui->shininess, &NumberEdit::valueEdited, this,
+            [this](double v) { setRigValue(int(RigProperty::Shininess), v, true); });
+    connect(m_ui->shininess, &QAbstractSpinBox::editingFinished, this, &RenderSettingsDock::finishGesture);
+    connect(m_ui->shininess, &NumberEdit::rejected, m_ui->message, &QLabel::setText);
+    connect(m_ui->ambient, &ColorButton::colorPicked, this, [this](const glm::dvec3& c) {
+        setRigValue(int(RigProperty::Ambient), QVariant::fromValue(c), false);
+    });
+    connect(m_doc, &Document::rigChanged, this, [this](const RigChange& change) {
+        if (change.kind == RigChange::RigValues || change.kind == RigChange::Reset) loadRig();
+    });
+    loadView();
+    loadRig();
+}
+
+RenderSettingsDock::~RenderSettingsDock() { finishGesture(); }
+
+void RenderSettingsDock::loadView() {
+    const ViewOptions& o = m_settings->options();
+    const QSignalBlocker b1(m_ui->exposure), b2(m_ui->exposureSlider), b3(m_ui->grid), b4(m_ui->gizmos);
+    m_ui->exposure->setValue(o.exposure);
+    m_ui->exposureSlider->setValue(int(std::lround(o.exposure * 10.0)));
+    m_ui->toneMap->setCurrentIndex(int(o.toneMap));
+    m_ui->quality->setCurrentIndex(int(o.quality));
+    m_ui->grid->setChecked(o.grid);
+    m_ui->gizmos->setChecked(o.gizmos);
+    m_ui->background->setIcon(swatch(o.background));
+    m_ui->background->setText(o.background.name());
+}
+
+void RenderSettingsDock::loadRig() {
+    const Rig& rig = m_doc->rig();
+    m_ui->specularModel->setCurrentIndex(int(rig.shading.specular));
+    m_ui->viewerModel->setCurrentIndex(int(rig.shading.viewer));
+    m_ui->shininess->setValueQuietly(rig.shading.shininess);
+    m_ui->ambient->setColor(rig.ambient);
+}
+
+void RenderSettingsDock::setRigValue(int property, const QVariant& value, bool continuous) {
+    if (continuous && !m_editToken) m_editToken = m_doc->beginContinuousEdit();
+    QString error;
+    if (!m_doc->setRigValue(RigProperty(property), value, &error)) {
+        m_ui->message->setText(error);
+        loadRig();
+    } else {
+        m_ui->message->clear();
+    }
+    if (!continuous) finishGesture();
+}
+
+void RenderSettingsDock::finishGesture() {
+    if (m_editToken) m_doc->endContinuousEdit(*std::exchange(m_editToken, std::nullopt));
+}
+
+}  // namespace lr

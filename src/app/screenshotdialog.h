@@ -1,0 +1,44 @@
+// "Export screenshot" options (form ui/screenshotdialog.ui): file, size independent of the window,
+// supersampling 1–4×, transparent background (PNG only), PNG or JPEG, gizmos on/off. Remembered in QSettings.
+#pragma once
+
+#include <QDialog>
+#include <QSize>
+#include <memory>
+
+namespace Ui {
+class ScreenshotDialog;
+}
+
+namespace lr {
+
+struct ScreenshotOptions {
+    QString path;
+    QSize size{1920, 1080};
+    int supersample = 2;  // 1..4
+    bool transparent = false;
+    bool gizmos = false;
+    QByteArray format = "PNG";  // "PNG" or "JPEG"
+};
+
+class ScreenshotDialog : public QDialog {
+    Q_OBJECT
+public:
+    ScreenshotDialog(const QSize& viewportSize, const QString& suggestedPath, QWidget* parent = nullptr);
+    ~ScreenshotDialog() override;
+
+    ScreenshotOptions options() const;
+    void setOptions(const ScreenshotOptions& options);
+    Ui::ScreenshotDialog* form() const { return m_ui.get(); }
+
+    void accept() override;  // validates (path, writable folder) and remembers the options
+
+private:
+    void syncFormat();
+    void browse();
+
+    std::unique_ptr<Ui::ScreenshotDialog> m_ui;
+    QSize m_viewportSize;
+};
+
+}  // namespace lr

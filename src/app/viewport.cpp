@@ -1,0 +1,344 @@
+#include "viewport.h"
+
+#include "editor/document.h"
+#include "gizmointeraction.h"
+#include "render/renderer.h"
+#include "scene.h"
+#include "screenshotdialog.h"
+#include "snapshotrenderer.h"
+#include "viewsettings.h"
+
+#include <QMouseEvent>
+#include <QOpenGLContext>
+#include <QSurfaceFormat>
+#include <QWheelEvent>
+#include <cmath>
+#include <glm/geometric.hpp>
+
+namespace lr {
+
+// Everything tied to the widget's GL context, recreated when the context is.
+struct ViewportRenderer {
+    Renderer renderer;
+    bool ok = false;
+};
+
+namespace {
+constexpr double kOrbitDegreesPerPixel = 0.4;
+constexpr double kWheelStep = 0.85;  // distance factor per wheel notch (towards the target)
+}  // namespace
+
+Viewport::Viewport(Document* document, Scene* scene, ViewSettings* settings, QWidget* parent)
+    : QOpenGLWidget(parent), m_doc(document), m_scene(scene), m_settings(settings),
+      m_interaction(std::make_unique<GizmoInteraction>(document, scene)),
+      m_snapshots(std::make_unique<SnapshotRenderer>(scene)) {
+    setObjectName(QStringLiteral("Viewport"));
+    setMinimumSize(200, 150);
+    setFocusPolicy(Qt::StrongFocus);
+    setMouseTracking(true);
+    if (auto c = standardView(QStringLiteral("three-quarter"), Bounds{glm::dvec3(-1), glm::dvec3(1)}, 1.5)) m_camera = *c;
+    connect(m_doc, &Document::rigChanged, this, [this] {
+        m_rigDirty = true;
+        update();
+    });
+    connect(m_doc, &Document::soloChanged, this, [this] {
+        m_rigDirty = true;
+        update();
+    });
+    connect(m_doc, &Document::selectionChanged, this, qOverload<>(&QWidget::update));
+    connect(m_settings, &ViewSettings::changed, this, qOverload<>(&QWidget::update));
+    connect(m_scene, &Scene::modelChanged, this, &Viewport::onModelChanged);
+}
+
+Viewport::~Viewport() {
+    m_snapshots.reset();
+    releaseGL();
+}
+
+void Viewport::setDefaultSurfaceFormat() {
+    QSurfaceFormat format;
+    format.setRenderableType(QSurfaceFormat::OpenGL);
+    format.setVersion(3, 3);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    format.setDepthBufferSize(24);
+    format.setStencilBufferSize(8);
+    format.setSamples(0);  // the renderer has its own MSAA target
+    QSurfaceFormat::setDefaultFormat(format);
+}
+
+void Viewport::releaseGL() {
+    if (!m_gl) return;
+    if (context()) {
+        makeCurrent();
+        m_gl->renderer.releaseResources();
+        m_gl.reset();
+        doneCurrent();
+    } else {
+        m_gl.reset();
+    }
+}
+
+void Viewport::initializeGL() {
+    // A new context (first show, or the widget was reparented): start over with fresh GL objects.
+    m_gl = std::make_unique<ViewportRenderer>();
+    m_modelDirty = m_rigDirty = true;
+    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &Viewport::releaseGL, Qt::UniqueConnection);
+    QString error;
+    m_gl->ok = m_gl->renderer.initialize(&error);
+    if (!m_gl->ok) {
+        m_error = tr("OpenGL 3.3 core is not available: %1").arg(error);
+        emit statusMessage(m_error);
+    }
+}
+
+void Viewport::resizeGL(int, int) {}
+
+double Viewport::aspect() const { return height() > 0 ? double(width()) / double(height()) : 1.0; }
+
+RenderSettings Viewport::renderSettings(bool gizmos) const {
+    const ViewOptions& o = m_settings->options();
+    RenderSettings s;
+    s.exposureEV = o.exposure;
+    s.toneMap = o.toneMap;
+    s.background = o.background;
+    s.quality = o.quality;
+    s.showGizmos = gizmos && o.gizmos;
+    s.showGrid = gizmos && o.grid;
+    s.msaaSamples = o.quality == Quality::Fast ? 0 : 4;
+    for (int row : m_doc->selectedRows()) s.selectedLights.push_back(row);
+    return s;
+}
+
+void Viewport::paintGL() {
+    if (!m_gl || !m_gl->ok) {
+        glClearColor(0.15f, 0.15f, 0.16f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        return;
+    }
+    Renderer& r = m_gl->renderer;
+    if (m_modelDirty) {
+        m_modelDirty = false;
+        if (!r.setModel(m_scene->model())) {
+            m_error = r.lastError();
+            emit statusMessage(tr("Could not upload the model: %1").arg(m_error));
+        }
+    }
+    if (m_rigDirty) {
+        m_rigDirty = false;
+        r.setRig(m_doc->renderRig());
+    }
+    const qreal dpr = devicePixelRatioF();
+    const QSize size(qMax(1, int(std::lround(width() * dpr))), qMax(1, int(std::lround(height() * dpr))));
+    if (!r.render(m_camera, size, renderSettings(true), defaultFramebufferObject())) {
+        if (m_error != r.lastError()) {
+            m_error = r.lastError();
+            emit statusMessage(tr("Rendering failed: %1").arg(m_error));
+        }
+        return;
+    }
+    const RenderStats& st = r.stats();
+    emit frameRendered(st.lastGpuMs, st.lastCpuMs);
+    if (m_framesRendered++ == 0) emit firstFrame();
+}
+
+void Viewport::onModelChanged() {
+    m_modelDirty = true;
+    m_rigDirty = true;  // a model-space rig moves with the model's bounds
+    const Bounds& b = m_scene->model()->bounds;
+    if (!m_cameraFramed) {
+        if (auto c = standardView(QStringLiteral("three-quarter"), b, aspect())) m_camera = *c;
+        m_cameraFramed = true;
+    } else {
+        m_camera.znear = m_camera.zfar = 0.0;
+        m_camera.frameAll(b, aspect());
+    }
+    update();
+}
+
+void Viewport::setCamera(const ViewCamera& camera) {
+    m_camera = camera;
+    update();
+}
+
+ScreenProjector Viewport::projector() const {
+    const SceneFrame f = m_scene->frame();
+    const ViewCamera c = m_camera.withClipPlanes(f.center, f.radius);
+    return ScreenProjector(c.view(), c.projection(aspect()), QSizeF(width(), height()));
+}
+
+std::optional<QPointF> Viewport::lightScreenPosition(int row) const {
+    if (row < 0 || row >= m_doc->lightCount()) return std::nullopt;
+    return projector().project(lightAnchor(m_doc->rig(), m_scene->frame(), m_doc->light(row)));
+}
+
+void Viewport::frameAll() {
+    m_camera.znear = m_camera.zfar = 0.0;
+    m_camera.frameAll(m_scene->model()->bounds, aspect());
+    update();
+}
+
+void Viewport::frameSelectionOrAll() {
+    const QList<int> rows = m_doc->selectedRows();
+    if (rows.isEmpty()) {
+        frameAll();
+        return;
+    }
+    const SceneFrame f = m_scene->frame();
+    Bounds b;
+    b.min = glm::dvec3(std::numeric_limits<double>::infinity());
+    b.max = -b.min;
+    for (int row : rows) {
+        const glm::dvec3 p = lightAnchor(m_doc->rig(), f, m_doc->light(row));
+        b.min = glm::min(b.min, p);
+        b.max = glm::max(b.max, p);
+    }
+    // A single light gets some room around it: a quarter of the scene's radius.
+    const glm::dvec3 pad(0.25 * f.radius);
+    b.min -= pad;
+    b.max += pad;
+    m_camera.znear = m_camera.zfar = 0.0;
+    m_camera.frameAll(b, aspect());
+    update();
+}
+
+void Viewport::setStandardView(const QString& name) {
+    if (auto c = standardView(name, m_scene->model()->bounds, aspect())) setCamera(*c);
+}
+
+void Viewport::setModelCamera(int index) {
+    const auto& cameras = m_scene->model()->cameras;
+    if (index < 0 || index >= int(cameras.size())) return;
+    const Camera& cam = cameras[size_t(index)];
+    const double focus = glm::length(m_scene->frame().center - cam.position);
+    setCamera(fromModelCamera(cam, focus));
+}
+
+void Viewport::lookThroughLight(int row) {
+    if (row < 0 || row >= m_doc->lightCount() || m_doc->light(row).type != LightType::Spot) {
+        emit statusMessage(tr("Select a spot light to look through it."));
+        return;
+    }
+    const Light& l = m_doc->light(row);
+    const SceneFrame f = m_scene->frame();
+    ViewCamera c;
+    c.eye = lightAnchor(m_doc->rig(), f, l);
+    const glm::dvec3 dir = glm::normalize(l.direction);
+    const double focus = std::max(glm::length(f.center - c.eye), 1e-3 * f.radius);
+    c.target = c.eye + dir * focus;
+    c.up = std::abs(dir.y) > 0.99 ? glm::dvec3(0, 0, -1) : glm::dvec3(0, 1, 0);
+    c.yfovDeg = std::clamp(2.0 * l.cone.outer, 1.0, 150.0);  // the cone fills the view vertically
+    setCamera(c);
+    emit statusMessage(tr("Looking through %1").arg(l.name));
+}
+
+void Viewport::mousePressEvent(QMouseEvent* event) {
+    m_pressPos = m_lastPos = event->position();
+    m_moved = false;
+    m_shiftPress = false;
+    if (event->button() == Qt::LeftButton) {
+        if (event->modifiers() & Qt::ShiftModifier) {
+            m_nav = Navigation::Pan;  // a Shift+click without motion aims (see release)
+            m_shiftPress = true;
+        } else if (m_interaction->press(projector(), event->position(), event->modifiers())) {
+            m_nav = Navigation::Gizmo;
+        } else {
+            m_nav = Navigation::Orbit;
+        }
+    } else if (event->button() == Qt::MiddleButton) {
+        m_nav = Navigation::Pan;
+    } else {
+        QOpenGLWidget::mousePressEvent(event);
+        return;
+    }
+    event->accept();
+}
+
+void Viewport::mouseMoveEvent(QMouseEvent* event) {
+    const QPointF pos = event->position();
+    const QPointF delta = pos - m_lastPos;
+    m_lastPos = pos;
+    if (QLineF(pos, m_pressPos).length() >= GizmoInteraction::kDragThreshold) m_moved = true;
+    const double h = std::max(1, height());
+    switch (m_nav) {
+    case Navigation::None: {
+        // Hover feedback: a hand over a light or a selected spot's cone edge.
+        const ScreenProjector p = projector();
+        const bool over = m_interaction->pickConeEdge(p, pos) >= 0 || m_interaction->pickLight(p, pos) >= 0;
+        setCursor(over ? Qt::PointingHandCursor : Qt::ArrowCursor);
+        return;
+    }
+    case Navigation::Gizmo: m_interaction->move(projector(), pos, event->modifiers()); break;
+    case Navigation::Orbit:
+        if (!m_moved) return;
+        m_camera.orbit(-delta.x() * kOrbitDegreesPerPixel, delta.y() * kOrbitDegreesPerPixel);
+        update();
+        break;
+    case Navigation::Pan:
+        if (!m_moved) return;
+        m_camera.pan(-delta.x() / h, delta.y() / h);
+        update();
+        break;
+    }
+    event->accept();
+}
+
+void Viewport::mouseReleaseEvent(QMouseEvent* event) {
+    const Navigation nav = std::exchange(m_nav, Navigation::None);
+    if (nav == Navigation::Gizmo) {
+        m_interaction->release();
+    } else if (nav == Navigation::Pan && m_shiftPress && !m_moved) {
+        QString message;
+        if (m_interaction->aimSelectedAt(projector(), event->position(), &message))
+            emit statusMessage(tr("Aimed the selected light(s) at the clicked point"));
+        else if (!message.isEmpty())
+            emit statusMessage(message);
+    } else if (nav == Navigation::Orbit && !m_moved && !(event->modifiers() & Qt::ControlModifier)) {
+        m_doc->setSelection({});  // a click on empty space clears the selection
+    }
+    event->accept();
+}
+
+void Viewport::wheelEvent(QWheelEvent* event) {
+    const double notches = event->angleDelta().y() / 120.0;
+    if (notches != 0.0) {
+        m_camera.dolly(std::pow(kWheelStep, notches));
+        update();
+    }
+    event->accept();
+}
+
+void Viewport::keyPressEvent(QKeyEvent* event) {
+    if (event->key() == Qt::Key_Escape && m_nav == Navigation::Gizmo) {
+        // Cancel the drag: undo what it did so far (it is one merged step).
+        m_interaction->release();
+        m_nav = Navigation::None;
+        m_doc->undoStack()->undo();
+        return;
+    }
+    QOpenGLWidget::keyPressEvent(event);
+}
+
+QImage Viewport::renderThumbnail(const Rig& rig, const QSize& size) {
+    ViewCamera c = m_camera;
+    c.znear = c.zfar = 0.0;
+    c.frameAll(m_scene->model()->bounds, size.height() > 0 ? double(size.width()) / size.height() : 1.0);
+    QString error;
+    const QImage image = m_snapshots->render(rig, c, size, renderSettings(false), 2, &error);
+    if (image.isNull()) emit statusMessage(tr("No thumbnail: %1").arg(error));
+    return image;
+}
+
+QString Viewport::exportScreenshot(const ScreenshotOptions& options) {
+    RenderSettings s = renderSettings(options.gizmos);
+    s.transparentBackground = options.transparent;
+    if (!options.gizmos) s.selectedLights.clear();
+    QString error;
+    QImage image = m_snapshots->render(m_doc->renderRig(), m_camera, options.size, s, options.supersample, &error);
+    if (image.isNull()) return error.isEmpty() ? tr("rendering failed") : error;
+    if (options.format == "JPEG") image = image.convertToFormat(QImage::Format_RGB888);
+    if (!image.save(options.path, options.format.constData(), options.format == "JPEG" ? 92 : -1))
+        return tr("%1: could not write the image").arg(options.path);
+    return {};
+}
+
+}  // namespace lr

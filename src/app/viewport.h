@@ -1,0 +1,96 @@
+// The 3D viewport: a QOpenGLWidget (OpenGL 3.3 core) that owns a Renderer and shows the Scene's model lit by
+// the Document's rig (solo applied), with light gizmos. Camera: orbit (left drag), pan (middle drag or
+// Shift+left drag), dolly (wheel), frame (F), standard views, the model file's cameras, look through a spot
+// light. Lights: click a gizmo to select it, drag it (Ctrl/Alt: along the view axis), drag a selected spot's
+// cone edge, Shift+click the model to aim the selected lights (GizmoInteraction). GL resources are released
+// when the context goes away (QOpenGLContext::aboutToBeDestroyed).
+#pragma once
+
+#include "picking.h"
+#include "render/camera.h"
+
+#include <QOpenGLWidget>
+#include <memory>
+#include <optional>
+
+namespace lr {
+
+class Document;
+class GizmoInteraction;
+struct Rig;
+class Scene;
+class SnapshotRenderer;
+class ViewSettings;
+struct RenderSettings;
+struct ScreenshotOptions;
+struct ViewportRenderer;
+
+class Viewport : public QOpenGLWidget {
+    Q_OBJECT
+public:
+    Viewport(Document* document, Scene* scene, ViewSettings* settings, QWidget* parent = nullptr);
+    ~Viewport() override;
+
+    // Requests OpenGL 3.3 core (with a depth buffer and MSAA) for every context; call before QApplication.
+    static void setDefaultSurfaceFormat();
+
+    const ViewCamera& camera() const { return m_camera; }
+    void setCamera(const ViewCamera& camera);
+    ScreenProjector projector() const;  // widget pixels, the current camera
+    std::optional<QPointF> lightScreenPosition(int row) const;
+    GizmoInteraction* interaction() const { return m_interaction.get(); }
+    bool hasRenderedFrame() const { return m_framesRendered > 0; }
+    QString lastError() const { return m_error; }
+
+    // Offscreen renders of the current model with the current camera (same pixels as the viewport).
+    QImage renderThumbnail(const Rig& rig, const QSize& size);
+    QString exportScreenshot(const ScreenshotOptions& options);  // error text, "" on success
+
+public slots:
+    void frameAll();
+    void frameSelectionOrAll();
+    void setStandardView(const QString& name);
+    void setModelCamera(int index);
+    void lookThroughLight(int row);
+
+signals:
+    void frameRendered(double gpuMs, double cpuMs);
+    void firstFrame();
+    void statusMessage(const QString& text);
+
+protected:
+    void initializeGL() override;
+    void resizeGL(int w, int h) override;
+    void paintGL() override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
+
+private:
+    enum class Navigation { None, Orbit, Pan, Gizmo };
+    void releaseGL();
+    RenderSettings renderSettings(bool gizmos) const;
+    void onModelChanged();
+    double aspect() const;
+
+    Document* m_doc;
+    Scene* m_scene;
+    ViewSettings* m_settings;
+    std::unique_ptr<ViewportRenderer> m_gl;  // everything that needs the GL context
+    std::unique_ptr<GizmoInteraction> m_interaction;
+    std::unique_ptr<SnapshotRenderer> m_snapshots;
+    ViewCamera m_camera;
+    bool m_cameraFramed = false;
+    bool m_modelDirty = true;
+    bool m_rigDirty = true;
+    Navigation m_nav = Navigation::None;
+    QPointF m_pressPos, m_lastPos;
+    bool m_moved = false;
+    bool m_shiftPress = false;
+    int m_framesRendered = 0;
+    QString m_error;
+};
+
+}  // namespace lr

@@ -1,0 +1,230 @@
+// The Properties dock shows exactly the fields a light's type and models use, for every combination of
+// type × falloff model × cone model; edits apply to every selected light as one undo step; invalid input
+// is refused with a reason and never stored.
+#include "app/numberedit.h"
+#include "app/propertiesdock.h"
+#include "app/propertyfields.h"
+#include "editor/document.h"
+
+#include <QLineEdit>
+#include <QSet>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTest>
+
+using namespace lr;
+
+namespace {
+
+// The rule of the rig format (issue: "only the fields a light's type and models use"), written out here
+// independently of the dock's own propertyShown().
+QSet<QString> expectedFields(LightType type, FalloffModel falloff, ConeModel cone) {
+    QSet<QString> f{"name", "type", "enabled", "color", "temperature", "intensity"};
+    const bool positioned = type == LightType::Point || type == LightType::Spot;
+    if (positioned) {
+        f += {"position", "falloffModel"};
+        switch (falloff) {
+        case FalloffModel::None: break;
+        case FalloffModel::RangePower: f += {"falloffRange", "falloffExponent"}; break;
+        case FalloffModel::InversePolynomial:
+            f += {"falloffConstant", "falloffLinear", "falloffQuadratic", "falloffRange"};
+            break;
+        case FalloffModel::RangeQuadratic: f.insert("falloffRange"); break;
+        case FalloffModel::InverseSquare: f.insert("falloffRange"); break;
+        }
+    }
+    if (type != LightType::Point) f += "direction";
+    if (type == LightType::Spot) {
+        f += "coneModel";
+        switch (cone) {
+        case ConeModel::AnglePower: f += {"coneOuter", "coneExponent"}; break;
+        case ConeModel::Smooth: f += {"coneInner", "coneOuter", "coneExponent"}; break;
+        case ConeModel::Hard: f.insert("coneOuter"); break;
+        }
+    }
+    if (type == LightType::Rim) f += "rimExponent";
+    else f += {"diffuse", "specular", "ambient"};
+    return f;
+}
+
+const QStringList kAllFields{"name",          "type",          "enabled",         "color",        "temperature",
+                             "intensity",     "position",      "direction",       "falloffModel", "falloffRange",
+                             "falloffExponent", "falloffConstant", "falloffLinear", "falloffQuadratic", "coneModel",
+                             "coneInner",     "coneOuter",     "coneExponent",    "diffuse",      "specular",
+                             "ambient",       "rimExponent"};
+
+QSet<QString> visibleFields(PropertiesDock& dock) {
+    QSet<QString> out;
+    for (const QString& name : kAllFields) {
+        auto* w = dock.findChild<QWidget*>(name);
+        if (!w) qFatal("no field widget %s", qPrintable(name));
+        if (w->isVisibleTo(&dock)) out.insert(name);
+    }
+    return out;
+}
+
+QString describe(const QSet<QString>& s) {
+    QStringList l(s.begin(), s.end());
+    l.sort();
+    return l.join(QLatin1Char(' '));
+}
+
+}  // namespace
+
+class TestPropertiesDock : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
+
+    void everyField_hasAWidget() {
+        Document doc;
+        PropertiesDock dock(&doc);
+        for (LightProperty p : propertyRows()) QVERIFY2(dock.field(p), qPrintable(propertyFieldName(p)));
+        QCOMPARE(propertyRows().size(), kAllFields.size());
+    }
+
+    void showsExactlyTheUsedFields() {
+        Document doc;
+        PropertiesDock dock(&doc);
+        int combinations = 0;
+        for (int t = 0; t < enumCount<LightType>(); ++t) {
+            const auto type = LightType(t);
+            const bool positioned = type == LightType::Point || type == LightType::Spot;
+            for (int fm = 0; fm < enumCount<FalloffModel>(); ++fm) {
+                if (!positioned && fm > 0) continue;  // no falloff: one combination
+                for (int cm = 0; cm < enumCount<ConeModel>(); ++cm) {
+                    if (type != LightType::Spot && cm > 0) continue;
+                    QVERIFY(doc.addLight(type));
+                    const int row = doc.lightCount() - 1;
+                    QString error;
+                    if (positioned)
+                        QVERIFY2(doc.setLightValue({row}, LightProperty::FalloffModel, toString(FalloffModel(fm)), &error),
+                                 qPrintable(error));
+                    if (type == LightType::Spot)
+                        QVERIFY2(doc.setLightValue({row}, LightProperty::ConeModel, toString(ConeModel(cm)), &error),
+                                 qPrintable(error));
+                    doc.setSelectedRows({row}, row);
+                    const Light& l = doc.light(row);
+                    const QSet<QString> want = expectedFields(l.type, l.falloff.model, l.cone.model);
+                    const QSet<QString> got = visibleFields(dock);
+                    QVERIFY2(got == want, qPrintable(QStringLiteral("%1/%2/%3: shown [%4], expected [%5]")
+                                                         .arg(toString(type), toString(FalloffModel(fm)),
+                                                              toString(ConeModel(cm)), describe(got), describe(want))));
+                    ++combinations;
+                }
+            }
+        }
+        QCOMPARE(combinations, 5 * 3 + 5 + 1 + 1);  // spot, point, directional, rim
+    }
+
+    void switchingModels_showsAndHidesFields() {
+        Document doc;
+        PropertiesDock dock(&doc);
+        QVERIFY(doc.addLight(LightType::Spot));
+        doc.setSelectedRows({0}, 0);
+        QVERIFY(doc.setLightValue({0}, LightProperty::ConeModel, QStringLiteral("hard")));
+        QVERIFY(!dock.field(LightProperty::ConeInner)->isVisibleTo(&dock));
+        QVERIFY(doc.setLightValue({0}, LightProperty::ConeModel, QStringLiteral("smooth")));
+        QVERIFY(dock.field(LightProperty::ConeInner)->isVisibleTo(&dock));
+        // Undo hides it again: the dock follows the document, not its own state.
+        doc.undoStack()->undo();
+        QVERIFY(!dock.field(LightProperty::ConeInner)->isVisibleTo(&dock));
+    }
+
+    void noSelection_showsNoFields() {
+        Document doc;
+        PropertiesDock dock(&doc);
+        QVERIFY(doc.addLight(LightType::Point));
+        doc.setSelectedRows({});
+        QVERIFY(visibleFields(dock).isEmpty());
+    }
+
+    void multiSelection_showsCommonFields_andEditsAllInOneStep() {
+        Document doc;
+        PropertiesDock dock(&doc);
+        dock.show();
+        QVERIFY(doc.addLight(LightType::Point));
+        QVERIFY(doc.addLight(LightType::Spot));
+        doc.setSelectedRows({0, 1}, 1);
+        const QSet<QString> got = visibleFields(dock);
+        QVERIFY(got.contains("position"));
+        QVERIFY(!got.contains("direction"));   // the point light has none
+        QVERIFY(!got.contains("coneModel"));
+        QVERIFY(!dock.field(LightProperty::Name)->isEnabled());  // one name per light
+
+        auto* intensity = dock.findChild<QWidget*>("intensity")->findChild<NumberEdit*>();
+        QVERIFY(intensity);
+        const int before = doc.undoStack()->count();
+        intensity->setFocus();
+        intensity->selectAll();
+        QTest::keyClicks(intensity, "7.5");
+        QTest::keyClick(intensity, Qt::Key_Return);
+        QCOMPARE(doc.light(0).intensity, 7.5);
+        QCOMPARE(doc.light(1).intensity, 7.5);
+        QCOMPARE(doc.undoStack()->count(), before + 1);
+        doc.undoStack()->undo();
+        QVERIFY(doc.light(0).intensity != 7.5 && doc.light(1).intensity != 7.5);
+    }
+
+    void spinSteps_mergeIntoOneStep() {
+        Document doc;
+        PropertiesDock dock(&doc);
+        dock.show();
+        QVERIFY(doc.addLight(LightType::Spot));
+        doc.setSelectedRows({0}, 0);
+        auto* outer = qobject_cast<NumberEdit*>(dock.field(LightProperty::ConeOuter));
+        QVERIFY(outer);
+        const double start = doc.light(0).cone.outer;
+        const int before = doc.undoStack()->count();
+        outer->setFocus();
+        for (int i = 0; i < 5; ++i) QTest::keyClick(outer, Qt::Key_Up);
+        QTest::keyClick(outer, Qt::Key_Return);  // editingFinished ends the gesture
+        QVERIFY(doc.light(0).cone.outer > start);
+        QCOMPARE(doc.undoStack()->count(), before + 1);
+        doc.undoStack()->undo();
+        QCOMPARE(doc.light(0).cone.outer, start);
+    }
+
+    void invalidInput_isRefusedWithAReason() {
+        Document doc;
+        PropertiesDock dock(&doc);
+        dock.show();
+        QVERIFY(doc.addLight(LightType::Spot));
+        doc.setSelectedRows({0}, 0);
+        const QByteArray before = QByteArray::number(doc.light(0).cone.outer);
+        const int steps = doc.undoStack()->count();
+
+        // Out of the format's range (0 < outer <= 90): the keystroke is refused in place.
+        auto* outer = qobject_cast<NumberEdit*>(dock.field(LightProperty::ConeOuter));
+        QSignalSpy rejected(outer, &NumberEdit::rejected);
+        outer->setFocus();
+        outer->selectAll();
+        QTest::keyClicks(outer, "95");
+        QTest::keyClick(outer, Qt::Key_Return);
+        QVERIFY(rejected.count() > 0);
+        QVERIFY(!dock.message().isEmpty());
+        QCOMPARE(QByteArray::number(doc.light(0).cone.outer), before);
+
+        // In range on its own but inconsistent with the light (inner > outer): refused by the document.
+        auto* inner = qobject_cast<NumberEdit*>(dock.field(LightProperty::ConeInner));
+        inner->setFocus();
+        inner->selectAll();
+        QTest::keyClicks(inner, QByteArray::number(doc.light(0).cone.outer + 10.0));
+        QTest::keyClick(inner, Qt::Key_Return);
+        QVERIFY(doc.light(0).cone.inner <= doc.light(0).cone.outer);
+        QVERIFY(dock.message().contains(QLatin1String("inner"), Qt::CaseInsensitive) ||
+                dock.message().contains(QLatin1String("outer"), Qt::CaseInsensitive));
+        QCOMPARE(doc.undoStack()->count(), steps);
+        QCOMPARE(inner->value(), doc.light(0).cone.inner);  // the field shows the stored value again
+
+        // Not a number at all.
+        auto* range = dock.field(LightProperty::FalloffRange)->findChild<NumberEdit*>();
+        range->setFocus();
+        range->selectAll();
+        QTest::keyClicks(range, "abc");
+        QVERIFY(!range->text().contains(QLatin1String("abc")));
+    }
+};
+
+QTEST_MAIN(TestPropertiesDock)
+#include "tst_propertiesdock.moc"
