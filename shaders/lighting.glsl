@@ -14,7 +14,7 @@
 //   LR_LIGHT_TEXELS: RGBA32F texels per light in the light buffer (layout in loadLight below).
 // Code for absent features is not compiled, so a scene pays only for what it uses.
 
-const float kMinDenominator = 1e-4;  // floor of d² and of the inverse-polynomial denominator
+const float kMinDenominator = 1e-4;  // floor of d^2 and of the inverse-polynomial denominator
 const float kMinConeWidth = 1e-7;    // narrowest smooth-cone width treated as a smooth edge
 const float kFloatMax = 3.402823466e+38;
 
@@ -93,7 +93,7 @@ float falloffInverseSquare(float d, float range) {
     return w / d2;
 }
 
-// ---- spot cone s(cosθ), cosθ = dot(-L, spotDirection) ----
+// ---- spot cone s(cos(theta)), cos(theta) = dot(-L, spotDirection) ----
 
 float coneAnglePower(float cosTheta, float outer, float exponent) {
     float theta = safeAcos(cosTheta);
@@ -166,9 +166,9 @@ struct ShadeLight {
     int type;
     vec3 position;   // view space (point, spot)
     vec3 direction;  // view space, unit: where the light travels (spot, directional, rim)
-    vec3 color;      // effective colour × intensity
-    vec3 specular;   // Sc × intensity
-    vec3 ambient;    // Ac × intensity
+    vec3 color;      // effective colour * intensity
+    vec3 specular;   // Sc * intensity
+    vec3 ambient;    // Ac * intensity
     int falloff;
     float range, falloffExponent, constant, linear, quadratic;
     int cone;

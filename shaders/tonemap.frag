@@ -19,7 +19,7 @@ vec3 encode(vec3 c) { return vec3(linearToSrgb(c.r), linearToSrgb(c.g), linearTo
 void main() {
     vec4 c = texelFetch(uHdr, ivec2(gl_FragCoord.xy), 0);
     float a = saturate(c.a);
-    // The scene was cleared to zero: an MSAA edge pixel holds coverage × radiance. Un-premultiply,
+    // The scene was cleared to zero: an MSAA edge pixel holds coverage * radiance. Un-premultiply,
     // tone map, then composite (tone mapping a blend of surface and nothing would darken edges).
     vec3 m = a > 0.0 ? mapped(c.rgb / a) : vec3(0.0);
     if (uTransparent)

@@ -1,5 +1,7 @@
 #include "cli.h"
 
+#include "sceneoptions.h"
+
 #include <QCoreApplication>
 #include <QGuiApplication>
 #include <QTextStream>
@@ -8,6 +10,7 @@
 namespace lr::cli {
 
 namespace {
+bool g_displayAvailable = true;
 struct Subcommand {
     const char* name;
     int (*fn)(const QStringList&);
@@ -18,8 +21,11 @@ const Subcommand kSubcommands[] = {
     {"format", runFormat, false},
     {"render", runRender, true},
     {"bench", runBench, true},
+    {"import-worker", runImportWorker, false},  // hidden: model/isolatedimport.h runs it
 };
 }  // namespace
+
+bool displayAvailable() { return g_displayAvailable; }
 
 QString subcommandOf(int argc, char** argv) {
     if (argc < 2) return {};
@@ -33,10 +39,16 @@ int run(const QString& subcommand, int argc, char** argv) {
     for (const Subcommand& s : kSubcommands) {
         if (subcommand != QLatin1String(s.name)) continue;
         std::unique_ptr<QCoreApplication> app;
-        if (s.needsGui)
+        if (s.needsGui) {
+            // Without a display the xcb platform aborts inside QGuiApplication's constructor: start on the
+            // offscreen platform instead, so the subcommand can still parse its arguments and say why it
+            // cannot render (displayAvailable()).
+            g_displayAvailable = haveDisplay();
+            if (!g_displayAvailable) qputenv("QT_QPA_PLATFORM", "offscreen");
             app = std::make_unique<QGuiApplication>(argc, argv);
-        else
+        } else {
             app = std::make_unique<QCoreApplication>(argc, argv);
+        }
         QCoreApplication::setApplicationName(QStringLiteral("lightrig"));
         QStringList args = QCoreApplication::arguments();
         args.removeFirst();  // program

@@ -14,9 +14,14 @@ QString subcommandOf(int argc, char** argv);
 // Runs a subcommand with a QGuiApplication or QCoreApplication of its own; `args` excludes argv[0].
 int run(const QString& subcommand, int argc, char** argv);
 
+// False when a GUI subcommand started without DISPLAY/WAYLAND_DISPLAY/QT_QPA_PLATFORM (it then runs on
+// the offscreen platform, which has no OpenGL here): it should fail with "needs an X display".
+bool displayAvailable();
+
 int runValidate(const QStringList& args);  // validate.cpp
 int runFormat(const QStringList& args);    // validate.cpp
 int runRender(const QStringList& args);    // render.cpp
 int runBench(const QStringList& args);     // bench.cpp
+int runImportWorker(const QStringList& args);  // importworker.cpp (hidden, see model/isolatedimport.h)
 
 }  // namespace lr::cli

@@ -3,6 +3,5 @@
 #include <QTextStream>
 namespace lr::cli {
 static int pending(const char* what) { QTextStream(stderr) << "lightrig: " << what << " is not implemented yet\n"; return Failed; }
-int runRender(const QStringList&) { return pending("render"); }
 int runBench(const QStringList&) { return pending("bench"); }
 }

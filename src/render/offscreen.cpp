@@ -154,6 +154,18 @@ QImage OffscreenRenderer::renderImage(const ViewCamera& camera, QSize size, cons
     return out;
 }
 
+bool OffscreenRenderer::renderFrame(const ViewCamera& camera, QSize size, const RenderSettings& settings,
+                                    QString* error) {
+    if (!makeCurrent()) return fail(error, QStringLiteral("no OpenGL context"));
+    if (size.isEmpty() || size.width() > maxTileSize() || size.height() > maxTileSize())
+        return fail(error, QStringLiteral("frame size %1x%2 must be within one tile (%3)")
+                               .arg(size.width()).arg(size.height()).arg(maxTileSize()));
+    if (!ensureTarget(size, error)) return false;
+    if (!m_renderer.render(camera, size, settings, m_fbo)) return fail(error, m_renderer.lastError());
+    m_gl.glFinish();
+    return true;
+}
+
 bool OffscreenRenderer::renderRadiance(const ViewCamera& camera, QSize size, const RenderSettings& settings,
                                        FloatImage* out, QString* error) {
     if (!makeCurrent()) return fail(error, QStringLiteral("no OpenGL context"));

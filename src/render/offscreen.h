@@ -39,6 +39,8 @@ public:
     // A null image on failure, *error saying why.
     QImage renderImage(const ViewCamera& camera, QSize size, const RenderSettings& settings, int supersample,
                        QString* error);
+    // One frame into an internal target of `size` (one tile), waited for with glFinish: for timing.
+    bool renderFrame(const ViewCamera& camera, QSize size, const RenderSettings& settings, QString* error);
     // Linear radiance before exposure and tone mapping (RGBA32F target, one tile: size <= maxTileSize()).
     bool renderRadiance(const ViewCamera& camera, QSize size, const RenderSettings& settings, FloatImage* out,
                         QString* error);

@@ -1,0 +1,156 @@
+#include "sceneoptions.h"
+
+#include "core/lighting.h"
+#include "core/rigjson.h"
+#include "model/modelloader.h"
+
+#include <QRegularExpression>
+#include <algorithm>
+#include <cmath>
+
+namespace lr::cli {
+
+SceneOptionSet::SceneOptionSet()
+    : rig(QStringLiteral("rig"),
+          QStringLiteral("Rig file (.json). Default: the model's own lights when it has some, else the default rig."),
+          QStringLiteral("RIG")),
+      cameraIndex(QStringLiteral("camera-index"), QStringLiteral("Use camera N of the model file (from 0)."),
+                  QStringLiteral("N")),
+      view(QStringLiteral("view"),
+           QStringLiteral("Standard view framing the model: %1. Default: the model's camera 0 if it has one, "
+                          "else three-quarter.")
+               .arg(standardViewNames().join(QStringLiteral(", "))),
+           QStringLiteral("NAME")),
+      size(QStringLiteral("size"), QStringLiteral("Image size in pixels (default 1280x720)."), QStringLiteral("WxH")),
+      quality(QStringLiteral("quality"),
+              QStringLiteral("Quality tier: %1 (default exact).").arg(allowedNames<Quality>()), QStringLiteral("Q")),
+      exposure(QStringLiteral("exposure"), QStringLiteral("Exposure in EV: radiance is scaled by 2^EV (default 0)."),
+               QStringLiteral("EV")),
+      toneMap(QStringLiteral("tonemap"), QStringLiteral("Tone map: %1 (default clamp).").arg(allowedNames<ToneMap>()),
+              QStringLiteral("OP")) {}
+
+void SceneOptionSet::addTo(QCommandLineParser& parser) const {
+    parser.addOptions({rig, cameraIndex, view, size, quality, exposure, toneMap});
+}
+
+std::optional<QSize> parseSize(const QString& text, int maxSide) {
+    static const QRegularExpression re(QStringLiteral("^(\\d{1,6})[xX](\\d{1,6})$"));
+    const QRegularExpressionMatch m = re.match(text.trimmed());
+    if (!m.hasMatch()) return std::nullopt;
+    const int w = m.captured(1).toInt(), h = m.captured(2).toInt();
+    if (w < 1 || h < 1 || w > maxSide || h > maxSide) return std::nullopt;
+    return QSize(w, h);
+}
+
+std::optional<SceneOptions> SceneOptionSet::read(const QCommandLineParser& p, QString* usageError,
+                                                 bool qualityList) const {
+    SceneOptions o;
+    auto bad = [&](const QString& message) {
+        *usageError = message;
+        return std::nullopt;
+    };
+    o.rigPath = p.value(rig);
+    if (p.isSet(rig) && o.rigPath.isEmpty()) return bad(QStringLiteral("--rig needs a file name"));
+    if (p.isSet(cameraIndex) && p.isSet(view)) return bad(QStringLiteral("--camera-index and --view exclude each other"));
+    if (p.isSet(cameraIndex)) {
+        bool ok = false;
+        const int n = p.value(cameraIndex).toInt(&ok);
+        if (!ok || n < 0)
+            return bad(QStringLiteral("--camera-index must be a whole number >= 0, got '%1'").arg(p.value(cameraIndex)));
+        o.cameraIndex = n;
+    }
+    if (p.isSet(view)) {
+        o.view = p.value(view);
+        if (!standardViewNames().contains(o.view))
+            return bad(QStringLiteral("--view must be one of %1, got '%2'")
+                           .arg(standardViewNames().join(QStringLiteral(", ")), o.view));
+    }
+    if (p.isSet(size)) {
+        const auto s = parseSize(p.value(size));
+        if (!s) return bad(QStringLiteral("--size must be WxH with sides 1..32768, got '%1'").arg(p.value(size)));
+        o.size = *s;
+    }
+    if (p.isSet(quality)) {
+        const QStringList names = qualityList ? p.value(quality).split(QLatin1Char(',')) : QStringList{p.value(quality)};
+        o.qualities.clear();
+        for (const QString& name : names) {
+            const auto q = fromString<Quality>(name.trimmed());
+            if (!q)
+                return bad(QStringLiteral("--quality must be %1%2, got '%3'")
+                               .arg(allowedNames<Quality>(), qualityList ? QStringLiteral(" (or a comma list)") : QString(),
+                                    p.value(quality)));
+            if (std::find(o.qualities.begin(), o.qualities.end(), *q) == o.qualities.end()) o.qualities.push_back(*q);
+        }
+        o.quality = o.qualities.front();
+    }
+    if (p.isSet(exposure)) {
+        bool ok = false;
+        o.exposureEV = p.value(exposure).toDouble(&ok);
+        if (!ok || !std::isfinite(o.exposureEV) || std::abs(o.exposureEV) > 60.0)
+            return bad(QStringLiteral("--exposure must be a number of EV in -60..60, got '%1'").arg(p.value(exposure)));
+    }
+    if (p.isSet(toneMap)) {
+        const auto t = fromString<ToneMap>(p.value(toneMap));
+        if (!t) return bad(QStringLiteral("--tonemap must be %1, got '%2'").arg(allowedNames<ToneMap>(), p.value(toneMap)));
+        o.toneMap = *t;
+    }
+    return o;
+}
+
+bool loadScene(const QString& modelPath, const SceneOptions& options, LoadedScene* scene, QString* error) {
+    ModelLoadResult loaded = loadModel(modelPath);
+    if (!loaded.ok()) {
+        *error = loaded.error.isEmpty() ? QStringLiteral("could not import %1").arg(modelPath) : loaded.error;
+        return false;
+    }
+    scene->model = loaded.model;
+    const Model& model = *scene->model;
+    if (!options.rigPath.isEmpty()) {
+        const RigReadResult r = readRigFile(options.rigPath);
+        if (!r.ok()) {
+            *error = r.errors.value(0, QStringLiteral("%1: cannot read the rig").arg(options.rigPath));
+            if (r.errors.size() > 1) *error += QStringLiteral(" (and %1 more errors)").arg(r.errors.size() - 1);
+            return false;
+        }
+        scene->rig = *r.rig;
+        scene->rigSource = options.rigPath;
+    } else if (!model.lights.lights.empty()) {
+        scene->rig = model.lights;
+        scene->rigSource = QStringLiteral("the model's lights");
+    } else {
+        scene->rig = defaultRig();
+        scene->rigSource = QStringLiteral("the default rig");
+    }
+    const double aspect = double(options.size.width()) / double(options.size.height());
+    const auto fromFile = [&](int index) {
+        const Camera& c = model.cameras[size_t(index)];
+        const double focus = glm::dot(model.bounds.center() - c.position,
+                                      lighting::safeNormalize(c.forward, glm::dvec3(0, 0, -1)));
+        scene->camera = fromModelCamera(c, focus > 0.0 ? focus : model.bounds.radius());
+        scene->cameraSource = QStringLiteral("camera %1 of the model").arg(index);
+    };
+    if (options.cameraIndex) {
+        if (*options.cameraIndex >= int(model.cameras.size())) {
+            *error = QStringLiteral("%1 has %2 camera(s); --camera-index %3 is out of range")
+                         .arg(modelPath)
+                         .arg(model.cameras.size())
+                         .arg(*options.cameraIndex);
+            return false;
+        }
+        fromFile(*options.cameraIndex);
+    } else if (options.view.isEmpty() && !model.cameras.empty()) {
+        fromFile(0);
+    } else {
+        const QString name = options.view.isEmpty() ? QStringLiteral("three-quarter") : options.view;
+        scene->camera = *standardView(name, model.bounds, aspect);
+        scene->cameraSource = QStringLiteral("view ") + name;
+    }
+    return true;
+}
+
+bool haveDisplay() {
+    return qEnvironmentVariableIsSet("DISPLAY") || qEnvironmentVariableIsSet("WAYLAND_DISPLAY") ||
+           qEnvironmentVariableIsSet("QT_QPA_PLATFORM");
+}
+
+}  // namespace lr::cli

@@ -1,0 +1,60 @@
+// The scene options shared by `lightrig render` and `lightrig bench`: which model, rig, camera, size,
+// quality, exposure and tone map; and loading the scene they describe (model, rig, camera).
+//   --rig RIG.json        without it: the model's own lights when it has some, else the default rig
+//   --camera-index N | --view NAME   default: the model's camera 0, else "three-quarter" framing all
+//   --size WxH (1280x720) --quality Q --exposure EV --tonemap clamp|reinhard|aces
+#pragma once
+
+#include "core/quality.h"
+#include "core/rig.h"
+#include "model/model.h"
+#include "render/camera.h"
+
+#include <QCommandLineOption>
+#include <QCommandLineParser>
+#include <QSize>
+#include <QString>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace lr::cli {
+
+struct SceneOptions {
+    QString rigPath;                // empty: model lights or the default rig
+    std::optional<int> cameraIndex;
+    QString view;                   // a standardViewNames() name, or empty
+    QSize size{1280, 720};
+    Quality quality = Quality::Exact;      // the first of `qualities`
+    std::vector<Quality> qualities{Quality::Exact};  // --quality A,B,... where a list is allowed (bench)
+    double exposureEV = 0.0;
+    ToneMap toneMap = ToneMap::Clamp;
+};
+
+struct SceneOptionSet {
+    QCommandLineOption rig, cameraIndex, view, size, quality, exposure, toneMap;
+    SceneOptionSet();
+    void addTo(QCommandLineParser& parser) const;
+    // The parsed values, or a usage error message (exit 2). qualityList: --quality takes a comma list.
+    std::optional<SceneOptions> read(const QCommandLineParser& parser, QString* usageError,
+                                     bool qualityList = false) const;
+};
+
+struct LoadedScene {
+    std::shared_ptr<Model> model;
+    Rig rig;
+    QString rigSource;  // "RIG.json", "the model's lights" or "the default rig"
+    ViewCamera camera;
+    QString cameraSource;  // "camera 0 of the model", "view three-quarter"
+};
+
+// Loads the model and the rig and picks the camera. False with a one-line reason (exit 1) on failure.
+bool loadScene(const QString& modelPath, const SceneOptions& options, LoadedScene* scene, QString* error);
+
+// "WxH" with both sides in 1..maxSide.
+std::optional<QSize> parseSize(const QString& text, int maxSide = 32768);
+
+// DISPLAY, WAYLAND_DISPLAY or an explicit QT_QPA_PLATFORM: a platform that may offer OpenGL.
+bool haveDisplay();
+
+}  // namespace lr::cli
