@@ -17,9 +17,11 @@ namespace {
 int parse(QCommandLineParser& parser, const QStringList& args, const QString& usage, const QString& about) {
     parser.setApplicationDescription(about);
     parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
-    const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")}, QStringLiteral("Show this help."));
+    const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},
+                                  QStringLiteral("Show this help."));
     parser.addOption(help);
-    parser.addPositionalArgument(QStringLiteral("FILE"), QStringLiteral("Rig files (.json)."), QStringLiteral("FILE..."));
+    parser.addPositionalArgument(QStringLiteral("FILE"), QStringLiteral("Rig files (.json)."),
+                                 QStringLiteral("FILE..."));
     QTextStream err(stderr);
     const QString name = QStringLiteral("lightrig ") + args.value(0);
     if (!parser.parse(args)) {
@@ -46,7 +48,9 @@ void print(QTextStream& out, const QStringList& lines) {
 // "FILE: path: reason" -> "FILE: warning: path: reason", so warnings after "FILE: ok" read as such.
 void printWarnings(QTextStream& out, const QString& file, const QStringList& warnings) {
     for (const QString& w : warnings)
-        out << (w.startsWith(file + QStringLiteral(": ")) ? file + QStringLiteral(": warning: ") + w.mid(file.size() + 2) : w)
+        out << (w.startsWith(file + QStringLiteral(": "))
+                    ? file + QStringLiteral(": warning: ") + w.mid(file.size() + 2)
+                    : w)
             << '\n';
 }
 
@@ -54,11 +58,12 @@ void printWarnings(QTextStream& out, const QString& file, const QStringList& war
 
 int runValidate(const QStringList& args) {
     QCommandLineParser parser;
-    if (const int rc = parse(parser, args, QStringLiteral("lightrig validate [options] FILE..."),
-                             QStringLiteral("Checks LightRig rig files (docs/rig-format.md) and lists every error "
-                                            "as\nFILE: json.path: reason. Prints FILE: ok for a valid file, then "
-                                            "its warnings\n(FILE: warning: json.path: reason, e.g. unknown keys).\n"
-                                            "Exit status: 0 all files are valid, 1 a file is not, 2 usage error."));
+    if (const int rc =
+            parse(parser, args, QStringLiteral("lightrig validate [options] FILE..."),
+                  QStringLiteral("Checks LightRig rig files (docs/rig-format.md) and lists every error "
+                                 "as\nFILE: json.path: reason. Prints FILE: ok for a valid file, then "
+                                 "its warnings\n(FILE: warning: json.path: reason, e.g. unknown keys).\n"
+                                 "Exit status: 0 all files are valid, 1 a file is not, 2 usage error."));
         rc >= 0)
         return rc;
     QTextStream out(stdout);
@@ -78,15 +83,17 @@ int runValidate(const QStringList& args) {
 
 int runFormat(const QStringList& args) {
     QCommandLineParser parser;
-    const QCommandLineOption check(QStringLiteral("check"),
-                                   QStringLiteral("Change nothing; exit with 1 if a file is not in canonical form."));
+    const QCommandLineOption check(
+        QStringLiteral("check"),
+        QStringLiteral("Change nothing; exit with 1 if a file is not in canonical form."));
     parser.addOption(check);
-    if (const int rc = parse(parser, args, QStringLiteral("lightrig format [--check] FILE..."),
-                             QStringLiteral("Rewrites valid rig files in the canonical form (stable key order, only "
-                                            "the fields\neach light uses, shortest exact numbers), atomically. "
-                                            "Invalid files and files with\nunknown keys are left alone.\nExit "
-                                            "status: 0 done, 1 a file is invalid, not canonical (--check) or not "
-                                            "writable,\n2 usage error."));
+    if (const int rc =
+            parse(parser, args, QStringLiteral("lightrig format [--check] FILE..."),
+                  QStringLiteral("Rewrites valid rig files in the canonical form (stable key order, only "
+                                 "the fields\neach light uses, shortest exact numbers), atomically. "
+                                 "Invalid files and files with\nunknown keys are left alone.\nExit "
+                                 "status: 0 done, 1 a file is invalid, not canonical (--check) or not "
+                                 "writable,\n2 usage error."));
         rc >= 0)
         return rc;
     QTextStream out(stdout);
@@ -100,7 +107,8 @@ int runFormat(const QStringList& args) {
             continue;
         }
         QFile in(file);
-        const QByteArray current = in.open(QIODevice::ReadOnly) ? in.read(kMaxRigFileBytes + 1) : QByteArray();
+        const QByteArray current =
+            in.open(QIODevice::ReadOnly) ? in.read(kMaxRigFileBytes + 1) : QByteArray();
         const QByteArray canonical = writeRigJson(*r.rig);
         if (current == canonical) {
             out << file << ": ok (canonical)\n";
@@ -108,7 +116,8 @@ int runFormat(const QStringList& args) {
             out << file << ": not in canonical form (run: lightrig format " << file << ")\n";
             rc = Failed;
         } else if (!r.warnings.isEmpty()) {
-            out << file << ": not formatted: formatting would drop the unknown keys above; remove them first\n";
+            out << file
+                << ": not formatted: formatting would drop the unknown keys above; remove them first\n";
             rc = Failed;
         } else if (QString error; !saveRigFile(*r.rig, file, &error)) {
             out << error << '\n';

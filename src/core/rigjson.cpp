@@ -11,7 +11,9 @@
 
 // The presets are compiled into lightrig_core (a static library); make sure their resource is registered
 // even where the linker did not keep the automatic initialiser. Registering twice is harmless.
-static void initPresetResources() { Q_INIT_RESOURCE(lightrig_presets); }
+static void initPresetResources() {
+    Q_INIT_RESOURCE(lightrig_presets);
+}
 
 namespace lr {
 
@@ -54,7 +56,8 @@ RigReadResult readRigFile(const QString& filePath) {
     QFile file(filePath);
     if (!file.open(QIODevice::ReadOnly))
         return fileError(filePath, QStringLiteral("cannot open: %1").arg(file.errorString()));
-    if (!file.isSequential() && file.size() > kMaxRigFileBytes) return fileError(filePath, tooLarge(file.size()));
+    if (!file.isSequential() && file.size() > kMaxRigFileBytes)
+        return fileError(filePath, tooLarge(file.size()));
     const QByteArray data = file.read(kMaxRigFileBytes + 1);  // one byte more shows "too large" on pipes
     if (file.error() != QFileDevice::NoError)
         return fileError(filePath, QStringLiteral("cannot read: %1").arg(file.errorString()));
@@ -69,7 +72,8 @@ bool saveRigFile(const Rig& rig, const QString& filePath, QString* error) {
     const QByteArray data = writeRigJson(rig);
     // Never write a file that would not load: the rig in memory may hold values the editor let through.
     const RigReadResult check = readRigJson(data, filePath);
-    if (!check.ok()) return fail(QStringLiteral("the rig is invalid: ") + check.errors.first().mid(filePath.size() + 2));
+    if (!check.ok())
+        return fail(QStringLiteral("the rig is invalid: ") + check.errors.first().mid(filePath.size() + 2));
     QSaveFile file(filePath);
     if (!file.open(QIODevice::WriteOnly)) return fail(file.errorString());
     // Flush and check before commit(): Qt 6.4's commit() can report success after a short write (a full
@@ -92,7 +96,9 @@ QStringList builtinPresetNames() {
     return names;
 }
 
-QString builtinPresetPath(const QString& name) { return kPresetDir + QLatin1Char('/') + name + QStringLiteral(".json"); }
+QString builtinPresetPath(const QString& name) {
+    return kPresetDir + QLatin1Char('/') + name + QStringLiteral(".json");
+}
 
 RigReadResult readBuiltinPreset(const QString& name) {
     initPresetResources();
@@ -102,7 +108,8 @@ RigReadResult readBuiltinPreset(const QString& name) {
                                       .arg(builtinPresetNames().join(QStringLiteral(", "))));
     QFile file(builtinPresetPath(name));
     if (!file.open(QIODevice::ReadOnly))
-        return fileError(display, QStringLiteral("cannot open the built-in preset: %1").arg(file.errorString()));
+        return fileError(display,
+                         QStringLiteral("cannot open the built-in preset: %1").arg(file.errorString()));
     return readRigJson(file.readAll(), display);
 }
 

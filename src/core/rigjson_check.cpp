@@ -27,9 +27,9 @@ QString Interval::describe() const {
         s += QStringLiteral(" %1 %2").arg(minInclusive ? QStringLiteral(">=") : QStringLiteral(">"),
                                           bound(min));
     if (hasMax)
-        s += QStringLiteral("%1 %2 %3").arg(hasMin ? QStringLiteral(" and") : QString(),
-                                            maxInclusive ? QStringLiteral("<=") : QStringLiteral("<"),
-                                            bound(max));
+        s += QStringLiteral("%1 %2 %3")
+                 .arg(hasMin ? QStringLiteral(" and") : QString(),
+                      maxInclusive ? QStringLiteral("<=") : QStringLiteral("<"), bound(max));
     return s;
 }
 
@@ -57,7 +57,9 @@ void Checker::warning(const QString& path, const QString& reason) {
     m_warnings << QStringLiteral("%1: %2: %3").arg(m_file, path, reason);
 }
 
-void Checker::fileError(const QString& reason) { error(QString(), reason); }
+void Checker::fileError(const QString& reason) {
+    error(QString(), reason);
+}
 
 RigReadResult Checker::result(std::optional<Rig> rig) const {
     RigReadResult r;
@@ -92,7 +94,8 @@ std::optional<QString> Checker::name(const Value& v, const QString& path) {
     for (qsizetype i = 0; i < v.string.size(); ++i)
         if (!v.string.at(i).isLowSurrogate()) ++codePoints;
     if (codePoints > kMaxRigNameLength) {
-        error(path, QStringLiteral("must be at most %1 characters, got %2").arg(kMaxRigNameLength).arg(codePoints));
+        error(path,
+              QStringLiteral("must be at most %1 characters, got %2").arg(kMaxRigNameLength).arg(codePoints));
         return std::nullopt;
     }
     return v.string;
@@ -115,7 +118,8 @@ std::optional<glm::dvec3> Checker::vec3(const Value& v, const QString& path, con
 }
 
 std::optional<glm::dvec3> Checker::color(const Value& v, const QString& path) {
-    return vec3(v, path, nonNegative(kMaxRigIntensity), QStringLiteral("an RGB colour [r, g, b] (linear, >= 0)"));
+    return vec3(v, path, nonNegative(kMaxRigIntensity),
+                QStringLiteral("an RGB colour [r, g, b] (linear, >= 0)"));
 }
 
 std::optional<glm::dvec3> Checker::point(const Value& v, const QString& path) {
@@ -159,7 +163,8 @@ void ObjectView::reject(const char* key, const QString& reason) {
 void ObjectView::finish() {
     for (size_t i = 0; i < m_object.members.size(); ++i)
         if (!m_used[i] && !m_object.members[i].duplicate)
-            m_checker.warning(json::appendKey(m_path, m_object.members[i].key), QStringLiteral("unknown key (ignored)"));
+            m_checker.warning(json::appendKey(m_path, m_object.members[i].key),
+                              QStringLiteral("unknown key (ignored)"));
 }
 
 glm::dvec3 normalizeDirection(const glm::dvec3& v) {

@@ -23,8 +23,12 @@ struct Interval {
     QString describe() const;  // "a finite number > 0 and <= 90"
     bool contains(double v) const;
 };
-inline Interval positive(double max) { return {0.0, false, max, true}; }
-inline Interval nonNegative(double max) { return {0.0, true, max, true}; }
+inline Interval positive(double max) {
+    return {0.0, false, max, true};
+}
+inline Interval nonNegative(double max) {
+    return {0.0, true, max, true};
+}
 
 class Checker {
 public:
@@ -89,6 +93,15 @@ private:
     QString m_path;
     std::vector<bool> m_used;
 };
+
+// rigjson_models.cpp: a light's "falloff" and "cone" objects; nullopt when invalid (errors reported).
+std::optional<Falloff> readFalloff(Checker& c, const json::Value& v, const QString& path);
+std::optional<Cone> readCone(Checker& c, const json::Value& v, const QString& path);
+// Errors for keys of "falloff" or "cone" written on the light itself or in the other object. `light`
+// describes the light ("a point light") when `o` is the light object, with whether its type has a
+// falloff and a cone, so that the message can say "a directional light has no range".
+void rejectMisplaced(ObjectView& o, bool inFalloff, bool inCone, const QString& light = {},
+                     bool hasFalloff = true, bool hasCone = true);
 
 // Unit length to double precision: vectors already within 1e-12 of unit length are kept bit for bit, so
 // that load -> save -> load is exact; others are scaled (safely for tiny and huge components).

@@ -17,13 +17,15 @@ public:
         Document doc;
         if (m_data.startsWith("\xEF\xBB\xBF")) m_p += 3;  // a UTF-8 BOM (Windows editors) is tolerated
         if (const qsizetype bad = invalidUtf8At(m_data, m_p - m_data.constData()); bad >= 0)
-            return fail(doc, bad, QStringLiteral("not valid UTF-8 text (byte 0x%1; is this a binary file?)")
-                                      .arg(uchar(m_data[bad]), 2, 16, QLatin1Char('0')));
+            return fail(doc, bad,
+                        QStringLiteral("not valid UTF-8 text (byte 0x%1; is this a binary file?)")
+                            .arg(uchar(m_data[bad]), 2, 16, QLatin1Char('0')));
         if (const qsizetype nul = m_data.indexOf('\0'); nul >= 0)
             return fail(doc, nul, QStringLiteral("contains a NUL byte: not a text file"));
         skipSpace();
         if (m_p == m_end) {
-            doc.errors << QStringLiteral("the file is empty; a rig file is a JSON object {\"format\": \"lightrig\", ...}");
+            doc.errors << QStringLiteral(
+                "the file is empty; a rig file is a JSON object {\"format\": \"lightrig\", ...}");
             return doc;
         }
         if (parseValue(doc.root)) {
@@ -43,8 +45,10 @@ private:
         int line = 1, column = 1;
         for (qsizetype i = 0; i < at && i < m_data.size(); ++i) {
             const char c = m_data[i];
-            if (c == '\n') line++, column = 1;
-            else if ((uchar(c) & 0xC0) != 0x80) column++;  // count characters, not UTF-8 bytes
+            if (c == '\n')
+                line++, column = 1;
+            else if ((uchar(c) & 0xC0) != 0x80)
+                column++;  // count characters, not UTF-8 bytes
         }
         QString where = QStringLiteral("line %1, column %2").arg(line).arg(column);
         if (!m_syntaxPath.isEmpty()) where += QStringLiteral(" (in %1)").arg(m_syntaxPath);
@@ -106,7 +110,8 @@ private:
 
     bool literal(Value& out, const char* word, Value::Kind kind, bool b) {
         const qsizetype n = qsizetype(qstrlen(word));
-        if (m_end - m_p < n || QByteArrayView(m_p, n) != QByteArrayView(word, n)) return unexpected("a value");
+        if (m_end - m_p < n || QByteArrayView(m_p, n) != QByteArrayView(word, n))
+            return unexpected("a value");
         m_p += n;
         out.kind = kind;
         out.boolean = b;
@@ -123,7 +128,8 @@ private:
         if (*m_p == '-') ++m_p;
         if (m_p != m_end && *m_p == '0') {
             ++m_p;
-            if (m_p != m_end && *m_p >= '0' && *m_p <= '9') return error(QStringLiteral("numbers must not have leading zeros"));
+            if (m_p != m_end && *m_p >= '0' && *m_p <= '9')
+                return error(QStringLiteral("numbers must not have leading zeros"));
         } else if (!digits()) {
             m_p = start;  // report "-Infinity" or "-x" as a whole
             return unexpected("a value");
@@ -185,7 +191,8 @@ private:
                     char32_t low = 0;
                     if (m_end - m_p < 2 || m_p[0] != '\\' || m_p[1] != 'u' || ((m_p += 2), !hex4(low)) ||
                         low < 0xDC00 || low > 0xDFFF)
-                        return error(QStringLiteral("\\u escape: a high surrogate must be followed by a low one"));
+                        return error(
+                            QStringLiteral("\\u escape: a high surrogate must be followed by a low one"));
                     cp = 0x10000 + ((cp - 0xD800) << 10) + (low - 0xDC00);
                 } else if (cp >= 0xDC00 && cp <= 0xDFFF) {
                     return error(QStringLiteral("\\u escape: unpaired low surrogate"));
@@ -207,8 +214,10 @@ private:
         for (int i = 0; i < 4; ++i, ++m_p) {
             if (m_p == m_end) return unexpected("4 hex digits after \\u");
             const char c = *m_p;
-            const int v = c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10
-                        : c >= 'A' && c <= 'F' ? c - 'A' + 10 : -1;
+            const int v = c >= '0' && c <= '9'   ? c - '0'
+                          : c >= 'a' && c <= 'f' ? c - 'a' + 10
+                          : c >= 'A' && c <= 'F' ? c - 'A' + 10
+                                                 : -1;
             if (v < 0) return unexpected("4 hex digits after \\u");
             cp = cp * 16 + char32_t(v);
         }
@@ -217,7 +226,8 @@ private:
 
     bool parseContainer(Value& out, bool object) {
         out.kind = object ? Value::Kind::Object : Value::Kind::Array;
-        if (++m_depth > kMaxDepth) return error(QStringLiteral("nested deeper than %1 levels").arg(kMaxDepth));
+        if (++m_depth > kMaxDepth)
+            return error(QStringLiteral("nested deeper than %1 levels").arg(kMaxDepth));
         const char close = object ? '}' : ']';
         ++m_p;
         skipSpace();
@@ -240,7 +250,8 @@ private:
                 m.duplicate = isDuplicate(out.members, seen, m.key);
                 m_path.emplace_back(m.key);
                 if (m.duplicate)
-                    m_errors << QStringLiteral("%1: duplicate key; each key may appear only once").arg(currentPath());
+                    m_errors << QStringLiteral("%1: duplicate key; each key may appear only once")
+                                    .arg(currentPath());
                 if (!parseValue(m.value)) return false;
                 m_path.pop_back();
                 out.members.push_back(std::move(m));
@@ -263,7 +274,8 @@ private:
         return true;
     }
 
-    static bool isDuplicate(const std::vector<Member>& members, QHash<QString, qsizetype>& seen, const QString& key) {
+    static bool isDuplicate(const std::vector<Member>& members, QHash<QString, qsizetype>& seen,
+                            const QString& key) {
         constexpr size_t kLinear = 16;  // small objects: a scan; large ones (unknown data): a hash
         if (members.size() < kLinear) {
             for (const Member& m : members)
@@ -290,7 +302,9 @@ private:
 
 }  // namespace
 
-Document parse(const QByteArray& data) { return Parser(data).run(); }
+Document parse(const QByteArray& data) {
+    return Parser(data).run();
+}
 
 const Value* Value::find(QStringView key) const {
     for (const Member& m : members)

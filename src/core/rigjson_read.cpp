@@ -10,111 +10,11 @@ namespace lr {
 using json::Value;
 using rigjson::Checker;
 using rigjson::ObjectView;
+using rigjson::readCone;
+using rigjson::readFalloff;
+using rigjson::rejectMisplaced;
 
 namespace {
-
-QString quoted(const QString& s) { return QLatin1Char('"') + s + QLatin1Char('"'); }
-
-// Keys that belong in "falloff" or "cone" but were written on the light itself or in the other object.
-// `light` is the light's description ("a point light") when checking the light object, else empty.
-void rejectMisplaced(ObjectView& o, bool inFalloff, bool inCone, const QString& light = {},
-                     bool hasFalloff = true, bool hasCone = true) {
-    const auto reason = [&](const char* key, const char* where, bool has) {
-        if (has || light.isEmpty()) return QStringLiteral("belongs in \"%1\"").arg(QLatin1String(where));
-        return QStringLiteral("%1 has no %2 (it would belong in \"%3\")").arg(light, QLatin1String(key), QLatin1String(where));
-    };
-    if (!inFalloff)
-        for (const char* key : {"range", "constant", "linear", "quadratic"}) o.reject(key, reason(key, "falloff", hasFalloff));
-    if (!inCone)
-        for (const char* key : {"inner", "outer"}) o.reject(key, reason(key, "cone", hasCone));
-    if (!inFalloff && !inCone) o.reject("model", QStringLiteral("belongs in \"falloff\" or \"cone\""));
-}
-
-std::optional<Falloff> readFalloff(Checker& c, const Value& v, const QString& path) {
-    if (!c.isObject(v, path)) return std::nullopt;
-    ObjectView o(c, v, path);
-    Falloff f;
-    std::optional<FalloffModel> model;
-    if (const Value* m = o.take("model"))
-        model = c.enumValue<FalloffModel>(*m, o.path("model"));
-    else
-        c.error(o.path("model"), QStringLiteral("missing; one of %1").arg(allowedNames<FalloffModel>()));
-    const auto range = [&](const Value& x, const QString& p) { return c.number(x, p, rigjson::positive(kMaxRigLength)); };
-    const auto exponent = [&](const Value& x, const QString& p) { return c.number(x, p, rigjson::positive(kMaxRigExponent)); };
-    const auto term = [&](const Value& x, const QString& p) { return c.number(x, p, rigjson::nonNegative(kMaxRigLength)); };
-    const QString name = model ? quoted(toString(*model)) : QString();
-    const bool any = !model;  // unknown model: check the values of every falloff field, allow all
-    const bool needsRange = model == FalloffModel::RangePower || model == FalloffModel::RangeQuadratic;
-    const bool optionalRange = model == FalloffModel::InversePolynomial || model == FalloffModel::InverseSquare;
-    const bool polynomial = any || model == FalloffModel::InversePolynomial;
-
-    if (needsRange && !v.find(u"range"))
-        c.error(o.path("range"), QStringLiteral("missing; the %1 falloff needs a range > 0").arg(name));
-    if (any || needsRange || optionalRange)
-        o.read("range", f.range, range);
-    else
-        o.reject("range", QStringLiteral("the %1 falloff has no range").arg(name));
-    if (any || model == FalloffModel::RangePower)
-        o.read("exponent", f.exponent, exponent);
-    else
-        o.reject("exponent", QStringLiteral("the %1 falloff has no exponent (only \"range-power\" has one)").arg(name));
-    for (auto [key, out] : {std::pair{"constant", &f.constant}, {"linear", &f.linear}, {"quadratic", &f.quadratic}}) {
-        if (polynomial)
-            o.read(key, *out, term);
-        else
-            o.reject(key, QStringLiteral("the %1 falloff has no %2 term (only \"inverse-polynomial\" has)").arg(name, QLatin1String(key)));
-    }
-    if (model == FalloffModel::InversePolynomial && f.constant == 0.0 && f.linear == 0.0 && f.quadratic == 0.0)
-        c.error(path, QStringLiteral("constant, linear and quadratic are all 0: the light would be infinitely bright"));
-    rejectMisplaced(o, true, false);
-    o.finish();
-    if (!model) return std::nullopt;
-    f.model = *model;
-    return f;
-}
-
-std::optional<Cone> readCone(Checker& c, const Value& v, const QString& path) {
-    if (!c.isObject(v, path)) return std::nullopt;
-    ObjectView o(c, v, path);
-    Cone cone;
-    std::optional<ConeModel> model;
-    if (const Value* m = o.take("model"))
-        model = c.enumValue<ConeModel>(*m, o.path("model"));
-    else
-        c.error(o.path("model"), QStringLiteral("missing; one of %1").arg(allowedNames<ConeModel>()));
-    const QString name = model ? quoted(toString(*model)) : QString();
-    const auto angle = [&](const Value& x, const QString& p) { return c.number(x, p, rigjson::positive(90.0)); };
-    const auto exponent = [&](const Value& x, const QString& p) { return c.number(x, p, rigjson::positive(kMaxRigExponent)); };
-
-    bool outerOk = false, innerOk = false;
-    if (const Value* outer = o.take("outer")) {
-        if (const auto a = angle(*outer, o.path("outer"))) cone.outer = *a, outerOk = true;
-    } else {
-        c.error(o.path("outer"), QStringLiteral("missing; the cone's half-angle in degrees, 0 < outer <= 90"));
-    }
-    if (!model || model == ConeModel::Smooth) {
-        if (const Value* inner = o.take("inner")) {
-            if (const auto a = angle(*inner, o.path("inner"))) cone.inner = *a, innerOk = true;
-        } else if (model) {
-            c.error(o.path("inner"), QStringLiteral("missing; the \"smooth\" cone needs inner, 0 < inner <= outer"));
-        }
-        if (innerOk && outerOk && cone.inner > cone.outer)
-            c.error(o.path("inner"), QStringLiteral("must be <= outer (%1), got %2")
-                                         .arg(QString::fromLatin1(json::formatNumber(cone.outer)),
-                                              QString::fromLatin1(json::formatNumber(cone.inner))));
-    } else {
-        o.reject("inner", QStringLiteral("the %1 cone has no inner angle (only \"smooth\" has one)").arg(name));
-    }
-    if (model == ConeModel::Hard)
-        o.reject("exponent", QStringLiteral("the \"hard\" cone has no exponent"));
-    else
-        o.read("exponent", cone.exponent, exponent);
-    rejectMisplaced(o, false, true);
-    o.finish();
-    if (!model) return std::nullopt;
-    cone.model = *model;
-    return cone;
-}
 
 void readSpecular(Checker& c, const Value& v, const QString& path, Light& l) {
     if (v.isNumber()) {
@@ -163,13 +63,16 @@ std::optional<Light> readLight(Checker& c, const Value& v, const QString& path) 
             c.error(o.path("position"), QStringLiteral("missing; %1 needs a position [x, y, z]").arg(a));
         }
     } else {
-        o.reject("position", QStringLiteral("%1 has no position (only point and spot lights have one)").arg(a));
+        o.reject("position",
+                 QStringLiteral("%1 has no position (only point and spot lights have one)").arg(a));
     }
     if (is(&Light::usesDirection)) {
         if (const Value* d = o.take("direction")) {
             if (const auto dir = c.direction(*d, o.path("direction"))) l.direction = *dir;
         } else if (type) {
-            c.error(o.path("direction"), QStringLiteral("missing; %1 needs a direction [x, y, z], where its light travels").arg(a));
+            c.error(
+                o.path("direction"),
+                QStringLiteral("missing; %1 needs a direction [x, y, z], where its light travels").arg(a));
         }
     } else {
         o.reject("direction", QStringLiteral("a point light has no direction (it shines in all directions)"));
@@ -178,7 +81,8 @@ std::optional<Light> readLight(Checker& c, const Value& v, const QString& path) 
         if (const Value* f = o.take("falloff")) {
             if (const auto falloff = readFalloff(c, *f, o.path("falloff"))) l.falloff = *falloff;
         } else if (type) {
-            c.error(o.path("falloff"), QStringLiteral("missing; %1 needs a falloff, e.g. {\"model\": \"none\"}").arg(a));
+            c.error(o.path("falloff"),
+                    QStringLiteral("missing; %1 needs a falloff, e.g. {\"model\": \"none\"}").arg(a));
         }
     } else {
         o.reject("falloff", QStringLiteral("%1 has no falloff (only point and spot lights have one)").arg(a));
@@ -190,7 +94,8 @@ std::optional<Light> readLight(Checker& c, const Value& v, const QString& path) 
         o.reject("cone", QStringLiteral("%1 has no cone (only spot lights have one)").arg(a));
     }
     if (is(&Light::usesSurfaceModels)) {
-        o.read("diffuse", l.diffuse, [&](const Value& x, const QString& p) { return c.enumValue<DiffuseModel>(x, p); });
+        o.read("diffuse", l.diffuse,
+               [&](const Value& x, const QString& p) { return c.enumValue<DiffuseModel>(x, p); });
         if (const Value* s = o.take("specular")) readSpecular(c, *s, o.path("specular"), l);
         if (const Value* am = o.take("ambient")) l.ambient = c.color(*am, o.path("ambient"));
     } else {
@@ -202,7 +107,8 @@ std::optional<Light> readLight(Checker& c, const Value& v, const QString& path) 
             return c.number(x, p, rigjson::positive(kMaxRigExponent));
         });
     else
-        o.reject("exponent", QStringLiteral("only rim lights have an exponent; a falloff or cone exponent belongs in \"falloff\" or \"cone\""));
+        o.reject("exponent", QStringLiteral("only rim lights have an exponent; a falloff or cone exponent "
+                                            "belongs in \"falloff\" or \"cone\""));
     rejectMisplaced(o, false, false, a, is(&Light::usesFalloff), is(&Light::usesCone));
     o.finish();
     return type ? std::optional(l) : std::nullopt;
@@ -211,8 +117,10 @@ std::optional<Light> readLight(Checker& c, const Value& v, const QString& path) 
 void readShading(Checker& c, const Value& v, const QString& path, Shading& s) {
     if (!c.isObject(v, path)) return;
     ObjectView o(c, v, path);
-    o.read("specular", s.specular, [&](const Value& x, const QString& p) { return c.enumValue<SpecularModel>(x, p); });
-    o.read("viewer", s.viewer, [&](const Value& x, const QString& p) { return c.enumValue<ViewerModel>(x, p); });
+    o.read("specular", s.specular,
+           [&](const Value& x, const QString& p) { return c.enumValue<SpecularModel>(x, p); });
+    o.read("viewer", s.viewer,
+           [&](const Value& x, const QString& p) { return c.enumValue<ViewerModel>(x, p); });
     o.read("shininess", s.shininess, [&](const Value& x, const QString& p) {
         return c.number(x, p, rigjson::positive(kMaxRigExponent));
     });
@@ -223,11 +131,13 @@ void readShading(Checker& c, const Value& v, const QString& path, Shading& s) {
 bool readHeader(Checker& c, ObjectView& top) {
     if (const Value* f = top.take("format")) {
         if (f->kind != Value::Kind::String || f->string != QLatin1String("lightrig")) {
-            c.expected(*f, QStringLiteral("format"), QStringLiteral("\"lightrig\" (this is not a LightRig rig file)"));
+            c.expected(*f, QStringLiteral("format"),
+                       QStringLiteral("\"lightrig\" (this is not a LightRig rig file)"));
             return false;
         }
     } else {
-        c.error(QStringLiteral("format"), QStringLiteral("missing; a rig file starts with \"format\": \"lightrig\""));
+        c.error(QStringLiteral("format"),
+                QStringLiteral("missing; a rig file starts with \"format\": \"lightrig\""));
     }
     if (const Value* v = top.take("version")) {
         const bool integer = v->isNumber() && v->finite && v->number == std::floor(v->number);
@@ -240,9 +150,11 @@ bool readHeader(Checker& c, ObjectView& top) {
             return false;
         }
         if (!integer || v->number < 1)
-            c.expected(*v, QStringLiteral("version"), QStringLiteral("the integer %1").arg(kRigFormatVersion));
+            c.expected(*v, QStringLiteral("version"),
+                       QStringLiteral("the integer %1").arg(kRigFormatVersion));
     } else {
-        c.error(QStringLiteral("version"), QStringLiteral("missing; this reader expects \"version\": %1").arg(kRigFormatVersion));
+        c.error(QStringLiteral("version"),
+                QStringLiteral("missing; this reader expects \"version\": %1").arg(kRigFormatVersion));
     }
     return true;
 }
@@ -253,14 +165,16 @@ RigReadResult readRigJson(const QByteArray& data, const QString& displayName) {
     Checker c(data, displayName);
     if (data.size() > kMaxRigFileBytes) {
         c.fileError(QStringLiteral("the file is %1 bytes; rig files are limited to %2 MiB")
-                        .arg(data.size()).arg(kMaxRigFileBytes / (1024 * 1024)));
+                        .arg(data.size())
+                        .arg(kMaxRigFileBytes / (1024 * 1024)));
         return c.result(std::nullopt);
     }
     const json::Document doc = json::parse(data);
     for (const QString& e : doc.errors) c.fileError(e);
     if (!doc.complete) return c.result(std::nullopt);
     if (doc.root.kind != Value::Kind::Object) {
-        c.expected(doc.root, QStringLiteral("(top level)"), QStringLiteral("a JSON object {\"format\": \"lightrig\", ...}"));
+        c.expected(doc.root, QStringLiteral("(top level)"),
+                   QStringLiteral("a JSON object {\"format\": \"lightrig\", ...}"));
         return c.result(std::nullopt);
     }
     ObjectView top(c, doc.root, QString());
@@ -268,7 +182,8 @@ RigReadResult readRigJson(const QByteArray& data, const QString& displayName) {
 
     Rig rig;
     top.read("name", rig.name, [&](const Value& x, const QString& p) { return c.name(x, p); });
-    top.read("space", rig.space, [&](const Value& x, const QString& p) { return c.enumValue<RigSpace>(x, p); });
+    top.read("space", rig.space,
+             [&](const Value& x, const QString& p) { return c.enumValue<RigSpace>(x, p); });
     top.read("ambient", rig.ambient, [&](const Value& x, const QString& p) { return c.color(x, p); });
     if (const Value* s = top.take("shading")) readShading(c, *s, QStringLiteral("shading"), rig.shading);
     if (const Value* lights = top.take("lights")) {
@@ -276,14 +191,17 @@ RigReadResult readRigJson(const QByteArray& data, const QString& displayName) {
             c.expected(*lights, QStringLiteral("lights"), QStringLiteral("an array of lights [...]"));
         } else if (lights->items.size() > size_t(kMaxRigLights)) {
             c.error(QStringLiteral("lights"), QStringLiteral("%1 lights; at most %2 are allowed")
-                                                  .arg(lights->items.size()).arg(kMaxRigLights));
+                                                  .arg(lights->items.size())
+                                                  .arg(kMaxRigLights));
         } else {
             for (size_t i = 0; i < lights->items.size(); ++i)
-                if (auto l = readLight(c, lights->items[i], json::appendIndex(QStringLiteral("lights"), qsizetype(i))))
+                if (auto l = readLight(c, lights->items[i],
+                                       json::appendIndex(QStringLiteral("lights"), qsizetype(i))))
                     rig.lights.push_back(std::move(*l));
         }
     } else {
-        c.error(QStringLiteral("lights"), QStringLiteral("missing; a rig has \"lights\": [...] (it may be empty)"));
+        c.error(QStringLiteral("lights"),
+                QStringLiteral("missing; a rig has \"lights\": [...] (it may be empty)"));
     }
     top.finish();
     return c.result(std::move(rig));

@@ -25,13 +25,20 @@ qsizetype invalidUtf8At(const QByteArray& data, qsizetype from) {
     const qsizetype n = data.size();
     for (qsizetype i = from; i < n;) {
         const unsigned c = s[i];
-        if (c < 0x80) { ++i; continue; }
+        if (c < 0x80) {
+            ++i;
+            continue;
+        }
         int len;
         unsigned cp, min;
-        if ((c & 0xE0) == 0xC0) len = 2, cp = c & 0x1F, min = 0x80;
-        else if ((c & 0xF0) == 0xE0) len = 3, cp = c & 0x0F, min = 0x800;
-        else if ((c & 0xF8) == 0xF0) len = 4, cp = c & 0x07, min = 0x10000;
-        else return i;
+        if ((c & 0xE0) == 0xC0)
+            len = 2, cp = c & 0x1F, min = 0x80;
+        else if ((c & 0xF0) == 0xE0)
+            len = 3, cp = c & 0x0F, min = 0x800;
+        else if ((c & 0xF8) == 0xF0)
+            len = 4, cp = c & 0x07, min = 0x10000;
+        else
+            return i;
         if (i + len > n) return i;
         for (int k = 1; k < len; ++k) {
             if ((s[i + k] & 0xC0) != 0x80) return i;
@@ -91,7 +98,7 @@ QString describe(const Value& v, const QByteArray& source) {
 
 QByteArray formatNumber(double v) {
     if (!std::isfinite(v)) return QByteArrayLiteral("null");  // not JSON numbers: the reader rejects null
-    if (v == 0.0) return QByteArrayLiteral("0");               // and -0
+    if (v == 0.0) return QByteArrayLiteral("0");              // and -0
     // Shortest round-trip digits, in scientific form: [-]d[.ddd]e[+-]x
     char buf[64];
     const auto r = std::to_chars(buf, buf + sizeof buf, std::abs(v), std::chars_format::scientific);

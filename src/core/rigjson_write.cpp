@@ -13,10 +13,18 @@ namespace {
 
 using Fields = std::vector<std::pair<const char*, QByteArray>>;
 
-QByteArray num(double v) { return json::formatNumber(v); }
-QByteArray str(const QString& s) { return json::quote(s); }
-template <typename E> QByteArray name(E e) { return json::quote(toString(e)); }
-QByteArray vec(const glm::dvec3& v) { return '[' + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + ']'; }
+QByteArray num(double v) {
+    return json::formatNumber(v);
+}
+QByteArray str(const QString& s) {
+    return json::quote(s);
+}
+template <typename E> QByteArray name(E e) {
+    return json::quote(toString(e));
+}
+QByteArray vec(const glm::dvec3& v) {
+    return '[' + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + ']';
+}
 
 QByteArray inlineObject(const Fields& fields) {
     QByteArray out = "{";
