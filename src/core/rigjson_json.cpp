@@ -33,6 +33,8 @@ public:
             if (m_p != m_end) error(QStringLiteral("unexpected text after the end of the JSON document"));
         }
         doc.errors = m_errors;
+        if (m_moreDuplicates)
+            doc.errors << QStringLiteral("%1 more duplicate keys not listed").arg(m_moreDuplicates);
         if (!m_syntax.isEmpty()) return fail(doc, m_syntaxAt, m_syntax);
         doc.complete = true;
         return doc;
@@ -249,9 +251,13 @@ private:
                 skipSpace();
                 m.duplicate = isDuplicate(out.members, seen, m.key);
                 m_path.emplace_back(m.key);
-                if (m.duplicate)
+                // Bounded: each message holds the path, so thousands of duplicates under a long key would
+                // cost time and memory quadratic in the file size (tests/safety/tst_readerlimits.cpp).
+                if (m.duplicate && m_errors.size() < kMaxDuplicateMessages)
                     m_errors << QStringLiteral("%1: duplicate key; each key may appear only once")
                                     .arg(currentPath());
+                else if (m.duplicate)
+                    ++m_moreDuplicates;
                 if (!parseValue(m.value)) return false;
                 m_path.pop_back();
                 out.members.push_back(std::move(m));
@@ -294,6 +300,8 @@ private:
     const char* m_end;
     int m_depth = 0;
     qint64 m_values = 0;
+    static constexpr qsizetype kMaxDuplicateMessages = 200;
+    qint64 m_moreDuplicates = 0;
     std::vector<Segment> m_path;
     QStringList m_errors;
     QString m_syntax, m_syntaxPath;
