@@ -1,0 +1,87 @@
+// The Quality panel: measures, on demand, what each quality tier costs and how far it is from the
+// double-precision reference for the user's own scene and view (the same measurement as `lightrig bench`,
+// src/render/qualitybench.h), with progress and cancel, and shows the table and the time/error chart.
+// "Use tier" stores the selected row's tier in the view settings (the Render settings dock's combo box).
+//
+// The measurement runs on the GUI thread between event-loop passes (OpenGL needs the thread of its
+// context; the double reference runs on the thread pool), so the editor stays responsive and Cancel works.
+#pragma once
+
+#include "core/quality.h"
+#include "render/qualitybench.h"
+
+#include <QDockWidget>
+#include <QImage>
+#include <functional>
+#include <optional>
+
+class QComboBox;
+class QLabel;
+class QProgressBar;
+class QPushButton;
+class QSpinBox;
+class QTableWidget;
+
+namespace lr {
+
+class MainWindow;
+
+// The scene to measure, as the editor shows it now.
+struct QualityRequest {
+    BenchScene scene;
+    double exposureEV = 0.0;
+    ToneMap toneMap = ToneMap::Clamp;
+    QSize viewportSize; // device pixels
+};
+
+class QualityDock : public QDockWidget {
+    Q_OBJECT
+  public:
+    // Returns the current scene, or nullopt with *whyNot ("no model loaded").
+    using SceneProvider = std::function<std::optional<QualityRequest>(QString* whyNot)>;
+
+    explicit QualityDock(QWidget* parent = nullptr);
+    void setSceneProvider(SceneProvider provider) { m_provider = std::move(provider); }
+    // Called with the tier of the selected row when the user presses "Use tier".
+    void setTierChooser(std::function<void(Quality)> chooser) { m_chooser = std::move(chooser); }
+
+    bool isRunning() const { return m_running; }
+    const BenchReport& report() const { return m_report; }
+    void setFrames(int frames); // timed frames per tier (default 30)
+
+  public slots:
+    void measure(); // no-op while running
+    void cancel();
+
+  signals:
+    void finished(bool ok, const QString& message); // ok false: failed or cancelled
+
+  private:
+    void showReport();
+    void setRunning(bool running);
+    void updateChart();
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
+    SceneProvider m_provider;
+    std::function<void(Quality)> m_chooser;
+    QComboBox* m_sizeChoice = nullptr;
+    QSpinBox* m_frames = nullptr;
+    QPushButton* m_run = nullptr;
+    QPushButton* m_stop = nullptr;
+    QPushButton* m_use = nullptr;
+    QProgressBar* m_progress = nullptr;
+    QLabel* m_status = nullptr;
+    QTableWidget* m_table = nullptr;
+    QLabel* m_chart = nullptr;
+    BenchReport m_report;
+    QImage m_chartImage;
+    bool m_running = false;
+    bool m_cancelRequested = false;
+};
+
+// Creates the Quality dock for the editor's main window (current model, render rig with solo applied,
+// viewport camera and size, exposure and tone map; "Use tier" sets the view settings' quality), docks it
+// on the right, tabified with the Render settings dock, and returns it.
+QualityDock* addQualityDock(MainWindow* window);
+
+} // namespace lr

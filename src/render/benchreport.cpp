@@ -1,0 +1,337 @@
+#include "benchreport.h"
+
+#include <QJsonArray>
+#include <QPainter>
+#include <QPainterPath>
+#include <QPen>
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace lr {
+
+namespace {
+
+QString num(double v, int decimals) {
+    return QString::number(v, 'f', decimals);
+}
+
+QString tierLabel(const BenchResult& r) {
+    return r.uberShader ? QStringLiteral("exact/über") : toString(r.quality);
+}
+
+QJsonValue finiteOrNull(double v) {
+    return std::isfinite(v) ? QJsonValue(v) : QJsonValue(QJsonValue::Null);
+}
+
+double round3(double v) {
+    return std::round(v * 1000.0) / 1000.0;
+}
+
+QColor tierColor(const BenchResult& r) {
+    if (r.uberShader) return QColor(140, 80, 170);
+    switch (r.quality) {
+    case Quality::Exact:
+        return QColor(40, 100, 200);
+    case Quality::Balanced:
+        return QColor(230, 130, 20);
+    case Quality::Fast:
+        return QColor(40, 160, 70);
+    }
+    return Qt::black;
+}
+
+} // namespace
+
+QStringList benchTableHeaders() {
+    return {QStringLiteral("scene"),    QStringLiteral("lights"),    QStringLiteral("tier"),
+            QStringLiteral("ms med"),   QStringLiteral("min"),       QStringLiteral("max"),
+            QStringLiteral("gpu ms"),   QStringLiteral("×exact"),    QStringLiteral("first ms"),
+            QStringLiteral("variants"), QStringLiteral("triangles"), QStringLiteral("max err"),
+            QStringLiteral("mean err"), QStringLiteral("PSNR dB"),   QStringLiteral(">1 lvl"),
+            QStringLiteral("NaN/Inf")};
+}
+
+QStringList benchTableRow(const BenchResult& r) {
+    const QString none = QStringLiteral("–");
+    QStringList row{r.scene,
+                    QStringLiteral("%1/%2").arg(r.lightsUploaded).arg(r.lightsInRig),
+                    tierLabel(r),
+                    num(r.msMedian, 2),
+                    num(r.msMin, 2),
+                    num(r.msMax, 2),
+                    r.gpuMsMedian >= 0.0 ? num(r.gpuMsMedian, 2) : none,
+                    r.speedUp > 0.0 ? num(r.speedUp, 2) : none,
+                    num(r.firstFrameMs, 0),
+                    QString::number(r.variants),
+                    QString::number(r.triangles)};
+    if (r.hasErrors) {
+        const ErrorFigures& e = r.errors;
+        row << QString::number(e.maxLevels) << num(e.meanLevels, 3)
+            << (std::isfinite(e.psnrDb) ? num(e.psnrDb, 1) : QStringLiteral("inf"))
+            << QStringLiteral("%1%").arg(num(100.0 * e.shareOver1(), 2)) << QString::number(e.nonFinite);
+    } else {
+        row << none << none << none << none << none;
+    }
+    return row;
+}
+
+QString benchTable(const BenchReport& report) {
+    QList<QStringList> rows{benchTableHeaders()};
+    for (const BenchResult& r : report.results)
+        rows << benchTableRow(r);
+    const int columns = int(rows.first().size());
+    std::vector<int> width(size_t(columns), 0);
+    for (const QStringList& row : rows)
+        for (int c = 0; c < columns; ++c)
+            width[size_t(c)] = std::max(width[size_t(c)], int(row[c].size()));
+    QString out;
+    for (int i = 0; i < rows.size(); ++i) {
+        QStringList cells;
+        for (int c = 0; c < columns; ++c) {
+            const int w = width[size_t(c)];
+            cells << (c < 3 ? rows[i][c].leftJustified(w)
+                            : rows[i][c].rightJustified(w)); // text left, numbers right
+        }
+        out += cells.join(QStringLiteral("  ")).trimmed() + QLatin1Char('\n');
+    }
+    const auto uber = uberComparisons(report);
+    if (!uber.empty()) {
+        out += QStringLiteral(
+            "\nSpecialised shaders against the über-shader (every light model compiled in), exact tier:\n");
+        for (const UberComparison& u : uber)
+            out += QStringLiteral(
+                       "  %1: %2 ms/frame specialised, %3 ms über (%4% saved); first draw %5 ms vs %6 ms\n")
+                       .arg(u.scene, num(u.specialisedMs, 2), num(u.uberMs, 2), num(100.0 * u.saving(), 1),
+                            num(u.specialisedFirstDrawMs, 0), num(u.uberFirstDrawMs, 0));
+    }
+    return out;
+}
+
+std::vector<UberComparison> uberComparisons(const BenchReport& report) {
+    std::vector<UberComparison> out;
+    for (const BenchResult& u : report.results) {
+        if (!u.uberShader) continue;
+        for (const BenchResult& s : report.results) {
+            if (s.uberShader || s.scene != u.scene || s.quality != Quality::Exact) continue;
+            out.push_back({u.scene, s.msMedian, u.msMedian, s.firstDrawMs, u.firstDrawMs});
+            break;
+        }
+    }
+    return out;
+}
+
+QJsonObject benchJson(const BenchReport& report) {
+    QJsonArray results;
+    for (const BenchResult& r : report.results) {
+        QJsonObject o{
+            {QStringLiteral("scene"), r.scene},
+            {QStringLiteral("lights"), r.lightsInRig},
+            {QStringLiteral("lights_uploaded"), r.lightsUploaded},
+            {QStringLiteral("quality"), toString(r.quality)},
+            {QStringLiteral("shader"), r.uberShader ? QStringLiteral("uber") : QStringLiteral("specialised")},
+            {QStringLiteral("width"), r.size.width()},
+            {QStringLiteral("height"), r.size.height()},
+            {QStringLiteral("msaa_samples"), r.msaaSamples},
+            {QStringLiteral("ms_median"), round3(r.msMedian)},
+            {QStringLiteral("ms_min"), round3(r.msMin)},
+            {QStringLiteral("ms_max"), round3(r.msMax)},
+            {QStringLiteral("gpu_ms_median"),
+             r.gpuMsMedian >= 0.0 ? QJsonValue(round3(r.gpuMsMedian)) : QJsonValue()},
+            {QStringLiteral("speedup_vs_exact"),
+             r.speedUp > 0.0 ? QJsonValue(round3(r.speedUp)) : QJsonValue()},
+            {QStringLiteral("first_frame_ms"), round3(r.firstFrameMs)},
+            {QStringLiteral("load_ms"), round3(r.loadMs)},
+            {QStringLiteral("first_draw_ms"), round3(r.firstDrawMs)},
+            {QStringLiteral("variants"), r.variants},
+            {QStringLiteral("triangles"), double(r.triangles)}};
+        const ErrorFigures& e = r.errors;
+        o.insert(QStringLiteral("max_error_levels"), r.hasErrors ? QJsonValue(e.maxLevels) : QJsonValue());
+        o.insert(QStringLiteral("mean_error_levels"), r.hasErrors ? QJsonValue(e.meanLevels) : QJsonValue());
+        o.insert(QStringLiteral("psnr_db"), r.hasErrors ? finiteOrNull(e.psnrDb) : QJsonValue());
+        o.insert(QStringLiteral("share_over_1_level"),
+                 r.hasErrors ? QJsonValue(e.shareOver1()) : QJsonValue());
+        o.insert(QStringLiteral("nonfinite_pixels"),
+                 r.hasErrors ? QJsonValue(double(e.nonFinite)) : QJsonValue());
+        o.insert(QStringLiteral("compared_pixels"),
+                 r.hasErrors ? QJsonValue(double(e.pixels)) : QJsonValue());
+        results.append(o);
+    }
+    QJsonArray uber;
+    for (const UberComparison& u : uberComparisons(report))
+        uber.append(
+            QJsonObject{{QStringLiteral("scene"), u.scene},
+                        {QStringLiteral("specialised_ms"), round3(u.specialisedMs)},
+                        {QStringLiteral("uber_ms"), round3(u.uberMs)},
+                        {QStringLiteral("saving"), round3(u.saving())},
+                        {QStringLiteral("specialised_first_draw_ms"), round3(u.specialisedFirstDrawMs)},
+                        {QStringLiteral("uber_first_draw_ms"), round3(u.uberFirstDrawMs)}});
+    QJsonArray tiers;
+    for (Quality q : report.options.tiers)
+        tiers.append(toString(q));
+    const BenchOptions& op = report.options;
+    return QJsonObject{
+        {QStringLiteral("tool"), QStringLiteral("lightrig bench")},
+        {QStringLiteral("gl"), report.glDescription},
+        {QStringLiteral("options"), QJsonObject{{QStringLiteral("width"), op.size.width()},
+                                                {QStringLiteral("height"), op.size.height()},
+                                                {QStringLiteral("warmup_frames"), op.warmupFrames},
+                                                {QStringLiteral("frames"), op.frames},
+                                                {QStringLiteral("tiers"), tiers},
+                                                {QStringLiteral("exposure_ev"), op.exposureEV},
+                                                {QStringLiteral("tonemap"), toString(op.toneMap)},
+                                                {QStringLiteral("errors"), op.errors},
+                                                {QStringLiteral("uber_shader"), op.uberShader}}},
+        {QStringLiteral("reference_ms"), round3(report.referenceMs)},
+        {QStringLiteral("results"), results},
+        {QStringLiteral("uber_shader"), uber}};
+}
+
+QImage benchChart(const BenchReport& report, QSize size) {
+    QImage image(size, QImage::Format_ARGB32_Premultiplied);
+    image.fill(Qt::white);
+    QPainter p(&image);
+    p.setRenderHint(QPainter::Antialiasing);
+    QFont font = p.font();
+    font.setPixelSize(13);
+    p.setFont(font);
+    const QFontMetrics fm(font);
+    const QRectF plot(80, 50, size.width() - 110 - 150, size.height() - 110);
+
+    std::vector<const BenchResult*> points;
+    for (const BenchResult& r : report.results)
+        if (r.msMedian > 0.0) points.push_back(&r);
+    const bool errors =
+        std::any_of(points.begin(), points.end(), [](const BenchResult* r) { return r->hasErrors; });
+    double tMin = 1e300, tMax = 0.0, eMax = 0.0;
+    for (const BenchResult* r : points) {
+        tMin = std::min(tMin, r->msMedian);
+        tMax = std::max(tMax, r->msMedian);
+        if (r->hasErrors) eMax = std::max(eMax, r->errors.meanLevels);
+    }
+    if (points.empty()) tMin = 1.0, tMax = 10.0;
+    const bool logX = tMax / tMin > 8.0;
+    double x0 = logX ? std::pow(10.0, std::floor(std::log10(tMin))) : 0.0;
+    double x1 = logX ? std::pow(10.0, std::ceil(std::log10(tMax))) : tMax * 1.1;
+    if (!(x1 > x0)) x1 = x0 + 1.0;
+    // y: a "nice" upper bound of the mean error.
+    double y1 = 0.1;
+    for (double step : {0.1, 0.2, 0.5, 1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0, 255.0})
+        if ((y1 = step) >= eMax * 1.05) break;
+    auto mapX = [&](double t) {
+        const double f = logX ? (std::log10(t) - std::log10(x0)) / (std::log10(x1) - std::log10(x0))
+                              : (t - x0) / (x1 - x0);
+        return plot.left() + f * plot.width();
+    };
+    auto mapY = [&](double e) { return plot.bottom() - std::clamp(e / y1, 0.0, 1.0) * plot.height(); };
+
+    // Title, axes, grid, ticks.
+    p.setPen(Qt::black);
+    QFont bold = font;
+    bold.setBold(true);
+    bold.setPixelSize(15);
+    p.setFont(bold);
+    p.drawText(QRectF(0, 8, size.width(), 24), Qt::AlignHCenter,
+               QStringLiteral("Time against error per quality tier (%1×%2)")
+                   .arg(report.options.size.width())
+                   .arg(report.options.size.height()));
+    p.setFont(font);
+    p.drawText(QRectF(0, 28, size.width(), 18), Qt::AlignHCenter, report.glDescription);
+    p.setPen(QPen(QColor(225, 225, 225), 1));
+    std::vector<double> xTicks;
+    if (logX) {
+        for (double d = x0; d <= x1 * 1.0001; d *= 10.0)
+            for (double m : {1.0, 2.0, 5.0})
+                if (d * m <= x1 * 1.0001) xTicks.push_back(d * m);
+    } else {
+        const double raw = (x1 - x0) / 8.0, mag = std::pow(10.0, std::floor(std::log10(raw)));
+        const double step = raw / mag < 2 ? 2 * mag : raw / mag < 5 ? 5 * mag : 10 * mag;
+        for (double t = 0.0; t <= x1; t += step)
+            xTicks.push_back(t);
+    }
+    for (double t : xTicks)
+        p.drawLine(QPointF(mapX(t), plot.top()), QPointF(mapX(t), plot.bottom()));
+    for (int i = 0; i <= 5; ++i)
+        p.drawLine(QPointF(plot.left(), mapY(y1 * i / 5)), QPointF(plot.right(), mapY(y1 * i / 5)));
+    p.setPen(QPen(Qt::black, 1.2));
+    p.drawRect(plot);
+    for (double t : xTicks) {
+        const QString label = QString::number(t, 'g', 3);
+        p.drawText(QPointF(mapX(t) - fm.horizontalAdvance(label) / 2.0, plot.bottom() + 18), label);
+    }
+    for (int i = 0; i <= 5; ++i) {
+        const QString label = QString::number(y1 * i / 5, 'g', 3);
+        p.drawText(QPointF(plot.left() - 8 - fm.horizontalAdvance(label), mapY(y1 * i / 5) + 5), label);
+    }
+    p.drawText(QRectF(plot.left(), plot.bottom() + 26, plot.width(), 20), Qt::AlignHCenter,
+               QStringLiteral("median ms/frame (wall, glFinish)%1")
+                   .arg(logX ? QStringLiteral(", log scale") : QString()));
+    p.save();
+    p.translate(18, plot.center().y());
+    p.rotate(-90);
+    p.drawText(QRectF(-plot.height() / 2, -10, plot.height(), 20), Qt::AlignHCenter,
+               errors ? QStringLiteral("mean error against the double reference (8-bit sRGB levels)")
+                      : QStringLiteral("error not measured"));
+    p.restore();
+
+    // One line per scene through its tiers, then the points.
+    std::map<QString, std::vector<const BenchResult*>> byScene;
+    for (const BenchResult* r : points)
+        byScene[r->scene].push_back(r);
+    const bool labels = byScene.size() <= 10;
+    for (const auto& [scene, rs] : byScene) {
+        QPainterPath path;
+        bool started = false;
+        for (const BenchResult* r : rs) {
+            if (r->uberShader) continue;
+            const QPointF at(mapX(r->msMedian), mapY(r->hasErrors ? r->errors.meanLevels : 0.0));
+            started ? path.lineTo(at) : path.moveTo(at);
+            started = true;
+        }
+        p.setPen(QPen(QColor(170, 170, 170), 1, Qt::DashLine));
+        p.setBrush(Qt::NoBrush);
+        p.drawPath(path);
+        if (labels && !rs.empty()) {
+            p.setPen(QColor(90, 90, 90));
+            p.drawText(QPointF(mapX(rs.front()->msMedian) + 8,
+                               mapY(rs.front()->hasErrors ? rs.front()->errors.meanLevels : 0.0) - 8),
+                       scene);
+        }
+    }
+    for (const BenchResult* r : points) {
+        const QPointF at(mapX(r->msMedian), mapY(r->hasErrors ? r->errors.meanLevels : 0.0));
+        p.setPen(QPen(Qt::black, 0.8));
+        p.setBrush(tierColor(*r));
+        if (r->uberShader)
+            p.drawRect(QRectF(at.x() - 5, at.y() - 5, 10, 10));
+        else
+            p.drawEllipse(at, 5.5, 5.5);
+    }
+
+    // Legend.
+    const QRectF legend(plot.right() + 16, plot.top(), 140, 0);
+    int row = 0;
+    auto entry = [&](const QString& name, const QColor& c, bool square) {
+        const QPointF at(legend.left() + 8, legend.top() + 12 + 22 * row++);
+        p.setPen(QPen(Qt::black, 0.8));
+        p.setBrush(c);
+        if (square)
+            p.drawRect(QRectF(at.x() - 5, at.y() - 5, 10, 10));
+        else
+            p.drawEllipse(at, 5.5, 5.5);
+        p.setPen(Qt::black);
+        p.drawText(QPointF(at.x() + 14, at.y() + 5), name);
+    };
+    BenchResult probe;
+    for (Quality q : {Quality::Exact, Quality::Balanced, Quality::Fast}) {
+        probe.quality = q;
+        entry(toString(q), tierColor(probe), false);
+    }
+    probe.uberShader = true;
+    if (std::any_of(points.begin(), points.end(), [](const BenchResult* r) { return r->uberShader; }))
+        entry(QStringLiteral("über-shader"), tierColor(probe), true);
+    p.end();
+    return image;
+}
+
+} // namespace lr

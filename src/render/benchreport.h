@@ -1,0 +1,42 @@
+// Presenting a BenchReport (qualitybench.h): the human table (`lightrig bench` stdout, the Quality panel),
+// the JSON document (--json) and the chart of time against error per tier (--chart, the Quality panel).
+#pragma once
+
+#include "qualitybench.h"
+
+#include <QImage>
+#include <QJsonObject>
+#include <QString>
+#include <QStringList>
+
+namespace lr {
+
+// Column headers and one row of cells per result, as the table shows them (the Quality panel's model).
+QStringList benchTableHeaders();
+QStringList benchTableRow(const BenchResult& r);
+
+// The aligned text table, one line per result, followed by the über-shader comparison when present.
+QString benchTable(const BenchReport& report);
+
+// {"tool", "gl", "options", "results": [...], "uber_shader": [...]}. Per result the keys scene, lights,
+// quality, width, height, ms_median, ms_min, ms_max, first_frame_ms, max_error_levels, mean_error_levels,
+// psnr_db, nonfinite_pixels and more (docs/quality.md lists them). psnr_db is null for an image identical
+// to the reference (infinite PSNR); error keys are null when errors were not measured.
+QJsonObject benchJson(const BenchReport& report);
+
+// The über-shader comparison per scene: specialised exact run against the über-shader run.
+struct UberComparison {
+    QString scene;
+    double specialisedMs = 0.0, uberMs = 0.0;
+    double specialisedFirstDrawMs = 0.0, uberFirstDrawMs = 0.0;
+    double saving() const {
+        return uberMs > 0.0 ? 1.0 - specialisedMs / uberMs : 0.0;
+    } // share of über time saved
+};
+std::vector<UberComparison> uberComparisons(const BenchReport& report);
+
+// Scatter chart: x = median ms/frame (log scale when the times span more than 8×), y = mean error in
+// 8-bit levels; one point per scene × tier, coloured by tier, the tiers of a scene joined by a line.
+QImage benchChart(const BenchReport& report, QSize size = QSize(1000, 640));
+
+} // namespace lr

@@ -1,0 +1,187 @@
+#include "qualitybench.h"
+
+#include "offscreen.h"
+#include "reference.h"
+
+#include <QElapsedTimer>
+#include <QFuture>
+#include <QThread>
+#include <algorithm>
+
+namespace lr {
+
+namespace {
+
+double median(std::vector<double> v) {
+    if (v.empty()) return -1.0;
+    std::sort(v.begin(), v.end());
+    const size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+RenderSettings tierSettings(const BenchOptions& o, Quality q, bool uber) {
+    RenderSettings s;
+    s.exposureEV = o.exposureEV;
+    s.toneMap = o.toneMap;
+    s.quality = q;
+    s.msaaSamples = tierMsaaSamples(q);
+    (void)uber; // PENDING(forceAllFeatures): s.forceAllFeatures = uber;
+    return s;
+}
+
+struct Progress {
+    const BenchProgress& fn;
+    double total = 1.0, done = 0.0;
+    bool cancelled = false;
+    bool report(double extra, const QString& what) {
+        if (fn && !cancelled && !fn(std::clamp((done + extra) / total, 0.0, 1.0), what)) cancelled = true;
+        return !cancelled;
+    }
+};
+
+// The reference of one scene: G-buffer from a renderer of its own, evaluated on the thread pool while the
+// progress callback keeps the caller responsive.
+bool computeSceneReference(const BenchScene& scene, const BenchOptions& o, Progress& progress,
+                           ReferenceImage* out, QString* error) {
+    OffscreenRenderer gl;
+    if (!gl.initialize(error) || !gl.setModel(scene.model, error)) return false;
+    gl.setRig(scene.rig);
+    const RenderSettings settings = tierSettings(o, Quality::Exact, false);
+    GBuffer g;
+    if (!gl.renderGBuffer(scene.camera, o.size, settings, &g, error)) return false;
+    const glm::dmat4 view = gl.renderer().effectiveCamera(scene.camera).view();
+    ReferenceJob job(std::move(g), makeReferenceScene(scene.rig, gl.renderer().sceneFrame(), view, settings));
+    QFuture<void> future = job.start();
+    const QString what = QStringLiteral("%1: double-precision reference").arg(scene.name);
+    while (!future.isFinished()) {
+        const int range = std::max(1, future.progressMaximum() - future.progressMinimum());
+        const double fraction = double(future.progressValue() - future.progressMinimum()) / range;
+        if (!progress.report(fraction, what)) {
+            future.cancel();
+            future.waitForFinished();
+            return false;
+        }
+        QThread::msleep(progress.fn ? 15 : 2);
+    }
+    *out = job.result();
+    return true;
+}
+
+// One scene × tier in a fresh renderer.
+bool measure(const BenchScene& scene, const BenchOptions& o, Quality q, bool uber,
+             const ReferenceImage* reference, Progress& progress, BenchResult* r, QString* error,
+             QString* glDescription) {
+    const QString what =
+        QStringLiteral("%1: %2%3")
+            .arg(scene.name, toString(q), uber ? QStringLiteral(" (über-shader)") : QString());
+    if (!progress.report(0.0, what)) return false;
+    const RenderSettings settings = tierSettings(o, q, uber);
+    r->scene = scene.name;
+    r->quality = q;
+    r->uberShader = uber;
+    r->size = o.size;
+    r->msaaSamples = settings.msaaSamples;
+    r->loadMs = scene.loadMs;
+
+    OffscreenRenderer gl;
+    if (!gl.initialize(error)) return false;
+    if (glDescription && glDescription->isEmpty()) *glDescription = gl.glDescription();
+    QElapsedTimer clock;
+    clock.start();
+    if (!gl.setModel(scene.model, error)) return false;
+    gl.setRig(scene.rig);
+    if (!gl.renderFrame(scene.camera, o.size, settings, error)) return false;
+    r->firstDrawMs = clock.nsecsElapsed() * 1e-6;
+    r->firstFrameMs = r->loadMs + r->firstDrawMs;
+    const RenderStats& stats = gl.renderer().stats();
+    r->variants = stats.shaderVariantsCompiled;
+    r->triangles = stats.triangles;
+    r->lightsInRig = stats.lightsInRig;
+    r->lightsUploaded = stats.lightsUploaded;
+
+    const int total = std::max(0, o.warmupFrames) + std::max(1, o.frames);
+    std::vector<double> wall, gpu;
+    for (int i = 0; i < total; ++i) {
+        if (i % 8 == 0 && !progress.report(0.8 * i / total, what)) return false;
+        clock.restart();
+        if (!gl.renderFrame(scene.camera, o.size, settings, error)) return false;
+        const double ms = clock.nsecsElapsed() * 1e-6;
+        if (i < o.warmupFrames) continue;
+        wall.push_back(ms);
+        // The timer result read during this frame belongs to an earlier (already timed, steady) frame.
+        if (stats.lastGpuMs >= 0.0 && i > o.warmupFrames) gpu.push_back(stats.lastGpuMs);
+    }
+    r->msMedian = median(wall);
+    r->msMin = *std::min_element(wall.begin(), wall.end());
+    r->msMax = *std::max_element(wall.begin(), wall.end());
+    r->gpuMsMedian = median(gpu);
+
+    if (reference && !reference->isNull()) {
+        if (!progress.report(0.85, what + QStringLiteral(": error"))) return false;
+        RenderSettings single = settings;
+        single.msaaSamples = 0;
+        const QImage image = gl.renderImage(scene.camera, o.size, single, 1, error);
+        if (image.isNull()) return false;
+        FloatImage radiance;
+        if (!gl.renderRadiance(scene.camera, o.size, single, &radiance, error)) return false;
+        r->errors = compareWithReference(image, *reference);
+        r->errors.nonFinite =
+            countNonFinite(&radiance.pixels.data()->x, std::int64_t(radiance.pixels.size()), 4);
+        r->hasErrors = true;
+    }
+    return true;
+}
+
+} // namespace
+
+int tierMsaaSamples(Quality quality) {
+    return quality == Quality::Fast ? 0 : 4;
+}
+
+BenchStatus runQualityBench(const std::vector<BenchScene>& scenes, const BenchOptions& options,
+                            BenchReport* report, QString* error, const BenchProgress& progressFn) {
+    report->options = options;
+    const int runsPerScene = int(options.tiers.size()) + (options.uberShader ? 1 : 0);
+    Progress progress{progressFn};
+    // Weights: a reference costs about as much as one run.
+    progress.total = double(scenes.size()) * (runsPerScene + (options.errors ? 1 : 0));
+    QString message;
+    auto failed = [&](const QString& what) {
+        if (progress.cancelled) return BenchStatus::Cancelled;
+        if (error) *error = what.isEmpty() ? message : QStringLiteral("%1: %2").arg(what, message);
+        return BenchStatus::Failed;
+    };
+    for (const BenchScene& scene : scenes) {
+        ReferenceImage reference;
+        if (options.errors) {
+            QElapsedTimer clock;
+            clock.start();
+            if (!computeSceneReference(scene, options, progress, &reference, &message))
+                return failed(scene.name);
+            report->referenceMs += clock.nsecsElapsed() * 1e-6;
+            progress.done += 1.0;
+        }
+        const size_t first = report->results.size();
+        for (int run = 0; run < runsPerScene; ++run) {
+            const bool uber = run >= int(options.tiers.size());
+            const Quality q = uber ? Quality::Exact : options.tiers[size_t(run)];
+            BenchResult r;
+            if (!measure(scene, options, q, uber, options.errors ? &reference : nullptr, progress, &r,
+                         &message, &report->glDescription))
+                return failed(QStringLiteral("%1 (%2)").arg(scene.name, toString(q)));
+            report->results.push_back(r);
+            progress.done += 1.0;
+        }
+        const auto exact =
+            std::find_if(report->results.begin() + std::ptrdiff_t(first), report->results.end(),
+                         [](const BenchResult& r) { return r.quality == Quality::Exact && !r.uberShader; });
+        if (exact != report->results.end())
+            for (size_t i = first; i < report->results.size(); ++i)
+                if (report->results[i].msMedian > 0.0)
+                    report->results[i].speedUp = exact->msMedian / report->results[i].msMedian;
+    }
+    if (progressFn) progressFn(1.0, QStringLiteral("done"));
+    return BenchStatus::Ok;
+}
+
+} // namespace lr

@@ -1,0 +1,90 @@
+// The speed/accuracy measurement behind `lightrig bench` and the editor's Quality panel: for each scene
+// and quality tier, frame times (wall time with glFinish and GPU timer queries), the first frame (model
+// load + upload + shader compile + draw), the shader variants compiled, and the error of the tier's 8-bit
+// output against the double-precision reference (reference.h). Optionally the same scene once more with
+// the über-shader (every light model compiled in) to show what specialising the shaders saves.
+//
+// Method (docs/quality.md):
+// - each scene × tier runs in a fresh OffscreenRenderer (own context), so its first frame pays the upload
+//   and the compile of its own variants; warm-up frames follow, then the timed frames;
+// - timings use the tier's own settings (MSAA 4 for exact and balanced, none for fast);
+// - errors are measured on a single-sample render of the tier (MSAA only changes silhouette pixels, which
+//   the single-sample G-buffer reference cannot represent), over the pixels the model covers;
+// - NaN/Inf pixels are counted in the tier's float radiance (RGBA32F) read back from the same view.
+//
+// Runs on the calling (GUI) thread; the reference evaluation uses the global thread pool meanwhile.
+#pragma once
+
+#include "core/imagecompare.h"
+#include "core/quality.h"
+#include "core/rig.h"
+#include "model/model.h"
+#include "render/camera.h"
+
+#include <QSize>
+#include <QString>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace lr {
+
+struct BenchScene {
+    QString name; // "helmet_8pt", "Suzanne · 8 point"
+    std::shared_ptr<const Model> model;
+    double loadMs = 0.0; // importing the model file (counted in each first frame)
+    Rig rig;
+    ViewCamera camera;
+};
+
+struct BenchOptions {
+    QSize size{1280, 720};
+    int warmupFrames = 5;
+    int frames = 60;
+    std::vector<Quality> tiers{Quality::Exact, Quality::Balanced, Quality::Fast};
+    double exposureEV = 0.0;
+    ToneMap toneMap = ToneMap::Clamp;
+    bool errors = true;     // compute the reference and the error figures
+    bool uberShader = true; // one more run per scene: the exact tier with every light model compiled in
+};
+
+// MSAA samples a tier renders with (exact, balanced: 4; fast: none).
+int tierMsaaSamples(Quality quality);
+
+struct BenchResult {
+    QString scene;
+    Quality quality = Quality::Exact;
+    bool uberShader = false;
+    QSize size;
+    int msaaSamples = 0;
+    int lightsInRig = 0, lightsUploaded = 0;
+    qint64 triangles = 0;
+    int variants = 0; // shader variants compiled for this scene and tier (fresh renderer)
+    double msMedian = 0.0, msMin = 0.0, msMax = 0.0; // wall time per frame with glFinish
+    double gpuMsMedian = -1.0;                       // GL_TIME_ELAPSED; < 0: no timer results
+    double firstFrameMs = 0.0;                       // loadMs + firstDrawMs
+    double loadMs = 0.0;
+    double firstDrawMs = 0.0; // upload + compile + draw + glFinish in a fresh context
+    bool hasErrors = false;
+    ErrorFigures errors;  // against the double reference (nonFinite from the float radiance)
+    double speedUp = 0.0; // exact's ms_median / this ms_median for the same scene (0: no exact run)
+};
+
+struct BenchReport {
+    QString glDescription; // "llvmpipe (LLVM 15.0.6, 256 bits), OpenGL 4.5 core"
+    BenchOptions options;
+    std::vector<BenchResult> results;
+    double referenceMs = 0.0; // total CPU time of the references (wall)
+};
+
+// Called now and then with the fraction done and what is being measured; return false to cancel.
+using BenchProgress = std::function<bool(double fraction, const QString& what)>;
+
+enum class BenchStatus { Ok, Failed, Cancelled };
+
+// Needs a QGuiApplication whose platform offers OpenGL. Results are appended to report->results in the
+// order scene × (tiers..., über-shader).
+BenchStatus runQualityBench(const std::vector<BenchScene>& scenes, const BenchOptions& options,
+                            BenchReport* report, QString* error, const BenchProgress& progress = {});
+
+} // namespace lr
