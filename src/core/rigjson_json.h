@@ -57,7 +57,8 @@ qsizetype invalidUtf8At(const QByteArray& data, qsizetype from);
 void appendUtf8(QByteArray& out, char32_t cp);
 
 // Path helpers: appendKey("lights[0]", "color") -> "lights[0].color"; keys that are not identifiers are
-// quoted: lights[0]["my key"]. appendIndex("lights", 2) -> "lights[2]".
+// quoted: lights[0]["my key"], and keys over 64 characters shortened: extra["aaaa..."...].
+// appendIndex("lights", 2) -> "lights[2]".
 QString appendKey(const QString& path, const QString& key);
 QString appendIndex(const QString& path, qsizetype index);
 

@@ -69,6 +69,9 @@ void appendUtf8(QByteArray& out, char32_t cp) {
 }
 
 QString appendKey(const QString& path, const QString& key) {
+    constexpr qsizetype kMaxShown = 64;  // longer keys are shortened: messages stay small (no key is that long)
+    if (key.size() > kMaxShown)
+        return path + QStringLiteral("[%1...]").arg(QString::fromUtf8(quote(key.left(kMaxShown - 16))));
     if (!isIdentifier(key)) return path + QLatin1Char('[') + QString::fromUtf8(quote(key)) + QLatin1Char(']');
     return path.isEmpty() ? key : path + QLatin1Char('.') + key;
 }

@@ -25,6 +25,7 @@ private slots:
     void reportsAllErrors();
     void duplicateKeysAnywhere();
     void nameLengthInCharacters();
+    void keysInPaths();
     void numbersOutOfRange();
     void overLargeFile();
     void tooManyLights();
@@ -249,6 +250,25 @@ void TestRigRead::nameLengthInCharacters() {
     QCOMPARE(r.rig->name.size(), 2 * kMaxRigNameLength);
     r = readRigJson(rigJson(with(kRim, "\"name\": \"" + name + "x\"")), QStringLiteral("n.json"));
     QCOMPARE(r.errors, QStringList{QStringLiteral("n.json: lights[0].name: must be at most 256 characters, got 257")});
+}
+
+// Paths quote keys that are not identifiers and shorten absurdly long ones, so that many messages about
+// keys under one long key stay small.
+void TestRigRead::keysInPaths() {
+    RigReadResult r = readRigJson(rigJson({}, R"("my key": 1, "\u00e9t\u00e9": 2,)"), QStringLiteral("k.json"));
+    LR_VERIFY_OK(r);
+    QVERIFY2(hasMessage(r.warnings, QStringLiteral("k.json"), QStringLiteral("[\"my key\"]: unknown key")), qPrintable(describe(r)));
+    QVERIFY2(hasMessage(r.warnings, QStringLiteral("k.json"), QString::fromUtf8("[\"\u00e9t\u00e9\"]: unknown key")), qPrintable(describe(r)));
+    const QByteArray longKey(100'000, 'k');
+    QByteArray inner;
+    for (int i = 0; i < 150; ++i) inner += "\"d\": 0, ";
+    r = readRigJson(rigJson({}, "\"" + longKey + "\": {" + inner + "\"e\": 0},"), QStringLiteral("l.json"));
+    QCOMPARE(r.errors.size(), 149);
+    qsizetype total = 0;
+    for (const QString& e : r.errors) total += e.size();
+    QVERIFY2(total < 149 * 200, qPrintable(r.errors.first()));
+    QVERIFY2(r.errors.first().startsWith(QStringLiteral("l.json: [\"") + QString(48, QLatin1Char('k')) + QStringLiteral("\"...].d: duplicate key")),
+             qPrintable(r.errors.first()));
 }
 
 void TestRigRead::numbersOutOfRange() {
