@@ -7,6 +7,7 @@
 
 #include <QLineF>
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 namespace lr {
 
@@ -65,6 +66,10 @@ bool GizmoInteraction::press(const ScreenProjector& projector, const QPointF& sc
     if (cone >= 0) {
         m_drag = Drag::ConeOuter;
         m_rows = {cone};
+        // The rim's distance along the axis at the press stays fixed for the whole drag (see picking.h).
+        const Light& l = m_doc->light(cone);
+        const double len = spotGizmoLength(m_doc->rig(), m_scene->frame(), l);
+        m_rimDistance = len * std::max(std::cos(glm::radians(l.cone.outer)), 0.05);
         return true;
     }
     // Select: a plain click makes it the selection (keeping a multi-selection it belongs to, so several
@@ -104,8 +109,10 @@ void GizmoInteraction::move(const ScreenProjector& projector, const QPointF& scr
         if (row < 0 || row >= m_doc->lightCount()) return;
         const Light& l = m_doc->light(row);
         const auto angle = coneAngleUnderCursor(projector, lightAnchor(m_doc->rig(), m_scene->frame(), l), l.direction,
-                                                screen);
-        if (angle) m_doc->setLightValue({row}, LightProperty::ConeOuter, std::clamp(*angle, 0.5, 90.0));
+                                                screen, m_rimDistance);
+        // A smooth cone's outer angle stays at or above its inner one (the document refuses less).
+        const double lowest = l.cone.model == ConeModel::Smooth ? std::max(0.5, l.cone.inner) : 0.5;
+        if (angle) m_doc->setLightValue({row}, LightProperty::ConeOuter, std::clamp(*angle, lowest, 90.0));
         return;
     }
     const bool alongView = modifiers & (Qt::ControlModifier | Qt::AltModifier);

@@ -61,6 +61,7 @@ private:
     QList<int> m_rows;                   // lights being dragged
     std::vector<glm::dvec3> m_startWorld;  // their anchors at the press (world)
     glm::dvec3 m_pickedAnchor{0.0};
+    double m_rimDistance = 0.0;  // cone drags
     std::unique_ptr<ContinuousEdit> m_edit;
 };
 

@@ -48,8 +48,15 @@ QString NumberEdit::rule() const {
 
 bool NumberEdit::accepts(double v) const { return std::isfinite(v) && v >= minimum() && v <= maximum(); }
 
+QString NumberEdit::stripAffixes(const QString& text) const {
+    QString t = text;
+    if (!prefix().isEmpty() && t.startsWith(prefix())) t.remove(0, prefix().size());
+    if (!suffix().isEmpty() && t.endsWith(suffix())) t.chop(suffix().size());
+    return t.trimmed();
+}
+
 QValidator::State NumberEdit::validate(QString& input, int& /*pos*/) const {
-    const QString t = input.trimmed();
+    const QString t = stripAffixes(input);
     if (t.isEmpty() || t == QLatin1String("-") || t == QLatin1String("+") || t == locale().decimalPoint() ||
         t.endsWith(QLatin1Char('e'), Qt::CaseInsensitive) || t.endsWith(QLatin1String("e-")) ||
         t.endsWith(QLatin1String("e+")))
@@ -79,7 +86,7 @@ QString NumberEdit::textFromValue(double value) const {
 
 double NumberEdit::valueFromText(const QString& text) const {
     bool ok = false;
-    const double v = locale().toDouble(text.trimmed(), &ok);
+    const double v = locale().toDouble(stripAffixes(text), &ok);
     return ok && std::isfinite(v) ? v : value();
 }
 

@@ -31,6 +31,7 @@ signals:
     void accepted();                       // input is valid again (clears a shown reason)
 
 private:
+    QString stripAffixes(const QString& text) const;
     bool m_minExclusive = false;
     bool m_quiet = false;
     QString m_what;

@@ -48,7 +48,9 @@ Ray ScreenProjector::ray(const QPointF& screen) const {
     glm::dvec3 dir = farP - nearP;
     const double len = glm::length(dir);
     dir = len > 0.0 && std::isfinite(len) ? dir / len : viewDirection();
-    return {nearP, dir};
+    // Perspective: from the eye, so points nearer than the near plane (a light close to the camera) are hit too.
+    const bool orthographic = m_proj[3][3] == 1.0;
+    return {orthographic ? nearP : eye(), dir};
 }
 
 glm::dvec3 ScreenProjector::viewDirection() const {
@@ -172,16 +174,23 @@ double distanceToConeRim(const ScreenProjector& projector, const std::vector<glm
 }
 
 std::optional<double> coneAngleUnderCursor(const ScreenProjector& projector, const glm::dvec3& apex,
-                                           const glm::dvec3& axis, const QPointF& screen) {
+                                           const glm::dvec3& axis, const QPointF& screen, double rimDistance) {
     const double axisLen = glm::length(axis);
     if (!(axisLen > 0.0)) return std::nullopt;
     const glm::dvec3 a = axis / axisLen;
     const glm::dvec3 v = projector.viewDirection();
-    // Plane containing the axis, as perpendicular to the view as possible.
-    glm::dvec3 side = glm::cross(a, v);
-    if (glm::length(side) < 1e-6) return std::nullopt;  // looking straight down the axis
-    const glm::dvec3 normal = glm::normalize(glm::cross(side, a));
     const Ray r = projector.ray(screen);
+    if (std::abs(glm::dot(a, v)) > 0.5 && rimDistance > 0.0) {
+        const glm::dvec3 centre = apex + a * rimDistance;
+        const auto t = intersectPlane(r, centre, a);
+        if (!t) return std::nullopt;
+        const double radial = glm::length(r.at(*t) - centre);
+        return glm::degrees(std::atan2(radial, rimDistance));
+    }
+    // Plane containing the axis, as perpendicular to the view as possible.
+    const glm::dvec3 side = glm::cross(a, v);
+    if (glm::length(side) < 1e-6) return std::nullopt;
+    const glm::dvec3 normal = glm::normalize(glm::cross(side, a));
     const auto t = intersectPlane(r, apex, normal);
     if (!t) return std::nullopt;
     const glm::dvec3 toHit = r.at(*t) - apex;

@@ -28,7 +28,7 @@ public:
 
     // Screen position of a world point; nullopt when it is behind the camera (or at its plane).
     std::optional<QPointF> project(const glm::dvec3& world) const;
-    // World-space ray through a screen position (from the near plane, or the eye for perspective).
+    // World-space ray through a screen position: from the eye (perspective) or the near plane (orthographic).
     Ray ray(const QPointF& screen) const;
     // Unit world-space direction the camera looks along.
     glm::dvec3 viewDirection() const;
@@ -67,9 +67,11 @@ std::vector<glm::dvec3> coneRim(const glm::dvec3& apex, const glm::dvec3& axis, 
                                 double length, int segments = 32);
 // Distance in pixels from `screen` to the projected rim polygon (infinity when none is visible).
 double distanceToConeRim(const ScreenProjector& projector, const std::vector<glm::dvec3>& rim, const QPointF& screen);
-// The half-angle (degrees, 0..90) of the cone whose edge passes under the mouse: the cursor ray meets the
-// plane through the axis that faces the camera best; the angle is between the axis and apex→hit.
+// The half-angle (degrees, 0..90) of the cone whose edge passes under the mouse. Seen from the side, the
+// cursor ray meets the plane through the axis that faces the camera best and the angle is between the axis
+// and apex→hit; seen along the axis (|axis·view| > 0.5), the ray meets the disc perpendicular to the axis at
+// `rimDistance` from the apex and the angle is atan(radius / rimDistance).
 std::optional<double> coneAngleUnderCursor(const ScreenProjector& projector, const glm::dvec3& apex,
-                                           const glm::dvec3& axis, const QPointF& screen);
+                                           const glm::dvec3& axis, const QPointF& screen, double rimDistance);
 
 }  // namespace lr

@@ -129,7 +129,7 @@ void Viewport::paintGL() {
     }
     const qreal dpr = devicePixelRatioF();
     const QSize size(qMax(1, int(std::lround(width() * dpr))), qMax(1, int(std::lround(height() * dpr))));
-    if (!r.render(m_camera, size, renderSettings(true), defaultFramebufferObject())) {
+    if (!r.render(renderCamera(), size, renderSettings(true), defaultFramebufferObject())) {
         if (m_error != r.lastError()) {
             m_error = r.lastError();
             emit statusMessage(tr("Rendering failed: %1").arg(m_error));
@@ -160,9 +160,20 @@ void Viewport::setCamera(const ViewCamera& camera) {
     update();
 }
 
-ScreenProjector Viewport::projector() const {
+ViewCamera Viewport::renderCamera() const {
     const SceneFrame f = m_scene->frame();
-    const ViewCamera c = m_camera.withClipPlanes(f.center, f.radius);
+    double radius = f.radius;
+    for (const Light& l : m_doc->rig().lights) {
+        const double d = glm::length(lightAnchor(m_doc->rig(), f, l) - f.center) * 1.05;
+        if (std::isfinite(d)) radius = std::max(radius, d);
+    }
+    // Far-away lights must not cost the model its depth precision: they are clipped past 100 radii.
+    radius = std::min(radius, 100.0 * f.radius);
+    return m_camera.withClipPlanes(f.center, radius);
+}
+
+ScreenProjector Viewport::projector() const {
+    const ViewCamera c = renderCamera();
     return ScreenProjector(c.view(), c.projection(aspect()), QSizeF(width(), height()));
 }
 
@@ -333,7 +344,7 @@ QString Viewport::exportScreenshot(const ScreenshotOptions& options) {
     s.transparentBackground = options.transparent;
     if (!options.gizmos) s.selectedLights.clear();
     QString error;
-    QImage image = m_snapshots->render(m_doc->renderRig(), m_camera, options.size, s, options.supersample, &error);
+    QImage image = m_snapshots->render(m_doc->renderRig(), renderCamera(), options.size, s, options.supersample, &error);
     if (image.isNull()) return error.isEmpty() ? tr("rendering failed") : error;
     if (options.format == "JPEG") image = image.convertToFormat(QImage::Format_RGB888);
     if (!image.save(options.path, options.format.constData(), options.format == "JPEG" ? 92 : -1))

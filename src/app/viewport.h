@@ -35,6 +35,8 @@ public:
     static void setDefaultSurfaceFormat();
 
     const ViewCamera& camera() const { return m_camera; }
+    // The camera as drawn: automatic clip planes enclose the model and every light's gizmo.
+    ViewCamera renderCamera() const;
     void setCamera(const ViewCamera& camera);
     ScreenProjector projector() const;  // widget pixels, the current camera
     std::optional<QPointF> lightScreenPosition(int row) const;

@@ -85,9 +85,16 @@ private slots:
         const glm::dvec3 apex(0), axis(0, -1, 0);
         const auto s = p.project(glm::dvec3(3, -3, 0));
         QVERIFY(s);
-        const auto angle = coneAngleUnderCursor(p, apex, axis, *s);
+        const auto angle = coneAngleUnderCursor(p, apex, axis, *s, 3.0);
         QVERIFY(angle);
         QVERIFY2(std::abs(*angle - 45.0) < 1e-6, qPrintable(QString::number(*angle)));
+        // Seen along the axis (the spot points away from the camera): the disc 4 units down the axis.
+        const glm::dvec3 away(0, 0, -1);
+        const auto s2 = p.project(glm::dvec3(4, 0, -4));  // 45° off the axis, 4 units along it
+        QVERIFY(s2);
+        const auto angle2 = coneAngleUnderCursor(p, apex, away, *s2, 4.0);
+        QVERIFY(angle2);
+        QVERIFY2(std::abs(*angle2 - 45.0) < 1e-6, qPrintable(QString::number(*angle2)));
         // The rim of a 30° cone of slant length 2 is at distance 2 from the apex, 30° from the axis.
         for (const glm::dvec3& q : coneRim(apex, axis, 30.0, 2.0, 12)) {
             QVERIFY(std::abs(glm::length(q) - 2.0) < 1e-9);

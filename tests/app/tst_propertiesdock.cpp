@@ -192,7 +192,7 @@ private slots:
         QVERIFY(doc.addLight(LightType::Spot));
         doc.setSelectedRows({0}, 0);
         const QByteArray before = QByteArray::number(doc.light(0).cone.outer);
-        const int steps = doc.undoStack()->count();
+        const int steps = doc.undoStack()->index();
 
         // Out of the format's range (0 < outer <= 90): the keystroke is refused in place.
         auto* outer = qobject_cast<NumberEdit*>(dock.field(LightProperty::ConeOuter));
@@ -202,8 +202,16 @@ private slots:
         QTest::keyClicks(outer, "95");
         QTest::keyClick(outer, Qt::Key_Return);
         QVERIFY(rejected.count() > 0);
+        const QString reason = rejected.last().at(0).toString();
+        QVERIFY2(reason.contains(QLatin1String("90")), qPrintable(reason));  // states the rule
         QVERIFY(!dock.message().isEmpty());
         QCOMPARE(QByteArray::number(doc.light(0).cone.outer), before);
+        // A valid angle typed into the same (degree-suffixed) field is stored.
+        outer->selectAll();
+        QTest::keyClicks(outer, "50");
+        QTest::keyClick(outer, Qt::Key_Return);
+        QCOMPARE(doc.light(0).cone.outer, 50.0);
+        doc.undoStack()->undo();
 
         // In range on its own but inconsistent with the light (inner > outer): refused by the document.
         auto* inner = qobject_cast<NumberEdit*>(dock.field(LightProperty::ConeInner));
@@ -214,7 +222,7 @@ private slots:
         QVERIFY(doc.light(0).cone.inner <= doc.light(0).cone.outer);
         QVERIFY(dock.message().contains(QLatin1String("inner"), Qt::CaseInsensitive) ||
                 dock.message().contains(QLatin1String("outer"), Qt::CaseInsensitive));
-        QCOMPARE(doc.undoStack()->count(), steps);
+        QCOMPARE(doc.undoStack()->index(), steps);
         QCOMPARE(inner->value(), doc.light(0).cone.inner);  // the field shows the stored value again
 
         // Not a number at all.

@@ -1,0 +1,319 @@
+// The editor's main window driven headless (Xvfb) with QTest mouse and keyboard events: add a spot light,
+// change its cone, undo, save, reopen, compare; the title and modified flag; Save/Discard/Cancel; a failed
+// rig open leaves everything as it was; selecting, dragging and aiming lights in the viewport.
+#include "app/documentfiles.h"
+#include "app/editoractions.h"
+#include "app/editorapp.h"
+#include "app/editorstatusbar.h"
+#include "app/errordialog.h"
+#include "app/commandline.h"
+#include "app/gizmointeraction.h"
+#include "app/lightsdock.h"
+#include "app/mainwindow.h"
+#include "app/numberedit.h"
+#include "app/propertiesdock.h"
+#include "app/scene.h"
+#include "app/viewport.h"
+#include "core/rigjson.h"
+#include "editor/document.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QComboBox>
+#include <QFile>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QToolBar>
+#include <glm/geometric.hpp>
+
+using namespace lr;
+
+class TestMainWindow : public QObject {
+    Q_OBJECT
+
+    std::unique_ptr<MainWindow> m_window;
+    QTemporaryDir m_dir;
+    QList<ErrorReport> m_errors;
+
+    Document* doc() { return m_window->document(); }
+    Viewport* viewport() { return m_window->viewport(); }
+
+    void pressKey(int key, Qt::KeyboardModifiers mods = Qt::NoModifier) {
+        QTest::keyClick(QApplication::focusWidget() ? QApplication::focusWidget() : m_window.get(), Qt::Key(key), mods);
+    }
+
+    static QByteArray json(const Rig& rig) { return writeRigJson(rig); }
+
+    // A mouse move with the left button held (QTest::mouseMove does not carry the button state reliably).
+    static void dragTo(QWidget* w, const QPointF& pos, Qt::KeyboardModifiers mods = Qt::NoModifier) {
+        QMouseEvent e(QEvent::MouseMove, pos, w->mapToGlobal(pos), Qt::NoButton, Qt::LeftButton, mods);
+        QApplication::sendEvent(w, &e);
+    }
+
+private slots:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true);
+        setApplicationIdentity();
+        QCoreApplication::setApplicationName(QStringLiteral("lightrig-test"));
+        QSettings().clear();
+        QVERIFY(m_dir.isValid());
+        setErrorPresenter([this](const ErrorReport& r) { m_errors.append(r); });
+        // No test may end up in a modal file dialog (it would wait forever under Xvfb).
+        auto noDialog = [] {
+            qWarning("unexpected file dialog");
+            return QString();
+        };
+
+        m_window = std::make_unique<MainWindow>();
+        m_window->files()->askOpenPath = [noDialog](const QString&, const QString&) { return noDialog(); };
+        m_window->files()->askSavePath = [noDialog](const QString&, const QString&, const QString&) { return noDialog(); };
+        QSignalSpy loaded(m_window->files(), &DocumentFiles::modelLoadFinished);
+        EditorOptions options;
+        options.restoreSession = false;
+        m_window->openInitial(options);
+        m_window->show();
+        QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+        QApplication::setActiveWindow(m_window.get());
+        QVERIFY(loaded.count() > 0 || loaded.wait(60000));
+        QVERIFY2(!m_window->scene()->isEmpty(), "the bundled model loaded");
+        QTRY_VERIFY_WITH_TIMEOUT(viewport()->hasRenderedFrame(), 30000);
+        QVERIFY2(viewport()->lastError().isEmpty(), qPrintable(viewport()->lastError()));
+        QVERIFY(m_errors.isEmpty());
+    }
+
+    void cleanupTestCase() {
+        // Nothing unsaved is left to ask about, so closing does not block.
+        doc()->undoStack()->setClean();
+        m_window.reset();
+        setErrorPresenter({});
+    }
+
+    void startsWithTheDefaultRig_untitledAndClean() {
+        QVERIFY(doc()->lightCount() > 0);
+        QCOMPARE(json(doc()->rig()), json(defaultRig()));
+        QVERIFY(m_window->windowTitle().contains(QLatin1String("Untitled")));
+        QVERIFY(!m_window->isWindowModified());
+        QVERIFY(!m_window->editorStatusBar()->frameTimeText().isEmpty());  // frame time is shown
+    }
+
+    void addSpot_changeCone_undo_save_reopen() {
+        doc()->newRig(Rig{});
+        QVERIFY(!m_window->isWindowModified());
+
+        // Add a spot light with the Lights dock's toolbar button.
+        LightsDock* lights = m_window->lightsDock();
+        QWidget* addSpot = lights->toolBar()->widgetForAction(lights->addLightAction(LightType::Spot));
+        QVERIFY(addSpot);
+        QTest::mouseClick(addSpot, Qt::LeftButton);
+        QCOMPARE(doc()->lightCount(), 1);
+        QVERIFY(doc()->light(0).type == LightType::Spot);
+        QCOMPARE(doc()->selectedRows(), QList<int>{0});
+        QVERIFY(m_window->isWindowModified());
+
+        // Change its cone in the Properties dock: the model by keyboard, then the outer angle typed in.
+        PropertiesDock* props = m_window->propertiesDock();
+        auto* coneModel = qobject_cast<QComboBox*>(props->field(LightProperty::ConeModel));
+        QVERIFY(coneModel && coneModel->isVisibleTo(m_window.get()));
+        coneModel->setFocus();
+        QTest::keyClick(coneModel, Qt::Key_End);  // "hard", the last model
+        QVERIFY(doc()->light(0).cone.model == ConeModel::Hard);
+        QVERIFY(!props->field(LightProperty::ConeInner)->isVisibleTo(m_window.get()));
+        const QByteArray afterModel = json(doc()->rig());
+
+        auto* outer = qobject_cast<NumberEdit*>(props->field(LightProperty::ConeOuter));
+        QVERIFY(outer);
+        outer->setFocus();
+        outer->selectAll();
+        QTest::keyClicks(outer, "50");
+        QTest::keyClick(outer, Qt::Key_Return);
+        QCOMPARE(doc()->light(0).cone.outer, 50.0);
+
+        // Undo (Ctrl+Z from the window) takes back exactly the angle.
+        m_window->activateWindow();
+        viewport()->setFocus();
+        QTest::keyClick(viewport(), Qt::Key_Z, Qt::ControlModifier);
+        QCOMPARE(json(doc()->rig()), afterModel);
+        const Rig saved = doc()->rig();
+
+        // Save (Ctrl+S): untitled, so it asks for a file name.
+        const QString path = m_dir.filePath(QStringLiteral("spot.json"));
+        m_window->files()->askSavePath = [path](const QString&, const QString&, const QString&) { return path; };
+        QTest::keyClick(viewport(), Qt::Key_S, Qt::ControlModifier);
+        QVERIFY(QFile::exists(path));
+        QCOMPARE(doc()->filePath(), path);
+        QVERIFY(m_window->windowTitle().contains(QLatin1String("spot.json")));
+        QVERIFY(!m_window->isWindowModified());
+
+        // Reopen: the same rig, and the file holds exactly its canonical form.
+        doc()->newRig(Rig{});
+        QVERIFY(m_window->files()->openRig(path));
+        QCOMPARE(doc()->lightCount(), 1);
+        QVERIFY(doc()->rig() == saved);
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QCOMPARE(f.readAll(), json(saved));
+        QVERIFY(!m_window->isWindowModified());
+    }
+
+    void modifiedFlag_followsTheUndoStack() {
+        QVERIFY(doc()->lightCount() > 0);
+        QVERIFY(doc()->setLightValue({0}, LightProperty::Intensity, 3.25));
+        QVERIFY(m_window->isWindowModified());
+        doc()->undoStack()->undo();
+        QVERIFY(!m_window->isWindowModified());
+    }
+
+    void unsavedChanges_askSaveDiscardCancel() {
+        QVERIFY(doc()->setLightValue({0}, LightProperty::Intensity, 4.5));
+        const QByteArray before = json(doc()->rig());
+        int asked = 0;
+        auto answer = DocumentFiles::UnsavedAnswer::Cancel;
+        m_window->files()->askUnsaved = [&](const QString&) {
+            ++asked;
+            return answer;
+        };
+        QVERIFY(!m_window->files()->newRig());  // Cancel: nothing happens
+        QCOMPARE(asked, 1);
+        QCOMPARE(json(doc()->rig()), before);
+        QVERIFY(!m_window->close());  // closing asks too, and Cancel keeps the window
+        QCOMPARE(asked, 2);
+        QVERIFY(m_window->isVisible());
+
+        answer = DocumentFiles::UnsavedAnswer::Save;  // Save writes the file, then the new rig comes
+        const QString path = doc()->filePath();
+        QVERIFY(m_window->files()->newRig());
+        QCOMPARE(readRigFile(path).rig->lights[0].intensity, 4.5);
+
+        QVERIFY(doc()->addLight(LightType::Point));
+        answer = DocumentFiles::UnsavedAnswer::Discard;
+        QVERIFY(m_window->files()->openRig(path));
+        QCOMPARE(asked, 4);
+        QCOMPARE(doc()->light(0).intensity, 4.5);
+    }
+
+    void failedOpen_leavesTheRigUntouched() {
+        const QByteArray before = json(doc()->rig());
+        const QString filePath = doc()->filePath();
+        const int steps = doc()->undoStack()->count();
+        const QString bad = m_dir.filePath(QStringLiteral("bad.json"));
+        QFile f(bad);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(R"({"format": "lightrig", "version": 1, "lights": [{"name": "A", "type": "point", "intensity": -5}]})");
+        f.close();
+        m_errors.clear();
+        QVERIFY(!m_window->files()->openRig(bad));
+        QCOMPARE(json(doc()->rig()), before);
+        QCOMPARE(doc()->filePath(), filePath);
+        QCOMPARE(doc()->undoStack()->count(), steps);
+        QCOMPARE(m_errors.size(), 1);
+        const QString all = m_errors[0].summary + QLatin1Char('\n') + m_errors[0].details.join(QLatin1Char('\n'));
+        QVERIFY2(all.contains(QLatin1String("bad.json")) && all.contains(QLatin1String("lights[0].intensity")),
+                 qPrintable(all));
+
+        // A model that cannot be read leaves the model as it was, too.
+        const auto model = m_window->scene()->model();
+        QSignalSpy failed(m_window->files(), &DocumentFiles::modelLoadFailed);
+        QVERIFY(m_window->files()->openModel(m_dir.filePath(QStringLiteral("missing.obj"))));
+        QVERIFY(failed.wait(30000));
+        QCOMPARE(m_window->scene()->model(), model);
+    }
+
+    void viewport_selectDragAndAim() {
+        doc()->newRig(Rig{});
+        QVERIFY(doc()->addLight(LightType::Spot));
+        viewport()->frameAll();
+        const SceneFrame frame = m_window->scene()->frame();
+        // Put the spot in front of the model, between it and the camera, a little off-centre.
+        const ViewCamera cam = viewport()->camera();
+        const glm::dvec3 world = frame.center + (cam.eye - frame.center) * 0.5 + cam.right() * (0.3 * frame.radius);
+        QVERIFY(doc()->setLightValue({0}, LightProperty::Position, QVariant::fromValue(world)));
+        doc()->setSelection({});
+        QApplication::processEvents();
+
+        // Click selects.
+        const auto at = viewport()->lightScreenPosition(0);
+        QVERIFY(at && viewport()->rect().contains(at->toPoint()));
+        QTest::mouseClick(viewport(), Qt::LeftButton, Qt::NoModifier, at->toPoint());
+        QCOMPARE(doc()->selectedRows(), QList<int>{0});
+
+        // Drag moves it in the view plane: one undo step, the depth kept.
+        const int steps = doc()->undoStack()->count();
+        const glm::dvec3 before = doc()->light(0).position;
+        const QPoint p0 = at->toPoint();
+        QTest::mousePress(viewport(), Qt::LeftButton, Qt::NoModifier, p0);
+        for (int i = 1; i <= 8; ++i) dragTo(viewport(), p0 + QPoint(5 * i, 0));
+        QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::NoModifier, p0 + QPoint(40, 0));
+        QCOMPARE(doc()->undoStack()->count(), steps + 1);
+        const glm::dvec3 after = doc()->light(0).position;
+        QVERIFY(glm::length(after - before) > 1e-6);
+        const ScreenProjector proj = viewport()->projector();
+        const double worldBefore = proj.depth(before), worldAfter = proj.depth(after);  // world space rig
+        QVERIFY(std::abs(worldBefore - worldAfter) < 1e-6 * std::max(1.0, worldBefore));
+        const auto moved = viewport()->lightScreenPosition(0);
+        QVERIFY(moved && std::abs(moved->x() - (p0.x() + 40)) < 1.5);
+        doc()->undoStack()->undo();
+        QVERIFY(doc()->light(0).position == before);
+
+        // Shift+click on the model aims the selected spot at the clicked point.
+        const auto centre = proj.project(frame.center);
+        QVERIFY(centre);
+        QTest::mouseClick(viewport(), Qt::LeftButton, Qt::ShiftModifier, centre->toPoint());
+        const glm::dvec3 toCentre = glm::normalize(frame.center - doc()->light(0).position);
+        QVERIFY2(glm::dot(doc()->light(0).direction, toCentre) > 0.9,
+                 qPrintable(QString::number(glm::dot(doc()->light(0).direction, toCentre))));
+
+        // A click on empty space clears the selection.
+        QTest::mouseClick(viewport(), Qt::LeftButton, Qt::NoModifier, QPoint(3, 3));
+        QVERIFY(doc()->selectedRows().isEmpty());
+    }
+
+    void viewport_coneEdgeDragChangesTheOuterAngle() {
+        QVERIFY(doc()->lightCount() == 1);
+        doc()->setSelectedRows({0}, 0);
+        QVERIFY(doc()->setLightValue({0}, LightProperty::ConeOuter, 30.0));
+        const Light& l = doc()->light(0);
+        const SceneFrame frame = m_window->scene()->frame();
+        const ScreenProjector proj = viewport()->projector();
+        const auto rim = coneRim(lightAnchor(doc()->rig(), frame, l), l.direction, l.cone.outer,
+                                 spotGizmoLength(doc()->rig(), frame, l), 16);
+        // A rim point well away from the light's own icon.
+        std::optional<QPointF> grab;
+        const auto icon = viewport()->lightScreenPosition(0);
+        for (const auto& q : rim) {
+            const auto s = proj.project(q);
+            if (s && viewport()->rect().contains(s->toPoint()) && (!grab || QLineF(*s, *icon).length() > QLineF(*grab, *icon).length()))
+                grab = s;
+        }
+        QVERIFY(grab);
+        QVERIFY(QLineF(*grab, *icon).length() > 2 * GizmoInteraction::kPickPixels);
+        QCOMPARE(viewport()->interaction()->pickConeEdge(proj, *grab), 0);
+        const int steps = doc()->undoStack()->count();
+        const QPointF outward = *icon + (*grab - *icon) * 1.3;
+        QTest::mousePress(viewport(), Qt::LeftButton, Qt::NoModifier, grab->toPoint());
+        dragTo(viewport(), (*grab + outward) / 2);
+        dragTo(viewport(), outward.toPoint());
+        QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::NoModifier, outward.toPoint());
+        QCOMPARE(doc()->undoStack()->count(), steps + 1);
+        QVERIFY2(doc()->light(0).cone.outer > 30.0, qPrintable(QString::number(doc()->light(0).cone.outer)));
+        doc()->undoStack()->undo();
+        QCOMPARE(doc()->light(0).cone.outer, 30.0);
+    }
+
+    void lookThroughLight_andFrameSelected() {
+        doc()->setSelectedRows({0}, 0);
+        m_window->actions()->lookThroughLight->trigger();
+        const glm::dvec3 eye = lightAnchor(doc()->rig(), m_window->scene()->frame(), doc()->light(0));
+        QVERIFY(glm::length(viewport()->camera().eye - eye) < 1e-9);
+        QVERIFY(glm::dot(viewport()->camera().forward(), doc()->light(0).direction) > 0.999);
+
+        m_window->actions()->frame->trigger();  // F with a selection: frames the light
+        const auto p = viewport()->lightScreenPosition(0);
+        QVERIFY(p && QLineF(*p, QPointF(viewport()->width() / 2.0, viewport()->height() / 2.0)).length() < 2.0);
+    }
+};
+
+QTEST_MAIN(TestMainWindow)
+#include "tst_mainwindow.moc"
