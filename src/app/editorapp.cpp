@@ -4,6 +4,7 @@
 #include "documentfiles.h"
 #include "editor/document.h"
 #include "mainwindow.h"
+#include "presetsdock.h"
 #include "sessionsafety.h"
 #include "viewport.h"
 
@@ -31,10 +32,15 @@ void scheduleScreenshot(MainWindow* window, const QString& path) {
             spot = doc->lightCount() - 1;
         }
         doc->setSelectedRows({spot}, spot);
-        // Two more frames so the selection highlight and docks are painted, then grab.
-        QTimer::singleShot(500, window, [window, path] {
+        window->viewport()->frameModelAndLights({spot});
+        // Let the preset thumbnails finish and the selection be painted, then grab.
+        auto* poll = new QTimer(window);
+        poll->setInterval(200);
+        QObject::connect(poll, &QTimer::timeout, window, [window, path, poll] {
+            if (window->presetsDock()->thumbnailsPending()) return;
+            poll->deleteLater();
             window->viewport()->update();
-            QTimer::singleShot(500, window, [window, path] {
+            QTimer::singleShot(400, window, [window, path] {
                 const QImage image = window->grab().toImage();
                 const bool ok = !image.isNull() && image.save(path);
                 std::fprintf(ok ? stdout : stderr, ok ? "lightrig: wrote %s (%dx%d)\n" : "lightrig: could not write %s\n",
@@ -42,6 +48,7 @@ void scheduleScreenshot(MainWindow* window, const QString& path) {
                 QCoreApplication::exit(ok ? 0 : 1);
             });
         });
+        poll->start();
     };
     auto waitForFrame = [window, grab] {
         if (window->viewport()->hasRenderedFrame()) grab();

@@ -55,22 +55,26 @@ void MainWindow::createDocks() {
     m_propertiesDock = new PropertiesDock(m_doc, this);
     m_renderDock = new RenderSettingsDock(m_doc, m_viewSettings, this);
     m_presetsDock = new PresetsDock(m_doc, m_presets, this);
-    m_presetsDock->setThumbnailRenderer(
-        [this](const Rig& rig, const QSize& size) { return m_viewport->renderThumbnail(rig, size); });
+    m_presetsDock->setThumbnailRenderer([this](const Rig& rig, const QSize& size) {
+        return m_scene->isEmpty() ? QImage() : m_viewport->renderThumbnail(rig, size);
+    });
+    connect(m_scene, &Scene::modelChanged, m_presetsDock, &PresetsDock::invalidateThumbnails);
     m_historyDock = new QDockWidget(tr("History"), this);
     m_historyDock->setObjectName(QStringLiteral("HistoryDock"));
     auto* history = new QUndoView(m_doc->undoStack(), m_historyDock);
     history->setEmptyLabel(tr("<opened>"));
     m_historyDock->setWidget(history);
 
+    // Left: the console (lights) over presets and history. Right: properties over render settings.
     addDockWidget(Qt::LeftDockWidgetArea, m_lightsDock);
     addDockWidget(Qt::LeftDockWidgetArea, m_presetsDock);
+    tabifyDockWidget(m_presetsDock, m_historyDock);
     addDockWidget(Qt::RightDockWidgetArea, m_propertiesDock);
     addDockWidget(Qt::RightDockWidgetArea, m_renderDock);
-    addDockWidget(Qt::RightDockWidgetArea, m_historyDock);
-    tabifyDockWidget(m_renderDock, m_historyDock);
-    m_propertiesDock->raise();
-    resizeDocks({m_lightsDock, m_propertiesDock}, {380, 320}, Qt::Horizontal);
+    m_presetsDock->raise();
+    resizeDocks({m_lightsDock, m_propertiesDock}, {400, 340}, Qt::Horizontal);
+    resizeDocks({m_lightsDock, m_presetsDock}, {300, 400}, Qt::Vertical);
+    resizeDocks({m_propertiesDock, m_renderDock}, {560, 300}, Qt::Vertical);
 }
 
 void MainWindow::connectStatus() {

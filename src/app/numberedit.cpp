@@ -85,6 +85,9 @@ QString NumberEdit::textFromValue(double value) const {
 }
 
 double NumberEdit::valueFromText(const QString& text) const {
+    // The shown text of the current value is rounded to 7 digits: reading it back (Return, focus out) must
+    // keep the exact stored value, not replace it with the rounded one (tests/safety/tst_uivalues.cpp).
+    if (stripAffixes(text) == textFromValue(value()).trimmed()) return value();
     bool ok = false;
     const double v = locale().toDouble(stripAffixes(text), &ok);
     return ok && std::isfinite(v) ? v : value();

@@ -32,6 +32,9 @@ QIcon placeholderIcon(const QString& name) {
 PresetsDock::PresetsDock(Document* document, PresetStore* store, QWidget* parent)
     : QDockWidget(tr("Presets"), parent), m_doc(document), m_store(store), m_list(new QListWidget) {
     setObjectName(QStringLiteral("PresetsDock"));
+    m_thumbnailTimer.setSingleShot(true);
+    m_thumbnailTimer.setInterval(0);
+    connect(&m_thumbnailTimer, &QTimer::timeout, this, &PresetsDock::renderNextThumbnail);
     auto* body = new QWidget(this);
     auto* layout = new QVBoxLayout(body);
     layout->setContentsMargins(2, 2, 2, 2);
@@ -77,14 +80,50 @@ PresetEntry PresetsDock::entryOf(const QListWidgetItem* item) const {
                          : PresetEntry{};
 }
 
+void PresetsDock::setThumbnailRenderer(ThumbnailRenderer renderer) {
+    m_renderThumbnail = std::move(renderer);
+    invalidateThumbnails();
+}
+
+void PresetsDock::invalidateThumbnails() {
+    m_rendered.clear();
+    reload();
+}
+
+void PresetsDock::renderNextThumbnail() {
+    if (m_pending.isEmpty() || !m_renderThumbnail) return;
+    const QString path = m_pending.takeFirst();
+    for (int i = 0; i < m_list->count(); ++i) {
+        QListWidgetItem* item = m_list->item(i);
+        const PresetEntry e = entryOf(item);
+        if (e.path != path) continue;
+        const RigReadResult r = m_store->read(e);
+        const QImage image =
+            r.ok() ? m_renderThumbnail(*r.rig, QSize(kThumbnailSize, kThumbnailSize) * 2) : QImage();
+        if (!image.isNull()) {
+            const QIcon icon(QPixmap::fromImage(image.scaled(kThumbnailSize, kThumbnailSize, Qt::KeepAspectRatio,
+                                                             Qt::SmoothTransformation)));
+            m_rendered.insert(path, icon);
+            item->setIcon(icon);
+        }
+        break;
+    }
+    if (!m_pending.isEmpty()) m_thumbnailTimer.start();
+}
+
 void PresetsDock::reload() {
     m_list->clear();
+    m_pending.clear();
     for (const PresetEntry& e : m_store->presets()) {
-        QIcon icon = e.thumbnail.isEmpty() ? placeholderIcon(e.name) : QIcon(e.thumbnail);
+        QIcon icon = !e.thumbnail.isEmpty()           ? QIcon(e.thumbnail)
+                     : m_rendered.contains(e.path)    ? m_rendered.value(e.path)
+                                                      : placeholderIcon(e.name);
+        if (e.thumbnail.isEmpty() && !m_rendered.contains(e.path)) m_pending.append(e.path);
         auto* item = new QListWidgetItem(icon, e.name, m_list);
         item->setData(kEntryRole, QVariantList{e.name, e.path, e.thumbnail, e.builtin});
         item->setToolTip(e.builtin ? tr("%1 (built-in)").arg(e.name) : QDir::toNativeSeparators(e.path));
     }
+    if (!m_pending.isEmpty() && m_renderThumbnail) m_thumbnailTimer.start();
 }
 
 bool PresetsDock::applyPreset(const PresetEntry& entry) {

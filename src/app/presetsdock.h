@@ -5,6 +5,9 @@
 #include "presetstore.h"
 
 #include <QDockWidget>
+#include <QHash>
+#include <QIcon>
+#include <QTimer>
 #include <functional>
 
 class QListWidget;
@@ -24,7 +27,8 @@ public:
     static constexpr int kThumbnailSize = 96;
 
     PresetsDock(Document* document, PresetStore* store, QWidget* parent = nullptr);
-    void setThumbnailRenderer(ThumbnailRenderer renderer) { m_renderThumbnail = std::move(renderer); }
+    // Also renders the thumbnails of presets that have none (built-ins), a few per event-loop pass.
+    void setThumbnailRenderer(ThumbnailRenderer renderer);
     // Fills `menu` with an entry per preset (kept up to date) plus "Save rig as preset…".
     void attachMenu(QMenu* menu);
     QListWidget* list() const { return m_list; }
@@ -34,9 +38,13 @@ public slots:
     void saveAsPreset();                              // asks for a name
     bool saveAsPreset(const QString& name);           // no dialog (tests); asks before overwriting
     void reload();
+    // The model changed: rendered thumbnails (not the saved ones) are redone on it.
+    void invalidateThumbnails();
+    bool thumbnailsPending() const { return !m_pending.isEmpty(); }
 
 private:
     void deleteSelected();
+    void renderNextThumbnail();
     void rebuildMenu(QMenu* menu);
     PresetEntry entryOf(const QListWidgetItem* item) const;
 
@@ -45,6 +53,9 @@ private:
     QListWidget* m_list;
     QToolButton* m_delete = nullptr;
     ThumbnailRenderer m_renderThumbnail;
+    QHash<QString, QIcon> m_rendered;  // preset path -> thumbnail rendered on the current model
+    QStringList m_pending;             // preset paths still to render
+    QTimer m_thumbnailTimer;           // one thumbnail per event-loop pass
 };
 
 }  // namespace lr

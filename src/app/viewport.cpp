@@ -188,6 +188,13 @@ void Viewport::frameAll() {
     update();
 }
 
+namespace {
+void include(Bounds& b, const glm::dvec3& p) {
+    b.min = glm::min(b.min, p);
+    b.max = glm::max(b.max, p);
+}
+}  // namespace
+
 void Viewport::frameSelectionOrAll() {
     const QList<int> rows = m_doc->selectedRows();
     if (rows.isEmpty()) {
@@ -198,17 +205,48 @@ void Viewport::frameSelectionOrAll() {
     Bounds b;
     b.min = glm::dvec3(std::numeric_limits<double>::infinity());
     b.max = -b.min;
-    for (int row : rows) {
-        const glm::dvec3 p = lightAnchor(m_doc->rig(), f, m_doc->light(row));
-        b.min = glm::min(b.min, p);
-        b.max = glm::max(b.max, p);
-    }
+    for (int row : rows) include(b, lightAnchor(m_doc->rig(), f, m_doc->light(row)));
     // A single light gets some room around it: a quarter of the scene's radius.
     const glm::dvec3 pad(0.25 * f.radius);
     b.min -= pad;
     b.max += pad;
     m_camera.znear = m_camera.zfar = 0.0;
     m_camera.frameAll(b, aspect());
+    update();
+}
+
+void Viewport::frameModelAndLights(const QList<int>& rows) {
+    const SceneFrame f = m_scene->frame();
+    Bounds b = m_scene->model()->bounds;
+    std::vector<glm::dvec3> points;
+    for (int row : rows) {
+        if (row < 0 || row >= m_doc->lightCount()) continue;
+        points.push_back(lightAnchor(m_doc->rig(), f, m_doc->light(row)));
+        include(b, points.back());
+    }
+    const Bounds& m = m_scene->model()->bounds;
+    for (int i = 0; i < 8; ++i)
+        points.emplace_back(i & 1 ? m.max.x : m.min.x, i & 2 ? m.max.y : m.min.y, i & 4 ? m.max.z : m.min.z);
+    m_camera.znear = m_camera.zfar = 0.0;
+    m_camera.frameAll(b, aspect());
+    // frameAll fits a bounding sphere, which leaves the model small: move in while everything stays in view.
+    const QRectF inside = QRectF(rect()).adjusted(width() * 0.06, height() * 0.06, -width() * 0.06, -height() * 0.06);
+    auto fits = [&] {
+        const ScreenProjector p = projector();
+        for (const glm::dvec3& q : points) {
+            const auto s = p.project(q);
+            if (!s || !inside.contains(*s)) return false;
+        }
+        return true;
+    };
+    for (int i = 0; i < 40 && fits(); ++i) {
+        const ViewCamera previous = m_camera;
+        m_camera.dolly(0.95);
+        if (!fits()) {
+            m_camera = previous;
+            break;
+        }
+    }
     update();
 }
 

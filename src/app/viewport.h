@@ -51,6 +51,8 @@ public:
 public slots:
     void frameAll();
     void frameSelectionOrAll();
+    // Frames the model together with the gizmos of these lights (the README screenshot shows both).
+    void frameModelAndLights(const QList<int>& rows);
     void setStandardView(const QString& name);
     void setModelCamera(int index);
     void lookThroughLight(int row);
