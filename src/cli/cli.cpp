@@ -21,6 +21,7 @@ const Subcommand kSubcommands[] = {
     {"format", runFormat, false},
     {"render", runRender, true},
     {"bench", runBench, true},
+    {"import-worker", runImportWorker, false},  // hidden: model/isolatedimport.h runs it
 };
 }  // namespace
 

@@ -22,5 +22,6 @@ int runValidate(const QStringList& args);  // validate.cpp
 int runFormat(const QStringList& args);    // validate.cpp
 int runRender(const QStringList& args);    // render.cpp
 int runBench(const QStringList& args);     // bench.cpp
+int runImportWorker(const QStringList& args);  // importworker.cpp (hidden, see model/isolatedimport.h)
 
 }  // namespace lr::cli

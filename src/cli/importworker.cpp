@@ -1,0 +1,195 @@
+// `lightrig import-worker` (hidden): imports one model for a parent process (model/isolatedimport.h) so
+// that an importer crash, hang or allocation bomb ends this process, not the editor or `lightrig render`.
+// Reads the request from stdin and writes frames to stdout (model/importprotocol.h). The parent sets the
+// memory limit (RLIMIT_AS) before this starts; a failed allocation is remembered so that a crash that
+// follows it can be reported as the memory limit rather than as a plain crash.
+#include "cli.h"
+
+#include "model/importprotocol.h"
+#include "model/modelcodec.h"
+#include "model/modelloader.h"
+
+#include <QByteArray>
+#include <QFile>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTextStream>
+#include <QThread>
+#include <atomic>
+#include <climits>
+#include <csignal>
+#include <cstring>
+#include <fcntl.h>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
+#include <mutex>
+#include <new>
+#include <unistd.h>
+#include <vector>
+
+namespace lr::cli {
+
+namespace {
+
+namespace ip = importprotocol;
+
+int g_replyFd = -1;
+volatile std::sig_atomic_t g_allocationFailed = 0;
+
+bool writeAll(const char* data, std::size_t size) {
+    while (size > 0) {
+        const ssize_t n = ::write(g_replyFd, data, size);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) return false;
+        data += n;
+        size -= std::size_t(n);
+    }
+    return true;
+}
+
+bool writeFrame(char type, const char* payload, std::size_t size) {
+    char header[ip::kFrameHeaderSize];
+    header[0] = type;
+    const quint64 length = size;
+    std::memcpy(header + 1, &length, sizeof length);
+    return writeAll(header, sizeof header) && writeAll(payload, size);
+}
+
+// Async-signal-safe: only write(2) and re-raising with the default action (SA_RESETHAND).
+void crashHandler(int sig) {
+    if (g_allocationFailed && g_replyFd >= 0) {
+        const char frame[ip::kFrameHeaderSize] = {ip::kOutOfMemory, 0, 0, 0, 0, 0, 0, 0, 0};
+        [[maybe_unused]] const ssize_t n = ::write(g_replyFd, frame, sizeof frame);
+    }
+    ::raise(sig);
+}
+
+// Called by operator new when an allocation fails: remember it, then let new throw std::bad_alloc.
+void onAllocationFailure() {
+    g_allocationFailed = 1;
+    std::set_new_handler(nullptr);
+}
+
+// This process lives for one import: keep freed memory for reuse rather than handing it back to the
+// kernel and faulting it in again (Assimp's post-processing allocates and frees large arrays over and
+// over). Measured on a 1M-triangle PLY: the worker's CPU time over a direct import went from ~+15% to ~+4%.
+void tuneAllocator() {
+#ifdef __GLIBC__
+    mallopt(M_MMAP_THRESHOLD, 32 << 20);
+    mallopt(M_TRIM_THRESHOLD, INT_MAX);
+    mallopt(M_TOP_PAD, 64 << 20);
+#endif
+}
+
+void installCrashReporting() {
+    std::set_new_handler(onAllocationFailure);
+    struct sigaction sa {};
+    sa.sa_handler = crashHandler;
+    sa.sa_flags = SA_RESETHAND | SA_NODEFER;
+    sigemptyset(&sa.sa_mask);
+    for (int sig : {SIGSEGV, SIGABRT, SIGBUS, SIGILL, SIGFPE})
+        sigaction(sig, &sa, nullptr);
+}
+
+// Moves the reply channel off fd 1, and points fd 1 at stderr: library chatter on stdout cannot reach
+// the parent's frame reader.
+bool takeStdout() {
+    g_replyFd = ::fcntl(STDOUT_FILENO, F_DUPFD_CLOEXEC, 3);
+    if (g_replyFd < 0) return false;
+    ::dup2(STDERR_FILENO, STDOUT_FILENO);
+#ifdef F_SETPIPE_SZ
+    ::fcntl(g_replyFd, F_SETPIPE_SZ, 1 << 20); // fewer round trips for large models; best effort
+#endif
+    return true;
+}
+
+QByteArray readRequest() {
+    QFile in;
+    if (!in.open(stdin, QIODevice::ReadOnly)) return {};
+    return in.read(ip::kMaxRequestBytes);
+}
+
+[[noreturn]] void testCrash(const QByteArray& mode) {
+    if (mode == "segv") ::raise(SIGSEGV);
+    if (mode == "abort") std::abort();
+    if (mode == "hang")
+        for (;;)
+            QThread::sleep(1);
+    if (mode == "oom") {
+        static std::vector<char*> hoard; // keeps every block alive until new fails, uncaught
+        for (;;) {
+            char* block = new char[64 << 20];
+            block[0] = 1;
+            hoard.push_back(block);
+        }
+    }
+    if (mode == "garbage") {
+        const QByteArray junk(4096, '\x5a');
+        writeFrame(ip::kModel, junk.constData(), std::size_t(junk.size()));
+    }
+    if (mode == "truncate") {
+        const QByteArray encoded = encodeModel(makeSphere(1.0, 16, 8));
+        char header[ip::kFrameHeaderSize] = {ip::kModel};
+        const quint64 length = quint64(encoded.size());
+        std::memcpy(header + 1, &length, sizeof length);
+        writeAll(header, sizeof header);
+        writeAll(encoded.constData(), std::size_t(encoded.size() / 2));
+    }
+    std::_Exit(mode == "exit" ? 3 : 0);
+}
+
+} // namespace
+
+int runImportWorker(const QStringList&) {
+    QTextStream err(stderr);
+    installCrashReporting();
+    tuneAllocator();
+    if (!takeStdout()) {
+        err << "lightrig import-worker: cannot take over stdout\n";
+        return Failed;
+    }
+    const QJsonObject request = QJsonDocument::fromJson(readRequest()).object();
+    const QString path = request.value(QStringLiteral("path")).toString();
+    if (path.isEmpty()) {
+        err << "lightrig import-worker: expects a JSON request with a path on stdin (used by lightrig "
+               "itself)\n";
+        return Usage;
+    }
+    if (const QByteArray mode = qgetenv(ip::kTestCrashVariable); !mode.isEmpty()) testCrash(mode);
+
+    ModelLoadOptions options;
+    options.allowTexturesOutsideFolder =
+        request.value(QStringLiteral("allowTexturesOutsideFolder")).toBool(false);
+    options.maxDataUriBytes =
+        qint64(request.value(QStringLiteral("maxDataUriBytes")).toDouble(double(options.maxDataUriBytes)));
+    std::mutex writing;
+    double lastSent = -1.0;
+    options.progress = [&](double fraction) {
+        const std::lock_guard lock(writing);
+        if (fraction - lastSent >= 0.005 || (fraction >= 1.0 && lastSent < 1.0)) {
+            lastSent = fraction;
+            return writeFrame(ip::kProgress, reinterpret_cast<const char*>(&fraction), sizeof fraction);
+        }
+        return true; // the parent cancels by killing this process
+    };
+
+    const ModelLoadResult result = loadModel(path, options);
+    const std::lock_guard lock(writing);
+    bool sent;
+    if (result.ok()) {
+        char header[ip::kFrameHeaderSize] = {ip::kModel};
+        const quint64 length = encodedModelSize(*result.model);
+        std::memcpy(header + 1, &length, sizeof length);
+        sent = writeAll(header, sizeof header) && writeModel(*result.model, writeAll);
+    } else {
+        QByteArray payload(1, char((result.cancelled ? ip::kErrorCancelled : 0) |
+                                   (g_allocationFailed ? ip::kErrorOutOfMemory : 0)));
+        payload += result.error.toUtf8().left(ip::kMaxErrorBytes);
+        sent = writeFrame(ip::kError, payload.constData(), std::size_t(payload.size()));
+    }
+    // The reply is out: skip freeing a possibly huge model and Qt's shutdown.
+    std::_Exit(sent ? Ok : Failed);
+}
+
+} // namespace lr::cli

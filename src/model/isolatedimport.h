@@ -1,0 +1,42 @@
+// Importing a model in a child process (`lightrig import-worker`), so that an Assimp crash, abort, hang
+// or allocation bomb cannot take down the editor or `lightrig render`: the child imports with
+// loadModel (modelloader.h) and sends the Model back in modelcodec.h's form, which is validated here
+// before anything uses it. Whatever goes wrong becomes ModelLoadResult::error:
+//   "could not import spider.fbx: the importer crashed (signal 11)"
+//   "could not import spider.fbx: the importer aborted (signal 6)"
+//   "could not import spider.fbx: the importer ran out of its 8 GiB memory limit"
+//   "could not import spider.fbx: the importer did not finish within 120 s"
+//   "could not import spider.fbx: the importer sent a malformed reply (<reason>)"
+// and the caller keeps whatever it had.
+#pragma once
+
+#include "modelloader.h"
+
+#include <QString>
+#include <atomic>
+
+namespace lr {
+
+struct ImportLimits {
+    int timeoutMs = 120'000;        // wall-clock limit for the whole import; <= 0: none
+    qint64 memoryBytes = 8ll << 30; // the worker's address-space limit (RLIMIT_AS); <= 0: none
+    // Set to true (from any thread) to stop the import; the worker is killed within ~50 ms.
+    const std::atomic<bool>* cancel = nullptr;
+};
+
+// Imports `path` in a worker process. options.progress is called on the calling thread at least every
+// 50 ms while the worker runs (with the last fraction when nothing new arrived), so returning false from
+// it cancels even a hung import; result.cancelled is then set. Blocks the calling thread: call it from a
+// worker thread in a GUI (see app/modelloadjob.h). Thread-safe.
+ModelLoadResult importModelIsolated(const QString& path, const ModelLoadOptions& options = {},
+                                    const ImportLimits& limits = {});
+
+// The executable run as `EXE import-worker`; empty (the default) means
+// QCoreApplication::applicationFilePath(), i.e. lightrig itself. Tests point it at LIGHTRIG_EXECUTABLE.
+void setImportWorkerExecutable(const QString& path);
+QString importWorkerExecutable();
+
+// "8 GiB", "512 MiB": the memory limit as the error messages write it.
+QString formatMemoryLimit(qint64 bytes);
+
+} // namespace lr
