@@ -158,6 +158,13 @@ float srgbToLinear(float x) {
     return x <= 0.04045 ? x / 12.92 : pow((x + 0.055) / 1.055, 2.4);
 }
 
+// Exposure (scale = 2^EV), tone map and sRGB encoding of linear radiance, per channel: what every output
+// path applies (the display paths per fragment, tonemap.frag after a float target).
+vec3 displayEncode(vec3 radiance, float exposureScale, int op) {
+    vec3 x = radiance * exposureScale;
+    return vec3(linearToSrgb(toneMap(op, x.r)), linearToSrgb(toneMap(op, x.g)), linearToSrgb(toneMap(op, x.b)));
+}
+
 #ifdef LR_SHADING
 
 // ---- whole-surface shading (shade.h) ----
@@ -223,10 +230,12 @@ struct ShadeSettings {
 uniform samplerBuffer uLights;  // LR_LIGHT_TEXELS RGBA32F texels per light, view space
 uniform int uLightCount;
 
-// Texel layout (src/render/lightbuffer.cpp packLight writes it):
-//   0: position.xyz, type        1: direction.xyz, falloff   2: color.xyz, cone   3: specular.xyz, diffuse
-//   4: ambient.xyz, rimExponent  5: range, falloffExponent, constant, linear
-//   6: quadratic, cosInner, cosOuter, outer                  7: coneExponent, 0, 0, 0
+// Texel layout (src/render/lightpack.cpp packLight writes it), ordered so that the common lights read
+// few texels (a point light with one falloff model reads 0-2; texelFetch is costly on software GL):
+//   0: position.xyz, range        1: color.xyz, type          2: specular.xyz, falloff
+//   3: direction.xyz, falloffExponent                        4: ambient.xyz, diffuse
+//   5: constant, linear, quadratic, cone                      6: cosInner, cosOuter, outer, coneExponent
+//   7: rimExponent, 0, 0, 0
 // Unused fields are never read: the compiler drops their fetches.
 ShadeLight loadLight(int index) {
     int base = index * LR_LIGHT_TEXELS;
@@ -240,24 +249,24 @@ ShadeLight loadLight(int index) {
     vec4 t7 = texelFetch(uLights, base + 7);
     ShadeLight l;
     l.position = t0.xyz;
-    l.type = int(t0.w);
-    l.direction = t1.xyz;
-    l.falloff = int(t1.w);
-    l.color = t2.xyz;
-    l.cone = int(t2.w);
-    l.specular = t3.xyz;
-    l.diffuse = int(t3.w);
+    l.range = t0.w;
+    l.color = t1.xyz;
+    l.type = int(t1.w);
+    l.specular = t2.xyz;
+    l.falloff = int(t2.w);
+    l.direction = t3.xyz;
+    l.falloffExponent = t3.w;
     l.ambient = t4.xyz;
-    l.rimExponent = t4.w;
-    l.range = t5.x;
-    l.falloffExponent = t5.y;
-    l.constant = t5.z;
-    l.linear = t5.w;
-    l.quadratic = t6.x;
-    l.cosInner = t6.y;
-    l.cosOuter = t6.z;
-    l.outer = t6.w;
-    l.coneExponent = t7.x;
+    l.diffuse = int(t4.w);
+    l.constant = t5.x;
+    l.linear = t5.y;
+    l.quadratic = t5.z;
+    l.cone = int(t5.w);
+    l.cosInner = t6.x;
+    l.cosOuter = t6.y;
+    l.outer = t6.z;
+    l.coneExponent = t6.w;
+    l.rimExponent = t7.x;
     return l;
 }
 

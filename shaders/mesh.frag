@@ -1,6 +1,9 @@
-// Mesh fragment stage: builds the Surface (material, textures, normal map, double-sided flip) and either
-// shades it with every uploaded light (LR_OUTPUT_RADIANCE: linear HDR radiance, alpha = coverage) or
-// writes it to the G-buffer (LR_OUTPUT_GBUFFER) for the CPU double-precision reference.
+// Mesh fragment stage: builds the Surface (material, textures, normal map, double-sided flip), then
+//   LR_OUTPUT_DISPLAY: shades it with every uploaded light and applies exposure, tone map and sRGB
+//     encoding right here (exactly what tonemap.frag does to a float target, without the extra pass);
+//   LR_OUTPUT_RADIANCE: writes the linear HDR radiance (alpha = coverage) for the tone-map pass;
+//   LR_OUTPUT_GBUFFER: writes the Surface (src/render/targets.h layout) for the deferred lighting pass
+//     (deferred.frag) and for the CPU double-precision reference.
 in vec3 vPosition;
 in vec3 vNormal;
 #if defined(LR_BASE_COLOR_TEXTURE) || defined(LR_NORMAL_MAP) || defined(LR_EMISSIVE_TEXTURE)
@@ -30,11 +33,14 @@ uniform sampler2D uEmissiveTex;  // sRGB
 #endif
 
 #ifdef LR_OUTPUT_GBUFFER
-layout(location = 0) out vec4 oPosition;  // view space xyz, 1
-layout(location = 1) out vec4 oNormal;    // view space unit normal as shaded, 1
-layout(location = 2) out vec4 oAlbedo;    // linear rgb, alpha
-layout(location = 3) out vec4 oSpecular;  // ks rgb, shininess
-layout(location = 4) out vec4 oEmissive;  // linear rgb, 1
+layout(location = 0) out vec4 oGBuffer0;  // view-space position.xyz, shininess
+layout(location = 1) out vec4 oGBuffer1;  // unit normal as shaded, emissive.r
+layout(location = 2) out vec4 oGBuffer2;  // albedo.rgb, emissive.g
+layout(location = 3) out vec4 oGBuffer3;  // specular (ks).rgb, emissive.b
+#elif defined(LR_OUTPUT_DISPLAY)
+uniform float uExposureScale;  // 2^EV
+uniform int uToneMap;
+layout(location = 0) out vec4 oColor;  // sRGB-encoded display colour, alpha 1
 #else
 layout(location = 0) out vec4 oColor;  // linear radiance, alpha 1 (coverage after the MSAA resolve)
 #endif
@@ -73,15 +79,19 @@ Surface surfaceHere() {
 void main() {
     Surface s = surfaceHere();
 #ifdef LR_OUTPUT_GBUFFER
-    oPosition = vec4(s.position, 1.0);
-    oNormal = vec4(s.normal, 1.0);
-    oAlbedo = vec4(s.albedo, 1.0);
-    oSpecular = vec4(s.specular, s.shininess);
-    oEmissive = vec4(s.emissive, 1.0);
+    oGBuffer0 = vec4(s.position, s.shininess);
+    oGBuffer1 = vec4(s.normal, s.emissive.r);
+    oGBuffer2 = vec4(s.albedo, s.emissive.g);
+    oGBuffer3 = vec4(s.specular, s.emissive.b);
 #else
     ShadeSettings st;
     st.ambient = uAmbient;
     st.distanceScale = uDistanceScale;
-    oColor = vec4(shadeSurface(s, st), 1.0);
+    vec3 radiance = shadeSurface(s, st);
+#ifdef LR_OUTPUT_DISPLAY
+    oColor = vec4(displayEncode(radiance, uExposureScale, uToneMap), 1.0);
+#else
+    oColor = vec4(radiance, 1.0);
+#endif
 #endif
 }

@@ -173,6 +173,7 @@ bool OffscreenRenderer::renderRadiance(const ViewCamera& camera, QSize size, con
         return fail(error, QStringLiteral("float read-back size %1x%2 must be within one tile (%3)")
                                .arg(size.width()).arg(size.height()).arg(maxTileSize()));
     RenderSettings s = settings;
+    s.hdrTarget = true;
     s.hdrFloat32 = true;
     s.showGizmos = s.showGrid = false;
     if (!ensureTarget(size, error)) return false;

@@ -63,9 +63,13 @@ MeshProgram* ProgramCache::meshProgram(const FeatureKey& key, QString* error) {
         return nullptr;
     }
     QString message;
-    auto program = build(shaderPrelude(key), {QStringLiteral("mesh.vert")},
-                         {QStringLiteral("lighting.glsl"), QStringLiteral("mesh.frag")},
-                         QStringLiteral("variant [%1]").arg(key.describe()), &message);
+    auto program = key.deferredLighting
+                       ? build(shaderPrelude(key), {QStringLiteral("fullscreen.vert")},
+                               {QStringLiteral("lighting.glsl"), QStringLiteral("deferred.frag")},
+                               QStringLiteral("variant [%1]").arg(key.describe()), &message)
+                       : build(shaderPrelude(key), {QStringLiteral("mesh.vert")},
+                               {QStringLiteral("lighting.glsl"), QStringLiteral("mesh.frag")},
+                               QStringLiteral("variant [%1]").arg(key.describe()), &message);
     if (!program) {
         m_failed.emplace(key, message);
         if (error) *error = message;
@@ -83,11 +87,14 @@ MeshProgram* ProgramCache::meshProgram(const FeatureKey& key, QString* error) {
     mp->ambient = p->uniformLocation("uAmbient");
     mp->distanceScale = p->uniformLocation("uDistanceScale");
     mp->lightCount = p->uniformLocation("uLightCount");
+    mp->exposureScale = p->uniformLocation("uExposureScale");
+    mp->toneMap = p->uniformLocation("uToneMap");
     p->bind();
     p->setUniformValue("uBaseColorTex", 0);
     p->setUniformValue("uNormalTex", 1);
     p->setUniformValue("uEmissiveTex", 2);
     p->setUniformValue("uLights", 3);
+    for (int i = 0; i < 4; ++i) p->setUniformValue(qPrintable(QStringLiteral("uGBuffer%1").arg(i)), 4 + i);
     p->release();
     mp->program = std::move(program);
     return m_mesh.emplace(key, std::move(mp)).first->second.get();

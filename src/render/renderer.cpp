@@ -166,13 +166,13 @@ ViewCamera Renderer::effectiveCamera(const ViewCamera& camera) const {
     return camera.withClipPlanes(f.center, f.radius);
 }
 
-bool Renderer::ensureTargets(QSize size, int samples, bool float32) {
+bool Renderer::ensureTargets(QSize size, int samples, GLenum colorFormat) {
     const int n = std::min(samples > 1 ? samples : 0, m_maxSamples);
     Targets& t = *m_targets;
-    if (t.fbo && t.size == size && t.samples == (n > 1 ? n : 0) && t.float32 == float32) return true;
+    if (t.fbo && t.size == size && t.samples == (n > 1 ? n : 0) && t.colorFormat == colorFormat) return true;
     QString error;
-    if (t.create(this, size, n, float32, &error)) return true;
-    if (n > 1 && t.create(this, size, 0, float32, &error)) {
+    if (t.create(this, size, n, colorFormat, &error)) return true;
+    if (n > 1 && t.create(this, size, 0, colorFormat, &error)) {
         qCWarning(lcRender) << "multisampling unavailable for this target, rendering without it";
         return true;
     }
@@ -205,7 +205,7 @@ void Renderer::uploadLights(const glm::dmat4& view) {
 }
 
 bool Renderer::drawModel(const glm::dmat4& view, const glm::dmat4& projection, const RenderSettings& settings,
-                         bool gbuffer) {
+                         int output) {
     const Model* model = m_model->model();
     m_stats.drawCalls = 0;
     if (!model || m_model->draws().empty()) return true;
@@ -215,16 +215,17 @@ bool Renderer::drawModel(const glm::dmat4& view, const glm::dmat4& projection, c
     const lighting::ShadeSettings<double> shade = prepareSettings(m_rig, sceneFrame());
     const glm::vec3 ambient(shade.ambient);
     const RigFeatures rig = rigFeatures(m_rig);
+    const float exposureScale = float(std::exp2(std::clamp(settings.exposureEV, -60.0, 60.0)));
 
     // Group the draws by program so each variant is bound once per frame.
     std::vector<std::pair<FeatureKey, const GpuDraw*>> order;
     order.reserve(m_model->draws().size());
     for (const GpuDraw& d : m_model->draws()) {
         FeatureKey key;
-        key.rig = rig;
+        if (ShaderOutput(output) != ShaderOutput::GBuffer) key.rig = rig;  // the G-pass does no lighting
         key.material = d.features;
         key.quality = Quality::Exact;  // Balanced and Fast are not implemented yet: they render as Exact
-        key.output = gbuffer ? ShaderOutput::GBuffer : ShaderOutput::Radiance;
+        key.output = ShaderOutput(output);
         order.emplace_back(key, &d);
     }
     std::stable_sort(order.begin(), order.end(),
@@ -257,6 +258,8 @@ bool Renderer::drawModel(const glm::dmat4& view, const glm::dmat4& projection, c
             glUniform3fv(p->ambient, 1, glm::value_ptr(ambient));
             glUniform1f(p->distanceScale, float(shade.distanceScale));
             glUniform1i(p->lightCount, m_stats.lightsUploaded);
+            if (p->exposureScale >= 0) glUniform1f(p->exposureScale, exposureScale);
+            if (p->toneMap >= 0) glUniform1i(p->toneMap, int(settings.toneMap));
         }
         const Material& m = d->material >= 0 ? model->materials[size_t(d->material)] : defaultMaterial;
         glUniform4fv(p->baseColor, 1, glm::value_ptr(m.baseColor));
@@ -277,6 +280,8 @@ bool Renderer::drawModel(const glm::dmat4& view, const glm::dmat4& projection, c
     }
     glBindVertexArray(0);
     glDisable(GL_CULL_FACE);
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
     glActiveTexture(GL_TEXTURE0);
     return ok;
 }
@@ -376,6 +381,66 @@ void Renderer::endTimer() {
     ++m_queriesPending;
 }
 
+// The pixels of a `size` target that the box can cover under `viewProjection` (conservative; the whole
+// target when a corner is behind the eye).
+static QRect screenBounds(const Bounds& box, const glm::dmat4& viewProjection, QSize size) {
+    double x0 = 1, y0 = 1, x1 = -1, y1 = -1;
+    for (int i = 0; i < 8; ++i) {
+        const glm::dvec3 c((i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
+                           (i & 4) ? box.max.z : box.min.z);
+        const glm::dvec4 p = viewProjection * glm::dvec4(c, 1.0);
+        if (!(p.w > 1e-12)) return QRect(QPoint(0, 0), size);
+        x0 = std::min(x0, p.x / p.w), x1 = std::max(x1, p.x / p.w);
+        y0 = std::min(y0, p.y / p.w), y1 = std::max(y1, p.y / p.w);
+    }
+    const auto px = [&](double ndc, int extent) { return std::clamp((ndc * 0.5 + 0.5) * extent, 0.0, double(extent)); };
+    const int left = int(std::floor(px(x0, size.width()))) - 1, right = int(std::ceil(px(x1, size.width()))) + 1;
+    const int bottom = int(std::floor(px(y0, size.height()))) - 1, top = int(std::ceil(px(y1, size.height()))) + 1;
+    return QRect(QPoint(0, 0), size).intersected(QRect(left, bottom, right - left, top - bottom));  // GL rows
+}
+
+bool Renderer::lightingPass(const RenderSettings& settings, bool hdr, const QRect& scissor) {
+    FeatureKey key;
+    key.rig = rigFeatures(m_rig);
+    key.quality = Quality::Exact;
+    key.output = hdr ? ShaderOutput::Radiance : ShaderOutput::Display;
+    key.deferredLighting = true;
+    QString error;
+    MeshProgram* p = m_programs->meshProgram(key, &error);
+    if (!p) return fail(error);
+    const lighting::ShadeSettings<double> shade = prepareSettings(m_rig, sceneFrame());
+    p->program->bind();
+    glUniform3fv(p->ambient, 1, glm::value_ptr(glm::vec3(shade.ambient)));
+    glUniform1f(p->distanceScale, float(shade.distanceScale));
+    glUniform1i(p->lightCount, m_stats.lightsUploaded);
+    if (p->exposureScale >= 0) glUniform1f(p->exposureScale, float(std::exp2(std::clamp(settings.exposureEV, -60.0, 60.0))));
+    if (p->toneMap >= 0) glUniform1i(p->toneMap, int(settings.toneMap));
+    glActiveTexture(GL_TEXTURE0 + kLightUnit);
+    glBindTexture(GL_TEXTURE_BUFFER, m_lightTexture);
+    for (int i = 0; i < kGBufferTargets; ++i) {
+        glActiveTexture(GLenum(GL_TEXTURE4 + i));
+        glBindTexture(GL_TEXTURE_2D, m_targets->gbuffer[i]);
+    }
+    glActiveTexture(GL_TEXTURE0);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_GREATER);  // the triangle lies on the far plane: passes where a surface was drawn
+    glDepthMask(GL_FALSE);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_BLEND);
+    // Only the model's screen rectangle: a software rasteriser runs the shader for background blocks too,
+    // even where the depth test rejects every pixel.
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(scissor.x(), scissor.y(), scissor.width(), scissor.height());
+    glBindVertexArray(m_emptyVao);
+    if (!scissor.isEmpty()) glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    glDisable(GL_SCISSOR_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    p->program->release();
+    return true;
+}
+
 bool Renderer::render(const ViewCamera& camera, QSize size, const RenderSettings& settings, GLuint targetFbo,
                       const QRect& tile) {
     if (!m_initialized) return fail(QStringLiteral("render before initialize"));
@@ -387,26 +452,67 @@ bool Renderer::render(const ViewCamera& camera, QSize size, const RenderSettings
     const glm::dmat4 view = cam.view();
     const glm::dmat4 projection = tileProjection(cam, size, tile);
     m_stats.lightsInRig = int(m_rig.lights.size());
-    if (!ensureTargets(target, settings.msaaSamples, settings.hdrFloat32)) return false;
+    const bool hdr = settings.hdrTarget;
+    if (m_lightsDirty || view != m_uploadedView) uploadLights(view);
+    const bool wantDeferred = settings.shadingPath == ShadingPath::Deferred ||
+                              (settings.shadingPath == ShadingPath::Auto && settings.msaaSamples <= 1 &&
+                               m_stats.lightsUploaded >= kDeferredMinLights);
+    const GLenum colorFormat = !hdr ? GL_RGBA8 : settings.hdrFloat32 ? GL_RGBA32F : GL_RGBA16F;
+    if (!ensureTargets(target, wantDeferred ? 0 : settings.msaaSamples, colorFormat)) return false;
+    const bool deferred = wantDeferred && m_model->model() != nullptr;
+    QString error;
+    if (deferred && !m_targets->createGBuffer(this, &error)) return fail(error);
 
     beginTimer();
-    if (m_lightsDirty || view != m_uploadedView) uploadLights(view);
-    glBindFramebuffer(GL_FRAMEBUFFER, m_targets->drawFbo());
+    const bool overlays = settings.showGizmos || settings.showGrid;
     glViewport(0, 0, target.width(), target.height());
-    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     glClearDepth(1.0);
     glDepthMask(GL_TRUE);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    bool ok = drawModel(view, projection, settings, false);
-    if (m_targets->samples > 1) {
-        const bool needDepth = settings.showGizmos || settings.showGrid;
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, m_targets->msaaFbo);
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, m_targets->fbo);
-        glBlitFramebuffer(0, 0, target.width(), target.height(), 0, 0, target.width(), target.height(),
-                          GL_COLOR_BUFFER_BIT | (needDepth ? GL_DEPTH_BUFFER_BIT : 0), GL_NEAREST);
+    if (hdr || settings.transparentBackground) {
+        glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    } else {  // the display path writes sRGB-encoded colours: the background as given
+        const QColor bg = settings.background.toRgb();
+        glClearColor(float(bg.redF()), float(bg.greenF()), float(bg.blueF()), 1.0f);
     }
-    ok = toneMapPass(target, settings, targetFbo) && ok;
-    if (settings.showGizmos || settings.showGrid) ok = gizmoPass(view, projection, cam.znear, settings, target) && ok;
+    bool ok = true;
+    if (deferred) {
+        // G-pass (depth and surfaces; the G-buffer's colour needs no clear: the lighting pass reads only
+        // pixels a surface was drawn on), then the lighting pass into the scene target.
+        glBindFramebuffer(GL_FRAMEBUFFER, m_targets->gbufferFbo);
+        glClear(GL_DEPTH_BUFFER_BIT);
+        ok = drawModel(view, projection, settings, int(ShaderOutput::GBuffer));
+        glBindFramebuffer(GL_FRAMEBUFFER, m_targets->fbo);
+        glClear(GL_COLOR_BUFFER_BIT);
+        const glm::dmat4 toModel = glm::translate(glm::dmat4(1.0), glm::dvec3(0.0));
+        ok = lightingPass(settings, hdr, screenBounds(m_model->model()->bounds, projection * view * toModel, target)) && ok;
+    } else {
+        glBindFramebuffer(GL_FRAMEBUFFER, m_targets->drawFbo());
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        ok = drawModel(view, projection, settings, int(hdr ? ShaderOutput::Radiance : ShaderOutput::Display));
+    }
+    m_stats.deferred = deferred;
+    const int w = target.width(), h = target.height();
+    if (hdr) {
+        if (m_targets->samples > 1) {
+            glBindFramebuffer(GL_READ_FRAMEBUFFER, m_targets->msaaFbo);
+            glBindFramebuffer(GL_DRAW_FRAMEBUFFER, m_targets->fbo);
+            glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT | (overlays ? GL_DEPTH_BUFFER_BIT : 0),
+                              GL_NEAREST);
+        }
+        ok = toneMapPass(target, settings, targetFbo) && ok;
+    } else {
+        if (m_targets->samples > 1 && overlays) {  // the gizmos' occlusion test reads resolved depth
+            glBindFramebuffer(GL_READ_FRAMEBUFFER, m_targets->msaaFbo);
+            glBindFramebuffer(GL_DRAW_FRAMEBUFFER, m_targets->fbo);
+            glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+        }
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, m_targets->drawFbo());
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, targetFbo);
+        glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);  // resolves MSAA
+        glBindFramebuffer(GL_FRAMEBUFFER, targetFbo);
+    }
+    m_lastFrameHdr = hdr;
+    if (overlays) ok = gizmoPass(view, projection, cam.znear, settings, target) && ok;
     endTimer();
     glBindFramebuffer(GL_FRAMEBUFFER, targetFbo);
     m_stats.shaderVariantsCompiled = m_programs->compiledCount();
@@ -432,7 +538,8 @@ bool Renderer::readAttachment(GLuint fbo, GLenum attachment, QSize size, FloatIm
 }
 
 bool Renderer::readRadiance(FloatImage* out) {
-    if (!m_initialized || !m_targets->fbo) return fail(QStringLiteral("readRadiance: nothing rendered yet"));
+    if (!m_initialized || !m_targets->fbo || !m_lastFrameHdr)
+        return fail(QStringLiteral("readRadiance: the last frame was not rendered with hdrTarget"));
     return readAttachment(m_targets->fbo, GL_COLOR_ATTACHMENT0, m_targets->size, out);
 }
 
@@ -444,17 +551,37 @@ bool Renderer::renderGBuffer(const ViewCamera& camera, QSize size, const RenderS
     const ViewCamera cam = effectiveCamera(camera);
     const glm::dmat4 view = cam.view();
     QString error;
-    if (m_targets->gbufferSize != target && !m_targets->createGBuffer(this, target, &error)) return fail(error);
+    const GLenum format = m_targets->colorFormat ? m_targets->colorFormat : GLenum(GL_RGBA8);
+    if (!ensureTargets(target, 0, format)) return false;
+    if (!m_targets->createGBuffer(this, &error)) return fail(error);
     if (m_lightsDirty || view != m_uploadedView) uploadLights(view);
     glBindFramebuffer(GL_FRAMEBUFFER, m_targets->gbufferFbo);
     glViewport(0, 0, target.width(), target.height());
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    glClearDepth(1.0);
     glDepthMask(GL_TRUE);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    bool ok = drawModel(view, tileProjection(cam, size, tile), settings, true);
-    FloatImage* images[kGBufferTargets] = {&out->position, &out->normal, &out->albedo, &out->specular, &out->emissive};
+    bool ok = drawModel(view, tileProjection(cam, size, tile), settings, int(ShaderOutput::GBuffer));
+    FloatImage g[kGBufferTargets];
     for (int i = 0; i < kGBufferTargets; ++i)
-        ok = readAttachment(m_targets->gbufferFbo, GLenum(GL_COLOR_ATTACHMENT0 + i), target, images[i]) && ok;
+        ok = readAttachment(m_targets->gbufferFbo, GLenum(GL_COLOR_ATTACHMENT0 + i), target, &g[i]) && ok;
+    // Coverage from depth (a surface wrote depth < 1).
+    std::vector<float> depth(size_t(target.width()) * size_t(target.height()));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, m_targets->gbufferFbo);
+    glReadPixels(0, 0, target.width(), target.height(), GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    for (FloatImage* f : {&out->position, &out->normal, &out->albedo, &out->specular, &out->emissive}) *f = g[0];
+    for (int y = 0; y < target.height(); ++y) {
+        for (int x = 0; x < target.width(); ++x) {
+            const float covered = depth[size_t(target.height() - 1 - y) * size_t(target.width()) + size_t(x)] < 1.0f;
+            const glm::vec4 a = g[0].at(x, y), b = g[1].at(x, y), c = g[2].at(x, y), d = g[3].at(x, y);
+            out->position.at(x, y) = glm::vec4(glm::vec3(a), covered);
+            out->normal.at(x, y) = glm::vec4(glm::vec3(b), covered);
+            out->albedo.at(x, y) = glm::vec4(glm::vec3(c), covered);
+            out->specular.at(x, y) = glm::vec4(glm::vec3(d), a.w);
+            out->emissive.at(x, y) = glm::vec4(b.w, c.w, d.w, covered);
+        }
+    }
     m_stats.shaderVariantsCompiled = m_programs->compiledCount();
     m_stats.shaderVariantsCached = m_programs->cachedCount();
     return ok;

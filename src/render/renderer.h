@@ -1,10 +1,12 @@
 // LightRig's OpenGL 3.3 core renderer, shared by the viewport, screenshots, the command line and the
 // tests so that all of them produce the same pixels.
 //
-// Frame: the model is shaded into an HDR target (RGBA16F or RGBA32F, optionally MSAA) with every light of
-// the rig that can reach it (view space, a texture buffer of kLightTexels RGBA32F texels per light, any
-// number of lights), resolved, then one full-screen pass applies exposure (×2^EV), the tone map and the
-// sRGB encoding into the caller's framebuffer; gizmos and the grid are drawn over that.
+// Frame: the model is shaded with every light of the rig that can reach it (view space, a texture buffer
+// of kLightTexels RGBA32F texels per light, any number of lights). By default each fragment is exposed
+// (×2^EV), tone-mapped and sRGB-encoded at once into an 8-bit target (optionally MSAA), which is blitted
+// (resolved) into the caller's framebuffer. With RenderSettings::hdrTarget the radiance goes to a float
+// target instead and one full-screen pass applies the same exposure, tone map and encoding; both give
+// the same pixels without MSAA. Gizmos and the grid are drawn over the result.
 // Shaders are specialised per FeatureKey (shadergen.h): a value change (colour, position, intensity)
 // only re-uploads light data; a new light type or model compiles one new variant, once.
 //
@@ -36,6 +38,15 @@ class GpuModel;
 struct Targets;
 }  // namespace render
 
+// Forward: one pass shades every fragment of every triangle. Deferred: a G-pass writes the surfaces, then
+// one full-screen pass shades each covered pixel once (no MSAA; much cheaper on software rasterisers,
+// whose cost is whole 4x4 blocks per small triangle, but the G-pass costs about as much as a forward
+// pass without lights). Both give the same radiance. Auto: deferred when msaaSamples <= 1 and at least
+// kDeferredMinLights lights are uploaded (measured crossover on llvmpipe, DamagedHelmet at 1280x720:
+// forward ~17 + 3.3 n ms CPU, deferred ~30 + 1.1 n), else forward.
+enum class ShadingPath { Auto, Forward, Deferred };
+constexpr int kDeferredMinLights = 6;
+
 struct RenderSettings {
     double exposureEV = 0.0;
     ToneMap toneMap = ToneMap::Clamp;
@@ -47,7 +58,12 @@ struct RenderSettings {
     std::vector<int> selectedLights;  // indices into the rig's lights, highlighted
     Quality quality = Quality::Exact;  // only Exact is implemented so far: the others render as Exact
     bool cullBackFaces = true;         // single-sided materials; double-sided ones are never culled
-    bool hdrFloat32 = false;           // RGBA32F instead of RGBA16F (for read-backs and tests)
+    // The default path shades, exposes, tone-maps and encodes each fragment straight into an 8-bit target
+    // (MSAA resolves display colours). The HDR path renders linear radiance into a float target and
+    // tone-maps it in a full-screen pass (MSAA then resolves radiance); readRadiance() needs it.
+    bool hdrTarget = false;
+    bool hdrFloat32 = false;  // HDR path: RGBA32F instead of RGBA16F
+    ShadingPath shadingPath = ShadingPath::Auto;  // Deferred ignores msaaSamples
     bool operator==(const RenderSettings&) const = default;
 };
 
@@ -58,6 +74,7 @@ struct RenderStats {
     int lightsInRig = 0;
     qint64 triangles = 0;
     int drawCalls = 0;
+    bool deferred = false;  // the last frame took the deferred path
     double lastGpuMs = -1.0;  // GL_TIME_ELAPSED of a recent frame (asynchronous: a frame or two old); < 0: none yet
     double lastCpuMs = 0.0;   // CPU time spent in the last render() call (GL submission, not completion)
 };
@@ -88,9 +105,10 @@ public:
     // the target then receives only that part. False with lastError() when something failed.
     bool render(const ViewCamera& camera, QSize size, const RenderSettings& settings, GLuint targetFbo,
                 const QRect& tile = QRect());
-    // The last frame's resolved HDR radiance (before exposure and tone mapping; alpha = coverage).
+    // The last frame's resolved radiance (before exposure and tone mapping; alpha = coverage). Needs the
+    // last render() to have used RenderSettings::hdrTarget.
     bool readRadiance(FloatImage* out);
-    // Draws the G-buffer for this view and reads it back (no MSAA, float targets).
+    // Draws the G-buffer for this view and reads it back (no MSAA, float targets; what the deferred path shades).
     bool renderGBuffer(const ViewCamera& camera, QSize size, const RenderSettings& settings, GBuffer* out,
                        const QRect& tile = QRect());
 
@@ -108,10 +126,11 @@ public:
 
 private:
     bool fail(const QString& message);
-    bool ensureTargets(QSize size, int samples, bool float32);
+    bool ensureTargets(QSize size, int samples, GLenum colorFormat);
     void uploadLights(const glm::dmat4& view);
     bool drawModel(const glm::dmat4& view, const glm::dmat4& projection, const RenderSettings& settings,
-                   bool gbuffer);
+                   int output);  // render::ShaderOutput
+    bool lightingPass(const RenderSettings& settings, bool hdr, const QRect& scissor);
     bool toneMapPass(QSize size, const RenderSettings& settings, GLuint targetFbo);
     bool gizmoPass(const glm::dmat4& view, const glm::dmat4& projection, double znear,
                    const RenderSettings& settings, QSize size);
@@ -125,6 +144,7 @@ private:
     RenderStats m_stats;
     Rig m_rig;
     bool m_lightsDirty = true;
+    bool m_lastFrameHdr = false;
     glm::dmat4 m_uploadedView{0.0};
     std::unique_ptr<render::ProgramCache> m_programs;
     std::unique_ptr<render::GpuModel> m_model;

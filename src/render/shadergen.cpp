@@ -75,7 +75,8 @@ std::uint64_t FeatureKey::bits() const {
     put(material.vertexColors, 1);
     put(material.doubleSided, 1);
     put(unsigned(quality), 2);
-    put(unsigned(output), 1);
+    put(unsigned(output), 2);
+    put(deferredLighting, 1);
     return b;
 }
 
@@ -153,7 +154,12 @@ QByteArray shaderPrelude(const FeatureKey& key) {
     if (key.material.vertexColors) out += "#define LR_VERTEX_COLOR 1\n";
     if (key.material.doubleSided) out += "#define LR_DOUBLE_SIDED 1\n";
     out += "#define LR_QUALITY_" + macroName(EnumNames<Quality>::names[size_t(key.quality)]) + " 1\n";
-    out += key.output == ShaderOutput::GBuffer ? "#define LR_OUTPUT_GBUFFER 1\n" : "#define LR_OUTPUT_RADIANCE 1\n";
+    if (key.deferredLighting) out += "#define LR_DEFERRED_LIGHTING 1\n";
+    switch (key.output) {
+    case ShaderOutput::Display: out += "#define LR_OUTPUT_DISPLAY 1\n"; break;
+    case ShaderOutput::Radiance: out += "#define LR_OUTPUT_RADIANCE 1\n"; break;
+    case ShaderOutput::GBuffer: out += "#define LR_OUTPUT_GBUFFER 1\n"; break;
+    }
     return out;
 }
 

@@ -14,7 +14,10 @@
 
 namespace lr::render {
 
-enum class ShaderOutput : std::uint8_t { Radiance, GBuffer };
+// Display: exposure, tone map and sRGB per fragment into an 8-bit target (the fast default path).
+// Radiance: linear HDR radiance into a float target (tone-mapped by a separate pass; for read-backs).
+// GBuffer: the Surface each fragment shades, into float targets (the CPU reference's input).
+enum class ShaderOutput : std::uint8_t { Display, Radiance, GBuffer };
 
 // What the rig contributes to a key. Computed from the enabled lights (whether they reach the model or
 // not), so moving a light never changes it; only adding a light of a new type or model does.
@@ -42,7 +45,10 @@ struct FeatureKey {
     RigFeatures rig;
     MaterialFeatures material;
     Quality quality = Quality::Exact;
-    ShaderOutput output = ShaderOutput::Radiance;
+    ShaderOutput output = ShaderOutput::Display;
+    // The deferred lighting pass (fullscreen.vert + deferred.frag; `material` unused) rather than a mesh
+    // program (mesh.vert + mesh.frag). G-buffer mesh programs ignore `rig`: the renderer leaves it empty.
+    bool deferredLighting = false;
 
     std::uint64_t bits() const;  // a unique packing, for hashing and ordering
     QString describe() const;    // "point+spot falloff:range-power cone:smooth ... tex:base,normal"

@@ -30,21 +30,21 @@ bool complete(QOpenGLFunctions_3_3_Core* gl, const char* what, QSize size, QStri
 
 }  // namespace
 
-bool Targets::create(QOpenGLFunctions_3_3_Core* gl, QSize s, int n, bool f32, QString* error) {
-    releaseHdr(gl);
+bool Targets::create(QOpenGLFunctions_3_3_Core* gl, QSize s, int n, GLenum format, QString* error) {
+    release(gl);
     size = s;
     samples = n > 1 ? n : 0;
-    float32 = f32;
-    const GLenum colorFormat = f32 ? GL_RGBA32F : GL_RGBA16F;
+    colorFormat = format;
+    const GLenum pixelType = format == GL_RGBA8 ? GL_UNSIGNED_BYTE : GL_FLOAT;
     while (gl->glGetError() != GL_NO_ERROR) {
     }
     gl->glGenFramebuffers(1, &fbo);
     gl->glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    color = makeTexture(gl, colorFormat, GL_RGBA, GL_FLOAT, s);
+    color = makeTexture(gl, colorFormat, GL_RGBA, pixelType, s);
     depth = makeTexture(gl, GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, GL_FLOAT, s);
     gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color, 0);
     gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
-    bool ok = complete(gl, "HDR", s, error);
+    bool ok = complete(gl, "scene", s, error);
     if (ok && samples > 1) {
         gl->glGenFramebuffers(1, &msaaFbo);
         gl->glBindFramebuffer(GL_FRAMEBUFFER, msaaFbo);
@@ -56,60 +56,50 @@ bool Targets::create(QOpenGLFunctions_3_3_Core* gl, QSize s, int n, bool f32, QS
         gl->glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT32F, s.width(), s.height());
         gl->glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, msaaColor);
         gl->glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, msaaDepth);
-        ok = complete(gl, "multisampled HDR", s, error);
+        ok = complete(gl, "multisampled scene", s, error);
     }
     if (ok && gl->glGetError() == GL_OUT_OF_MEMORY) {
         if (error) *error = QStringLiteral("out of GPU memory for a %1x%2 render target").arg(s.width()).arg(s.height());
         ok = false;
     }
     gl->glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    if (!ok) releaseHdr(gl);
+    if (!ok) release(gl);
     return ok;
 }
 
-bool Targets::createGBuffer(QOpenGLFunctions_3_3_Core* gl, QSize s, QString* error) {
-    releaseGBuffer(gl);
-    gbufferSize = s;
+bool Targets::createGBuffer(QOpenGLFunctions_3_3_Core* gl, QString* error) {
+    if (gbufferFbo) return true;
     gl->glGenFramebuffers(1, &gbufferFbo);
     gl->glBindFramebuffer(GL_FRAMEBUFFER, gbufferFbo);
     GLenum buffers[kGBufferTargets];
     for (int i = 0; i < kGBufferTargets; ++i) {
-        gbuffer[i] = makeTexture(gl, GL_RGBA32F, GL_RGBA, GL_FLOAT, s);
+        gbuffer[i] = makeTexture(gl, GL_RGBA32F, GL_RGBA, GL_FLOAT, size);
         gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GLenum(GL_COLOR_ATTACHMENT0 + i), GL_TEXTURE_2D, gbuffer[i], 0);
         buffers[i] = GLenum(GL_COLOR_ATTACHMENT0 + i);
     }
-    gbufferDepth = makeTexture(gl, GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, GL_FLOAT, s);
-    gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, gbufferDepth, 0);
+    gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
     gl->glDrawBuffers(kGBufferTargets, buffers);
-    const bool ok = complete(gl, "G-buffer", s, error);
+    const bool ok = complete(gl, "G-buffer", size, error);
     gl->glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    if (!ok) releaseGBuffer(gl);
+    if (!ok) {
+        gl->glDeleteFramebuffers(1, &gbufferFbo);
+        gl->glDeleteTextures(kGBufferTargets, gbuffer);
+        gbufferFbo = 0;
+        for (GLuint& t : gbuffer) t = 0;
+    }
     return ok;
 }
 
 void Targets::release(QOpenGLFunctions_3_3_Core* gl) {
-    releaseHdr(gl);
-    releaseGBuffer(gl);
-}
-
-void Targets::releaseHdr(QOpenGLFunctions_3_3_Core* gl) {
-    GLuint fbos[] = {msaaFbo, fbo};
+    GLuint fbos[] = {msaaFbo, fbo, gbufferFbo};
     GLuint rbs[] = {msaaColor, msaaDepth};
-    GLuint texs[] = {color, depth};
-    gl->glDeleteFramebuffers(2, fbos);
+    GLuint texs[] = {color, depth, gbuffer[0], gbuffer[1], gbuffer[2], gbuffer[3]};
+    gl->glDeleteFramebuffers(3, fbos);
     gl->glDeleteRenderbuffers(2, rbs);
-    gl->glDeleteTextures(2, texs);
-    msaaFbo = msaaColor = msaaDepth = fbo = color = depth = 0;
-    size = QSize();
-}
-
-void Targets::releaseGBuffer(QOpenGLFunctions_3_3_Core* gl) {
-    if (gbufferFbo) gl->glDeleteFramebuffers(1, &gbufferFbo);
-    gl->glDeleteTextures(kGBufferTargets, gbuffer);
-    if (gbufferDepth) gl->glDeleteTextures(1, &gbufferDepth);
-    gbufferFbo = gbufferDepth = 0;
+    gl->glDeleteTextures(6, texs);
+    msaaFbo = msaaColor = msaaDepth = fbo = color = depth = gbufferFbo = 0;
     for (GLuint& t : gbuffer) t = 0;
-    gbufferSize = QSize();
+    size = QSize();
 }
 
 }  // namespace lr::render

@@ -1,6 +1,10 @@
-// The renderer's offscreen framebuffers: the HDR scene target (multisampled renderbuffers when MSAA is
-// on), its single-sample resolve (colour and depth textures: input of the tone-map pass and of the gizmo
-// occlusion test) and, on demand, the float G-buffer.
+// The renderer's offscreen framebuffers, all of one size:
+// - the scene target: colour (RGBA8 display colours, or RGBA16F/RGBA32F radiance for the HDR path) and a
+//   depth texture; with MSAA, multisampled renderbuffers that resolve into it;
+// - on demand, the G-buffer: four RGBA32F textures sharing the scene's depth texture, so the deferred
+//   lighting pass (drawn into the scene target) can depth-test away the background. Layout:
+//     0: view-space position.xyz, shininess   1: normal.xyz, emissive.r
+//     2: albedo.rgb, emissive.g               3: specular (ks).rgb, emissive.b
 #pragma once
 
 #include <QOpenGLFunctions_3_3_Core>
@@ -9,25 +13,21 @@
 
 namespace lr::render {
 
-constexpr int kGBufferTargets = 5;  // position, normal, albedo, specular, emissive (floatimage.h)
+constexpr int kGBufferTargets = 4;
 
 struct Targets {
     QSize size;
     int samples = 0;  // > 1: MSAA
-    bool float32 = false;
+    GLenum colorFormat = 0;  // GL_RGBA8, GL_RGBA16F or GL_RGBA32F
     GLuint msaaFbo = 0, msaaColor = 0, msaaDepth = 0;
-    GLuint fbo = 0, color = 0, depth = 0;  // resolve: textures
-
-    QSize gbufferSize;
-    GLuint gbufferFbo = 0, gbufferDepth = 0;
+    GLuint fbo = 0, color = 0, depth = 0;  // single-sample: textures
+    GLuint gbufferFbo = 0;
     GLuint gbuffer[kGBufferTargets] = {};
 
     GLuint drawFbo() const { return samples > 1 ? msaaFbo : fbo; }
-    bool create(QOpenGLFunctions_3_3_Core* gl, QSize size, int samples, bool float32, QString* error);
-    bool createGBuffer(QOpenGLFunctions_3_3_Core* gl, QSize size, QString* error);
+    bool create(QOpenGLFunctions_3_3_Core* gl, QSize size, int samples, GLenum colorFormat, QString* error);
+    bool createGBuffer(QOpenGLFunctions_3_3_Core* gl, QString* error);  // for the current size
     void release(QOpenGLFunctions_3_3_Core* gl);
-    void releaseHdr(QOpenGLFunctions_3_3_Core* gl);
-    void releaseGBuffer(QOpenGLFunctions_3_3_Core* gl);
 };
 
 }  // namespace lr::render

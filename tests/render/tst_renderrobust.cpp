@@ -206,15 +206,58 @@ private slots:
             many.lights.push_back(l);
         }
         m_gl.setRig(many);
-        FloatImage radiance;
-        QVERIFY2(m_gl.renderRadiance(cam, size, floatSettings(), &radiance, &error), qPrintable(error));
+        QVERIFY(!m_gl.renderImage(cam, size, s, 1, &error).isNull());
         QCOMPARE(m_gl.renderer().stats().lightsUploaded, 3000);
         QCOMPARE(m_gl.renderer().stats().shaderVariantsCompiled, base + 1);
+        FloatImage radiance;
+        QVERIFY2(m_gl.renderRadiance(cam, size, floatSettings(), &radiance, &error), qPrintable(error));
         GBuffer g;
         QVERIFY(m_gl.renderGBuffer(cam, size, floatSettings(), &g, &error));
         const Comparison c = compareWithReference(radiance, g, many, m_gl.renderer().sceneFrame(),
                                                   m_gl.renderer().effectiveCamera(cam).view(), 1e-4);
         QVERIFY2(c.failures == 0 && c.compared > 1000, qPrintable(c.summary()));
+    }
+
+    // The deferred path (G-pass + full-screen lighting) and the forward path shade the same surfaces
+    // with the same code: radiance equal within float rounding, 8-bit output within one level.
+    void forwardEqualsDeferred_data() {
+        QTest::addColumn<bool>("sphere");
+        QTest::newRow("plane") << false;
+        QTest::newRow("sphere") << true;
+    }
+
+    void forwardEqualsDeferred() {
+        QFETCH(bool, sphere);
+        QString error;
+        auto model = sphere ? sphereScene() : planeScene();
+        QImage tex(8, 8, QImage::Format_RGBA8888);
+        for (int i = 0; i < 64; ++i) tex.setPixelColor(i % 8, i / 8, QColor::fromHsv(i * 5, 200, 230));
+        model->textures.push_back({QStringLiteral("*0"), tex});
+        model->materials[0].baseColorTexture = 0;
+        model->materials[0].emissiveTexture = 0;
+        model->materials[0].emissive = {0.05f, 0.02f, 0.01f};
+        QVERIFY(m_gl.setModel(model, &error));
+        m_gl.setRig(rigCases()[rigCases().size() - 1].make());
+        const ViewCamera cam = sphere ? sphereCamera() : planeCamera();
+        RenderSettings f = floatSettings(), d = floatSettings();
+        f.shadingPath = ShadingPath::Forward;
+        d.shadingPath = ShadingPath::Deferred;
+        FloatImage rf, rd;
+        QVERIFY2(m_gl.renderRadiance(cam, QSize(96, 72), f, &rf, &error), qPrintable(error));
+        QVERIFY(!m_gl.renderer().stats().deferred);
+        QVERIFY2(m_gl.renderRadiance(cam, QSize(96, 72), d, &rd, &error), qPrintable(error));
+        QVERIFY(m_gl.renderer().stats().deferred);
+        double worst = 0;
+        for (size_t i = 0; i < rf.pixels.size(); ++i)
+            for (int k = 0; k < 4; ++k)
+                worst = std::max(worst, double(std::abs(rf.pixels[i][k] - rd.pixels[i][k])) /
+                                            std::max(1.0, double(std::abs(rf.pixels[i][k]))));
+        QVERIFY2(worst <= 1e-5, qPrintable(QStringLiteral("relative difference %1").arg(worst)));
+        f.hdrFloat32 = d.hdrFloat32 = false;
+        const QImage a = m_gl.renderImage(cam, QSize(96, 72), f, 1, &error);
+        const QImage b = m_gl.renderImage(cam, QSize(96, 72), d, 1, &error);
+        QVERIFY2(!a.isNull() && !b.isNull(), qPrintable(error));
+        QVERIFY(maxLevelDifference(a, b) <= 1);
     }
 
     void compileErrorsCarryTheLog() {
