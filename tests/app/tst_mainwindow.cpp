@@ -13,6 +13,7 @@
 #include "app/numberedit.h"
 #include "app/propertiesdock.h"
 #include "app/scene.h"
+#include "app/screenshotdialog.h"
 #include "app/viewport.h"
 #include "core/rigjson.h"
 #include "editor/document.h"
@@ -21,6 +22,9 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QFile>
+#include <QMenu>
+#include <QMimeData>
+#include <QUrl>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -312,6 +316,110 @@ private slots:
         m_window->actions()->frame->trigger();  // F with a selection: frames the light
         const auto p = viewport()->lightScreenPosition(0);
         QVERIFY(p && QLineF(*p, QPointF(viewport()->width() / 2.0, viewport()->height() / 2.0)).length() < 2.0);
+    }
+
+    void exportScreenshot_atAnySize() {
+        ScreenshotOptions o;
+        o.path = m_dir.filePath(QStringLiteral("shot.png"));
+        o.size = QSize(320, 200);
+        o.supersample = 2;
+        o.transparent = true;
+        viewport()->frameAll();
+        const QString error = viewport()->exportScreenshot(o);
+        QVERIFY2(error.isEmpty(), qPrintable(error));
+        const QImage image(o.path);
+        QCOMPARE(image.size(), o.size);
+        QVERIFY(image.hasAlphaChannel());
+        QCOMPARE(qAlpha(image.pixel(0, 0)), 0);  // background corner: transparent
+        QCOMPARE(qAlpha(image.pixel(160, 100)), 255);  // the model in the middle
+
+        o.path = m_dir.filePath(QStringLiteral("shot.jpg"));
+        o.format = "JPEG";
+        o.transparent = false;
+        QVERIFY(viewport()->exportScreenshot(o).isEmpty());
+        QCOMPARE(QImage(o.path).size(), o.size);
+        o.path = m_dir.filePath(QStringLiteral("no/such/folder/shot.png"));
+        QVERIFY(!viewport()->exportScreenshot(o).isEmpty());
+    }
+
+    void dropARigFile_opensIt() {
+        doc()->undoStack()->setClean();
+        const QString path = m_dir.filePath(QStringLiteral("dropped.json"));
+        Rig rig;
+        rig.lights.push_back(makeLight(LightType::Directional, QStringLiteral("Dropped sun")));
+        QString error;
+        QVERIFY2(saveRigFile(rig, path, &error), qPrintable(error));
+        QMimeData mime;
+        mime.setUrls({QUrl::fromLocalFile(path)});
+        const QPoint at = m_window->rect().center();
+        QDragEnterEvent enter(at, Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(m_window.get(), &enter);
+        QVERIFY(enter.isAccepted());
+        QDropEvent drop(at, Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(m_window.get(), &drop);
+        QCOMPARE(doc()->filePath(), path);
+        QCOMPARE(doc()->light(0).name, QStringLiteral("Dropped sun"));
+    }
+
+    void importLightsAndCamerasFromAModel() {
+        const QString path = QStringLiteral(LIGHTRIG_SHARED_MODELS "/bench/helmet_8spot.glb");
+        if (!QFile::exists(path)) QSKIP("the shared models (../shared/models/bench) are not present");
+        QSignalSpy loaded(m_window->files(), &DocumentFiles::modelLoaded);
+        QVERIFY(m_window->files()->openModel(path));
+        QVERIFY(loaded.wait(60000));
+        const Model& model = *m_window->scene()->model();
+        QVERIFY(!model.lights.lights.empty());
+        QVERIFY(!model.cameras.empty());
+        QVERIFY(m_window->actions()->importLights->isEnabled());
+        QCOMPARE(m_window->actions()->modelCamerasMenu->actions().size(), qsizetype(model.cameras.size()));
+
+        doc()->newRig(defaultRig());  // a model-space rig: the world-space lights are converted
+        const int before = doc()->lightCount();
+        const int steps = doc()->undoStack()->count();
+        m_window->actions()->importLights->trigger();
+        QCOMPARE(doc()->lightCount(), before + int(model.lights.lights.size()));
+        QCOMPARE(doc()->undoStack()->count(), steps + 1);
+        const SceneFrame frame = m_window->scene()->frame();
+        const glm::dvec3 world = rigToWorld(doc()->rig(), frame, doc()->light(before).position);
+        QVERIFY(glm::length(world - model.lights.lights[0].position) < 1e-9 * std::max(1.0, frame.radius));
+        doc()->undoStack()->undo();
+        QCOMPARE(doc()->lightCount(), before);
+
+        m_window->actions()->modelCamerasMenu->actions().first()->trigger();
+        QVERIFY(glm::length(viewport()->camera().eye - model.cameras[0].position) < 1e-9);
+
+        QSignalSpy back(m_window->files(), &DocumentFiles::modelLoaded);
+        QVERIFY(m_window->files()->openModel(MainWindow::bundledModelPath()));
+        QVERIFY(back.wait(60000));
+    }
+
+    void nextStart_restoresRigModelAndLayout() {
+        // A window of a session that restores: close it on a saved rig...
+        const QString rigPath = m_dir.filePath(QStringLiteral("session.json"));
+        QString error;
+        QVERIFY2(saveRigFile(defaultRig(), rigPath, &error), qPrintable(error));
+        {
+            MainWindow first;
+            QSignalSpy loaded(first.files(), &DocumentFiles::modelLoadFinished);
+            EditorOptions options;
+            options.rigPath = rigPath;
+            first.openInitial(options);
+            QVERIFY(loaded.wait(60000));
+            first.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&first));
+            first.resize(1111, 777);
+            first.propertiesDock()->hide();
+            QVERIFY(first.close());
+        }
+        // ...the next one (no arguments) reopens that rig with the same window layout.
+        MainWindow second;
+        QSignalSpy loaded(second.files(), &DocumentFiles::modelLoadFinished);
+        second.openInitial(EditorOptions{});
+        QVERIFY(loaded.wait(60000));
+        QCOMPARE(second.document()->filePath(), rigPath);
+        QCOMPARE(second.scene()->path(), MainWindow::bundledModelPath());
+        QCOMPARE(second.size(), QSize(1111, 777));
+        QVERIFY(second.propertiesDock()->isHidden());
     }
 };
 
