@@ -10,12 +10,11 @@
 #include "model/modelloader.h"
 
 #include <QByteArray>
-#include <QFile>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTextStream>
 #include <QThread>
-#include <atomic>
+#include <cerrno>
 #include <climits>
 #include <csignal>
 #include <cstring>
@@ -104,10 +103,17 @@ bool takeStdout() {
     return true;
 }
 
+// stdin up to its end (the parent closes it after the request), at most kMaxRequestBytes.
 QByteArray readRequest() {
-    QFile in;
-    if (!in.open(stdin, QIODevice::ReadOnly)) return {};
-    return in.read(ip::kMaxRequestBytes);
+    QByteArray request;
+    char buffer[4096];
+    while (request.size() < ip::kMaxRequestBytes) {
+        const ssize_t n = ::read(STDIN_FILENO, buffer, sizeof buffer);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) break;
+        request.append(buffer, qsizetype(n));
+    }
+    return request;
 }
 
 [[noreturn]] void testCrash(const QByteArray& mode) {

@@ -179,6 +179,9 @@ QString importWorkerExecutable() {
         const QMutexLocker lock(&g_executableMutex);
         if (!g_executable.isEmpty()) return g_executable;
     }
+    if (const QString fromEnvironment = qEnvironmentVariable("LIGHTRIG_IMPORT_WORKER");
+        !fromEnvironment.isEmpty())
+        return fromEnvironment;
     return QCoreApplication::instance() ? QCoreApplication::applicationFilePath() : QString();
 }
 

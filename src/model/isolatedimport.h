@@ -31,8 +31,10 @@ struct ImportLimits {
 ModelLoadResult importModelIsolated(const QString& path, const ModelLoadOptions& options = {},
                                     const ImportLimits& limits = {});
 
-// The executable run as `EXE import-worker`; empty (the default) means
-// QCoreApplication::applicationFilePath(), i.e. lightrig itself. Tests point it at LIGHTRIG_EXECUTABLE.
+// The executable run as `EXE import-worker`: the one set here, else the environment variable
+// LIGHTRIG_IMPORT_WORKER, else QCoreApplication::applicationFilePath(), i.e. lightrig itself. A test
+// executable that imports (directly or through the editor) must name lightrig one of the first two ways:
+// setImportWorkerExecutable(LIGHTRIG_EXECUTABLE), or ctest's LIGHTRIG_IMPORT_WORKER (tests/CMakeLists.txt).
 void setImportWorkerExecutable(const QString& path);
 QString importWorkerExecutable();
 

@@ -25,8 +25,10 @@
 
 namespace lr {
 
+inline constexpr char kModelCodecMagic[8] = {'L', 'R', 'M', 'O', 'D', 'E', 'L', '\0'};
 inline constexpr quint32 kModelCodecVersion = 1;
-inline constexpr int kModelCodecHeaderSize = 32;
+inline constexpr quint32 kModelCodecByteOrderMark = 0x01020304u;
+inline constexpr int kModelCodecHeaderSize = 32; // the body size is its last 8 bytes
 
 // Limits the reader enforces besides the size of the input.
 struct ModelCodecLimits {

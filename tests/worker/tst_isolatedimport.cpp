@@ -71,6 +71,7 @@ class TestIsolatedImport : public QObject {
     void cancelFromProgress();
     void cancelFromFlag();
     void missingWorkerExecutable();
+    void workerFromEnvironment();
     void workerRefusesBareUse();
     void everySharedFileLoadsOrFails();
 };
@@ -200,6 +201,19 @@ void TestIsolatedImport::missingWorkerExecutable() {
     QVERIFY2(r.error.startsWith(QStringLiteral("could not import quad.obj: could not start the import worker "
                                                "/nonexistent/lightrig")),
              qPrintable(r.error));
+}
+
+void TestIsolatedImport::workerFromEnvironment() {
+    const QByteArray saved = qgetenv("LIGHTRIG_IMPORT_WORKER");
+    setImportWorkerExecutable(QString());
+    qputenv("LIGHTRIG_IMPORT_WORKER", LIGHTRIG_EXECUTABLE);
+    QCOMPARE(importWorkerExecutable(), QStringLiteral(LIGHTRIG_EXECUTABLE));
+    const ModelLoadResult r = importModelIsolated(kData + QStringLiteral("/tetra.stl"));
+    qunsetenv("LIGHTRIG_IMPORT_WORKER");
+    // Without either, the worker is this executable.
+    QCOMPARE(importWorkerExecutable(), QCoreApplication::applicationFilePath());
+    if (!saved.isEmpty()) qputenv("LIGHTRIG_IMPORT_WORKER", saved);
+    QVERIFY2(r.ok(), qPrintable(r.error));
 }
 
 void TestIsolatedImport::workerRefusesBareUse() {
