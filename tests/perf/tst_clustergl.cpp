@@ -1,8 +1,8 @@
 // Clustered shading on the GPU gives the same radiance as shading every light: a sphere and a plane lit by
 // 256 small-range lights (and a few unbounded ones) rendered with RenderSettings::clusteredShading on and
 // off, compared in float (RGBA32F read-back) to 1e-5. Skips without a display.
+#include "render/glfixture.h" // tests/render
 #include "render/offscreen.h"
-#include "render/glfixture.h"  // tests/render
 #include "render/scenes.h"
 
 #include <QTest>
@@ -13,7 +13,7 @@ using namespace lr::test;
 
 class TestClusterGl : public QObject {
     Q_OBJECT
-private:
+  private:
     static Rig manyLights(int n, quint32 seed) {
         std::mt19937 rng(seed);
         std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -22,20 +22,20 @@ private:
                                        FalloffModel::InverseSquare, FalloffModel::InversePolynomial};
         for (int i = 0; i < n; ++i) {
             glm::dvec3 p(u(rng), u(rng), u(rng));
-            p = glm::normalize(p) * (1.0 + 0.15 * std::abs(u(rng)));  // just above the unit sphere
+            p = glm::normalize(p) * (1.0 + 0.15 * std::abs(u(rng))); // just above the unit sphere
             Light l = point(p, models[i % 4], 0.25 + 0.2 * std::abs(u(rng)));
             l.color = {0.5 + 0.5 * u(rng), 0.6, 0.5 - 0.4 * u(rng)};
             l.intensity = 0.5;
-            if (i % 5 == 0) {  // some spots, bounded by their sphere
+            if (i % 5 == 0) { // some spots, bounded by their sphere
                 l.type = LightType::Spot;
                 l.direction = glm::normalize(-p);
                 l.cone = {ConeModel::Smooth, 0.3, 0.7, 1.0};
             }
             lights.push_back(l);
         }
-        lights.push_back(directional({-1, -1, -1}, DiffuseModel::Lambert));  // evaluated everywhere
+        lights.push_back(directional({-1, -1, -1}, DiffuseModel::Lambert)); // evaluated everywhere
         lights.back().intensity = 0.05;
-        lights.push_back(point({0, 2, 2}, FalloffModel::InverseSquare, -1.0));  // range-less
+        lights.push_back(point({0, 2, 2}, FalloffModel::InverseSquare, -1.0)); // range-less
         lights.back().intensity = 0.3;
         return rigOf(std::move(lights));
     }
@@ -71,13 +71,13 @@ private:
                 if (c == 0 && b > 0.01) ++lit;
             }
         QVERIFY2(maxDiff <= 1e-5, qPrintable(QStringLiteral("max difference %1").arg(maxDiff)));
-        QVERIFY(lit > on.width * on.height / 20);  // the comparison saw lit pixels
+        QVERIFY(lit > on.width * on.height / 20); // the comparison saw lit pixels
         QVERIFY(maxValue > 0.05);
         // The clusters hold far fewer entries than every light in every cluster (16*9*24*258).
         QVERIFY2(refs > 0 && refs < 16 * 9 * 24 * 258 / 10, qPrintable(QString::number(refs)));
     }
 
-private slots:
+  private slots:
     void clusteredEqualsUnclustered() {
         LR_REQUIRE_DISPLAY();
         OffscreenRenderer gl;
@@ -86,7 +86,7 @@ private slots:
         gl.renderer().setModel(sphereScene());
         gl.renderer().setRig(manyLights(256, 7));
         compare(gl, sphereCamera(), QSize(320, 180), 1);
-        ViewCamera close = sphereCamera();  // near the surface: lights around and behind the eye
+        ViewCamera close = sphereCamera(); // near the surface: lights around and behind the eye
         close.eye = {0.2, 0.3, 1.35};
         compare(gl, close, QSize(257, 143), 1);
         gl.renderer().setModel(planeScene());
