@@ -14,6 +14,7 @@
 #include <QFileInfo>
 #include <QProcess>
 #include <QTest>
+#include <QtConcurrent>
 #include <atomic>
 #include <thread>
 
@@ -63,6 +64,7 @@ class TestIsolatedImport : public QObject {
     void goodModelsEqualDirectImport_data();
     void goodModelsEqualDirectImport();
     void loaderErrorsPassThrough();
+    void worksOnOtherThreads();
     void progressIsMonotonicAndEnds();
     void workerDeaths_data();
     void workerDeaths();
@@ -102,6 +104,21 @@ void TestIsolatedImport::loaderErrorsPassThrough() {
     QCOMPARE(isolated.error, loadModel(missing).error);
     QVERIFY2(isolated.error.startsWith(QStringLiteral("could not import no such model.obj: ")),
              qPrintable(isolated.error));
+}
+
+// The editor imports on a QtConcurrent pool thread; two at once must not disturb each other.
+void TestIsolatedImport::worksOnOtherThreads() {
+    const QString a = kData + QStringLiteral("/scene.gltf"), b = kData + QStringLiteral("/colors.ply");
+    QFuture<ModelLoadResult> fa = QtConcurrent::run([a] { return importModelIsolated(a); });
+    QFuture<ModelLoadResult> fb = QtConcurrent::run([b] { return importModelIsolated(b); });
+    ModelLoadResult rb;
+    std::thread plain([&] { rb = importModelIsolated(b); }); // not a QThread: no event dispatcher
+    plain.join();
+    for (const auto& [path, r] : {std::pair{a, fa.result()}, std::pair{b, fb.result()}, std::pair{b, rb}}) {
+        QVERIFY2(r.ok(), qPrintable(r.error));
+        const QString difference = compareWithDirect(path, r);
+        QVERIFY2(difference.isEmpty(), qPrintable(difference));
+    }
 }
 
 void TestIsolatedImport::progressIsMonotonicAndEnds() {
