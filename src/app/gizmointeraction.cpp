@@ -58,7 +58,7 @@ int GizmoInteraction::pickConeEdge(const ScreenProjector& projector, const QPoin
 }
 
 bool GizmoInteraction::press(const ScreenProjector& projector, const QPointF& screen, Qt::KeyboardModifiers modifiers) {
-    release();
+    reset();
     m_pressPos = screen;
     const int cone = pickConeEdge(projector, screen);
     const int row = cone >= 0 ? -1 : pickLight(projector, screen);
@@ -73,16 +73,13 @@ bool GizmoInteraction::press(const ScreenProjector& projector, const QPointF& sc
         return true;
     }
     // Select: a plain click makes it the selection (keeping a multi-selection it belongs to, so several
-    // lights can be dragged together); Ctrl toggles it.
+    // lights can be dragged together). Ctrl adds it; Ctrl+click on a selected light (without a drag, since
+    // Ctrl+drag moves along the view axis) removes it at the release.
     const LightId id = m_doc->lightId(row);
     QSet<LightId> selection = m_doc->selection();
-    if (modifiers & Qt::ControlModifier && !(modifiers & Qt::AltModifier)) {
-        if (selection.contains(id)) {
-            selection.remove(id);
-            m_doc->setSelection(selection);
-            return true;  // deselected: nothing to drag
-        }
-        selection.insert(id);
+    if (modifiers & Qt::ControlModifier) {
+        if (selection.contains(id)) m_toggleOff = id;
+        else selection.insert(id);
     } else if (!selection.contains(id)) {
         selection = {id};
     }
@@ -102,6 +99,7 @@ void GizmoInteraction::move(const ScreenProjector& projector, const QPointF& scr
     if (!m_started) {
         if (QLineF(m_pressPos, screen).length() < kDragThreshold) return;
         m_started = true;
+        m_startIndex = m_doc->undoStack()->index();
         m_edit = std::make_unique<ContinuousEdit>(m_doc);
     }
     if (m_drag == Drag::ConeOuter) {
@@ -156,11 +154,32 @@ void GizmoInteraction::applyMove(const ScreenProjector& projector, const QPointF
 }
 
 void GizmoInteraction::release() {
+    if (!m_started && m_toggleOff) {
+        QSet<LightId> selection = m_doc->selection();
+        selection.remove(m_toggleOff);
+        m_doc->setSelection(selection);
+    }
+    reset();
+}
+
+void GizmoInteraction::reset() {
+    m_toggleOff = 0;
     m_edit.reset();
     m_drag = Drag::None;
     m_started = false;
     m_rows.clear();
     m_startWorld.clear();
+}
+
+bool GizmoInteraction::cancel() {
+    const bool changed = m_started && m_edit;
+    const int before = m_startIndex;
+    reset();
+    if (!changed) return false;
+    // The drag is one merged step on top of where it started (if it pushed anything at all).
+    QUndoStack* stack = m_doc->undoStack();
+    if (stack->index() == before + 1) stack->undo();
+    return true;
 }
 
 bool GizmoInteraction::aimSelectedAt(const ScreenProjector& projector, const QPointF& screen, QString* message) {

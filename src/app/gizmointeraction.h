@@ -38,11 +38,14 @@ public:
     int pickConeEdge(const ScreenProjector& projector, const QPointF& screen) const;
 
     // Left button pressed (without Shift). Returns true when it hit a gizmo (the caller then does not orbit);
-    // the light is selected (Ctrl: added to / removed from the selection) and a drag may follow.
+    // the light is selected (Ctrl: added; Ctrl+click on a selected one: removed at the release unless it was
+    // dragged) and a drag may follow.
     bool press(const ScreenProjector& projector, const QPointF& screen, Qt::KeyboardModifiers modifiers);
     // Mouse moved with the button held; `worldPerPixel` converts pixels to world units at the light's depth.
     void move(const ScreenProjector& projector, const QPointF& screen, Qt::KeyboardModifiers modifiers);
-    void release();
+    void release();  // the button was released: ends the drag (one undo step)
+    // Ends the drag and takes back what it changed (Escape). Returns true when there was something to undo.
+    bool cancel();
     bool isDragging() const { return m_drag != Drag::None; }
     Drag drag() const { return m_drag; }
 
@@ -51,6 +54,7 @@ public:
     bool aimSelectedAt(const ScreenProjector& projector, const QPointF& screen, QString* message);
 
 private:
+    void reset();
     void applyMove(const ScreenProjector& projector, const QPointF& screen, bool alongView);
 
     Document* m_doc;
@@ -62,6 +66,8 @@ private:
     std::vector<glm::dvec3> m_startWorld;  // their anchors at the press (world)
     glm::dvec3 m_pickedAnchor{0.0};
     double m_rimDistance = 0.0;  // cone drags
+    int m_startIndex = 0;        // undo index when the drag started moving
+    LightId m_toggleOff = 0;     // Ctrl+click on a selected light: deselect at the release if not dragged
     std::unique_ptr<ContinuousEdit> m_edit;
 };
 

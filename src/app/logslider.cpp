@@ -44,7 +44,8 @@ void LogSliderEdit::setLimits(double lowest, double max) {
 void LogSliderEdit::setValue(double v) {
     m_syncing = true;
     m_spin->setValueQuietly(v);
-    m_slider->setValue(positionFor(v));
+    // While the user drags the handle it stays under the mouse (the stored value is rounded: no jitter).
+    if (!m_slider->isSliderDown()) m_slider->setValue(positionFor(v));
     m_syncing = false;
 }
 

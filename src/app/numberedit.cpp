@@ -25,7 +25,12 @@ NumberEdit::NumberEdit(QWidget* parent) : QDoubleSpinBox(parent) {
 
 void NumberEdit::setLimits(double min, double max, bool minExclusive) {
     m_minExclusive = minExclusive;
-    const double lo = minExclusive ? std::nextafter(min, std::numeric_limits<double>::infinity()) : min;
+    m_min = min;
+    // QDoubleSpinBox rounds its range to `decimals` (323) places, which turns the denormal just above 0
+    // into 0: use a small normal number instead. accepts() checks the exclusive bound itself.
+    const double lo = !minExclusive ? min
+                      : min == 0.0  ? 1e-300
+                                    : std::nextafter(min, std::numeric_limits<double>::infinity());
     m_quiet = true;
     setRange(lo, max);
     m_quiet = false;
@@ -38,15 +43,16 @@ void NumberEdit::setValueQuietly(double v) {
 }
 
 QString NumberEdit::rule() const {
-    const double lo = m_minExclusive ? std::nextafter(minimum(), -std::numeric_limits<double>::infinity())
-                                     : minimum();
+    const double lo = m_min;
     const QString name = m_what.isEmpty() ? tr("value") : m_what;
     return tr("%1 must be a number %2 %3 and ≤ %4")
         .arg(name, m_minExclusive ? QStringLiteral(">") : QStringLiteral("≥"), locale().toString(lo, 'g', 6),
              locale().toString(maximum(), 'g', 6));
 }
 
-bool NumberEdit::accepts(double v) const { return std::isfinite(v) && v >= minimum() && v <= maximum(); }
+bool NumberEdit::accepts(double v) const {
+    return std::isfinite(v) && (m_minExclusive ? v > m_min : v >= m_min) && v <= maximum();
+}
 
 QString NumberEdit::stripAffixes(const QString& text) const {
     QString t = text;
@@ -71,7 +77,7 @@ QValidator::State NumberEdit::validate(QString& input, int& /*pos*/) const {
     if (!std::isfinite(v)) return refuse(tr("%1 is not finite; %2").arg(t, rule()));
     if (accepts(v)) return QValidator::Acceptable;
     // A value below a positive minimum may still grow into range as digits are typed ("0" → "0.5").
-    if (v >= 0.0 && v < minimum() && maximum() > 0.0) {
+    if (v >= 0.0 && !(v > m_min && v >= minimum()) && maximum() > 0.0) {
         emit const_cast<NumberEdit*>(this)->rejected(rule());
         return QValidator::Intermediate;
     }

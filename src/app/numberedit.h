@@ -33,6 +33,7 @@ signals:
 private:
     QString stripAffixes(const QString& text) const;
     bool m_minExclusive = false;
+    double m_min = -1e30;
     bool m_quiet = false;
     QString m_what;
 };

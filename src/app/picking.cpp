@@ -57,6 +57,8 @@ glm::dvec3 ScreenProjector::viewDirection() const {
     return glm::normalize(glm::dvec3(m_inverseView * glm::dvec4(0.0, 0.0, -1.0, 0.0)));
 }
 
+bool ScreenProjector::isOrthographic() const { return m_proj[3][3] == 1.0; }
+
 glm::dvec3 ScreenProjector::eye() const { return glm::dvec3(m_inverseView[3]); }
 
 double ScreenProjector::depth(const glm::dvec3& world) const { return -(m_view * glm::dvec4(world, 1.0)).z; }
@@ -139,7 +141,12 @@ glm::dvec3 dragInViewPlane(const ScreenProjector& projector, const glm::dvec3& s
 glm::dvec3 dragAlongViewAxis(const ScreenProjector& projector, const glm::dvec3& start, const QPointF& from,
                              const QPointF& to, double unitsPerPixel) {
     const double pixels = from.y() - to.y();  // up = away from the camera
-    return start + projector.viewDirection() * (pixels * unitsPerPixel);
+    // Along the line of sight through the point, so it stays under the cursor (perspective); the view
+    // direction for orthographic views (the same thing there).
+    const glm::dvec3 sight = start - projector.eye();
+    const double len = glm::length(sight);
+    const glm::dvec3 dir = projector.isOrthographic() || !(len > 0.0) ? projector.viewDirection() : sight / len;
+    return start + dir * (pixels * unitsPerPixel);
 }
 
 std::vector<glm::dvec3> coneRim(const glm::dvec3& apex, const glm::dvec3& axis, double outerDegrees,

@@ -33,6 +33,7 @@ public:
     // Unit world-space direction the camera looks along.
     glm::dvec3 viewDirection() const;
     glm::dvec3 eye() const;
+    bool isOrthographic() const;
     // View-space depth (distance along the view direction) of a world point.
     double depth(const glm::dvec3& world) const;
     // World units per screen pixel (vertically) at a view depth.
@@ -58,7 +59,8 @@ std::optional<glm::dvec3> intersectModel(const Model& model, const Ray& ray);
 // the camera. Returns `start` when the plane cannot be hit.
 glm::dvec3 dragInViewPlane(const ScreenProjector& projector, const glm::dvec3& start, const QPointF& from,
                            const QPointF& to);
-// Moves `start` along the view direction: dragging up pushes away, `unitsPerPixel` world units a pixel.
+// Moves `start` along the line of sight through it (so it stays under the cursor): dragging up pushes it
+// away from the camera, `unitsPerPixel` world units a pixel.
 glm::dvec3 dragAlongViewAxis(const ScreenProjector& projector, const glm::dvec3& start, const QPointF& from,
                              const QPointF& to, double unitsPerPixel);
 

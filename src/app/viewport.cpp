@@ -358,10 +358,8 @@ void Viewport::wheelEvent(QWheelEvent* event) {
 
 void Viewport::keyPressEvent(QKeyEvent* event) {
     if (event->key() == Qt::Key_Escape && m_nav == Navigation::Gizmo) {
-        // Cancel the drag: undo what it did so far (it is one merged step).
-        m_interaction->release();
+        m_interaction->cancel();  // takes back what the drag did so far (one merged step)
         m_nav = Navigation::None;
-        m_doc->undoStack()->undo();
         return;
     }
     QOpenGLWidget::keyPressEvent(event);

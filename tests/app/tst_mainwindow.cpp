@@ -261,6 +261,25 @@ private slots:
         doc()->undoStack()->undo();
         QVERIFY(doc()->light(0).position == before);
 
+        // Escape during a drag takes it back; the steps before it stay.
+        const int index = doc()->undoStack()->index();
+        QTest::mousePress(viewport(), Qt::LeftButton, Qt::NoModifier, p0);
+        for (int i = 1; i <= 4; ++i) dragTo(viewport(), p0 + QPoint(0, 6 * i));
+        QVERIFY(doc()->light(0).position != before);
+        QTest::keyClick(viewport(), Qt::Key_Escape);
+        QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::NoModifier, p0 + QPoint(0, 24));
+        QVERIFY(doc()->light(0).position == before);
+        QCOMPARE(doc()->undoStack()->index(), index);
+
+        // Ctrl+drag moves along the view axis: the light keeps its place on screen.
+        QTest::mousePress(viewport(), Qt::LeftButton, Qt::ControlModifier, p0);
+        for (int i = 1; i <= 4; ++i) dragTo(viewport(), p0 - QPoint(0, 5 * i), Qt::ControlModifier);
+        QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::ControlModifier, p0 - QPoint(0, 20));
+        QVERIFY(proj.depth(doc()->light(0).position) > proj.depth(before) + 1e-6);  // pushed away
+        const auto still = viewport()->lightScreenPosition(0);
+        QVERIFY(still && QLineF(*still, QPointF(p0)).length() < 1.5);
+        doc()->undoStack()->undo();
+
         // Shift+click on the model aims the selected spot at the clicked point.
         const auto centre = proj.project(frame.center);
         QVERIFY(centre);

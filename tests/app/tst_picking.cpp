@@ -67,7 +67,10 @@ private slots:
         const glm::dvec3 moved = dragInViewPlane(p, start, QPointF(105, 45), QPointF(115, 45));
         QVERIFY2(near(moved, glm::dvec3(3, 1, 0), 1e-9), qPrintable(QString::number(moved.x)));
         const glm::dvec3 pushed = dragAlongViewAxis(p, start, QPointF(0, 50), QPointF(0, 40), 0.5);
-        QVERIFY(near(pushed, glm::dvec3(1, 1, -5)));  // up = away from the camera
+        // Up = away from the camera, 10 px * 0.5 = 5 units along the line of sight from the eye (0,0,10).
+        QVERIFY(near(pushed, start + glm::normalize(start - glm::dvec3(0, 0, 10)) * 5.0));
+        const auto s0 = p.project(start), s1 = p.project(pushed);
+        QVERIFY(s0 && s1 && QLineF(*s0, *s1).length() < 1e-9);  // still under the cursor
     }
 
     void hitsTheModelsNearestTriangle() {
