@@ -79,6 +79,12 @@ int main(int argc, char** argv) {
         return 1;
     }
     const double firstMs = t.nsecsElapsed() * 1e-6;
+    if (const QString save = qEnvironmentVariable("LR_PERF_SAVE"); !save.isEmpty()) {  // a look at the gizmos
+        RenderSettings g = s;
+        g.showGizmos = g.showGrid = true;
+        g.selectedLights = {0};
+        gl.renderImage(cam, size, g, 1, &error).save(save);
+    }
     std::vector<double> wall, cpu, gpu;
     for (int i = 0; i < frames; ++i) {
         t.restart();
