@@ -11,6 +11,8 @@
 #include "app/lightsdock.h"
 #include "app/mainwindow.h"
 #include "app/numberedit.h"
+#include "app/presetsdock.h"
+#include "app/presetstore.h"
 #include "app/propertiesdock.h"
 #include "app/scene.h"
 #include "app/screenshotdialog.h"
@@ -21,6 +23,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
+#include <QDir>
 #include <QFile>
 #include <QMenu>
 #include <QMimeData>
@@ -359,6 +362,42 @@ private slots:
         QCOMPARE(QImage(o.path).size(), o.size);
         o.path = m_dir.filePath(QStringLiteral("no/such/folder/shot.png"));
         QVERIFY(!viewport()->exportScreenshot(o).isEmpty());
+    }
+
+    void presets_saveWithThumbnail_andApplyAsOneStep() {
+        PresetStore* store = m_window->presetStore();
+        QDir(store->userDir()).removeRecursively();  // test-mode app data: start empty
+        doc()->newRig(defaultRig());
+        QVERIFY(doc()->setLightValue({0}, LightProperty::Intensity, 7.0));
+        const Rig mine = doc()->rig();
+        QVERIFY(m_window->presetsDock()->saveAsPreset(QStringLiteral("Test preset")));
+        const QString presetFile = QDir(store->userDir()).filePath(QStringLiteral("Test preset.json"));
+        const QString png = QDir(store->userDir()).filePath(QStringLiteral("Test preset.png"));
+        QVERIFY(QFile::exists(presetFile));
+        const QImage thumbnail(png);
+        QVERIFY2(!thumbnail.isNull(), "a thumbnail rendered by LightRig");
+        QVERIFY(thumbnail.pixelColor(thumbnail.width() / 2, thumbnail.height() / 2) !=
+                thumbnail.pixelColor(0, 0));  // the model is in it
+
+        // Applying a built-in and then the saved preset: one undo step each.
+        PresetEntry builtin, saved;
+        for (const PresetEntry& e : store->presets()) {
+            if (e.builtin && e.name == QLatin1String("three-point")) builtin = e;
+            if (!e.builtin && e.name == QLatin1String("Test preset")) saved = e;
+        }
+        QVERIFY(!builtin.path.isEmpty() && !saved.path.isEmpty());
+        const int index = doc()->undoStack()->index();
+        QVERIFY(m_window->presetsDock()->applyPreset(builtin));
+        QCOMPARE(doc()->undoStack()->index(), index + 1);
+        QVERIFY(doc()->rig() == *readBuiltinPreset(QStringLiteral("three-point")).rig);
+        QVERIFY(m_window->presetsDock()->applyPreset(saved));
+        Rig expected = mine;
+        expected.name = QStringLiteral("Test preset");
+        QCOMPARE(json(doc()->rig()), json(expected));
+        doc()->undoStack()->undo();
+        doc()->undoStack()->undo();
+        QCOMPARE(json(doc()->rig()), json(mine));
+        QDir(store->userDir()).removeRecursively();
     }
 
     void dropARigFile_opensIt() {
