@@ -143,6 +143,7 @@ private slots:
     }
 
     void failuresExit1AndWriteNothing() {
+        LR_REQUIRE_DISPLAY();  // without one, every render fails first with "needs an X display"
         QFETCH(QStringList, args);
         QFETCH(QString, mentions);
         {
