@@ -27,7 +27,9 @@ void ColorButton::setMixed(bool mixed) {
     updateSwatch();
 }
 
-double ColorButton::hdrScale(const glm::dvec3& c) { return std::max({1.0, c.r, c.g, c.b}); }
+double ColorButton::hdrScale(const glm::dvec3& c) {
+    return std::max({1.0, c.r, c.g, c.b});
+}
 
 QColor ColorButton::toDisplay(const glm::dvec3& linear) {
     const double s = hdrScale(linear);
@@ -71,9 +73,10 @@ void ColorButton::updateSwatch() {
                     .arg(m_color.r, 0, 'g', 3)
                     .arg(m_color.g, 0, 'g', 3)
                     .arg(m_color.b, 0, 'g', 3));
-        setToolTip(tr("Linear RGB %1. Click to choose a colour%2")
-                       .arg(text(), hdrScale(m_color) > 1.0 ? tr(" (its HDR brightness is kept)") : QString()));
+        setToolTip(
+            tr("Linear RGB %1. Click to choose a colour%2")
+                .arg(text(), hdrScale(m_color) > 1.0 ? tr(" (its HDR brightness is kept)") : QString()));
     }
 }
 
-}  // namespace lr
+} // namespace lr

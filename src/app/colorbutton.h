@@ -10,22 +10,22 @@ namespace lr {
 
 class ColorButton : public QToolButton {
     Q_OBJECT
-public:
+  public:
     explicit ColorButton(QWidget* parent = nullptr);
 
     glm::dvec3 color() const { return m_color; }
-    void setColor(const glm::dvec3& linear);  // no signal
-    void setMixed(bool mixed);                // several lights with different colours selected
+    void setColor(const glm::dvec3& linear); // no signal
+    void setMixed(bool mixed);               // several lights with different colours selected
 
     // Conversions between linear RGB (any scale >= 0) and the 8-bit sRGB QColor shown/picked.
     static QColor toDisplay(const glm::dvec3& linear);
     static glm::dvec3 fromDisplay(const QColor& srgb, double scale);
-    static double hdrScale(const glm::dvec3& linear);  // max(1, largest component)
+    static double hdrScale(const glm::dvec3& linear); // max(1, largest component)
 
-signals:
-    void colorPicked(const glm::dvec3& linear);  // user chose a different colour
+  signals:
+    void colorPicked(const glm::dvec3& linear); // user chose a different colour
 
-private:
+  private:
     void pick();
     void updateSwatch();
 
@@ -33,4 +33,4 @@ private:
     bool m_mixed = false;
 };
 
-}  // namespace lr
+} // namespace lr

@@ -13,17 +13,20 @@ CommandLineResult parseEditorCommandLine(const QStringList& args) {
                     "Subcommands: validate, format, render, bench (lightrig SUBCOMMAND --help)."));
     parser.addHelpOption();
     parser.addVersionOption();
-    parser.addPositionalArgument(QStringLiteral("MODEL"),
-                                 QCoreApplication::translate("lightrig", "A model file to open (glTF, OBJ, FBX, ...)."),
-                                 QStringLiteral("[MODEL]"));
+    parser.addPositionalArgument(
+        QStringLiteral("MODEL"),
+        QCoreApplication::translate("lightrig", "A model file to open (glTF, OBJ, FBX, ...)."),
+        QStringLiteral("[MODEL]"));
     const QCommandLineOption rig(QStringList{QStringLiteral("r"), QStringLiteral("rig")},
                                  QCoreApplication::translate("lightrig", "A rig file (.json) to open."),
                                  QStringLiteral("RIG"));
-    const QCommandLineOption noRestore(QStringLiteral("no-restore"),
-                                       QCoreApplication::translate("lightrig", "Do not reopen the last session's files."));
-    QCommandLineOption screenshot(QStringLiteral("screenshot"),
-                                  QCoreApplication::translate("lightrig", "Grab the window to OUT.png and quit."),
-                                  QStringLiteral("OUT.png"));
+    const QCommandLineOption noRestore(
+        QStringLiteral("no-restore"),
+        QCoreApplication::translate("lightrig", "Do not reopen the last session's files."));
+    QCommandLineOption screenshot(
+        QStringLiteral("screenshot"),
+        QCoreApplication::translate("lightrig", "Grab the window to OUT.png and quit."),
+        QStringLiteral("OUT.png"));
     screenshot.setFlags(QCommandLineOption::HiddenFromHelp);
     parser.addOptions({rig, noRestore, screenshot});
 
@@ -44,9 +47,10 @@ CommandLineResult parseEditorCommandLine(const QStringList& args) {
     }
     const QStringList positional = parser.positionalArguments();
     if (positional.size() > 1) {
-        result.message = QCoreApplication::translate("lightrig", "lightrig: expected at most one MODEL, got %1\n\n%2")
-                             .arg(positional.size())
-                             .arg(parser.helpText());
+        result.message =
+            QCoreApplication::translate("lightrig", "lightrig: expected at most one MODEL, got %1\n\n%2")
+                .arg(positional.size())
+                .arg(parser.helpText());
         result.exitCode = 2;
         return result;
     }
@@ -60,4 +64,4 @@ CommandLineResult parseEditorCommandLine(const QStringList& args) {
     return result;
 }
 
-}  // namespace lr
+} // namespace lr

@@ -18,11 +18,13 @@ namespace lr {
 namespace {
 const QString kRigFilter = QObject::tr("LightRig rigs (*.json);;All files (*)");
 
-QString lastDir() { return QSettings().value(QStringLiteral("files/lastDir"), QDir::homePath()).toString(); }
+QString lastDir() {
+    return QSettings().value(QStringLiteral("files/lastDir"), QDir::homePath()).toString();
+}
 void rememberDir(const QString& path) {
     QSettings().setValue(QStringLiteral("files/lastDir"), QFileInfo(path).absolutePath());
 }
-}  // namespace
+} // namespace
 
 struct DocumentFiles::Load {
     QString path;
@@ -63,9 +65,12 @@ bool DocumentFiles::isRigFile(const QString& path) {
 bool DocumentFiles::maybeSave() {
     if (!m_doc->isModified()) return true;
     switch (askUnsaved(m_doc->displayName())) {
-    case UnsavedAnswer::Save: return save();
-    case UnsavedAnswer::Discard: return true;
-    case UnsavedAnswer::Cancel: return false;
+    case UnsavedAnswer::Save:
+        return save();
+    case UnsavedAnswer::Discard:
+        return true;
+    case UnsavedAnswer::Cancel:
+        return false;
     }
     return false;
 }
@@ -87,16 +92,17 @@ bool DocumentFiles::openRig(const QString& requested) {
     if (!error.isEmpty()) {
         const QStringList lines = error.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
         showError(m_window, {tr("Open rig"),
-                             tr("Could not open %1: %n error(s). The rig that was open is unchanged.", nullptr,
-                                int(lines.size()))
+                             tr("Could not open %1: %n error(s). The rig that was open is unchanged.",
+                                nullptr, int(lines.size()))
                                  .arg(QFileInfo(path).fileName()),
                              lines});
         return false;
     }
     m_recent->add(path);
-    emit statusMessage(warnings.isEmpty() ? tr("Opened %1").arg(QDir::toNativeSeparators(path))
-                                          : tr("Opened %1 with %n warning(s): %2", nullptr, int(warnings.size()))
-                                                .arg(QDir::toNativeSeparators(path), warnings.first()));
+    emit statusMessage(warnings.isEmpty()
+                           ? tr("Opened %1").arg(QDir::toNativeSeparators(path))
+                           : tr("Opened %1 with %n warning(s): %2", nullptr, int(warnings.size()))
+                                 .arg(QDir::toNativeSeparators(path), warnings.first()));
     return true;
 }
 
@@ -116,9 +122,10 @@ bool DocumentFiles::saveAs(const QString& requested) {
     QString path = requested;
     if (path.isEmpty()) {
         const QString name = m_doc->rig().name.isEmpty() ? tr("rig") : m_doc->rig().name;
-        const QString suggested = m_doc->filePath().isEmpty() || m_doc->filePath().startsWith(QLatin1String(":/"))
-                                      ? QDir(lastDir()).filePath(name + QStringLiteral(".json"))
-                                      : m_doc->filePath();
+        const QString suggested =
+            m_doc->filePath().isEmpty() || m_doc->filePath().startsWith(QLatin1String(":/"))
+                ? QDir(lastDir()).filePath(name + QStringLiteral(".json"))
+                : m_doc->filePath();
         path = askSavePath(tr("Save rig as"), suggested, kRigFilter);
     }
     if (path.isEmpty()) return false;
@@ -138,7 +145,7 @@ bool DocumentFiles::openModel(const QString& requested) {
     QString path = requested;
     if (path.isEmpty()) path = askOpenPath(tr("Open model"), modelFileFilter() + tr(";;All files (*)"));
     if (path.isEmpty()) return false;
-    cancelModelLoad();  // a newer request supersedes a running one
+    cancelModelLoad(); // a newer request supersedes a running one
     auto load = std::make_shared<Load>();
     load->path = path;
     m_loading = load;
@@ -148,9 +155,12 @@ bool DocumentFiles::openModel(const QString& requested) {
     QPointer<DocumentFiles> self(this);
     options.progress = [load, self](double fraction) {
         if (self)
-            QMetaObject::invokeMethod(self.data(), [self, load, fraction] {
-                if (self && self->m_loading == load) emit self->modelLoadProgress(fraction);
-            }, Qt::QueuedConnection);
+            QMetaObject::invokeMethod(
+                self.data(),
+                [self, load, fraction] {
+                    if (self && self->m_loading == load) emit self->modelLoadProgress(fraction);
+                },
+                Qt::QueuedConnection);
         return !load->cancelled.load();
     };
     auto* watcher = new QFutureWatcher<ModelLoadResult>(this);
@@ -158,7 +168,7 @@ bool DocumentFiles::openModel(const QString& requested) {
         watcher->deleteLater();
         if (m_watcher == watcher) m_watcher = nullptr;
         const ModelLoadResult result = watcher->result();
-        if (m_loading != load) return;  // superseded or cancelled: its result is dropped
+        if (m_loading != load) return; // superseded or cancelled: its result is dropped
         m_loading.reset();
         if (result.ok()) {
             m_scene->setModel(result.model, load->path);
@@ -170,7 +180,9 @@ bool DocumentFiles::openModel(const QString& requested) {
                                    .arg(m.meshes.size())
                                    .arg(m.materials.size())
                                    .arg(m.loadMs, 0, 'f', 0)
-                                   .arg(m.warnings.isEmpty() ? QString() : tr(" (%n warning(s))", nullptr, int(m.warnings.size()))));
+                                   .arg(m.warnings.isEmpty()
+                                            ? QString()
+                                            : tr(" (%n warning(s))", nullptr, int(m.warnings.size()))));
             emit modelLoaded(load->path);
         } else if (!result.cancelled) {
             emit modelLoadFailed(load->path, result.error);
@@ -199,14 +211,17 @@ bool DocumentFiles::importLightsFromModel() {
     if (model.lights.lights.empty()) {
         showError(m_window, {tr("Import lights from model"),
                              tr("%1 has no lights of its own.")
-                                 .arg(m_scene->path().isEmpty() ? tr("The model") : QFileInfo(m_scene->path()).fileName()),
+                                 .arg(m_scene->path().isEmpty() ? tr("The model")
+                                                                : QFileInfo(m_scene->path()).fileName()),
                              {}});
         return false;
     }
     const std::vector<Light> lights = lightsInRigSpace(model.lights, m_doc->rig(), m_scene->frame());
     QString error;
-    if (!m_doc->addLights(-1, lights, tr("Import %n light(s) from the model", nullptr, int(lights.size())), &error)) {
-        showError(m_window, {tr("Import lights from model"), tr("Could not import the model's lights."), {error}});
+    if (!m_doc->addLights(-1, lights, tr("Import %n light(s) from the model", nullptr, int(lights.size())),
+                          &error)) {
+        showError(m_window,
+                  {tr("Import lights from model"), tr("Could not import the model's lights."), {error}});
         return false;
     }
     emit statusMessage(tr("Imported %n light(s) from the model", nullptr, int(lights.size())));
@@ -222,4 +237,4 @@ bool DocumentFiles::openFile(const QString& path) {
     return isRigFile(path) ? openRig(path) : openModel(path);
 }
 
-}  // namespace lr
+} // namespace lr

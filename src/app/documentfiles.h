@@ -23,7 +23,7 @@ class Scene;
 
 class DocumentFiles : public QObject {
     Q_OBJECT
-public:
+  public:
     enum class UnsavedAnswer { Save, Discard, Cancel };
 
     DocumentFiles(Document* document, Scene* scene, RecentFiles* recent, QWidget* window);
@@ -34,14 +34,14 @@ public:
     std::function<UnsavedAnswer(const QString& documentName)> askUnsaved;
     std::function<QString(const QString& title, const QString& filter)> askOpenPath;
     std::function<QString(const QString& title, const QString& suggested, const QString& filter)> askSavePath;
-    // Asked before the rig is written to a path (sessionsafety.cpp: "changed on disk since opened, overwrite?");
-    // false cancels the save. Unset: always write.
+    // Asked before the rig is written to a path (sessionsafety.cpp: "changed on disk since opened,
+    // overwrite?"); false cancels the save. Unset: always write.
     std::function<bool(const QString& path)> confirmWrite;
 
-    bool maybeSave();  // true when it is fine to drop the current rig (saved, discarded or unmodified)
+    bool maybeSave(); // true when it is fine to drop the current rig (saved, discarded or unmodified)
     bool newRig();
-    bool openRig(const QString& path = QString());  // "" asks for a file
-    bool save();                                    // untitled: save as
+    bool openRig(const QString& path = QString()); // "" asks for a file
+    bool save();                                   // untitled: save as
     bool saveAs(const QString& path = QString());
     // Starts loading a model ("" asks for a file); returns false only when nothing was started.
     bool openModel(const QString& path = QString());
@@ -52,15 +52,15 @@ public:
     bool openFile(const QString& path);
     static bool isRigFile(const QString& path);
 
-signals:
+  signals:
     void modelLoadStarted(const QString& path);
     void modelLoadProgress(double fraction);
     void modelLoaded(const QString& path);
-    void modelLoadFailed(const QString& path, const QString& error);  // not emitted for cancellation
-    void modelLoadFinished();  // after loaded, failed or cancelled
+    void modelLoadFailed(const QString& path, const QString& error); // not emitted for cancellation
+    void modelLoadFinished();                                        // after loaded, failed or cancelled
     void statusMessage(const QString& text);
 
-private:
+  private:
     struct Load;
     void finishModelLoad();
 
@@ -72,4 +72,4 @@ private:
     QFutureWatcher<ModelLoadResult>* m_watcher = nullptr;
 };
 
-}  // namespace lr
+} // namespace lr

@@ -60,9 +60,10 @@ void EditorActions::createFileMenu() {
     save = add(tr("&Save"), QKeySequence::Save, [files] { files->save(); });
     saveAs = add(tr("Save &as…"), QKeySequence::SaveAs, [files] { files->saveAs(); });
     menu->addSeparator();
-    importLights = add(tr("&Import lights from model"), QKeySequence(), [files] { files->importLightsFromModel(); });
-    exportScreenshot = add(tr("&Export screenshot…"), QKeySequence(tr("Ctrl+E")),
-                           [this] { exportScreenshotInteractive(); });
+    importLights =
+        add(tr("&Import lights from model"), QKeySequence(), [files] { files->importLightsFromModel(); });
+    exportScreenshot =
+        add(tr("&Export screenshot…"), QKeySequence(tr("Ctrl+E")), [this] { exportScreenshotInteractive(); });
     menu->addSeparator();
     quit = add(tr("&Quit"), QKeySequence::Quit, [this] { m_window->close(); });
     quit->setMenuRole(QAction::QuitRole);
@@ -79,7 +80,8 @@ void EditorActions::createEditMenu() {
     menu->addAction(redo);
     menu->addSeparator();
     QMenu* lights = menu->addMenu(tr("&Lights"));
-    for (QAction* a : m_window->lightsDock()->lightActions()) lights->addAction(a);
+    for (QAction* a : m_window->lightsDock()->lightActions())
+        lights->addAction(a);
 }
 
 void EditorActions::createViewMenu() {
@@ -126,18 +128,20 @@ void EditorActions::createOtherMenus() {
     QMenu* presets = m_window->menuBar()->addMenu(tr("&Presets"));
     m_window->presetsDock()->attachMenu(presets);
     QMenu* windows = m_window->menuBar()->addMenu(tr("&Window"));
-    for (QDockWidget* dock : m_window->findChildren<QDockWidget*>()) windows->addAction(dock->toggleViewAction());
+    for (QDockWidget* dock : m_window->findChildren<QDockWidget*>())
+        windows->addAction(dock->toggleViewAction());
     QMenu* help = m_window->menuBar()->addMenu(tr("&Help"));
     QAction* about = help->addAction(tr("&About LightRig"));
     connect(about, &QAction::triggered, m_window, [this] {
-        QMessageBox::about(m_window, tr("About LightRig"),
-                           tr("<b>LightRig %1</b><p>Design light rigs on 3D models: point, spot, directional and rim "
-                              "lights with the falloff and cone models of classic real-time rendering.</p>"
-                              "<p>Viewport: left drag orbits, middle drag or Shift+left drag pans, the wheel "
-                              "dollies. Click a light to select it, drag it to move it (Ctrl or Alt: along the "
-                              "view axis), drag a spot's cone edge to change its angle, Shift+click the model "
-                              "to aim the selected light there.</p>")
-                               .arg(QApplication::applicationVersion()));
+        QMessageBox::about(
+            m_window, tr("About LightRig"),
+            tr("<b>LightRig %1</b><p>Design light rigs on 3D models: point, spot, directional and rim "
+               "lights with the falloff and cone models of classic real-time rendering.</p>"
+               "<p>Viewport: left drag orbits, middle drag or Shift+left drag pans, the wheel "
+               "dollies. Click a light to select it, drag it to move it (Ctrl or Alt: along the "
+               "view axis), drag a spot's cone edge to change its angle, Shift+click the model "
+               "to aim the selected light there.</p>")
+                .arg(QApplication::applicationVersion()));
     });
 }
 
@@ -145,9 +149,11 @@ void EditorActions::rebuildModelCameras() {
     modelCamerasMenu->clear();
     const auto& cameras = m_window->scene()->model()->cameras;
     for (int i = 0; i < int(cameras.size()); ++i) {
-        const QString name = cameras[size_t(i)].name.isEmpty() ? tr("Camera %1").arg(i + 1) : cameras[size_t(i)].name;
+        const QString name =
+            cameras[size_t(i)].name.isEmpty() ? tr("Camera %1").arg(i + 1) : cameras[size_t(i)].name;
         QAction* a = modelCamerasMenu->addAction(name);
-        connect(a, &QAction::triggered, m_window->viewport(), [this, i] { m_window->viewport()->setModelCamera(i); });
+        connect(a, &QAction::triggered, m_window->viewport(),
+                [this, i] { m_window->viewport()->setModelCamera(i); });
     }
     modelCamerasMenu->setEnabled(!cameras.empty());
 }
@@ -162,9 +168,12 @@ void EditorActions::updateEnabled() {
 void EditorActions::exportScreenshotInteractive() {
     const QString base = m_window->document()->filePath().isEmpty()
                              ? QDir::home().filePath(QStringLiteral("lightrig.png"))
-                             : QFileInfo(m_window->document()->filePath()).dir().filePath(
-                                   QFileInfo(m_window->document()->filePath()).completeBaseName() + QStringLiteral(".png"));
-    ScreenshotDialog dialog(m_window->viewport()->size() * m_window->viewport()->devicePixelRatio(), base, m_window);
+                             : QFileInfo(m_window->document()->filePath())
+                                   .dir()
+                                   .filePath(QFileInfo(m_window->document()->filePath()).completeBaseName() +
+                                             QStringLiteral(".png"));
+    ScreenshotDialog dialog(m_window->viewport()->size() * m_window->viewport()->devicePixelRatio(), base,
+                            m_window);
     if (dialog.exec() != QDialog::Accepted) return;
     const ScreenshotOptions o = dialog.options();
     QApplication::setOverrideCursor(Qt::WaitCursor);
@@ -174,11 +183,9 @@ void EditorActions::exportScreenshotInteractive() {
         showError(m_window, {tr("Export screenshot"), tr("Could not export the screenshot."), {error}});
         return;
     }
-    m_window->statusBar()->showMessage(tr("Wrote %1 (%2×%3)")
-                                           .arg(QDir::toNativeSeparators(o.path))
-                                           .arg(o.size.width())
-                                           .arg(o.size.height()),
-                                       8000);
+    m_window->statusBar()->showMessage(
+        tr("Wrote %1 (%2×%3)").arg(QDir::toNativeSeparators(o.path)).arg(o.size.width()).arg(o.size.height()),
+        8000);
 }
 
-}  // namespace lr
+} // namespace lr

@@ -13,7 +13,7 @@ class MainWindow;
 
 class EditorActions : public QObject {
     Q_OBJECT
-public:
+  public:
     explicit EditorActions(MainWindow* window);
 
     QAction* newRig = nullptr;
@@ -26,7 +26,7 @@ public:
     QAction* quit = nullptr;
     QAction* undo = nullptr;
     QAction* redo = nullptr;
-    QAction* frame = nullptr;  // F: the selected lights, or everything when none is selected
+    QAction* frame = nullptr; // F: the selected lights, or everything when none is selected
     QAction* frameAll = nullptr;
     QAction* lookThroughLight = nullptr;
     QAction* showGizmos = nullptr;
@@ -37,7 +37,7 @@ public:
 
     void exportScreenshotInteractive();
 
-private:
+  private:
     void createFileMenu();
     void createEditMenu();
     void createViewMenu();
@@ -48,4 +48,4 @@ private:
     MainWindow* m_window;
 };
 
-}  // namespace lr
+} // namespace lr

@@ -43,7 +43,8 @@ void scheduleScreenshot(MainWindow* window, const QString& path) {
             QTimer::singleShot(400, window, [window, path] {
                 const QImage image = window->grab().toImage();
                 const bool ok = !image.isNull() && image.save(path);
-                std::fprintf(ok ? stdout : stderr, ok ? "lightrig: wrote %s (%dx%d)\n" : "lightrig: could not write %s\n",
+                std::fprintf(ok ? stdout : stderr,
+                             ok ? "lightrig: wrote %s (%dx%d)\n" : "lightrig: could not write %s\n",
                              qPrintable(QDir::toNativeSeparators(path)), image.width(), image.height());
                 QCoreApplication::exit(ok ? 0 : 1);
             });
@@ -51,8 +52,11 @@ void scheduleScreenshot(MainWindow* window, const QString& path) {
         poll->start();
     };
     auto waitForFrame = [window, grab] {
-        if (window->viewport()->hasRenderedFrame()) grab();
-        else QObject::connect(window->viewport(), &Viewport::firstFrame, window, grab, Qt::SingleShotConnection);
+        if (window->viewport()->hasRenderedFrame())
+            grab();
+        else
+            QObject::connect(window->viewport(), &Viewport::firstFrame, window, grab,
+                             Qt::SingleShotConnection);
     };
     QObject::connect(window->files(), &DocumentFiles::modelLoadFinished, window, waitForFrame,
                      Qt::SingleShotConnection);
@@ -62,7 +66,7 @@ void scheduleScreenshot(MainWindow* window, const QString& path) {
     });
 }
 
-}  // namespace
+} // namespace
 
 void setApplicationIdentity() {
     QCoreApplication::setOrganizationName(QStringLiteral("LightRig"));
@@ -73,7 +77,7 @@ void setApplicationIdentity() {
 }
 
 int runEditor(int argc, char** argv) {
-    Viewport::setDefaultSurfaceFormat();  // before the QApplication: OpenGL 3.3 core for every context
+    Viewport::setDefaultSurfaceFormat(); // before the QApplication: OpenGL 3.3 core for every context
     QApplication app(argc, argv);
     setApplicationIdentity();
     const CommandLineResult cl = parseEditorCommandLine(QCoreApplication::arguments());
@@ -94,4 +98,4 @@ int runEditor(int argc, char** argv) {
     return app.exec();
 }
 
-}  // namespace lr
+} // namespace lr

@@ -10,4 +10,4 @@ void setApplicationIdentity();
 // Starts the editor (QApplication, main window, event loop) and returns the exit code.
 int runEditor(int argc, char** argv);
 
-}  // namespace lr
+} // namespace lr

@@ -9,11 +9,12 @@
 namespace lr {
 
 EditorStatusBar::EditorStatusBar(QWidget* parent)
-    : QStatusBar(parent), m_rig(new QLabel(this)), m_frameTime(new QLabel(this)), m_progress(new QProgressBar(this)),
-      m_cancel(new QToolButton(this)) {
+    : QStatusBar(parent), m_rig(new QLabel(this)), m_frameTime(new QLabel(this)),
+      m_progress(new QProgressBar(this)), m_cancel(new QToolButton(this)) {
     m_frameTime->setObjectName(QStringLiteral("frameTime"));
     m_frameTime->setToolTip(tr("Time to render the last viewport frame (GPU timer query)"));
-    m_frameTime->setMinimumWidth(m_frameTime->fontMetrics().horizontalAdvance(QStringLiteral("GPU 000.0 ms")));
+    m_frameTime->setMinimumWidth(
+        m_frameTime->fontMetrics().horizontalAdvance(QStringLiteral("GPU 000.0 ms")));
     m_progress->setRange(0, 1000);
     m_progress->setMaximumWidth(160);
     m_progress->setTextVisible(false);
@@ -28,13 +29,19 @@ EditorStatusBar::EditorStatusBar(QWidget* parent)
 }
 
 void EditorStatusBar::setFrameTime(double gpuMs, double cpuMs) {
-    if (gpuMs >= 0.0 && std::isfinite(gpuMs)) m_frameTime->setText(tr("GPU %1 ms").arg(gpuMs, 0, 'f', 1));
-    else if (cpuMs >= 0.0 && std::isfinite(cpuMs)) m_frameTime->setText(tr("frame %1 ms").arg(cpuMs, 0, 'f', 1));
+    if (gpuMs >= 0.0 && std::isfinite(gpuMs))
+        m_frameTime->setText(tr("GPU %1 ms").arg(gpuMs, 0, 'f', 1));
+    else if (cpuMs >= 0.0 && std::isfinite(cpuMs))
+        m_frameTime->setText(tr("frame %1 ms").arg(cpuMs, 0, 'f', 1));
 }
 
-QString EditorStatusBar::frameTimeText() const { return m_frameTime->text(); }
+QString EditorStatusBar::frameTimeText() const {
+    return m_frameTime->text();
+}
 
-void EditorStatusBar::setRigSummary(const QString& text) { m_rig->setText(text); }
+void EditorStatusBar::setRigSummary(const QString& text) {
+    m_rig->setText(text);
+}
 
 void EditorStatusBar::showLoading(const QString& fileName) {
     m_progress->setValue(0);
@@ -52,4 +59,4 @@ void EditorStatusBar::hideLoading() {
     m_cancel->hide();
 }
 
-}  // namespace lr
+} // namespace lr

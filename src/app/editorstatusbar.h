@@ -12,24 +12,24 @@ namespace lr {
 
 class EditorStatusBar : public QStatusBar {
     Q_OBJECT
-public:
+  public:
     explicit EditorStatusBar(QWidget* parent = nullptr);
 
-    void setFrameTime(double gpuMs, double cpuMs);  // gpuMs < 0: not measured
+    void setFrameTime(double gpuMs, double cpuMs); // gpuMs < 0: not measured
     void setRigSummary(const QString& text);
     void showLoading(const QString& fileName);
-    void setLoadProgress(double fraction);  // 0..1
+    void setLoadProgress(double fraction); // 0..1
     void hideLoading();
     QString frameTimeText() const;
 
-signals:
+  signals:
     void cancelLoadRequested();
 
-private:
+  private:
     QLabel* m_rig;
     QLabel* m_frameTime;
     QProgressBar* m_progress;
     QToolButton* m_cancel;
 };
 
-}  // namespace lr
+} // namespace lr

@@ -9,9 +9,11 @@ ErrorPresenter& presenter() {
     static ErrorPresenter p;
     return p;
 }
-}  // namespace
+} // namespace
 
-void setErrorPresenter(ErrorPresenter p) { presenter() = std::move(p); }
+void setErrorPresenter(ErrorPresenter p) {
+    presenter() = std::move(p);
+}
 
 void showError(QWidget* parent, const ErrorReport& report) {
     if (presenter()) {
@@ -25,11 +27,12 @@ void showError(QWidget* parent, const ErrorReport& report) {
         const int shown = std::min<int>(int(report.details.size()), 8);
         QString info = report.details.mid(0, shown).join(QLatin1Char('\n'));
         if (shown < report.details.size())
-            info += QLatin1Char('\n') + QObject::tr("… and %1 more (Show Details)").arg(report.details.size() - shown);
+            info += QLatin1Char('\n') +
+                    QObject::tr("… and %1 more (Show Details)").arg(report.details.size() - shown);
         box.setInformativeText(info);
         box.setDetailedText(report.details.join(QLatin1Char('\n')));
     }
     box.exec();
 }
 
-}  // namespace lr
+} // namespace lr

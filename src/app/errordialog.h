@@ -11,9 +11,9 @@ class QWidget;
 namespace lr {
 
 struct ErrorReport {
-    QString title;    // window title, e.g. "Open rig"
-    QString summary;  // one line: "Could not open studio.json: 3 errors"
-    QStringList details;  // each "FILE: json.path: reason"
+    QString title;       // window title, e.g. "Open rig"
+    QString summary;     // one line: "Could not open studio.json: 3 errors"
+    QStringList details; // each "FILE: json.path: reason"
 };
 
 // Shows a modal warning box (text selectable, details copyable). Returns when it is closed.
@@ -23,4 +23,4 @@ void showError(QWidget* parent, const ErrorReport& report);
 using ErrorPresenter = std::function<void(const ErrorReport&)>;
 void setErrorPresenter(ErrorPresenter presenter);
 
-}  // namespace lr
+} // namespace lr

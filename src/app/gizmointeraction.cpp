@@ -17,14 +17,17 @@ glm::dvec3 lightAnchor(const Rig& rig, const SceneFrame& frame, const Light& lig
 }
 
 double spotGizmoLength(const Rig& rig, const SceneFrame& frame, const Light& light) {
-    // As render/gizmos.cpp draws it: the range (at most 3 radii) when the light has a finite one, else a radius.
+    // As render/gizmos.cpp draws it: the range (at most 3 radii) when the light has a finite one, else a
+    // radius.
     const double radius = frame.radius > 0.0 && std::isfinite(frame.radius) ? frame.radius : 1.0;
     const Falloff& f = light.falloff;
-    const bool bounded = f.model == FalloffModel::RangePower || f.model == FalloffModel::RangeQuadratic ||
-                         ((f.model == FalloffModel::InversePolynomial || f.model == FalloffModel::InverseSquare) &&
-                          f.hasRange());
+    const bool bounded =
+        f.model == FalloffModel::RangePower || f.model == FalloffModel::RangeQuadratic ||
+        ((f.model == FalloffModel::InversePolynomial || f.model == FalloffModel::InverseSquare) &&
+         f.hasRange());
     const double range = bounded ? f.range / distanceScale(rig, frame) : -1.0;
-    return range > 0.0 && std::isfinite(range) && range < radius * 1e4 ? std::min(range, radius * 3.0) : radius;
+    return range > 0.0 && std::isfinite(range) && range < radius * 1e4 ? std::min(range, radius * 3.0)
+                                                                       : radius;
 }
 
 GizmoInteraction::GizmoInteraction(Document* document, Scene* scene) : m_doc(document), m_scene(scene) {}
@@ -35,7 +38,8 @@ int GizmoInteraction::pickLight(const ScreenProjector& projector, const QPointF&
     const SceneFrame frame = m_scene->frame();
     std::vector<glm::dvec3> anchors;
     anchors.reserve(rig.lights.size());
-    for (const Light& l : rig.lights) anchors.push_back(lightAnchor(rig, frame, l));
+    for (const Light& l : rig.lights)
+        anchors.push_back(lightAnchor(rig, frame, l));
     return pickNearest(projector, anchors, screen, kPickPixels);
 }
 
@@ -47,7 +51,8 @@ int GizmoInteraction::pickConeEdge(const ScreenProjector& projector, const QPoin
     for (int row : m_doc->selectedRows()) {
         const Light& l = rig.lights[size_t(row)];
         if (l.type != LightType::Spot) continue;
-        const auto rim = coneRim(lightAnchor(rig, frame, l), l.direction, l.cone.outer, spotGizmoLength(rig, frame, l));
+        const auto rim =
+            coneRim(lightAnchor(rig, frame, l), l.direction, l.cone.outer, spotGizmoLength(rig, frame, l));
         const double d = distanceToConeRim(projector, rim, screen);
         if (d <= bestDist) {
             best = row;
@@ -57,7 +62,8 @@ int GizmoInteraction::pickConeEdge(const ScreenProjector& projector, const QPoin
     return best;
 }
 
-bool GizmoInteraction::press(const ScreenProjector& projector, const QPointF& screen, Qt::KeyboardModifiers modifiers) {
+bool GizmoInteraction::press(const ScreenProjector& projector, const QPointF& screen,
+                             Qt::KeyboardModifiers modifiers) {
     reset();
     m_pressPos = screen;
     const int cone = pickConeEdge(projector, screen);
@@ -78,8 +84,10 @@ bool GizmoInteraction::press(const ScreenProjector& projector, const QPointF& sc
     const LightId id = m_doc->lightId(row);
     QSet<LightId> selection = m_doc->selection();
     if (modifiers & Qt::ControlModifier) {
-        if (selection.contains(id)) m_toggleOff = id;
-        else selection.insert(id);
+        if (selection.contains(id))
+            m_toggleOff = id;
+        else
+            selection.insert(id);
     } else if (!selection.contains(id)) {
         selection = {id};
     }
@@ -88,13 +96,15 @@ bool GizmoInteraction::press(const ScreenProjector& projector, const QPointF& sc
     const Rig& rig = m_doc->rig();
     const SceneFrame frame = m_scene->frame();
     m_startWorld.clear();
-    for (int r : m_rows) m_startWorld.push_back(lightAnchor(rig, frame, rig.lights[size_t(r)]));
+    for (int r : m_rows)
+        m_startWorld.push_back(lightAnchor(rig, frame, rig.lights[size_t(r)]));
     m_pickedAnchor = lightAnchor(rig, frame, rig.lights[size_t(row)]);
     m_drag = Drag::Move;
     return true;
 }
 
-void GizmoInteraction::move(const ScreenProjector& projector, const QPointF& screen, Qt::KeyboardModifiers modifiers) {
+void GizmoInteraction::move(const ScreenProjector& projector, const QPointF& screen,
+                            Qt::KeyboardModifiers modifiers) {
     if (m_drag == Drag::None) return;
     if (!m_started) {
         if (QLineF(m_pressPos, screen).length() < kDragThreshold) return;
@@ -106,8 +116,8 @@ void GizmoInteraction::move(const ScreenProjector& projector, const QPointF& scr
         const int row = m_rows.value(0, -1);
         if (row < 0 || row >= m_doc->lightCount()) return;
         const Light& l = m_doc->light(row);
-        const auto angle = coneAngleUnderCursor(projector, lightAnchor(m_doc->rig(), m_scene->frame(), l), l.direction,
-                                                screen, m_rimDistance);
+        const auto angle = coneAngleUnderCursor(projector, lightAnchor(m_doc->rig(), m_scene->frame(), l),
+                                                l.direction, screen, m_rimDistance);
         // A smooth cone's outer angle stays at or above its inner one (the document refuses less).
         const double lowest = l.cone.model == ConeModel::Smooth ? std::max(0.5, l.cone.inner) : 0.5;
         if (angle) m_doc->setLightValue({row}, LightProperty::ConeOuter, std::clamp(*angle, lowest, 90.0));
@@ -123,8 +133,9 @@ void GizmoInteraction::applyMove(const ScreenProjector& projector, const QPointF
     glm::dvec3 offset;
     if (alongView) {
         const double depth = std::max(projector.depth(m_pickedAnchor), 1e-6);
-        offset = dragAlongViewAxis(projector, m_pickedAnchor, m_pressPos, screen, projector.worldPerPixel(depth)) -
-                 m_pickedAnchor;
+        offset =
+            dragAlongViewAxis(projector, m_pickedAnchor, m_pressPos, screen, projector.worldPerPixel(depth)) -
+            m_pickedAnchor;
     } else {
         offset = dragInViewPlane(projector, m_pickedAnchor, m_pressPos, screen) - m_pickedAnchor;
     }
@@ -141,7 +152,8 @@ void GizmoInteraction::applyMove(const ScreenProjector& projector, const QPointF
             positionRows.append(row);
             positions.append(QVariant::fromValue(worldToRig(rig, frame, world)));
         } else {
-            // Directional and rim lights: moving the gizmo around the scene turns the light towards the centre.
+            // Directional and rim lights: moving the gizmo around the scene turns the light towards the
+            // centre.
             const glm::dvec3 d = frame.center - world;
             if (glm::length(d) > 1e-9 * std::max(1.0, frame.radius)) {
                 directionRows.append(row);
@@ -182,7 +194,8 @@ bool GizmoInteraction::cancel() {
     return true;
 }
 
-bool GizmoInteraction::aimSelectedAt(const ScreenProjector& projector, const QPointF& screen, QString* message) {
+bool GizmoInteraction::aimSelectedAt(const ScreenProjector& projector, const QPointF& screen,
+                                     QString* message) {
     QList<int> rows;
     for (int row : m_doc->selectedRows())
         if (m_doc->light(row).usesDirection()) rows.append(row);
@@ -192,7 +205,8 @@ bool GizmoInteraction::aimSelectedAt(const ScreenProjector& projector, const QPo
     }
     const auto hit = intersectModel(*m_scene->model(), projector.ray(screen));
     if (!hit) {
-        if (message) *message = QObject::tr("Shift+click a point on the model to aim the selected light at it.");
+        if (message)
+            *message = QObject::tr("Shift+click a point on the model to aim the selected light at it.");
         return false;
     }
     const Rig& rig = m_doc->rig();
@@ -214,4 +228,4 @@ bool GizmoInteraction::aimSelectedAt(const ScreenProjector& projector, const QPo
     return true;
 }
 
-}  // namespace lr
+} // namespace lr

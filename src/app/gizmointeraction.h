@@ -23,8 +23,8 @@ glm::dvec3 lightAnchor(const Rig& rig, const SceneFrame& frame, const Light& lig
 double spotGizmoLength(const Rig& rig, const SceneFrame& frame, const Light& light);
 
 class GizmoInteraction {
-public:
-    static constexpr double kPickPixels = 12.0;  // how near a click must be to a gizmo
+  public:
+    static constexpr double kPickPixels = 12.0; // how near a click must be to a gizmo
     static constexpr double kDragThreshold = 3.0;
 
     enum class Drag { None, Move, MoveAlongView, ConeOuter };
@@ -43,7 +43,7 @@ public:
     bool press(const ScreenProjector& projector, const QPointF& screen, Qt::KeyboardModifiers modifiers);
     // Mouse moved with the button held; `worldPerPixel` converts pixels to world units at the light's depth.
     void move(const ScreenProjector& projector, const QPointF& screen, Qt::KeyboardModifiers modifiers);
-    void release();  // the button was released: ends the drag (one undo step)
+    void release(); // the button was released: ends the drag (one undo step)
     // Ends the drag and takes back what it changed (Escape). Returns true when there was something to undo.
     bool cancel();
     bool isDragging() const { return m_drag != Drag::None; }
@@ -53,22 +53,22 @@ public:
     // Returns false (and *message) when nothing is hit or no selected light has a direction.
     bool aimSelectedAt(const ScreenProjector& projector, const QPointF& screen, QString* message);
 
-private:
+  private:
     void reset();
     void applyMove(const ScreenProjector& projector, const QPointF& screen, bool alongView);
 
     Document* m_doc;
     Scene* m_scene;
     Drag m_drag = Drag::None;
-    bool m_started = false;  // the mouse moved past kDragThreshold
+    bool m_started = false; // the mouse moved past kDragThreshold
     QPointF m_pressPos;
-    QList<int> m_rows;                   // lights being dragged
-    std::vector<glm::dvec3> m_startWorld;  // their anchors at the press (world)
+    QList<int> m_rows;                    // lights being dragged
+    std::vector<glm::dvec3> m_startWorld; // their anchors at the press (world)
     glm::dvec3 m_pickedAnchor{0.0};
-    double m_rimDistance = 0.0;  // cone drags
-    int m_startIndex = 0;        // undo index when the drag started moving
-    LightId m_toggleOff = 0;     // Ctrl+click on a selected light: deselect at the release if not dragged
+    double m_rimDistance = 0.0; // cone drags
+    int m_startIndex = 0;       // undo index when the drag started moving
+    LightId m_toggleOff = 0;    // Ctrl+click on a selected light: deselect at the release if not dragged
     std::unique_ptr<ContinuousEdit> m_edit;
 };
 
-}  // namespace lr
+} // namespace lr

@@ -3,16 +3,19 @@
 namespace lr {
 
 std::vector<Light> lightsInRigSpace(const Rig& worldLights, const Rig& target, const SceneFrame& frame) {
-    Rig worldRig;  // a world-space rig: its distanceScale is 1
+    Rig worldRig; // a world-space rig: its distanceScale is 1
     worldRig.space = RigSpace::World;
-    const double s = distanceScale(target, frame) / distanceScale(worldRig, frame);  // world units -> rig units
+    const double s =
+        distanceScale(target, frame) / distanceScale(worldRig, frame); // world units -> rig units
     std::vector<Light> out;
     out.reserve(worldLights.lights.size());
     for (Light l : worldLights.lights) {
-        if (l.usesPosition()) l.position = worldToRig(target, frame, rigToWorld(worldLights, frame, l.position));
+        if (l.usesPosition())
+            l.position = worldToRig(target, frame, rigToWorld(worldLights, frame, l.position));
         if (l.usesFalloff() && s != 1.0) {
             Falloff& f = l.falloff;
-            // The shader measures d in rig units (d_rig = s * d_world): keep a(d) the same function of d_world.
+            // The shader measures d in rig units (d_rig = s * d_world): keep a(d) the same function of
+            // d_world.
             if (f.hasRange()) f.range *= s;
             if (f.model == FalloffModel::InversePolynomial) {
                 f.linear /= s;
@@ -26,4 +29,4 @@ std::vector<Light> lightsInRigSpace(const Rig& worldLights, const Rig& target, c
     return out;
 }
 
-}  // namespace lr
+} // namespace lr

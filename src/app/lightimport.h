@@ -12,4 +12,4 @@ namespace lr {
 // `worldLights` in RigSpace::World; returns its lights expressed in `target`'s space.
 std::vector<Light> lightsInRigSpace(const Rig& worldLights, const Rig& target, const SceneFrame& frame);
 
-}  // namespace lr
+} // namespace lr

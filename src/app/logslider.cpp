@@ -49,7 +49,9 @@ void LogSliderEdit::setValue(double v) {
     m_syncing = false;
 }
 
-double LogSliderEdit::value() const { return m_spin->value(); }
+double LogSliderEdit::value() const {
+    return m_spin->value();
+}
 
 int LogSliderEdit::positionFor(double v) const {
     if (!(v > 0.0)) return 0;
@@ -69,4 +71,4 @@ double LogSliderEdit::valueAt(int position) const {
     return std::round(v / mag) * mag;
 }
 
-}  // namespace lr
+} // namespace lr

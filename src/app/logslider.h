@@ -12,12 +12,12 @@ class NumberEdit;
 
 class LogSliderEdit : public QWidget {
     Q_OBJECT
-public:
+  public:
     static constexpr int kSteps = 1000;
 
     explicit LogSliderEdit(QWidget* parent = nullptr);
-    void setLimits(double lowest, double max);  // lowest > 0: the smallest non-zero slider value
-    void setValue(double v);                     // no signal
+    void setLimits(double lowest, double max); // lowest > 0: the smallest non-zero slider value
+    void setValue(double v);                   // no signal
     double value() const;
     NumberEdit* spinBox() const { return m_spin; }
     QSlider* slider() const { return m_slider; }
@@ -25,15 +25,15 @@ public:
     int positionFor(double v) const;
     double valueAt(int position) const;
 
-signals:
-    void valueEdited(double value);  // every change while dragging or typing
-    void editFinished();             // slider released / spin box editing finished: end of one gesture
+  signals:
+    void valueEdited(double value); // every change while dragging or typing
+    void editFinished();            // slider released / spin box editing finished: end of one gesture
 
-private:
+  private:
     QSlider* m_slider;
     NumberEdit* m_spin;
     double m_lowest = 1e-3, m_max = 1e6;
     bool m_syncing = false;
 };
 
-}  // namespace lr
+} // namespace lr

@@ -27,9 +27,9 @@
 namespace lr {
 
 MainWindow::MainWindow(QWidget* parent)
-    : QMainWindow(parent), m_doc(new Document(this)), m_scene(new Scene(this)), m_viewSettings(new ViewSettings(this)),
-      m_recent(new RecentFiles(this)), m_presets(new PresetStore(QString(), this)),
-      m_files(new DocumentFiles(m_doc, m_scene, m_recent, this)),
+    : QMainWindow(parent), m_doc(new Document(this)), m_scene(new Scene(this)),
+      m_viewSettings(new ViewSettings(this)), m_recent(new RecentFiles(this)),
+      m_presets(new PresetStore(QString(), this)), m_files(new DocumentFiles(m_doc, m_scene, m_recent, this)),
       m_viewport(new Viewport(m_doc, m_scene, m_viewSettings, this)), m_status(new EditorStatusBar(this)) {
     setObjectName(QStringLiteral("MainWindow"));
     m_viewSettings->load();
@@ -48,7 +48,9 @@ MainWindow::MainWindow(QWidget* parent)
 
 MainWindow::~MainWindow() = default;
 
-QString MainWindow::bundledModelPath() { return QStringLiteral(":/resources/models/suzanne/Suzanne.gltf"); }
+QString MainWindow::bundledModelPath() {
+    return QStringLiteral(":/resources/models/suzanne/Suzanne.gltf");
+}
 
 void MainWindow::createDocks() {
     m_lightsDock = new LightsDock(m_doc, this);
@@ -78,9 +80,12 @@ void MainWindow::createDocks() {
 }
 
 void MainWindow::connectStatus() {
-    connect(m_files, &DocumentFiles::statusMessage, this, [this](const QString& t) { m_status->showMessage(t, 8000); });
-    connect(m_lightsDock, &LightsDock::editRefused, this, [this](const QString& t) { m_status->showMessage(t, 8000); });
-    connect(m_viewport, &Viewport::statusMessage, this, [this](const QString& t) { m_status->showMessage(t, 8000); });
+    connect(m_files, &DocumentFiles::statusMessage, this,
+            [this](const QString& t) { m_status->showMessage(t, 8000); });
+    connect(m_lightsDock, &LightsDock::editRefused, this,
+            [this](const QString& t) { m_status->showMessage(t, 8000); });
+    connect(m_viewport, &Viewport::statusMessage, this,
+            [this](const QString& t) { m_status->showMessage(t, 8000); });
     connect(m_viewport, &Viewport::frameRendered, m_status, &EditorStatusBar::setFrameTime);
     connect(m_files, &DocumentFiles::modelLoadStarted, this,
             [this](const QString& path) { m_status->showLoading(QFileInfo(path).fileName()); });
@@ -90,7 +95,8 @@ void MainWindow::connectStatus() {
     auto summary = [this] {
         const int n = m_doc->lightCount();
         int on = 0;
-        for (int i = 0; i < n; ++i) on += m_doc->light(i).enabled ? 1 : 0;
+        for (int i = 0; i < n; ++i)
+            on += m_doc->light(i).enabled ? 1 : 0;
         m_status->setRigSummary(tr("%n light(s), %1 on", nullptr, n).arg(on) +
                                 (m_doc->anySoloed() ? tr(" (solo)") : QString()));
     };
@@ -112,20 +118,24 @@ void MainWindow::openInitial(const EditorOptions& options) {
     if (model.isEmpty() && options.restoreSession) model = SessionSettings::lastModel();
     if (model.isEmpty()) model = bundledModelPath();
     QString rig = options.rigPath;
-    if (rig.isEmpty() && options.modelPath.isEmpty() && options.restoreSession) rig = SessionSettings::lastRig();
+    if (rig.isEmpty() && options.modelPath.isEmpty() && options.restoreSession)
+        rig = SessionSettings::lastRig();
     m_doc->newRig(defaultRig());
-    if (!rig.isEmpty()) m_files->openRig(rig);  // on failure the default rig stays and the error is shown
+    if (!rig.isEmpty()) m_files->openRig(rig); // on failure the default rig stays and the error is shown
     if (model != bundledModelPath()) {
         // A model that cannot be loaded leaves an empty scene: fall back to the bundled model then.
-        connect(m_files, &DocumentFiles::modelLoadFailed, this, [this] {
-            if (m_scene->isEmpty()) m_files->openModel(bundledModelPath());
-        }, Qt::SingleShotConnection);
+        connect(
+            m_files, &DocumentFiles::modelLoadFailed, this,
+            [this] {
+                if (m_scene->isEmpty()) m_files->openModel(bundledModelPath());
+            },
+            Qt::SingleShotConnection);
     }
     m_files->openModel(model);
 }
 
 void MainWindow::saveSession() {
-    if (!m_restoreSession) return;  // a scripted/defaults-only run leaves the user's session alone
+    if (!m_restoreSession) return; // a scripted/defaults-only run leaves the user's session alone
     SessionSettings::saveWindow(this);
     SessionSettings::setLastModel(m_scene->path() == bundledModelPath() ? QString() : m_scene->path());
     SessionSettings::setLastRig(m_doc->filePath());
@@ -165,4 +175,4 @@ void MainWindow::dropEvent(QDropEvent* event) {
     if (!models.isEmpty()) m_files->openFile(models.first());
 }
 
-}  // namespace lr
+} // namespace lr

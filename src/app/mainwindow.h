@@ -26,7 +26,7 @@ struct EditorOptions;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
-public:
+  public:
     explicit MainWindow(QWidget* parent = nullptr);
     ~MainWindow() override;
 
@@ -48,14 +48,14 @@ public:
     // Startup: the model and rig from the command line, else the last session's (when restoring), else the
     // bundled model lit by the default preset. Restores geometry and dock layout when options allow it.
     void openInitial(const EditorOptions& options);
-    static QString bundledModelPath();  // ":/resources/models/suzanne/Suzanne.gltf"
+    static QString bundledModelPath(); // ":/resources/models/suzanne/Suzanne.gltf"
 
-protected:
+  protected:
     void closeEvent(QCloseEvent* event) override;
     void dragEnterEvent(QDragEnterEvent* event) override;
     void dropEvent(QDropEvent* event) override;
 
-private:
+  private:
     void createDocks();
     void connectStatus();
     void updateTitle();
@@ -78,4 +78,4 @@ private:
     bool m_restoreSession = true;
 };
 
-}  // namespace lr
+} // namespace lr

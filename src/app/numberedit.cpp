@@ -7,7 +7,7 @@
 namespace lr {
 
 NumberEdit::NumberEdit(QWidget* parent) : QDoubleSpinBox(parent) {
-    setDecimals(323);  // no rounding of stored values; display is 'g' (textFromValue)
+    setDecimals(323); // no rounding of stored values; display is 'g' (textFromValue)
     setStepType(QAbstractSpinBox::AdaptiveDecimalStepType);
     setKeyboardTracking(false);
     setAccelerated(true);
@@ -99,4 +99,4 @@ double NumberEdit::valueFromText(const QString& text) const {
     return ok && std::isfinite(v) ? v : value();
 }
 
-}  // namespace lr
+} // namespace lr

@@ -9,13 +9,13 @@ namespace lr {
 
 class NumberEdit : public QDoubleSpinBox {
     Q_OBJECT
-public:
+  public:
     explicit NumberEdit(QWidget* parent = nullptr);
 
     // [min, max], or (min, max] when minExclusive. `what` names the value in reasons ("range").
     void setLimits(double min, double max, bool minExclusive = false);
     void setWhat(const QString& what) { m_what = what; }
-    void setValueQuietly(double v);  // no valueEdited
+    void setValueQuietly(double v); // no valueEdited
     // "must be a number > 0 and ≤ 1e+30" — the rule the reason texts state.
     QString rule() const;
     // Whether `v` is allowed (finite and in range).
@@ -25,12 +25,12 @@ public:
     QString textFromValue(double value) const override;
     double valueFromText(const QString& text) const override;
 
-signals:
-    void valueEdited(double value);  // the user changed the value (typing, arrows, wheel)
-    void rejected(const QString& reason);  // the user typed something not allowed; nothing was stored
-    void accepted();                       // input is valid again (clears a shown reason)
+  signals:
+    void valueEdited(double value);       // the user changed the value (typing, arrows, wheel)
+    void rejected(const QString& reason); // the user typed something not allowed; nothing was stored
+    void accepted();                      // input is valid again (clears a shown reason)
 
-private:
+  private:
     QString stripAffixes(const QString& text) const;
     bool m_minExclusive = false;
     double m_min = -1e30;
@@ -38,4 +38,4 @@ private:
     QString m_what;
 };
 
-}  // namespace lr
+} // namespace lr

@@ -5,8 +5,8 @@
 #include <QLineF>
 #include <cmath>
 #include <glm/geometric.hpp>
-#include <glm/trigonometric.hpp>
 #include <glm/gtc/matrix_inverse.hpp>
+#include <glm/trigonometric.hpp>
 #include <glm/vec4.hpp>
 #include <limits>
 
@@ -26,11 +26,12 @@ double pointSegmentDistance(const QPointF& p, const QPointF& a, const QPointF& b
     const double t = len2 > 0.0 ? std::clamp(QPointF::dotProduct(p - a, ab) / len2, 0.0, 1.0) : 0.0;
     return QLineF(p, a + t * ab).length();
 }
-}  // namespace
+} // namespace
 
 ScreenProjector::ScreenProjector(const glm::dmat4& view, const glm::dmat4& projection, const QSizeF& size)
     : m_view(view), m_proj(projection), m_inverseViewProj(glm::inverse(projection * view)),
-      m_inverseView(glm::inverse(view)), m_size(size.width() > 0 && size.height() > 0 ? size : QSizeF(1, 1)) {}
+      m_inverseView(glm::inverse(view)), m_size(size.width() > 0 && size.height() > 0 ? size : QSizeF(1, 1)) {
+}
 
 std::optional<QPointF> ScreenProjector::project(const glm::dvec3& world) const {
     const glm::dvec4 clip = m_proj * m_view * glm::dvec4(world, 1.0);
@@ -48,7 +49,8 @@ Ray ScreenProjector::ray(const QPointF& screen) const {
     glm::dvec3 dir = farP - nearP;
     const double len = glm::length(dir);
     dir = len > 0.0 && std::isfinite(len) ? dir / len : viewDirection();
-    // Perspective: from the eye, so points nearer than the near plane (a light close to the camera) are hit too.
+    // Perspective: from the eye, so points nearer than the near plane (a light close to the camera) are hit
+    // too.
     const bool orthographic = m_proj[3][3] == 1.0;
     return {orthographic ? nearP : eye(), dir};
 }
@@ -57,21 +59,27 @@ glm::dvec3 ScreenProjector::viewDirection() const {
     return glm::normalize(glm::dvec3(m_inverseView * glm::dvec4(0.0, 0.0, -1.0, 0.0)));
 }
 
-bool ScreenProjector::isOrthographic() const { return m_proj[3][3] == 1.0; }
+bool ScreenProjector::isOrthographic() const {
+    return m_proj[3][3] == 1.0;
+}
 
-glm::dvec3 ScreenProjector::eye() const { return glm::dvec3(m_inverseView[3]); }
+glm::dvec3 ScreenProjector::eye() const {
+    return glm::dvec3(m_inverseView[3]);
+}
 
-double ScreenProjector::depth(const glm::dvec3& world) const { return -(m_view * glm::dvec4(world, 1.0)).z; }
+double ScreenProjector::depth(const glm::dvec3& world) const {
+    return -(m_view * glm::dvec4(world, 1.0)).z;
+}
 
 double ScreenProjector::worldPerPixel(double depth) const {
-    const double fy = m_proj[1][1];  // 1 / tan(fov / 2) (perspective) or 2 / height (orthographic)
+    const double fy = m_proj[1][1]; // 1 / tan(fov / 2) (perspective) or 2 / height (orthographic)
     if (!(std::abs(fy) > 0.0)) return 0.0;
     const bool orthographic = m_proj[3][3] == 1.0;
     return (orthographic ? 2.0 : 2.0 * depth) / (std::abs(fy) * m_size.height());
 }
 
-int pickNearest(const ScreenProjector& projector, const std::vector<glm::dvec3>& anchors, const QPointF& screen,
-                double maxPixels) {
+int pickNearest(const ScreenProjector& projector, const std::vector<glm::dvec3>& anchors,
+                const QPointF& screen, double maxPixels) {
     int best = -1;
     double bestDist = kInf, bestDepth = kInf;
     for (size_t i = 0; i < anchors.size(); ++i) {
@@ -112,7 +120,7 @@ std::optional<glm::dvec3> intersectModel(const Model& model, const Ray& ray) {
             const glm::dvec3 e1 = b - a, e2 = c - a;
             const glm::dvec3 p = glm::cross(d, e2);
             const double det = glm::dot(e1, p);
-            if (std::abs(det) < 1e-18) continue;  // parallel or degenerate (double-sided: both signs)
+            if (std::abs(det) < 1e-18) continue; // parallel or degenerate (double-sided: both signs)
             const double inv = 1.0 / det;
             const glm::dvec3 s = o - a;
             const double u = glm::dot(s, p) * inv;
@@ -140,12 +148,13 @@ glm::dvec3 dragInViewPlane(const ScreenProjector& projector, const glm::dvec3& s
 
 glm::dvec3 dragAlongViewAxis(const ScreenProjector& projector, const glm::dvec3& start, const QPointF& from,
                              const QPointF& to, double unitsPerPixel) {
-    const double pixels = from.y() - to.y();  // up = away from the camera
+    const double pixels = from.y() - to.y(); // up = away from the camera
     // Along the line of sight through the point, so it stays under the cursor (perspective); the view
     // direction for orthographic views (the same thing there).
     const glm::dvec3 sight = start - projector.eye();
     const double len = glm::length(sight);
-    const glm::dvec3 dir = projector.isOrthographic() || !(len > 0.0) ? projector.viewDirection() : sight / len;
+    const glm::dvec3 dir =
+        projector.isOrthographic() || !(len > 0.0) ? projector.viewDirection() : sight / len;
     return start + dir * (pixels * unitsPerPixel);
 }
 
@@ -181,7 +190,8 @@ double distanceToConeRim(const ScreenProjector& projector, const std::vector<glm
 }
 
 std::optional<double> coneAngleUnderCursor(const ScreenProjector& projector, const glm::dvec3& apex,
-                                           const glm::dvec3& axis, const QPointF& screen, double rimDistance) {
+                                           const glm::dvec3& axis, const QPointF& screen,
+                                           double rimDistance) {
     const double axisLen = glm::length(axis);
     if (!(axisLen > 0.0)) return std::nullopt;
     const glm::dvec3 a = axis / axisLen;
@@ -207,4 +217,4 @@ std::optional<double> coneAngleUnderCursor(const ScreenProjector& projector, con
     return std::min(90.0, glm::degrees(std::acos(c)));
 }
 
-}  // namespace lr
+} // namespace lr

@@ -17,12 +17,12 @@ struct Model;
 
 struct Ray {
     glm::dvec3 origin{0.0};
-    glm::dvec3 direction{0.0, 0.0, -1.0};  // unit
+    glm::dvec3 direction{0.0, 0.0, -1.0}; // unit
     glm::dvec3 at(double t) const { return origin + t * direction; }
 };
 
 class ScreenProjector {
-public:
+  public:
     ScreenProjector() = default;
     ScreenProjector(const glm::dmat4& view, const glm::dmat4& projection, const QSizeF& size);
 
@@ -40,14 +40,14 @@ public:
     double worldPerPixel(double depth) const;
     const QSizeF& size() const { return m_size; }
 
-private:
+  private:
     glm::dmat4 m_view{1.0}, m_proj{1.0}, m_inverseViewProj{1.0}, m_inverseView{1.0};
     QSizeF m_size{1.0, 1.0};
 };
 
 // Index of the anchor nearest to `screen` within maxPixels (ties: nearer the camera), or -1.
-int pickNearest(const ScreenProjector& projector, const std::vector<glm::dvec3>& anchors, const QPointF& screen,
-                double maxPixels);
+int pickNearest(const ScreenProjector& projector, const std::vector<glm::dvec3>& anchors,
+                const QPointF& screen, double maxPixels);
 
 // Ray parameter of the intersection with a plane (point, normal), or nullopt when parallel/behind.
 std::optional<double> intersectPlane(const Ray& ray, const glm::dvec3& point, const glm::dvec3& normal);
@@ -68,7 +68,8 @@ glm::dvec3 dragAlongViewAxis(const ScreenProjector& projector, const glm::dvec3&
 std::vector<glm::dvec3> coneRim(const glm::dvec3& apex, const glm::dvec3& axis, double outerDegrees,
                                 double length, int segments = 32);
 // Distance in pixels from `screen` to the projected rim polygon (infinity when none is visible).
-double distanceToConeRim(const ScreenProjector& projector, const std::vector<glm::dvec3>& rim, const QPointF& screen);
+double distanceToConeRim(const ScreenProjector& projector, const std::vector<glm::dvec3>& rim,
+                         const QPointF& screen);
 // The half-angle (degrees, 0..90) of the cone whose edge passes under the mouse. Seen from the side, the
 // cursor ray meets the plane through the axis that faces the camera best and the angle is between the axis
 // and apex→hit; seen along the axis (|axis·view| > 0.5), the ray meets the disc perpendicular to the axis at
@@ -76,4 +77,4 @@ double distanceToConeRim(const ScreenProjector& projector, const std::vector<glm
 std::optional<double> coneAngleUnderCursor(const ScreenProjector& projector, const glm::dvec3& apex,
                                            const glm::dvec3& axis, const QPointF& screen, double rimDistance);
 
-}  // namespace lr
+} // namespace lr

@@ -17,7 +17,7 @@
 namespace lr {
 
 namespace {
-constexpr int kEntryRole = Qt::UserRole + 1;  // index into the store's list when the dock was filled
+constexpr int kEntryRole = Qt::UserRole + 1; // index into the store's list when the dock was filled
 
 QIcon placeholderIcon(const QString& name) {
     QPixmap pm(PresetsDock::kThumbnailSize, PresetsDock::kThumbnailSize);
@@ -27,7 +27,7 @@ QIcon placeholderIcon(const QString& name) {
     p.drawText(pm.rect().adjusted(4, 4, -4, -4), Qt::AlignCenter | Qt::TextWordWrap, name);
     return QIcon(pm);
 }
-}  // namespace
+} // namespace
 
 PresetsDock::PresetsDock(Document* document, PresetStore* store, QWidget* parent)
     : QDockWidget(tr("Presets"), parent), m_doc(document), m_store(store), m_list(new QListWidget) {
@@ -67,9 +67,8 @@ PresetsDock::PresetsDock(Document* document, PresetStore* store, QWidget* parent
     });
     connect(save, &QToolButton::clicked, this, qOverload<>(&PresetsDock::saveAsPreset));
     connect(m_delete, &QToolButton::clicked, this, &PresetsDock::deleteSelected);
-    connect(m_list, &QListWidget::currentItemChanged, this, [this](QListWidgetItem* item) {
-        m_delete->setEnabled(item && !entryOf(item).builtin);
-    });
+    connect(m_list, &QListWidget::currentItemChanged, this,
+            [this](QListWidgetItem* item) { m_delete->setEnabled(item && !entryOf(item).builtin); });
     connect(m_store, &PresetStore::changed, this, &PresetsDock::reload);
     reload();
 }
@@ -101,8 +100,8 @@ void PresetsDock::renderNextThumbnail() {
         const QImage image =
             r.ok() ? m_renderThumbnail(*r.rig, QSize(kThumbnailSize, kThumbnailSize) * 2) : QImage();
         if (!image.isNull()) {
-            const QIcon icon(QPixmap::fromImage(image.scaled(kThumbnailSize, kThumbnailSize, Qt::KeepAspectRatio,
-                                                             Qt::SmoothTransformation)));
+            const QIcon icon(QPixmap::fromImage(
+                image.scaled(kThumbnailSize, kThumbnailSize, Qt::KeepAspectRatio, Qt::SmoothTransformation)));
             m_rendered.insert(path, icon);
             item->setIcon(icon);
         }
@@ -115,9 +114,9 @@ void PresetsDock::reload() {
     m_list->clear();
     m_pending.clear();
     for (const PresetEntry& e : m_store->presets()) {
-        QIcon icon = !e.thumbnail.isEmpty()           ? QIcon(e.thumbnail)
-                     : m_rendered.contains(e.path)    ? m_rendered.value(e.path)
-                                                      : placeholderIcon(e.name);
+        QIcon icon = !e.thumbnail.isEmpty()        ? QIcon(e.thumbnail)
+                     : m_rendered.contains(e.path) ? m_rendered.value(e.path)
+                                                   : placeholderIcon(e.name);
         if (e.thumbnail.isEmpty() && !m_rendered.contains(e.path)) m_pending.append(e.path);
         auto* item = new QListWidgetItem(icon, e.name, m_list);
         item->setData(kEntryRole, QVariantList{e.name, e.path, e.thumbnail, e.builtin});
@@ -143,8 +142,8 @@ bool PresetsDock::applyPreset(const PresetEntry& entry) {
 void PresetsDock::saveAsPreset() {
     bool ok = false;
     const QString suggestion = m_doc->rig().name.isEmpty() ? tr("My rig") : m_doc->rig().name;
-    const QString name =
-        QInputDialog::getText(this, tr("Save rig as preset"), tr("Preset name:"), QLineEdit::Normal, suggestion, &ok);
+    const QString name = QInputDialog::getText(this, tr("Save rig as preset"), tr("Preset name:"),
+                                               QLineEdit::Normal, suggestion, &ok);
     if (ok && !name.trimmed().isEmpty()) saveAsPreset(name);
 }
 
@@ -152,11 +151,13 @@ bool PresetsDock::saveAsPreset(const QString& name) {
     for (const PresetEntry& e : m_store->presets()) {
         if (!e.builtin && e.name == PresetStore::fileBaseName(name) &&
             QMessageBox::question(this, tr("Save rig as preset"),
-                                  tr("A preset called %1 exists. Replace it?").arg(e.name)) != QMessageBox::Yes)
+                                  tr("A preset called %1 exists. Replace it?").arg(e.name)) !=
+                QMessageBox::Yes)
             return false;
     }
-    const QImage thumbnail =
-        m_renderThumbnail ? m_renderThumbnail(m_doc->rig(), QSize(kThumbnailSize, kThumbnailSize) * 2) : QImage();
+    const QImage thumbnail = m_renderThumbnail
+                                 ? m_renderThumbnail(m_doc->rig(), QSize(kThumbnailSize, kThumbnailSize) * 2)
+                                 : QImage();
     const QString error = m_store->save(name, m_doc->rig(), thumbnail);
     if (!error.isEmpty()) {
         showError(this, {tr("Save rig as preset"), tr("Could not save the preset %1.").arg(name), {error}});
@@ -169,7 +170,8 @@ void PresetsDock::deleteSelected() {
     QListWidgetItem* item = m_list->currentItem();
     if (!item) return;
     const PresetEntry e = entryOf(item);
-    if (QMessageBox::question(this, tr("Delete preset"), tr("Delete the preset %1?").arg(e.name)) != QMessageBox::Yes)
+    if (QMessageBox::question(this, tr("Delete preset"), tr("Delete the preset %1?").arg(e.name)) !=
+        QMessageBox::Yes)
         return;
     const QString error = m_store->remove(e);
     if (!error.isEmpty()) showError(this, {tr("Delete preset"), error, {}});
@@ -195,4 +197,4 @@ void PresetsDock::rebuildMenu(QMenu* menu) {
             qOverload<>(&PresetsDock::saveAsPreset));
 }
 
-}  // namespace lr
+} // namespace lr

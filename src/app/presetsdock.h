@@ -21,7 +21,7 @@ class Document;
 
 class PresetsDock : public QDockWidget {
     Q_OBJECT
-public:
+  public:
     // Renders a rig on the current model for a thumbnail (null image when it cannot).
     using ThumbnailRenderer = std::function<QImage(const Rig& rig, const QSize& size)>;
     static constexpr int kThumbnailSize = 96;
@@ -33,16 +33,16 @@ public:
     void attachMenu(QMenu* menu);
     QListWidget* list() const { return m_list; }
 
-public slots:
-    bool applyPreset(const lr::PresetEntry& entry);  // false (and an error shown) when it cannot be read
-    void saveAsPreset();                              // asks for a name
-    bool saveAsPreset(const QString& name);           // no dialog (tests); asks before overwriting
+  public slots:
+    bool applyPreset(const lr::PresetEntry& entry); // false (and an error shown) when it cannot be read
+    void saveAsPreset();                            // asks for a name
+    bool saveAsPreset(const QString& name);         // no dialog (tests); asks before overwriting
     void reload();
     // The model changed: rendered thumbnails (not the saved ones) are redone on it.
     void invalidateThumbnails();
     bool thumbnailsPending() const { return !m_pending.isEmpty(); }
 
-private:
+  private:
     void deleteSelected();
     void renderNextThumbnail();
     void rebuildMenu(QMenu* menu);
@@ -53,9 +53,9 @@ private:
     QListWidget* m_list;
     QToolButton* m_delete = nullptr;
     ThumbnailRenderer m_renderThumbnail;
-    QHash<QString, QIcon> m_rendered;  // preset path -> thumbnail rendered on the current model
-    QStringList m_pending;             // preset paths still to render
-    QTimer m_thumbnailTimer;           // one thumbnail per event-loop pass
+    QHash<QString, QIcon> m_rendered; // preset path -> thumbnail rendered on the current model
+    QStringList m_pending;            // preset paths still to render
+    QTimer m_thumbnailTimer;          // one thumbnail per event-loop pass
 };
 
-}  // namespace lr
+} // namespace lr

@@ -9,18 +9,21 @@ namespace lr {
 
 PresetStore::PresetStore(const QString& userDir, QObject* parent)
     : QObject(parent),
-      m_userDir(userDir.isEmpty()
-                    ? QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + QStringLiteral("/presets")
-                    : userDir) {}
+      m_userDir(userDir.isEmpty() ? QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) +
+                                        QStringLiteral("/presets")
+                                  : userDir) {}
 
 QList<PresetEntry> PresetStore::presets() const {
     QList<PresetEntry> out;
-    for (const QString& name : builtinPresetNames()) out.append({name, builtinPresetPath(name), QString(), true});
+    for (const QString& name : builtinPresetNames())
+        out.append({name, builtinPresetPath(name), QString(), true});
     const QDir dir(m_userDir);
-    const QFileInfoList files = dir.entryInfoList({QStringLiteral("*.json")}, QDir::Files, QDir::Name | QDir::IgnoreCase);
+    const QFileInfoList files =
+        dir.entryInfoList({QStringLiteral("*.json")}, QDir::Files, QDir::Name | QDir::IgnoreCase);
     for (const QFileInfo& f : files) {
         const QString png = dir.filePath(f.completeBaseName() + QStringLiteral(".png"));
-        out.append({f.completeBaseName(), f.absoluteFilePath(), QFileInfo::exists(png) ? png : QString(), false});
+        out.append(
+            {f.completeBaseName(), f.absoluteFilePath(), QFileInfo::exists(png) ? png : QString(), false});
     }
     return out;
 }
@@ -62,4 +65,4 @@ QString PresetStore::remove(const PresetEntry& entry) {
     return {};
 }
 
-}  // namespace lr
+} // namespace lr

@@ -23,7 +23,8 @@ using P = LightProperty;
 
 template <typename E> QComboBox* enumCombo(QWidget* parent) {
     auto* combo = new QComboBox(parent);
-    for (int i = 0; i < enumCount<E>(); ++i) combo->addItem(toString(E(i)));
+    for (int i = 0; i < enumCount<E>(); ++i)
+        combo->addItem(toString(E(i)));
     return combo;
 }
 
@@ -31,7 +32,8 @@ QWidget* hbox(QWidget* parent, std::initializer_list<QWidget*> widgets) {
     auto* w = new QWidget(parent);
     auto* l = new QHBoxLayout(w);
     l->setContentsMargins(0, 0, 0, 0);
-    for (QWidget* child : widgets) l->addWidget(child, child->inherits("QCheckBox") ? 0 : 1);
+    for (QWidget* child : widgets)
+        l->addWidget(child, child->inherits("QCheckBox") ? 0 : 1);
     return w;
 }
 
@@ -44,7 +46,7 @@ void setCheck(QCheckBox* box, bool on) {
     const QSignalBlocker block(box);
     box->setChecked(on);
 }
-}  // namespace
+} // namespace
 
 PropertiesDock::PropertiesDock(Document* document, QWidget* parent)
     : QDockWidget(tr("Properties"), parent), m_doc(document) {
@@ -62,9 +64,13 @@ PropertiesDock::PropertiesDock(Document* document, QWidget* parent)
     refresh();
 }
 
-PropertiesDock::~PropertiesDock() { finishGesture(); }
+PropertiesDock::~PropertiesDock() {
+    finishGesture();
+}
 
-QString PropertiesDock::message() const { return m_message->text(); }
+QString PropertiesDock::message() const {
+    return m_message->text();
+}
 
 void PropertiesDock::addRow(LightProperty property, const QString& label, QWidget* field) {
     field->setObjectName(propertyFieldName(property));
@@ -117,7 +123,8 @@ void PropertiesDock::build() {
 
     m_type = enumCombo<LightType>(m_panel);
     addRow(P::Type, tr("&Type"), m_type);
-    connect(m_type, &QComboBox::activated, this, [this](int i) { apply(P::Type, toString(LightType(i)), false); });
+    connect(m_type, &QComboBox::activated, this,
+            [this](int i) { apply(P::Type, toString(LightType(i)), false); });
 
     m_enabled = new QCheckBox(tr("On"), m_panel);
     addRow(P::Enabled, tr("&Enabled"), m_enabled);
@@ -142,7 +149,8 @@ void PropertiesDock::build() {
     connect(m_temperatureOn, &QCheckBox::clicked, this, [this](bool on) {
         apply(P::Temperature, on ? QVariant(m_temperature->value()) : QVariant(), false);
     });
-    connect(m_temperature, &NumberEdit::valueEdited, this, [this](double v) { apply(P::Temperature, v, true); });
+    connect(m_temperature, &NumberEdit::valueEdited, this,
+            [this](double v) { apply(P::Temperature, v, true); });
     connect(m_temperature, &QAbstractSpinBox::editingFinished, this, &PropertiesDock::finishGesture);
     connect(m_temperature, &NumberEdit::rejected, this, &PropertiesDock::showMessage);
 
@@ -150,7 +158,8 @@ void PropertiesDock::build() {
     m_intensity->setLimits(1e-3, kMaxIntensity);
     m_intensity->spinBox()->setWhat(lightPropertyName(P::Intensity));
     addRow(P::Intensity, tr("&Intensity"), m_intensity);
-    connect(m_intensity, &LogSliderEdit::valueEdited, this, [this](double v) { apply(P::Intensity, v, true); });
+    connect(m_intensity, &LogSliderEdit::valueEdited, this,
+            [this](double v) { apply(P::Intensity, v, true); });
     connect(m_intensity, &LogSliderEdit::editFinished, this, &PropertiesDock::finishGesture);
     connect(m_intensity->spinBox(), &NumberEdit::rejected, this, &PropertiesDock::showMessage);
 
@@ -180,9 +189,8 @@ void PropertiesDock::build() {
     m_range->setWhat(lightPropertyName(P::FalloffRange));
     m_range->setValueQuietly(10.0);
     addRow(P::FalloffRange, tr("&Range"), hbox(m_panel, {m_rangeOn, m_range}));
-    connect(m_rangeOn, &QCheckBox::clicked, this, [this](bool on) {
-        apply(P::FalloffRange, on ? QVariant(m_range->value()) : QVariant(), false);
-    });
+    connect(m_rangeOn, &QCheckBox::clicked, this,
+            [this](bool on) { apply(P::FalloffRange, on ? QVariant(m_range->value()) : QVariant(), false); });
     connect(m_range, &NumberEdit::valueEdited, this, [this](double v) { apply(P::FalloffRange, v, true); });
     connect(m_range, &QAbstractSpinBox::editingFinished, this, &PropertiesDock::finishGesture);
     connect(m_range, &NumberEdit::rejected, this, &PropertiesDock::showMessage);
@@ -194,7 +202,8 @@ void PropertiesDock::build() {
 
     m_cone = enumCombo<ConeModel>(m_panel);
     addRow(P::ConeModel, tr("C&one"), m_cone);
-    connect(m_cone, &QComboBox::activated, this, [this](int i) { apply(P::ConeModel, toString(ConeModel(i)), false); });
+    connect(m_cone, &QComboBox::activated, this,
+            [this](int i) { apply(P::ConeModel, toString(ConeModel(i)), false); });
     addNumber(P::ConeInner, tr("Inner an&gle"), 0.0, 90.0, true, QStringLiteral("°"));
     addNumber(P::ConeOuter, tr("O&uter angle"), 0.0, 90.0, true, QStringLiteral("°"));
     addNumber(P::ConeExponent, tr("Cone exponen&t"), 0.0, kMaxExponent, true);
@@ -212,10 +221,12 @@ void PropertiesDock::build() {
     m_specularColor = new ColorButton(m_panel);
     addRow(P::Specular, tr("&Specular"), hbox(m_panel, {m_specularKind, m_specularFactor, m_specularColor}));
     connect(m_specularKind, &QComboBox::activated, this, [this](int kind) {
-        apply(P::Specular, kind == 0 ? QVariant(m_specularFactor->value()) : QVariant::fromValue(m_specularColor->color()),
+        apply(P::Specular,
+              kind == 0 ? QVariant(m_specularFactor->value()) : QVariant::fromValue(m_specularColor->color()),
               false);
     });
-    connect(m_specularFactor, &NumberEdit::valueEdited, this, [this](double v) { apply(P::Specular, v, true); });
+    connect(m_specularFactor, &NumberEdit::valueEdited, this,
+            [this](double v) { apply(P::Specular, v, true); });
     connect(m_specularFactor, &QAbstractSpinBox::editingFinished, this, &PropertiesDock::finishGesture);
     connect(m_specularFactor, &NumberEdit::rejected, this, &PropertiesDock::showMessage);
     connect(m_specularColor, &ColorButton::colorPicked, this,
@@ -249,7 +260,7 @@ void PropertiesDock::apply(LightProperty property, const QVariant& value, bool c
         showMessage(QString());
     } else {
         showMessage(error);
-        refresh();  // show the stored values again: the refused one was never applied
+        refresh(); // show the stored values again: the refused one was never applied
     }
     if (!continuous) finishGesture();
 }
@@ -283,15 +294,19 @@ void PropertiesDock::finishGesture() {
     if (m_editToken) m_doc->endContinuousEdit(*std::exchange(m_editToken, std::nullopt));
 }
 
-void PropertiesDock::showMessage(const QString& text) { m_message->setText(text); }
+void PropertiesDock::showMessage(const QString& text) {
+    m_message->setText(text);
+}
 
 void PropertiesDock::refresh() {
     const QList<int> rows = m_doc->selectedRows();
     int current = m_doc->currentRow();
     if (current < 0 && !rows.isEmpty()) current = rows.first();
     if (rows.isEmpty() || current < 0) {
-        m_header->setText(m_doc->lightCount() ? tr("Select a light to edit it.") : tr("Add a light to edit it."));
-        for (QWidget* f : std::as_const(m_fields)) m_form->setRowVisible(f, false);
+        m_header->setText(m_doc->lightCount() ? tr("Select a light to edit it.")
+                                              : tr("Add a light to edit it."));
+        for (QWidget* f : std::as_const(m_fields))
+            m_form->setRowVisible(f, false);
         return;
     }
     const Light& light = m_doc->light(current);
@@ -304,7 +319,8 @@ void PropertiesDock::refresh() {
     loadValues(light);
     m_name->setEnabled(rows.size() == 1);
     bool mixedColor = false;
-    for (int row : rows) mixedColor = mixedColor || m_doc->light(row).color != light.color;
+    for (int row : rows)
+        mixedColor = mixedColor || m_doc->light(row).color != light.color;
     if (mixedColor) m_color->setMixed(true);
 }
 
@@ -334,7 +350,8 @@ void PropertiesDock::loadValues(const Light& light) {
     m_direction->setValue(light.direction);
     const Falloff& f = light.falloff;
     setCombo(m_falloff, int(f.model));
-    const bool rangeOptional = f.model == FalloffModel::InversePolynomial || f.model == FalloffModel::InverseSquare;
+    const bool rangeOptional =
+        f.model == FalloffModel::InversePolynomial || f.model == FalloffModel::InverseSquare;
     m_rangeOn->setVisible(rangeOptional);
     setCheck(m_rangeOn, f.hasRange());
     if (f.hasRange()) m_range->setValueQuietly(f.range);
@@ -351,8 +368,10 @@ void PropertiesDock::loadValues(const Light& light) {
     setCombo(m_specularKind, light.specularIsColor ? 1 : 0);
     m_specularFactor->setVisible(!light.specularIsColor);
     m_specularColor->setVisible(light.specularIsColor);
-    if (light.specularIsColor) m_specularColor->setColor(light.specular);
-    else m_specularFactor->setValueQuietly(light.specular.x);
+    if (light.specularIsColor)
+        m_specularColor->setColor(light.specular);
+    else
+        m_specularFactor->setValueQuietly(light.specular.x);
     if (!light.specularIsColor) m_specularColor->setColor(light.specular);
     setCheck(m_ambientOn, light.ambient.has_value());
     m_ambient->setColor(light.ambient.value_or(glm::dvec3(0.05)));
@@ -360,4 +379,4 @@ void PropertiesDock::loadValues(const Light& light) {
     m_numbers[P::RimExponent]->setValueQuietly(light.rimExponent);
 }
 
-}  // namespace lr
+} // namespace lr

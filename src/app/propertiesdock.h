@@ -27,22 +27,22 @@ class Vec3Edit;
 
 class PropertiesDock : public QDockWidget {
     Q_OBJECT
-public:
+  public:
     explicit PropertiesDock(Document* document, QWidget* parent = nullptr);
     ~PropertiesDock() override;
 
     // The row widget of a property (its objectName is propertyFieldName()); visible iff the row is shown.
     QWidget* field(LightProperty property) const { return m_fields.value(property); }
-    QString message() const;  // the last refusal reason ("" when none)
+    QString message() const; // the last refusal reason ("" when none)
 
-public slots:
-    void refresh();  // re-reads the document (called on rig and selection changes)
+  public slots:
+    void refresh(); // re-reads the document (called on rig and selection changes)
 
-private:
+  private:
     void build();
     void addRow(LightProperty property, const QString& label, QWidget* field);
-    NumberEdit* addNumber(LightProperty property, const QString& label, double min, double max, bool minExclusive,
-                          const QString& suffix = QString());
+    NumberEdit* addNumber(LightProperty property, const QString& label, double min, double max,
+                          bool minExclusive, const QString& suffix = QString());
     // Push one value for every selected light. continuous: part of a gesture that merges into one step.
     void apply(LightProperty property, const QVariant& value, bool continuous);
     void applyComponent(LightProperty property, int axis, double value);
@@ -67,7 +67,7 @@ private:
     LogSliderEdit* m_intensity = nullptr;
     Vec3Edit *m_position = nullptr, *m_direction = nullptr;
     std::optional<int> m_editToken;
-    QTimer m_idle;  // ends a merging gesture after a pause even if the field never lost focus
+    QTimer m_idle; // ends a merging gesture after a pause even if the field never lost focus
 };
 
-}  // namespace lr
+} // namespace lr

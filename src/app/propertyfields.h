@@ -16,4 +16,4 @@ QString propertyFieldName(LightProperty property);
 // Whether the dock shows `property` for this light.
 bool propertyShown(const Light& light, LightProperty property);
 
-}  // namespace lr
+} // namespace lr

@@ -14,14 +14,16 @@ const QString kKey = QStringLiteral("recentFiles");
 
 RecentFiles::RecentFiles(QObject* parent) : QObject(parent) {
     m_files = QSettings().value(kKey).toStringList();
-    while (m_files.size() > kMaxEntries) m_files.removeLast();
+    while (m_files.size() > kMaxEntries)
+        m_files.removeLast();
 }
 
 void RecentFiles::add(const QString& path) {
     const QString abs = QFileInfo(path).absoluteFilePath();
     m_files.removeAll(abs);
     m_files.prepend(abs);
-    while (m_files.size() > kMaxEntries) m_files.removeLast();
+    while (m_files.size() > kMaxEntries)
+        m_files.removeLast();
     store();
 }
 
@@ -62,4 +64,4 @@ void RecentFiles::rebuild(QMenu* menu) {
     menu->setEnabled(true);
 }
 
-}  // namespace lr
+} // namespace lr

@@ -10,25 +10,25 @@ namespace lr {
 
 class RecentFiles : public QObject {
     Q_OBJECT
-public:
+  public:
     static constexpr int kMaxEntries = 10;
 
     explicit RecentFiles(QObject* parent = nullptr);
     QStringList files() const { return m_files; }
-    void add(const QString& path);  // moves it to the front
+    void add(const QString& path); // moves it to the front
     void remove(const QString& path);
     void clear();
     // Keeps `menu` listing the files (numbered, with a "Clear" entry); triggers openRequested.
     void attachMenu(QMenu* menu);
 
-signals:
+  signals:
     void changed();
     void openRequested(const QString& path);
 
-private:
+  private:
     void store();
     void rebuild(QMenu* menu);
     QStringList m_files;
 };
 
-}  // namespace lr
+} // namespace lr

@@ -15,7 +15,8 @@ namespace lr {
 
 namespace {
 template <typename E> void fillCombo(QComboBox* combo) {
-    for (int i = 0; i < enumCount<E>(); ++i) combo->addItem(toString(E(i)));
+    for (int i = 0; i < enumCount<E>(); ++i)
+        combo->addItem(toString(E(i)));
 }
 
 QIcon swatch(const QColor& c) {
@@ -26,7 +27,7 @@ QIcon swatch(const QColor& c) {
     p.drawRect(pm.rect().adjusted(0, 0, -1, -1));
     return QIcon(pm);
 }
-}  // namespace
+} // namespace
 
 RenderSettingsDock::RenderSettingsDock(Document* document, ViewSettings* settings, QWidget* parent)
     : QDockWidget(tr("Render settings"), parent), m_ui(std::make_unique<Ui::RenderSettingsForm>()),
@@ -46,12 +47,15 @@ RenderSettingsDock::RenderSettingsDock(Document* document, ViewSettings* setting
     connect(m_ui->exposure, &QDoubleSpinBox::valueChanged, m_settings, &ViewSettings::setExposure);
     connect(m_ui->exposureSlider, &QSlider::valueChanged, this,
             [this](int v) { m_settings->setExposure(v / 10.0); });
-    connect(m_ui->toneMap, &QComboBox::activated, this, [this](int i) { m_settings->setToneMap(ToneMap(i)); });
-    connect(m_ui->quality, &QComboBox::activated, this, [this](int i) { m_settings->setQuality(Quality(i)); });
+    connect(m_ui->toneMap, &QComboBox::activated, this,
+            [this](int i) { m_settings->setToneMap(ToneMap(i)); });
+    connect(m_ui->quality, &QComboBox::activated, this,
+            [this](int i) { m_settings->setQuality(Quality(i)); });
     connect(m_ui->grid, &QCheckBox::toggled, m_settings, &ViewSettings::setGrid);
     connect(m_ui->gizmos, &QCheckBox::toggled, m_settings, &ViewSettings::setGizmos);
     connect(m_ui->background, &QToolButton::clicked, this, [this] {
-        const QColor c = QColorDialog::getColor(m_settings->options().background, this, tr("Background colour"));
+        const QColor c =
+            QColorDialog::getColor(m_settings->options().background, this, tr("Background colour"));
         if (c.isValid()) m_settings->setBackground(c);
     });
     connect(m_settings, &ViewSettings::changed, this, &RenderSettingsDock::loadView);
@@ -60,9 +64,8 @@ RenderSettingsDock::RenderSettingsDock(Document* document, ViewSettings* setting
     connect(m_ui->specularModel, &QComboBox::activated, this, [this](int i) {
         setRigValue(int(RigProperty::SpecularModel), toString(SpecularModel(i)), false);
     });
-    connect(m_ui->viewerModel, &QComboBox::activated, this, [this](int i) {
-        setRigValue(int(RigProperty::ViewerModel), toString(ViewerModel(i)), false);
-    });
+    connect(m_ui->viewerModel, &QComboBox::activated, this,
+            [this](int i) { setRigValue(int(RigProperty::ViewerModel), toString(ViewerModel(i)), false); });
     connect(m_ui->shininess, &NumberEdit::valueEdited, this,
             [this](double v) { setRigValue(int(RigProperty::Shininess), v, true); });
     connect(m_ui->shininess, &QAbstractSpinBox::editingFinished, this, &RenderSettingsDock::finishGesture);
@@ -77,7 +80,9 @@ RenderSettingsDock::RenderSettingsDock(Document* document, ViewSettings* setting
     loadRig();
 }
 
-RenderSettingsDock::~RenderSettingsDock() { finishGesture(); }
+RenderSettingsDock::~RenderSettingsDock() {
+    finishGesture();
+}
 
 void RenderSettingsDock::loadView() {
     const ViewOptions& o = m_settings->options();
@@ -116,4 +121,4 @@ void RenderSettingsDock::finishGesture() {
     if (m_editToken) m_doc->endContinuousEdit(*std::exchange(m_editToken, std::nullopt));
 }
 
-}  // namespace lr
+} // namespace lr

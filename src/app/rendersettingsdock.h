@@ -18,13 +18,13 @@ class ViewSettings;
 
 class RenderSettingsDock : public QDockWidget {
     Q_OBJECT
-public:
+  public:
     RenderSettingsDock(Document* document, ViewSettings* settings, QWidget* parent = nullptr);
     ~RenderSettingsDock() override;
 
     Ui::RenderSettingsForm* form() const { return m_ui.get(); }
 
-private:
+  private:
     void loadView();
     void loadRig();
     void setRigValue(int property, const QVariant& value, bool continuous);
@@ -36,4 +36,4 @@ private:
     std::optional<int> m_editToken;
 };
 
-}  // namespace lr
+} // namespace lr

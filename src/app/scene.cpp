@@ -15,4 +15,4 @@ void Scene::setModel(std::shared_ptr<const Model> model, const QString& path) {
     emit modelChanged();
 }
 
-}  // namespace lr
+} // namespace lr

@@ -12,22 +12,22 @@ namespace lr {
 
 class Scene : public QObject {
     Q_OBJECT
-public:
+  public:
     explicit Scene(QObject* parent = nullptr);
 
     const std::shared_ptr<const Model>& model() const { return m_model; }
-    QString path() const { return m_path; }  // empty until a model is loaded
+    QString path() const { return m_path; } // empty until a model is loaded
     bool isEmpty() const { return m_model->meshes.empty(); }
     // Where a rig in model space is anchored (bounding sphere of the model; unit sphere when empty).
     SceneFrame frame() const;
     void setModel(std::shared_ptr<const Model> model, const QString& path);
 
-signals:
+  signals:
     void modelChanged();
 
-private:
+  private:
     std::shared_ptr<const Model> m_model;
     QString m_path;
 };
 
-}  // namespace lr
+} // namespace lr

@@ -27,8 +27,10 @@ ScreenshotDialog::ScreenshotDialog(const QSize& viewportSize, const QString& sug
     connect(m_ui->format, &QComboBox::currentIndexChanged, this, &ScreenshotDialog::syncFormat);
     connect(m_ui->path, &QLineEdit::textEdited, this, [this](const QString& p) {
         const QString suffix = QFileInfo(p).suffix().toLower();
-        if (suffix == QLatin1String("jpg") || suffix == QLatin1String("jpeg")) m_ui->format->setCurrentIndex(1);
-        else if (suffix == QLatin1String("png")) m_ui->format->setCurrentIndex(0);
+        if (suffix == QLatin1String("jpg") || suffix == QLatin1String("jpeg"))
+            m_ui->format->setCurrentIndex(1);
+        else if (suffix == QLatin1String("png"))
+            m_ui->format->setCurrentIndex(0);
     });
     connect(m_ui->browse, &QToolButton::clicked, this, &ScreenshotDialog::browse);
     connect(m_ui->viewportSize, &QToolButton::clicked, this, [this] {
@@ -110,4 +112,4 @@ void ScreenshotDialog::accept() {
     QDialog::accept();
 }
 
-}  // namespace lr
+} // namespace lr

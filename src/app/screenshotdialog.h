@@ -15,15 +15,15 @@ namespace lr {
 struct ScreenshotOptions {
     QString path;
     QSize size{1920, 1080};
-    int supersample = 2;  // 1..4
+    int supersample = 2; // 1..4
     bool transparent = false;
     bool gizmos = false;
-    QByteArray format = "PNG";  // "PNG" or "JPEG"
+    QByteArray format = "PNG"; // "PNG" or "JPEG"
 };
 
 class ScreenshotDialog : public QDialog {
     Q_OBJECT
-public:
+  public:
     ScreenshotDialog(const QSize& viewportSize, const QString& suggestedPath, QWidget* parent = nullptr);
     ~ScreenshotDialog() override;
 
@@ -31,9 +31,9 @@ public:
     void setOptions(const ScreenshotOptions& options);
     Ui::ScreenshotDialog* form() const { return m_ui.get(); }
 
-    void accept() override;  // validates (path, writable folder) and remembers the options
+    void accept() override; // validates (path, writable folder) and remembers the options
 
-private:
+  private:
     void syncFormat();
     void browse();
 
@@ -41,4 +41,4 @@ private:
     QSize m_viewportSize;
 };
 
-}  // namespace lr
+} // namespace lr

@@ -16,7 +16,7 @@ QString existing(const QString& key) {
     const QString p = QSettings().value(key).toString();
     return !p.isEmpty() && (p.startsWith(QLatin1String(":/")) || QFileInfo(p).isFile()) ? p : QString();
 }
-}  // namespace
+} // namespace
 
 void SessionSettings::saveWindow(const QMainWindow* window) {
     QSettings s;
@@ -39,11 +39,16 @@ void SessionSettings::setLastModel(const QString& path) {
 }
 
 void SessionSettings::setLastRig(const QString& path) {
-    QSettings().setValue(kLastRig, path.isEmpty() || path.startsWith(QLatin1String(":/")) ? QString()
-                                                                                          : QFileInfo(path).absoluteFilePath());
+    QSettings().setValue(kLastRig, path.isEmpty() || path.startsWith(QLatin1String(":/"))
+                                       ? QString()
+                                       : QFileInfo(path).absoluteFilePath());
 }
 
-QString SessionSettings::lastModel() { return existing(kLastModel); }
-QString SessionSettings::lastRig() { return existing(kLastRig); }
+QString SessionSettings::lastModel() {
+    return existing(kLastModel);
+}
+QString SessionSettings::lastRig() {
+    return existing(kLastRig);
+}
 
-}  // namespace lr
+} // namespace lr

@@ -10,18 +10,18 @@ class QMainWindow;
 namespace lr {
 
 class SessionSettings {
-public:
+  public:
     // Bump when the dock set changes so an old layout is not restored onto new docks.
     static constexpr int kStateVersion = 1;
 
     static void saveWindow(const QMainWindow* window);
-    static bool restoreWindow(QMainWindow* window);  // false when nothing was stored
+    static bool restoreWindow(QMainWindow* window); // false when nothing was stored
 
-    static void setLastModel(const QString& path);  // "" for the bundled model
-    static void setLastRig(const QString& path);    // "" for an untitled rig
+    static void setLastModel(const QString& path); // "" for the bundled model
+    static void setLastRig(const QString& path);   // "" for an untitled rig
     // The stored paths when they still exist, else "".
     static QString lastModel();
     static QString lastRig();
 };
 
-}  // namespace lr
+} // namespace lr

@@ -10,7 +10,7 @@ namespace lr {
 SnapshotRenderer::SnapshotRenderer(const Scene* scene) : m_scene(scene) {}
 
 SnapshotRenderer::~SnapshotRenderer() {
-    if (m_offscreen) m_offscreen->makeCurrent();  // the renderer releases its GL objects in its context
+    if (m_offscreen) m_offscreen->makeCurrent(); // the renderer releases its GL objects in its context
 }
 
 bool SnapshotRenderer::prepare(QString* error) {
@@ -34,8 +34,8 @@ bool SnapshotRenderer::prepare(QString* error) {
     return true;
 }
 
-QImage SnapshotRenderer::render(const Rig& rig, const ViewCamera& camera, QSize size, const RenderSettings& settings,
-                                int supersample, QString* error) {
+QImage SnapshotRenderer::render(const Rig& rig, const ViewCamera& camera, QSize size,
+                                const RenderSettings& settings, int supersample, QString* error) {
     QOpenGLContext* previous = QOpenGLContext::currentContext();
     QSurface* previousSurface = previous ? previous->surface() : nullptr;
     QImage image;
@@ -47,4 +47,4 @@ QImage SnapshotRenderer::render(const Rig& rig, const ViewCamera& camera, QSize 
     return image;
 }
 
-}  // namespace lr
+} // namespace lr

@@ -15,7 +15,7 @@ class OffscreenRenderer;
 class Scene;
 
 class SnapshotRenderer {
-public:
+  public:
     explicit SnapshotRenderer(const Scene* scene);
     ~SnapshotRenderer();
 
@@ -23,7 +23,7 @@ public:
     QImage render(const Rig& rig, const ViewCamera& camera, QSize size, const RenderSettings& settings,
                   int supersample, QString* error);
 
-private:
+  private:
     bool prepare(QString* error);
 
     const Scene* m_scene;
@@ -32,4 +32,4 @@ private:
     std::shared_ptr<const Model> m_keepAlive;
 };
 
-}  // namespace lr
+} // namespace lr

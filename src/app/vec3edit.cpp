@@ -27,7 +27,8 @@ Vec3Edit::Vec3Edit(QWidget* parent) : QWidget(parent) {
 }
 
 void Vec3Edit::setLimits(double min, double max) {
-    for (auto* e : m_edits) e->setLimits(min, max);
+    for (auto* e : m_edits)
+        e->setLimits(min, max);
 }
 
 void Vec3Edit::setWhat(const QString& what) {
@@ -37,11 +38,12 @@ void Vec3Edit::setWhat(const QString& what) {
 }
 
 void Vec3Edit::setValue(const glm::dvec3& v) {
-    for (int axis = 0; axis < 3; ++axis) m_edits[size_t(axis)]->setValueQuietly(v[axis]);
+    for (int axis = 0; axis < 3; ++axis)
+        m_edits[size_t(axis)]->setValueQuietly(v[axis]);
 }
 
 glm::dvec3 Vec3Edit::value() const {
     return {m_edits[0]->value(), m_edits[1]->value(), m_edits[2]->value()};
 }
 
-}  // namespace lr
+} // namespace lr

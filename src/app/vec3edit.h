@@ -12,22 +12,22 @@ class NumberEdit;
 
 class Vec3Edit : public QWidget {
     Q_OBJECT
-public:
+  public:
     explicit Vec3Edit(QWidget* parent = nullptr);
     void setLimits(double min, double max);
     void setWhat(const QString& what);
-    void setValue(const glm::dvec3& v);  // no signal
+    void setValue(const glm::dvec3& v); // no signal
     glm::dvec3 value() const;
     NumberEdit* component(int axis) const { return m_edits[size_t(axis)]; }
 
-signals:
+  signals:
     void componentEdited(int axis, double value);
     void editFinished();
     void rejected(const QString& reason);
     void accepted();
 
-private:
+  private:
     std::array<NumberEdit*, 3> m_edits{};
 };
 
-}  // namespace lr
+} // namespace lr

@@ -25,8 +25,8 @@ struct ViewportRenderer {
 
 namespace {
 constexpr double kOrbitDegreesPerPixel = 0.4;
-constexpr double kWheelStep = 0.85;  // distance factor per wheel notch (towards the target)
-}  // namespace
+constexpr double kWheelStep = 0.85; // distance factor per wheel notch (towards the target)
+} // namespace
 
 Viewport::Viewport(Document* document, Scene* scene, ViewSettings* settings, QWidget* parent)
     : QOpenGLWidget(parent), m_doc(document), m_scene(scene), m_settings(settings),
@@ -36,7 +36,8 @@ Viewport::Viewport(Document* document, Scene* scene, ViewSettings* settings, QWi
     setMinimumSize(200, 150);
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(true);
-    if (auto c = standardView(QStringLiteral("three-quarter"), Bounds{glm::dvec3(-1), glm::dvec3(1)}, 1.5)) m_camera = *c;
+    if (auto c = standardView(QStringLiteral("three-quarter"), Bounds{glm::dvec3(-1), glm::dvec3(1)}, 1.5))
+        m_camera = *c;
     connect(m_doc, &Document::rigChanged, this, [this] {
         m_rigDirty = true;
         update();
@@ -62,7 +63,7 @@ void Viewport::setDefaultSurfaceFormat() {
     format.setProfile(QSurfaceFormat::CoreProfile);
     format.setDepthBufferSize(24);
     format.setStencilBufferSize(8);
-    format.setSamples(0);  // the renderer has its own MSAA target
+    format.setSamples(0); // the renderer has its own MSAA target
     QSurfaceFormat::setDefaultFormat(format);
 }
 
@@ -93,7 +94,9 @@ void Viewport::initializeGL() {
 
 void Viewport::resizeGL(int, int) {}
 
-double Viewport::aspect() const { return height() > 0 ? double(width()) / double(height()) : 1.0; }
+double Viewport::aspect() const {
+    return height() > 0 ? double(width()) / double(height()) : 1.0;
+}
 
 RenderSettings Viewport::renderSettings(bool gizmos) const {
     const ViewOptions& o = m_settings->options();
@@ -105,7 +108,8 @@ RenderSettings Viewport::renderSettings(bool gizmos) const {
     s.showGizmos = gizmos && o.gizmos;
     s.showGrid = gizmos && o.grid;
     s.msaaSamples = o.quality == Quality::Fast ? 0 : 4;
-    for (int row : m_doc->selectedRows()) s.selectedLights.push_back(row);
+    for (int row : m_doc->selectedRows())
+        s.selectedLights.push_back(row);
     return s;
 }
 
@@ -143,7 +147,7 @@ void Viewport::paintGL() {
 
 void Viewport::onModelChanged() {
     m_modelDirty = true;
-    m_rigDirty = true;  // a model-space rig moves with the model's bounds
+    m_rigDirty = true; // a model-space rig moves with the model's bounds
     const Bounds& b = m_scene->model()->bounds;
     if (!m_cameraFramed) {
         if (auto c = standardView(QStringLiteral("three-quarter"), b, aspect())) m_camera = *c;
@@ -193,7 +197,7 @@ void include(Bounds& b, const glm::dvec3& p) {
     b.min = glm::min(b.min, p);
     b.max = glm::max(b.max, p);
 }
-}  // namespace
+} // namespace
 
 void Viewport::frameSelectionOrAll() {
     const QList<int> rows = m_doc->selectedRows();
@@ -205,7 +209,8 @@ void Viewport::frameSelectionOrAll() {
     Bounds b;
     b.min = glm::dvec3(std::numeric_limits<double>::infinity());
     b.max = -b.min;
-    for (int row : rows) include(b, lightAnchor(m_doc->rig(), f, m_doc->light(row)));
+    for (int row : rows)
+        include(b, lightAnchor(m_doc->rig(), f, m_doc->light(row)));
     // A single light gets some room around it: a quarter of the scene's radius.
     const glm::dvec3 pad(0.25 * f.radius);
     b.min -= pad;
@@ -230,7 +235,8 @@ void Viewport::frameModelAndLights(const QList<int>& rows) {
     m_camera.znear = m_camera.zfar = 0.0;
     m_camera.frameAll(b, aspect());
     // frameAll fits a bounding sphere, which leaves the model small: move in while everything stays in view.
-    const QRectF inside = QRectF(rect()).adjusted(width() * 0.06, height() * 0.06, -width() * 0.06, -height() * 0.06);
+    const QRectF inside =
+        QRectF(rect()).adjusted(width() * 0.06, height() * 0.06, -width() * 0.06, -height() * 0.06);
     auto fits = [&] {
         const ScreenProjector p = projector();
         for (const glm::dvec3& q : points) {
@@ -275,7 +281,7 @@ void Viewport::lookThroughLight(int row) {
     const double focus = std::max(glm::length(f.center - c.eye), 1e-3 * f.radius);
     c.target = c.eye + dir * focus;
     c.up = std::abs(dir.y) > 0.99 ? glm::dvec3(0, 0, -1) : glm::dvec3(0, 1, 0);
-    c.yfovDeg = std::clamp(2.0 * l.cone.outer, 1.0, 150.0);  // the cone fills the view vertically
+    c.yfovDeg = std::clamp(2.0 * l.cone.outer, 1.0, 150.0); // the cone fills the view vertically
     setCamera(c);
     emit statusMessage(tr("Looking through %1").arg(l.name));
 }
@@ -286,7 +292,7 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
     m_shiftPress = false;
     if (event->button() == Qt::LeftButton) {
         if (event->modifiers() & Qt::ShiftModifier) {
-            m_nav = Navigation::Pan;  // a Shift+click without motion aims (see release)
+            m_nav = Navigation::Pan; // a Shift+click without motion aims (see release)
             m_shiftPress = true;
         } else if (m_interaction->press(projector(), event->position(), event->modifiers())) {
             m_nav = Navigation::Gizmo;
@@ -316,7 +322,9 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
         setCursor(over ? Qt::PointingHandCursor : Qt::ArrowCursor);
         return;
     }
-    case Navigation::Gizmo: m_interaction->move(projector(), pos, event->modifiers()); break;
+    case Navigation::Gizmo:
+        m_interaction->move(projector(), pos, event->modifiers());
+        break;
     case Navigation::Orbit:
         if (!m_moved) return;
         m_camera.orbit(-delta.x() * kOrbitDegreesPerPixel, delta.y() * kOrbitDegreesPerPixel);
@@ -342,7 +350,7 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event) {
         else if (!message.isEmpty())
             emit statusMessage(message);
     } else if (nav == Navigation::Orbit && !m_moved && !(event->modifiers() & Qt::ControlModifier)) {
-        m_doc->setSelection({});  // a click on empty space clears the selection
+        m_doc->setSelection({}); // a click on empty space clears the selection
     }
     event->accept();
 }
@@ -358,7 +366,7 @@ void Viewport::wheelEvent(QWheelEvent* event) {
 
 void Viewport::keyPressEvent(QKeyEvent* event) {
     if (event->key() == Qt::Key_Escape && m_nav == Navigation::Gizmo) {
-        m_interaction->cancel();  // takes back what the drag did so far (one merged step)
+        m_interaction->cancel(); // takes back what the drag did so far (one merged step)
         m_nav = Navigation::None;
         return;
     }
@@ -380,7 +388,8 @@ QString Viewport::exportScreenshot(const ScreenshotOptions& options) {
     s.transparentBackground = options.transparent;
     if (!options.gizmos) s.selectedLights.clear();
     QString error;
-    QImage image = m_snapshots->render(m_doc->renderRig(), renderCamera(), options.size, s, options.supersample, &error);
+    QImage image =
+        m_snapshots->render(m_doc->renderRig(), renderCamera(), options.size, s, options.supersample, &error);
     if (image.isNull()) return error.isEmpty() ? tr("rendering failed") : error;
     if (options.format == "JPEG") image = image.convertToFormat(QImage::Format_RGB888);
     if (!image.save(options.path, options.format.constData(), options.format == "JPEG" ? 92 : -1))
@@ -388,4 +397,4 @@ QString Viewport::exportScreenshot(const ScreenshotOptions& options) {
     return {};
 }
 
-}  // namespace lr
+} // namespace lr

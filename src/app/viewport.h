@@ -27,7 +27,7 @@ struct ViewportRenderer;
 
 class Viewport : public QOpenGLWidget {
     Q_OBJECT
-public:
+  public:
     Viewport(Document* document, Scene* scene, ViewSettings* settings, QWidget* parent = nullptr);
     ~Viewport() override;
 
@@ -38,7 +38,7 @@ public:
     // The camera as drawn: automatic clip planes enclose the model and every light's gizmo.
     ViewCamera renderCamera() const;
     void setCamera(const ViewCamera& camera);
-    ScreenProjector projector() const;  // widget pixels, the current camera
+    ScreenProjector projector() const; // widget pixels, the current camera
     std::optional<QPointF> lightScreenPosition(int row) const;
     GizmoInteraction* interaction() const { return m_interaction.get(); }
     bool hasRenderedFrame() const { return m_framesRendered > 0; }
@@ -46,9 +46,9 @@ public:
 
     // Offscreen renders of the current model with the current camera (same pixels as the viewport).
     QImage renderThumbnail(const Rig& rig, const QSize& size);
-    QString exportScreenshot(const ScreenshotOptions& options);  // error text, "" on success
+    QString exportScreenshot(const ScreenshotOptions& options); // error text, "" on success
 
-public slots:
+  public slots:
     void frameAll();
     void frameSelectionOrAll();
     // Frames the model together with the gizmos of these lights (the README screenshot shows both).
@@ -57,12 +57,12 @@ public slots:
     void setModelCamera(int index);
     void lookThroughLight(int row);
 
-signals:
+  signals:
     void frameRendered(double gpuMs, double cpuMs);
     void firstFrame();
     void statusMessage(const QString& text);
 
-protected:
+  protected:
     void initializeGL() override;
     void resizeGL(int w, int h) override;
     void paintGL() override;
@@ -72,7 +72,7 @@ protected:
     void wheelEvent(QWheelEvent* event) override;
     void keyPressEvent(QKeyEvent* event) override;
 
-private:
+  private:
     enum class Navigation { None, Orbit, Pan, Gizmo };
     void releaseGL();
     RenderSettings renderSettings(bool gizmos) const;
@@ -82,7 +82,7 @@ private:
     Document* m_doc;
     Scene* m_scene;
     ViewSettings* m_settings;
-    std::unique_ptr<ViewportRenderer> m_gl;  // everything that needs the GL context
+    std::unique_ptr<ViewportRenderer> m_gl; // everything that needs the GL context
     std::unique_ptr<GizmoInteraction> m_interaction;
     std::unique_ptr<SnapshotRenderer> m_snapshots;
     ViewCamera m_camera;
@@ -97,4 +97,4 @@ private:
     QString m_error;
 };
 
-}  // namespace lr
+} // namespace lr

@@ -78,4 +78,4 @@ void ViewSettings::save() const {
     s.endGroup();
 }
 
-}  // namespace lr
+} // namespace lr

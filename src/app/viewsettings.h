@@ -12,10 +12,10 @@
 namespace lr {
 
 struct ViewOptions {
-    double exposure = 0.0;  // EV
+    double exposure = 0.0; // EV
     ToneMap toneMap = ToneMap::Aces;
     Quality quality = Quality::Exact;
-    QColor background{46, 48, 54};  // sRGB
+    QColor background{46, 48, 54}; // sRGB
     bool grid = true;
     bool gizmos = true;
     bool operator==(const ViewOptions&) const = default;
@@ -23,11 +23,11 @@ struct ViewOptions {
 
 class ViewSettings : public QObject {
     Q_OBJECT
-public:
+  public:
     explicit ViewSettings(QObject* parent = nullptr);
 
     const ViewOptions& options() const { return m_options; }
-    void setOptions(const ViewOptions& options);  // emits changed() when different, saves
+    void setOptions(const ViewOptions& options); // emits changed() when different, saves
 
     void setExposure(double ev);
     void setToneMap(ToneMap op);
@@ -36,14 +36,14 @@ public:
     void setGrid(bool on);
     void setGizmos(bool on);
 
-    void load();  // from QSettings (invalid stored values fall back to defaults)
+    void load(); // from QSettings (invalid stored values fall back to defaults)
     void save() const;
 
-signals:
+  signals:
     void changed();
 
-private:
+  private:
     ViewOptions m_options;
 };
 
-}  // namespace lr
+} // namespace lr

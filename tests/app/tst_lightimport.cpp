@@ -10,13 +10,14 @@ using namespace lr;
 
 class TestLightImport : public QObject {
     Q_OBJECT
-private slots:
+  private slots:
     void modelSpace_keepsTheLighting_data() {
         QTest::addColumn<int>("falloff");
         QTest::addColumn<double>("range");
         for (int f = 0; f < enumCount<FalloffModel>(); ++f) {
             QTest::addRow("%s", qPrintable(toString(FalloffModel(f)))) << f << 40.0;
-            if (FalloffModel(f) == FalloffModel::InversePolynomial || FalloffModel(f) == FalloffModel::InverseSquare)
+            if (FalloffModel(f) == FalloffModel::InversePolynomial ||
+                FalloffModel(f) == FalloffModel::InverseSquare)
                 QTest::addRow("%s-no-range", qPrintable(toString(FalloffModel(f)))) << f << -1.0;
         }
     }
@@ -44,7 +45,7 @@ private slots:
         const glm::dmat4 view(1.0);
         const auto a = prepareLight(world, frame, view, world.lights[0]);
         const auto b = prepareLight(modelRig, frame, view, modelRig.lights[0]);
-        QVERIFY(glm::length(a.position - b.position) < 1e-12);  // same place in the world
+        QVERIFY(glm::length(a.position - b.position) < 1e-12); // same place in the world
         const auto sa = prepareSettings(world, frame), sb = prepareSettings(modelRig, frame);
         for (double d : {0.5, 3.0, 10.0, 25.0, 39.0, 60.0}) {
             const double fa = lighting::evalFalloff(a, d * sa.distanceScale) * a.color.x;
@@ -58,7 +59,7 @@ private slots:
         Rig world;
         world.lights.push_back(makeLight(LightType::Spot, "s"));
         world.lights[0].position = glm::dvec3(1, 2, 3);
-        Rig target;  // world space
+        Rig target; // world space
         const auto converted = lightsInRigSpace(world, target, SceneFrame{glm::dvec3(5), 3.0});
         QVERIFY(converted[0] == world.lights[0]);
     }

@@ -1,12 +1,12 @@
 // The editor's main window driven headless (Xvfb) with QTest mouse and keyboard events: add a spot light,
 // change its cone, undo, save, reopen, compare; the title and modified flag; Save/Discard/Cancel; a failed
 // rig open leaves everything as it was; selecting, dragging and aiming lights in the viewport.
+#include "app/commandline.h"
 #include "app/documentfiles.h"
 #include "app/editoractions.h"
 #include "app/editorapp.h"
 #include "app/editorstatusbar.h"
 #include "app/errordialog.h"
-#include "app/commandline.h"
 #include "app/gizmointeraction.h"
 #include "app/lightsdock.h"
 #include "app/mainwindow.h"
@@ -27,13 +27,13 @@
 #include <QFile>
 #include <QMenu>
 #include <QMimeData>
-#include <QUrl>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QToolBar>
+#include <QUrl>
 #include <glm/geometric.hpp>
 
 using namespace lr;
@@ -49,7 +49,8 @@ class TestMainWindow : public QObject {
     Viewport* viewport() { return m_window->viewport(); }
 
     void pressKey(int key, Qt::KeyboardModifiers mods = Qt::NoModifier) {
-        QTest::keyClick(QApplication::focusWidget() ? QApplication::focusWidget() : m_window.get(), Qt::Key(key), mods);
+        QTest::keyClick(QApplication::focusWidget() ? QApplication::focusWidget() : m_window.get(),
+                        Qt::Key(key), mods);
     }
 
     static QByteArray json(const Rig& rig) { return writeRigJson(rig); }
@@ -60,7 +61,7 @@ class TestMainWindow : public QObject {
         QApplication::sendEvent(w, &e);
     }
 
-private slots:
+  private slots:
     void initTestCase() {
         QStandardPaths::setTestModeEnabled(true);
         setApplicationIdentity();
@@ -76,7 +77,9 @@ private slots:
 
         m_window = std::make_unique<MainWindow>();
         m_window->files()->askOpenPath = [noDialog](const QString&, const QString&) { return noDialog(); };
-        m_window->files()->askSavePath = [noDialog](const QString&, const QString&, const QString&) { return noDialog(); };
+        m_window->files()->askSavePath = [noDialog](const QString&, const QString&, const QString&) {
+            return noDialog();
+        };
         QSignalSpy loaded(m_window->files(), &DocumentFiles::modelLoadFinished);
         EditorOptions options;
         options.restoreSession = false;
@@ -103,7 +106,7 @@ private slots:
         QCOMPARE(json(doc()->rig()), json(defaultRig()));
         QVERIFY(m_window->windowTitle().contains(QLatin1String("Untitled")));
         QVERIFY(!m_window->isWindowModified());
-        QVERIFY(!m_window->editorStatusBar()->frameTimeText().isEmpty());  // frame time is shown
+        QVERIFY(!m_window->editorStatusBar()->frameTimeText().isEmpty()); // frame time is shown
     }
 
     void addSpot_changeCone_undo_save_reopen() {
@@ -125,7 +128,7 @@ private slots:
         auto* coneModel = qobject_cast<QComboBox*>(props->field(LightProperty::ConeModel));
         QVERIFY(coneModel && coneModel->isVisibleTo(m_window.get()));
         coneModel->setFocus();
-        QTest::keyClick(coneModel, Qt::Key_End);  // "hard", the last model
+        QTest::keyClick(coneModel, Qt::Key_End); // "hard", the last model
         QVERIFY(doc()->light(0).cone.model == ConeModel::Hard);
         QVERIFY(!props->field(LightProperty::ConeInner)->isVisibleTo(m_window.get()));
         const QByteArray afterModel = json(doc()->rig());
@@ -147,7 +150,9 @@ private slots:
 
         // Save (Ctrl+S): untitled, so it asks for a file name.
         const QString path = m_dir.filePath(QStringLiteral("spot.json"));
-        m_window->files()->askSavePath = [path](const QString&, const QString&, const QString&) { return path; };
+        m_window->files()->askSavePath = [path](const QString&, const QString&, const QString&) {
+            return path;
+        };
         QTest::keyClick(viewport(), Qt::Key_S, Qt::ControlModifier);
         QVERIFY(QFile::exists(path));
         QCOMPARE(doc()->filePath(), path);
@@ -182,14 +187,14 @@ private slots:
             ++asked;
             return answer;
         };
-        QVERIFY(!m_window->files()->newRig());  // Cancel: nothing happens
+        QVERIFY(!m_window->files()->newRig()); // Cancel: nothing happens
         QCOMPARE(asked, 1);
         QCOMPARE(json(doc()->rig()), before);
-        QVERIFY(!m_window->close());  // closing asks too, and Cancel keeps the window
+        QVERIFY(!m_window->close()); // closing asks too, and Cancel keeps the window
         QCOMPARE(asked, 2);
         QVERIFY(m_window->isVisible());
 
-        answer = DocumentFiles::UnsavedAnswer::Save;  // Save writes the file, then the new rig comes
+        answer = DocumentFiles::UnsavedAnswer::Save; // Save writes the file, then the new rig comes
         const QString path = doc()->filePath();
         QVERIFY(m_window->files()->newRig());
         QCOMPARE(readRigFile(path).rig->lights[0].intensity, 4.5);
@@ -208,7 +213,8 @@ private slots:
         const QString bad = m_dir.filePath(QStringLiteral("bad.json"));
         QFile f(bad);
         QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write(R"({"format": "lightrig", "version": 1, "lights": [{"name": "A", "type": "point", "intensity": -5}]})");
+        f.write(
+            R"({"format": "lightrig", "version": 1, "lights": [{"name": "A", "type": "point", "intensity": -5}]})");
         f.close();
         m_errors.clear();
         QVERIFY(!m_window->files()->openRig(bad));
@@ -216,8 +222,10 @@ private slots:
         QCOMPARE(doc()->filePath(), filePath);
         QCOMPARE(doc()->undoStack()->count(), steps);
         QCOMPARE(m_errors.size(), 1);
-        const QString all = m_errors[0].summary + QLatin1Char('\n') + m_errors[0].details.join(QLatin1Char('\n'));
-        QVERIFY2(all.contains(QLatin1String("bad.json")) && all.contains(QLatin1String("lights[0].intensity")),
+        const QString all =
+            m_errors[0].summary + QLatin1Char('\n') + m_errors[0].details.join(QLatin1Char('\n'));
+        QVERIFY2(all.contains(QLatin1String("bad.json")) &&
+                     all.contains(QLatin1String("lights[0].intensity")),
                  qPrintable(all));
 
         // A model that cannot be read leaves the model as it was, too.
@@ -235,7 +243,8 @@ private slots:
         const SceneFrame frame = m_window->scene()->frame();
         // Put the spot in front of the model, between it and the camera, a little off-centre.
         const ViewCamera cam = viewport()->camera();
-        const glm::dvec3 world = frame.center + (cam.eye - frame.center) * 0.5 + cam.right() * (0.3 * frame.radius);
+        const glm::dvec3 world =
+            frame.center + (cam.eye - frame.center) * 0.5 + cam.right() * (0.3 * frame.radius);
         QVERIFY(doc()->setLightValue({0}, LightProperty::Position, QVariant::fromValue(world)));
         doc()->setSelection({});
         QApplication::processEvents();
@@ -251,13 +260,14 @@ private slots:
         const glm::dvec3 before = doc()->light(0).position;
         const QPoint p0 = at->toPoint();
         QTest::mousePress(viewport(), Qt::LeftButton, Qt::NoModifier, p0);
-        for (int i = 1; i <= 8; ++i) dragTo(viewport(), p0 + QPoint(5 * i, 0));
+        for (int i = 1; i <= 8; ++i)
+            dragTo(viewport(), p0 + QPoint(5 * i, 0));
         QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::NoModifier, p0 + QPoint(40, 0));
         QCOMPARE(doc()->undoStack()->count(), steps + 1);
         const glm::dvec3 after = doc()->light(0).position;
         QVERIFY(glm::length(after - before) > 1e-6);
         const ScreenProjector proj = viewport()->projector();
-        const double worldBefore = proj.depth(before), worldAfter = proj.depth(after);  // world space rig
+        const double worldBefore = proj.depth(before), worldAfter = proj.depth(after); // world space rig
         QVERIFY(std::abs(worldBefore - worldAfter) < 1e-6 * std::max(1.0, worldBefore));
         const auto moved = viewport()->lightScreenPosition(0);
         QVERIFY(moved && std::abs(moved->x() - (p0.x() + 40)) < 1.5);
@@ -267,7 +277,8 @@ private slots:
         // Escape during a drag takes it back; the steps before it stay.
         const int index = doc()->undoStack()->index();
         QTest::mousePress(viewport(), Qt::LeftButton, Qt::NoModifier, p0);
-        for (int i = 1; i <= 4; ++i) dragTo(viewport(), p0 + QPoint(0, 6 * i));
+        for (int i = 1; i <= 4; ++i)
+            dragTo(viewport(), p0 + QPoint(0, 6 * i));
         QVERIFY(doc()->light(0).position != before);
         QTest::keyClick(viewport(), Qt::Key_Escape);
         QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::NoModifier, p0 + QPoint(0, 24));
@@ -276,9 +287,10 @@ private slots:
 
         // Ctrl+drag moves along the view axis: the light keeps its place on screen.
         QTest::mousePress(viewport(), Qt::LeftButton, Qt::ControlModifier, p0);
-        for (int i = 1; i <= 4; ++i) dragTo(viewport(), p0 - QPoint(0, 5 * i), Qt::ControlModifier);
+        for (int i = 1; i <= 4; ++i)
+            dragTo(viewport(), p0 - QPoint(0, 5 * i), Qt::ControlModifier);
         QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::ControlModifier, p0 - QPoint(0, 20));
-        QVERIFY(proj.depth(doc()->light(0).position) > proj.depth(before) + 1e-6);  // pushed away
+        QVERIFY(proj.depth(doc()->light(0).position) > proj.depth(before) + 1e-6); // pushed away
         const auto still = viewport()->lightScreenPosition(0);
         QVERIFY(still && QLineF(*still, QPointF(p0)).length() < 1.5);
         doc()->undoStack()->undo();
@@ -310,7 +322,8 @@ private slots:
         const auto icon = viewport()->lightScreenPosition(0);
         for (const auto& q : rim) {
             const auto s = proj.project(q);
-            if (s && viewport()->rect().contains(s->toPoint()) && (!grab || QLineF(*s, *icon).length() > QLineF(*grab, *icon).length()))
+            if (s && viewport()->rect().contains(s->toPoint()) &&
+                (!grab || QLineF(*s, *icon).length() > QLineF(*grab, *icon).length()))
                 grab = s;
         }
         QVERIFY(grab);
@@ -335,9 +348,10 @@ private slots:
         QVERIFY(glm::length(viewport()->camera().eye - eye) < 1e-9);
         QVERIFY(glm::dot(viewport()->camera().forward(), doc()->light(0).direction) > 0.999);
 
-        m_window->actions()->frame->trigger();  // F with a selection: frames the light
+        m_window->actions()->frame->trigger(); // F with a selection: frames the light
         const auto p = viewport()->lightScreenPosition(0);
-        QVERIFY(p && QLineF(*p, QPointF(viewport()->width() / 2.0, viewport()->height() / 2.0)).length() < 2.0);
+        QVERIFY(p &&
+                QLineF(*p, QPointF(viewport()->width() / 2.0, viewport()->height() / 2.0)).length() < 2.0);
     }
 
     void exportScreenshot_atAnySize() {
@@ -352,8 +366,8 @@ private slots:
         const QImage image(o.path);
         QCOMPARE(image.size(), o.size);
         QVERIFY(image.hasAlphaChannel());
-        QCOMPARE(qAlpha(image.pixel(0, 0)), 0);  // background corner: transparent
-        QCOMPARE(qAlpha(image.pixel(160, 100)), 255);  // the model in the middle
+        QCOMPARE(qAlpha(image.pixel(0, 0)), 0);       // background corner: transparent
+        QCOMPARE(qAlpha(image.pixel(160, 100)), 255); // the model in the middle
 
         o.path = m_dir.filePath(QStringLiteral("shot.jpg"));
         o.format = "JPEG";
@@ -366,7 +380,7 @@ private slots:
 
     void presets_saveWithThumbnail_andApplyAsOneStep() {
         PresetStore* store = m_window->presetStore();
-        QDir(store->userDir()).removeRecursively();  // test-mode app data: start empty
+        QDir(store->userDir()).removeRecursively(); // test-mode app data: start empty
         doc()->newRig(defaultRig());
         QVERIFY(doc()->setLightValue({0}, LightProperty::Intensity, 7.0));
         const Rig mine = doc()->rig();
@@ -377,7 +391,7 @@ private slots:
         const QImage thumbnail(png);
         QVERIFY2(!thumbnail.isNull(), "a thumbnail rendered by LightRig");
         QVERIFY(thumbnail.pixelColor(thumbnail.width() / 2, thumbnail.height() / 2) !=
-                thumbnail.pixelColor(0, 0));  // the model is in it
+                thumbnail.pixelColor(0, 0)); // the model is in it
 
         // Applying a built-in and then the saved preset: one undo step each.
         PresetEntry builtin, saved;
@@ -431,7 +445,7 @@ private slots:
         QVERIFY(m_window->actions()->importLights->isEnabled());
         QCOMPARE(m_window->actions()->modelCamerasMenu->actions().size(), qsizetype(model.cameras.size()));
 
-        doc()->newRig(defaultRig());  // a model-space rig: the world-space lights are converted
+        doc()->newRig(defaultRig()); // a model-space rig: the world-space lights are converted
         const int before = doc()->lightCount();
         const int steps = doc()->undoStack()->count();
         m_window->actions()->importLights->trigger();

@@ -15,12 +15,14 @@ ScreenProjector frontCamera() {
     const glm::dmat4 proj = glm::perspective(glm::radians(90.0), 2.0, 0.1, 100.0);
     return ScreenProjector(view, proj, QSizeF(200, 100));
 }
-bool near(const glm::dvec3& a, const glm::dvec3& b, double tol = 1e-9) { return glm::length(a - b) <= tol; }
-}  // namespace
+bool near(const glm::dvec3& a, const glm::dvec3& b, double tol = 1e-9) {
+    return glm::length(a - b) <= tol;
+}
+} // namespace
 
 class TestPicking : public QObject {
     Q_OBJECT
-private slots:
+  private slots:
     void projectsTheCentreAndEdges() {
         const ScreenProjector p = frontCamera();
         const auto c = p.project(glm::dvec3(0));
@@ -32,7 +34,7 @@ private slots:
         QVERIFY(top && std::abs(top->y()) < 1e-9);
         const auto right = p.project(glm::dvec3(20, 0, 0));
         QVERIFY(right && std::abs(right->x() - 200.0) < 1e-9);
-        QVERIFY(!p.project(glm::dvec3(0, 0, 20)));  // behind the camera
+        QVERIFY(!p.project(glm::dvec3(0, 0, 20))); // behind the camera
     }
 
     void raysRoundTrip() {
@@ -54,7 +56,7 @@ private slots:
         const ScreenProjector p = frontCamera();
         // Screen x = 100 + 10 * X / depth * ... : at depth 10 one world unit is 5 px.
         const std::vector<glm::dvec3> anchors{{0, 0, 0}, {2, 0, 0}, {0, 0, 5}};
-        QCOMPARE(pickNearest(p, anchors, QPointF(110, 50), 3.0), 1);  // (2,0,0) projects to x = 110
+        QCOMPARE(pickNearest(p, anchors, QPointF(110, 50), 3.0), 1); // (2,0,0) projects to x = 110
         QCOMPARE(pickNearest(p, anchors, QPointF(130, 50), 3.0), -1);
         // (0,0,0) and (0,0,5) project to the same pixel: the one nearer the camera wins.
         QCOMPARE(pickNearest(p, anchors, QPointF(100, 50), 3.0), 2);
@@ -70,7 +72,7 @@ private slots:
         // Up = away from the camera, 10 px * 0.5 = 5 units along the line of sight from the eye (0,0,10).
         QVERIFY(near(pushed, start + glm::normalize(start - glm::dvec3(0, 0, 10)) * 5.0));
         const auto s0 = p.project(start), s1 = p.project(pushed);
-        QVERIFY(s0 && s1 && QLineF(*s0, *s1).length() < 1e-9);  // still under the cursor
+        QVERIFY(s0 && s1 && QLineF(*s0, *s1).length() < 1e-9); // still under the cursor
     }
 
     void hitsTheModelsNearestTriangle() {
@@ -93,7 +95,7 @@ private slots:
         QVERIFY2(std::abs(*angle - 45.0) < 1e-6, qPrintable(QString::number(*angle)));
         // Seen along the axis (the spot points away from the camera): the disc 4 units down the axis.
         const glm::dvec3 away(0, 0, -1);
-        const auto s2 = p.project(glm::dvec3(4, 0, -4));  // 45° off the axis, 4 units along it
+        const auto s2 = p.project(glm::dvec3(4, 0, -4)); // 45° off the axis, 4 units along it
         QVERIFY(s2);
         const auto angle2 = coneAngleUnderCursor(p, apex, away, *s2, 4.0);
         QVERIFY(angle2);
@@ -118,7 +120,7 @@ private slots:
         Light sun = makeLight(LightType::Directional, "s");
         sun.direction = glm::dvec3(0, -1, 0);
         const glm::dvec3 a = lightAnchor(rig, frame, sun);
-        QVERIFY(a.y > frame.radius);  // above the scene, against the light's direction
+        QVERIFY(a.y > frame.radius); // above the scene, against the light's direction
         QVERIFY(std::abs(a.x - 10.0) < 1e-12);
     }
 };

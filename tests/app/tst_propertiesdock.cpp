@@ -24,34 +24,66 @@ QSet<QString> expectedFields(LightType type, FalloffModel falloff, ConeModel con
     if (positioned) {
         f += {"position", "falloffModel"};
         switch (falloff) {
-        case FalloffModel::None: break;
-        case FalloffModel::RangePower: f += {"falloffRange", "falloffExponent"}; break;
+        case FalloffModel::None:
+            break;
+        case FalloffModel::RangePower:
+            f += {"falloffRange", "falloffExponent"};
+            break;
         case FalloffModel::InversePolynomial:
             f += {"falloffConstant", "falloffLinear", "falloffQuadratic", "falloffRange"};
             break;
-        case FalloffModel::RangeQuadratic: f.insert("falloffRange"); break;
-        case FalloffModel::InverseSquare: f.insert("falloffRange"); break;
+        case FalloffModel::RangeQuadratic:
+            f.insert("falloffRange");
+            break;
+        case FalloffModel::InverseSquare:
+            f.insert("falloffRange");
+            break;
         }
     }
     if (type != LightType::Point) f += "direction";
     if (type == LightType::Spot) {
         f += "coneModel";
         switch (cone) {
-        case ConeModel::AnglePower: f += {"coneOuter", "coneExponent"}; break;
-        case ConeModel::Smooth: f += {"coneInner", "coneOuter", "coneExponent"}; break;
-        case ConeModel::Hard: f.insert("coneOuter"); break;
+        case ConeModel::AnglePower:
+            f += {"coneOuter", "coneExponent"};
+            break;
+        case ConeModel::Smooth:
+            f += {"coneInner", "coneOuter", "coneExponent"};
+            break;
+        case ConeModel::Hard:
+            f.insert("coneOuter");
+            break;
         }
     }
-    if (type == LightType::Rim) f += "rimExponent";
-    else f += {"diffuse", "specular", "ambient"};
+    if (type == LightType::Rim)
+        f += "rimExponent";
+    else
+        f += {"diffuse", "specular", "ambient"};
     return f;
 }
 
-const QStringList kAllFields{"name",          "type",          "enabled",         "color",        "temperature",
-                             "intensity",     "position",      "direction",       "falloffModel", "falloffRange",
-                             "falloffExponent", "falloffConstant", "falloffLinear", "falloffQuadratic", "coneModel",
-                             "coneInner",     "coneOuter",     "coneExponent",    "diffuse",      "specular",
-                             "ambient",       "rimExponent"};
+const QStringList kAllFields{"name",
+                             "type",
+                             "enabled",
+                             "color",
+                             "temperature",
+                             "intensity",
+                             "position",
+                             "direction",
+                             "falloffModel",
+                             "falloffRange",
+                             "falloffExponent",
+                             "falloffConstant",
+                             "falloffLinear",
+                             "falloffQuadratic",
+                             "coneModel",
+                             "coneInner",
+                             "coneOuter",
+                             "coneExponent",
+                             "diffuse",
+                             "specular",
+                             "ambient",
+                             "rimExponent"};
 
 QSet<QString> visibleFields(PropertiesDock& dock) {
     QSet<QString> out;
@@ -69,17 +101,18 @@ QString describe(const QSet<QString>& s) {
     return l.join(QLatin1Char(' '));
 }
 
-}  // namespace
+} // namespace
 
 class TestPropertiesDock : public QObject {
     Q_OBJECT
-private slots:
+  private slots:
     void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
 
     void everyField_hasAWidget() {
         Document doc;
         PropertiesDock dock(&doc);
-        for (LightProperty p : propertyRows()) QVERIFY2(dock.field(p), qPrintable(propertyFieldName(p)));
+        for (LightProperty p : propertyRows())
+            QVERIFY2(dock.field(p), qPrintable(propertyFieldName(p)));
         QCOMPARE(propertyRows().size(), kAllFields.size());
     }
 
@@ -91,30 +124,33 @@ private slots:
             const auto type = LightType(t);
             const bool positioned = type == LightType::Point || type == LightType::Spot;
             for (int fm = 0; fm < enumCount<FalloffModel>(); ++fm) {
-                if (!positioned && fm > 0) continue;  // no falloff: one combination
+                if (!positioned && fm > 0) continue; // no falloff: one combination
                 for (int cm = 0; cm < enumCount<ConeModel>(); ++cm) {
                     if (type != LightType::Spot && cm > 0) continue;
                     QVERIFY(doc.addLight(type));
                     const int row = doc.lightCount() - 1;
                     QString error;
                     if (positioned)
-                        QVERIFY2(doc.setLightValue({row}, LightProperty::FalloffModel, toString(FalloffModel(fm)), &error),
+                        QVERIFY2(doc.setLightValue({row}, LightProperty::FalloffModel,
+                                                   toString(FalloffModel(fm)), &error),
                                  qPrintable(error));
                     if (type == LightType::Spot)
-                        QVERIFY2(doc.setLightValue({row}, LightProperty::ConeModel, toString(ConeModel(cm)), &error),
+                        QVERIFY2(doc.setLightValue({row}, LightProperty::ConeModel, toString(ConeModel(cm)),
+                                                   &error),
                                  qPrintable(error));
                     doc.setSelectedRows({row}, row);
                     const Light& l = doc.light(row);
                     const QSet<QString> want = expectedFields(l.type, l.falloff.model, l.cone.model);
                     const QSet<QString> got = visibleFields(dock);
-                    QVERIFY2(got == want, qPrintable(QStringLiteral("%1/%2/%3: shown [%4], expected [%5]")
-                                                         .arg(toString(type), toString(FalloffModel(fm)),
-                                                              toString(ConeModel(cm)), describe(got), describe(want))));
+                    QVERIFY2(got == want,
+                             qPrintable(QStringLiteral("%1/%2/%3: shown [%4], expected [%5]")
+                                            .arg(toString(type), toString(FalloffModel(fm)),
+                                                 toString(ConeModel(cm)), describe(got), describe(want))));
                     ++combinations;
                 }
             }
         }
-        QCOMPARE(combinations, 5 * 3 + 5 + 1 + 1);  // spot, point, directional, rim
+        QCOMPARE(combinations, 5 * 3 + 5 + 1 + 1); // spot, point, directional, rim
     }
 
     void switchingModels_showsAndHidesFields() {
@@ -148,9 +184,9 @@ private slots:
         doc.setSelectedRows({0, 1}, 1);
         const QSet<QString> got = visibleFields(dock);
         QVERIFY(got.contains("position"));
-        QVERIFY(!got.contains("direction"));   // the point light has none
+        QVERIFY(!got.contains("direction")); // the point light has none
         QVERIFY(!got.contains("coneModel"));
-        QVERIFY(!dock.field(LightProperty::Name)->isEnabled());  // one name per light
+        QVERIFY(!dock.field(LightProperty::Name)->isEnabled()); // one name per light
 
         auto* intensity = dock.findChild<QWidget*>("intensity")->findChild<NumberEdit*>();
         QVERIFY(intensity);
@@ -177,8 +213,9 @@ private slots:
         const double start = doc.light(0).cone.outer;
         const int before = doc.undoStack()->count();
         outer->setFocus();
-        for (int i = 0; i < 5; ++i) QTest::keyClick(outer, Qt::Key_Up);
-        QTest::keyClick(outer, Qt::Key_Return);  // editingFinished ends the gesture
+        for (int i = 0; i < 5; ++i)
+            QTest::keyClick(outer, Qt::Key_Up);
+        QTest::keyClick(outer, Qt::Key_Return); // editingFinished ends the gesture
         QVERIFY(doc.light(0).cone.outer > start);
         QCOMPARE(doc.undoStack()->count(), before + 1);
         doc.undoStack()->undo();
@@ -203,7 +240,7 @@ private slots:
         QTest::keyClick(outer, Qt::Key_Return);
         QVERIFY(rejected.count() > 0);
         const QString reason = rejected.last().at(0).toString();
-        QVERIFY2(reason.contains(QLatin1String("90")), qPrintable(reason));  // states the rule
+        QVERIFY2(reason.contains(QLatin1String("90")), qPrintable(reason)); // states the rule
         QVERIFY(!dock.message().isEmpty());
         QCOMPARE(QByteArray::number(doc.light(0).cone.outer), before);
         // A valid angle typed into the same (degree-suffixed) field is stored.
@@ -223,7 +260,7 @@ private slots:
         QVERIFY(dock.message().contains(QLatin1String("inner"), Qt::CaseInsensitive) ||
                 dock.message().contains(QLatin1String("outer"), Qt::CaseInsensitive));
         QCOMPARE(doc.undoStack()->index(), steps);
-        QCOMPARE(inner->value(), doc.light(0).cone.inner);  // the field shows the stored value again
+        QCOMPARE(inner->value(), doc.light(0).cone.inner); // the field shows the stored value again
 
         // Not a number at all.
         auto* range = dock.field(LightProperty::FalloffRange)->findChild<NumberEdit*>();

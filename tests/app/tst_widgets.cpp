@@ -5,14 +5,14 @@
 
 #include <QSignalSpy>
 #include <QSlider>
-#include <glm/geometric.hpp>
 #include <QTest>
+#include <glm/geometric.hpp>
 
 using namespace lr;
 
 class TestWidgets : public QObject {
     Q_OBJECT
-private slots:
+  private slots:
     void logSlider_coversZeroToAMillionMonotonically() {
         LogSliderEdit e;
         e.setLimits(1e-3, 1e6);
@@ -37,7 +37,7 @@ private slots:
         LogSliderEdit e;
         QSignalSpy edited(&e, &LogSliderEdit::valueEdited), finished(&e, &LogSliderEdit::editFinished);
         e.setValue(5.0);
-        QCOMPARE(edited.count(), 0);  // programmatic: no edit
+        QCOMPARE(edited.count(), 0); // programmatic: no edit
         QCOMPARE(e.value(), 5.0);
         e.slider()->setValue(e.positionFor(100.0));
         QCOMPARE(edited.count(), 1);
@@ -62,7 +62,7 @@ private slots:
         QCOMPARE(e.validate(t, pos), QValidator::Invalid);
         t = QStringLiteral("nan");
         QCOMPARE(e.validate(t, pos), QValidator::Invalid);
-        t = QStringLiteral("0");  // the minimum is exclusive, but "0.5" may follow
+        t = QStringLiteral("0"); // the minimum is exclusive, but "0.5" may follow
         QCOMPARE(e.validate(t, pos), QValidator::Intermediate);
         t = QStringLiteral("-");
         QCOMPARE(e.validate(t, pos), QValidator::Intermediate);
@@ -80,13 +80,13 @@ private slots:
         NumberEdit e;
         e.setLimits(0.0, 1e12);
         e.setValueQuietly(1234567.891);
-        QCOMPARE(e.value(), 1234567.891);  // no rounding to a fixed number of decimals
+        QCOMPARE(e.value(), 1234567.891); // no rounding to a fixed number of decimals
         QVERIFY(e.textFromValue(1e-7).contains(QLatin1String("e-07")));
         QVERIFY(!e.textFromValue(1234567.0).contains(QLatin1Char(',')));
     }
 
     void colorButton_keepsHdrBrightness() {
-        const glm::dvec3 hdr(15.0, 0.0, 0.0);  // the book's red point light
+        const glm::dvec3 hdr(15.0, 0.0, 0.0); // the book's red point light
         QCOMPARE(ColorButton::hdrScale(hdr), 15.0);
         const QColor shown = ColorButton::toDisplay(hdr);
         QCOMPARE(shown, QColor(255, 0, 0));
