@@ -1,7 +1,7 @@
 // Not a test: measures what the import worker costs. For each file named on the command line, imports it
 // directly (loadModel) and through the worker (importModelIsolated, LIGHTRIG_EXECUTABLE as the worker)
 // alternately, N times each (--runs N, default 5), and prints the medians and the overhead:
-//   import_timing [--runs N] FILE...
+//   import_timing [--runs N] [--only direct|isolated] FILE...
 #include "model/isolatedimport.h"
 #include "model/modelloader.h"
 
@@ -37,8 +37,10 @@ int main(int argc, char** argv) {
     lr::setImportWorkerExecutable(QStringLiteral(LIGHTRIG_EXECUTABLE));
     QStringList args = app.arguments().mid(1);
     int runs = 5;
-    if (args.size() >= 2 && args[0] == QLatin1String("--runs")) {
-        runs = std::max(1, args[1].toInt());
+    int only = -1; // --only direct|isolated: one kind of run (for profiling each alone)
+    while (args.size() >= 2 && args[0].startsWith(QLatin1String("--"))) {
+        if (args[0] == QLatin1String("--runs")) runs = std::max(1, args[1].toInt());
+        if (args[0] == QLatin1String("--only")) only = args[1] == QLatin1String("isolated") ? 1 : 0;
         args = args.mid(2);
     }
     int status = 0;
@@ -47,6 +49,7 @@ int main(int argc, char** argv) {
         std::size_t triangles = 0;
         for (int i = 0; i < runs; ++i) {
             for (int isolatedRun = 0; isolatedRun < 2; ++isolatedRun) {
+                if (only >= 0 && isolatedRun != only) continue;
                 QElapsedTimer t;
                 const double cpu0 = cpuMs();
                 t.start();
@@ -62,6 +65,15 @@ int main(int argc, char** argv) {
                 (isolatedRun ? isolated : direct).push_back(ms);
                 (isolatedRun ? isolatedCpu : directCpu).push_back(cpu);
             }
+        }
+        if (only >= 0) {
+            const std::vector<double>& wall = only ? isolated : direct;
+            const std::vector<double>& cpu = only ? isolatedCpu : directCpu;
+            if (!wall.empty())
+                std::printf("%s: %s %.1f ms, CPU %.1f ms (medians of %d)\n",
+                            qPrintable(QFileInfo(path).fileName()), only ? "isolated" : "direct",
+                            median(wall), median(cpu), runs);
+            continue;
         }
         if (direct.empty() || isolated.empty()) continue;
         const double d = median(direct), s = median(isolated);
