@@ -87,7 +87,11 @@ void main() {
     ShadeSettings st;
     st.ambient = uAmbient;
     st.distanceScale = uDistanceScale;
+#ifdef LR_CLUSTERED
+    vec3 radiance = shadeSurfaceClustered(s, st, gl_FragCoord.xy);
+#else
     vec3 radiance = shadeSurface(s, st);
+#endif
 #ifdef LR_OUTPUT_DISPLAY
     oColor = vec4(displayEncode(radiance, uExposureScale, uToneMap), 1.0);
 #else

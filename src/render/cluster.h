@@ -10,6 +10,7 @@
 #include "core/shade.h"
 
 #include <cstdint>
+#include <limits>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

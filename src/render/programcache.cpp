@@ -65,10 +65,12 @@ MeshProgram* ProgramCache::meshProgram(const FeatureKey& key, QString* error) {
     QString message;
     auto program = key.deferredLighting
                        ? build(shaderPrelude(key), {QStringLiteral("fullscreen.vert")},
-                               {QStringLiteral("lighting.glsl"), QStringLiteral("deferred.frag")},
+                               {QStringLiteral("lighting.glsl"), QStringLiteral("cluster.glsl"),
+                                QStringLiteral("deferred.frag")},
                                QStringLiteral("variant [%1]").arg(key.describe()), &message)
                        : build(shaderPrelude(key), {QStringLiteral("mesh.vert")},
-                               {QStringLiteral("lighting.glsl"), QStringLiteral("mesh.frag")},
+                               {QStringLiteral("lighting.glsl"), QStringLiteral("cluster.glsl"),
+                                QStringLiteral("mesh.frag")},
                                QStringLiteral("variant [%1]").arg(key.describe()), &message);
     if (!program) {
         m_failed.emplace(key, message);
@@ -94,6 +96,8 @@ MeshProgram* ProgramCache::meshProgram(const FeatureKey& key, QString* error) {
     p->setUniformValue("uNormalTex", 1);
     p->setUniformValue("uEmissiveTex", 2);
     p->setUniformValue("uLights", 3);
+    p->setUniformValue("uClusterRanges", 8);  // ClusterBuffers::kRangesUnit
+    p->setUniformValue("uClusterIndices", 9);  // ClusterBuffers::kIndicesUnit
     for (int i = 0; i < 4; ++i) p->setUniformValue(qPrintable(QStringLiteral("uGBuffer%1").arg(i)), 4 + i);
     p->release();
     mp->program = std::move(program);

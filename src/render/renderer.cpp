@@ -1,5 +1,7 @@
 #include "renderer.h"
 
+#include "cluster.h"
+#include "clustergl.h"
 #include "core/lighting.h"
 #include "gizmos.h"
 #include "gpumodel.h"
@@ -41,7 +43,7 @@ QSize targetSize(QSize size, const QRect& tile) { return tile.isValid() ? tile.s
 }  // namespace
 
 Renderer::Renderer() : m_programs(std::make_unique<ProgramCache>()), m_model(std::make_unique<GpuModel>()),
-                       m_targets(std::make_unique<Targets>()) {}
+                       m_targets(std::make_unique<Targets>()), m_clusters(std::make_unique<ClusterBuffers>()) {}
 
 Renderer::~Renderer() {
     if (!m_initialized) return;
@@ -116,6 +118,7 @@ void Renderer::releaseResources() {
     m_programs->clear();
     m_model->release(this);
     m_targets->release(this);
+    m_clusters->release(this);
     glDeleteBuffers(1, &m_lightBuffer);
     glDeleteTextures(1, &m_lightTexture);
     glDeleteVertexArrays(1, &m_emptyVao);
@@ -184,9 +187,15 @@ void Renderer::uploadLights(const glm::dmat4& view) {
     std::vector<float> data;
     data.reserve(m_rig.lights.size() * 4 * kLightTexels);
     int count = 0;
+    const double scale = prepareSettings(m_rig, frame).distanceScale;
+    m_lightBounds.clear();
+    m_boundedLights = 0;
     for (const Light& l : m_rig.lights) {
         if (!lightReaches(m_rig, frame, l, frame.center, frame.radius)) continue;
-        const LightTexels t = packLight(castLight<float>(prepareLight(m_rig, frame, view, l)));
+        const lighting::ShadeLight<double> prepared = prepareLight(m_rig, frame, view, l);
+        m_lightBounds.push_back(lightBounds(prepared, scale));
+        m_boundedLights += m_lightBounds.back().bounded ? 1 : 0;
+        const LightTexels t = packLight(castLight<float>(prepared));
         data.insert(data.end(), t.begin(), t.end());
         ++count;
     }
@@ -204,6 +213,45 @@ void Renderer::uploadLights(const glm::dmat4& view) {
     m_lightsDirty = false;
 }
 
+// Bins the uploaded lights for this frame's projection and target (the viewport's size); false when
+// clustering is off for this frame.
+bool Renderer::clusterLights(const glm::dmat4& projection, const RenderSettings& settings) {
+    m_stats.clustered = false;
+    m_stats.clusterLightRefs = 0;
+    const bool wanted = settings.clusteredShading > 0 ||
+                        (settings.clusteredShading < 0 && m_boundedLights > kClusterMinBoundedLights);
+    if (!wanted) return false;
+    GLint viewport[4] = {};
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    ClusterView cv;
+    cv.projection = projection;
+    cv.width = std::max(1, viewport[2]);
+    cv.height = std::max(1, viewport[3]);
+    // near and far back from the projection: P22 = -(f+n)/(f-n), P32 = -2fn/(f-n) (f infinite: P22 = -1)
+    const double p22 = projection[2][2], p32 = projection[3][2];
+    cv.znear = p32 / (p22 - 1.0);
+    cv.zfar = p22 > -1.0 ? p32 / (p22 + 1.0) : std::numeric_limits<double>::infinity();
+    if (!(cv.znear > 0.0) || !std::isfinite(cv.znear)) return false;
+    const ClusterData data = binLights(m_lightBounds, cv);
+    m_clusters->upload(this, data);
+    m_stats.clustered = true;
+    m_stats.clusterLightRefs = qint64(data.indices.size());
+    m_clusterUniforms = {float(data.lookup.tileScale.x), float(data.lookup.tileScale.y), float(data.lookup.znear),
+                         float(data.lookup.sliceScale)};
+    m_clusterGlobal = data.globalCount;
+    m_clusterGrid = {data.grid.tilesX, data.grid.tilesY, data.grid.slices};
+    return true;
+}
+
+void Renderer::setClusterUniforms(QOpenGLShaderProgram* program) {
+    const GLuint id = program->programId();
+    glUniform1i(glGetUniformLocation(id, "uGlobalLightCount"), m_clusterGlobal);
+    glUniform3i(glGetUniformLocation(id, "uClusterGrid"), m_clusterGrid.x, m_clusterGrid.y, m_clusterGrid.z);
+    glUniform2f(glGetUniformLocation(id, "uClusterTileScale"), m_clusterUniforms.x, m_clusterUniforms.y);
+    glUniform1f(glGetUniformLocation(id, "uClusterNear"), m_clusterUniforms.z);
+    glUniform1f(glGetUniformLocation(id, "uClusterSliceScale"), m_clusterUniforms.w);
+}
+
 bool Renderer::drawModel(const glm::dmat4& view, const glm::dmat4& projection, const RenderSettings& settings,
                          int output) {
     const Model* model = m_model->model();
@@ -215,6 +263,8 @@ bool Renderer::drawModel(const glm::dmat4& view, const glm::dmat4& projection, c
     const lighting::ShadeSettings<double> shade = prepareSettings(m_rig, sceneFrame());
     const glm::vec3 ambient(shade.ambient);
     const RigFeatures rig = rigFeatures(m_rig);
+    m_drawProjection = projection;
+    const bool clustered = output != int(ShaderOutput::GBuffer) && clusterLights(projection, settings);
     const float exposureScale = float(std::exp2(std::clamp(settings.exposureEV, -60.0, 60.0)));
 
     // Group the draws by program so each variant is bound once per frame.
@@ -226,6 +276,7 @@ bool Renderer::drawModel(const glm::dmat4& view, const glm::dmat4& projection, c
         key.material = d.features;
         key.quality = Quality::Exact;  // Balanced and Fast are not implemented yet: they render as Exact
         key.output = ShaderOutput(output);
+        key.clustered = clustered;
         order.emplace_back(key, &d);
     }
     std::stable_sort(order.begin(), order.end(),
@@ -239,6 +290,7 @@ bool Renderer::drawModel(const glm::dmat4& view, const glm::dmat4& projection, c
     glCullFace(GL_BACK);
     glActiveTexture(GL_TEXTURE0 + kLightUnit);
     glBindTexture(GL_TEXTURE_BUFFER, m_lightTexture);
+    if (clustered) m_clusters->bind(this);
     bool ok = true;
     MeshProgram* current = nullptr;
     const Material defaultMaterial;
@@ -258,6 +310,7 @@ bool Renderer::drawModel(const glm::dmat4& view, const glm::dmat4& projection, c
             glUniform3fv(p->ambient, 1, glm::value_ptr(ambient));
             glUniform1f(p->distanceScale, float(shade.distanceScale));
             glUniform1i(p->lightCount, m_stats.lightsUploaded);
+            if (clustered) setClusterUniforms(p->program.get());
             if (p->exposureScale >= 0) glUniform1f(p->exposureScale, exposureScale);
             if (p->toneMap >= 0) glUniform1i(p->toneMap, int(settings.toneMap));
         }
@@ -405,6 +458,7 @@ bool Renderer::lightingPass(const RenderSettings& settings, bool hdr, const QRec
     key.quality = Quality::Exact;
     key.output = hdr ? ShaderOutput::Radiance : ShaderOutput::Display;
     key.deferredLighting = true;
+    key.clustered = clusterLights(m_drawProjection, settings);
     QString error;
     MeshProgram* p = m_programs->meshProgram(key, &error);
     if (!p) return fail(error);
@@ -415,6 +469,10 @@ bool Renderer::lightingPass(const RenderSettings& settings, bool hdr, const QRec
     glUniform1i(p->lightCount, m_stats.lightsUploaded);
     if (p->exposureScale >= 0) glUniform1f(p->exposureScale, float(std::exp2(std::clamp(settings.exposureEV, -60.0, 60.0))));
     if (p->toneMap >= 0) glUniform1i(p->toneMap, int(settings.toneMap));
+    if (key.clustered) {
+        setClusterUniforms(p->program.get());
+        m_clusters->bind(this);
+    }
     glActiveTexture(GL_TEXTURE0 + kLightUnit);
     glBindTexture(GL_TEXTURE_BUFFER, m_lightTexture);
     for (int i = 0; i < kGBufferTargets; ++i) {

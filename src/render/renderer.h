@@ -29,12 +29,15 @@
 #include <vector>
 
 class QOpenGLContext;
+class QOpenGLShaderProgram;
 
 namespace lr {
 
 namespace render {
 class ProgramCache;
 class GpuModel;
+class ClusterBuffers;
+struct LightBounds;
 struct Targets;
 }  // namespace render
 
@@ -63,6 +66,9 @@ struct RenderSettings {
     // tone-maps it in a full-screen pass (MSAA then resolves radiance); readRadiance() needs it.
     bool hdrTarget = false;
     bool hdrFloat32 = false;  // HDR path: RGBA32F instead of RGBA16F
+    // Clustered forward shading (render/cluster.h): -1 automatic (when more than a few lights have a
+    // bounded range), 0 never, 1 always. Same pixels either way: it only skips exact zeros.
+    int clusteredShading = -1;
     ShadingPath shadingPath = ShadingPath::Auto;  // Deferred ignores msaaSamples
     bool operator==(const RenderSettings&) const = default;
 };
@@ -76,6 +82,8 @@ struct RenderStats {
     int drawCalls = 0;
     bool deferred = false;  // the last frame took the deferred path
     double lastGpuMs = -1.0;  // GL_TIME_ELAPSED of a recent frame (asynchronous: a frame or two old); < 0: none yet
+    bool clustered = false;     // the last frame used clustered shading
+    qint64 clusterLightRefs = 0;  // its light-index list: global lights + per-cluster entries
     double lastCpuMs = 0.0;   // CPU time spent in the last render() call (GL submission, not completion)
 };
 
@@ -149,6 +157,15 @@ private:
     std::unique_ptr<render::ProgramCache> m_programs;
     std::unique_ptr<render::GpuModel> m_model;
     std::unique_ptr<render::Targets> m_targets;
+    std::unique_ptr<render::ClusterBuffers> m_clusters;
+    std::vector<render::LightBounds> m_lightBounds;  // per uploaded light, view space
+    int m_boundedLights = 0;
+    bool clusterLights(const glm::dmat4& projection, const RenderSettings& settings);
+    void setClusterUniforms(QOpenGLShaderProgram* program);
+    glm::vec4 m_clusterUniforms{0.0f};  // tile scale x, y, near, slice scale
+    glm::ivec3 m_clusterGrid{0};
+    int m_clusterGlobal = 0;
+    glm::dmat4 m_drawProjection{1.0};  // the last drawModel's: the deferred lighting pass bins with it
     GLuint m_lightBuffer = 0, m_lightTexture = 0;
     int m_lightCapacity = 0;  // lights the buffer holds
     GLuint m_emptyVao = 0;

@@ -77,6 +77,7 @@ std::uint64_t FeatureKey::bits() const {
     put(unsigned(quality), 2);
     put(unsigned(output), 2);
     put(deferredLighting, 1);
+    put(clustered, 1);
     return b;
 }
 
@@ -97,6 +98,7 @@ QString FeatureKey::describe() const {
     if (material.doubleSided) parts << QStringLiteral("double-sided");
     parts << QStringLiteral("quality:") + toString(quality);
     if (output == ShaderOutput::GBuffer) parts << QStringLiteral("gbuffer");
+    if (clustered) parts << QStringLiteral("clustered");
     return parts.join(QLatin1Char(' '));
 }
 
@@ -155,6 +157,7 @@ QByteArray shaderPrelude(const FeatureKey& key) {
     if (key.material.doubleSided) out += "#define LR_DOUBLE_SIDED 1\n";
     out += "#define LR_QUALITY_" + macroName(EnumNames<Quality>::names[size_t(key.quality)]) + " 1\n";
     if (key.deferredLighting) out += "#define LR_DEFERRED_LIGHTING 1\n";
+    if (key.clustered) out += "#define LR_CLUSTERED 1\n";
     switch (key.output) {
     case ShaderOutput::Display: out += "#define LR_OUTPUT_DISPLAY 1\n"; break;
     case ShaderOutput::Radiance: out += "#define LR_OUTPUT_RADIANCE 1\n"; break;

@@ -49,6 +49,9 @@ struct FeatureKey {
     // The deferred lighting pass (fullscreen.vert + deferred.frag; `material` unused) rather than a mesh
     // program (mesh.vert + mesh.frag). G-buffer mesh programs ignore `rig`: the renderer leaves it empty.
     bool deferredLighting = false;
+    // Clustered forward shading (cluster.h, shaders/cluster.glsl): each fragment loops over its cluster's
+    // lights only. Chosen per frame by the renderer when the rig has many range-bounded lights.
+    bool clustered = false;
 
     std::uint64_t bits() const;  // a unique packing, for hashing and ordering
     QString describe() const;    // "point+spot falloff:range-power cone:smooth ... tex:base,normal"
