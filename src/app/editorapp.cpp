@@ -7,6 +7,7 @@
 #include "presetsdock.h"
 #include "sessionsafety.h"
 #include "viewport.h"
+#include "viewsettings.h"
 
 #include <QApplication>
 #include <QDir>
@@ -91,6 +92,9 @@ int runEditor(int argc, char** argv) {
     // interactive runs: --no-restore and screenshot mode are scripted and must not stop at a question.
     installSessionSafety(&window, cl.options->restoreSession);
     if (!cl.options->screenshotPath.isEmpty()) {
+        // The same picture on every machine: default view settings, not the user's (and not saved).
+        window.viewSettings()->setPersistent(false);
+        window.viewSettings()->setOptions(ViewOptions{});
         window.resize(1600, 1000);
         scheduleScreenshot(&window, QFileInfo(cl.options->screenshotPath).absoluteFilePath());
     }

@@ -67,6 +67,7 @@ void ViewSettings::load() {
 }
 
 void ViewSettings::save() const {
+    if (!m_persistent) return;
     QSettings s;
     s.beginGroup(QStringLiteral("view"));
     s.setValue(QStringLiteral("exposure"), m_options.exposure);

@@ -36,6 +36,9 @@ class ViewSettings : public QObject {
     void setGrid(bool on);
     void setGizmos(bool on);
 
+    // Not persistent: changes are not written to QSettings (scripted runs such as the README screenshot).
+    void setPersistent(bool persistent) { m_persistent = persistent; }
+
     void load(); // from QSettings (invalid stored values fall back to defaults)
     void save() const;
 
@@ -44,6 +47,7 @@ class ViewSettings : public QObject {
 
   private:
     ViewOptions m_options;
+    bool m_persistent = true;
 };
 
 } // namespace lr
