@@ -2,7 +2,7 @@
 
 #include "core/lighting.h"
 #include "core/rigjson.h"
-#include "model/modelloader.h"
+#include "model/isolatedimport.h"
 
 #include <QRegularExpression>
 #include <algorithm>
@@ -98,7 +98,8 @@ std::optional<SceneOptions> SceneOptionSet::read(const QCommandLineParser& p, QS
 }
 
 bool loadScene(const QString& modelPath, const SceneOptions& options, LoadedScene* scene, QString* error) {
-    ModelLoadResult loaded = loadModel(modelPath);
+    // In `lightrig import-worker`: an importer crash, hang or allocation bomb is a message, not our end.
+    ModelLoadResult loaded = importModelIsolated(modelPath);
     if (!loaded.ok()) {
         *error = loaded.error.isEmpty() ? QStringLiteral("could not import %1").arg(modelPath) : loaded.error;
         return false;
