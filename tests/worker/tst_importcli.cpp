@@ -1,6 +1,6 @@
-// `lightrig render` imports through the worker: an importer crash, abort or memory-limit hit (provoked
-// with the worker's test-only LIGHTRIG_WORKER_TEST_CRASH) is exit status 1 with the worker's message on
-// stderr and no output file. Needs an X display (ctest under xvfb-run -a); skips without one.
+// `lightrig render` and `lightrig bench` import through the worker: an importer crash, abort or memory-limit
+// hit (provoked with the worker's test-only LIGHTRIG_WORKER_TEST_CRASH) is exit status 1 with the worker's
+// message on stderr and no output file. Needs an X display (ctest under xvfb-run -a); skips without one.
 #include "model/importprotocol.h"
 
 #include <QFileInfo>
@@ -23,7 +23,7 @@ struct Run {
     QString err;
 };
 
-Run render(const QString& model, const QString& out, const QByteArray& crashMode) {
+Run lightrig(const QStringList& args, const QByteArray& crashMode) {
     QProcess p;
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
     env.remove(QStringLiteral("LIGHTRIG_IMPORT_WORKER")); // the worker is lightrig itself
@@ -31,8 +31,7 @@ Run render(const QString& model, const QString& out, const QByteArray& crashMode
         env.insert(QString::fromLatin1(lr::importprotocol::kTestCrashVariable),
                    QString::fromLatin1(crashMode));
     p.setProcessEnvironment(env);
-    p.start(QStringLiteral(LIGHTRIG_EXECUTABLE), {QStringLiteral("render"), model, QStringLiteral("-o"), out,
-                                                  QStringLiteral("--size"), QStringLiteral("64x48")});
+    p.start(QStringLiteral(LIGHTRIG_EXECUTABLE), args);
     if (!p.waitForFinished(120'000)) {
         p.kill();
         p.waitForFinished();
@@ -40,6 +39,12 @@ Run render(const QString& model, const QString& out, const QByteArray& crashMode
     }
     return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1,
             QString::fromUtf8(p.readAllStandardError())};
+}
+
+Run render(const QString& model, const QString& out, const QByteArray& crashMode) {
+    return lightrig({QStringLiteral("render"), model, QStringLiteral("-o"), out, QStringLiteral("--size"),
+                     QStringLiteral("64x48")},
+                    crashMode);
 }
 
 } // namespace
@@ -54,6 +59,7 @@ class TestImportCli : public QObject {
     void renderThroughTheWorker();
     void renderImporterDeaths_data();
     void renderImporterDeaths();
+    void benchImporterDeath();
 };
 
 void TestImportCli::renderThroughTheWorker() {
@@ -94,6 +100,21 @@ void TestImportCli::renderImporterDeaths() {
     QCOMPARE(r.err.count(QLatin1String("lightrig render: ")), 1); // one line of its own (Qt may add warnings)
     QVERIFY(!QFileInfo::exists(out));
     QCOMPARE(QDir(dir.path()).entryList(QDir::NoDotAndDotDot | QDir::AllEntries), QStringList());
+}
+
+void TestImportCli::benchImporterDeath() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString json = dir.filePath(QStringLiteral("bench.json"));
+    const Run r = lightrig({QStringLiteral("bench"), QStringLiteral(LIGHTRIG_TEST_DATA "/model/quad.obj"),
+                            QStringLiteral("--frames"), QStringLiteral("2"), QStringLiteral("--size"),
+                            QStringLiteral("64x48"), QStringLiteral("--json"), json},
+                           "segv");
+    QCOMPARE(r.status, 1);
+    QVERIFY2(r.err.contains(QStringLiteral(
+                 "lightrig bench: could not import quad.obj: the importer crashed (signal 11)")),
+             qPrintable(r.err));
+    QVERIFY(!QFileInfo::exists(json));
 }
 
 QTEST_GUILESS_MAIN(TestImportCli)
