@@ -12,7 +12,9 @@
 #include <QSaveFile>
 #include <QStandardPaths>
 #include <QUndoStack>
+#include <QtConcurrent/QtConcurrentRun>
 #include <algorithm>
+#include <utility>
 
 namespace lr {
 
@@ -61,7 +63,12 @@ Autosave::Autosave(Document* document, const QString& dir, QObject* parent)
                           .arg(QDir(m_dir).filePath(m_id + kLockSuffix))
                           .arg(int(m_lock->error()));
     m_timer.setSingleShot(true);
-    connect(&m_timer, &QTimer::timeout, this, [this] { saveNow(); });
+    connect(&m_timer, &QTimer::timeout, this, &Autosave::saveInBackground);
+    connect(&m_writing, &QFutureWatcher<QString>::finished, this, [this] {
+        if (!std::exchange(m_inFlight, false)) return;  // already handled by waitForWrite()
+        finishWrite(m_writing.result());
+        if (std::exchange(m_writeAgain, false)) saveInBackground();
+    });
     connect(m_doc, &Document::rigChanged, this, &Autosave::schedule);
     connect(m_doc->undoStack(), &QUndoStack::indexChanged, this, &Autosave::schedule);
     connect(m_doc, &Document::modifiedChanged, this, &Autosave::onModifiedChanged);
@@ -101,36 +108,63 @@ void Autosave::onModifiedChanged(bool modified) {
     }
 }
 
+namespace {
+// The rig first, then the sidecar: a sidecar never points at a missing or older rig, and a rig without a
+// sidecar is still offered (without its original path). Runs on a worker thread: only copies are used.
+QString writeAutosave(const Rig& rig, const QString& original, const QString& rigPath, const QString& metaPath) {
+    QString error;
+    if (!saveRigFile(rig, rigPath, &error)) return error;
+    QJsonObject meta;
+    meta.insert(QStringLiteral("original"), original);
+    meta.insert(QStringLiteral("saved"), QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs));
+    meta.insert(QStringLiteral("name"), rig.name);
+    meta.insert(QStringLiteral("lights"), qint64(rig.lights.size()));
+    if (!writeAtomically(metaPath, QJsonDocument(meta).toJson(), &error)) return error;
+    return {};
+}
+}  // namespace
+
+void Autosave::finishWrite(const QString& error) {
+    m_lastError = error;
+    if (error.isEmpty()) emit saved(rigPath());
+    else emit failed(error);
+}
+
 bool Autosave::saveNow() {
     m_timer.stop();
+    waitForWrite();
     if (!m_doc->isModified()) {
         discard();
         return true;
     }
-    QString error;
-    // The rig first, then the sidecar: a sidecar never points at a missing or older rig, and a rig without a
-    // sidecar is still offered (without its original path).
-    if (!saveRigFile(m_doc->rig(), rigPath(), &error)) {
-        m_lastError = error;
-        emit failed(error);
-        return false;
+    finishWrite(writeAutosave(m_doc->rig(), m_doc->filePath(), rigPath(), metaPath()));
+    return m_lastError.isEmpty();
+}
+
+void Autosave::saveInBackground() {
+    if (!m_doc->isModified()) {
+        discard();
+        return;
     }
-    QJsonObject meta;
-    meta.insert(QStringLiteral("original"), m_doc->filePath());
-    meta.insert(QStringLiteral("saved"), QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs));
-    meta.insert(QStringLiteral("name"), m_doc->rig().name);
-    meta.insert(QStringLiteral("lights"), m_doc->lightCount());
-    if (!writeAtomically(metaPath(), QJsonDocument(meta).toJson(), &error)) {
-        m_lastError = error;
-        emit failed(error);
-        return false;
+    if (m_inFlight) {  // one write at a time; the newest state follows when it is done
+        m_writeAgain = true;
+        return;
     }
-    m_lastError.clear();
-    emit saved(rigPath());
-    return true;
+    // A 4096-light rig takes a few hundred milliseconds to write and check: not on the GUI thread.
+    m_inFlight = true;
+    m_writing.setFuture(QtConcurrent::run(writeAutosave, m_doc->rig(), m_doc->filePath(), rigPath(), metaPath()));
+}
+
+void Autosave::waitForWrite() {
+    if (!m_inFlight) return;
+    m_writing.waitForFinished();
+    m_inFlight = false;  // the watcher's queued finished() is ignored
+    m_writeAgain = false;
+    finishWrite(m_writing.result());
 }
 
 void Autosave::discard() {
+    waitForWrite();  // a write in flight must not recreate the files after they are removed
     const bool had = QFile::exists(rigPath()) || QFile::exists(metaPath());
     QFile::remove(metaPath());
     QFile::remove(rigPath());

@@ -13,6 +13,7 @@
 
 #include <QDateTime>
 #include <QElapsedTimer>
+#include <QFutureWatcher>
 #include <QLockFile>
 #include <QObject>
 #include <QString>
@@ -59,9 +60,10 @@ public:
 
     void setDelay(int ms) { m_delayMs = ms; }
     void setMaxDelay(int ms) { m_maxDelayMs = ms; }
-    bool isPending() const { return m_timer.isActive(); }
+    bool isPending() const { return m_timer.isActive() || m_inFlight; }
 
-    // Writes the autosave now when the document has unsaved changes, else removes it. False on a write error.
+    // Writes the autosave now (blocking) when the document has unsaved changes, else removes it. False on a
+    // write error. The debounced autosaves write on a worker thread (a copy of the rig) instead.
     bool saveNow();
     void discard();  // removes this session's autosave files (keeps the lock)
 
@@ -85,6 +87,9 @@ signals:
 private:
     void schedule();
     void onModifiedChanged(bool modified);
+    void saveInBackground();
+    void waitForWrite();
+    void finishWrite(const QString& error);
 
     Document* m_doc;
     QString m_dir, m_id;
@@ -93,6 +98,8 @@ private:
     QElapsedTimer m_pendingSince;
     int m_delayMs = kDefaultDelayMs, m_maxDelayMs = kMaxDelayMs;
     QString m_lastError;
+    QFutureWatcher<QString> m_writing;
+    bool m_inFlight = false, m_writeAgain = false;
 };
 
 }  // namespace lr

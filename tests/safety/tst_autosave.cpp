@@ -160,6 +160,31 @@ private slots:
         QVERIFY(!QFile::exists(autosave.rigPath()));
     }
 
+    // The debounced autosave writes on a worker thread. A clean save while that write is in flight must win:
+    // the autosave must not reappear afterwards.
+    void backgroundWrite_thenCleanSave_leavesNoAutosave() {
+        Document doc;
+        doc.newRig(lrtest::pointRig(kMaxRigLights));  // large: the write takes a while
+        QCOMPARE(doc.saveAs(original()), QString());
+        Autosave autosave(&doc, dir());
+        autosave.setDelay(0);
+        QSignalSpy saved(&autosave, &Autosave::saved);
+        for (int round = 0; round < 5; ++round) {
+            QVERIFY(doc.setLightValue({round}, LightProperty::Intensity, 2.0 + round));
+            if (round % 2) QTest::qWait(5);  // odd rounds: the timer fired, the write is (most likely) in flight
+            else QTRY_VERIFY(!autosave.isPending());  // even rounds: after it finished
+            QCOMPARE(doc.save(), QString());
+            QTest::qWait(50);
+            QVERIFY(!QFile::exists(autosave.rigPath()));
+            QVERIFY(!QFile::exists(autosave.metaPath()));
+        }
+        // And a background write that completes leaves exactly the rig.
+        QVERIFY(doc.setLightValue({7}, LightProperty::Intensity, 9.0));
+        const int before = saved.count();
+        QTRY_VERIFY_WITH_TIMEOUT(saved.count() > before, 20000);
+        QCOMPARE(canonical(readRig(autosave.rigPath())), canonical(doc.rig()));
+    }
+
     void cleanExit_removesEverything() {
         Document doc;
         doc.newRig(lrtest::sampleRig());
