@@ -40,7 +40,8 @@ QString newSessionId() {
 
 bool writeAtomically(const QString& path, const QByteArray& data, QString* error) {
     QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(data) != data.size() || !file.flush() || !file.commit()) {
+    if (!file.open(QIODevice::WriteOnly) || file.write(data) != data.size() || !file.flush() ||
+        !file.commit()) {
         *error = QStringLiteral("%1: %2").arg(path, file.errorString());
         file.cancelWriting();
         return false;
@@ -48,7 +49,7 @@ bool writeAtomically(const QString& path, const QByteArray& data, QString* error
     return true;
 }
 
-}  // namespace
+} // namespace
 
 QString Autosave::defaultDir() {
     return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + QStringLiteral("/autosave");
@@ -59,13 +60,14 @@ Autosave::Autosave(Document* document, const QString& dir, QObject* parent)
     QDir().mkpath(m_dir);
     m_lock = makeLock(QDir(m_dir).filePath(m_id + kLockSuffix));
     if (!m_lock->tryLock(0))
-        m_lastError = tr("cannot lock %1 (error %2): autosaves of this session may be offered to another editor")
-                          .arg(QDir(m_dir).filePath(m_id + kLockSuffix))
-                          .arg(int(m_lock->error()));
+        m_lastError =
+            tr("cannot lock %1 (error %2): autosaves of this session may be offered to another editor")
+                .arg(QDir(m_dir).filePath(m_id + kLockSuffix))
+                .arg(int(m_lock->error()));
     m_timer.setSingleShot(true);
     connect(&m_timer, &QTimer::timeout, this, &Autosave::saveInBackground);
     connect(&m_writing, &QFutureWatcher<QString>::finished, this, [this] {
-        if (!std::exchange(m_inFlight, false)) return;  // already handled by waitForWrite()
+        if (!std::exchange(m_inFlight, false)) return; // already handled by waitForWrite()
         finishWrite(m_writing.result());
         if (std::exchange(m_writeAgain, false)) saveInBackground();
     });
@@ -80,11 +82,15 @@ Autosave::Autosave(Document* document, const QString& dir, QObject* parent)
 
 Autosave::~Autosave() {
     discard();
-    m_lock.reset();  // unlocks: removes ID.lock
+    m_lock.reset(); // unlocks: removes ID.lock
 }
 
-QString Autosave::rigPath() const { return QDir(m_dir).filePath(m_id + kRigSuffix); }
-QString Autosave::metaPath() const { return QDir(m_dir).filePath(m_id + kMetaSuffix); }
+QString Autosave::rigPath() const {
+    return QDir(m_dir).filePath(m_id + kRigSuffix);
+}
+QString Autosave::metaPath() const {
+    return QDir(m_dir).filePath(m_id + kMetaSuffix);
+}
 
 void Autosave::schedule() {
     if (!m_doc->isModified()) {
@@ -101,7 +107,8 @@ void Autosave::schedule() {
 }
 
 void Autosave::onModifiedChanged(bool modified) {
-    if (modified) schedule();
+    if (modified)
+        schedule();
     else {
         m_timer.stop();
         discard();
@@ -111,7 +118,8 @@ void Autosave::onModifiedChanged(bool modified) {
 namespace {
 // The rig first, then the sidecar: a sidecar never points at a missing or older rig, and a rig without a
 // sidecar is still offered (without its original path). Runs on a worker thread: only copies are used.
-QString writeAutosave(const Rig& rig, const QString& original, const QString& rigPath, const QString& metaPath) {
+QString writeAutosave(const Rig& rig, const QString& original, const QString& rigPath,
+                      const QString& metaPath) {
     QString error;
     if (!saveRigFile(rig, rigPath, &error)) return error;
     QJsonObject meta;
@@ -122,12 +130,14 @@ QString writeAutosave(const Rig& rig, const QString& original, const QString& ri
     if (!writeAtomically(metaPath, QJsonDocument(meta).toJson(), &error)) return error;
     return {};
 }
-}  // namespace
+} // namespace
 
 void Autosave::finishWrite(const QString& error) {
     m_lastError = error;
-    if (error.isEmpty()) emit saved(rigPath());
-    else emit failed(error);
+    if (error.isEmpty())
+        emit saved(rigPath());
+    else
+        emit failed(error);
 }
 
 bool Autosave::saveNow() {
@@ -146,25 +156,26 @@ void Autosave::saveInBackground() {
         discard();
         return;
     }
-    if (m_inFlight) {  // one write at a time; the newest state follows when it is done
+    if (m_inFlight) { // one write at a time; the newest state follows when it is done
         m_writeAgain = true;
         return;
     }
     // A 4096-light rig takes a few hundred milliseconds to write and check: not on the GUI thread.
     m_inFlight = true;
-    m_writing.setFuture(QtConcurrent::run(writeAutosave, m_doc->rig(), m_doc->filePath(), rigPath(), metaPath()));
+    m_writing.setFuture(
+        QtConcurrent::run(writeAutosave, m_doc->rig(), m_doc->filePath(), rigPath(), metaPath()));
 }
 
 void Autosave::waitForWrite() {
     if (!m_inFlight) return;
     m_writing.waitForFinished();
-    m_inFlight = false;  // the watcher's queued finished() is ignored
+    m_inFlight = false; // the watcher's queued finished() is ignored
     m_writeAgain = false;
     finishWrite(m_writing.result());
 }
 
 void Autosave::discard() {
-    waitForWrite();  // a write in flight must not recreate the files after they are removed
+    waitForWrite(); // a write in flight must not recreate the files after they are removed
     const bool had = QFile::exists(rigPath()) || QFile::exists(metaPath());
     QFile::remove(metaPath());
     QFile::remove(rigPath());
@@ -176,18 +187,19 @@ std::vector<RecoveredAutosave> Autosave::findRecoverable(const QString& dirPath)
     const QDir dir(dirPath);
     if (!dir.exists()) return out;
     QStringList ids;
-    for (const QString& f : dir.entryList({QLatin1Char('*') + kRigSuffix, QLatin1Char('*') + kLockSuffix}, QDir::Files))
+    for (const QString& f :
+         dir.entryList({QLatin1Char('*') + kRigSuffix, QLatin1Char('*') + kLockSuffix}, QDir::Files))
         ids << (f.endsWith(kRigSuffix) ? f.chopped(kRigSuffix.size()) : f.chopped(kLockSuffix.size()));
     ids.removeDuplicates();
     for (const QString& id : ids) {
         std::shared_ptr<QLockFile> lock = makeLock(dir.filePath(id + kLockSuffix));
-        if (!lock->tryLock(0)) continue;  // a running editor's (or one we may not touch)
+        if (!lock->tryLock(0)) continue; // a running editor's (or one we may not touch)
         RecoveredAutosave a;
         a.id = id;
         a.rigPath = dir.filePath(id + kRigSuffix);
         a.metaPath = dir.filePath(id + kMetaSuffix);
         a.lock = lock;
-        if (!QFile::exists(a.rigPath)) {  // a crash before the first autosave: only the lock was left
+        if (!QFile::exists(a.rigPath)) { // a crash before the first autosave: only the lock was left
             remove(a);
             continue;
         }
@@ -195,13 +207,15 @@ std::vector<RecoveredAutosave> Autosave::findRecoverable(const QString& dirPath)
         if (metaFile.open(QIODevice::ReadOnly) && metaFile.size() < 64 * 1024) {
             const QJsonObject meta = QJsonDocument::fromJson(metaFile.readAll()).object();
             a.originalPath = meta.value(QStringLiteral("original")).toString();
-            a.saved = QDateTime::fromString(meta.value(QStringLiteral("saved")).toString(), Qt::ISODateWithMs);
+            a.saved =
+                QDateTime::fromString(meta.value(QStringLiteral("saved")).toString(), Qt::ISODateWithMs);
             a.rigName = meta.value(QStringLiteral("name")).toString();
         }
         if (!a.saved.isValid()) a.saved = QFileInfo(a.rigPath).lastModified().toUTC();
         out.push_back(std::move(a));
     }
-    std::sort(out.begin(), out.end(), [](const RecoveredAutosave& x, const RecoveredAutosave& y) { return x.saved > y.saved; });
+    std::sort(out.begin(), out.end(),
+              [](const RecoveredAutosave& x, const RecoveredAutosave& y) { return x.saved > y.saved; });
     return out;
 }
 
@@ -217,7 +231,7 @@ QString Autosave::restore(Document* document, const RecoveredAutosave& autosave,
                         .arg(autosave.originalPath, error.section(QLatin1Char('\n'), 0, 0));
     }
     if (!base) document->newRig(Rig{});
-    if (document->rig() == *recovered.rig) return {};  // the file already holds exactly this rig
+    if (document->rig() == *recovered.rig) return {}; // the file already holds exactly this rig
     QString error;
     if (!document->replaceRig(*recovered.rig, tr("Recover unsaved changes"), &error)) return error;
     return {};
@@ -230,4 +244,4 @@ void Autosave::remove(RecoveredAutosave& autosave) {
     autosave.lock.reset();
 }
 
-}  // namespace lr
+} // namespace lr

@@ -1,8 +1,8 @@
-// Autosave and crash recovery (issue 6). The open rig is written to the app-data folder (never over the user's
-// file) a few seconds after each change, atomically (saveRigFile), with a small sidecar naming the rig's own
-// file and the time. A clean save, undoing back to the saved state, loading another rig or a clean exit
-// removes it. Each running editor holds a QLockFile for its autosave, so at the next start an autosave whose
-// lock is no longer held (the session crashed or was killed) can be offered for recovery.
+// Autosave and crash recovery (issue 6). The open rig is written to the app-data folder (never over the
+// user's file) a few seconds after each change, atomically (saveRigFile), with a small sidecar naming the
+// rig's own file and the time. A clean save, undoing back to the saved state, loading another rig or a clean
+// exit removes it. Each running editor holds a QLockFile for its autosave, so at the next start an autosave
+// whose lock is no longer held (the session crashed or was killed) can be offered for recovery.
 //
 // Files in dir() for a session ID: ID.lock (QLockFile: pid, app, host), ID.rig.json (the rig), ID.meta.json
 // ({"original": "/path/rig.json" or "", "saved": ISO-8601 UTC, "name": rig name, "lights": N}).
@@ -29,19 +29,19 @@ class Document;
 // lock, so no other starting editor offers the same autosave.
 struct RecoveredAutosave {
     QString id;
-    QString rigPath;       // ID.rig.json
-    QString metaPath;      // ID.meta.json
-    QString originalPath;  // the rig's own file when it had one, else ""
-    QDateTime saved;       // when it was autosaved (UTC); invalid when the sidecar is missing or broken
+    QString rigPath;      // ID.rig.json
+    QString metaPath;     // ID.meta.json
+    QString originalPath; // the rig's own file when it had one, else ""
+    QDateTime saved;      // when it was autosaved (UTC); invalid when the sidecar is missing or broken
     QString rigName;
     std::shared_ptr<QLockFile> lock;
 };
 
 class Autosave : public QObject {
     Q_OBJECT
-public:
-    static constexpr int kDefaultDelayMs = 3000;   // after the last change
-    static constexpr int kMaxDelayMs = 30000;      // at the latest, even while changes keep coming
+  public:
+    static constexpr int kDefaultDelayMs = 3000; // after the last change
+    static constexpr int kMaxDelayMs = 30000;    // at the latest, even while changes keep coming
 
     // QStandardPaths::AppDataLocation + "/autosave".
     static QString defaultDir();
@@ -53,10 +53,10 @@ public:
 
     QString dir() const { return m_dir; }
     QString sessionId() const { return m_id; }
-    QString rigPath() const;   // this session's autosave (may not exist)
+    QString rigPath() const; // this session's autosave (may not exist)
     QString metaPath() const;
     bool isLocked() const { return m_lock && m_lock->isLocked(); }
-    QString lastError() const { return m_lastError; }  // why the last autosave failed ("" when it worked)
+    QString lastError() const { return m_lastError; } // why the last autosave failed ("" when it worked)
 
     void setDelay(int ms) { m_delayMs = ms; }
     void setMaxDelay(int ms) { m_maxDelayMs = ms; }
@@ -65,7 +65,7 @@ public:
     // Writes the autosave now (blocking) when the document has unsaved changes, else removes it. False on a
     // write error. The debounced autosaves write on a worker thread (a copy of the rig) instead.
     bool saveNow();
-    void discard();  // removes this session's autosave files (keeps the lock)
+    void discard(); // removes this session's autosave files (keeps the lock)
 
     // Autosaves in `dir` whose session is gone (its lock is free or stale), newest first, each with its lock
     // now held by the caller. Sessions still running are skipped. Leftover locks without an autosave are
@@ -79,12 +79,12 @@ public:
     // Removes a recovered autosave's files and releases its lock.
     static void remove(RecoveredAutosave& autosave);
 
-signals:
+  signals:
     void saved(const QString& rigPath);
     void discarded();
     void failed(const QString& error);
 
-private:
+  private:
     void schedule();
     void onModifiedChanged(bool modified);
     void saveInBackground();
@@ -102,4 +102,4 @@ private:
     bool m_inFlight = false, m_writeAgain = false;
 };
 
-}  // namespace lr
+} // namespace lr

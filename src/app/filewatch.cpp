@@ -13,14 +13,14 @@ namespace lr {
 
 namespace {
 QString absolute(const QString& path) {
-    if (path.isEmpty() || path.startsWith(QLatin1String(":/"))) return {};  // untitled or a built-in preset
+    if (path.isEmpty() || path.startsWith(QLatin1String(":/"))) return {}; // untitled or a built-in preset
     return QFileInfo(path).absoluteFilePath();
 }
-}  // namespace
+} // namespace
 
 RigFileWatch::RigFileWatch(Document* document, QObject* parent) : QObject(parent), m_doc(document) {
     m_debounce.setSingleShot(true);
-    m_debounce.setInterval(300);  // editors write in several steps; look once they are done
+    m_debounce.setInterval(300); // editors write in several steps; look once they are done
     connect(&m_debounce, &QTimer::timeout, this, &RigFileWatch::checkNow);
     connect(&m_watcher, &QFileSystemWatcher::fileChanged, this, [this] { m_debounce.start(); });
     connect(&m_watcher, &QFileSystemWatcher::directoryChanged, this, [this] { m_debounce.start(); });
@@ -65,7 +65,9 @@ void RigFileWatch::follow(const QString& path) {
     rewatch();
 }
 
-void RigFileWatch::resetBaseline() { m_baseline = m_path.isEmpty() ? Fingerprint{} : readFingerprint(m_path); }
+void RigFileWatch::resetBaseline() {
+    m_baseline = m_path.isEmpty() ? Fingerprint{} : readFingerprint(m_path);
+}
 
 void RigFileWatch::rewatch() {
     if (m_path.isEmpty()) return;
@@ -83,11 +85,12 @@ void RigFileWatch::checkNow() {
     if (now.size < 0) {
         m_baseline = now;
         if (notify)
-            notify(tr("%1 was deleted or renamed on disk. The rig is still open; save it to write the file again.")
+            notify(tr("%1 was deleted or renamed on disk. The rig is still open; save it to write the file "
+                      "again.")
                        .arg(QDir::toNativeSeparators(m_path)));
         return;
     }
-    if (isOurs(now)) {  // our own save, or someone wrote exactly this rig
+    if (isOurs(now)) { // our own save, or someone wrote exactly this rig
         m_baseline = now;
         return;
     }
@@ -104,12 +107,13 @@ void RigFileWatch::checkNow() {
             resetBaseline();
             emit reloaded(path);
         } else {
-            m_baseline = now;  // seen; the rig stays as it was
+            m_baseline = now; // seen; the rig stays as it was
             if (notify)
-                notify(tr("Could not reload %1; the rig is unchanged.\n%2").arg(QDir::toNativeSeparators(path), error));
+                notify(tr("Could not reload %1; the rig is unchanged.\n%2")
+                           .arg(QDir::toNativeSeparators(path), error));
         }
     } else {
-        m_baseline = now;  // acknowledged: the next save overwrites it without asking again
+        m_baseline = now; // acknowledged: the next save overwrites it without asking again
     }
     // The file may have changed again while the question was open.
     if (readFingerprint(m_path) != m_baseline) m_debounce.start();
@@ -126,4 +130,4 @@ bool RigFileWatch::confirmSave(const QString& path) {
     return overwrite;
 }
 
-}  // namespace lr
+} // namespace lr

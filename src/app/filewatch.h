@@ -22,7 +22,7 @@ class Document;
 
 class RigFileWatch : public QObject {
     Q_OBJECT
-public:
+  public:
     enum class ChangedAnswer { Reload, KeepMine };
 
     explicit RigFileWatch(Document* document, QObject* parent = nullptr);
@@ -45,21 +45,21 @@ public:
     void checkNow();
     void setDebounce(int ms) { m_debounce.setInterval(ms); }
 
-signals:
-    void changedOnDisk(const QString& path);  // an external change was noticed (before asking)
+  signals:
+    void changedOnDisk(const QString& path); // an external change was noticed (before asking)
     void reloaded(const QString& path);
 
-private:
+  private:
     struct Fingerprint {
-        qint64 size = -1;  // -1: no file
+        qint64 size = -1; // -1: no file
         QByteArray sha256;
         bool operator==(const Fingerprint&) const = default;
     };
     static Fingerprint fingerprintOf(const QByteArray& data);
     static Fingerprint readFingerprint(const QString& path, QByteArray* data = nullptr);
-    bool isOurs(const Fingerprint& f) const;  // what the editor would write for the current rig
+    bool isOurs(const Fingerprint& f) const; // what the editor would write for the current rig
 
-    void follow(const QString& path);  // start watching path (""): nothing; baseline = disk now
+    void follow(const QString& path); // start watching path (""): nothing; baseline = disk now
     void rewatch();
     void resetBaseline();
 
@@ -71,4 +71,4 @@ private:
     bool m_asking = false;
 };
 
-}  // namespace lr
+} // namespace lr

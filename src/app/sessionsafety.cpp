@@ -19,13 +19,13 @@ namespace {
 
 QString describeAutosave(const RecoveredAutosave& a) {
     const QString name = a.rigName.isEmpty() ? QObject::tr("(unnamed)") : a.rigName;
-    const QString file = a.originalPath.isEmpty() ? QObject::tr("never saved")
-                                                  : QDir::toNativeSeparators(a.originalPath);
+    const QString file =
+        a.originalPath.isEmpty() ? QObject::tr("never saved") : QDir::toNativeSeparators(a.originalPath);
     return QObject::tr("the rig \"%1\" (%2), autosaved %3")
         .arg(name, file, QLocale().toString(a.saved.toLocalTime(), QLocale::ShortFormat));
 }
 
-}  // namespace
+} // namespace
 
 SessionSafety::SessionSafety(MainWindow* window, const QString& autosaveDir)
     : QObject(window), m_window(window), m_autosave(new Autosave(window->document(), autosaveDir, this)),
@@ -45,21 +45,25 @@ SessionSafety::SessionSafety(MainWindow* window, const QString& autosaveDir)
     m_watch->askChanged = [this](const QString& path, bool modified) {
         const QString file = QFileInfo(path).fileName();
         QMessageBox box(QMessageBox::Question, tr("Rig changed on disk"),
-                        tr("%1 was changed on disk by another program.").arg(file), QMessageBox::NoButton, m_window);
-        box.setInformativeText(modified ? tr("Reload it and lose your unsaved changes, or keep your version "
-                                             "(saving will overwrite the file)?")
-                                        : tr("Reload it, or keep the version shown (saving will overwrite the file)?"));
+                        tr("%1 was changed on disk by another program.").arg(file), QMessageBox::NoButton,
+                        m_window);
+        box.setInformativeText(
+            modified ? tr("Reload it and lose your unsaved changes, or keep your version "
+                          "(saving will overwrite the file)?")
+                     : tr("Reload it, or keep the version shown (saving will overwrite the file)?"));
         QPushButton* reload = box.addButton(tr("&Reload"), QMessageBox::DestructiveRole);
         QPushButton* keep = box.addButton(tr("&Keep mine"), QMessageBox::RejectRole);
         box.setDefaultButton(modified ? keep : reload);
         box.exec();
-        return box.clickedButton() == reload ? RigFileWatch::ChangedAnswer::Reload : RigFileWatch::ChangedAnswer::KeepMine;
+        return box.clickedButton() == reload ? RigFileWatch::ChangedAnswer::Reload
+                                             : RigFileWatch::ChangedAnswer::KeepMine;
     };
     m_watch->askOverwrite = [this](const QString& path) {
-        return QMessageBox::warning(m_window, tr("Overwrite changed file?"),
-                                    tr("%1 has changed on disk since it was opened. Overwrite it with your rig?")
-                                        .arg(QDir::toNativeSeparators(path)),
-                                    QMessageBox::Save | QMessageBox::Cancel, QMessageBox::Cancel) == QMessageBox::Save;
+        return QMessageBox::warning(
+                   m_window, tr("Overwrite changed file?"),
+                   tr("%1 has changed on disk since it was opened. Overwrite it with your rig?")
+                       .arg(QDir::toNativeSeparators(path)),
+                   QMessageBox::Save | QMessageBox::Cancel, QMessageBox::Cancel) == QMessageBox::Save;
     };
     m_watch->notify = [this](const QString& text) { m_window->statusBar()->showMessage(text, 15000); };
     connect(m_autosave, &Autosave::failed, this, [this](const QString& error) {
@@ -83,7 +87,7 @@ bool SessionSafety::offerRecovery() {
         QMessageBox::warning(m_window, tr("Recover unsaved changes"),
                              tr("The autosave could not be restored; it is kept in %1.\n\n%2")
                                  .arg(QDir::toNativeSeparators(newest.rigPath), error));
-        return false;  // the lock is released with `found`; the file stays for another try
+        return false; // the lock is released with `found`; the file stays for another try
     }
     // Safe under this session before the old copy goes.
     if (m_window->document()->isModified() && !m_autosave->saveNow()) return true;
@@ -98,4 +102,4 @@ SessionSafety* installSessionSafety(MainWindow* window, bool offerRecovery) {
     return safety;
 }
 
-}  // namespace lr
+} // namespace lr

@@ -16,7 +16,7 @@ class RigFileWatch;
 
 class SessionSafety : public QObject {
     Q_OBJECT
-public:
+  public:
     enum class RecoveryAnswer { Restore, Discard };
 
     // Parented to the window; a clean exit (the window destroyed) removes this session's autosave.
@@ -32,7 +32,7 @@ public:
     // session; Discard deletes it. Returns true when a rig was restored.
     bool offerRecovery();
 
-private:
+  private:
     MainWindow* m_window;
     Autosave* m_autosave;
     RigFileWatch* m_watch;
@@ -42,4 +42,4 @@ private:
 // autosave once the event loop runs (not in scripted runs: screenshot mode, --no-restore).
 SessionSafety* installSessionSafety(MainWindow* window, bool offerRecovery);
 
-}  // namespace lr
+} // namespace lr

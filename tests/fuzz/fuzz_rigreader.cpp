@@ -15,12 +15,12 @@ namespace {
 
 [[noreturn]] void fail(const char* what, const QByteArray& a, const QByteArray& b) {
     std::fprintf(stderr, "fuzz_rigreader: %s\n--- first ---\n%.*s\n--- second ---\n%.*s\n", what,
-                 int(std::min<qsizetype>(a.size(), 4000)), a.constData(), int(std::min<qsizetype>(b.size(), 4000)),
-                 b.constData());
+                 int(std::min<qsizetype>(a.size(), 4000)), a.constData(),
+                 int(std::min<qsizetype>(b.size(), 4000)), b.constData());
     std::abort();
 }
 
-}  // namespace
+} // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const QByteArray input = QByteArray::fromRawData(reinterpret_cast<const char*>(data), qsizetype(size));
@@ -30,8 +30,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
 
     const QByteArray written = lr::writeRigJson(*first.rig);
     const lr::RigReadResult second = lr::readRigJson(written, QStringLiteral("fuzz-written.json"));
-    if (!second.ok()) fail(qPrintable(QStringLiteral("the written rig does not read back: ") + second.errors.join(u'\n')),
-                           input, written);
+    if (!second.ok())
+        fail(qPrintable(QStringLiteral("the written rig does not read back: ") + second.errors.join(u'\n')),
+             input, written);
     if (!second.warnings.isEmpty()) fail("the written rig reads back with warnings", input, written);
     if (!(*second.rig == *first.rig)) fail("read -> write -> read changed the rig", input, written);
     const QByteArray rewritten = lr::writeRigJson(*second.rig);

@@ -1,6 +1,6 @@
 // A test executable that can also be its own child process: `TEST --child-NAME ARGS...` runs
-// childMain(arguments) instead of the tests. Used to kill a real process mid-save or mid-session (SIGKILL) and
-// look at what it left behind.
+// childMain(arguments) instead of the tests. Used to kill a real process mid-save or mid-session (SIGKILL)
+// and look at what it left behind.
 #pragma once
 
 #include <QCoreApplication>
@@ -9,13 +9,13 @@
 #include <cstring>
 
 // childMain(QStringList args) gets {"--child-NAME", ARGS...}; it returns the exit code or runs app.exec().
-#define LIGHTRIG_TEST_MAIN_WITH_CHILD(AppClass, TestClass, childMain)                                         \
-    int main(int argc, char** argv) {                                                                           \
-        AppClass app(argc, argv);                                                                              \
-        if (argc > 1 && std::strncmp(argv[1], "--child-", 8) == 0) return childMain(app.arguments().mid(1));    \
-        TestClass test;                                                                                        \
-        QTEST_SET_MAIN_SOURCE_PATH                                                                             \
-        return QTest::qExec(&test, argc, argv);                                                                \
+#define LIGHTRIG_TEST_MAIN_WITH_CHILD(AppClass, TestClass, childMain)                                        \
+    int main(int argc, char** argv) {                                                                        \
+        AppClass app(argc, argv);                                                                            \
+        if (argc > 1 && std::strncmp(argv[1], "--child-", 8) == 0) return childMain(app.arguments().mid(1)); \
+        TestClass test;                                                                                      \
+        QTEST_SET_MAIN_SOURCE_PATH                                                                           \
+        return QTest::qExec(&test, argc, argv);                                                              \
     }
 
 namespace safetytest {
@@ -39,4 +39,4 @@ inline bool waitForLine(QProcess& p, const QByteArray& line, QByteArray* all, in
     return false;
 }
 
-}  // namespace safetytest
+} // namespace safetytest

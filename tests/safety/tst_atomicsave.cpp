@@ -25,7 +25,8 @@ Rig largeRig(int version) {
     rig.ambient = glm::dvec3(0.01 * (version + 1));
     for (int i = 0; i < kMaxRigLights; ++i) {
         const LightType type = LightType(i % 4);
-        Light l = makeLight(type, QStringLiteral("light %1 of version %2 ").arg(i).arg(version) + QString(40, QChar(u'x')));
+        Light l = makeLight(type, QStringLiteral("light %1 of version %2 ").arg(i).arg(version) +
+                                      QString(40, QChar(u'x')));
         l.intensity = 1.0 + i * 0.001 + version;
         l.color = glm::dvec3(0.5 + 0.1 * version, 0.25, 1.0 / (i + 1));
         if (l.usesPosition()) l.position = glm::dvec3(i * 0.1, -i * 0.2, version + 0.5);
@@ -34,7 +35,9 @@ Rig largeRig(int version) {
     return rig;
 }
 
-QByteArray hashOf(const QByteArray& data) { return QCryptographicHash::hash(data, QCryptographicHash::Sha256); }
+QByteArray hashOf(const QByteArray& data) {
+    return QCryptographicHash::hash(data, QCryptographicHash::Sha256);
+}
 
 // --child-saver TARGET: prints "ready", then saves version 0, 1, 0, 1, ... forever, printing "begin N" before
 // and "end N" after save number N (N = 0, 1, 2, ...; version N % 2).
@@ -56,20 +59,20 @@ int childMain(const QStringList& args) {
     }
 }
 
-}  // namespace
+} // namespace
 
 class TestAtomicSave : public QObject {
     Q_OBJECT
-private slots:
+  private slots:
     void killedMidSave_leavesOldOrNewFile() {
         QTemporaryDir tmp;
         const QString target = tmp.filePath(QStringLiteral("rig.json"));
         const QByteArray versions[2] = {writeRigJson(largeRig(0)), writeRigJson(largeRig(1))};
-        QVERIFY(versions[0].size() > 1'000'000);  // large enough that a write takes a while
+        QVERIFY(versions[0].size() > 1'000'000); // large enough that a write takes a while
         const QByteArray hashes[2] = {hashOf(versions[0]), hashOf(versions[1])};
         QString error;
         QVERIFY2(saveRigFile(largeRig(1), target, &error), qPrintable(error));
-        int lastVersion = 1;  // what the file holds before the next child starts
+        int lastVersion = 1; // what the file holds before the next child starts
 
         constexpr int kKills = 60;
         int midSave = 0, totalSaves = 0;
@@ -88,9 +91,12 @@ private slots:
             // What the child had done when it died.
             qint64 lastBegin = -1, lastEnd = -1;
             for (const QByteArray& line : out.split('\n')) {
-                if (line.startsWith("begin ")) lastBegin = line.mid(6).toLongLong();
-                else if (line.startsWith("end ")) lastEnd = line.mid(4).toLongLong();
-                else if (line.startsWith("error ")) QFAIL(line.constData());
+                if (line.startsWith("begin "))
+                    lastBegin = line.mid(6).toLongLong();
+                else if (line.startsWith("end "))
+                    lastEnd = line.mid(4).toLongLong();
+                else if (line.startsWith("error "))
+                    QFAIL(line.constData());
             }
             totalSaves += int(lastEnd + 1);
             const bool killedDuringSave = lastBegin > lastEnd;
@@ -100,11 +106,13 @@ private slots:
             QVERIFY(file.open(QIODevice::ReadOnly));
             const QByteArray bytes = file.readAll();
             const RigReadResult read = readRigJson(bytes, target);
-            QVERIFY2(read.ok(), qPrintable(QStringLiteral("kill %1: the file does not read: %2")
-                                               .arg(k)
-                                               .arg(read.errors.value(0))));
+            QVERIFY2(
+                read.ok(),
+                qPrintable(
+                    QStringLiteral("kill %1: the file does not read: %2").arg(k).arg(read.errors.value(0))));
             const QByteArray h = hashOf(bytes);
-            QVERIFY2(h == hashes[0] || h == hashes[1], qPrintable(QStringLiteral("kill %1: neither version").arg(k)));
+            QVERIFY2(h == hashes[0] || h == hashes[1],
+                     qPrintable(QStringLiteral("kill %1: neither version").arg(k)));
             const int now = h == hashes[0] ? 0 : 1;
             // The last finished save's version, or the one in progress (killed between rename and "end").
             const int finished = lastEnd >= 0 ? int(lastEnd % 2) : lastVersion;
@@ -120,7 +128,8 @@ private slots:
         qInfo("%d kills, %d of them during a save; %d saves completed in all", kKills, midSave, totalSaves);
         // The point of the test: most kills land inside saveRigFile (the child does nothing else).
         QVERIFY2(midSave >= kKills / 2, qPrintable(QString::number(midSave)));
-        // A killed QSaveFile may leave its temporary file (rig.json.XXXXXX) beside the target; never the target.
+        // A killed QSaveFile may leave its temporary file (rig.json.XXXXXX) beside the target; never the
+        // target.
         const QStringList left = QDir(tmp.path()).entryList(QDir::Files);
         QVERIFY(left.contains(QStringLiteral("rig.json")));
         qInfo("files left beside the target: %lld", static_cast<long long>(left.size() - 1));

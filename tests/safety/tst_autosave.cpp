@@ -33,7 +33,9 @@ Rig readRig(const QString& path) {
 
 // Rigs compared in their file form: values a light's type does not use (a directional light's falloff)
 // are not saved, so a rig made in memory and the same rig read back may differ only there.
-QString canonical(const Rig& rig) { return QString::fromUtf8(writeRigJson(rig)); }
+QString canonical(const Rig& rig) {
+    return QString::fromUtf8(writeRigJson(rig));
+}
 
 // The edits the child makes after loading the original; the parent repeats them to know what to expect.
 void makeEdits(Document& doc) {
@@ -61,7 +63,7 @@ int childMain(const QStringList& args) {
     return QCoreApplication::exec();
 }
 
-}  // namespace
+} // namespace
 
 class TestAutosave : public QObject {
     Q_OBJECT
@@ -70,7 +72,7 @@ class TestAutosave : public QObject {
     QString original() const { return m_tmp.filePath(QStringLiteral("user.json")); }
     int files() const { return int(QDir(dir()).entryList(QDir::Files | QDir::Hidden).size()); }
 
-private slots:
+  private slots:
     void init() {
         QDir(dir()).removeRecursively();
         writeRig(original(), lrtest::sampleRig());
@@ -78,7 +80,8 @@ private slots:
 
     void defaultDir_isInAppData() {
         QStandardPaths::setTestModeEnabled(true);
-        QVERIFY(Autosave::defaultDir().startsWith(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)));
+        QVERIFY(Autosave::defaultDir().startsWith(
+            QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)));
         QVERIFY(Autosave::defaultDir().endsWith(QLatin1String("/autosave")));
     }
 
@@ -95,7 +98,7 @@ private slots:
         QSignalSpy saved(&autosave, &Autosave::saved);
         QVERIFY(doc.setLightValue({0}, LightProperty::Intensity, 3.0));
         QVERIFY(autosave.isPending());
-        QVERIFY(!QFile::exists(autosave.rigPath()));  // debounced: not written at once
+        QVERIFY(!QFile::exists(autosave.rigPath())); // debounced: not written at once
         QVERIFY(doc.setLightValue({0}, LightProperty::Intensity, 4.0));
         QTRY_COMPARE_WITH_TIMEOUT(saved.count(), 1, 10000);
         QCOMPARE(canonical(readRig(autosave.rigPath())), canonical(doc.rig()));
@@ -104,7 +107,8 @@ private slots:
         QVERIFY(metaFile.open(QIODevice::ReadOnly));
         const QJsonObject meta = QJsonDocument::fromJson(metaFile.readAll()).object();
         QCOMPARE(meta.value(QStringLiteral("original")).toString(), original());
-        const QDateTime when = QDateTime::fromString(meta.value(QStringLiteral("saved")).toString(), Qt::ISODateWithMs);
+        const QDateTime when =
+            QDateTime::fromString(meta.value(QStringLiteral("saved")).toString(), Qt::ISODateWithMs);
         QVERIFY(when.isValid());
         QVERIFY(qAbs(when.secsTo(QDateTime::currentDateTimeUtc())) < 60);
         // The user's file is untouched.
@@ -133,7 +137,8 @@ private slots:
         Autosave autosave(&doc, dir());
         const auto edited = [&] {
             if (!doc.setLightValue({0}, LightProperty::Intensity, doc.light(0).intensity + 1.0)) return false;
-            return autosave.saveNow() && QFile::exists(autosave.rigPath()) && QFile::exists(autosave.metaPath());
+            return autosave.saveNow() && QFile::exists(autosave.rigPath()) &&
+                   QFile::exists(autosave.metaPath());
         };
         // Undo back to the saved state.
         QVERIFY(edited());
@@ -164,15 +169,17 @@ private slots:
     // the autosave must not reappear afterwards.
     void backgroundWrite_thenCleanSave_leavesNoAutosave() {
         Document doc;
-        doc.newRig(lrtest::pointRig(kMaxRigLights));  // large: the write takes a while
+        doc.newRig(lrtest::pointRig(kMaxRigLights)); // large: the write takes a while
         QCOMPARE(doc.saveAs(original()), QString());
         Autosave autosave(&doc, dir());
         autosave.setDelay(0);
         QSignalSpy saved(&autosave, &Autosave::saved);
         for (int round = 0; round < 5; ++round) {
             QVERIFY(doc.setLightValue({round}, LightProperty::Intensity, 2.0 + round));
-            if (round % 2) QTest::qWait(5);  // odd rounds: the timer fired, the write is (most likely) in flight
-            else QTRY_VERIFY(!autosave.isPending());  // even rounds: after it finished
+            if (round % 2)
+                QTest::qWait(5); // odd rounds: the timer fired, the write is (most likely) in flight
+            else
+                QTRY_VERIFY(!autosave.isPending()); // even rounds: after it finished
             QCOMPARE(doc.save(), QString());
             QTest::qWait(50);
             QVERIFY(!QFile::exists(autosave.rigPath()));
@@ -192,7 +199,7 @@ private slots:
             Autosave autosave(&doc, dir());
             QVERIFY(doc.addLight(LightType::Rim));
             QVERIFY(autosave.saveNow());
-            QCOMPARE(files(), 3);  // lock, rig, sidecar
+            QCOMPARE(files(), 3); // lock, rig, sidecar
         }
         QCOMPARE(files(), 0);
         QVERIFY(Autosave::findRecoverable(dir()).empty());
@@ -216,7 +223,7 @@ private slots:
         QVERIFY2(safetytest::waitForLine(child, "saved", &out), out.constData());
         // While it runs, its autosave is its own.
         QVERIFY(Autosave::findRecoverable(dir()).empty());
-        child.kill();  // SIGKILL: no destructor, no cleanup
+        child.kill(); // SIGKILL: no destructor, no cleanup
         QVERIFY(child.waitForFinished(10000));
         QCOMPARE(child.exitStatus(), QProcess::CrashExit);
 
@@ -232,14 +239,14 @@ private slots:
         QCOMPARE(expected.load(original()), QString());
         makeEdits(expected);
 
-        Document doc;  // a fresh start: the default rig, untitled
+        Document doc; // a fresh start: the default rig, untitled
         QString note;
         QCOMPARE(Autosave::restore(&doc, found[0], &note), QString());
         QCOMPARE(note, QString());
         QCOMPARE(canonical(doc.rig()), canonical(expected.rig()));
         QCOMPARE(doc.filePath(), original());
-        QVERIFY(doc.isModified());  // closing asks to save; saving writes the original file
-        doc.undoStack()->undo();    // one step back: what the file holds
+        QVERIFY(doc.isModified()); // closing asks to save; saving writes the original file
+        doc.undoStack()->undo();   // one step back: what the file holds
         QCOMPARE(canonical(doc.rig()), canonical(readRig(original())));
 
         Autosave::remove(found[0]);
@@ -276,8 +283,10 @@ private slots:
             QFile::copy(autosave.rigPath(), m_tmp.filePath(QStringLiteral("keep.rig.json")));
             QFile::copy(autosave.metaPath(), m_tmp.filePath(QStringLiteral("keep.meta.json")));
         }
-        QFile::copy(m_tmp.filePath(QStringLiteral("keep.rig.json")), dir() + QStringLiteral("/crashed.rig.json"));
-        QFile::copy(m_tmp.filePath(QStringLiteral("keep.meta.json")), dir() + QStringLiteral("/crashed.meta.json"));
+        QFile::copy(m_tmp.filePath(QStringLiteral("keep.rig.json")),
+                    dir() + QStringLiteral("/crashed.rig.json"));
+        QFile::copy(m_tmp.filePath(QStringLiteral("keep.meta.json")),
+                    dir() + QStringLiteral("/crashed.meta.json"));
         QVERIFY(QFile::remove(original()));
 
         std::vector<RecoveredAutosave> found = Autosave::findRecoverable(dir());
@@ -296,14 +305,14 @@ private slots:
         QDir().mkpath(dir());
         QFile broken(dir() + QStringLiteral("/crashed.rig.json"));
         QVERIFY(broken.open(QIODevice::WriteOnly));
-        broken.write("{\"format\": \"lightrig\", \"version\": 1, \"lights\": [");  // cut short
+        broken.write("{\"format\": \"lightrig\", \"version\": 1, \"lights\": ["); // cut short
         broken.close();
         std::vector<RecoveredAutosave> found = Autosave::findRecoverable(dir());
         QCOMPARE(found.size(), size_t(1));
         Document doc;
         doc.newRig(lrtest::sampleRig());
         QVERIFY(!Autosave::restore(&doc, found[0]).isEmpty());
-        QCOMPARE(canonical(doc.rig()), canonical(lrtest::sampleRig()));  // unchanged
+        QCOMPARE(canonical(doc.rig()), canonical(lrtest::sampleRig())); // unchanged
         Autosave::remove(found[0]);
     }
 
@@ -319,7 +328,7 @@ private slots:
             QFile f(path);
             QVERIFY(f.open(QIODevice::ReadOnly));
             content = f.readAll();
-        }  // unlocked and removed here
+        } // unlocked and removed here
         QFile f(path);
         QVERIFY(f.open(QIODevice::WriteOnly));
         f.write("2147483000" + content.mid(content.indexOf('\n')));

@@ -52,20 +52,26 @@ struct Asked {
     bool overwriteAnswer = false;
     QStringList notes;
     void install(RigFileWatch& w) {
-        w.askChanged = [this](const QString&, bool) { ++changed; return answer; };
-        w.askOverwrite = [this](const QString&) { ++overwrite; return overwriteAnswer; };
+        w.askChanged = [this](const QString&, bool) {
+            ++changed;
+            return answer;
+        };
+        w.askOverwrite = [this](const QString&) {
+            ++overwrite;
+            return overwriteAnswer;
+        };
         w.notify = [this](const QString& text) { notes << text; };
     }
 };
 
-}  // namespace
+} // namespace
 
 class TestFileWatch : public QObject {
     Q_OBJECT
     QTemporaryDir m_tmp;
     QString path() const { return m_tmp.filePath(QStringLiteral("rig.json")); }
 
-private slots:
+  private slots:
     void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
     void init() {
         QString error;
@@ -113,16 +119,16 @@ private slots:
         QSignalSpy changed(&watch, &RigFileWatch::changedOnDisk);
         writeExternally(path(), otherRig(5.0), true);
         QTRY_COMPARE_WITH_TIMEOUT(asked.changed, 1, 10000);
-        QVERIFY(sawModified);  // the question says that reloading would lose changes
+        QVERIFY(sawModified); // the question says that reloading would lose changes
         QCOMPARE(doc.light(0).intensity, 42.0);
         QVERIFY(doc.isModified());
-        QCOMPARE(readBytes(path()), writeRigJson(otherRig(5.0)));  // nothing overwritten by noticing
+        QCOMPARE(readBytes(path()), writeRigJson(otherRig(5.0))); // nothing overwritten by noticing
         // The user chose to keep theirs: saving overwrites without a second question.
         QVERIFY(watch.confirmSave(path()));
         QCOMPARE(asked.overwrite, 0);
         QCOMPARE(doc.save(), QString());
         QTest::qWait(200);
-        QCOMPARE(asked.changed, 1);  // our own save is not an external change
+        QCOMPARE(asked.changed, 1); // our own save is not an external change
         QCOMPARE(changed.count(), 1);
     }
 
@@ -152,7 +158,7 @@ private slots:
         Document doc;
         QCOMPARE(doc.load(path()), QString());
         RigFileWatch watch(&doc);
-        watch.setDebounce(60000);  // the watcher will not get to it first
+        watch.setDebounce(60000); // the watcher will not get to it first
         Asked asked;
         asked.install(watch);
         QVERIFY(doc.setLightValue({0}, LightProperty::Intensity, 9.0));
@@ -204,7 +210,7 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(asked.notes.size(), 1, 10000);
         QVERIFY(asked.notes.first().contains(QLatin1String("deleted")));
         QCOMPARE(asked.changed, 0);
-        QVERIFY(watch.confirmSave(path()));  // nothing to overwrite
+        QVERIFY(watch.confirmSave(path())); // nothing to overwrite
         // It comes back with other content: noticed (the folder is watched).
         writeExternally(path(), otherRig(3.0), true);
         QTRY_COMPARE_WITH_TIMEOUT(asked.changed, 1, 10000);

@@ -29,21 +29,24 @@ bool modelMatches(const LightTableModel& model, const Document& doc) {
     if (model.rowCount() != doc.lightCount()) return false;
     for (int row = 0; row < doc.lightCount(); ++row) {
         const Light& l = doc.light(row);
-        if (model.index(row, LightTableModel::NameColumn).data(Qt::EditRole).toString() != l.name) return false;
+        if (model.index(row, LightTableModel::NameColumn).data(Qt::EditRole).toString() != l.name)
+            return false;
         if (model.index(row, LightTableModel::IntensityColumn).data(Qt::EditRole).toDouble() != l.intensity)
             return false;
-        const bool on = model.index(row, LightTableModel::OnColumn).data(Qt::CheckStateRole).toInt() == Qt::Checked;
+        const bool on =
+            model.index(row, LightTableModel::OnColumn).data(Qt::CheckStateRole).toInt() == Qt::Checked;
         if (on != l.enabled) return false;
-        if (model.index(row, 0).data(LightTableModel::LightIdRole).toULongLong() != doc.lightId(row)) return false;
+        if (model.index(row, 0).data(LightTableModel::LightIdRole).toULongLong() != doc.lightId(row))
+            return false;
     }
     return true;
 }
 
-}  // namespace
+} // namespace
 
 class TestLoad : public QObject {
     Q_OBJECT
-private slots:
+  private slots:
     void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
 
     // lights: the rig's size; tester: attach QAbstractItemModelTester (it re-checks the whole model on each
@@ -54,7 +57,8 @@ private slots:
         LightTableModel model(&doc);
         std::unique_ptr<QAbstractItemModelTester> check;
         if (tester)
-            check = std::make_unique<QAbstractItemModelTester>(&model, QAbstractItemModelTester::FailureReportingMode::QtTest);
+            check = std::make_unique<QAbstractItemModelTester>(
+                &model, QAbstractItemModelTester::FailureReportingMode::QtTest);
         const int maxLights = lights + 64;
         doc.undoStack()->setUndoLimit(0);
         const QByteArray start = bytes(doc);
@@ -67,23 +71,34 @@ private slots:
             QString error;
             bool ok = false;
             switch (i % 10) {
-            case 0: ok = doc.renameLight(row, QStringLiteral("renamed %1").arg(i), &error); break;
-            case 1: ok = doc.setLightsEnabled({row, (row + 1) % n}, i % 4 == 1, &error); break;
+            case 0:
+                ok = doc.renameLight(row, QStringLiteral("renamed %1").arg(i), &error);
+                break;
+            case 1:
+                ok = doc.setLightsEnabled({row, (row + 1) % n}, i % 4 == 1, &error);
+                break;
             case 2:
                 // Keep within the format's limit: add when there is room, else remove.
                 ok = n < maxLights ? doc.addLight(LightType::Spot, &error) : doc.removeLights({row}, &error);
                 break;
-            case 3: ok = n > 2 ? doc.removeLights({row, (row + 5) % n}, &error) : true; break;
-            case 4: ok = doc.moveLights({row, (row + 3) % n}, (row * 31) % (n + 1), &error); break;
-            default: ok = doc.setLightValue({row}, LightProperty::Intensity, 1.0 + i * 1e-3, &error); break;
+            case 3:
+                ok = n > 2 ? doc.removeLights({row, (row + 5) % n}, &error) : true;
+                break;
+            case 4:
+                ok = doc.moveLights({row, (row + 3) % n}, (row * 31) % (n + 1), &error);
+                break;
+            default:
+                ok = doc.setLightValue({row}, LightProperty::Intensity, 1.0 + i * 1e-3, &error);
+                break;
             }
             // A toggle to the state the lights already have, or a move that leaves them in place, may be
             // refused as a no-op; every other step must be taken.
             if (!ok) ++refused;
-            QVERIFY2(ok || i % 10 == 1 || i % 10 == 4, qPrintable(QStringLiteral("step %1: %2").arg(i).arg(error)));
+            QVERIFY2(ok || i % 10 == 1 || i % 10 == 4,
+                     qPrintable(QStringLiteral("step %1: %2").arg(i).arg(error)));
         }
         const qint64 doMs = timer.restart();
-        QVERIFY(doc.undoStack()->count() <= kSteps - refused);  // a step with nothing to change may push none
+        QVERIFY(doc.undoStack()->count() <= kSteps - refused); // a step with nothing to change may push none
         QVERIFY(refused < kSteps / 10);
         QVERIFY(doc.lightCount() <= maxLights);
         QVERIFY(modelMatches(model, doc));
@@ -107,11 +122,12 @@ private slots:
     void propertiesDock_multiEditOf1000SelectedLights_isOneStep() {
         Document doc;
         doc.newRig(lrtest::pointRig(kMaxRigLights));
-        LightTableModel model(&doc);  // the Lights dock's model follows the edit too
+        LightTableModel model(&doc); // the Lights dock's model follows the edit too
         PropertiesDock dock(&doc);
         dock.show();
         QList<int> rows;
-        for (int i = 0; i < 1000; ++i) rows << i * 4 + 1;
+        for (int i = 0; i < 1000; ++i)
+            rows << i * 4 + 1;
         doc.setSelectedRows(rows, rows.first());
         QSignalSpy dataChanged(&model, &QAbstractItemModel::dataChanged);
         auto* intensity = dock.field(LightProperty::Intensity)->findChild<NumberEdit*>();
@@ -131,8 +147,9 @@ private slots:
         QCOMPARE(doc.undoStack()->count(), 1);
         for (int i = 0; i < doc.lightCount(); ++i)
             QCOMPARE(doc.light(i).intensity, i % 4 == 1 && i < 4000 ? 3.25 : 1.0);
-        QVERIFY(dataChanged.count() <= kMaxChangeRuns);  // one span, not 1,000 signals
-        QCOMPARE(model.index(4 * 999 + 1, LightTableModel::IntensityColumn).data(Qt::EditRole).toDouble(), 3.25);
+        QVERIFY(dataChanged.count() <= kMaxChangeRuns); // one span, not 1,000 signals
+        QCOMPARE(model.index(4 * 999 + 1, LightTableModel::IntensityColumn).data(Qt::EditRole).toDouble(),
+                 3.25);
         doc.undoStack()->undo();
         QCOMPARE(bytes(doc), before);
         qInfo("1,000-light intensity edit through the Properties dock: %lld ms (one undo step)", ms);
@@ -153,7 +170,8 @@ private slots:
         const RigReadResult read = readRigFile(tmp.filePath(QStringLiteral("kept.rig.json")));
         QVERIFY(read.ok());
         QCOMPARE(writeRigJson(*read.rig), bytes(doc));
-        qInfo("autosave of 4096 lights (%lld bytes): %lld ms", static_cast<long long>(QFileInfo(copy).size()), ms);
+        qInfo("autosave of 4096 lights (%lld bytes): %lld ms", static_cast<long long>(QFileInfo(copy).size()),
+              ms);
     }
 };
 

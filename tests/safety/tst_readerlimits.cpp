@@ -11,7 +11,9 @@ using namespace lr;
 
 namespace {
 
-QByteArray header() { return R"({"format": "lightrig", "version": 1, )"; }
+QByteArray header() {
+    return R"({"format": "lightrig", "version": 1, )";
+}
 
 QByteArray nested(int depth) {
     return header() + "\"x\": " + QByteArray(depth, '[') + QByteArray(depth, ']') + ", \"lights\": []}";
@@ -26,15 +28,16 @@ QByteArray withLights(int n) {
 
 qsizetype totalChars(const QStringList& list) {
     qsizetype n = 0;
-    for (const QString& s : list) n += s.size();
+    for (const QString& s : list)
+        n += s.size();
     return n;
 }
 
-}  // namespace
+} // namespace
 
 class TestReaderLimits : public QObject {
     Q_OBJECT
-private slots:
+  private slots:
     void size() {
         QByteArray big = header() + "\"lights\": [], \"pad\": \"";
         big += QByteArray(kMaxRigFileBytes - big.size(), 'a');
@@ -52,7 +55,8 @@ private slots:
                  qPrintable(readRigJson(nested(31), QStringLiteral("d.json")).errors.join(u'\n')));
         const RigReadResult r = readRigJson(nested(32), QStringLiteral("d.json"));
         QVERIFY(!r.ok());
-        QVERIFY2(r.errors.join(u'\n').contains(QLatin1String("nested deeper than 32")), qPrintable(r.errors.join(u'\n')));
+        QVERIFY2(r.errors.join(u'\n').contains(QLatin1String("nested deeper than 32")),
+                 qPrintable(r.errors.join(u'\n')));
         // Far deeper than any stack could recurse: refused at the limit, no stack overflow.
         QVERIFY(!readRigJson(nested(1 << 20), QStringLiteral("d.json")).ok());
     }
@@ -68,13 +72,15 @@ private slots:
 
     void nameLength() {
         const auto rig = [](const QByteArray& name) {
-            return readRigJson(header() + "\"name\": \"" + name + "\", \"lights\": []}", QStringLiteral("s.json"));
+            return readRigJson(header() + "\"name\": \"" + name + "\", \"lights\": []}",
+                               QStringLiteral("s.json"));
         };
         QVERIFY(rig(QByteArray(kMaxRigNameLength, 'n')).ok());
         QVERIFY(!rig(QByteArray(kMaxRigNameLength + 1, 'n')).ok());
         // Characters, not bytes or UTF-16 units: 256 emoji (4 bytes, 2 units each) fit.
         QByteArray emoji;
-        for (int i = 0; i < kMaxRigNameLength; ++i) emoji += "\xF0\x9F\x98\x80";
+        for (int i = 0; i < kMaxRigNameLength; ++i)
+            emoji += "\xF0\x9F\x98\x80";
         QVERIFY(rig(emoji).ok());
         // A 10 MB name is refused with a short message (the name is not echoed back).
         const RigReadResult r = rig(QByteArray(10'000'000, 'n'));
@@ -86,8 +92,8 @@ private slots:
     // offending strings are.
     void longStringsInMessages() {
         const QByteArray longText(1'000'000, 'q');
-        const RigReadResult r = readRigJson(header() + "\"space\": \"" + longText + "\", \"lights\": [{\"type\": \"" +
-                                                longText + "\"}]}",
+        const RigReadResult r = readRigJson(header() + "\"space\": \"" + longText +
+                                                "\", \"lights\": [{\"type\": \"" + longText + "\"}]}",
                                             QStringLiteral("s.json"));
         QVERIFY(!r.ok());
         QVERIFY2(totalChars(r.errors) < 10'000, qPrintable(QString::number(totalChars(r.errors))));
@@ -98,18 +104,21 @@ private slots:
     // while writing the fuzz target; 64 KiB x 100,000 duplicates would need ~13 GB).
     void manyDuplicateKeysUnderALongKey() {
         QByteArray doc = header() + "\"lights\": [], \"" + QByteArray(64 * 1024, 'k') + "\": {";
-        for (int i = 0; i < 100'000; ++i) doc += i ? ",\"a\":0" : "\"a\":0";
+        for (int i = 0; i < 100'000; ++i)
+            doc += i ? ",\"a\":0" : "\"a\":0";
         doc += "}}";
         const RigReadResult r = readRigJson(doc, QStringLiteral("dup.json"));
         QVERIFY(!r.ok());
         QVERIFY(r.errors.size() <= 202);
-        QVERIFY2(r.errors.last().contains(QLatin1String("more errors not listed")), qPrintable(r.errors.last().left(200)));
+        QVERIFY2(r.errors.last().contains(QLatin1String("more errors not listed")),
+                 qPrintable(r.errors.last().left(200)));
         QVERIFY(totalChars(r.errors) < 50'000'000);
     }
 
     void manyUnknownKeys() {
         QByteArray doc = header() + "\"lights\": []";
-        for (int i = 0; i < 100'000; ++i) doc += ",\"u" + QByteArray::number(i) + "\":0";
+        for (int i = 0; i < 100'000; ++i)
+            doc += ",\"u" + QByteArray::number(i) + "\":0";
         doc += "}";
         const RigReadResult r = readRigJson(doc, QStringLiteral("unknown.json"));
         QVERIFY(r.ok());
@@ -122,7 +131,8 @@ private slots:
         QTest::addColumn<QString>("path");
         const QDir dir(QStringLiteral(LIGHTRIG_TEST_DATA "/rig/fuzz-regressions"));
         const QStringList files = dir.entryList(QDir::Files, QDir::Name);
-        for (const QString& f : files) QTest::newRow(qPrintable(f)) << dir.filePath(f);
+        for (const QString& f : files)
+            QTest::newRow(qPrintable(f)) << dir.filePath(f);
         if (files.isEmpty()) QTest::newRow("none yet") << QString();
     }
     void fuzzRegressions() {

@@ -26,11 +26,11 @@ using namespace lr;
 namespace {
 
 // Never a valid value anywhere: not numbers, not finite, or beyond every limit of the format (1e12 at most).
-const QStringList kNeverValid{QStringLiteral("nan"), QStringLiteral("NaN"),   QStringLiteral("inf"),
-                              QStringLiteral("-inf"), QStringLiteral("Infinity"), QStringLiteral("1e999"),
-                              QStringLiteral("-1e999"), QStringLiteral("1e308"), QStringLiteral("1e13"),
-                              QStringLiteral("0x10"), QStringLiteral("1e"),       QStringLiteral("--1"),
-                              QStringLiteral("1..2"), QStringLiteral("٣")};
+const QStringList kNeverValid{QStringLiteral("nan"),    QStringLiteral("NaN"),      QStringLiteral("inf"),
+                              QStringLiteral("-inf"),   QStringLiteral("Infinity"), QStringLiteral("1e999"),
+                              QStringLiteral("-1e999"), QStringLiteral("1e308"),    QStringLiteral("1e13"),
+                              QStringLiteral("0x10"),   QStringLiteral("1e"),       QStringLiteral("--1"),
+                              QStringLiteral("1..2"),   QStringLiteral("٣")};
 
 // A rig whose lights, between them, show every field of the Properties dock.
 Rig everyFieldRig() {
@@ -50,7 +50,9 @@ Rig everyFieldRig() {
     return rig;
 }
 
-QByteArray bytes(const Document& doc) { return writeRigJson(doc.rig()); }
+QByteArray bytes(const Document& doc) {
+    return writeRigJson(doc.rig());
+}
 
 // Typed key by key: each keystroke is validated on its own, so a valid prefix ("1e3" of "1e308") may be
 // what is left when Return is pressed. Only ASCII can be typed this way.
@@ -77,11 +79,14 @@ void pasteInto(QAbstractSpinBox* box, const QString& text) {
 
 QString fieldName(const QWidget* w) {
     for (; w; w = w->parentWidget())
-        if (!w->objectName().isEmpty() && !w->objectName().startsWith(QLatin1String("qt_"))) return w->objectName();
+        if (!w->objectName().isEmpty() && !w->objectName().startsWith(QLatin1String("qt_")))
+            return w->objectName();
     return QStringLiteral("?");
 }
 
-bool usable(QWidget* w, QWidget* top) { return w->isVisibleTo(top) && w->isEnabled(); }
+bool usable(QWidget* w, QWidget* top) {
+    return w->isVisibleTo(top) && w->isEnabled();
+}
 
 // The text as the field would read it, or NaN when it is not a number.
 double parsed(const QAbstractSpinBox* box, const QString& text) {
@@ -90,11 +95,11 @@ double parsed(const QAbstractSpinBox* box, const QString& text) {
     return ok ? v : std::numeric_limits<double>::quiet_NaN();
 }
 
-}  // namespace
+} // namespace
 
 class TestUiValues : public QObject {
     Q_OBJECT
-private slots:
+  private slots:
     void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
 
     void propertiesDock_everyNumberField() {
@@ -105,7 +110,8 @@ private slots:
         dock.show();
         QVERIFY(QTest::qWaitForWindowExposed(&dock));
         const QList<NumberEdit*> edits = dock.findChildren<NumberEdit*>();
-        QVERIFY(edits.size() >= 15);  // temperature, intensity, position x3, direction x3, falloff x5, cone x3, ...
+        QVERIFY(edits.size() >=
+                15); // temperature, intensity, position x3, direction x3, falloff x5, cone x3, ...
         QSet<NumberEdit*> tested;
         int attempts = 0;
         for (int row = 0; row < doc.lightCount(); ++row) {
@@ -114,18 +120,20 @@ private slots:
                 if (!usable(edit, &dock)) continue;
                 tested.insert(edit);
                 QStringList inputs = kNeverValid;
-                inputs << QStringLiteral("-5") << QStringLiteral("1e-99999") << QStringLiteral("-0.000001") << QStringLiteral("1000000.5")
-                       << QStringLiteral("91");
+                inputs << QStringLiteral("-5") << QStringLiteral("1e-99999") << QStringLiteral("-0.000001")
+                       << QStringLiteral("1000000.5") << QStringLiteral("91");
                 for (const QString& text : inputs) {
                     const QByteArray before = bytes(doc);
                     const int steps = doc.undoStack()->count();
                     const double v = parsed(edit, text);
-                    const bool couldBeValid = std::isfinite(v) && edit->accepts(v) && !kNeverValid.contains(text);
+                    const bool couldBeValid =
+                        std::isfinite(v) && edit->accepts(v) && !kNeverValid.contains(text);
                     pasteInto(edit, text);
                     ++attempts;
                     if (!couldBeValid) {
-                        QVERIFY2(bytes(doc) == before, qPrintable(QStringLiteral("pasting \"%2\" into %1 changed the rig")
-                                                                      .arg(fieldName(edit), text)));
+                        QVERIFY2(bytes(doc) == before,
+                                 qPrintable(QStringLiteral("pasting \"%2\" into %1 changed the rig")
+                                                .arg(fieldName(edit), text)));
                         QCOMPARE(doc.undoStack()->count(), steps);
                     }
                     QVERIFY(std::isfinite(edit->value()));
@@ -134,13 +142,14 @@ private slots:
                     // Typed: what is stored, if anything, is a valid prefix's value.
                     typeInto(edit, text);
                     QVERIFY(std::isfinite(edit->value()));
-                    QVERIFY2(edit->accepts(edit->value()), qPrintable(fieldName(edit) + QLatin1Char(' ') + text));
+                    QVERIFY2(edit->accepts(edit->value()),
+                             qPrintable(fieldName(edit) + QLatin1Char(' ') + text));
                     QCOMPARE(validateRig(doc.rig()), QString());
                     QVERIFY(readRigJson(bytes(doc), QStringLiteral("ui.json")).ok());
                 }
             }
         }
-        QCOMPARE(tested.size(), edits.size());  // every numeric field was reachable and tried
+        QCOMPARE(tested.size(), edits.size()); // every numeric field was reachable and tried
         QVERIFY(attempts > 100);
     }
 
@@ -162,7 +171,8 @@ private slots:
             edit->setFocus();
             QTest::keyClick(edit, Qt::Key_Return);
             edit->clearFocus();
-            QVERIFY2(bytes(doc) == before, qPrintable(QStringLiteral("Return in %1 changed the rig").arg(fieldName(edit))));
+            QVERIFY2(bytes(doc) == before,
+                     qPrintable(QStringLiteral("Return in %1 changed the rig").arg(fieldName(edit))));
         }
         QCOMPARE(doc.undoStack()->count(), 0);
     }
@@ -179,7 +189,7 @@ private slots:
                                     QString(300, QChar(0x1F600))}) {
             name->setFocus();
             name->selectAll();
-            name->insert(text);  // pasted: keyClicks only types ASCII
+            name->insert(text); // pasted: keyClicks only types ASCII
             QTest::keyClick(name, Qt::Key_Return);
             QCOMPARE(validateRig(doc.rig()), QString());
             QVERIFY(!doc.light(0).name.trimmed().isEmpty());
@@ -201,7 +211,8 @@ private slots:
                 pasteInto(box, text);
                 if (auto* n = qobject_cast<NumberEdit*>(box)) {
                     const double v = parsed(n, text);
-                    if (!(std::isfinite(v) && n->accepts(v) && !kNeverValid.contains(text))) QCOMPARE(bytes(doc), before);
+                    if (!(std::isfinite(v) && n->accepts(v) && !kNeverValid.contains(text)))
+                        QCOMPARE(bytes(doc), before);
                     QVERIFY(std::isfinite(n->value()));
                 } else if (auto* d = qobject_cast<QDoubleSpinBox*>(box)) {
                     QVERIFY(std::isfinite(d->value()));
@@ -229,7 +240,8 @@ private slots:
                 const QModelIndex index = model->index(row, column);
                 if (!(model->flags(index) & Qt::ItemIsEditable)) continue;
                 QAbstractItemDelegate* delegate = view->itemDelegateForIndex(index);
-                for (const QString& text : kNeverValid + QStringList{QStringLiteral("-5"), QStringLiteral("")}) {
+                for (const QString& text :
+                     kNeverValid + QStringList{QStringLiteral("-5"), QStringLiteral("")}) {
                     QWidget* editor = delegate->createEditor(view->viewport(), QStyleOptionViewItem(), index);
                     QVERIFY(editor);
                     delegate->setEditorData(editor, index);
@@ -255,8 +267,15 @@ private slots:
         Document doc;
         doc.newRig(everyFieldRig());
         LightTableModel model(&doc);
-        const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
-        const QList<QVariant> hostile{nan, inf, -inf, -5.0, 1e300, QStringLiteral("nan"), QStringLiteral("1e999"),
+        const double nan = std::numeric_limits<double>::quiet_NaN(),
+                     inf = std::numeric_limits<double>::infinity();
+        const QList<QVariant> hostile{nan,
+                                      inf,
+                                      -inf,
+                                      -5.0,
+                                      1e300,
+                                      QStringLiteral("nan"),
+                                      QStringLiteral("1e999"),
                                       QVariant::fromValue(glm::dvec3(nan, 0, 0)),
                                       QVariant::fromValue(glm::dvec3(0, inf, 0))};
         const QByteArray before = bytes(doc);
@@ -269,11 +288,12 @@ private slots:
                 }
         for (int p = 0; p < kLightPropertyCount; ++p) {
             const auto property = LightProperty(p);
-            if (property == LightProperty::Name || property == LightProperty::Type || property == LightProperty::Enabled)
+            if (property == LightProperty::Name || property == LightProperty::Type ||
+                property == LightProperty::Enabled)
                 continue;
-            for (const QVariant& v : {QVariant(nan), QVariant(inf), QVariant(-inf),
-                                      QVariant::fromValue(glm::dvec3(nan)), QVariant::fromValue(glm::dvec3(0, 0, inf)),
-                                      QVariant::fromValue(glm::dvec3(1e300))}) {
+            for (const QVariant& v :
+                 {QVariant(nan), QVariant(inf), QVariant(-inf), QVariant::fromValue(glm::dvec3(nan)),
+                  QVariant::fromValue(glm::dvec3(0, 0, inf)), QVariant::fromValue(glm::dvec3(1e300))}) {
                 QString error;
                 QVERIFY(!doc.setLightValue({0, 1, 2, 3}, property, v, &error));
                 QCOMPARE(bytes(doc), before);
