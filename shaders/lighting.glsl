@@ -11,8 +11,16 @@
 //   LR_HAS_LIGHT_<TYPE>, LR_HAS_FALLOFF_<MODEL>, LR_HAS_CONE_<MODEL>, LR_HAS_DIFFUSE_<MODEL>: present;
 //   LR_ONLY_LIGHT / LR_ONLY_FALLOFF / LR_ONLY_CONE / LR_ONLY_DIFFUSE: the single value when only one is;
 //   LR_SPECULAR, LR_VIEWER: the rig's models; LR_HAS_LIGHT_AMBIENT: some light has an ambient colour;
-//   LR_LIGHT_TEXELS: RGBA32F texels per light in the light buffer (layout in loadLight below).
+//   LR_LIGHT_TEXELS: RGBA32F texels per light in the light buffer (layout in loadLight below);
+//   LR_QUALITY_EXACT / LR_QUALITY_BALANCED / LR_QUALITY_FAST: the quality tier (docs/quality.md);
+//   LR_SHININESS_INT + powShininessInt(): balanced tier, the material's shininess is this integer.
 // Code for absent features is not compiled, so a scene pays only for what it uses.
+//
+// Quality tiers change how the formulas are evaluated, never what they are. Exact: the functions below
+// as written. Balanced: lrPow/lrAcos/powSpecular swap safePow, safeAcos and the specular power for the
+// cheaper evaluations of the "balanced tier" block, and shadeLight() rejects lights outside their range
+// or cone before normalising (B1-B4 in docs/quality.md). Fast: shadeVertex() at the vertices (Gouraud)
+// with the infinite viewer, interpolated, the albedo and ks applied per pixel.
 
 const float kMinDenominator = 1e-4;  // floor of d^2 and of the inverse-polynomial denominator
 const float kMinConeWidth = 1e-7;    // narrowest smooth-cone width treated as a smooth edge
@@ -49,18 +57,70 @@ float safeAcos(float c) {
 }
 
 // v / |v|, scale-invariant (works for denormal and huge components); zero, NaN or Inf -> fallback.
+// After the division by the largest magnitude m one component is exactly ±1, so dot(v, v) is in [1, 3]
+// unless a component is NaN (which max() may skip): the second test catches that.
 vec3 safeNormalize(vec3 v, vec3 fallback) {
     float m = max(max(abs(v.x), abs(v.y)), abs(v.z));
     if (!(m > 0.0) || !(m <= kFloatMax)) return fallback;
     v /= m;
-    return v / sqrt(dot(v, v));
+    float s = dot(v, v);
+    if (!(s >= 1.0)) return fallback;
+    return v / sqrt(s);
 }
+
+#ifdef LR_QUALITY_BALANCED
+// ---- balanced tier: cheaper evaluations, each measured in docs/quality.md ----
+
+// B1 poly-acos: Abramowitz & Stegun 4.4.45 (four terms), |error| <= 6.8e-5 rad; near cos = 1 the error is
+// relative (5e-5 of the angle), so narrow cones keep their shape. Used by the angle-power cone only.
+float acosBalanced(float c) {
+    float x = c > -1.0 ? (c < 1.0 ? c : 1.0) : -1.0;
+    float a = abs(x);
+    float p = ((-0.0187293 * a + 0.0742610) * a - 0.2121144) * a + 1.5707288;
+    float r = sqrt(1.0 - a) * p;
+    return x < 0.0 ? 3.14159265358979 - r : r;
+}
+
+// B2 integer exponents: x^n by repeated squaring for whole n in 1..256 (products instead of pow's
+// exp2(n·log2 x); as accurate or more), pow() otherwise. The branch is uniform across a light or material.
+float powBalanced(float base, float exponent) {
+    if (!(exponent > 0.0)) return 1.0;
+    if (!(base > 0.0)) return 0.0;
+    if (exponent == 1.0) return base;
+    if (exponent == 2.0) return base * base;
+    if (exponent <= 256.0 && exponent == floor(exponent)) {
+        int n = int(exponent);
+        float r = 1.0, b = base;
+        for (int i = 0; i < 9; ++i) {
+            if ((n & 1) != 0) r *= b;
+            n >>= 1;
+            if (n == 0) break;
+            b *= b;
+        }
+        return r;
+    }
+    return pow(base, exponent);
+}
+#define lrPow powBalanced
+#define lrAcos acosBalanced
+#else
+#define lrPow safePow
+#define lrAcos safeAcos
+#endif
+
+// The specular power x^shininess. Balanced with an integer shininess known when the variant is built
+// (LR_SHININESS_INT): the generated chain of products powShininessInt() (B2), else lrPow.
+#ifdef LR_SHININESS_INT
+float powSpecular(float base, float shininess) { return base > 0.0 ? powShininessInt(base) : 0.0; }
+#else
+float powSpecular(float base, float shininess) { return lrPow(base, shininess); }
+#endif
 
 // ---- distance falloff a(d); range < 0 means "no range" where the range is optional ----
 
 float falloffRangePower(float d, float range, float exponent) {
     if (!(d < range)) return 0.0;
-    return safePow(saturate(1.0 - d / range), exponent);
+    return lrPow(saturate(1.0 - d / range), exponent);
 }
 
 float rangeWindow(float d, float range) {
@@ -96,23 +156,25 @@ float falloffInverseSquare(float d, float range) {
 // ---- spot cone s(cos(theta)), cos(theta) = dot(-L, spotDirection) ----
 
 float coneAnglePower(float cosTheta, float outer, float exponent) {
-    float theta = safeAcos(cosTheta);
+    float theta = lrAcos(cosTheta);
     if (!(theta < outer)) return 0.0;
-    return safePow(saturate(1.0 - theta / outer), exponent);
-}
-
-float coneSmooth(float cosTheta, float cosInner, float cosOuter, float exponent) {
-    if (!(cosTheta > cosOuter)) return 0.0;
-    float width = cosInner - cosOuter;
-    if (!(width > kMinConeWidth)) return 1.0;
-    return safePow(saturate((cosTheta - cosOuter) / width), exponent);
+    return lrPow(saturate(1.0 - theta / outer), exponent);
 }
 
 float coneHard(float cosTheta, float cosOuter) { return cosTheta >= cosOuter ? 1.0 : 0.0; }
 
+// A width below kMinConeWidth (inner = outer, or a cone too narrow for float) is exactly the hard cone.
+float coneSmooth(float cosTheta, float cosInner, float cosOuter, float exponent) {
+    float width = cosInner - cosOuter;
+    if (!(width > kMinConeWidth)) return coneHard(cosTheta, cosOuter);
+    if (!(cosTheta > cosOuter)) return 0.0;
+    return lrPow(saturate((cosTheta - cosOuter) / width), exponent);
+}
+
 // ---- surface terms ----
 
-float diffuseLambert(float nDotL) { return positive(nDotL); }
+// Saturated above too: float N·L of unit vectors exceeds 1 by an ulp or two.
+float diffuseLambert(float nDotL) { return saturate(nDotL); }
 
 float diffuseHalfLambert(float nDotL) {
     float h = saturate(nDotL * 0.5 + 0.5);
@@ -121,18 +183,18 @@ float diffuseHalfLambert(float nDotL) {
 
 float specularPhong(vec3 N, vec3 L, vec3 V, float shininess) {
     vec3 R = 2.0 * dot(N, L) * N - L;  // reflect(-L, N)
-    return safePow(saturate(dot(R, V)), shininess);
+    return powSpecular(saturate(dot(R, V)), shininess);
 }
 
 float specularBlinnPhong(vec3 N, vec3 L, vec3 V, float shininess) {
     vec3 H = safeNormalize(L + V, N);
-    return safePow(saturate(dot(N, H)), shininess);
+    return powSpecular(saturate(dot(N, H)), shininess);
 }
 
 float rimTerm(vec3 direction, vec3 N, vec3 V, float exponent) {
     float p1 = 1.0 - saturate(dot(direction, N));
     float p2 = 1.0 - saturate(dot(N, V));
-    return safePow(p1 * p2, exponent);
+    return lrPow(p1 * p2, exponent);
 }
 
 // ---- tone mapping and output encoding ----
@@ -305,9 +367,20 @@ float evalCone(ShadeLight l, float cosTheta) {
     return 0.0;
 }
 
+#ifdef LR_QUALITY_BALANCED
+// Whether the light's falloff is exactly zero at d >= range (range-power and range-quadratic always,
+// the inverse falloffs when they have a range, i.e. range >= 0).
+bool lightIsBounded(ShadeLight l) {
+    int m = falloffOf(l);
+    return m == LR_FALLOFF_RANGE_POWER || m == LR_FALLOFF_RANGE_QUADRATIC ||
+           ((m == LR_FALLOFF_INVERSE_POLYNOMIAL || m == LR_FALLOFF_INVERSE_SQUARE) && l.range >= 0.0);
+}
+#endif
+
+// The fast tier always uses the infinite viewer (F2 in docs/quality.md).
 vec3 viewVector(ShadeSettings s, vec3 P) {
     const vec3 infinite = vec3(0.0, 0.0, 1.0);
-#if LR_VIEWER == LR_VIEWER_LOCAL
+#if LR_VIEWER == LR_VIEWER_LOCAL && !defined(LR_QUALITY_FAST)
     return safeNormalize(-P, infinite);
 #else
     return infinite;
@@ -326,11 +399,40 @@ vec3 shadeLight(ShadeLight l, Surface s, ShadeSettings st, vec3 V) {
 #ifdef LR_HAS_POSITIONAL
     if (lightTypeOf(l) != LR_LIGHT_DIRECTIONAL) {
         vec3 toLight = l.position - s.position;
-        float d = length(toLight);
-        L = safeNormalize(toLight, N);  // a light on the surface shines along the normal
-        attenuation = evalFalloff(l, d * st.distanceScale);
+#ifdef LR_QUALITY_BALANCED
+        // B3 early-out: beyond a bounded falloff's range (squared distances, before any sqrt) or outside
+        // the cone (cosine space, before the falloff), the light adds exactly zero.
+        float d2 = dot(toLight, toLight);
+        float scale2 = st.distanceScale * st.distanceScale;
+        if (l.range > 1e-18 && lightIsBounded(l) && d2 * scale2 >= l.range * l.range) return vec3(0.0);
+        // B4 normalisation by one inversesqrt where |toLight| is well inside float's range.
+        float d;
+        if (d2 > 1e-30 && d2 < 1e30) {
+            float inv = inversesqrt(d2);
+            L = toLight * inv;
+            d = d2 * inv * st.distanceScale;
+        } else {
+            L = safeNormalize(toLight, N);
+            d = dot(toLight, L) * st.distanceScale;
+            if (!(abs(d) <= kFloatMax)) d = kFloatMax;
+        }
 #ifdef LR_HAS_LIGHT_SPOT
-        if (lightTypeOf(l) == LR_LIGHT_SPOT) attenuation *= evalCone(l, dot(-L, l.direction));
+        float cosTheta = dot(-L, l.direction);
+        if (lightTypeOf(l) == LR_LIGHT_SPOT && cosTheta < l.cosOuter) return vec3(0.0);
+#endif
+#else
+        L = safeNormalize(toLight, N);  // a light on the surface shines along the normal
+        // |toLight| as dot(toLight, L): no squared intermediate to overflow or underflow, one sqrt fewer;
+        // an overflowing distance becomes the largest float (every falloff then gives its limit).
+        float d = dot(toLight, L) * st.distanceScale;
+        if (!(abs(d) <= kFloatMax)) d = kFloatMax;
+#ifdef LR_HAS_LIGHT_SPOT
+        float cosTheta = dot(-L, l.direction);
+#endif
+#endif
+        attenuation = evalFalloff(l, d);
+#ifdef LR_HAS_LIGHT_SPOT
+        if (lightTypeOf(l) == LR_LIGHT_SPOT) attenuation *= evalCone(l, cosTheta);
 #endif
         if (!(attenuation > 0.0)) return vec3(0.0);
     }
@@ -362,5 +464,70 @@ vec3 shadeSurface(Surface s, ShadeSettings st) {
 #endif
     return sum + s.emissive;
 }
+
+#ifdef LR_QUALITY_FAST
+// F1 Gouraud (Direct3D fixed function, design document 004): the lighting of shadeSurface() evaluated at
+// the vertices and interpolated; the albedo and ks, textured per pixel, multiply it afterwards:
+//   radiance = albedo · diffuse + ks · specular + added + emissive, where
+//   diffuse = scene ambient + Σ attenuation·(colour·D + Ac), specular = Σ attenuation·Sc·S, added = Σ rim.
+// Per light the same formulas and guards as shadeLight(); the viewer is infinite (F2).
+struct VertexLight {
+    vec3 diffuse;
+    vec3 specular;
+    vec3 added;
+};
+
+void shadeLightSplit(ShadeLight l, vec3 P, vec3 N, float shininess, ShadeSettings st, vec3 V, inout VertexLight o) {
+#ifdef LR_HAS_LIGHT_RIM
+    if (lightTypeOf(l) == LR_LIGHT_RIM) {
+        o.added += l.color * rimTerm(l.direction, N, V, l.rimExponent);
+        return;
+    }
+#endif
+#ifdef LR_HAS_SURFACE_LIGHTS
+    vec3 L = -l.direction;
+    float attenuation = 1.0;
+#ifdef LR_HAS_POSITIONAL
+    if (lightTypeOf(l) != LR_LIGHT_DIRECTIONAL) {
+        vec3 toLight = l.position - P;
+        L = safeNormalize(toLight, N);
+        float d = dot(toLight, L) * st.distanceScale;
+        if (!(abs(d) <= kFloatMax)) d = kFloatMax;
+        attenuation = evalFalloff(l, d);
+#ifdef LR_HAS_LIGHT_SPOT
+        if (lightTypeOf(l) == LR_LIGHT_SPOT) attenuation *= evalCone(l, dot(-L, l.direction));
+#endif
+        if (!(attenuation > 0.0)) return;
+    }
+#endif
+    float nDotL = dot(N, L);
+    float D = diffuseOf(l) == LR_DIFFUSE_LAMBERT ? diffuseLambert(nDotL) : diffuseHalfLambert(nDotL);
+    float S = 0.0;
+#if LR_SPECULAR == LR_SPECULAR_PHONG
+    if (nDotL > 0.0) S = specularPhong(N, L, V, shininess);
+#else
+    if (nDotL > 0.0) S = specularBlinnPhong(N, L, V, shininess);
+#endif
+#ifdef LR_HAS_LIGHT_AMBIENT
+    o.diffuse += attenuation * (l.color * D + l.ambient);
+#else
+    o.diffuse += attenuation * (l.color * D);
+#endif
+    o.specular += attenuation * (l.specular * S);
+#endif
+}
+
+VertexLight shadeVertex(vec3 P, vec3 N, float shininess, ShadeSettings st) {
+    VertexLight o;
+    o.diffuse = st.ambient;
+    o.specular = vec3(0.0);
+    o.added = vec3(0.0);
+    vec3 V = viewVector(st, P);
+#if defined(LR_HAS_SURFACE_LIGHTS) || defined(LR_HAS_LIGHT_RIM)
+    for (int i = 0; i < uLightCount; ++i) shadeLightSplit(loadLight(i), P, N, shininess, st, V, o);
+#endif
+    return o;
+}
+#endif  // LR_QUALITY_FAST
 
 #endif  // LR_SHADING

@@ -15,6 +15,11 @@ in vec4 vTangent;
 #ifdef LR_VERTEX_COLOR
 in vec4 vColor;
 #endif
+#ifdef LR_QUALITY_FAST
+in vec3 vLitDiffuse;  // per-vertex lighting (mesh.vert), interpolated
+in vec3 vLitSpecular;
+in vec3 vLitAdded;
+#endif
 
 uniform vec4 uBaseColor;  // linear
 uniform vec3 uEmissive;   // linear
@@ -48,8 +53,12 @@ layout(location = 0) out vec4 oColor;  // linear radiance, alpha 1 (coverage aft
 Surface surfaceHere() {
     Surface s;
     s.position = vPosition;
+#ifdef LR_QUALITY_FAST
+    vec3 n = vec3(0.0, 0.0, 1.0);  // unused: the fast tier lit the vertices (mesh.vert)
+#else
     vec3 n = safeNormalize(vNormal, vec3(0.0, 0.0, 1.0));
-#ifdef LR_NORMAL_MAP
+#endif
+#if defined(LR_NORMAL_MAP) && !defined(LR_QUALITY_FAST)
     vec3 t = safeNormalize(vTangent.xyz - n * dot(n, vTangent.xyz), vec3(0.0));
     vec3 b = cross(n, t) * (vTangent.w < 0.0 ? -1.0 : 1.0);
     vec3 m = texture(uNormalTex, vUv).xyz * 2.0 - 1.0;
@@ -87,7 +96,9 @@ void main() {
     ShadeSettings st;
     st.ambient = uAmbient;
     st.distanceScale = uDistanceScale;
-#ifdef LR_CLUSTERED
+#if defined(LR_QUALITY_FAST)
+    vec3 radiance = s.albedo * vLitDiffuse + s.specular * vLitSpecular + vLitAdded + s.emissive;
+#elif defined(LR_CLUSTERED)
     vec3 radiance = shadeSurfaceClustered(s, st, gl_FragCoord.xy);
 #else
     vec3 radiance = shadeSurface(s, st);

@@ -1,5 +1,6 @@
 // Mesh vertex stage: positions relative to Model::origin, transformed to view space with a model-view
-// matrix built in double precision on the CPU (precision holds far from the world origin).
+// matrix built in double precision on the CPU (precision holds far from the world origin). In the fast
+// quality tier it also lights the vertex (lighting.glsl is then compiled into this stage too).
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec2 aUv;
@@ -21,6 +22,15 @@ out vec4 vTangent;  // view space xyz, handedness w
 #ifdef LR_VERTEX_COLOR
 out vec4 vColor;
 #endif
+#ifdef LR_QUALITY_FAST
+// Fast tier (F1, Gouraud): the lighting at this vertex (lighting.glsl shadeVertex), interpolated.
+uniform vec3 uAmbient;
+uniform float uDistanceScale;
+uniform float uShininess;
+out vec3 vLitDiffuse;   // multiplies the albedo
+out vec3 vLitSpecular;  // multiplies ks
+out vec3 vLitAdded;     // rim lights
+#endif
 
 void main() {
     vec4 p = uModelView * vec4(aPosition, 1.0);
@@ -34,6 +44,19 @@ void main() {
 #endif
 #ifdef LR_VERTEX_COLOR
     vColor = aColor;
+#endif
+#ifdef LR_QUALITY_FAST
+    vec3 n = safeNormalize(vNormal, vec3(0.0, 0.0, 1.0));  // the vertex normal: normal maps are not used
+#ifdef LR_DOUBLE_SIDED
+    if (dot(n, p.xyz) > 0.0) n = -n;  // no gl_FrontFacing at a vertex: light the side facing the eye
+#endif
+    ShadeSettings st;
+    st.ambient = uAmbient;
+    st.distanceScale = uDistanceScale;
+    VertexLight lit = shadeVertex(p.xyz, n, uShininess, st);
+    vLitDiffuse = lit.diffuse;
+    vLitSpecular = lit.specular;
+    vLitAdded = lit.added;
 #endif
     gl_Position = uProjection * p;
 }

@@ -45,6 +45,10 @@ int run(const QString& subcommand, int argc, char** argv) {
             // cannot render (displayAvailable()).
             g_displayAvailable = haveDisplay();
             if (!g_displayAvailable) qputenv("QT_QPA_PLATFORM", "offscreen");
+            // bench: first frames pay a real shader compile, not a hit in Mesa's on-disk cache (read when
+            // the display connection is opened, so set here). MESA_SHADER_CACHE_DISABLE=false keeps it.
+            if (subcommand == QLatin1String("bench") && !qEnvironmentVariableIsSet("MESA_SHADER_CACHE_DISABLE"))
+                qputenv("MESA_SHADER_CACHE_DISABLE", "true");
             app = std::make_unique<QGuiApplication>(argc, argv);
         } else {
             app = std::make_unique<QCoreApplication>(argc, argv);

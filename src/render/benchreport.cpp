@@ -44,12 +44,12 @@ QColor tierColor(const BenchResult& r) {
 } // namespace
 
 QStringList benchTableHeaders() {
-    return {QStringLiteral("scene"),    QStringLiteral("lights"),    QStringLiteral("tier"),
-            QStringLiteral("ms med"),   QStringLiteral("min"),       QStringLiteral("max"),
-            QStringLiteral("gpu ms"),   QStringLiteral("×exact"),    QStringLiteral("first ms"),
-            QStringLiteral("variants"), QStringLiteral("triangles"), QStringLiteral("max err"),
-            QStringLiteral("mean err"), QStringLiteral("PSNR dB"),   QStringLiteral(">1 lvl"),
-            QStringLiteral("NaN/Inf")};
+    return {QStringLiteral("scene"),    QStringLiteral("lights"),   QStringLiteral("tier"),
+            QStringLiteral("ms med"),   QStringLiteral("min"),      QStringLiteral("max"),
+            QStringLiteral("cpu ms"),   QStringLiteral("gpu ms"),   QStringLiteral("×exact"),
+            QStringLiteral("first ms"), QStringLiteral("variants"), QStringLiteral("triangles"),
+            QStringLiteral("max err"),  QStringLiteral("mean err"), QStringLiteral("PSNR dB"),
+            QStringLiteral(">1 lvl"),   QStringLiteral("NaN/Inf")};
 }
 
 QStringList benchTableRow(const BenchResult& r) {
@@ -60,6 +60,7 @@ QStringList benchTableRow(const BenchResult& r) {
                     num(r.msMedian, 2),
                     num(r.msMin, 2),
                     num(r.msMax, 2),
+                    num(r.cpuMsMedian, 1),
                     r.gpuMsMedian >= 0.0 ? num(r.gpuMsMedian, 2) : none,
                     r.speedUp > 0.0 ? num(r.speedUp, 2) : none,
                     num(r.firstFrameMs, 0),
@@ -136,6 +137,7 @@ QJsonObject benchJson(const BenchReport& report) {
             {QStringLiteral("ms_median"), round3(r.msMedian)},
             {QStringLiteral("ms_min"), round3(r.msMin)},
             {QStringLiteral("ms_max"), round3(r.msMax)},
+            {QStringLiteral("cpu_ms_median"), round3(r.cpuMsMedian)},
             {QStringLiteral("gpu_ms_median"),
              r.gpuMsMedian >= 0.0 ? QJsonValue(round3(r.gpuMsMedian)) : QJsonValue()},
             {QStringLiteral("speedup_vs_exact"),
@@ -173,6 +175,7 @@ QJsonObject benchJson(const BenchReport& report) {
     return QJsonObject{
         {QStringLiteral("tool"), QStringLiteral("lightrig bench")},
         {QStringLiteral("gl"), report.glDescription},
+        {QStringLiteral("load_average"), report.loadAverage},
         {QStringLiteral("options"), QJsonObject{{QStringLiteral("width"), op.size.width()},
                                                 {QStringLiteral("height"), op.size.height()},
                                                 {QStringLiteral("warmup_frames"), op.warmupFrames},

@@ -68,7 +68,10 @@ MeshProgram* ProgramCache::meshProgram(const FeatureKey& key, QString* error) {
                                {QStringLiteral("lighting.glsl"), QStringLiteral("cluster.glsl"),
                                 QStringLiteral("deferred.frag")},
                                QStringLiteral("variant [%1]").arg(key.describe()), &message)
-                       : build(shaderPrelude(key), {QStringLiteral("mesh.vert")},
+                       : build(shaderPrelude(key),
+                               key.quality == Quality::Fast  // the fast tier lights the vertices
+                                   ? QStringList{QStringLiteral("lighting.glsl"), QStringLiteral("mesh.vert")}
+                                   : QStringList{QStringLiteral("mesh.vert")},
                                {QStringLiteral("lighting.glsl"), QStringLiteral("cluster.glsl"),
                                 QStringLiteral("mesh.frag")},
                                QStringLiteral("variant [%1]").arg(key.describe()), &message);

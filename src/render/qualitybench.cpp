@@ -4,9 +4,11 @@
 #include "reference.h"
 
 #include <QElapsedTimer>
+#include <QFile>
 #include <QFuture>
 #include <QThread>
 #include <algorithm>
+#include <ctime>
 
 namespace lr {
 
@@ -94,20 +96,23 @@ bool measure(const BenchScene& scene, const BenchOptions& o, Quality q, bool ube
     r->firstDrawMs = clock.nsecsElapsed() * 1e-6;
     r->firstFrameMs = r->loadMs + r->firstDrawMs;
     const RenderStats& stats = gl.renderer().stats();
-    r->variants = stats.shaderVariantsCompiled;
+    r->variants = stats.shaderVariantsCached; // mesh variants (the fixed passes are not counted)
     r->triangles = stats.triangles;
     r->lightsInRig = stats.lightsInRig;
     r->lightsUploaded = stats.lightsUploaded;
 
     const int total = std::max(0, o.warmupFrames) + std::max(1, o.frames);
-    std::vector<double> wall, gpu;
+    std::vector<double> wall, gpu, cpu;
     for (int i = 0; i < total; ++i) {
         if (i % 8 == 0 && !progress.report(0.8 * i / total, what)) return false;
         clock.restart();
+        const std::clock_t cpu0 = std::clock();
         if (!gl.renderFrame(scene.camera, o.size, settings, error)) return false;
         const double ms = clock.nsecsElapsed() * 1e-6;
+        const double cpuMs = double(std::clock() - cpu0) * 1000.0 / CLOCKS_PER_SEC;
         if (i < o.warmupFrames) continue;
         wall.push_back(ms);
+        cpu.push_back(cpuMs);
         // The timer result read during this frame belongs to an earlier (already timed, steady) frame.
         if (stats.lastGpuMs >= 0.0 && i > o.warmupFrames) gpu.push_back(stats.lastGpuMs);
     }
@@ -115,6 +120,7 @@ bool measure(const BenchScene& scene, const BenchOptions& o, Quality q, bool ube
     r->msMin = *std::min_element(wall.begin(), wall.end());
     r->msMax = *std::max_element(wall.begin(), wall.end());
     r->gpuMsMedian = median(gpu);
+    r->cpuMsMedian = median(cpu);
 
     if (reference && !reference->isNull()) {
         if (!progress.report(0.85, what + QStringLiteral(": error"))) return false;
@@ -180,6 +186,9 @@ BenchStatus runQualityBench(const std::vector<BenchScene>& scenes, const BenchOp
                 if (report->results[i].msMedian > 0.0)
                     report->results[i].speedUp = exact->msMedian / report->results[i].msMedian;
     }
+    QFile loadavg(QStringLiteral("/proc/loadavg"));
+    if (loadavg.open(QIODevice::ReadOnly))
+        report->loadAverage = QString::fromLatin1(loadavg.readAll()).section(QLatin1Char(' '), 0, 2);
     if (progressFn) progressFn(1.0, QStringLiteral("done"));
     return BenchStatus::Ok;
 }

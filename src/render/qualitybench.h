@@ -62,7 +62,10 @@ struct BenchResult {
     int variants = 0; // shader variants compiled for this scene and tier (fresh renderer)
     double msMedian = 0.0, msMin = 0.0, msMax = 0.0; // wall time per frame with glFinish
     double gpuMsMedian = -1.0;                       // GL_TIME_ELAPSED; < 0: no timer results
-    double firstFrameMs = 0.0;                       // loadMs + firstDrawMs
+    // Process CPU time per frame, all threads: llvmpipe renders on the CPU, and this is far less
+    // sensitive than wall time to other processes on a shared machine.
+    double cpuMsMedian = 0.0;
+    double firstFrameMs = 0.0; // loadMs + firstDrawMs
     double loadMs = 0.0;
     double firstDrawMs = 0.0; // upload + compile + draw + glFinish in a fresh context
     bool hasErrors = false;
@@ -75,6 +78,7 @@ struct BenchReport {
     BenchOptions options;
     std::vector<BenchResult> results;
     double referenceMs = 0.0; // total CPU time of the references (wall)
+    QString loadAverage;      // /proc/loadavg at the end of the run (empty where unavailable)
 };
 
 // Called now and then with the fraction done and what is being measured; return false to cancel.

@@ -15,6 +15,7 @@
 #include <QOpenGLContext>
 
 #include <algorithm>
+#include <cmath>
 #include <glm/ext/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat3x3.hpp>
@@ -264,7 +265,10 @@ bool Renderer::drawModel(const glm::dmat4& view, const glm::dmat4& projection, c
     const glm::vec3 ambient(shade.ambient);
     const RigFeatures rig = rigFeatures(m_rig);
     m_drawProjection = projection;
-    const bool clustered = output != int(ShaderOutput::GBuffer) && clusterLights(projection, settings);
+    const bool gpass = ShaderOutput(output) == ShaderOutput::GBuffer;
+    // Fast lights the vertices, each with every light: clusters (per fragment) do not apply.
+    const bool clustered = !gpass && settings.quality != Quality::Fast && clusterLights(projection, settings);
+    const RigFeatures shaded = settings.forceAllFeatures ? allRigFeatures(rig) : rig;
     const float exposureScale = float(std::exp2(std::clamp(settings.exposureEV, -60.0, 60.0)));
 
     // Group the draws by program so each variant is bound once per frame.
@@ -272,9 +276,14 @@ bool Renderer::drawModel(const glm::dmat4& view, const glm::dmat4& projection, c
     order.reserve(m_model->draws().size());
     for (const GpuDraw& d : m_model->draws()) {
         FeatureKey key;
-        if (ShaderOutput(output) != ShaderOutput::GBuffer) key.rig = rig;  // the G-pass does no lighting
+        if (!gpass) key.rig = shaded;  // the G-pass does no lighting
         key.material = d.features;
-        key.quality = Quality::Exact;  // Balanced and Fast are not implemented yet: they render as Exact
+        key.quality = gpass ? Quality::Exact : settings.quality;  // the G-buffer is the exact surface
+        if (key.quality == Quality::Balanced) {  // B2: an integer shininess becomes a chain of products
+            const Material& m = d.material >= 0 ? model->materials[size_t(d.material)] : Material();
+            const double n = m.shininess >= 0.0f ? double(m.shininess) : m_rig.shading.shininess;
+            if (n >= 1.0 && n <= kMaxShininessInt && n == std::floor(n)) key.shininessInt = std::uint16_t(n);
+        }
         key.output = ShaderOutput(output);
         key.clustered = clustered;
         order.emplace_back(key, &d);
@@ -454,8 +463,8 @@ static QRect screenBounds(const Bounds& box, const glm::dmat4& viewProjection, Q
 
 bool Renderer::lightingPass(const RenderSettings& settings, bool hdr, const QRect& scissor) {
     FeatureKey key;
-    key.rig = rigFeatures(m_rig);
-    key.quality = Quality::Exact;
+    key.rig = settings.forceAllFeatures ? allRigFeatures(rigFeatures(m_rig)) : rigFeatures(m_rig);
+    key.quality = settings.quality;  // never Fast: render() keeps the fast tier forward
     key.output = hdr ? ShaderOutput::Radiance : ShaderOutput::Display;
     key.deferredLighting = true;
     key.clustered = clusterLights(m_drawProjection, settings);
@@ -512,11 +521,13 @@ bool Renderer::render(const ViewCamera& camera, QSize size, const RenderSettings
     m_stats.lightsInRig = int(m_rig.lights.size());
     const bool hdr = settings.hdrTarget;
     if (m_lightsDirty || view != m_uploadedView) uploadLights(view);
-    const bool wantDeferred = settings.shadingPath == ShadingPath::Deferred ||
-                              (settings.shadingPath == ShadingPath::Auto && settings.msaaSamples <= 1 &&
-                               m_stats.lightsUploaded >= kDeferredMinLights);
+    const bool fast = settings.quality == Quality::Fast;  // per vertex, no MSAA, forward only (F1, F3)
+    const int samples = fast ? 0 : settings.msaaSamples;
+    const bool wantDeferred = !fast && (settings.shadingPath == ShadingPath::Deferred ||
+                                        (settings.shadingPath == ShadingPath::Auto && samples <= 1 &&
+                                         m_stats.lightsUploaded >= kDeferredMinLights));
     const GLenum colorFormat = !hdr ? GL_RGBA8 : settings.hdrFloat32 ? GL_RGBA32F : GL_RGBA16F;
-    if (!ensureTargets(target, wantDeferred ? 0 : settings.msaaSamples, colorFormat)) return false;
+    if (!ensureTargets(target, wantDeferred ? 0 : samples, colorFormat)) return false;
     const bool deferred = wantDeferred && m_model->model() != nullptr;
     QString error;
     if (deferred && !m_targets->createGBuffer(this, &error)) return fail(error);

@@ -59,7 +59,13 @@ struct RenderSettings {
     bool showGizmos = false;
     bool showGrid = false;
     std::vector<int> selectedLights;  // indices into the rig's lights, highlighted
-    Quality quality = Quality::Exact;  // only Exact is implemented so far: the others render as Exact
+    // How the rig is evaluated (docs/quality.md): Exact per pixel as src/core; Balanced per pixel with
+    // measured cheaper evaluations; Fast per vertex (Gouraud), infinite viewer, never MSAA (msaaSamples and
+    // the deferred path are ignored). The G-buffer is always the exact per-pixel surface.
+    Quality quality = Quality::Exact;
+    // The über-shader: compile every light type and model into the lighting code whatever the rig uses
+    // (for `lightrig bench`, to measure what specialising the shaders per scene saves). Same pixels.
+    bool forceAllFeatures = false;
     bool cullBackFaces = true;         // single-sided materials; double-sided ones are never culled
     // The default path shades, exposes, tone-maps and encodes each fragment straight into an 8-bit target
     // (MSAA resolves display colours). The HDR path renders linear radiance into a float target and

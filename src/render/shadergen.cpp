@@ -78,6 +78,7 @@ std::uint64_t FeatureKey::bits() const {
     put(unsigned(output), 2);
     put(deferredLighting, 1);
     put(clustered, 1);
+    put(shininessInt, 9);
     return b;
 }
 
@@ -99,7 +100,18 @@ QString FeatureKey::describe() const {
     parts << QStringLiteral("quality:") + toString(quality);
     if (output == ShaderOutput::GBuffer) parts << QStringLiteral("gbuffer");
     if (clustered) parts << QStringLiteral("clustered");
+    if (shininessInt) parts << QStringLiteral("shininess:%1").arg(shininessInt);
     return parts.join(QLatin1Char(' '));
+}
+
+RigFeatures allRigFeatures(const RigFeatures& rig) {
+    RigFeatures f = rig;
+    f.lightTypes = std::uint8_t((1u << enumCount<LightType>()) - 1);
+    f.falloffs = std::uint8_t((1u << enumCount<FalloffModel>()) - 1);
+    f.cones = std::uint8_t((1u << enumCount<ConeModel>()) - 1);
+    f.diffuses = std::uint8_t((1u << enumCount<DiffuseModel>()) - 1);
+    f.lightAmbient = true;
+    return f;
 }
 
 RigFeatures rigFeatures(const Rig& rig) {
@@ -158,6 +170,16 @@ QByteArray shaderPrelude(const FeatureKey& key) {
     out += "#define LR_QUALITY_" + macroName(EnumNames<Quality>::names[size_t(key.quality)]) + " 1\n";
     if (key.deferredLighting) out += "#define LR_DEFERRED_LIGHTING 1\n";
     if (key.clustered) out += "#define LR_CLUSTERED 1\n";
+    if (key.shininessInt > 0 && key.shininessInt <= kMaxShininessInt) {
+        // x^n by repeated squaring, unrolled here so the shader is a plain chain of products.
+        out += "#define LR_SHININESS_INT " + QByteArray::number(key.shininessInt) + '\n';
+        out += "float powShininessInt(float x) {\n    float r = 1.0, b = x;\n";
+        for (int n = key.shininessInt; n > 0; n >>= 1) {
+            if (n & 1) out += "    r *= b;\n";
+            if (n > 1) out += "    b *= b;\n";
+        }
+        out += "    return r;\n}\n";
+    }
     switch (key.output) {
     case ShaderOutput::Display: out += "#define LR_OUTPUT_DISPLAY 1\n"; break;
     case ShaderOutput::Radiance: out += "#define LR_OUTPUT_RADIANCE 1\n"; break;

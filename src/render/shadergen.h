@@ -52,6 +52,9 @@ struct FeatureKey {
     // Clustered forward shading (cluster.h, shaders/cluster.glsl): each fragment loops over its cluster's
     // lights only. Chosen per frame by the renderer when the rig has many range-bounded lights.
     bool clustered = false;
+    // Balanced tier (B2 in docs/quality.md): the material's shininess when it is a whole number in
+    // 1..kMaxShininessInt, so the specular power compiles to a chain of products; 0 otherwise.
+    std::uint16_t shininessInt = 0;
 
     std::uint64_t bits() const;  // a unique packing, for hashing and ordering
     QString describe() const;    // "point+spot falloff:range-power cone:smooth ... tex:base,normal"
@@ -62,7 +65,11 @@ struct FeatureKeyHash {
     std::size_t operator()(const FeatureKey& k) const { return std::hash<std::uint64_t>()(k.bits()); }
 };
 
+constexpr int kMaxShininessInt = 256;
+
 RigFeatures rigFeatures(const Rig& rig);
+// Every light type and model present (the über-shader); the rig-wide specular and viewer models stay.
+RigFeatures allRigFeatures(const RigFeatures& rig);
 // Texture indices out of range count as absent.
 MaterialFeatures materialFeatures(const Model& model, const Mesh& mesh);
 

@@ -220,7 +220,7 @@ class TestImageCompare : public QObject {
         for (const char* key :
              {"scene", "lights", "quality", "width", "height", "ms_median", "ms_min", "ms_max",
               "first_frame_ms", "max_error_levels", "mean_error_levels", "psnr_db", "nonfinite_pixels",
-              "gpu_ms_median", "variants", "lights_uploaded", "triangles", "shader"})
+              "gpu_ms_median", "cpu_ms_median", "variants", "lights_uploaded", "triangles", "shader"})
             QVERIFY2(results[0].toObject().contains(QLatin1String(key)), key);
         QCOMPARE(results[2].toObject().value(QStringLiteral("quality")).toString(), QStringLiteral("fast"));
         QCOMPARE(results[2].toObject().value(QStringLiteral("width")).toInt(), 64);

@@ -1,0 +1,276 @@
+// `lightrig bench [MODEL...] [--rig RIG] [--camera-index N | --view NAME] [--lights N,...] [--size WxH]
+//  [--frames N] [--quality LIST] [--json OUT.json] [--chart OUT.png]`: speed against accuracy per scene and
+// quality tier (src/render/qualitybench.h), printed as a table, optionally written as JSON and a chart.
+// Scene options are those of `lightrig render` (sceneoptions.h). Without MODEL: the standard suite, the
+// bundled Suzanne lit by 1, 8, 64 and 256 procedural lights of each type (core/proceduralrig.h).
+// Exit status: 0 measured; 1 a model, rig or output failed, or no OpenGL; 2 usage error.
+#include "cli.h"
+#include "sceneoptions.h"
+
+#include "core/proceduralrig.h"
+#include "render/benchreport.h"
+#include "render/qualitybench.h"
+
+#include <QCommandLineParser>
+#include <QDir>
+#include <QElapsedTimer>
+#include <QFileInfo>
+#include <QJsonDocument>
+#include <QSaveFile>
+#include <QTextStream>
+
+namespace lr::cli {
+
+namespace {
+
+const char* kUsage = "lightrig bench [MODEL...] [--rig RIG] [--camera-index N | --view NAME] [--lights "
+                     "N,...] [--light-type T,...] "
+                     "[--size WxH] [--frames N] [--quality LIST] [--json OUT.json] [--chart OUT.png]";
+
+const char* kBundledModel = ":/resources/models/suzanne/Suzanne.gltf";
+
+// "1,8,64" -> {1, 8, 64}; each in 0..100000.
+std::optional<std::vector<int>> parseCounts(const QString& text) {
+    std::vector<int> out;
+    for (const QString& part : text.split(QLatin1Char(','))) {
+        bool ok = false;
+        const int n = part.trimmed().toInt(&ok);
+        if (!ok || n < 0 || n > 100000) return std::nullopt;
+        out.push_back(n);
+    }
+    return out;
+}
+
+template <typename E> std::optional<std::vector<E>> parseNames(const QString& text) {
+    std::vector<E> out;
+    for (const QString& part : text.split(QLatin1Char(','))) {
+        const auto v = fromString<E>(part.trimmed());
+        if (!v) return std::nullopt;
+        if (std::find(out.begin(), out.end(), *v) == out.end()) out.push_back(*v);
+    }
+    return out;
+}
+
+bool writeFile(const QString& path, const QByteArray& data, QString* error) {
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(data) != data.size() || !file.commit()) {
+        *error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
+        return false;
+    }
+    return true;
+}
+
+bool writePng(const QString& path, const QImage& image, QString* error) {
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || !image.save(&file, "PNG") || !file.commit()) {
+        *error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
+        return false;
+    }
+    return true;
+}
+
+bool checkOutputPath(const QString& path, QString* error) {
+    const QFileInfo info(path);
+    if (!info.absoluteDir().exists()) {
+        *error =
+            QStringLiteral("cannot write %1: the folder %2 does not exist").arg(path, info.absolutePath());
+        return false;
+    }
+    if (info.isDir()) {
+        *error = QStringLiteral("cannot write %1: it is a folder").arg(path);
+        return false;
+    }
+    return true;
+}
+
+} // namespace
+
+int runBench(const QStringList& args) {
+    QTextStream err(stderr), out(stdout);
+    const QString name = QStringLiteral("lightrig bench");
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral(
+        "Measures speed against accuracy: per scene and quality tier the median/min/max ms per frame, the "
+        "first "
+        "frame, shader variants, and the error of the 8-bit output against a double-precision reference.\n"
+        "Without MODEL: the standard suite (the bundled Suzanne with 1, 8, 64 and 256 procedural lights of "
+        "each "
+        "type). Needs OpenGL 3.3: run it with a display, e.g. under xvfb-run -a.\n"
+        "Exit status: 0 measured, 1 bad model, rig or output path, 2 usage error."));
+    parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
+    const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},
+                                  QStringLiteral("Show this help."));
+    const QCommandLineOption lights(
+        QStringLiteral("lights"),
+        QStringLiteral("Replace the rig by N procedural lights on a ring (constant total "
+                       "intensity), one scene per N. Default for the suite: 1,8,64,256."),
+        QStringLiteral("N,..."));
+    const QCommandLineOption lightType(
+        QStringLiteral("light-type"),
+        QStringLiteral("Types of the procedural lights: %1 (default: point for MODEL, "
+                       "all four for the suite).")
+            .arg(allowedNames<LightType>()),
+        QStringLiteral("T,..."));
+    const QCommandLineOption lightRange(
+        QStringLiteral("light-range"),
+        QStringLiteral("Range of procedural point and spot lights in model bounding "
+                       "radii (default: none)."),
+        QStringLiteral("R"));
+    const QCommandLineOption frames(
+        QStringLiteral("frames"), QStringLiteral("Timed frames per run (default 60)."), QStringLiteral("N"));
+    const QCommandLineOption warmup(QStringLiteral("warmup"),
+                                    QStringLiteral("Untimed frames after the first one (default 5)."),
+                                    QStringLiteral("N"));
+    const QCommandLineOption json(QStringLiteral("json"), QStringLiteral("Write the results as JSON."),
+                                  QStringLiteral("OUT.json"));
+    const QCommandLineOption chart(QStringLiteral("chart"),
+                                   QStringLiteral("Write a PNG chart of time against error."),
+                                   QStringLiteral("OUT.png"));
+    const QCommandLineOption noErrors(
+        QStringLiteral("no-errors"),
+        QStringLiteral("Skip the double-precision reference and the error figures."));
+    const QCommandLineOption noUber(QStringLiteral("no-uber"),
+                                    QStringLiteral("Skip the über-shader comparison."));
+    const SceneOptionSet scene;
+    parser.addOption(help);
+    scene.addTo(parser);
+    parser.addOptions({lights, lightType, lightRange, frames, warmup, json, chart, noErrors, noUber});
+    parser.addPositionalArgument(QStringLiteral("MODEL"),
+                                 QStringLiteral("Model files (default: the standard suite)."),
+                                 QStringLiteral("[MODEL...]"));
+
+    auto usage = [&](const QString& message) {
+        err << name << ": " << message << "\nUsage: " << kUsage << "\nTry '" << name << " --help'.\n";
+        return int(Usage);
+    };
+    if (!parser.parse(args)) return usage(parser.errorText());
+    if (parser.isSet(help)) {
+        QString text = parser.helpText();
+        text.replace(0, text.indexOf(QLatin1Char('\n')), QStringLiteral("Usage: ") + QLatin1String(kUsage));
+        out << text;
+        return Ok;
+    }
+    QString message;
+    const std::optional<SceneOptions> sceneOptions = scene.read(parser, &message, true);
+    if (!sceneOptions) return usage(message);
+    BenchOptions options;
+    options.size = sceneOptions->size;
+    if (parser.isSet(scene.quality)) options.tiers = sceneOptions->qualities; // default: every tier
+    options.exposureEV = sceneOptions->exposureEV;
+    options.toneMap = sceneOptions->toneMap;
+    options.errors = !parser.isSet(noErrors);
+    options.uberShader = !parser.isSet(noUber);
+    auto readInt = [&](const QCommandLineOption& o, int lo, int hi, int* value) {
+        if (!parser.isSet(o)) return true;
+        bool ok = false;
+        *value = parser.value(o).toInt(&ok);
+        return ok && *value >= lo && *value <= hi;
+    };
+    if (!readInt(frames, 1, 100000, &options.frames))
+        return usage(QStringLiteral("--frames must be 1..100000"));
+    if (!readInt(warmup, 0, 100000, &options.warmupFrames))
+        return usage(QStringLiteral("--warmup must be 0..100000"));
+    const QStringList models = parser.positionalArguments();
+    std::vector<int> counts;
+    if (parser.isSet(lights)) {
+        const auto c = parseCounts(parser.value(lights));
+        if (!c)
+            return usage(QStringLiteral("--lights must be a list of counts 0..100000 like 1,8,64, got '%1'")
+                             .arg(parser.value(lights)));
+        counts = *c;
+        if (parser.isSet(scene.rig))
+            return usage(QStringLiteral("--lights replaces the rig: it excludes --rig"));
+    }
+    std::vector<LightType> types;
+    if (parser.isSet(lightType)) {
+        const auto t = parseNames<LightType>(parser.value(lightType));
+        if (!t)
+            return usage(QStringLiteral("--light-type must be a list of %1, got '%2'")
+                             .arg(allowedNames<LightType>(), parser.value(lightType)));
+        types = *t;
+    }
+    double range = -1.0;
+    if (parser.isSet(lightRange)) {
+        bool ok = false;
+        range = parser.value(lightRange).toDouble(&ok);
+        if (!ok || !(range > 0.0) || range > 1e6)
+            return usage(QStringLiteral("--light-range must be a number of radii in (0, 1e6]"));
+    }
+    const bool suite = models.isEmpty();
+    const bool procedural = !counts.empty() || !types.empty() || (suite && !parser.isSet(scene.rig));
+    if (procedural && counts.empty()) counts = suite ? std::vector<int>{1, 8, 64, 256} : std::vector<int>{8};
+    if (procedural && types.empty())
+        types = suite ? std::vector<LightType>{LightType::Point, LightType::Spot, LightType::Directional,
+                                               LightType::Rim}
+                      : std::vector<LightType>{LightType::Point};
+
+    auto failed = [&](const QString& reason) {
+        err << name << ": " << QString(reason).replace(QLatin1Char('\n'), QLatin1String(" | ")) << '\n';
+        return int(Failed);
+    };
+    if (parser.isSet(json) && !checkOutputPath(parser.value(json), &message)) return failed(message);
+    if (parser.isSet(chart) && !checkOutputPath(parser.value(chart), &message)) return failed(message);
+    if (!displayAvailable())
+        return failed(QStringLiteral("lightrig bench needs an X display; run it under xvfb-run -a"));
+
+    // Scenes: each model once (its rig), or once per procedural light count and type.
+    std::vector<BenchScene> scenes;
+    const QStringList paths = suite ? QStringList{QString::fromLatin1(kBundledModel)} : models;
+    for (const QString& path : paths) {
+        QElapsedTimer clock;
+        clock.start();
+        LoadedScene loaded;
+        if (!loadScene(path, *sceneOptions, &loaded, &message)) return failed(message);
+        const double loadMs = clock.nsecsElapsed() * 1e-6;
+        const QString base = QFileInfo(path).completeBaseName();
+        if (!procedural) {
+            scenes.push_back({base, loaded.model, loadMs, loaded.rig, loaded.camera});
+            continue;
+        }
+        for (LightType type : types) {
+            for (int n : counts) {
+                ProceduralRigOptions p;
+                p.type = type;
+                p.count = n;
+                p.range = range;
+                scenes.push_back({QStringLiteral("%1 · %2").arg(base, proceduralRigName(p)), loaded.model,
+                                  loadMs, proceduralRig(p), loaded.camera});
+            }
+        }
+    }
+
+    BenchReport report;
+    QString last;
+    int step = 0;
+    const int runs = int(scenes.size()) * int(options.tiers.size() + (options.uberShader ? 1 : 0));
+    const BenchProgress progress = [&](double, const QString& what) {
+        const QString run = what.section(QStringLiteral(": error"), 0, 0);
+        if (run != last && !run.endsWith(QLatin1String("reference")) && run != QLatin1String("done")) {
+            err << QStringLiteral("[%1/%2] %3\n").arg(++step).arg(runs).arg(run);
+            err.flush();
+        }
+        last = run;
+        return true;
+    };
+    const BenchStatus status = runQualityBench(scenes, options, &report, &message, progress);
+    if (status != BenchStatus::Ok) return failed(message);
+
+    out << QStringLiteral(
+               "lightrig bench: %1, %2x%3, %4 timed frames after %5 warm-up frames, load average %6\n")
+               .arg(report.glDescription)
+               .arg(options.size.width())
+               .arg(options.size.height())
+               .arg(options.frames)
+               .arg(options.warmupFrames)
+               .arg(report.loadAverage.isEmpty() ? QStringLiteral("unknown") : report.loadAverage);
+    out << benchTable(report);
+    if (parser.isSet(json) &&
+        !writeFile(parser.value(json), QJsonDocument(benchJson(report)).toJson(QJsonDocument::Indented),
+                   &message))
+        return failed(message);
+    if (parser.isSet(chart) && !writePng(parser.value(chart), benchChart(report), &message))
+        return failed(message);
+    return Ok;
+}
+
+} // namespace lr::cli

@@ -1,0 +1,157 @@
+// `lightrig bench` run as the user runs it (QProcess on the built executable): usage errors exit 2, bad
+// inputs exit 1 with a reason and write nothing, and a small run prints the table and writes a JSON file
+// with the documented keys and a PNG chart. Timing values are checked for sanity only (no timed tests).
+#include <QFile>
+#include <QImage>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QSet>
+#include <QTemporaryDir>
+#include <QTest>
+
+namespace {
+
+struct Run {
+    int code = -1;
+    QString out, err;
+};
+
+Run lightrig(const QStringList& args, int timeoutMs = 120000) {
+    QProcess p;
+    p.setProgram(QStringLiteral(LIGHTRIG_EXECUTABLE));
+    p.setArguments(QStringList{QStringLiteral("bench")} + args);
+    p.start();
+    Run r;
+    if (!p.waitForFinished(timeoutMs) || p.exitStatus() != QProcess::NormalExit) return r;
+    r.code = p.exitCode();
+    r.out = QString::fromUtf8(p.readAllStandardOutput());
+    r.err = QString::fromUtf8(p.readAllStandardError());
+    return r;
+}
+
+QString show(const Run& r) {
+    return QStringLiteral("exit %1\nstdout:\n%2\nstderr:\n%3").arg(r.code).arg(r.out, r.err);
+}
+
+bool haveDisplay() {
+    return qEnvironmentVariableIsSet("DISPLAY") || qEnvironmentVariableIsSet("WAYLAND_DISPLAY");
+}
+
+} // namespace
+
+class TestBenchCli : public QObject {
+    Q_OBJECT
+    QTemporaryDir m_dir;
+
+  private slots:
+    void initTestCase() {
+        QVERIFY2(QFile::exists(QStringLiteral(LIGHTRIG_EXECUTABLE)), LIGHTRIG_EXECUTABLE);
+        QVERIFY(m_dir.isValid());
+    }
+
+    void help() {
+        const Run r = lightrig({QStringLiteral("--help")});
+        QVERIFY2(r.code == 0, qPrintable(show(r)));
+        for (const char* option : {"--lights", "--quality", "--json", "--chart", "--frames", "--rig",
+                                   "--camera-index", "--view", "--size", "--exposure", "--tonemap"})
+            QVERIFY2(r.out.contains(QLatin1String(option)), option);
+    }
+
+    void usageErrors_data() {
+        QTest::addColumn<QStringList>("args");
+        QTest::addRow("frames 0") << QStringList{"--frames", "0"};
+        QTest::addRow("bad tier") << QStringList{"--quality", "exact,bogus"};
+        QTest::addRow("bad counts") << QStringList{"--lights", "8,x"};
+        QTest::addRow("negative count") << QStringList{"--lights", "-1"};
+        QTest::addRow("bad type") << QStringList{"--light-type", "laser"};
+        QTest::addRow("rig and lights") << QStringList{"--rig", "r.json", "--lights", "8"};
+        QTest::addRow("camera and view") << QStringList{"--camera-index", "0", "--view", "front"};
+        QTest::addRow("bad size") << QStringList{"--size", "12"};
+        QTest::addRow("unknown option") << QStringList{"--fastest"};
+    }
+
+    void usageErrors() {
+        QFETCH(QStringList, args);
+        const Run r = lightrig(args);
+        QVERIFY2(r.code == 2, qPrintable(show(r)));
+        QVERIFY2(r.err.contains(QStringLiteral("Usage: lightrig bench")), qPrintable(show(r)));
+    }
+
+    void badInputsWriteNothing() {
+        const QString json = m_dir.filePath(QStringLiteral("never.json"));
+        const Run missing =
+            lightrig({m_dir.filePath(QStringLiteral("nope.glb")), QStringLiteral("--json"), json});
+        QVERIFY2(missing.code == 1 && missing.err.contains(QStringLiteral("nope.glb")),
+                 qPrintable(show(missing)));
+        const Run noFolder =
+            lightrig({QStringLiteral("--json"), m_dir.filePath(QStringLiteral("no/such/dir/out.json"))});
+        QVERIFY2(noFolder.code == 1 && noFolder.err.contains(QStringLiteral("does not exist")),
+                 qPrintable(show(noFolder)));
+        QVERIFY(!QFile::exists(json));
+    }
+
+    void smallSuite() {
+        if (!haveDisplay()) QSKIP("needs an X display with OpenGL: run under xvfb-run -a");
+        const QString json = m_dir.filePath(QStringLiteral("bench.json")),
+                      chart = m_dir.filePath(QStringLiteral("chart.png"));
+        const Run r =
+            lightrig({QStringLiteral("--lights"), QStringLiteral("1,4"), QStringLiteral("--light-type"),
+                      QStringLiteral("point,spot"), QStringLiteral("--size"), QStringLiteral("64x48"),
+                      QStringLiteral("--frames"), QStringLiteral("2"), QStringLiteral("--warmup"),
+                      QStringLiteral("0"), QStringLiteral("--json"), json, QStringLiteral("--chart"), chart});
+        QVERIFY2(r.code == 0, qPrintable(show(r)));
+        QVERIFY2(r.out.contains(QStringLiteral("ms med")) && r.out.contains(QStringLiteral("über-shader")),
+                 qPrintable(show(r)));
+        QFile f(json);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QJsonParseError parseError;
+        const QJsonDocument doc = QJsonDocument::fromJson(f.readAll(), &parseError);
+        QVERIFY2(doc.isObject(), qPrintable(parseError.errorString()));
+        const QJsonArray results = doc.object().value(QStringLiteral("results")).toArray();
+        QCOMPARE(results.size(), 2 * 2 * 4); // types × counts × (exact, balanced, fast, über)
+        QSet<QString> scenes, tiers;
+        for (const QJsonValue& v : results) {
+            const QJsonObject o = v.toObject();
+            for (const char* key :
+                 {"scene", "lights", "quality", "width", "height", "ms_median", "ms_min", "ms_max",
+                  "first_frame_ms", "max_error_levels", "mean_error_levels", "psnr_db", "nonfinite_pixels",
+                  "gpu_ms_median", "variants", "lights_uploaded", "triangles"})
+                QVERIFY2(o.contains(QLatin1String(key)), key);
+            QCOMPARE(o.value(QStringLiteral("width")).toInt(), 64);
+            QCOMPARE(o.value(QStringLiteral("height")).toInt(), 48);
+            QVERIFY(o.value(QStringLiteral("ms_min")).toDouble() > 0.0);
+            QVERIFY(o.value(QStringLiteral("ms_min")).toDouble() <=
+                    o.value(QStringLiteral("ms_max")).toDouble());
+            QCOMPARE(o.value(QStringLiteral("nonfinite_pixels")).toInt(), 0);
+            QVERIFY(o.value(QStringLiteral("lights")).toInt() == 1 ||
+                    o.value(QStringLiteral("lights")).toInt() == 4);
+            scenes.insert(o.value(QStringLiteral("scene")).toString());
+            tiers.insert(o.value(QStringLiteral("quality")).toString());
+        }
+        QCOMPARE(scenes.size(), 4);
+        QCOMPARE(tiers, (QSet<QString>{QStringLiteral("exact"), QStringLiteral("balanced"),
+                                       QStringLiteral("fast")}));
+        QCOMPARE(doc.object().value(QStringLiteral("uber_shader")).toArray().size(), 4);
+        const QImage image(chart);
+        QVERIFY(!image.isNull());
+        QCOMPARE(image.size(), QSize(1000, 640));
+    }
+
+    void modelWithItsRigAndOneTier() {
+        if (!haveDisplay()) QSKIP("needs an X display with OpenGL: run under xvfb-run -a");
+        const Run r = lightrig({QStringLiteral(LIGHTRIG_TEST_DATA "/model/scene.gltf"),
+                                QStringLiteral("--quality"), QStringLiteral("fast"), QStringLiteral("--size"),
+                                QStringLiteral("48x32"), QStringLiteral("--frames"), QStringLiteral("2"),
+                                QStringLiteral("--no-uber"), QStringLiteral("--no-errors")});
+        QVERIFY2(r.code == 0, qPrintable(show(r)));
+        const QStringList lines = r.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 3); // heading, column titles, one result
+        QVERIFY(lines[2].startsWith(QStringLiteral("scene ")) && lines[2].contains(QStringLiteral(" fast ")));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestBenchCli)
+
+#include "tst_benchcli.moc"
