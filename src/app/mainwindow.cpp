@@ -10,6 +10,7 @@
 #include "presetsdock.h"
 #include "presetstore.h"
 #include "propertiesdock.h"
+#include "qualitydock.h"
 #include "recentfiles.h"
 #include "rendersettingsdock.h"
 #include "scene.h"
@@ -77,6 +78,7 @@ void MainWindow::createDocks() {
     resizeDocks({m_lightsDock, m_propertiesDock}, {400, 340}, Qt::Horizontal);
     resizeDocks({m_lightsDock, m_presetsDock}, {300, 400}, Qt::Vertical);
     resizeDocks({m_propertiesDock, m_renderDock}, {560, 300}, Qt::Vertical);
+    addQualityDock(this);  // the Quality panel (qualitydock.h), a tab beside Render settings
 }
 
 void MainWindow::connectStatus() {

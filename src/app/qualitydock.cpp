@@ -225,7 +225,10 @@ QualityDock* addQualityDock(MainWindow* window) {
     });
     dock->setTierChooser([window](Quality q) { window->viewSettings()->setQuality(q); });
     window->addDockWidget(Qt::RightDockWidgetArea, dock);
-    if (QDockWidget* render = window->renderSettingsDock()) window->tabifyDockWidget(render, dock);
+    if (QDockWidget* render = window->renderSettingsDock()) {
+        window->tabifyDockWidget(render, dock);
+        render->raise();
+    }
     return dock;
 }
 

@@ -1,0 +1,118 @@
+// The editor's Quality panel: a measurement of the current scene fills the table (one row per tier and
+// the über-shader) and the chart, reports progress, can be cancelled, says why when there is nothing to
+// measure, and "Use tier" hands the selected row's tier to the view settings.
+#include "app/qualitydock.h"
+#include "render/glfixture.h"
+#include "render/scenes.h"
+
+#include <QApplication>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTableWidget>
+#include <QTest>
+#include <QTimer>
+
+using namespace lr;
+using namespace lr::test;
+
+namespace {
+
+QualityRequest sphereRequest() {
+    QualityRequest r;
+    r.scene.name = QStringLiteral("sphere");
+    r.scene.model = sphereScene();
+    r.scene.rig = rigCases().back().make(); // mixed-all-types
+    r.scene.camera = sphereCamera();
+    r.viewportSize = QSize(96, 72);
+    return r;
+}
+
+} // namespace
+
+class TestQualityDock : public QObject {
+    Q_OBJECT
+  private slots:
+    void initTestCase() { LR_REQUIRE_DISPLAY(); }
+
+    void measuresTheCurrentScene() {
+        QualityDock dock;
+        dock.setFrames(3);
+        dock.setSceneProvider([](QString*) { return std::optional<QualityRequest>(sphereRequest()); });
+        std::optional<Quality> chosen;
+        dock.setTierChooser([&](Quality q) { chosen = q; });
+        auto* progress = dock.findChild<QProgressBar*>();
+        QVERIFY(progress);
+        int progressUpdates = 0;
+        connect(progress, &QProgressBar::valueChanged, this, [&] { ++progressUpdates; });
+        QSignalSpy finished(&dock, &QualityDock::finished);
+        dock.measure();
+        QCOMPARE(finished.count(), 1);
+        QVERIFY2(finished.first().at(0).toBool(), qPrintable(finished.first().at(1).toString()));
+        QVERIFY(!dock.isRunning());
+        QVERIFY(progressUpdates > 3);
+        QCOMPARE(progress->value(), progress->maximum());
+
+        auto* table = dock.findChild<QTableWidget*>();
+        QVERIFY(table);
+        QCOMPARE(table->rowCount(), 4); // exact, balanced, fast, über-shader
+        QCOMPARE(int(dock.report().results.size()), 4);
+        QCOMPARE(dock.report().results[0].size, QSize(96, 72)); // the viewport's size by default
+        QCOMPARE(table->item(2, 2)->text(), QStringLiteral("fast"));
+        for (const BenchResult& r : dock.report().results)
+            QVERIFY(r.hasErrors && r.errors.nonFinite == 0);
+        bool chart = false;
+        for (QLabel* label : dock.findChildren<QLabel*>())
+            chart |= !label->pixmap().isNull();
+        QVERIFY(chart);
+
+        auto* use = [&]() -> QPushButton* {
+            for (QPushButton* b : dock.findChildren<QPushButton*>())
+                if (b->text() == QLatin1String("Use tier")) return b;
+            return nullptr;
+        }();
+        QVERIFY(use);
+        QVERIFY(!use->isEnabled());
+        table->selectRow(1);
+        QVERIFY(use->isEnabled());
+        use->click();
+        QVERIFY(chosen && *chosen == Quality::Balanced);
+    }
+
+    void cancelStopsTheMeasurement() {
+        QualityDock dock;
+        dock.setFrames(200);
+        dock.setSceneProvider([](QString*) { return std::optional<QualityRequest>(sphereRequest()); });
+        QSignalSpy finished(&dock, &QualityDock::finished);
+        QTimer::singleShot(0, &dock, &QualityDock::cancel); // runs inside the measurement's event processing
+        dock.measure();
+        QCOMPARE(finished.count(), 1);
+        QVERIFY(!finished.first().at(0).toBool());
+        QVERIFY(!dock.isRunning());
+        QVERIFY(dock.report().results.empty());
+    }
+
+    void saysWhyWhenThereIsNothingToMeasure() {
+        QualityDock dock;
+        dock.setSceneProvider([](QString* why) {
+            *why = QStringLiteral("no model is loaded");
+            return std::optional<QualityRequest>();
+        });
+        QSignalSpy finished(&dock, &QualityDock::finished);
+        dock.measure();
+        QCOMPARE(finished.count(), 1);
+        QVERIFY(!finished.first().at(0).toBool());
+        QVERIFY(finished.first().at(1).toString().contains(QStringLiteral("no model is loaded")));
+    }
+};
+
+int main(int argc, char** argv) {
+    if (!lr::test::haveDisplay()) qputenv("QT_QPA_PLATFORM", "offscreen");
+    QApplication app(argc, argv);
+    TestQualityDock tc;
+    QTEST_SET_MAIN_SOURCE_PATH
+    return QTest::qExec(&tc, argc, argv);
+}
+
+#include "tst_qualitydock.moc"
