@@ -146,19 +146,6 @@ class FrameReader {
     QString m_problem;
 };
 
-// The worker is a fresh process that faults in every page Assimp touches: with transparent huge pages
-// for its heap (glibc's malloc.hugetlb, where the kernel offers THP on madvise) and freed memory kept
-// for reuse, a 1M-triangle PLY import took ~50k fewer page faults. A GLIBC_TUNABLES of the user's own
-// is left alone (the worker still sets the allocator's thresholds itself).
-QProcessEnvironment workerEnvironment() {
-    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-    if (!env.contains(QStringLiteral("GLIBC_TUNABLES")))
-        env.insert(QStringLiteral("GLIBC_TUNABLES"),
-                   QStringLiteral("glibc.malloc.hugetlb=1:glibc.malloc.mmap_threshold=33554432:"
-                                  "glibc.malloc.trim_threshold=2147483647:glibc.malloc.top_pad=67108864"));
-    return env;
-}
-
 QString seconds(int ms) {
     return QString::number(ms / 1000.0, 'g', 4);
 }
@@ -232,7 +219,6 @@ ModelLoadResult importModelIsolated(const QString& path, const ModelLoadOptions&
     QProcess worker;
     worker.setProgram(executable);
     worker.setArguments({QString::fromLatin1(ip::kSubcommand)});
-    worker.setProcessEnvironment(workerEnvironment());
     const qint64 memory = limits.memoryBytes;
     worker.setChildProcessModifier([memory] {
         // Runs in the child between fork and exec: async-signal-safe calls only.
