@@ -54,6 +54,9 @@ Viewport::Viewport(Document* document, Scene* scene, ViewSettings* settings, QWi
 Viewport::~Viewport() {
     m_snapshots.reset();
     releaseGL();
+    // ~QOpenGLWidget destroys the context, whose aboutToBeDestroyed would call releaseGL on a Viewport that
+    // is already destroyed (UBSan: "downcast ... does not point to an object of type 'Viewport'").
+    if (context()) disconnect(context(), nullptr, this, nullptr);
 }
 
 void Viewport::setDefaultSurfaceFormat() {
