@@ -186,7 +186,7 @@ class TestUiValues : public QObject {
         auto* name = qobject_cast<QLineEdit*>(dock.field(LightProperty::Name));
         QVERIFY(name);
         for (const QString& text : {QString(10000, QChar(u'n')), QStringLiteral("   "), QStringLiteral("\t"),
-                                    QString(300, QChar(0x1F600))}) {
+                                    QStringLiteral("\U0001F600").repeated(300)}) {
             name->setFocus();
             name->selectAll();
             name->insert(text); // pasted: keyClicks only types ASCII
