@@ -20,6 +20,7 @@
 #include <fcntl.h>
 #include <mutex>
 #include <new>
+#include <sys/stat.h>
 #include <unistd.h>
 #include <vector>
 
@@ -32,15 +33,19 @@ namespace ip = importprotocol;
 int g_replyFd = -1;
 volatile std::sig_atomic_t g_allocationFailed = 0;
 
-bool writeAll(const char* data, std::size_t size) {
+bool writeFd(int fd, const char* data, std::size_t size) {
     while (size > 0) {
-        const ssize_t n = ::write(g_replyFd, data, size);
+        const ssize_t n = ::write(fd, data, size);
         if (n < 0 && errno == EINTR) continue;
         if (n <= 0) return false;
         data += n;
         size -= std::size_t(n);
     }
     return true;
+}
+
+bool writeAll(const char* data, std::size_t size) {
+    return writeFd(g_replyFd, data, size);
 }
 
 bool writeFrame(char type, const char* payload, std::size_t size) {
@@ -101,7 +106,34 @@ QByteArray readRequest() {
     return request;
 }
 
-[[noreturn]] void testCrash(const QByteArray& mode) {
+// The parent's memfd (a sealable file: F_GET_SEALS works on nothing else), empty, at offset 0.
+bool sharedUsable(int fd) {
+#ifdef F_GET_SEALS
+    struct stat st {};
+    return fd >= 0 && ::fcntl(fd, F_GET_SEALS) >= 0 && ::fstat(fd, &st) == 0 && st.st_size == 0 &&
+           ::lseek(fd, 0, SEEK_CUR) == 0;
+#else
+    Q_UNUSED(fd);
+    return false;
+#endif
+}
+
+// The model into the shared memfd, then the 'S' frame with its size; false (and the memfd emptied)
+// when it could not be written, so that the pipe can carry it instead.
+bool sendShared(int fd, const Model& model) {
+    if (!sharedUsable(fd)) return false;
+    const quint64 size = encodedModelSize(model);
+    const bool written =
+        writeModel(model, [fd](const char* data, std::size_t n) { return writeFd(fd, data, n); });
+    if (!written) {
+        [[maybe_unused]] const int ignored = ::ftruncate(fd, 0);
+        ::lseek(fd, 0, SEEK_SET);
+        return false;
+    }
+    return writeFrame(ip::kShared, reinterpret_cast<const char*>(&size), sizeof size);
+}
+
+[[noreturn]] void testCrash(const QByteArray& mode, int sharedFd) {
     if (mode == "segv") ::raise(SIGSEGV);
     if (mode == "abort") std::abort();
     if (mode == "hang")
@@ -127,6 +159,12 @@ QByteArray readRequest() {
         writeAll(header, sizeof header);
         writeAll(encoded.constData(), std::size_t(encoded.size() / 2));
     }
+    if (mode == "shared-garbage" || mode == "shared-short") {
+        const QByteArray junk(4096, '\x5a');
+        writeFd(sharedFd, junk.constData(), std::size_t(junk.size()));
+        const quint64 size = mode == "shared-short" ? 8192 : 4096;
+        writeFrame(ip::kShared, reinterpret_cast<const char*>(&size), sizeof size);
+    }
     std::_Exit(mode == "exit" ? 3 : 0);
 }
 
@@ -146,7 +184,8 @@ int runImportWorker(const QStringList&) {
                "itself)\n";
         return Usage;
     }
-    if (const QByteArray mode = qgetenv(ip::kTestCrashVariable); !mode.isEmpty()) testCrash(mode);
+    const int sharedFd = request.value(QStringLiteral("sharedFd")).toInt(-1);
+    if (const QByteArray mode = qgetenv(ip::kTestCrashVariable); !mode.isEmpty()) testCrash(mode, sharedFd);
 
     ModelLoadOptions options;
     options.allowTexturesOutsideFolder =
@@ -168,10 +207,13 @@ int runImportWorker(const QStringList&) {
     const std::lock_guard lock(writing);
     bool sent;
     if (result.ok()) {
-        char header[ip::kFrameHeaderSize] = {ip::kModel};
-        const quint64 length = encodedModelSize(*result.model);
-        std::memcpy(header + 1, &length, sizeof length);
-        sent = writeAll(header, sizeof header) && writeModel(*result.model, writeAll);
+        sent = sendShared(sharedFd, *result.model);
+        if (!sent) {
+            char header[ip::kFrameHeaderSize] = {ip::kModel};
+            const quint64 length = encodedModelSize(*result.model);
+            std::memcpy(header + 1, &length, sizeof length);
+            sent = writeAll(header, sizeof header) && writeModel(*result.model, writeAll);
+        }
     } else {
         QByteArray payload(1, char((result.cancelled ? ip::kErrorCancelled : 0) |
                                    (g_allocationFailed ? ip::kErrorOutOfMemory : 0)));

@@ -22,6 +22,8 @@ struct ImportLimits {
     qint64 memoryBytes = 8ll << 30; // the worker's address-space limit (RLIMIT_AS); <= 0: none
     // Set to true (from any thread) to stop the import; the worker is killed within ~50 ms.
     const std::atomic<bool>* cancel = nullptr;
+    // The model comes back through a memfd (Linux) rather than the worker's stdout: fewer copies.
+    bool sharedMemory = true;
 };
 
 // Imports `path` in a worker process. options.progress is called on the calling thread at least every

@@ -1,7 +1,7 @@
 // Not a test: measures what the import worker costs. For each file named on the command line, imports it
 // directly (loadModel) and through the worker (importModelIsolated, LIGHTRIG_EXECUTABLE as the worker)
 // alternately, N times each (--runs N, default 5), and prints the medians and the overhead:
-//   import_timing [--runs N] [--only direct|isolated] FILE...
+//   import_timing [--runs N] [--only direct|isolated] [--transport memfd|pipe] FILE...
 #include "model/isolatedimport.h"
 #include "model/modelloader.h"
 
@@ -37,10 +37,13 @@ int main(int argc, char** argv) {
     lr::setImportWorkerExecutable(QStringLiteral(LIGHTRIG_EXECUTABLE));
     QStringList args = app.arguments().mid(1);
     int runs = 5;
-    int only = -1; // --only direct|isolated: one kind of run (for profiling each alone)
+    int only = -1;
+    lr::ImportLimits limits; // --transport pipe: the model through the worker's stdout, not a memfd // --only
+                             // direct|isolated: one kind of run (for profiling each alone)
     while (args.size() >= 2 && args[0].startsWith(QLatin1String("--"))) {
         if (args[0] == QLatin1String("--runs")) runs = std::max(1, args[1].toInt());
         if (args[0] == QLatin1String("--only")) only = args[1] == QLatin1String("isolated") ? 1 : 0;
+        if (args[0] == QLatin1String("--transport")) limits.sharedMemory = args[1] != QLatin1String("pipe");
         args = args.mid(2);
     }
     int status = 0;
@@ -54,7 +57,7 @@ int main(int argc, char** argv) {
                 const double cpu0 = cpuMs();
                 t.start();
                 const lr::ModelLoadResult r =
-                    isolatedRun ? lr::importModelIsolated(path) : lr::loadModel(path);
+                    isolatedRun ? lr::importModelIsolated(path, {}, limits) : lr::loadModel(path);
                 const double ms = double(t.nsecsElapsed()) / 1e6, cpu = cpuMs() - cpu0;
                 if (!r.ok()) {
                     std::printf("%s: %s\n", qPrintable(path), qPrintable(r.error));

@@ -80,14 +80,23 @@ class TestIsolatedImport : public QObject {
 
 void TestIsolatedImport::goodModelsEqualDirectImport_data() {
     QTest::addColumn<QString>("path");
+    QTest::addColumn<bool>("sharedMemory");
+    QStringList paths;
     for (const char* f : {"quad.obj", "colors.ply", "scene.gltf", "tetra.stl"})
-        QTest::newRow(f) << kData + QLatin1Char('/') + QLatin1String(f);
-    QTest::newRow("bundled Suzanne (resource)") << QStringLiteral(":/resources/models/suzanne/Suzanne.gltf");
+        paths << kData + QLatin1Char('/') + QLatin1String(f);
+    paths << QStringLiteral(":/resources/models/suzanne/Suzanne.gltf"); // the bundled model, a resource
+    for (const QString& path : paths)
+        for (const bool shared : {true, false})
+            QTest::addRow("%s via %s", qPrintable(QFileInfo(path).fileName()), shared ? "memfd" : "pipe")
+                << path << shared;
 }
 
 void TestIsolatedImport::goodModelsEqualDirectImport() {
     QFETCH(QString, path);
-    const ModelLoadResult isolated = importModelIsolated(path);
+    QFETCH(bool, sharedMemory);
+    ImportLimits limits;
+    limits.sharedMemory = sharedMemory;
+    const ModelLoadResult isolated = importModelIsolated(path, {}, limits);
     QVERIFY2(isolated.ok(), qPrintable(isolated.error));
     QVERIFY(isolated.model->loadMs > 0.0);
     const QString problem = test::modelProblems(*isolated.model);
@@ -146,6 +155,12 @@ void TestIsolatedImport::workerDeaths_data() {
                              << QStringLiteral("the importer sent a malformed reply (");
     QTest::newRow("truncate") << QByteArray("truncate")
                               << QStringLiteral("the importer sent a malformed reply (truncated)");
+    QTest::newRow("shared-garbage") << QByteArray("shared-garbage")
+                                    << QStringLiteral("the importer sent a malformed reply (");
+    QTest::newRow("shared-short") << QByteArray("shared-short")
+                                  << QStringLiteral(
+                                         "the importer sent a malformed reply (the shared reply is "
+                                         "shorter than announced)");
     QTest::newRow("exit") << QByteArray("exit")
                           << QStringLiteral("the importer exited with code 3 without a result");
 }
