@@ -19,8 +19,8 @@
 // Quality tiers change how the formulas are evaluated, never what they are. Exact: the functions below
 // as written. Balanced: lrPow/lrAcos/powSpecular swap safePow, safeAcos and the specular power for the
 // cheaper evaluations of the "balanced tier" block, and shadeLight() rejects lights outside their range
-// or cone before normalising (B1-B4 in docs/quality.md). Fast: shadeVertex() at the vertices (Gouraud)
-// with the infinite viewer, interpolated, the albedo and ks applied per pixel.
+// or cone before normalising (B1-B4 in docs/quality.md). Fast: shadeVertex() at the vertices (Gouraud),
+// interpolated, the albedo and ks applied per pixel.
 
 const float kMinDenominator = 1e-4;  // floor of d^2 and of the inverse-polynomial denominator
 const float kMinConeWidth = 1e-7;    // narrowest smooth-cone width treated as a smooth edge
@@ -68,6 +68,9 @@ vec3 safeNormalize(vec3 v, vec3 fallback) {
     return v / sqrt(s);
 }
 
+// The balanced tier's approximations LR_B1 ... LR_B4 are defined by the generator (shadergen.cpp): B1, B2
+// and B4 by default; LIGHTRIG_BALANCED=b1,b3 in the environment picks others, for measuring each alone.
+
 #ifdef LR_QUALITY_BALANCED
 // ---- balanced tier: cheaper evaluations, each measured in docs/quality.md ----
 
@@ -81,36 +84,21 @@ float acosBalanced(float c) {
     return x < 0.0 ? 3.14159265358979 - r : r;
 }
 
-// B2 integer exponents: x^n by repeated squaring for whole n in 1..256 (products instead of pow's
-// exp2(n·log2 x); as accurate or more), pow() otherwise. The branch is uniform across a light or material.
-float powBalanced(float base, float exponent) {
-    if (!(exponent > 0.0)) return 1.0;
-    if (!(base > 0.0)) return 0.0;
-    if (exponent == 1.0) return base;
-    if (exponent == 2.0) return base * base;
-    if (exponent <= 256.0 && exponent == floor(exponent)) {
-        int n = int(exponent);
-        float r = 1.0, b = base;
-        for (int i = 0; i < 9; ++i) {
-            if ((n & 1) != 0) r *= b;
-            n >>= 1;
-            if (n == 0) break;
-            b *= b;
-        }
-        return r;
-    }
-    return pow(base, exponent);
-}
-#define lrPow powBalanced
+// B2 integer shininess: see powSpecular below (the chain of products is generated per variant).
+#endif
+#ifdef LR_B1
 #define lrAcos acosBalanced
 #else
-#define lrPow safePow
 #define lrAcos safeAcos
 #endif
+#define lrPow safePow
 
-// The specular power x^shininess. Balanced with an integer shininess known when the variant is built
-// (LR_SHININESS_INT): the generated chain of products powShininessInt() (B2), else lrPow.
-#ifdef LR_SHININESS_INT
+// The specular power x^shininess. B2: with an integer shininess known when the variant is built
+// (LR_SHININESS_INT, balanced only), x^n by repeated squaring, the generated chain of products
+// powShininessInt() (at most 2·log2(n) multiplications instead of pow's exp2(n·log2 x); as accurate or
+// more). A runtime test of the exponent would not help on a SIMD rasteriser (llvmpipe evaluates both sides
+// of a branch under a mask), hence the specialisation. Per-light exponents (falloff, cone, rim) keep pow.
+#if defined(LR_SHININESS_INT) && defined(LR_B2)
 float powSpecular(float base, float shininess) { return base > 0.0 ? powShininessInt(base) : 0.0; }
 #else
 float powSpecular(float base, float shininess) { return lrPow(base, shininess); }
@@ -367,7 +355,7 @@ float evalCone(ShadeLight l, float cosTheta) {
     return 0.0;
 }
 
-#ifdef LR_QUALITY_BALANCED
+#ifdef LR_B3
 // Whether the light's falloff is exactly zero at d >= range (range-power and range-quadratic always,
 // the inverse falloffs when they have a range, i.e. range >= 0).
 bool lightIsBounded(ShadeLight l) {
@@ -377,10 +365,11 @@ bool lightIsBounded(ShadeLight l) {
 }
 #endif
 
-// The fast tier always uses the infinite viewer (F2 in docs/quality.md).
+// The viewer as the rig asks, in every tier. LR_FAST_INFINITE_VIEWER (measuring only): the fast tier with
+// Direct3D's default infinite viewer (F2 in docs/quality.md, measured and dropped).
 vec3 viewVector(ShadeSettings s, vec3 P) {
     const vec3 infinite = vec3(0.0, 0.0, 1.0);
-#if LR_VIEWER == LR_VIEWER_LOCAL && !defined(LR_QUALITY_FAST)
+#if LR_VIEWER == LR_VIEWER_LOCAL && !defined(LR_FAST_INFINITE_VIEWER)
     return safeNormalize(-P, infinite);
 #else
     return infinite;
@@ -399,35 +388,35 @@ vec3 shadeLight(ShadeLight l, Surface s, ShadeSettings st, vec3 V) {
 #ifdef LR_HAS_POSITIONAL
     if (lightTypeOf(l) != LR_LIGHT_DIRECTIONAL) {
         vec3 toLight = l.position - s.position;
-#ifdef LR_QUALITY_BALANCED
-        // B3 early-out: beyond a bounded falloff's range (squared distances, before any sqrt) or outside
-        // the cone (cosine space, before the falloff), the light adds exactly zero.
+#ifdef LR_B3
+        // B3 early-out: beyond a bounded falloff's range (squared distances, before any sqrt) the light
+        // adds exactly zero.
         float d2 = dot(toLight, toLight);
-        float scale2 = st.distanceScale * st.distanceScale;
-        if (l.range > 1e-18 && lightIsBounded(l) && d2 * scale2 >= l.range * l.range) return vec3(0.0);
-        // B4 normalisation by one inversesqrt where |toLight| is well inside float's range.
-        float d;
-        if (d2 > 1e-30 && d2 < 1e30) {
-            float inv = inversesqrt(d2);
-            L = toLight * inv;
-            d = d2 * inv * st.distanceScale;
-        } else {
-            L = safeNormalize(toLight, N);
-            d = dot(toLight, L) * st.distanceScale;
-            if (!(abs(d) <= kFloatMax)) d = kFloatMax;
-        }
-#ifdef LR_HAS_LIGHT_SPOT
-        float cosTheta = dot(-L, l.direction);
-        if (lightTypeOf(l) == LR_LIGHT_SPOT && cosTheta < l.cosOuter) return vec3(0.0);
+        if (l.range > 1e-18 && lightIsBounded(l) && d2 * (st.distanceScale * st.distanceScale) >= l.range * l.range)
+            return vec3(0.0);
 #endif
+#ifdef LR_B4
+        // B4 L and d from one inversesqrt, without branches. Outside 1e-15 < |toLight| < 1e15 (a light
+        // within 1e-15 of the surface, or farther than rig files allow) L falls back to N and d to 0 or the
+        // largest float, where the exact tier rescales first.
+        float t2 = dot(toLight, toLight);
+        float inv = inversesqrt(t2);
+        bool inRange = t2 > 1e-30 && t2 < 1e30;
+        L = inRange ? toLight * inv : N;
+        float d = (inRange ? t2 * inv : (!(t2 <= 1.0) ? kFloatMax : 0.0)) * st.distanceScale;
+        if (!(abs(d) <= kFloatMax)) d = kFloatMax;
 #else
         L = safeNormalize(toLight, N);  // a light on the surface shines along the normal
         // |toLight| as dot(toLight, L): no squared intermediate to overflow or underflow, one sqrt fewer;
         // an overflowing distance becomes the largest float (every falloff then gives its limit).
         float d = dot(toLight, L) * st.distanceScale;
         if (!(abs(d) <= kFloatMax)) d = kFloatMax;
+#endif
 #ifdef LR_HAS_LIGHT_SPOT
         float cosTheta = dot(-L, l.direction);
+#ifdef LR_B3
+        // ... and outside the cone (cosine space, before the falloff and the cone are evaluated).
+        if (lightTypeOf(l) == LR_LIGHT_SPOT && cosTheta < l.cosOuter) return vec3(0.0);
 #endif
 #endif
         attenuation = evalFalloff(l, d);
@@ -470,7 +459,7 @@ vec3 shadeSurface(Surface s, ShadeSettings st) {
 // the vertices and interpolated; the albedo and ks, textured per pixel, multiply it afterwards:
 //   radiance = albedo · diffuse + ks · specular + added + emissive, where
 //   diffuse = scene ambient + Σ attenuation·(colour·D + Ac), specular = Σ attenuation·Sc·S, added = Σ rim.
-// Per light the same formulas and guards as shadeLight(); the viewer is infinite (F2).
+// Per light the same formulas and guards as shadeLight(), with the viewer V at the vertex.
 struct VertexLight {
     vec3 diffuse;
     vec3 specular;

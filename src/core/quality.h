@@ -8,8 +8,8 @@
 namespace lr {
 
 // Exact: per-pixel, exact acos, local viewer as the rig asks, MSAA on.
-// Balanced: per-pixel with measured cheaper evaluations. Fast: per-vertex lighting, infinite viewer, no MSAA.
-// (Only Exact is implemented by the renderer so far; the others render as Exact.)
+// Balanced: per-pixel with measured cheaper evaluations. Fast: per-vertex (Gouraud) lighting, no MSAA.
+// docs/quality.md names and measures every approximation (and why fast keeps the rig's viewer).
 enum class Quality { Exact, Balanced, Fast };
 
 template <> struct EnumNames<Quality> {

@@ -60,8 +60,8 @@ struct RenderSettings {
     bool showGrid = false;
     std::vector<int> selectedLights;  // indices into the rig's lights, highlighted
     // How the rig is evaluated (docs/quality.md): Exact per pixel as src/core; Balanced per pixel with
-    // measured cheaper evaluations; Fast per vertex (Gouraud), infinite viewer, never MSAA (msaaSamples and
-    // the deferred path are ignored). The G-buffer is always the exact per-pixel surface.
+    // measured cheaper evaluations; Fast per vertex (Gouraud), never MSAA (msaaSamples and the deferred
+    // path are ignored). The G-buffer is always the exact per-pixel surface.
     Quality quality = Quality::Exact;
     // The über-shader: compile every light type and model into the lighting code whatever the rig uses
     // (for `lightrig bench`, to measure what specialising the shaders per scene saves). Same pixels.

@@ -170,7 +170,20 @@ QByteArray shaderPrelude(const FeatureKey& key) {
     out += "#define LR_QUALITY_" + macroName(EnumNames<Quality>::names[size_t(key.quality)]) + " 1\n";
     if (key.deferredLighting) out += "#define LR_DEFERRED_LIGHTING 1\n";
     if (key.clustered) out += "#define LR_CLUSTERED 1\n";
-    if (key.shininessInt > 0 && key.shininessInt <= kMaxShininessInt) {
+    // The balanced tier's approximations (docs/quality.md): B1, B2 and B4; B3 (early-outs) measured no gain
+    // on llvmpipe. LIGHTRIG_BALANCED=b1,b3 (environment, whole process) picks others, for measuring each.
+    static const QByteArrayList balanced = qEnvironmentVariableIsSet("LIGHTRIG_BALANCED")
+                                               ? qgetenv("LIGHTRIG_BALANCED").toLower().split(',')
+                                               : QByteArrayList{"b1", "b2", "b4"};
+    if (key.quality == Quality::Balanced)
+        for (const char* b : {"b1", "b2", "b3", "b4"})
+            if (balanced.contains(b)) out += "#define LR_" + QByteArray(b).toUpper() + " 1\n";
+    // Measuring F2 (docs/quality.md): LIGHTRIG_FAST_INFINITE_VIEWER=1 gives the fast tier Direct3D's
+    // infinite viewer (dropped from the tier: it saved no measurable time and doubled its error).
+    if (key.quality == Quality::Fast && qEnvironmentVariableIntValue("LIGHTRIG_FAST_INFINITE_VIEWER") == 1)
+        out += "#define LR_FAST_INFINITE_VIEWER 1\n";
+    if (key.quality == Quality::Balanced && key.shininessInt > 0 && key.shininessInt <= kMaxShininessInt &&
+        balanced.contains("b2")) {
         // x^n by repeated squaring, unrolled here so the shader is a plain chain of products.
         out += "#define LR_SHININESS_INT " + QByteArray::number(key.shininessInt) + '\n';
         out += "float powShininessInt(float x) {\n    float r = 1.0, b = x;\n";

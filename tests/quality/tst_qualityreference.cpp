@@ -8,9 +8,9 @@
 // (One level is the 8-bit rounding: a flat area whose exact value sits near a rounding boundary may be
 // off by one level everywhere, so the mean of even the exact tier can reach 1/3 or more.)
 //   fast      finite and no better than exact; mean <= 64 levels only as a sanity bound (per-vertex lighting
-//             with the infinite viewer loses highlights and rim light: 10-40 levels are normal here). Where
-//             its approximations are exact (a plane, directional lights, the rig's viewer infinite) it
-//             must equal exact within one level.
+//             on these coarse meshes loses highlights, cone and range edges: several levels are normal). Where
+//             Gouraud is exact (a plane, directional lights, the infinite viewer) it must equal exact within
+//             one level.
 #include "qualityscenes.h"
 
 #include "render/qualitybench.h"
