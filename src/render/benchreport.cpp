@@ -44,12 +44,12 @@ QColor tierColor(const BenchResult& r) {
 } // namespace
 
 QStringList benchTableHeaders() {
-    return {QStringLiteral("scene"),    QStringLiteral("lights"),   QStringLiteral("tier"),
-            QStringLiteral("ms med"),   QStringLiteral("min"),      QStringLiteral("max"),
-            QStringLiteral("cpu ms"),   QStringLiteral("gpu ms"),   QStringLiteral("×exact"),
-            QStringLiteral("first ms"), QStringLiteral("variants"), QStringLiteral("triangles"),
-            QStringLiteral("max err"),  QStringLiteral("mean err"), QStringLiteral("PSNR dB"),
-            QStringLiteral(">1 lvl"),   QStringLiteral("NaN/Inf")};
+    return {QStringLiteral("scene"),     QStringLiteral("lights"),   QStringLiteral("tier"),
+            QStringLiteral("ms med"),    QStringLiteral("min"),      QStringLiteral("max"),
+            QStringLiteral("cpu ms"),    QStringLiteral("gpu ms"),   QStringLiteral("×exact"),
+            QStringLiteral("cpu×"),      QStringLiteral("first ms"), QStringLiteral("variants"),
+            QStringLiteral("triangles"), QStringLiteral("max err"),  QStringLiteral("mean err"),
+            QStringLiteral("PSNR dB"),   QStringLiteral(">1 lvl"),   QStringLiteral("NaN/Inf")};
 }
 
 QStringList benchTableRow(const BenchResult& r) {
@@ -63,6 +63,7 @@ QStringList benchTableRow(const BenchResult& r) {
                     num(r.cpuMsMedian, 1),
                     r.gpuMsMedian >= 0.0 ? num(r.gpuMsMedian, 2) : none,
                     r.speedUp > 0.0 ? num(r.speedUp, 2) : none,
+                    r.cpuSpeedUp > 0.0 ? num(r.cpuSpeedUp, 2) : none,
                     num(r.firstFrameMs, 0),
                     QString::number(r.variants),
                     QString::number(r.triangles)};
@@ -101,10 +102,12 @@ QString benchTable(const BenchReport& report) {
         out += QStringLiteral(
             "\nSpecialised shaders against the über-shader (every light model compiled in), exact tier:\n");
         for (const UberComparison& u : uber)
-            out += QStringLiteral(
-                       "  %1: %2 ms/frame specialised, %3 ms über (%4% saved); first draw %5 ms vs %6 ms\n")
-                       .arg(u.scene, num(u.specialisedMs, 2), num(u.uberMs, 2), num(100.0 * u.saving(), 1),
-                            num(u.specialisedFirstDrawMs, 0), num(u.uberFirstDrawMs, 0));
+            out +=
+                QStringLiteral("  %1: %2 ms/frame specialised, %3 ms über (%4% saved); CPU %5 vs %6 ms (%7% "
+                               "saved); first draw %8 vs %9 ms\n")
+                    .arg(u.scene, num(u.specialisedMs, 2), num(u.uberMs, 2), num(100.0 * u.saving(), 1),
+                         num(u.specialisedCpuMs, 1), num(u.uberCpuMs, 1), num(100.0 * u.cpuSaving(), 1),
+                         num(u.specialisedFirstDrawMs, 0), num(u.uberFirstDrawMs, 0));
     }
     return out;
 }
@@ -115,7 +118,8 @@ std::vector<UberComparison> uberComparisons(const BenchReport& report) {
         if (!u.uberShader) continue;
         for (const BenchResult& s : report.results) {
             if (s.uberShader || s.scene != u.scene || s.quality != Quality::Exact) continue;
-            out.push_back({u.scene, s.msMedian, u.msMedian, s.firstDrawMs, u.firstDrawMs});
+            out.push_back({u.scene, s.msMedian, u.msMedian, s.cpuMsMedian, u.cpuMsMedian, s.firstDrawMs,
+                           u.firstDrawMs});
             break;
         }
     }
@@ -140,6 +144,8 @@ QJsonObject benchJson(const BenchReport& report) {
             {QStringLiteral("cpu_ms_median"), round3(r.cpuMsMedian)},
             {QStringLiteral("gpu_ms_median"),
              r.gpuMsMedian >= 0.0 ? QJsonValue(round3(r.gpuMsMedian)) : QJsonValue()},
+            {QStringLiteral("cpu_speedup_vs_exact"),
+             r.cpuSpeedUp > 0.0 ? QJsonValue(round3(r.cpuSpeedUp)) : QJsonValue()},
             {QStringLiteral("speedup_vs_exact"),
              r.speedUp > 0.0 ? QJsonValue(round3(r.speedUp)) : QJsonValue()},
             {QStringLiteral("first_frame_ms"), round3(r.firstFrameMs)},
@@ -166,6 +172,9 @@ QJsonObject benchJson(const BenchReport& report) {
                         {QStringLiteral("specialised_ms"), round3(u.specialisedMs)},
                         {QStringLiteral("uber_ms"), round3(u.uberMs)},
                         {QStringLiteral("saving"), round3(u.saving())},
+                        {QStringLiteral("specialised_cpu_ms"), round3(u.specialisedCpuMs)},
+                        {QStringLiteral("uber_cpu_ms"), round3(u.uberCpuMs)},
+                        {QStringLiteral("cpu_saving"), round3(u.cpuSaving())},
                         {QStringLiteral("specialised_first_draw_ms"), round3(u.specialisedFirstDrawMs)},
                         {QStringLiteral("uber_first_draw_ms"), round3(u.uberFirstDrawMs)}});
     QJsonArray tiers;

@@ -182,9 +182,11 @@ BenchStatus runQualityBench(const std::vector<BenchScene>& scenes, const BenchOp
             std::find_if(report->results.begin() + std::ptrdiff_t(first), report->results.end(),
                          [](const BenchResult& r) { return r.quality == Quality::Exact && !r.uberShader; });
         if (exact != report->results.end())
-            for (size_t i = first; i < report->results.size(); ++i)
-                if (report->results[i].msMedian > 0.0)
-                    report->results[i].speedUp = exact->msMedian / report->results[i].msMedian;
+            for (size_t i = first; i < report->results.size(); ++i) {
+                BenchResult& r = report->results[i];
+                if (r.msMedian > 0.0) r.speedUp = exact->msMedian / r.msMedian;
+                if (r.cpuMsMedian > 0.0) r.cpuSpeedUp = exact->cpuMsMedian / r.cpuMsMedian;
+            }
     }
     QFile loadavg(QStringLiteral("/proc/loadavg"));
     if (loadavg.open(QIODevice::ReadOnly))

@@ -69,8 +69,9 @@ struct BenchResult {
     double loadMs = 0.0;
     double firstDrawMs = 0.0; // upload + compile + draw + glFinish in a fresh context
     bool hasErrors = false;
-    ErrorFigures errors;  // against the double reference (nonFinite from the float radiance)
-    double speedUp = 0.0; // exact's ms_median / this ms_median for the same scene (0: no exact run)
+    ErrorFigures errors;     // against the double reference (nonFinite from the float radiance)
+    double speedUp = 0.0;    // exact's ms_median / this ms_median for the same scene (0: no exact run)
+    double cpuSpeedUp = 0.0; // the same ratio of cpu_ms_median (steadier on a shared machine)
 };
 
 struct BenchReport {

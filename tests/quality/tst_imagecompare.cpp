@@ -233,7 +233,7 @@ class TestImageCompare : public QObject {
         const QString table = benchTable(report);
         QCOMPARE(table.count(QLatin1Char('\n')) >= 5, true);
         QVERIFY(table.contains(QStringLiteral("balanced")));
-        QVERIFY(table.contains(QStringLiteral("20.0% saved")));
+        QVERIFY(table.contains(QStringLiteral("(20.0% saved)")));
 
         const QImage chart = benchChart(report, QSize(500, 300));
         QCOMPARE(chart.size(), QSize(500, 300));
