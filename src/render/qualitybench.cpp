@@ -27,7 +27,7 @@ RenderSettings tierSettings(const BenchOptions& o, Quality q, bool uber) {
     s.toneMap = o.toneMap;
     s.quality = q;
     s.msaaSamples = tierMsaaSamples(q);
-    (void)uber; // PENDING(forceAllFeatures): s.forceAllFeatures = uber;
+    s.forceAllFeatures = uber;
     return s;
 }
 

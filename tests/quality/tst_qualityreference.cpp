@@ -8,9 +8,9 @@
 // (One level is the 8-bit rounding: a flat area whose exact value sits near a rounding boundary may be
 // off by one level everywhere, so the mean of even the exact tier can reach 1/3 or more.)
 //   fast      finite and no better than exact; mean <= 64 levels only as a sanity bound (per-vertex lighting
-//             on these coarse meshes loses highlights, cone and range edges: several levels are normal). Where
-//             Gouraud is exact (a plane, directional lights, the infinite viewer) it must equal exact within
-//             one level.
+//             on these coarse meshes loses highlights, cone and range edges: several levels are normal).
+//             Where Gouraud is exact (a plane, directional lights, the infinite viewer) it must equal exact
+//             within one level.
 #include "qualityscenes.h"
 
 #include "render/qualitybench.h"
@@ -138,6 +138,25 @@ class TestQualityReference : public QObject {
         for (std::uint8_t c : ref.covered)
             covered += c;
         QCOMPARE(a.pixels, covered);
+    }
+
+    // The über-shader is a variant of its own (every light model compiled in) that draws the same pixels.
+    void uberShaderIsAnotherVariantWithTheSamePixels() {
+        QString error;
+        QVERIFY(m_gl.setModel(sphereScene(), &error));
+        m_gl.setRig(rigOf({point({0.5, 0.5, 1.5}, FalloffModel::InverseSquare)}));
+        RenderSettings s;
+        s.msaaSamples = 0;
+        const QImage specialised = m_gl.renderImage(sphereCamera(), kSize, s, 1, &error);
+        const int variants = m_gl.renderer().stats().shaderVariantsCached;
+        s.forceAllFeatures = true;
+        const QImage uber = m_gl.renderImage(sphereCamera(), kSize, s, 1, &error);
+        QCOMPARE(m_gl.renderer().stats().shaderVariantsCached, variants + 1);
+        QVERIFY(!m_gl.renderImage(sphereCamera(), kSize, s, 1, &error).isNull());
+        QCOMPARE(m_gl.renderer().stats().shaderVariantsCached, variants + 1); // compiled once
+        const ErrorFigures f = compareSrgb8(specialised.constBits(), uber.constBits(),
+                                            std::int64_t(kSize.width()) * kSize.height());
+        QVERIFY2(f.maxLevels <= 1, qPrintable(QString::number(f.maxLevels)));
     }
 
     void benchRunsEveryTier() {
