@@ -19,6 +19,7 @@
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <vector>
 #ifdef __linux__
 #include <sys/prctl.h>
 #endif
@@ -159,7 +160,8 @@ class FrameReader {
 
 // The worker writes the encoded model into a memfd created here (fewer copies and page faults than the
 // pipe for a large model: ~44 MB for 1M triangles). After the worker has exited, the memfd is sealed
-// against any change before it is mapped, so the bytes cannot change or shrink (SIGBUS) under the decoder.
+// against any change before it is mapped, so the bytes cannot change or shrink (SIGBUS) under the decoder
+// or under the texture images, which keep their pages of the mapping instead of copying them.
 class SharedReply {
   public:
     SharedReply() {
@@ -176,7 +178,8 @@ class SharedReply {
         return m_fd;
     }
 
-    // Decodes the `size` bytes the worker announced; call once the worker has exited.
+    // Decodes the `size` bytes the worker announced. Sealing comes first, so a worker still running can
+    // no longer change what is decoded.
     std::shared_ptr<Model> decode(quint64 size, qint64 maxBytes, QString* why) const {
 #ifdef __linux__
         if (m_fd < 0) return fail(why, QStringLiteral("a shared reply that was not offered"));
@@ -187,12 +190,36 @@ class SharedReply {
         struct stat st {};
         if (::fstat(m_fd, &st) != 0 || quint64(st.st_size) < size)
             return fail(why, QStringLiteral("the shared reply is shorter than announced"));
-        void* p = ::mmap(nullptr, size_t(size), PROT_READ, MAP_PRIVATE | MAP_POPULATE, m_fd, 0);
-        if (p == MAP_FAILED)
+        void* mapped = ::mmap(nullptr, size_t(size), PROT_READ, MAP_PRIVATE | MAP_POPULATE, m_fd, 0);
+        if (mapped == MAP_FAILED)
             return fail(why, QStringLiteral("cannot map the shared reply (%1)").arg(qt_error_string()));
-        std::shared_ptr<Model> model =
-            decodeModel(QByteArrayView(static_cast<const char*>(p), qsizetype(size)), why);
-        ::munmap(p, size_t(size));
+        // Texture images keep their own pages of the mapping (no copy); everything else is unmapped below.
+        const auto* base = static_cast<const char*>(mapped);
+        const std::size_t page = std::size_t(::sysconf(_SC_PAGESIZE));
+        const auto pageEnd = [page](std::size_t offset) { return (offset + page - 1) / page * page; };
+        std::vector<std::pair<std::size_t, std::size_t>> lent; // page ranges [begin, end) of texture images
+        const ImageLender lend = [&](const char* pixels, std::size_t bytes, QImageCleanupFunction* cleanup,
+                                     void** info) {
+            const auto offset = std::size_t(pixels - base);
+            if (offset % page != 0 || (!lent.empty() && offset < lent.back().second)) return false;
+            auto* region = new Region{const_cast<char*>(pixels), pageEnd(offset + bytes) - offset};
+            try {
+                lent.emplace_back(offset, offset + region->length);
+            } catch (...) {
+                delete region;
+                throw;
+            }
+            *cleanup = unmapRegion;
+            *info = region;
+            return true;
+        };
+        std::shared_ptr<Model> model = decodeModel(QByteArrayView(base, qsizetype(size)), why, {}, lend);
+        std::size_t cursor = 0;
+        for (const auto& [begin, end] : lent) {
+            if (begin > cursor) ::munmap(const_cast<char*>(base) + cursor, begin - cursor);
+            cursor = end;
+        }
+        if (cursor < pageEnd(size)) ::munmap(const_cast<char*>(base) + cursor, pageEnd(size) - cursor);
         return model;
 #else
         Q_UNUSED(size);
@@ -202,6 +229,15 @@ class SharedReply {
     }
 
   private:
+    struct Region {
+        char* start;
+        std::size_t length;
+    };
+    static void unmapRegion(void* info) {
+        const auto* region = static_cast<Region*>(info);
+        ::munmap(region->start, region->length);
+        delete region;
+    }
     static std::shared_ptr<Model> fail(QString* why, const QString& text) {
         *why = text;
         return {};
@@ -344,11 +380,8 @@ ModelLoadResult importModelIsolated(const QString& path, const ModelLoadOptions&
                 QStringLiteral("the importer did not finish within %1 s").arg(seconds(limits.timeoutMs)));
         return failure(QStringLiteral("the importer sent a malformed reply (%1)").arg(reader.problem()));
     }
-    // A complete reply: the worker exits right after sending it.
-    if (reader.done() && !worker.waitForFinished(5'000)) {
-        worker.kill();
-        worker.waitForFinished(5'000);
-    }
+    // After a complete reply the worker is exiting (freeing a large import's memory can take a while):
+    // decode meanwhile; ~QProcess reaps it (and kills it if it lingers).
     const QString outOfMemory =
         QStringLiteral("the importer ran out of its %1 memory limit").arg(formatMemoryLimit(memory));
 
@@ -371,10 +404,7 @@ ModelLoadResult importModelIsolated(const QString& path, const ModelLoadOptions&
         } else {
             quint64 size = 0;
             std::memcpy(&size, reader.payload().constData(), sizeof size);
-            if (worker.state() != QProcess::NotRunning)
-                why = QStringLiteral("the importer did not exit after its shared reply");
-            else
-                model = shared.decode(size, reader.maxModelBytes(), &why);
+            model = shared.decode(size, reader.maxModelBytes(), &why); // sealed first: the worker may live on
         }
         if (!model) return failure(QStringLiteral("the importer sent a malformed reply (%1)").arg(why));
         if (!keepGoing(1.0)) return failure(QStringLiteral("cancelled"), true);

@@ -2,6 +2,7 @@
 #include "modelcodec.h"
 
 #include <QColorSpace>
+#include <algorithm>
 #include <bit>
 #include <cstring>
 #include <type_traits>
@@ -20,7 +21,8 @@ static_assert(std::endian::native == std::endian::little || std::endian::native 
 // arrays (vertices, indices, texture rows) straight from the model without a copy.
 class Writer {
   public:
-    explicit Writer(const ModelSink* sink) : m_sink(sink) {}
+    // `offset`: where in the encoding the first byte given to this writer lands (for pad()).
+    Writer(const ModelSink* sink, std::size_t offset) : m_sink(sink), m_count(offset) {}
     void raw(const void* data, std::size_t size) {
         m_count += size;
         if (!m_sink || !m_ok) return;
@@ -44,7 +46,16 @@ class Writer {
         raw(utf8.constData(), std::size_t(utf8.size()));
     }
     template <typename E> void enumeration(E e) { pod(quint8(e)); }
-    std::size_t written() const { return m_count; }
+    // Zeros up to the next multiple of `alignment` from the start of the encoding.
+    void pad(std::size_t alignment) {
+        static constexpr char kZeros[64] = {};
+        for (std::size_t n = (alignment - m_count % alignment) % alignment; n > 0;) {
+            const std::size_t chunk = std::min(n, sizeof kZeros);
+            raw(kZeros, chunk);
+            n -= chunk;
+        }
+    }
+    std::size_t offset() const { return m_count; }
     bool finish() {
         flush();
         return m_ok;
@@ -60,7 +71,7 @@ class Writer {
     }
     const ModelSink* m_sink;
     QByteArray m_buffer;
-    std::size_t m_count = 0;
+    std::size_t m_count;
     bool m_ok = true;
 };
 
@@ -125,6 +136,7 @@ void writeBody(Writer& w, const Model& m) {
                                : t.image.convertToFormat(QImage::Format_RGBA8888);
         w.pod(quint32(img.width()));
         w.pod(quint32(img.height()));
+        if (!img.isNull()) w.pad(kModelCodecPixelAlignment);
         const std::size_t rowBytes = std::size_t(img.width()) * 4;
         if (std::size_t(img.bytesPerLine()) == rowBytes)
             w.raw(img.constBits(), rowBytes * std::size_t(img.height()));
@@ -173,16 +185,14 @@ void writeHeader(Writer& w, quint64 bodySize) {
 } // namespace
 
 std::size_t encodedModelSize(const Model& model) {
-    Writer counter(nullptr);
+    Writer counter(nullptr, kModelCodecHeaderSize);
     writeBody(counter, model);
-    return std::size_t(kModelCodecHeaderSize) + counter.written();
+    return counter.offset();
 }
 
 bool writeModel(const Model& model, const ModelSink& sink) {
-    Writer counter(nullptr);
-    writeBody(counter, model);
-    Writer w(&sink);
-    writeHeader(w, counter.written());
+    Writer w(&sink, 0);
+    writeHeader(w, encodedModelSize(model) - kModelCodecHeaderSize);
     writeBody(w, model);
     return w.finish();
 }

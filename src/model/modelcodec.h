@@ -8,8 +8,9 @@
 //   header  "LRMODEL\0", u32 version, u32 byte-order mark 0x01020304, u32 sizeof(Vertex),
 //           u32 reserved (0), u64 body size
 //   body    model fields in a fixed order: strings as u32 byte count + UTF-8, vectors as u64 count +
-//           elements, Vertex and index arrays as raw bytes, QImage as u32 width, u32 height + RGBA8888
-//           rows without padding + u32 byte count + the colour space's ICC profile (0: none).
+//           elements, Vertex and index arrays as raw bytes, QImage as u32 width, u32 height, zeros up to
+//           kModelCodecPixelAlignment, RGBA8888 rows without padding, u32 byte count + the colour space's
+//           ICC profile (0: none).
 // Adding a field to Model, Mesh, Material, Texture, Camera, Rig or Light means adding it here and
 // raising kModelCodecVersion (the worker is always the same executable as its parent, so there is no
 // compatibility to keep).
@@ -19,6 +20,7 @@
 
 #include <QByteArray>
 #include <QByteArrayView>
+#include <QImage>
 #include <QString>
 #include <functional>
 #include <memory>
@@ -26,9 +28,12 @@
 namespace lr {
 
 inline constexpr char kModelCodecMagic[8] = {'L', 'R', 'M', 'O', 'D', 'E', 'L', '\0'};
-inline constexpr quint32 kModelCodecVersion = 1;
+inline constexpr quint32 kModelCodecVersion = 2;
 inline constexpr quint32 kModelCodecByteOrderMark = 0x01020304u;
 inline constexpr int kModelCodecHeaderSize = 32; // the body size is its last 8 bytes
+// Texture pixels start this far apart from the start of the encoding (zero padding before them), so that a
+// page-aligned copy of the encoding (a mapping) can lend each texture its own pages (ImageLender).
+inline constexpr std::size_t kModelCodecPixelAlignment = 4096;
 
 // Limits the reader enforces besides the size of the input.
 struct ModelCodecLimits {
@@ -54,6 +59,14 @@ qint64 modelBodySize(QByteArrayView header, QString* error);
 
 // The model from encodeModel's bytes, or null with *error set ("truncated in mesh 3 indices",
 // "mesh 0: index 12 out of range (8 vertices)", ...). Never throws; never reads outside `bytes`.
-std::shared_ptr<Model> decodeModel(QByteArrayView bytes, QString* error, const ModelCodecLimits& limits = {});
+// Lets decodeModel create a texture image on the input bytes instead of copying them: given the pixels
+// (RGBA8888 rows without padding, aligned to kModelCodecPixelAlignment from the start of the input), it
+// returns true and a cleanup function + argument for QImage's read-only external-buffer constructor, which
+// Qt calls when the last copy of the image is gone; false: copy.
+using ImageLender = std::function<bool(const char* pixels, std::size_t size, QImageCleanupFunction* cleanup,
+                                       void** cleanupInfo)>;
+
+std::shared_ptr<Model> decodeModel(QByteArrayView bytes, QString* error, const ModelCodecLimits& limits = {},
+                                   const ImageLender& lend = {});
 
 } // namespace lr

@@ -32,8 +32,10 @@ template <int N, typename T, glm::qualifier Q> bool finite(const glm::vec<N, T, 
 
 class Reader {
   public:
-    Reader(const char* begin, const char* end, const ModelCodecLimits& limits)
-        : m_p(begin), m_end(end), m_limits(limits) {}
+    // `origin`: the start of the encoding (alignment is counted from there); `lend`: may be empty.
+    Reader(const char* origin, const char* begin, const char* end, const ModelCodecLimits& limits,
+           const ImageLender& lend)
+        : m_origin(origin), m_p(begin), m_end(end), m_limits(limits), m_lend(lend) {}
 
     bool failed() const { return !m_error.isEmpty(); }
     const QString& error() const { return m_error; }
@@ -108,8 +110,17 @@ class Reader {
         const auto side = quint32(m_limits.maxImageSide);
         if (w == 0 || h == 0 || w > side || h > side)
             return fail(QStringLiteral("%1 has a bad size %2x%3").arg(what).arg(w).arg(h));
+        if (!padding(kModelCodecPixelAlignment, what)) return false;
         const std::size_t rowBytes = std::size_t(w) * 4;
         if (!need(rowBytes * h, what)) return false;
+        QImageCleanupFunction cleanup = nullptr;
+        void* cleanupInfo = nullptr;
+        if (m_lend && m_lend(m_p, rowBytes * h, &cleanup, &cleanupInfo)) {
+            out = QImage(reinterpret_cast<const uchar*>(m_p), int(w), int(h), qsizetype(rowBytes),
+                         QImage::Format_RGBA8888, cleanup, cleanupInfo);
+            m_p += rowBytes * h;
+            return colorSpace(out, what);
+        }
         out = QImage(int(w), int(h), QImage::Format_RGBA8888);
         if (out.isNull())
             return fail(QStringLiteral("%1: no memory for a %2x%3 image").arg(what).arg(w).arg(h));
@@ -118,6 +129,15 @@ class Reader {
             m_p += rowBytes;
         }
         return colorSpace(out, what);
+    }
+    // Zeros up to the next multiple of `alignment` from the start of the encoding.
+    bool padding(std::size_t alignment, const QString& what) {
+        const std::size_t n = (alignment - std::size_t(m_p - m_origin) % alignment) % alignment;
+        if (!need(n, what)) return false;
+        for (std::size_t i = 0; i < n; ++i)
+            if (m_p[i] != 0) return fail(QStringLiteral("%1: padding is not zero").arg(what));
+        m_p += n;
+        return true;
     }
     // The image's colour space as an ICC profile (empty: none); Qt's ICC parser rejects bad profiles.
     bool colorSpace(QImage& image, const QString& what) {
@@ -167,9 +187,11 @@ class Reader {
     }
 
   private:
+    const char* m_origin;
     const char* m_p;
     const char* m_end;
     const ModelCodecLimits& m_limits;
+    const ImageLender& m_lend;
     QString m_error;
 };
 
@@ -338,7 +360,8 @@ qint64 modelBodySize(QByteArrayView header, QString* error) {
     return qint64(body);
 }
 
-std::shared_ptr<Model> decodeModel(QByteArrayView bytes, QString* error, const ModelCodecLimits& limits) {
+std::shared_ptr<Model> decodeModel(QByteArrayView bytes, QString* error, const ModelCodecLimits& limits,
+                                   const ImageLender& lend) {
     const auto bad = [&](const QString& why) {
         if (error) *error = why;
         return std::shared_ptr<Model>();
@@ -352,7 +375,8 @@ std::shared_ptr<Model> decodeModel(QByteArrayView bytes, QString* error, const M
                        .arg(body));
     try {
         auto model = std::make_shared<Model>();
-        Reader r(bytes.data() + kModelCodecHeaderSize, bytes.data() + bytes.size(), limits);
+        Reader r(bytes.data(), bytes.data() + kModelCodecHeaderSize, bytes.data() + bytes.size(), limits,
+                 lend);
         if (!readModel(r, *model)) return bad(r.error());
         return model;
     } catch (const std::bad_alloc&) {

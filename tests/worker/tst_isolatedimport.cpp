@@ -11,10 +11,13 @@
 
 #include <QDir>
 #include <QDirIterator>
+#include <QFile>
 #include <QFileInfo>
 #include <QProcess>
 #include <QTest>
+#include <QThreadPool>
 #include <QtConcurrent>
+#include <algorithm>
 #include <atomic>
 #include <thread>
 
@@ -65,6 +68,7 @@ class TestIsolatedImport : public QObject {
     void goodModelsEqualDirectImport();
     void loaderErrorsPassThrough();
     void worksOnOtherThreads();
+    void texturesKeepTheirPagesOnly();
     void progressIsMonotonicAndEnds();
     void workerDeaths_data();
     void workerDeaths();
@@ -128,6 +132,32 @@ void TestIsolatedImport::worksOnOtherThreads() {
         const QString difference = compareWithDirect(path, r);
         QVERIFY2(difference.isEmpty(), qPrintable(difference));
     }
+    QThreadPool::globalInstance()->waitForDone(); // the pool's tasks let go of their results (and mappings)
+}
+
+namespace {
+// Mappings of the shared reply's memfd in this process (/proc/self/maps names it "memfd:lightrig-import").
+int sharedMappings() {
+    QFile maps(QStringLiteral("/proc/self/maps"));
+    if (!maps.open(QIODevice::ReadOnly)) return -1;
+    return int(maps.readAll().count("lightrig-import"));
+}
+} // namespace
+
+// Through the memfd, texture images keep their pages of the mapping (no copy) and nothing else stays
+// mapped; the last image gone, nothing is mapped.
+void TestIsolatedImport::texturesKeepTheirPagesOnly() {
+    if (sharedMappings() < 0) QSKIP("no /proc/self/maps");
+    QCOMPARE(sharedMappings(), 0);
+    ModelLoadResult r = importModelIsolated(QStringLiteral(":/resources/models/suzanne/Suzanne.gltf"));
+    QVERIFY2(r.ok(), qPrintable(r.error));
+    const std::size_t textures = std::count_if(r.model->textures.begin(), r.model->textures.end(),
+                                               [](const Texture& t) { return !t.image.isNull(); });
+    QVERIFY(textures >= 1);
+    QCOMPARE(sharedMappings(), int(textures)); // one region per texture, the rest unmapped
+    const QImage kept = r.model->textures[0].image;
+    r = {};
+    QCOMPARE(sharedMappings(), kept.isNull() ? 0 : 1);
 }
 
 void TestIsolatedImport::progressIsMonotonicAndEnds() {

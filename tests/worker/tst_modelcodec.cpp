@@ -9,8 +9,10 @@
 #include <QColorSpace>
 #include <QRandomGenerator>
 #include <QTest>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
+#include <memory>
 
 using namespace lr;
 
@@ -49,6 +51,8 @@ class TestModelCodec : public QObject {
     void roundTripsEmptyAndBuiltInModels();
     void roundTripsManyEmptyParts();
     void streamsTheSameBytes();
+    void lendsTexturePixels();
+    void rejectsNonZeroPadding();
     void rejectsBadHeaders();
     void rejectsEveryTruncation();
     void rejectsInconsistentModels_data();
@@ -126,6 +130,64 @@ void TestModelCodec::streamsTheSameBytes() {
     int calls = 0;
     QVERIFY(!writeModel(m, [&](const char*, std::size_t) { return ++calls < 2; }));
     QCOMPARE(calls, 2);
+}
+
+namespace {
+int g_released = 0;
+void countRelease(void*) {
+    ++g_released;
+}
+} // namespace
+
+// With an ImageLender, texture images refer to the (page-aligned) input instead of copying it.
+void TestModelCodec::lendsTexturePixels() {
+    const Model original = test::fullModel();
+    const QByteArray encoded = encodeModel(original);
+    const std::size_t size = (std::size_t(encoded.size()) + 4095) / 4096 * 4096;
+    std::unique_ptr<char, decltype(&std::free)> aligned(static_cast<char*>(std::aligned_alloc(4096, size)),
+                                                        &std::free);
+    QVERIFY(aligned);
+    std::memcpy(aligned.get(), encoded.constData(), std::size_t(encoded.size()));
+    const char* begin = aligned.get();
+    int lent = 0;
+    const ImageLender lend = [&](const char* pixels, std::size_t bytes, QImageCleanupFunction* cleanup,
+                                 void** info) {
+        if ((pixels - begin) % qsizetype(kModelCodecPixelAlignment) != 0 ||
+            pixels + bytes > begin + encoded.size())
+            return false;
+        ++lent;
+        *cleanup = countRelease;
+        *info = nullptr;
+        return true;
+    };
+    g_released = 0;
+    {
+        QString error;
+        std::shared_ptr<Model> decoded = decodeModel(QByteArrayView(begin, encoded.size()), &error, {}, lend);
+        QVERIFY2(decoded, qPrintable(error));
+        QCOMPARE(lent, 2); // the two non-null textures
+        const QString difference = test::modelDifference(original, *decoded);
+        QVERIFY2(difference.isEmpty(), qPrintable(difference));
+        for (int t : {0, 1}) {
+            const auto* bits = reinterpret_cast<const char*>(decoded->textures[size_t(t)].image.constBits());
+            QVERIFY(bits >= begin && bits < begin + encoded.size());
+        }
+        const QImage kept = decoded->textures[0].image; // a copy shares the lent pixels
+        decoded.reset();
+        QCOMPARE(g_released, 1);
+    }
+    QCOMPARE(g_released, 2);
+}
+
+void TestModelCodec::rejectsNonZeroPadding() {
+    Model m = oneTriangle();
+    m.textures.push_back({QStringLiteral("t.png"), test::patternImage(2, 2, QImage::Format_RGBA8888, 5)});
+    QByteArray bytes = encodeModel(m);
+    QVERIFY(bytes.size() > qsizetype(kModelCodecPixelAlignment)); // pixels start at 4096, zeros before
+    QCOMPARE(bytes.at(qsizetype(kModelCodecPixelAlignment) - 1), '\0');
+    bytes[qsizetype(kModelCodecPixelAlignment) - 1] = 1;
+    const QString error = decodeError(bytes);
+    QVERIFY2(error.contains(QLatin1String("texture 0: padding is not zero")), qPrintable(error));
 }
 
 void TestModelCodec::rejectsBadHeaders() {
