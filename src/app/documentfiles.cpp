@@ -3,6 +3,7 @@
 #include "editor/document.h"
 #include "errordialog.h"
 #include "lightimport.h"
+#include "model/isolatedimport.h"
 #include "recentfiles.h"
 #include "scene.h"
 
@@ -194,7 +195,7 @@ bool DocumentFiles::openModel(const QString& requested) {
         emit modelLoadFinished();
     });
     m_watcher = watcher;
-    watcher->setFuture(QtConcurrent::run([path, options] { return loadModel(path, options); }));
+    watcher->setFuture(QtConcurrent::run([path, options] { return importModelIsolated(path, options); }));
     return true;
 }
 

@@ -281,7 +281,10 @@ QString importWorkerExecutable() {
     if (const QString fromEnvironment = qEnvironmentVariable("LIGHTRIG_IMPORT_WORKER");
         !fromEnvironment.isEmpty())
         return fromEnvironment;
-    return QCoreApplication::instance() ? QCoreApplication::applicationFilePath() : QString();
+    // Only lightrig itself has the import-worker subcommand (a test executable, say, does not).
+    if (!QCoreApplication::instance() || QCoreApplication::applicationName() != QLatin1String("lightrig"))
+        return {};
+    return QCoreApplication::applicationFilePath();
 }
 
 QString formatMemoryLimit(qint64 bytes) {
@@ -313,7 +316,9 @@ ModelLoadResult importModelIsolated(const QString& path, const ModelLoadOptions&
     if (!keepGoing(0.0)) return failure(QStringLiteral("cancelled"), true);
 
     const QString executable = importWorkerExecutable();
-    if (executable.isEmpty()) return failure(QStringLiteral("no import worker executable is set"));
+    if (executable.isEmpty())
+        return failure(QStringLiteral("no import worker: this is not lightrig, and neither "
+                                      "setImportWorkerExecutable() nor LIGHTRIG_IMPORT_WORKER names one"));
 
     const SharedReply shared;
     const int sharedFd = limits.sharedMemory ? shared.fd() : -1;

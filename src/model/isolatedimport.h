@@ -34,8 +34,9 @@ ModelLoadResult importModelIsolated(const QString& path, const ModelLoadOptions&
                                     const ImportLimits& limits = {});
 
 // The executable run as `EXE import-worker`: the one set here, else the environment variable
-// LIGHTRIG_IMPORT_WORKER, else QCoreApplication::applicationFilePath(), i.e. lightrig itself. A test
-// executable that imports (directly or through the editor) must name lightrig one of the first two ways:
+// LIGHTRIG_IMPORT_WORKER, else QCoreApplication::applicationFilePath() when the application is lightrig
+// itself (applicationName() "lightrig"), else none (imports then fail saying so). A test executable
+// that imports (directly or through the editor) names lightrig one of the first two ways:
 // setImportWorkerExecutable(LIGHTRIG_EXECUTABLE), or ctest's LIGHTRIG_IMPORT_WORKER (tests/CMakeLists.txt).
 void setImportWorkerExecutable(const QString& path);
 QString importWorkerExecutable();

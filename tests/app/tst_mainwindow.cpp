@@ -19,6 +19,7 @@
 #include "app/viewport.h"
 #include "core/rigjson.h"
 #include "editor/document.h"
+#include "model/isolatedimport.h"
 
 #include <QAction>
 #include <QApplication>
@@ -66,6 +67,7 @@ class TestMainWindow : public QObject {
         QStandardPaths::setTestModeEnabled(true);
         setApplicationIdentity();
         QCoreApplication::setApplicationName(QStringLiteral("lightrig-test"));
+        setImportWorkerExecutable(QStringLiteral(LIGHTRIG_EXECUTABLE)); // models import in lightrig
         QSettings().clear();
         QVERIFY(m_dir.isValid());
         setErrorPresenter([this](const ErrorReport& r) { m_errors.append(r); });

@@ -272,8 +272,16 @@ void TestIsolatedImport::workerFromEnvironment() {
     QCOMPARE(importWorkerExecutable(), QStringLiteral(LIGHTRIG_EXECUTABLE));
     const ModelLoadResult r = importModelIsolated(kData + QStringLiteral("/tetra.stl"));
     qunsetenv("LIGHTRIG_IMPORT_WORKER");
-    // Without either, the worker is this executable.
+    // Without either, the worker is the running executable if it is lightrig, else there is none.
+    QCOMPARE(importWorkerExecutable(), QString());
+    const ModelLoadResult none = importModelIsolated(kData + QStringLiteral("/tetra.stl"));
+    QVERIFY2(none.error.startsWith(
+                 QStringLiteral("could not import tetra.stl: no import worker: this is not lightrig")),
+             qPrintable(none.error));
+    const QString name = QCoreApplication::applicationName();
+    QCoreApplication::setApplicationName(QStringLiteral("lightrig"));
     QCOMPARE(importWorkerExecutable(), QCoreApplication::applicationFilePath());
+    QCoreApplication::setApplicationName(name);
     if (!saved.isEmpty()) qputenv("LIGHTRIG_IMPORT_WORKER", saved);
     QVERIFY2(r.ok(), qPrintable(r.error));
 }
