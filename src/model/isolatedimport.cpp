@@ -386,7 +386,16 @@ ModelLoadResult importModelIsolated(const QString& path, const ModelLoadOptions&
         return failure(QStringLiteral("the importer sent a malformed reply (%1)").arg(reader.problem()));
     }
     // After a complete reply the worker is exiting (freeing a large import's memory can take a while):
-    // decode meanwhile; ~QProcess reaps it (and kills it if it lingers).
+    // decode meanwhile, then reap it (killing it if it lingers).
+    const struct Reaper {
+        QProcess& p;
+        ~Reaper() {
+            if (p.state() != QProcess::NotRunning && !p.waitForFinished(5'000)) {
+                p.kill();
+                p.waitForFinished(5'000);
+            }
+        }
+    } reaper{worker};
     const QString outOfMemory =
         QStringLiteral("the importer ran out of its %1 memory limit").arg(formatMemoryLimit(memory));
 

@@ -69,6 +69,7 @@ void TestImportCli::renderThroughTheWorker() {
     const Run r = render(QStringLiteral(LIGHTRIG_TEST_DATA "/model/quad.obj"), out, {});
     QVERIFY2(r.status == 0, qPrintable(r.err));
     QVERIFY(QFileInfo(out).size() > 0);
+    QVERIFY2(!r.err.contains(QLatin1String("QProcess")), qPrintable(r.err)); // no noise from the worker's end
 }
 
 void TestImportCli::renderImporterDeaths_data() {

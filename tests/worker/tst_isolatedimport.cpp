@@ -14,6 +14,7 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QTest>
 #include <QThreadPool>
 #include <QtConcurrent>
@@ -60,6 +61,8 @@ class TestIsolatedImport : public QObject {
     Q_OBJECT
   private slots:
     void initTestCase() { setImportWorkerExecutable(QStringLiteral(LIGHTRIG_EXECUTABLE)); }
+    // No warning of any kind (e.g. "QProcess: Destroyed while process is still running").
+    void init() { QTest::failOnWarning(QRegularExpression(QStringLiteral(".*"))); }
     void cleanup() {
         setCrashMode(nullptr);
         setImportWorkerExecutable(QStringLiteral(LIGHTRIG_EXECUTABLE));
