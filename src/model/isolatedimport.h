@@ -29,7 +29,7 @@ struct ImportLimits {
 // Imports `path` in a worker process. options.progress is called on the calling thread at least every
 // 50 ms while the worker runs (with the last fraction when nothing new arrived), so returning false from
 // it cancels even a hung import; result.cancelled is then set. Blocks the calling thread: call it from a
-// worker thread in a GUI (see app/modelloadjob.h). Thread-safe.
+// worker thread in a GUI (DocumentFiles::openModel runs it on QtConcurrent). Thread-safe.
 ModelLoadResult importModelIsolated(const QString& path, const ModelLoadOptions& options = {},
                                     const ImportLimits& limits = {});
 
