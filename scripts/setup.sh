@@ -23,6 +23,8 @@ lightrig_install_packages() {
 lightrig_build() {   # lightrig_build PRESET
     local preset="$1"
     cd "$LIGHTRIG_ROOT"
+    # ccache: hash paths relative to the checkout, so build folders and clones share one cache
+    export CCACHE_BASEDIR="$LIGHTRIG_ROOT" CCACHE_NOHASHDIR=1
     if [ ! -f "build/$preset/build.ninja" ]; then
         cmake --preset "$preset" >&2
     fi
