@@ -26,7 +26,7 @@ RenderSettings tierSettings(const BenchOptions& o, Quality q, bool uber) {
     s.exposureEV = o.exposureEV;
     s.toneMap = o.toneMap;
     s.quality = q;
-    s.msaaSamples = tierMsaaSamples(q);
+    s.msaaSamples = o.msaaSamples >= 0 ? o.msaaSamples : tierMsaaSamples(q);
     s.forceAllFeatures = uber;
     return s;
 }

@@ -46,6 +46,7 @@ struct BenchOptions {
     ToneMap toneMap = ToneMap::Clamp;
     bool errors = true;     // compute the reference and the error figures
     bool uberShader = true; // one more run per scene: the exact tier with every light model compiled in
+    int msaaSamples = -1;   // timed runs: -1 each tier's own (tierMsaaSamples), else this for every tier
 };
 
 // MSAA samples a tier renders with (exact, balanced: 4; fast: none).

@@ -54,7 +54,7 @@ class TestBenchCli : public QObject {
     void help() {
         const Run r = lightrig({QStringLiteral("--help")});
         QVERIFY2(r.code == 0, qPrintable(show(r)));
-        for (const char* option : {"--lights", "--quality", "--json", "--chart", "--frames", "--rig",
+        for (const char* option : {"--lights", "--quality", "--json", "--chart", "--frames", "--msaa", "--rig",
                                    "--camera-index", "--view", "--size", "--exposure", "--tonemap"})
             QVERIFY2(r.out.contains(QLatin1String(option)), option);
     }
@@ -62,6 +62,8 @@ class TestBenchCli : public QObject {
     void usageErrors_data() {
         QTest::addColumn<QStringList>("args");
         QTest::addRow("frames 0") << QStringList{"--frames", "0"};
+        QTest::addRow("msaa 17") << QStringList{"--msaa", "17"};
+        QTest::addRow("msaa word") << QStringList{"--msaa", "four"};
         QTest::addRow("bad tier") << QStringList{"--quality", "exact,bogus"};
         QTest::addRow("bad counts") << QStringList{"--lights", "8,x"};
         QTest::addRow("negative count") << QStringList{"--lights", "-1"};
