@@ -6,6 +6,7 @@
 #include "model/isolatedimport.h"
 #include "recentfiles.h"
 #include "scene.h"
+#include "texturesconsent.h"
 
 #include <QDir>
 #include <QFileDialog>
@@ -29,6 +30,7 @@ void rememberDir(const QString& path) {
 
 struct DocumentFiles::Load {
     QString path;
+    bool allowOutside = false; // ModelLoadOptions::allowTexturesOutsideFolder: the user said Load
     std::atomic<bool> cancelled{false};
 };
 
@@ -51,6 +53,9 @@ DocumentFiles::DocumentFiles(Document* document, Scene* scene, RecentFiles* rece
         const QString p = QFileDialog::getSaveFileName(m_window, title, suggested, filter);
         if (!p.isEmpty()) rememberDir(p);
         return p;
+    };
+    askTexturesOutsideFolder = [this](const QString& path, const QStringList& references) {
+        return askLoadTexturesOutsideFolder(m_window, path, references);
     };
 }
 
@@ -146,13 +151,23 @@ bool DocumentFiles::openModel(const QString& requested) {
     QString path = requested;
     if (path.isEmpty()) path = askOpenPath(tr("Open model"), modelFileFilter() + tr(";;All files (*)"));
     if (path.isEmpty()) return false;
+    startModelLoad(path, false);
+    return true;
+}
+
+void DocumentFiles::startModelLoad(const QString& path, bool allowOutside) {
     cancelModelLoad(); // a newer request supersedes a running one
     auto load = std::make_shared<Load>();
     load->path = path;
+    load->allowOutside = allowOutside;
     m_loading = load;
     emit modelLoadStarted(path);
-    emit statusMessage(tr("Loading %1…").arg(QDir::toNativeSeparators(path)));
+    emit statusMessage(
+        allowOutside
+            ? tr("Loading %1 with its textures from outside its folder…").arg(QDir::toNativeSeparators(path))
+            : tr("Loading %1…").arg(QDir::toNativeSeparators(path)));
     ModelLoadOptions options;
+    options.allowTexturesOutsideFolder = allowOutside;
     QPointer<DocumentFiles> self(this);
     options.progress = [load, self](double fraction) {
         if (self)
@@ -168,35 +183,54 @@ bool DocumentFiles::openModel(const QString& requested) {
     connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, load] {
         watcher->deleteLater();
         if (m_watcher == watcher) m_watcher = nullptr;
-        const ModelLoadResult result = watcher->result();
         if (m_loading != load) return; // superseded or cancelled: its result is dropped
-        m_loading.reset();
-        if (result.ok()) {
-            m_scene->setModel(result.model, load->path);
-            if (!load->path.startsWith(QLatin1String(":/"))) m_recent->add(load->path);
-            const auto& m = *result.model;
-            emit statusMessage(tr("Loaded %1: %2 triangles, %3 meshes, %4 materials in %5 ms%6")
-                                   .arg(QFileInfo(load->path).fileName())
-                                   .arg(m.triangleCount())
-                                   .arg(m.meshes.size())
-                                   .arg(m.materials.size())
-                                   .arg(m.loadMs, 0, 'f', 0)
-                                   .arg(m.warnings.isEmpty()
-                                            ? QString()
-                                            : tr(" (%n warning(s))", nullptr, int(m.warnings.size()))));
-            emit modelLoaded(load->path);
-        } else if (!result.cancelled) {
-            emit modelLoadFailed(load->path, result.error);
-            showError(m_window, {tr("Open model"),
-                                 tr("Could not open %1. The model that was open is unchanged.")
-                                     .arg(QFileInfo(load->path).fileName()),
-                                 {result.error}});
-        }
-        emit modelLoadFinished();
+        modelImported(load, watcher->result());
     });
     m_watcher = watcher;
     watcher->setFuture(QtConcurrent::run([path, options] { return importModelIsolated(path, options); }));
-    return true;
+}
+
+void DocumentFiles::modelImported(const std::shared_ptr<Load>& load, const ModelLoadResult& result) {
+    const QString name = QFileInfo(load->path).fileName();
+    QString note;
+    if (result.ok() && !load->allowOutside && !result.model->texturesOutsideFolder.isEmpty()) {
+        // Asked while the load still counts as running, so a newer request made meanwhile supersedes it.
+        const QStringList refs = result.model->texturesOutsideFolder;
+        QPointer<DocumentFiles> self(this);
+        const bool allow = askTexturesOutsideFolder ? askTexturesOutsideFolder(load->path, refs) : false;
+        if (!self || m_loading != load) return;
+        if (allow) {
+            m_loading.reset();
+            emit modelLoadFinished();
+            startModelLoad(load->path, true);
+            return;
+        }
+        note = tr("; %n texture(s) outside the model's folder not loaded (parts untextured)", nullptr,
+                  int(refs.size()));
+    }
+    m_loading.reset();
+    if (result.ok()) {
+        m_scene->setModel(result.model, load->path);
+        if (!load->path.startsWith(QLatin1String(":/"))) m_recent->add(load->path);
+        const auto& m = *result.model;
+        emit statusMessage(tr("Loaded %1: %2 triangles, %3 meshes, %4 materials in %5 ms%6%7")
+                               .arg(name)
+                               .arg(m.triangleCount())
+                               .arg(m.meshes.size())
+                               .arg(m.materials.size())
+                               .arg(m.loadMs, 0, 'f', 0)
+                               .arg(m.warnings.isEmpty()
+                                        ? QString()
+                                        : tr(" (%n warning(s))", nullptr, int(m.warnings.size())),
+                                    note));
+        emit modelLoaded(load->path);
+    } else if (!result.cancelled) {
+        emit modelLoadFailed(load->path, result.error);
+        showError(m_window, {tr("Open model"),
+                             tr("Could not open %1. The model that was open is unchanged.").arg(name),
+                             {result.error}});
+    }
+    emit modelLoadFinished();
 }
 
 void DocumentFiles::cancelModelLoad() {

@@ -37,6 +37,9 @@ class DocumentFiles : public QObject {
     // Asked before the rig is written to a path (sessionsafety.cpp: "changed on disk since opened,
     // overwrite?"); false cancels the save. Unset: always write.
     std::function<bool(const QString& path)> confirmWrite;
+    // Asked when an opened model's textures were refused for lying outside its folder (texturesconsent.h);
+    // true imports it again allowing them, false keeps it without them. Default: the message box.
+    std::function<bool(const QString& modelPath, const QStringList& references)> askTexturesOutsideFolder;
 
     bool maybeSave(); // true when it is fine to drop the current rig (saved, discarded or unmodified)
     bool newRig();
@@ -62,7 +65,8 @@ class DocumentFiles : public QObject {
 
   private:
     struct Load;
-    void finishModelLoad();
+    void startModelLoad(const QString& path, bool allowOutside);
+    void modelImported(const std::shared_ptr<Load>& load, const ModelLoadResult& result);
 
     Document* m_doc;
     Scene* m_scene;

@@ -213,6 +213,10 @@ class TextureLoader {
         const QString local = base.isEmpty() ? QString() : findFile(base, &ignored);
         if (local.isEmpty()) {
             *problem = QStringLiteral("refused: %1").arg(refusal);
+            const QString decoded = QUrl::fromPercentEncoding(ref.toUtf8());
+            if (!m_folder.refusedOutsideFile(ref).isEmpty() ||
+                !m_folder.refusedOutsideFile(decoded).isEmpty())
+                m_model.texturesOutsideFolder << ref;
             return {};
         }
         m_model.warnings << QStringLiteral("%1: texture %2: %3; using %4 from the model's folder instead")

@@ -80,6 +80,10 @@ struct Model {
     Rig lights;              // the file's own lights (world space), empty when it has none
     Bounds bounds;
     QStringList warnings;    // degenerate geometry dropped, textures missing, ...
+    // Texture references (as the file writes them) refused only because they lie outside the model's
+    // folder, whose files exist: loading again with ModelLoadOptions::allowTexturesOutsideFolder would
+    // use them (the editor asks). Never Windows drive paths, which stay refused. Each has a warning too.
+    QStringList texturesOutsideFolder;
     double loadMs = 0.0;
 
     std::size_t triangleCount() const;

@@ -170,6 +170,9 @@ void writeBody(Writer& w, const Model& m) {
     w.count(std::size_t(m.warnings.size()));
     for (const QString& s : m.warnings)
         w.string(s);
+    w.count(std::size_t(m.texturesOutsideFolder.size()));
+    for (const QString& s : m.texturesOutsideFolder)
+        w.string(s);
     w.pod(m.loadMs);
 }
 

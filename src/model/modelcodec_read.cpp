@@ -308,6 +308,13 @@ bool readModel(Reader& r, Model& m) {
         if (!r.string(w, at("warning", i))) return false;
         m.warnings << w;
     }
+    if (!r.count(n, 4, QStringLiteral("textures outside the folder"))) return false;
+    m.texturesOutsideFolder.reserve(qsizetype(n));
+    for (std::size_t i = 0; i < n; ++i) {
+        QString t;
+        if (!r.string(t, at("texture outside the folder", i))) return false;
+        m.texturesOutsideFolder << t;
+    }
     if (!r.number(m.loadMs, QStringLiteral("load time"))) return false;
     if (r.remaining())
         return r.fail(QStringLiteral("%1 unexpected bytes after the model").arg(r.remaining()));

@@ -103,6 +103,13 @@ QString ModelFolder::resolve(const QString& reference, QString* refusal) const {
     return {};
 }
 
+QString ModelFolder::refusedOutsideFile(const QString& reference) const {
+    if (m_allowOutside || isResourcePath(m_file)) return {};
+    const ModelFolder permissive(m_file, true);
+    const QString path = permissive.resolve(reference, nullptr);
+    return !path.isEmpty() && !isInside(path) && QFileInfo(path).isFile() ? path : QString();
+}
+
 QString QtIOSystem::resolveForAssimp(const char* file) const {
     if (!file) return {};
     QString refusal;

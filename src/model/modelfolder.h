@@ -26,6 +26,9 @@ class ModelFolder {
     // outside files are not allowed. The file need not exist.
     QString resolve(const QString& reference, QString* refusal) const;
     bool isInside(const QString& cleanPath) const;
+    // The existing file `reference` names when it is refused only for lying outside the folder (so it
+    // would be followed with permission); empty when it is inside, a Windows path, missing, or allowed.
+    QString refusedOutsideFile(const QString& reference) const;
 
   private:
     QString m_file, m_folder, m_canonicalFolder, m_display;

@@ -368,6 +368,11 @@ void TestModel::referencesOutsideTheFolderAreRefused() {
                  warnings.contains(root + QStringLiteral("/outside.png")),
              qPrintable(warnings));
     QVERIFY2(warnings.count(QStringLiteral("outside the model's folder")) >= 3, qPrintable(warnings));
+    // The two that permission would load are listed for the question; the Windows path is not.
+    QStringList outsideRefs = refused->texturesOutsideFolder;
+    outsideRefs.sort();
+    QCOMPARE(outsideRefs,
+             QStringList({QStringLiteral("../outside.png"), root + QStringLiteral("/outside.png")}));
 
     const ModelLoadResult buffer = loadModel(root + QStringLiteral("/model/buffer.gltf"));
     QVERIFY(!buffer.ok());
@@ -380,6 +385,7 @@ void TestModel::referencesOutsideTheFolderAreRefused() {
     const auto allowed = mustLoad(root + QStringLiteral("/model/quad.obj"), allow);
     QVERIFY(allowed);
     QCOMPARE(allowed->textures.size(), size_t(2)); // ../outside.png and the absolute path are one file
+    QVERIFY(allowed->texturesOutsideFolder.isEmpty());
     const auto upMat = std::find_if(allowed->materials.begin(), allowed->materials.end(),
                                     [](const Material& mat) { return mat.name == QLatin1String("up"); });
     QVERIFY(upMat != allowed->materials.end() && upMat->baseColorTexture >= 0);

@@ -52,6 +52,9 @@ inline QString modelDifference(const Model& a, const Model& b, bool withTime = t
     if (a.bounds.min != b.bounds.min || a.bounds.max != b.bounds.max) return QStringLiteral("bounds");
     if (a.warnings != b.warnings)
         return QStringLiteral("warnings: [%1] vs [%2]").arg(a.warnings.join(u"; "), b.warnings.join(u"; "));
+    if (a.texturesOutsideFolder != b.texturesOutsideFolder)
+        return QStringLiteral("textures outside the folder: [%1] vs [%2]")
+            .arg(a.texturesOutsideFolder.join(u"; "), b.texturesOutsideFolder.join(u"; "));
     if (withTime && a.loadMs != b.loadMs) return QStringLiteral("loadMs");
     return {};
 }

@@ -104,6 +104,7 @@ void TestModelCodec::roundTripsManyEmptyParts() {
     m.cameras.resize(1000);
     m.lights.lights.resize(1000);
     m.warnings = QStringList(1000, QString());
+    m.texturesOutsideFolder = QStringList(1000, QString());
     QString error;
     const std::shared_ptr<Model> decoded = decodeModel(encodeModel(m), &error);
     QVERIFY2(decoded, qPrintable(error));

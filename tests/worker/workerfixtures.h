@@ -108,6 +108,8 @@ inline Model fullModel() {
     m.bounds = {{-1.0, -2.0, -3.0}, {4.0, 5.0, 6.0}};
     m.warnings = {QStringLiteral("spider.fbx: 56 degenerate triangles dropped"),
                   QStringLiteral("\u8b66\u544a")};
+    m.texturesOutsideFolder = {QStringLiteral("../shared/wood.png"),
+                               QStringLiteral("/srv/tex/\u00e9t\u00e9.jpg")};
     m.loadMs = 12.5;
     return m;
 }
