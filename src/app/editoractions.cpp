@@ -10,6 +10,7 @@
 #include "render/camera.h"
 #include "scene.h"
 #include "screenshotdialog.h"
+#include "screenshotexport.h"
 #include "viewport.h"
 #include "viewsettings.h"
 
@@ -176,11 +177,15 @@ void EditorActions::exportScreenshotInteractive() {
                             m_window);
     if (dialog.exec() != QDialog::Accepted) return;
     const ScreenshotOptions o = dialog.options();
-    QApplication::setOverrideCursor(Qt::WaitCursor);
-    const QString error = m_window->viewport()->exportScreenshot(o);
-    QApplication::restoreOverrideCursor();
-    if (!error.isEmpty()) {
-        showError(m_window, {tr("Export screenshot"), tr("Could not export the screenshot."), {error}});
+    const ScreenshotExportResult result = exportScreenshotWithProgress(m_window, m_window->viewport(), o);
+    if (result.cancelled) {
+        m_window->statusBar()->showMessage(
+            tr("Screenshot export cancelled; %1 not written").arg(QDir::toNativeSeparators(o.path)), 8000);
+        return;
+    }
+    if (!result.ok()) {
+        showError(m_window,
+                  {tr("Export screenshot"), tr("Could not export the screenshot."), {result.error}});
         return;
     }
     m_window->statusBar()->showMessage(

@@ -19,6 +19,9 @@ struct ScreenshotOptions {
     bool transparent = false;
     bool gizmos = false;
     QByteArray format = "PNG"; // "PNG" or "JPEG"
+    // Rendered pixels per tile side when exported with progress (screenshotexport.h): small enough that
+    // the window repaints and Cancel answers between tiles even on a software renderer. Not in the form.
+    int tileSize = 1024;
 };
 
 class ScreenshotDialog : public QDialog {

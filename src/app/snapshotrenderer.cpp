@@ -35,13 +35,38 @@ bool SnapshotRenderer::prepare(QString* error) {
 }
 
 QImage SnapshotRenderer::render(const Rig& rig, const ViewCamera& camera, QSize size,
-                                const RenderSettings& settings, int supersample, QString* error) {
+                                const RenderSettings& settings, int supersample, QString* error,
+                                const TileProgress& progress, int tileSize) {
+    const int call = ++m_renders;
     QOpenGLContext* previous = QOpenGLContext::currentContext();
     QSurface* previousSurface = previous ? previous->surface() : nullptr;
     QImage image;
     if (prepare(error)) {
         m_offscreen->setRig(rig);
-        image = m_offscreen->renderImage(camera, size, settings, std::clamp(supersample, 1, 4), error);
+        const std::shared_ptr<const Model> model = m_keepAlive;
+        QString problem; // a failure between tiles, not a cancellation
+        TileProgress between;
+        if (progress)
+            between = [&](int done, int total) {
+                if (!progress(done, total)) return false;
+                if (m_renders == call) return true;
+                // Something rendered through this object meanwhile (another rig, maybe a newer model):
+                // put back what this render draws.
+                if (m_uploaded != model.get()) {
+                    m_keepAlive = model;
+                    m_uploaded = m_offscreen->setModel(model, &problem) ? model.get() : nullptr;
+                    if (!m_uploaded) return false;
+                }
+                m_offscreen->setRig(rig);
+                m_renders = call;
+                return true;
+            };
+        const int tileLimit = m_offscreen->maxTileSize();
+        if (tileSize > 0) m_offscreen->setMaxTileSize(tileSize);
+        image =
+            m_offscreen->renderImage(camera, size, settings, std::clamp(supersample, 1, 4), error, between);
+        if (tileSize > 0) m_offscreen->setMaxTileSize(tileLimit);
+        if (!problem.isEmpty() && error) *error = problem;
     }
     if (previous && previousSurface) previous->makeCurrent(previousSurface);
     return image;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "render/camera.h"
+#include "render/offscreen.h"
 #include "render/renderer.h"
 
 #include <QImage>
@@ -11,7 +12,6 @@
 
 namespace lr {
 
-class OffscreenRenderer;
 class Scene;
 
 class SnapshotRenderer {
@@ -19,9 +19,11 @@ class SnapshotRenderer {
     explicit SnapshotRenderer(const Scene* scene);
     ~SnapshotRenderer();
 
-    // A null image and *error on failure (no OpenGL, model upload failed, ...).
+    // A null image and *error on failure (no OpenGL, model upload failed, ...). With progress: tiles of at
+    // most tileSize rendered pixels a side (0: as large as the driver allows), progress called between
+    // them (it may run the event loop, even render through this object again: thumbnails); false cancels.
     QImage render(const Rig& rig, const ViewCamera& camera, QSize size, const RenderSettings& settings,
-                  int supersample, QString* error);
+                  int supersample, QString* error, const TileProgress& progress = {}, int tileSize = 0);
 
   private:
     bool prepare(QString* error);
@@ -30,6 +32,7 @@ class SnapshotRenderer {
     std::unique_ptr<OffscreenRenderer> m_offscreen;
     const Model* m_uploaded = nullptr;
     std::shared_ptr<const Model> m_keepAlive;
+    int m_renders = 0; // render() calls so far: a change during progress means a nested render
 };
 
 } // namespace lr

@@ -5,6 +5,7 @@
 #include "render/renderer.h"
 #include "scene.h"
 #include "screenshotdialog.h"
+#include "screenshotexport.h"
 #include "snapshotrenderer.h"
 #include "viewsettings.h"
 
@@ -386,18 +387,22 @@ QImage Viewport::renderThumbnail(const Rig& rig, const QSize& size) {
     return image;
 }
 
-QString Viewport::exportScreenshot(const ScreenshotOptions& options) {
+QImage Viewport::renderScreenshot(const ScreenshotOptions& options, QString* error,
+                                  const std::function<bool(int, int)>& progress) {
     RenderSettings s = renderSettings(options.gizmos);
     s.transparentBackground = options.transparent;
     if (!options.gizmos) s.selectedLights.clear();
+    QImage image = m_snapshots->render(m_doc->renderRig(), renderCamera(), options.size, s,
+                                       options.supersample, error, progress, progress ? options.tileSize : 0);
+    if (image.isNull() && error && error->isEmpty()) *error = tr("rendering failed");
+    return image;
+}
+
+QString Viewport::exportScreenshot(const ScreenshotOptions& options) {
     QString error;
-    QImage image =
-        m_snapshots->render(m_doc->renderRig(), renderCamera(), options.size, s, options.supersample, &error);
-    if (image.isNull()) return error.isEmpty() ? tr("rendering failed") : error;
-    if (options.format == "JPEG") image = image.convertToFormat(QImage::Format_RGB888);
-    if (!image.save(options.path, options.format.constData(), options.format == "JPEG" ? 92 : -1))
-        return tr("%1: could not write the image").arg(options.path);
-    return {};
+    const QImage image = renderScreenshot(options, &error);
+    if (image.isNull()) return error;
+    return saveImageAtomically(image, options.path, options.format);
 }
 
 } // namespace lr

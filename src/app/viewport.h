@@ -10,6 +10,7 @@
 #include "render/camera.h"
 
 #include <QOpenGLWidget>
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -46,7 +47,12 @@ class Viewport : public QOpenGLWidget {
 
     // Offscreen renders of the current model with the current camera (same pixels as the viewport).
     QImage renderThumbnail(const Rig& rig, const QSize& size);
-    QString exportScreenshot(const ScreenshotOptions& options); // error text, "" on success
+    // The screenshot's pixels; with progress, in tiles of options.tileSize between which progress runs
+    // (render/offscreen.h TileProgress; false cancels: a null image, *error "cancelled").
+    QImage renderScreenshot(const ScreenshotOptions& options, QString* error,
+                            const std::function<bool(int done, int total)>& progress = {});
+    // Renders and writes it at once (screenshotexport.h: atomic): error text, "" on success.
+    QString exportScreenshot(const ScreenshotOptions& options);
 
   public slots:
     void frameAll();

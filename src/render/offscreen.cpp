@@ -121,7 +121,7 @@ void OffscreenRenderer::releaseTarget() {
 }
 
 QImage OffscreenRenderer::renderImage(const ViewCamera& camera, QSize size, const RenderSettings& settings,
-                                      int supersample, QString* error) {
+                                      int supersample, QString* error, const TileProgress& progress) {
     if (!makeCurrent()) return fail(error, QStringLiteral("no OpenGL context")), QImage();
     if (size.isEmpty() || size.width() > 65536 || size.height() > 65536)
         return fail(error, QStringLiteral("image size %1x%2 is out of range").arg(size.width()).arg(size.height())), QImage();
@@ -130,6 +130,14 @@ QImage OffscreenRenderer::renderImage(const ViewCamera& camera, QSize size, cons
     QImage out(size, QImage::Format_RGBA8888);
     if (out.isNull()) return fail(error, QStringLiteral("not enough memory for a %1x%2 image").arg(size.width()).arg(size.height())), QImage();
     const int tile = std::max(ss, maxTileSize() / ss * ss);  // tiles map to whole output pixels
+    const int total = ((full.width() + tile - 1) / tile) * ((full.height() + tile - 1) / tile);
+    int done = 0;
+    const auto keepGoing = [&] {
+        if (!progress) return true;
+        if (!progress(done, total)) return fail(error, QStringLiteral("cancelled"));
+        return makeCurrent() || fail(error, QStringLiteral("no OpenGL context"));  // it may have switched
+    };
+    if (!keepGoing()) return QImage();
     for (int ty = 0; ty < full.height(); ty += tile) {
         for (int tx = 0; tx < full.width(); tx += tile) {
             const QRect rect(tx, ty, std::min(tile, full.width() - tx), std::min(tile, full.height() - ty));
@@ -149,6 +157,8 @@ QImage OffscreenRenderer::renderImage(const ViewCamera& camera, QSize size, cons
             const QPoint at(tx / ss, ty / ss);
             for (int y = 0; y < part.height(); ++y)
                 std::memcpy(out.scanLine(at.y() + y) + size_t(at.x()) * 4, part.constScanLine(y), size_t(part.width()) * 4);
+            ++done;
+            if (!keepGoing()) return QImage();
         }
     }
     return out;

@@ -11,12 +11,17 @@
 
 #include <QImage>
 #include <QOpenGLFunctions_3_3_Core>
+#include <functional>
 #include <memory>
 
 class QOffscreenSurface;
 class QOpenGLContext;
 
 namespace lr {
+
+// Progress of a tiled render: called with (0, total) before the first tile and (done, total) after each;
+// returning false cancels. It may run the event loop (other contexts may be current when it returns).
+using TileProgress = std::function<bool(int done, int total)>;
 
 class OffscreenRenderer {
 public:
@@ -36,9 +41,9 @@ public:
 
     // An 8-bit image (QImage::Format_RGBA8888, straight alpha) of `size` pixels, rendered at
     // size × supersample (1–4; averaged in linear light) in tiles of at most maxTileSize() pixels.
-    // A null image on failure, *error saying why.
+    // A null image on failure, *error saying why ("cancelled" when progress returned false).
     QImage renderImage(const ViewCamera& camera, QSize size, const RenderSettings& settings, int supersample,
-                       QString* error);
+                       QString* error, const TileProgress& progress = {});
     // One frame into an internal target of `size` (one tile), waited for with glFinish: for timing.
     bool renderFrame(const ViewCamera& camera, QSize size, const RenderSettings& settings, QString* error);
     // Linear radiance before exposure and tone mapping (RGBA32F target, one tile: size <= maxTileSize()).
