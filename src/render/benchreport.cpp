@@ -151,6 +151,7 @@ QJsonObject benchJson(const BenchReport& report) {
             {QStringLiteral("first_frame_ms"), round3(r.firstFrameMs)},
             {QStringLiteral("load_ms"), round3(r.loadMs)},
             {QStringLiteral("first_draw_ms"), round3(r.firstDrawMs)},
+            {QStringLiteral("upload_ms"), round3(r.uploadMs)},
             {QStringLiteral("variants"), r.variants},
             {QStringLiteral("triangles"), double(r.triangles)}};
         const ErrorFigures& e = r.errors;

@@ -1,32 +1,61 @@
 #include "gpumodel.h"
 
 #include <QImage>
+#include <QtConcurrent/QtConcurrentMap>
+#include <algorithm>
 #include <cstddef>
 
 namespace lr::render {
 
-
-GLuint GpuModel::texture(QOpenGLFunctions_3_3_Core* gl, int index, bool srgb) {
-    const auto key = std::make_pair(index, srgb);
-    if (auto it = m_textures.find(key); it != m_textures.end()) return it->second;
-    const QImage& source = m_model->textures[size_t(index)].image;
-    // model.h: UV (0, 0) is the top-left texel = the first QImage row, so the rows upload as they are.
-    const QImage image = source.convertToFormat(QImage::Format_RGBA8888);
+GLuint GpuModel::texture(QOpenGLFunctions_3_3_Core* gl, const MipChain& chain, bool srgb) {
+    if (chain.levels.empty()) return 0;
     GLuint name = 0;
     gl->glGenTextures(1, &name);
     gl->glBindTexture(GL_TEXTURE_2D, name);
+    gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
+    gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, GLint(chain.levels.size()) - 1);
     gl->glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    gl->glPixelStorei(GL_UNPACK_ROW_LENGTH, int(image.bytesPerLine() / 4));
-    gl->glTexImage2D(GL_TEXTURE_2D, 0, srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, image.width(), image.height(), 0, GL_RGBA,
-                     GL_UNSIGNED_BYTE, image.constBits());
+    // model.h: UV (0, 0) is the top-left texel = the first QImage row, so the rows upload as they are.
+    for (size_t level = 0; level < chain.levels.size(); ++level) {
+        const QImage& image = chain.levels[level];
+        gl->glPixelStorei(GL_UNPACK_ROW_LENGTH, int(image.bytesPerLine() / 4));
+        gl->glTexImage2D(GL_TEXTURE_2D, GLint(level), srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, image.width(),
+                         image.height(), 0, GL_RGBA, GL_UNSIGNED_BYTE, image.constBits());
+    }
     gl->glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
-    gl->glGenerateMipmap(GL_TEXTURE_2D);
     gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
     gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
-    m_textures.emplace(key, name);
     return name;
+}
+
+void GpuModel::uploadTextures(QOpenGLFunctions_3_3_Core* gl) {
+    // Every (texture, sRGB) pair some drawn mesh samples; their mipmap chains are built on worker threads.
+    std::vector<TextureKey> keys;
+    for (const Mesh& mesh : m_model->meshes) {
+        if (mesh.vertices.empty() || mesh.indices.size() < 3) continue;
+        if (mesh.material < 0 || size_t(mesh.material) >= m_model->materials.size()) continue;
+        const MaterialFeatures f = materialFeatures(*m_model, mesh);
+        const Material& m = m_model->materials[size_t(mesh.material)];
+        if (f.baseColorTexture) keys.emplace_back(m.baseColorTexture, true);
+        if (f.normalMap) keys.emplace_back(m.normalTexture, false);
+        if (f.emissiveTexture) keys.emplace_back(m.emissiveTexture, true);
+    }
+    std::sort(keys.begin(), keys.end());
+    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+    const Model* model = m_model.get();
+    const QList<MipChain> chains = QtConcurrent::blockingMapped(
+        QList<TextureKey>(keys.begin(), keys.end()), [model](const TextureKey& k) {
+            return buildMipChain(model->textures[size_t(k.first)].image, k.second);
+        });
+    for (size_t i = 0; i < keys.size(); ++i)
+        m_textures.emplace(keys[i], texture(gl, chains[qsizetype(i)], keys[i].second));
+}
+
+GLuint GpuModel::textureName(int index, bool srgb) const {
+    const auto it = m_textures.find({index, srgb});
+    return it == m_textures.end() ? 0 : it->second;
 }
 
 bool GpuModel::upload(QOpenGLFunctions_3_3_Core* gl, std::shared_ptr<const Model> model, QString* error) {
@@ -35,20 +64,22 @@ bool GpuModel::upload(QOpenGLFunctions_3_3_Core* gl, std::shared_ptr<const Model
     if (!m_model) return true;
     while (gl->glGetError() != GL_NO_ERROR) {
     }
+    uploadTextures(gl);
     for (size_t i = 0; i < m_model->meshes.size(); ++i) {
         const Mesh& mesh = m_model->meshes[i];
         if (mesh.vertices.empty() || mesh.indices.size() < 3) continue;
         GpuDraw d;
         d.mesh = int(i);
-        d.material = mesh.material >= 0 && size_t(mesh.material) < m_model->materials.size() ? mesh.material : -1;
+        d.material =
+            mesh.material >= 0 && size_t(mesh.material) < m_model->materials.size() ? mesh.material : -1;
         d.features = materialFeatures(*m_model, mesh);
         d.indexCount = GLsizei(mesh.indices.size() / 3 * 3);
         gl->glGenVertexArrays(1, &d.vao);
         gl->glBindVertexArray(d.vao);
         gl->glGenBuffers(1, &d.vbo);
         gl->glBindBuffer(GL_ARRAY_BUFFER, d.vbo);
-        gl->glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.vertices.size() * sizeof(Vertex)), mesh.vertices.data(),
-                         GL_STATIC_DRAW);
+        gl->glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.vertices.size() * sizeof(Vertex)),
+                         mesh.vertices.data(), GL_STATIC_DRAW);
         gl->glGenBuffers(1, &d.ibo);
         gl->glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, d.ibo);
         gl->glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(size_t(d.indexCount) * sizeof(std::uint32_t)),
@@ -66,9 +97,9 @@ bool GpuModel::upload(QOpenGLFunctions_3_3_Core* gl, std::shared_ptr<const Model
         gl->glBindVertexArray(0);
         if (d.material >= 0) {
             const Material& m = m_model->materials[size_t(d.material)];
-            if (d.features.baseColorTexture) d.baseColorTexture = texture(gl, m.baseColorTexture, true);
-            if (d.features.normalMap) d.normalTexture = texture(gl, m.normalTexture, false);
-            if (d.features.emissiveTexture) d.emissiveTexture = texture(gl, m.emissiveTexture, true);
+            if (d.features.baseColorTexture) d.baseColorTexture = textureName(m.baseColorTexture, true);
+            if (d.features.normalMap) d.normalTexture = textureName(m.normalTexture, false);
+            if (d.features.emissiveTexture) d.emissiveTexture = textureName(m.emissiveTexture, true);
         }
         m_draws.push_back(d);
         if (const GLenum e = gl->glGetError(); e != GL_NO_ERROR) {
@@ -91,9 +122,10 @@ void GpuModel::release(QOpenGLFunctions_3_3_Core* gl) {
         gl->glDeleteBuffers(1, &d.ibo);
     }
     m_draws.clear();
-    for (auto& [key, name] : m_textures) gl->glDeleteTextures(1, &name);
+    for (auto& [key, name] : m_textures)
+        gl->glDeleteTextures(1, &name);
     m_textures.clear();
     m_model.reset();
 }
 
-}  // namespace lr::render
+} // namespace lr::render

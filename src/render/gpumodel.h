@@ -1,7 +1,9 @@
-// A Model uploaded to GL: one vertex array per mesh, textures created on first use (sRGB for base colour
-// and emissive, linear for normal maps), mipmapped. Needs the current context of the owning Renderer.
+// A Model uploaded to GL: one vertex array per mesh, textures (sRGB for base colour and emissive, linear
+// for normal maps) with mipmap chains built on worker threads (mipchain.h). Needs the current context of
+// the owning Renderer.
 #pragma once
 
+#include "mipchain.h"
 #include "model/model.h"
 #include "shadergen.h"
 
@@ -16,13 +18,13 @@ struct GpuDraw {
     GLuint vao = 0, vbo = 0, ibo = 0;
     GLsizei indexCount = 0;
     int mesh = -1;
-    int material = -1;  // valid index into Model::materials, or -1 for the default material
+    int material = -1; // valid index into Model::materials, or -1 for the default material
     MaterialFeatures features;
     GLuint baseColorTexture = 0, normalTexture = 0, emissiveTexture = 0;
 };
 
 class GpuModel {
-public:
+  public:
     // Uploads every non-empty mesh. On failure (e.g. out of GPU memory) releases what it made.
     bool upload(QOpenGLFunctions_3_3_Core* gl, std::shared_ptr<const Model> model, QString* error);
     void release(QOpenGLFunctions_3_3_Core* gl);
@@ -30,12 +32,15 @@ public:
     const Model* model() const { return m_model.get(); }
     const std::vector<GpuDraw>& draws() const { return m_draws; }
 
-private:
-    GLuint texture(QOpenGLFunctions_3_3_Core* gl, int index, bool srgb);
+  private:
+    using TextureKey = std::pair<int, bool>; // (texture index, sRGB)
+    void uploadTextures(QOpenGLFunctions_3_3_Core* gl);
+    static GLuint texture(QOpenGLFunctions_3_3_Core* gl, const MipChain& chain, bool srgb);
+    GLuint textureName(int index, bool srgb) const;
 
     std::shared_ptr<const Model> m_model;
     std::vector<GpuDraw> m_draws;
-    std::map<std::pair<int, bool>, GLuint> m_textures;  // (texture index, sRGB) -> GL name
+    std::map<std::pair<int, bool>, GLuint> m_textures; // (texture index, sRGB) -> GL name
 };
 
-}  // namespace lr::render
+} // namespace lr::render

@@ -4,6 +4,8 @@
 #include "reference.h"
 
 #include <QElapsedTimer>
+#include <QOpenGLContext>
+#include <QOpenGLFunctions>
 #include <QFile>
 #include <QFuture>
 #include <QThread>
@@ -91,6 +93,8 @@ bool measure(const BenchScene& scene, const BenchOptions& o, Quality q, bool ube
     QElapsedTimer clock;
     clock.start();
     if (!gl.setModel(scene.model, error)) return false;
+    QOpenGLContext::currentContext()->functions()->glFinish();
+    r->uploadMs = clock.nsecsElapsed() * 1e-6;
     gl.setRig(scene.rig);
     if (!gl.renderFrame(scene.camera, o.size, settings, error)) return false;
     r->firstDrawMs = clock.nsecsElapsed() * 1e-6;

@@ -69,6 +69,7 @@ struct BenchResult {
     double firstFrameMs = 0.0; // loadMs + firstDrawMs
     double loadMs = 0.0;
     double firstDrawMs = 0.0; // upload + compile + draw + glFinish in a fresh context
+    double uploadMs = 0.0;    // of which the model upload (buffers, textures and their mipmaps)
     bool hasErrors = false;
     ErrorFigures errors;     // against the double reference (nonFinite from the float radiance)
     double speedUp = 0.0;    // exact's ms_median / this ms_median for the same scene (0: no exact run)
