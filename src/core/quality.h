@@ -8,7 +8,8 @@
 namespace lr {
 
 // Exact: per-pixel, exact acos, local viewer as the rig asks, MSAA on.
-// Balanced: per-pixel with measured cheaper evaluations. Fast: per-vertex (Gouraud) lighting, no MSAA.
+// Balanced: per-pixel with measured cheaper evaluations. Fast: per-vertex (Gouraud) lighting, no MSAA,
+// bilinear texture filtering in the nearest mip level.
 // docs/quality.md names and measures every approximation (and why fast keeps the rig's viewer).
 enum class Quality { Exact, Balanced, Fast };
 

@@ -173,6 +173,7 @@ private:
     int m_clusterGlobal = 0;
     glm::dmat4 m_drawProjection{1.0};  // the last drawModel's: the deferred lighting pass bins with it
     GLuint m_lightBuffer = 0, m_lightTexture = 0;
+    GLuint m_fastSampler = 0;  // the fast tier's texture filtering (F4)
     int m_lightCapacity = 0;  // lights the buffer holds
     GLuint m_emptyVao = 0;
     GLuint m_gizmoVao = 0, m_gizmoVbo = 0;
