@@ -5,6 +5,7 @@
 // bundled Suzanne lit by 1, 8, 64 and 256 procedural lights of each type (core/proceduralrig.h).
 // Exit status: 0 measured; 1 a model, rig or output failed, or no OpenGL; 2 usage error.
 #include "cli.h"
+#include "outputfiles.h"
 #include "sceneoptions.h"
 
 #include "core/proceduralrig.h"
@@ -16,7 +17,6 @@
 #include <QElapsedTimer>
 #include <QFileInfo>
 #include <QJsonDocument>
-#include <QSaveFile>
 #include <QTextStream>
 
 namespace lr::cli {
@@ -49,38 +49,6 @@ template <typename E> std::optional<std::vector<E>> parseNames(const QString& te
         if (std::find(out.begin(), out.end(), *v) == out.end()) out.push_back(*v);
     }
     return out;
-}
-
-bool writeFile(const QString& path, const QByteArray& data, QString* error) {
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(data) != data.size() || !file.commit()) {
-        *error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
-        return false;
-    }
-    return true;
-}
-
-bool writePng(const QString& path, const QImage& image, QString* error) {
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || !image.save(&file, "PNG") || !file.commit()) {
-        *error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
-        return false;
-    }
-    return true;
-}
-
-bool checkOutputPath(const QString& path, QString* error) {
-    const QFileInfo info(path);
-    if (!info.absoluteDir().exists()) {
-        *error =
-            QStringLiteral("cannot write %1: the folder %2 does not exist").arg(path, info.absolutePath());
-        return false;
-    }
-    if (info.isDir()) {
-        *error = QStringLiteral("cannot write %1: it is a folder").arg(path);
-        return false;
-    }
-    return true;
 }
 
 } // namespace
@@ -271,10 +239,10 @@ int runBench(const QStringList& args) {
                .arg(report.loadAverage.isEmpty() ? QStringLiteral("unknown") : report.loadAverage);
     out << benchTable(report);
     if (parser.isSet(json) &&
-        !writeFile(parser.value(json), QJsonDocument(benchJson(report)).toJson(QJsonDocument::Indented),
+        !writeFileAtomically(parser.value(json), QJsonDocument(benchJson(report)).toJson(QJsonDocument::Indented),
                    &message))
         return failed(message);
-    if (parser.isSet(chart) && !writePng(parser.value(chart), benchChart(report), &message))
+    if (parser.isSet(chart) && !writeImageAtomically(benchChart(report), parser.value(chart), "png", &message))
         return failed(message);
     return Ok;
 }

@@ -5,6 +5,7 @@
 // written); 2 usage error. Hidden: --frames N times N more frames (glFinish each) and prints the median,
 // --msaa N overrides the samples (default 4; 0 for --quality fast).
 #include "cli.h"
+#include "outputfiles.h"
 #include "sceneoptions.h"
 
 #include "render/offscreen.h"
@@ -13,8 +14,6 @@
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFileInfo>
-#include <QImageWriter>
-#include <QSaveFile>
 #include <QTextStream>
 #include <algorithm>
 #include <ctime>
@@ -34,27 +33,6 @@ QByteArray formatFor(const QString& path) {
     if (suffix == QLatin1String("png")) return "png";
     if (suffix == QLatin1String("jpg") || suffix == QLatin1String("jpeg")) return "jpeg";
     return {};
-}
-
-bool writeImage(const QImage& image, const QString& path, const QByteArray& format, QString* error) {
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly)) {
-        *error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
-        return false;
-    }
-    QImageWriter writer(&file, format);
-    if (format == "jpeg") writer.setQuality(92);
-    const QImage out = format == "jpeg" ? image.convertToFormat(QImage::Format_RGB888) : image;
-    if (!writer.write(out)) {
-        file.cancelWriting();
-        *error = QStringLiteral("cannot write %1: %2").arg(path, writer.errorString());
-        return false;
-    }
-    if (!file.commit()) {
-        *error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
-        return false;
-    }
-    return true;
 }
 
 double median(std::vector<double> v) {
@@ -135,10 +113,7 @@ int runRender(const QStringList& args) {
         return int(Failed);
     };
     if (!displayAvailable()) return failed(QStringLiteral("lightrig render needs an X display; run it under xvfb-run -a"));
-    const QFileInfo outInfo(outPath);
-    if (!outInfo.absoluteDir().exists())
-        return failed(QStringLiteral("cannot write %1: the folder %2 does not exist").arg(outPath, outInfo.absolutePath()));
-    if (outInfo.isDir()) return failed(QStringLiteral("cannot write %1: it is a folder").arg(outPath));
+    if (!checkOutputPath(outPath, &message)) return failed(message);
 
     QElapsedTimer clock;
     clock.start();
@@ -161,7 +136,7 @@ int runRender(const QStringList& args) {
     if (image.isNull()) return failed(message);
     if (settings.transparentBackground && format == "jpeg")
         err << name << ": warning: JPEG has no alpha channel; the transparent background is written black\n";
-    if (!writeImage(image, outPath, format, &message)) return failed(message);
+    if (!writeImageAtomically(image, outPath, format, &message)) return failed(message);
     const RenderStats& stats = gl.renderer().stats();
     out << QStringLiteral("wrote %1 (%2x%3): %4 triangles, %5 of %6 lights (%7), %8, first image %9 ms, load %10 ms\n")
                .arg(outPath)
