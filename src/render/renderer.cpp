@@ -15,6 +15,7 @@
 #include <QOpenGLContext>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <glm/ext/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -39,17 +40,22 @@ glm::dmat4 tileProjection(const ViewCamera& cam, QSize size, const QRect& tile) 
     return cam.projection(aspect, x0, y0, x1, y1);
 }
 
-QSize targetSize(QSize size, const QRect& tile) { return tile.isValid() ? tile.size() : size; }
+QSize targetSize(QSize size, const QRect& tile) {
+    return tile.isValid() ? tile.size() : size;
+}
 
-}  // namespace
+} // namespace
 
-Renderer::Renderer() : m_programs(std::make_unique<ProgramCache>()), m_model(std::make_unique<GpuModel>()),
-                       m_targets(std::make_unique<Targets>()), m_clusters(std::make_unique<ClusterBuffers>()) {}
+Renderer::Renderer()
+    : m_programs(std::make_unique<ProgramCache>()), m_model(std::make_unique<GpuModel>()),
+      m_targets(std::make_unique<Targets>()), m_clusters(std::make_unique<ClusterBuffers>()) {}
 
 Renderer::~Renderer() {
     if (!m_initialized) return;
-    if (QOpenGLContext::currentContext() == m_context) releaseResources();
-    else qCWarning(lcRender) << "Renderer destroyed without its context current: GL resources leak";
+    if (QOpenGLContext::currentContext() == m_context)
+        releaseResources();
+    else
+        qCWarning(lcRender) << "Renderer destroyed without its context current: GL resources leak";
 }
 
 bool Renderer::fail(const QString& message) {
@@ -72,7 +78,8 @@ bool Renderer::initialize(QString* error) {
                         .arg(m_context->isOpenGLES() ? QStringLiteral("OpenGL ES") : QStringLiteral("OpenGL"))
                         .arg(format.majorVersion())
                         .arg(format.minorVersion()));
-    if (!initializeOpenGLFunctions()) return bail(QStringLiteral("cannot resolve the OpenGL 3.3 core functions"));
+    if (!initializeOpenGLFunctions())
+        return bail(QStringLiteral("cannot resolve the OpenGL 3.3 core functions"));
 
     GLint maxSamples = 0, maxRenderbuffer = 0, maxTexture = 0, maxViewport[2] = {};
     glGetIntegerv(GL_MAX_SAMPLES, &maxSamples);
@@ -111,7 +118,8 @@ bool Renderer::initialize(QString* error) {
     m_initialized = true;
 
     QString message;
-    if (!m_programs->fixedProgram(QStringLiteral("fullscreen.vert"), QStringLiteral("tonemap.frag"), &message) ||
+    if (!m_programs->fixedProgram(QStringLiteral("fullscreen.vert"), QStringLiteral("tonemap.frag"),
+                                  &message) ||
         !m_programs->fixedProgram(QStringLiteral("gizmo.vert"), QStringLiteral("gizmo.frag"), &message)) {
         releaseResources();
         return bail(message);
@@ -137,6 +145,7 @@ void Renderer::releaseResources() {
     glDeleteQueries(4, m_queries);
     m_lightBuffer = m_lightTexture = m_emptyVao = m_gizmoVao = m_gizmoVbo = 0;
     m_lightCapacity = 0;
+    m_packedLights.clear();
     m_initialized = false;
     m_lightsDirty = true;
 }
@@ -154,7 +163,9 @@ bool Renderer::setModel(std::shared_ptr<const Model> model) {
     return ok || fail(error);
 }
 
-const Model* Renderer::model() const { return m_model->model(); }
+const Model* Renderer::model() const {
+    return m_model->model();
+}
 
 void Renderer::setRig(const Rig& rig) {
     m_rig = rig;
@@ -212,11 +223,29 @@ void Renderer::uploadLights(const glm::dmat4& view) {
     glBindBuffer(GL_TEXTURE_BUFFER, m_lightBuffer);
     if (count > m_lightCapacity || m_lightCapacity == 0) {
         m_lightCapacity = std::max({count, 2 * m_lightCapacity, 16});
-        glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(m_lightCapacity) * kLightTexels * 16, nullptr, GL_DYNAMIC_DRAW);
+        glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(m_lightCapacity) * kLightTexels * 16, nullptr,
+                     GL_DYNAMIC_DRAW);
         glBindTexture(GL_TEXTURE_BUFFER, m_lightTexture);
         glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, m_lightBuffer);
+        m_packedLights.clear(); // the new store holds nothing yet
     }
-    if (count) glBufferSubData(GL_TEXTURE_BUFFER, 0, GLsizeiptr(data.size() * sizeof(float)), data.data());
+    // Only the texels that changed go up: dragging one light of many sends that light's 128 bytes (a view
+    // change moves every view-space light, and then everything differs).
+    const auto same = [](float a, float b) {
+        return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b);
+    };
+    size_t first = 0, last = data.size();
+    if (m_packedLights.size() == data.size()) {
+        first = size_t(std::mismatch(data.begin(), data.end(), m_packedLights.begin(), same).first -
+                       data.begin());
+        while (last > first && same(data[last - 1], m_packedLights[last - 1]))
+            --last;
+    }
+    if (last > first)
+        glBufferSubData(GL_TEXTURE_BUFFER, GLintptr(first * sizeof(float)),
+                        GLsizeiptr((last - first) * sizeof(float)), data.data() + first);
+    m_stats.lightBytesUploaded = qint64((last - first) * sizeof(float));
+    m_packedLights = std::move(data);
     glBindBuffer(GL_TEXTURE_BUFFER, 0);
     m_stats.lightsUploaded = count;
     m_uploadedView = view;
@@ -246,8 +275,8 @@ bool Renderer::clusterLights(const glm::dmat4& projection, const RenderSettings&
     m_clusters->upload(this, data);
     m_stats.clustered = true;
     m_stats.clusterLightRefs = qint64(data.indices.size());
-    m_clusterUniforms = {float(data.lookup.tileScale.x), float(data.lookup.tileScale.y), float(data.lookup.znear),
-                         float(data.lookup.sliceScale)};
+    m_clusterUniforms = {float(data.lookup.tileScale.x), float(data.lookup.tileScale.y),
+                         float(data.lookup.znear), float(data.lookup.sliceScale)};
     m_clusterGlobal = data.globalCount;
     m_clusterGrid = {data.grid.tilesX, data.grid.tilesY, data.grid.slices};
     return true;
@@ -285,10 +314,10 @@ bool Renderer::drawModel(const glm::dmat4& view, const glm::dmat4& projection, c
     order.reserve(m_model->draws().size());
     for (const GpuDraw& d : m_model->draws()) {
         FeatureKey key;
-        if (!gpass) key.rig = shaded;  // the G-pass does no lighting
+        if (!gpass) key.rig = shaded; // the G-pass does no lighting
         key.material = d.features;
-        key.quality = gpass ? Quality::Exact : settings.quality;  // the G-buffer is the exact surface
-        if (key.quality == Quality::Balanced) {  // B2: an integer shininess becomes a chain of products
+        key.quality = gpass ? Quality::Exact : settings.quality; // the G-buffer is the exact surface
+        if (key.quality == Quality::Balanced) { // B2: an integer shininess becomes a chain of products
             const Material& m = d.material >= 0 ? model->materials[size_t(d.material)] : Material();
             const double n = m.shininess >= 0.0f ? double(m.shininess) : m_rig.shading.shininess;
             if (n >= 1.0 && n <= kMaxShininessInt && n == std::floor(n)) key.shininessInt = std::uint16_t(n);
@@ -345,14 +374,17 @@ bool Renderer::drawModel(const glm::dmat4& view, const glm::dmat4& projection, c
             glBindTexture(GL_TEXTURE_2D, textures[unit]);
             glBindSampler(unit, sampler);
         }
-        if (settings.cullBackFaces && !d->features.doubleSided) glEnable(GL_CULL_FACE);
-        else glDisable(GL_CULL_FACE);
+        if (settings.cullBackFaces && !d->features.doubleSided)
+            glEnable(GL_CULL_FACE);
+        else
+            glDisable(GL_CULL_FACE);
         glBindVertexArray(d->vao);
         glDrawElements(GL_TRIANGLES, d->indexCount, GL_UNSIGNED_INT, nullptr);
         ++m_stats.drawCalls;
     }
     glBindVertexArray(0);
-    for (GLuint unit = 0; unit < 3; ++unit) glBindSampler(unit, 0);
+    for (GLuint unit = 0; unit < 3; ++unit)
+        glBindSampler(unit, 0);
     glDisable(GL_CULL_FACE);
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LESS);
@@ -444,7 +476,7 @@ void Renderer::beginTimer() {
         m_stats.lastGpuMs = double(ns) * 1e-6;
         --m_queriesPending;
     }
-    if (m_queriesPending >= 4) return;  // all in flight: skip timing this frame
+    if (m_queriesPending >= 4) return; // all in flight: skip timing this frame
     glBeginQuery(GL_TIME_ELAPSED, m_queries[m_queryNext]);
 }
 
@@ -467,16 +499,20 @@ static QRect screenBounds(const Bounds& box, const glm::dmat4& viewProjection, Q
         x0 = std::min(x0, p.x / p.w), x1 = std::max(x1, p.x / p.w);
         y0 = std::min(y0, p.y / p.w), y1 = std::max(y1, p.y / p.w);
     }
-    const auto px = [&](double ndc, int extent) { return std::clamp((ndc * 0.5 + 0.5) * extent, 0.0, double(extent)); };
-    const int left = int(std::floor(px(x0, size.width()))) - 1, right = int(std::ceil(px(x1, size.width()))) + 1;
-    const int bottom = int(std::floor(px(y0, size.height()))) - 1, top = int(std::ceil(px(y1, size.height()))) + 1;
-    return QRect(QPoint(0, 0), size).intersected(QRect(left, bottom, right - left, top - bottom));  // GL rows
+    const auto px = [&](double ndc, int extent) {
+        return std::clamp((ndc * 0.5 + 0.5) * extent, 0.0, double(extent));
+    };
+    const int left = int(std::floor(px(x0, size.width()))) - 1,
+              right = int(std::ceil(px(x1, size.width()))) + 1;
+    const int bottom = int(std::floor(px(y0, size.height()))) - 1,
+              top = int(std::ceil(px(y1, size.height()))) + 1;
+    return QRect(QPoint(0, 0), size).intersected(QRect(left, bottom, right - left, top - bottom)); // GL rows
 }
 
 bool Renderer::lightingPass(const RenderSettings& settings, bool hdr, const QRect& scissor) {
     FeatureKey key;
     key.rig = settings.forceAllFeatures ? allRigFeatures(rigFeatures(m_rig)) : rigFeatures(m_rig);
-    key.quality = settings.quality;  // never Fast: render() keeps the fast tier forward
+    key.quality = settings.quality; // never Fast: render() keeps the fast tier forward
     key.output = hdr ? ShaderOutput::Radiance : ShaderOutput::Display;
     key.deferredLighting = true;
     key.clustered = clusterLights(m_drawProjection, settings);
@@ -488,7 +524,8 @@ bool Renderer::lightingPass(const RenderSettings& settings, bool hdr, const QRec
     glUniform3fv(p->ambient, 1, glm::value_ptr(glm::vec3(shade.ambient)));
     glUniform1f(p->distanceScale, float(shade.distanceScale));
     glUniform1i(p->lightCount, m_stats.lightsUploaded);
-    if (p->exposureScale >= 0) glUniform1f(p->exposureScale, float(std::exp2(std::clamp(settings.exposureEV, -60.0, 60.0))));
+    if (p->exposureScale >= 0)
+        glUniform1f(p->exposureScale, float(std::exp2(std::clamp(settings.exposureEV, -60.0, 60.0))));
     if (p->toneMap >= 0) glUniform1i(p->toneMap, int(settings.toneMap));
     if (key.clustered) {
         setClusterUniforms(p->program.get());
@@ -502,7 +539,7 @@ bool Renderer::lightingPass(const RenderSettings& settings, bool hdr, const QRec
     }
     glActiveTexture(GL_TEXTURE0);
     glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_GREATER);  // the triangle lies on the far plane: passes where a surface was drawn
+    glDepthFunc(GL_GREATER); // the triangle lies on the far plane: passes where a surface was drawn
     glDepthMask(GL_FALSE);
     glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);
@@ -533,7 +570,7 @@ bool Renderer::render(const ViewCamera& camera, QSize size, const RenderSettings
     m_stats.lightsInRig = int(m_rig.lights.size());
     const bool hdr = settings.hdrTarget;
     if (m_lightsDirty || view != m_uploadedView) uploadLights(view);
-    const bool fast = settings.quality == Quality::Fast;  // per vertex, no MSAA, forward only (F1, F3)
+    const bool fast = settings.quality == Quality::Fast; // per vertex, no MSAA, forward only (F1, F3)
     const int samples = fast ? 0 : settings.msaaSamples;
     const bool wantDeferred = !fast && (settings.shadingPath == ShadingPath::Deferred ||
                                         (settings.shadingPath == ShadingPath::Auto && samples <= 1 &&
@@ -551,7 +588,7 @@ bool Renderer::render(const ViewCamera& camera, QSize size, const RenderSettings
     glDepthMask(GL_TRUE);
     if (hdr || settings.transparentBackground) {
         glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-    } else {  // the display path writes sRGB-encoded colours: the background as given
+    } else { // the display path writes sRGB-encoded colours: the background as given
         const QColor bg = settings.background.toRgb();
         glClearColor(float(bg.redF()), float(bg.greenF()), float(bg.blueF()), 1.0f);
     }
@@ -565,7 +602,9 @@ bool Renderer::render(const ViewCamera& camera, QSize size, const RenderSettings
         glBindFramebuffer(GL_FRAMEBUFFER, m_targets->fbo);
         glClear(GL_COLOR_BUFFER_BIT);
         const glm::dmat4 toModel = glm::translate(glm::dmat4(1.0), glm::dvec3(0.0));
-        ok = lightingPass(settings, hdr, screenBounds(m_model->model()->bounds, projection * view * toModel, target)) && ok;
+        ok = lightingPass(settings, hdr,
+                          screenBounds(m_model->model()->bounds, projection * view * toModel, target)) &&
+             ok;
     } else {
         glBindFramebuffer(GL_FRAMEBUFFER, m_targets->drawFbo());
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -577,19 +616,19 @@ bool Renderer::render(const ViewCamera& camera, QSize size, const RenderSettings
         if (m_targets->samples > 1) {
             glBindFramebuffer(GL_READ_FRAMEBUFFER, m_targets->msaaFbo);
             glBindFramebuffer(GL_DRAW_FRAMEBUFFER, m_targets->fbo);
-            glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT | (overlays ? GL_DEPTH_BUFFER_BIT : 0),
-                              GL_NEAREST);
+            glBlitFramebuffer(0, 0, w, h, 0, 0, w, h,
+                              GL_COLOR_BUFFER_BIT | (overlays ? GL_DEPTH_BUFFER_BIT : 0), GL_NEAREST);
         }
         ok = toneMapPass(target, settings, targetFbo) && ok;
     } else {
-        if (m_targets->samples > 1 && overlays) {  // the gizmos' occlusion test reads resolved depth
+        if (m_targets->samples > 1 && overlays) { // the gizmos' occlusion test reads resolved depth
             glBindFramebuffer(GL_READ_FRAMEBUFFER, m_targets->msaaFbo);
             glBindFramebuffer(GL_DRAW_FRAMEBUFFER, m_targets->fbo);
             glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
         }
         glBindFramebuffer(GL_READ_FRAMEBUFFER, m_targets->drawFbo());
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, targetFbo);
-        glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);  // resolves MSAA
+        glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST); // resolves MSAA
         glBindFramebuffer(GL_FRAMEBUFFER, targetFbo);
     }
     m_lastFrameHdr = hdr;
@@ -611,7 +650,7 @@ bool Renderer::readAttachment(GLuint fbo, GLenum attachment, QSize size, FloatIm
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     std::vector<glm::vec4> rows(out->pixels.size());
     glReadPixels(0, 0, size.width(), size.height(), GL_RGBA, GL_FLOAT, rows.data());
-    for (int y = 0; y < size.height(); ++y)  // GL's first row is the bottom one
+    for (int y = 0; y < size.height(); ++y) // GL's first row is the bottom one
         std::copy_n(rows.begin() + std::ptrdiff_t(y) * size.width(), size.width(),
                     out->pixels.begin() + std::ptrdiff_t(size.height() - 1 - y) * size.width());
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
@@ -624,8 +663,8 @@ bool Renderer::readRadiance(FloatImage* out) {
     return readAttachment(m_targets->fbo, GL_COLOR_ATTACHMENT0, m_targets->size, out);
 }
 
-bool Renderer::renderGBuffer(const ViewCamera& camera, QSize size, const RenderSettings& settings, GBuffer* out,
-                             const QRect& tile) {
+bool Renderer::renderGBuffer(const ViewCamera& camera, QSize size, const RenderSettings& settings,
+                             GBuffer* out, const QRect& tile) {
     if (!m_initialized) return fail(QStringLiteral("renderGBuffer before initialize"));
     if (size.isEmpty()) return fail(QStringLiteral("renderGBuffer: empty size"));
     const QSize target = targetSize(size, tile);
@@ -651,10 +690,12 @@ bool Renderer::renderGBuffer(const ViewCamera& camera, QSize size, const RenderS
     glBindFramebuffer(GL_READ_FRAMEBUFFER, m_targets->gbufferFbo);
     glReadPixels(0, 0, target.width(), target.height(), GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-    for (FloatImage* f : {&out->position, &out->normal, &out->albedo, &out->specular, &out->emissive}) *f = g[0];
+    for (FloatImage* f : {&out->position, &out->normal, &out->albedo, &out->specular, &out->emissive})
+        *f = g[0];
     for (int y = 0; y < target.height(); ++y) {
         for (int x = 0; x < target.width(); ++x) {
-            const float covered = depth[size_t(target.height() - 1 - y) * size_t(target.width()) + size_t(x)] < 1.0f;
+            const float covered =
+                depth[size_t(target.height() - 1 - y) * size_t(target.width()) + size_t(x)] < 1.0f;
             const glm::vec4 a = g[0].at(x, y), b = g[1].at(x, y), c = g[2].at(x, y), d = g[3].at(x, y);
             out->position.at(x, y) = glm::vec4(glm::vec3(a), covered);
             out->normal.at(x, y) = glm::vec4(glm::vec3(b), covered);
@@ -668,4 +709,4 @@ bool Renderer::renderGBuffer(const ViewCamera& camera, QSize size, const RenderS
     return ok;
 }
 
-}  // namespace lr
+} // namespace lr

@@ -39,7 +39,7 @@ class GpuModel;
 class ClusterBuffers;
 struct LightBounds;
 struct Targets;
-}  // namespace render
+} // namespace render
 
 // Forward: one pass shades every fragment of every triangle. Deferred: a G-pass writes the surfaces, then
 // one full-screen pass shades each covered pixel once (no MSAA; much cheaper on software rasterisers,
@@ -53,12 +53,12 @@ constexpr int kDeferredMinLights = 6;
 struct RenderSettings {
     double exposureEV = 0.0;
     ToneMap toneMap = ToneMap::Clamp;
-    QColor background = QColor(38, 38, 42);  // sRGB
-    bool transparentBackground = false;      // alpha 0 where there is no model (straight alpha)
-    int msaaSamples = 4;                      // 0 or 1: off; clamped to what the driver offers
+    QColor background = QColor(38, 38, 42); // sRGB
+    bool transparentBackground = false;     // alpha 0 where there is no model (straight alpha)
+    int msaaSamples = 4;                    // 0 or 1: off; clamped to what the driver offers
     bool showGizmos = false;
     bool showGrid = false;
-    std::vector<int> selectedLights;  // indices into the rig's lights, highlighted
+    std::vector<int> selectedLights; // indices into the rig's lights, highlighted
     // How the rig is evaluated (docs/quality.md): Exact per pixel as src/core; Balanced per pixel with
     // measured cheaper evaluations; Fast per vertex (Gouraud), never MSAA (msaaSamples and the deferred
     // path are ignored). The G-buffer is always the exact per-pixel surface.
@@ -66,37 +66,39 @@ struct RenderSettings {
     // The über-shader: compile every light type and model into the lighting code whatever the rig uses
     // (for `lightrig bench`, to measure what specialising the shaders per scene saves). Same pixels.
     bool forceAllFeatures = false;
-    bool cullBackFaces = true;         // single-sided materials; double-sided ones are never culled
+    bool cullBackFaces = true; // single-sided materials; double-sided ones are never culled
     // The default path shades, exposes, tone-maps and encodes each fragment straight into an 8-bit target
     // (MSAA resolves display colours). The HDR path renders linear radiance into a float target and
     // tone-maps it in a full-screen pass (MSAA then resolves radiance); readRadiance() needs it.
     bool hdrTarget = false;
-    bool hdrFloat32 = false;  // HDR path: RGBA32F instead of RGBA16F
+    bool hdrFloat32 = false; // HDR path: RGBA32F instead of RGBA16F
     // Clustered forward shading (render/cluster.h): -1 automatic (when more than a few lights have a
     // bounded range), 0 never, 1 always. Same pixels either way: it only skips exact zeros.
     int clusteredShading = -1;
-    ShadingPath shadingPath = ShadingPath::Auto;  // Deferred ignores msaaSamples
+    ShadingPath shadingPath = ShadingPath::Auto; // Deferred ignores msaaSamples
     bool operator==(const RenderSettings&) const = default;
 };
 
 struct RenderStats {
-    int shaderVariantsCompiled = 0;  // since initialize()
+    int shaderVariantsCompiled = 0; // since initialize()
     int shaderVariantsCached = 0;
-    int lightsUploaded = 0;  // in the last frame: enabled and able to reach the model
+    int lightsUploaded = 0; // in the last frame: enabled and able to reach the model
     int lightsInRig = 0;
     qint64 triangles = 0;
     int drawCalls = 0;
-    bool deferred = false;  // the last frame took the deferred path
-    double lastGpuMs = -1.0;  // GL_TIME_ELAPSED of a recent frame (asynchronous: a frame or two old); < 0: none yet
-    bool clustered = false;     // the last frame used clustered shading
-    qint64 clusterLightRefs = 0;  // its light-index list: global lights + per-cluster entries
-    double lastCpuMs = 0.0;   // CPU time spent in the last render() call (GL submission, not completion)
+    bool deferred = false; // the last frame took the deferred path
+    double lastGpuMs =
+        -1.0; // GL_TIME_ELAPSED of a recent frame (asynchronous: a frame or two old); < 0: none yet
+    bool clustered = false;        // the last frame used clustered shading
+    qint64 clusterLightRefs = 0;   // its light-index list: global lights + per-cluster entries
+    double lastCpuMs = 0.0;        // CPU time spent in the last render() call (GL submission, not completion)
+    qint64 lightBytesUploaded = 0; // by the last light upload: only the texels that changed
 };
 
 class Renderer : protected QOpenGLFunctions_3_3_Core {
-public:
+  public:
     Renderer();
-    ~Renderer();  // releases GL resources if their context is current, else warns
+    ~Renderer(); // releases GL resources if their context is current, else warns
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
@@ -105,12 +107,14 @@ public:
     bool isInitialized() const { return m_initialized; }
     QOpenGLContext* context() const { return m_context; }
 
-    // Uploads the model (nullptr: no model). False (with lastError) if the upload failed; nothing is drawn then.
+    // Uploads the model (nullptr: no model). False (with lastError) if the upload failed; nothing is drawn
+    // then.
     bool setModel(std::shared_ptr<const Model> model);
     const Model* model() const;
-    void setRig(const Rig& rig);  // cheap: no GL work here; light data is refreshed on the next frame
+    void setRig(const Rig& rig); // cheap: no GL work here; light data is refreshed on the next frame
     const Rig& rig() const { return m_rig; }
-    // The frame a `model`-space rig is anchored to: the model's bounding sphere (unit sphere without a model).
+    // The frame a `model`-space rig is anchored to: the model's bounding sphere (unit sphere without a
+    // model).
     SceneFrame sceneFrame() const;
     Bounds bounds() const;
 
@@ -122,28 +126,29 @@ public:
     // The last frame's resolved radiance (before exposure and tone mapping; alpha = coverage). Needs the
     // last render() to have used RenderSettings::hdrTarget.
     bool readRadiance(FloatImage* out);
-    // Draws the G-buffer for this view and reads it back (no MSAA, float targets; what the deferred path shades).
+    // Draws the G-buffer for this view and reads it back (no MSAA, float targets; what the deferred path
+    // shades).
     bool renderGBuffer(const ViewCamera& camera, QSize size, const RenderSettings& settings, GBuffer* out,
                        const QRect& tile = QRect());
 
     // The camera as render() uses it: automatic clip planes filled in from the scene.
     ViewCamera effectiveCamera(const ViewCamera& camera) const;
 
-    void releaseResources();  // the viewport calls this from QOpenGLContext::aboutToBeDestroyed
+    void releaseResources(); // the viewport calls this from QOpenGLContext::aboutToBeDestroyed
     const RenderStats& stats() const { return m_stats; }
     QString lastError() const { return m_lastError; }
     int maxSamples() const { return m_maxSamples; }
-    int maxTargetSize() const { return m_maxTargetSize; }  // largest width/height of one render target
+    int maxTargetSize() const { return m_maxTargetSize; } // largest width/height of one render target
 
     // Replace a shader file's text (tests, live editing); empty restores the embedded one. Clears the cache.
     void setShaderSourceOverride(const QString& name, const QByteArray& source);
 
-private:
+  private:
     bool fail(const QString& message);
     bool ensureTargets(QSize size, int samples, GLenum colorFormat);
     void uploadLights(const glm::dmat4& view);
     bool drawModel(const glm::dmat4& view, const glm::dmat4& projection, const RenderSettings& settings,
-                   int output);  // render::ShaderOutput
+                   int output); // render::ShaderOutput
     bool lightingPass(const RenderSettings& settings, bool hdr, const QRect& scissor);
     bool toneMapPass(QSize size, const RenderSettings& settings, GLuint targetFbo);
     bool gizmoPass(const glm::dmat4& view, const glm::dmat4& projection, double znear,
@@ -164,17 +169,18 @@ private:
     std::unique_ptr<render::GpuModel> m_model;
     std::unique_ptr<render::Targets> m_targets;
     std::unique_ptr<render::ClusterBuffers> m_clusters;
-    std::vector<render::LightBounds> m_lightBounds;  // per uploaded light, view space
+    std::vector<render::LightBounds> m_lightBounds; // per uploaded light, view space
     int m_boundedLights = 0;
     bool clusterLights(const glm::dmat4& projection, const RenderSettings& settings);
     void setClusterUniforms(QOpenGLShaderProgram* program);
-    glm::vec4 m_clusterUniforms{0.0f};  // tile scale x, y, near, slice scale
+    glm::vec4 m_clusterUniforms{0.0f}; // tile scale x, y, near, slice scale
     glm::ivec3 m_clusterGrid{0};
     int m_clusterGlobal = 0;
-    glm::dmat4 m_drawProjection{1.0};  // the last drawModel's: the deferred lighting pass bins with it
+    glm::dmat4 m_drawProjection{1.0}; // the last drawModel's: the deferred lighting pass bins with it
     GLuint m_lightBuffer = 0, m_lightTexture = 0;
-    GLuint m_fastSampler = 0;  // the fast tier's texture filtering (F4)
-    int m_lightCapacity = 0;  // lights the buffer holds
+    GLuint m_fastSampler = 0;          // the fast tier's texture filtering (F4)
+    std::vector<float> m_packedLights; // what the light buffer holds, to upload only what changed
+    int m_lightCapacity = 0;           // lights the buffer holds
     GLuint m_emptyVao = 0;
     GLuint m_gizmoVao = 0, m_gizmoVbo = 0;
     GLuint m_queries[4] = {};
@@ -182,4 +188,4 @@ private:
     int m_maxSamples = 0, m_maxTargetSize = 0;
 };
 
-}  // namespace lr
+} // namespace lr

@@ -5,6 +5,7 @@
 #include "scenes.h"
 
 #include "render/offscreen.h"
+#include "render/shadergen.h"
 
 #include <QTest>
 #include <glm/ext/matrix_clip_space.hpp>
@@ -24,25 +25,32 @@ RenderSettings floatSettings() {
 // Extreme rigs: ranges 0/1e-30/1e30, lights on the surface, degenerate cones, zero exponents, 1e6 intensity.
 std::vector<RigCase> extremeCases() {
     std::vector<RigCase> out;
-    const FalloffModel falloffs[] = {FalloffModel::None, FalloffModel::RangePower, FalloffModel::InversePolynomial,
-                                     FalloffModel::RangeQuadratic, FalloffModel::InverseSquare};
+    const FalloffModel falloffs[] = {FalloffModel::None, FalloffModel::RangePower,
+                                     FalloffModel::InversePolynomial, FalloffModel::RangeQuadratic,
+                                     FalloffModel::InverseSquare};
     for (double range : {0.0, 1e-30, 1e30}) {
-        out.push_back({range == 0.0 ? "range-0" : range < 1.0 ? "range-1e-30" : "range-1e30", [=] {
+        out.push_back({range == 0.0  ? "range-0"
+                       : range < 1.0 ? "range-1e-30"
+                                     : "range-1e30",
+                       [=] {
                            std::vector<Light> ls;
-                           for (FalloffModel f : falloffs) ls.push_back(point({0.3, 0.2, 1.0}, f, range));
+                           for (FalloffModel f : falloffs)
+                               ls.push_back(point({0.3, 0.2, 1.0}, f, range));
                            Light s = spot({0.0, 0.0, 1.0}, {0, 0, 0}, ConeModel::Smooth, 10.0, 20.0, 1.0);
                            s.falloff = {FalloffModel::RangePower, range, 2.0};
                            ls.push_back(s);
                            return rigOf(ls);
                        }});
     }
-    out.push_back({"light-on-surface", [=] {
-                       std::vector<Light> ls;
-                       for (FalloffModel f : falloffs) ls.push_back(point({0.0, 0.0, 0.0}, f, 2.0));
-                       ls.push_back(point({0.0, 0.0, 1.0}, FalloffModel::InverseSquare));  // on the sphere's pole
-                       ls.push_back(spot({0.0, 0.0, 0.0}, {0.0, 0.0, -1.0}, ConeModel::Smooth, 10.0, 20.0, 1.0));
-                       return rigOf(ls);
-                   }});
+    out.push_back(
+        {"light-on-surface", [=] {
+             std::vector<Light> ls;
+             for (FalloffModel f : falloffs)
+                 ls.push_back(point({0.0, 0.0, 0.0}, f, 2.0));
+             ls.push_back(point({0.0, 0.0, 1.0}, FalloffModel::InverseSquare)); // on the sphere's pole
+             ls.push_back(spot({0.0, 0.0, 0.0}, {0.0, 0.0, -1.0}, ConeModel::Smooth, 10.0, 20.0, 1.0));
+             return rigOf(ls);
+         }});
     out.push_back({"inner-equals-outer", [] {
                        return rigOf({spot({0, 0, 2}, {0, 0, 0}, ConeModel::Smooth, 25.0, 25.0, 1.0),
                                      spot({0.5, 0, 2}, {0.5, 0, 0}, ConeModel::Smooth, 0.0, 0.0, 1.0)});
@@ -67,21 +75,22 @@ std::vector<RigCase> extremeCases() {
                        r.shading.shininess = 0.0;
                        return r;
                    }});
-    out.push_back({"intensity-1e6", [] {
-                       Light a = point({0.3, 0.2, 1.0}, FalloffModel::InverseSquare);
-                       a.intensity = 1e6;
-                       Light b = point({0.0, 0.0, 0.3}, FalloffModel::InversePolynomial);  // floored denominator
-                       b.intensity = 1e6;
-                       b.falloff.constant = b.falloff.linear = b.falloff.quadratic = 0.0;
-                       Light c = directional({0, 0, -1}, DiffuseModel::HalfLambert);
-                       c.intensity = 1e6;
-                       c.ambient = glm::dvec3(1.0);
-                       Light d = rim({0, 0, -1}, 1.0);
-                       d.intensity = 1e6;
-                       Rig r = rigOf({a, b, c, d});
-                       r.shading.specular = SpecularModel::BlinnPhong;
-                       return r;
-                   }});
+    out.push_back(
+        {"intensity-1e6", [] {
+             Light a = point({0.3, 0.2, 1.0}, FalloffModel::InverseSquare);
+             a.intensity = 1e6;
+             Light b = point({0.0, 0.0, 0.3}, FalloffModel::InversePolynomial); // floored denominator
+             b.intensity = 1e6;
+             b.falloff.constant = b.falloff.linear = b.falloff.quadratic = 0.0;
+             Light c = directional({0, 0, -1}, DiffuseModel::HalfLambert);
+             c.intensity = 1e6;
+             c.ambient = glm::dvec3(1.0);
+             Light d = rim({0, 0, -1}, 1.0);
+             d.intensity = 1e6;
+             Rig r = rigOf({a, b, c, d});
+             r.shading.specular = SpecularModel::BlinnPhong;
+             return r;
+         }});
     return out;
 }
 
@@ -100,13 +109,13 @@ int maxLevelDifference(const QImage& a, const QImage& b, double* mean = nullptr)
     return worst;
 }
 
-}  // namespace
+} // namespace
 
 class TestRenderRobust : public QObject {
     Q_OBJECT
     OffscreenRenderer m_gl;
 
-private slots:
+  private slots:
     void initTestCase() {
         LR_REQUIRE_DISPLAY();
         QString error;
@@ -135,7 +144,8 @@ private slots:
         const ViewCamera cam = sphere ? sphereCamera() : planeCamera();
         FloatImage radiance;
         GBuffer g;
-        QVERIFY2(m_gl.renderRadiance(cam, QSize(80, 60), floatSettings(), &radiance, &error), qPrintable(error));
+        QVERIFY2(m_gl.renderRadiance(cam, QSize(80, 60), floatSettings(), &radiance, &error),
+                 qPrintable(error));
         QVERIFY2(m_gl.renderGBuffer(cam, QSize(80, 60), floatSettings(), &g, &error), qPrintable(error));
         const Comparison c = compareWithReference(radiance, g, rig, m_gl.renderer().sceneFrame(),
                                                   m_gl.renderer().effectiveCamera(cam).view(), 1e-3);
@@ -156,7 +166,7 @@ private slots:
         const RenderSettings s;
         const QSize size(64, 48);
         Rig rig = rigOf({point({0.5, 0.5, 1.5}, FalloffModel::RangePower, 4.0)});
-        rig.shading.specular = SpecularModel::BlinnPhong;  // a key no other test of this run uses first
+        rig.shading.specular = SpecularModel::BlinnPhong; // a key no other test of this run uses first
         m_gl.setRig(rig);
         QVERIFY(!m_gl.renderImage(cam, size, s, 1, &error).isNull());
         const int base = m_gl.renderer().stats().shaderVariantsCompiled;
@@ -204,7 +214,8 @@ private slots:
             Rig r = rigOf({});
             r.shading.specular = SpecularModel::BlinnPhong;
             for (int i = 0; i < n; ++i) {
-                Light l = point({std::cos(i * 0.1), std::sin(i * 0.1), 0.5 + (i % 7) * 0.1}, FalloffModel::RangePower, 4.0);
+                Light l = point({std::cos(i * 0.1), std::sin(i * 0.1), 0.5 + (i % 7) * 0.1},
+                                FalloffModel::RangePower, 4.0);
                 l.intensity = 1.0 / n;
                 r.lights.push_back(l);
             }
@@ -241,7 +252,8 @@ private slots:
         QString error;
         auto model = sphere ? sphereScene() : planeScene();
         QImage tex(8, 8, QImage::Format_RGBA8888);
-        for (int i = 0; i < 64; ++i) tex.setPixelColor(i % 8, i / 8, QColor::fromHsv(i * 5, 200, 230));
+        for (int i = 0; i < 64; ++i)
+            tex.setPixelColor(i % 8, i / 8, QColor::fromHsv(i * 5, 200, 230));
         model->textures.push_back({QStringLiteral("*0"), tex});
         model->materials[0].baseColorTexture = 0;
         model->materials[0].emissiveTexture = 0;
@@ -279,10 +291,12 @@ private slots:
         const QImage broken = m_gl.renderImage(planeCamera(), QSize(32, 32), RenderSettings(), 1, &error);
         QVERIFY(broken.isNull());
         QVERIFY2(error.contains(QLatin1String("fragment shader compile")), qPrintable(error));
-        QVERIFY2(error.contains(QLatin1String("mesh.frag")) && error.contains(QLatin1String("error"), Qt::CaseInsensitive),
+        QVERIFY2(error.contains(QLatin1String("mesh.frag")) &&
+                     error.contains(QLatin1String("error"), Qt::CaseInsensitive),
                  qPrintable(error));
         m_gl.renderer().setShaderSourceOverride(QStringLiteral("mesh.frag"), {});
-        QVERIFY2(!m_gl.renderImage(planeCamera(), QSize(32, 32), RenderSettings(), 1, &error).isNull(), qPrintable(error));
+        QVERIFY2(!m_gl.renderImage(planeCamera(), QSize(32, 32), RenderSettings(), 1, &error).isNull(),
+                 qPrintable(error));
     }
 
     void tilesMatchOneTarget() {
@@ -308,7 +322,8 @@ private slots:
         const QImage super = m_gl.renderImage(sphereCamera(), size, s, 3, &error);
         QVERIFY2(maxLevelDifference(super, tiledSuper, &mean) <= 2, "supersampled tiles agree");
         maxLevelDifference(super, whole, &mean);
-        QVERIFY2(mean < 1.0, qPrintable(QStringLiteral("supersampling changes edges only (mean %1)").arg(mean)));
+        QVERIFY2(mean < 1.0,
+                 qPrintable(QStringLiteral("supersampling changes edges only (mean %1)").arg(mean)));
     }
 
     void transparentBackgroundAndGizmos() {
@@ -335,13 +350,61 @@ private slots:
         // The red light's icon sits where the camera projects it.
         const ViewCamera cam = m_gl.renderer().effectiveCamera(sphereCamera());
         const glm::dvec4 clip = cam.projection(160.0 / 120.0) * cam.view() * glm::dvec4(1.2, 0.0, 1.2, 1.0);
-        const int px = int((clip.x / clip.w * 0.5 + 0.5) * 160), py = int((0.5 - clip.y / clip.w * 0.5) * 120);
+        const int px = int((clip.x / clip.w * 0.5 + 0.5) * 160),
+                  py = int((0.5 - clip.y / clip.w * 0.5) * 120);
         const QColor c = withGizmos.pixelColor(px, py);
         QVERIFY2(c.red() > 200 && c.green() < 60 && c.blue() < 60,
                  qPrintable(QStringLiteral("icon pixel (%1,%2) is %3").arg(px).arg(py).arg(c.name())));
         s.showGizmos = s.showGrid = false;
         const QImage without = m_gl.renderImage(sphereCamera(), size, s, 1, &error);
         QVERIFY(maxLevelDifference(withGizmos, without) > 100);
+    }
+
+    // Dragging a light (a value change) compiles nothing and uploads only that light's texels, and the
+    // partial upload draws exactly what a fresh renderer draws; a camera move re-uploads (nearly) every light
+    // (lights live in view space).
+    void editingALightUploadsOnlyThatLight() {
+        QString error;
+        QVERIFY(m_gl.setModel(sphereScene(), &error));
+        Rig rig;
+        for (int i = 0; i < 64; ++i) {
+            const double a = i * 0.0981747704; // 2π / 64
+            rig.lights.push_back(
+                point({2.0 * std::cos(a), 1.0, 2.0 * std::sin(a)}, FalloffModel::InverseSquare));
+        }
+        RenderSettings s;
+        s.msaaSamples = 0;
+        const ViewCamera cam = sphereCamera();
+        m_gl.setRig(rig);
+        QVERIFY(!m_gl.renderImage(cam, QSize(96, 72), s, 1, &error).isNull());
+        const RenderStats before = m_gl.renderer().stats();
+        QCOMPARE(before.lightBytesUploaded, qint64(64 * render::kLightTexels * 16));
+
+        rig.lights[17].position += glm::dvec3(0.25, -0.5, 0.1);
+        rig.lights[17].color = {0.2, 0.4, 1.0};
+        m_gl.setRig(rig);
+        const QImage edited = m_gl.renderImage(cam, QSize(96, 72), s, 1, &error);
+        QVERIFY(!edited.isNull());
+        const RenderStats after = m_gl.renderer().stats();
+        QVERIFY2(after.lightBytesUploaded > 0 && after.lightBytesUploaded <= qint64(render::kLightTexels * 16),
+                 qPrintable(QString::number(after.lightBytesUploaded)));
+        QCOMPARE(after.shaderVariantsCompiled, before.shaderVariantsCompiled);
+
+        OffscreenRenderer fresh;
+        QVERIFY2(fresh.initialize(&error), qPrintable(error));
+        QVERIFY(fresh.setModel(sphereScene(), &error));
+        fresh.setRig(rig);
+        const QImage expected = fresh.renderImage(cam, QSize(96, 72), s, 1, &error);
+        QVERIFY(!expected.isNull());
+        QVERIFY(m_gl.renderer().isInitialized()); // renderImage makes its own context current again
+        QCOMPARE(edited.convertToFormat(QImage::Format_RGBA8888),
+                 expected.convertToFormat(QImage::Format_RGBA8888));
+
+        ViewCamera moved = cam;
+        moved.eye.x += 0.3;
+        QVERIFY(!m_gl.renderImage(moved, QSize(96, 72), s, 1, &error).isNull());
+        // (the unchanged words at either end, e.g. the last light's unused texel, stay)
+        QVERIFY(m_gl.renderer().stats().lightBytesUploaded > qint64(63 * render::kLightTexels * 16));
     }
 };
 
