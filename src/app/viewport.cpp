@@ -50,6 +50,18 @@ Viewport::Viewport(Document* document, Scene* scene, ViewSettings* settings, QWi
     connect(m_doc, &Document::selectionChanged, this, qOverload<>(&QWidget::update));
     connect(m_settings, &ViewSettings::changed, this, qOverload<>(&QWidget::update));
     connect(m_scene, &Scene::modelChanged, this, &Viewport::onModelChanged);
+    m_settle = new QTimer(this);
+    m_settle->setSingleShot(true);
+    m_settle->setInterval(250);
+    connect(m_settle, &QTimer::timeout, this, [this] {
+        if (m_nav == Navigation::None) setNavigating(false);
+    });
+}
+
+void Viewport::setNavigating(bool on) {
+    if (m_navigating == on) return;
+    m_navigating = on;
+    if (!on) update(); // the full-quality frame
 }
 
 Viewport::~Viewport() {
@@ -111,7 +123,8 @@ RenderSettings Viewport::renderSettings(bool gizmos) const {
     s.quality = o.quality;
     s.showGizmos = gizmos && o.gizmos;
     s.showGrid = gizmos && o.grid;
-    s.msaaSamples = o.quality == Quality::Fast ? 0 : 4;
+    s.msaaSamples = o.quality == Quality::Fast || m_navigating ? 0 : 4;
+    s.interactive = m_navigating;
     for (int row : m_doc->selectedRows())
         s.selectedLights.push_back(row);
     return s;
@@ -327,15 +340,18 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
         return;
     }
     case Navigation::Gizmo:
+        if (m_moved) setNavigating(true);
         m_interaction->move(projector(), pos, event->modifiers());
         break;
     case Navigation::Orbit:
         if (!m_moved) return;
+        setNavigating(true);
         m_camera.orbit(-delta.x() * kOrbitDegreesPerPixel, delta.y() * kOrbitDegreesPerPixel);
         update();
         break;
     case Navigation::Pan:
         if (!m_moved) return;
+        setNavigating(true);
         m_camera.pan(-delta.x() / h, delta.y() / h);
         update();
         break;
@@ -345,6 +361,7 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
 
 void Viewport::mouseReleaseEvent(QMouseEvent* event) {
     const Navigation nav = std::exchange(m_nav, Navigation::None);
+    setNavigating(false);
     if (nav == Navigation::Gizmo) {
         m_interaction->release();
     } else if (nav == Navigation::Pan && m_shiftPress && !m_moved) {
@@ -362,6 +379,8 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event) {
 void Viewport::wheelEvent(QWheelEvent* event) {
     const double notches = event->angleDelta().y() / 120.0;
     if (notches != 0.0) {
+        setNavigating(true);
+        m_settle->start();
         m_camera.dolly(std::pow(kWheelStep, notches));
         update();
     }
@@ -372,6 +391,7 @@ void Viewport::keyPressEvent(QKeyEvent* event) {
     if (event->key() == Qt::Key_Escape && m_nav == Navigation::Gizmo) {
         m_interaction->cancel(); // takes back what the drag did so far (one merged step)
         m_nav = Navigation::None;
+        setNavigating(false);
         return;
     }
     QOpenGLWidget::keyPressEvent(event);

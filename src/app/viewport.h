@@ -10,6 +10,7 @@
 #include "render/camera.h"
 
 #include <QOpenGLWidget>
+#include <QTimer>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -98,6 +99,11 @@ class Viewport : public QOpenGLWidget {
     Navigation m_nav = Navigation::None;
     QPointF m_pressPos, m_lastPos;
     bool m_moved = false;
+    // Navigating or dragging (and briefly after each wheel step): frames take the interactive settings
+    // (no MSAA, dense models as their proxy) and the full-quality frame follows when the motion stops.
+    bool m_navigating = false;
+    QTimer* m_settle = nullptr;
+    void setNavigating(bool on);
     bool m_shiftPress = false;
     int m_framesRendered = 0;
     QString m_error;

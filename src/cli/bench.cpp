@@ -25,7 +25,7 @@ namespace {
 
 const char* kUsage = "lightrig bench [MODEL...] [--rig RIG] [--camera-index N | --view NAME] [--lights "
                      "N,...] [--light-type T,...] "
-                     "[--size WxH] [--frames N] [--msaa N] [--quality LIST] [--json OUT.json] [--chart OUT.png]";
+                     "[--size WxH] [--frames N] [--msaa N] [--interactive] [--quality LIST] [--json OUT.json] [--chart OUT.png]";
 
 const char* kBundledModel = ":/resources/models/suzanne/Suzanne.gltf";
 
@@ -104,10 +104,14 @@ int runBench(const QStringList& args) {
         QStringLiteral("MSAA samples for every tier's timed frames, 0..16 (default: 4 for exact and "
                        "balanced, none for fast; 0 matches peers that render without antialiasing)."),
         QStringLiteral("N"));
+    const QCommandLineOption interactive(
+        QStringLiteral("interactive"),
+        QStringLiteral("Time what the editor's viewport draws while you navigate: dense models (300k+ "
+                       "triangles) as their simplified interaction proxy."));
     const SceneOptionSet scene;
     parser.addOption(help);
     scene.addTo(parser);
-    parser.addOptions({lights, lightType, lightRange, frames, warmup, msaa, json, chart, noErrors, noUber});
+    parser.addOptions({lights, lightType, lightRange, frames, warmup, msaa, interactive, json, chart, noErrors, noUber});
     parser.addPositionalArgument(QStringLiteral("MODEL"),
                                  QStringLiteral("Model files (default: the standard suite)."),
                                  QStringLiteral("[MODEL...]"));
@@ -133,6 +137,7 @@ int runBench(const QStringList& args) {
     options.toneMap = sceneOptions->toneMap;
     options.errors = !parser.isSet(noErrors);
     options.uberShader = !parser.isSet(noUber);
+    options.interactive = parser.isSet(interactive);
     auto readInt = [&](const QCommandLineOption& o, int lo, int hi, int* value) {
         if (!parser.isSet(o)) return true;
         bool ok = false;

@@ -152,6 +152,7 @@ QJsonObject benchJson(const BenchReport& report) {
             {QStringLiteral("load_ms"), round3(r.loadMs)},
             {QStringLiteral("first_draw_ms"), round3(r.firstDrawMs)},
             {QStringLiteral("upload_ms"), round3(r.uploadMs)},
+            {QStringLiteral("triangles_drawn"), r.trianglesDrawn},
             {QStringLiteral("variants"), r.variants},
             {QStringLiteral("triangles"), double(r.triangles)}};
         const ErrorFigures& e = r.errors;

@@ -2,6 +2,7 @@
 
 #include <QImage>
 #include <QtConcurrent/QtConcurrentMap>
+#include <QtConcurrent/QtConcurrentRun>
 #include <algorithm>
 #include <cstddef>
 
@@ -84,16 +85,7 @@ bool GpuModel::upload(QOpenGLFunctions_3_3_Core* gl, std::shared_ptr<const Model
         gl->glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, d.ibo);
         gl->glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(size_t(d.indexCount) * sizeof(std::uint32_t)),
                          mesh.indices.data(), GL_STATIC_DRAW);
-        const auto attrib = [&](GLuint loc, GLint n, std::size_t offset) {
-            gl->glEnableVertexAttribArray(loc);
-            gl->glVertexAttribPointer(loc, n, GL_FLOAT, GL_FALSE, GLsizei(sizeof(Vertex)),
-                                      reinterpret_cast<const void*>(offset));
-        };
-        attrib(0, 3, offsetof(Vertex, position));
-        attrib(1, 3, offsetof(Vertex, normal));
-        attrib(2, 2, offsetof(Vertex, uv));
-        attrib(3, 4, offsetof(Vertex, tangent));
-        attrib(4, 4, offsetof(Vertex, color));
+        setAttributes(gl);
         gl->glBindVertexArray(0);
         if (d.material >= 0) {
             const Material& m = m_model->materials[size_t(d.material)];
@@ -112,6 +104,44 @@ bool GpuModel::upload(QOpenGLFunctions_3_3_Core* gl, std::shared_ptr<const Model
             return false;
         }
     }
+    if (std::int64_t(m_model->triangleCount()) >= kLodMinTriangles)
+        m_proxies = QtConcurrent::run([model = m_model] { return buildInteractionLods(*model); });
+    return true;
+}
+
+void GpuModel::setAttributes(QOpenGLFunctions_3_3_Core* gl) {
+    const auto attrib = [&](GLuint loc, GLint n, std::size_t offset) {
+        gl->glEnableVertexAttribArray(loc);
+        gl->glVertexAttribPointer(loc, n, GL_FLOAT, GL_FALSE, GLsizei(sizeof(Vertex)),
+                                  reinterpret_cast<const void*>(offset));
+    };
+    attrib(0, 3, offsetof(Vertex, position));
+    attrib(1, 3, offsetof(Vertex, normal));
+    attrib(2, 2, offsetof(Vertex, uv));
+    attrib(3, 4, offsetof(Vertex, tangent));
+    attrib(4, 4, offsetof(Vertex, color));
+}
+
+bool GpuModel::updateProxies(QOpenGLFunctions_3_3_Core* gl, bool wait) {
+    if (m_proxiesUploaded) return true;
+    if (!m_proxies.isValid() || (!wait && !m_proxies.isFinished())) return false;
+    const std::vector<MeshLod> lods = m_proxies.result(); // waits
+    m_proxies = {};
+    for (const MeshLod& lod : lods) {
+        auto d = std::find_if(m_draws.begin(), m_draws.end(), [&](const GpuDraw& x) { return x.mesh == lod.mesh; });
+        if (d == m_draws.end()) continue;
+        gl->glGenVertexArrays(1, &d->lodVao);
+        gl->glBindVertexArray(d->lodVao);
+        gl->glBindBuffer(GL_ARRAY_BUFFER, d->vbo);
+        gl->glGenBuffers(1, &d->lodIbo);
+        gl->glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, d->lodIbo);
+        gl->glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(lod.indices.size() * sizeof(std::uint32_t)),
+                         lod.indices.data(), GL_STATIC_DRAW);
+        setAttributes(gl);
+        gl->glBindVertexArray(0);
+        d->lodIndexCount = GLsizei(lod.indices.size());
+    }
+    m_proxiesUploaded = true;
     return true;
 }
 
@@ -120,8 +150,12 @@ void GpuModel::release(QOpenGLFunctions_3_3_Core* gl) {
         gl->glDeleteVertexArrays(1, &d.vao);
         gl->glDeleteBuffers(1, &d.vbo);
         gl->glDeleteBuffers(1, &d.ibo);
+        gl->glDeleteVertexArrays(1, &d.lodVao);
+        gl->glDeleteBuffers(1, &d.lodIbo);
     }
     m_draws.clear();
+    m_proxies = {}; // a build still running finishes on its own copy of the model
+    m_proxiesUploaded = false;
     for (auto& [key, name] : m_textures)
         gl->glDeleteTextures(1, &name);
     m_textures.clear();

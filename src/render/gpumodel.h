@@ -3,10 +3,12 @@
 // the owning Renderer.
 #pragma once
 
+#include "lod.h"
 #include "mipchain.h"
 #include "model/model.h"
 #include "shadergen.h"
 
+#include <QFuture>
 #include <QOpenGLFunctions_3_3_Core>
 #include <map>
 #include <memory>
@@ -21,6 +23,8 @@ struct GpuDraw {
     int material = -1; // valid index into Model::materials, or -1 for the default material
     MaterialFeatures features;
     GLuint baseColorTexture = 0, normalTexture = 0, emissiveTexture = 0;
+    GLuint lodVao = 0, lodIbo = 0; // the interaction proxy (lod.h) over the same vertices; 0: none
+    GLsizei lodIndexCount = 0;
 };
 
 class GpuModel {
@@ -32,15 +36,22 @@ class GpuModel {
     const Model* model() const { return m_model.get(); }
     const std::vector<GpuDraw>& draws() const { return m_draws; }
 
+    // Interaction proxies of a dense model (lod.h), built on a worker thread after upload(): uploads them
+    // once they are ready (with wait, blocks until then). True when the draws have them now.
+    bool updateProxies(QOpenGLFunctions_3_3_Core* gl, bool wait = false);
+
   private:
     using TextureKey = std::pair<int, bool>; // (texture index, sRGB)
     void uploadTextures(QOpenGLFunctions_3_3_Core* gl);
     static GLuint texture(QOpenGLFunctions_3_3_Core* gl, const MipChain& chain, bool srgb);
+    static void setAttributes(QOpenGLFunctions_3_3_Core* gl); // of the bound vertex array
     GLuint textureName(int index, bool srgb) const;
 
     std::shared_ptr<const Model> m_model;
     std::vector<GpuDraw> m_draws;
     std::map<std::pair<int, bool>, GLuint> m_textures; // (texture index, sRGB) -> GL name
+    QFuture<std::vector<MeshLod>> m_proxies;
+    bool m_proxiesUploaded = false;
 };
 
 } // namespace lr::render

@@ -47,6 +47,7 @@ struct BenchOptions {
     bool errors = true;     // compute the reference and the error figures
     bool uberShader = true; // one more run per scene: the exact tier with every light model compiled in
     int msaaSamples = -1;   // timed runs: -1 each tier's own (tierMsaaSamples), else this for every tier
+    bool interactive = false; // time what the viewport draws while navigating (interaction proxies, lod.h)
 };
 
 // MSAA samples a tier renders with (exact, balanced: 4; fast: none).
@@ -60,6 +61,7 @@ struct BenchResult {
     int msaaSamples = 0;
     int lightsInRig = 0, lightsUploaded = 0;
     qint64 triangles = 0;
+    qint64 trianglesDrawn = 0; // per frame: fewer than triangles when an interaction proxy was drawn
     int variants = 0; // shader variants compiled for this scene and tier (fresh renderer)
     double msMedian = 0.0, msMin = 0.0, msMax = 0.0; // wall time per frame with glFinish
     double gpuMsMedian = -1.0;                       // GL_TIME_ELAPSED; < 0: no timer results

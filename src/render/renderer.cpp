@@ -167,6 +167,10 @@ const Model* Renderer::model() const {
     return m_model->model();
 }
 
+bool Renderer::waitForInteractionProxies() {
+    return m_initialized && m_model->updateProxies(this, true);
+}
+
 void Renderer::setRig(const Rig& rig) {
     m_rig = rig;
     m_lightsDirty = true;
@@ -295,6 +299,7 @@ bool Renderer::drawModel(const glm::dmat4& view, const glm::dmat4& projection, c
                          int output) {
     const Model* model = m_model->model();
     m_stats.drawCalls = 0;
+    m_stats.trianglesDrawn = 0;
     if (!model || m_model->draws().empty()) return true;
     const glm::dmat4 modelView = view * glm::translate(glm::dmat4(1.0), model->origin);
     const glm::mat4 mv(modelView), proj(projection);
@@ -306,6 +311,7 @@ bool Renderer::drawModel(const glm::dmat4& view, const glm::dmat4& projection, c
     const bool gpass = ShaderOutput(output) == ShaderOutput::GBuffer;
     // Fast lights the vertices, each with every light: clusters (per fragment) do not apply.
     const bool clustered = !gpass && settings.quality != Quality::Fast && clusterLights(projection, settings);
+    const bool useProxies = settings.interactive && m_model->updateProxies(this);
     const RigFeatures shaded = settings.forceAllFeatures ? allRigFeatures(rig) : rig;
     const float exposureScale = float(std::exp2(std::clamp(settings.exposureEV, -60.0, 60.0)));
 
@@ -378,8 +384,11 @@ bool Renderer::drawModel(const glm::dmat4& view, const glm::dmat4& projection, c
             glEnable(GL_CULL_FACE);
         else
             glDisable(GL_CULL_FACE);
-        glBindVertexArray(d->vao);
-        glDrawElements(GL_TRIANGLES, d->indexCount, GL_UNSIGNED_INT, nullptr);
+        const bool proxy = useProxies && d->lodVao;
+        glBindVertexArray(proxy ? d->lodVao : d->vao);
+        const GLsizei indices = proxy ? d->lodIndexCount : d->indexCount;
+        glDrawElements(GL_TRIANGLES, indices, GL_UNSIGNED_INT, nullptr);
+        m_stats.trianglesDrawn += indices / 3;
         ++m_stats.drawCalls;
     }
     glBindVertexArray(0);

@@ -76,6 +76,9 @@ struct RenderSettings {
     // bounded range), 0 never, 1 always. Same pixels either way: it only skips exact zeros.
     int clusteredShading = -1;
     ShadingPath shadingPath = ShadingPath::Auto; // Deferred ignores msaaSamples
+    // The view or a light is being dragged: dense models draw their interaction proxy (lod.h) once it is
+    // built; the full mesh otherwise.
+    bool interactive = false;
     bool operator==(const RenderSettings&) const = default;
 };
 
@@ -93,6 +96,7 @@ struct RenderStats {
     qint64 clusterLightRefs = 0;   // its light-index list: global lights + per-cluster entries
     double lastCpuMs = 0.0;        // CPU time spent in the last render() call (GL submission, not completion)
     qint64 lightBytesUploaded = 0; // by the last light upload: only the texels that changed
+    qint64 trianglesDrawn = 0;     // in the last frame (interaction proxies count their own)
 };
 
 class Renderer : protected QOpenGLFunctions_3_3_Core {
@@ -110,6 +114,9 @@ class Renderer : protected QOpenGLFunctions_3_3_Core {
     // Uploads the model (nullptr: no model). False (with lastError) if the upload failed; nothing is drawn
     // then.
     bool setModel(std::shared_ptr<const Model> model);
+    // Blocks until the model's interaction proxies (lod.h) are built and uploaded; false when it has none
+    // (small models). The viewport never waits: it draws the full mesh until they are ready.
+    bool waitForInteractionProxies();
     const Model* model() const;
     void setRig(const Rig& rig); // cheap: no GL work here; light data is refreshed on the next frame
     const Rig& rig() const { return m_rig; }
