@@ -74,10 +74,32 @@ void setApplicationIdentity() {
     QCoreApplication::setOrganizationDomain(QStringLiteral("lightrig.example"));
     QCoreApplication::setApplicationName(QStringLiteral("lightrig"));
     QCoreApplication::setApplicationVersion(QStringLiteral(LIGHTRIG_VERSION));
-    QGuiApplication::setApplicationDisplayName(QStringLiteral("LightRig"));
+    if (qobject_cast<QGuiApplication*>(QCoreApplication::instance()))
+        QGuiApplication::setApplicationDisplayName(QStringLiteral("LightRig"));
 }
 
 int runEditor(int argc, char** argv) {
+    {
+        // The command line first, without a GUI: --help, --version and usage errors work without a display,
+        // and without one the editor says so instead of aborting inside Qt's platform plugin.
+        QCoreApplication cli(argc, argv);
+        setApplicationIdentity();
+        const CommandLineResult cl = parseEditorCommandLine(QCoreApplication::arguments());
+        if (!cl.options) {
+            std::fputs(qPrintable(cl.message), cl.exitCode == 0 ? stdout : stderr);
+            return cl.exitCode;
+        }
+        const bool display = qEnvironmentVariableIsSet("DISPLAY") ||
+                             qEnvironmentVariableIsSet("WAYLAND_DISPLAY") ||
+                             qEnvironmentVariableIsSet("QT_QPA_PLATFORM");
+        if (!display) {
+            std::fputs(
+                "lightrig: the editor needs a display (X11 or Wayland); without one, run it under "
+                "xvfb-run -a, or use a subcommand (render, validate, format, bench: lightrig --help)\n",
+                stderr);
+            return 1;
+        }
+    }
     Viewport::setDefaultSurfaceFormat(); // before the QApplication: OpenGL 3.3 core for every context
     QApplication app(argc, argv);
     setApplicationIdentity();

@@ -15,8 +15,13 @@ struct Run {
     QStringList lines() const { return out.split(QLatin1Char('\n'), Qt::SkipEmptyParts); }
 };
 
-Run lightrig(const QStringList& args) {
+Run lightrig(const QStringList& args, bool withDisplay = true) {
     QProcess p;
+    if (!withDisplay) {
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        for (const char* name : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"}) env.remove(QLatin1String(name));
+        p.setProcessEnvironment(env);
+    }
     p.setProgram(QStringLiteral(LIGHTRIG_EXECUTABLE));
     p.setArguments(args);
     p.start();
@@ -44,6 +49,7 @@ private slots:
     void validateGood();
     void validateBad();
     void validateUsage();
+    void editorWithoutADisplay();
     void validateEmbeddedPreset();
     void formatCheck();
     void formatRewrites();
@@ -92,6 +98,18 @@ void TestRigCli::validateUsage() {
     QVERIFY2(r.code == 0 && r.out.contains(QStringLiteral("--check")), qPrintable(show(r)));
     r = lightrig({QStringLiteral("format"), QStringLiteral("--check")});
     QVERIFY2(r.code == 2, qPrintable(show(r)));
+}
+
+// The editor's own options work without a display, and the editor itself says it needs one (no abort).
+void TestRigCli::editorWithoutADisplay() {
+    Run r = lightrig({QStringLiteral("--version")}, false);
+    QVERIFY2(r.code == 0 && r.out.startsWith(QStringLiteral("lightrig ")), qPrintable(show(r)));
+    r = lightrig({QStringLiteral("--help")}, false);
+    QVERIFY2(r.code == 0 && r.out.contains(QStringLiteral("--rig")), qPrintable(show(r)));
+    r = lightrig({QStringLiteral("--frobnicate")}, false);
+    QVERIFY2(r.code == 2 && r.err.contains(QStringLiteral("frobnicate")), qPrintable(show(r)));
+    r = lightrig({}, false);
+    QVERIFY2(r.code == 1 && r.err.contains(QStringLiteral("needs a display")), qPrintable(show(r)));
 }
 
 // The presets are compiled into the executable too: Qt resource paths are files to it.
