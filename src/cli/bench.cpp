@@ -10,6 +10,7 @@
 
 #include "core/proceduralrig.h"
 #include "render/benchreport.h"
+#include "render/benchscaling.h"
 #include "render/qualitybench.h"
 
 #include <QCommandLineParser>
@@ -25,7 +26,7 @@ namespace {
 
 const char* kUsage = "lightrig bench [MODEL...] [--rig RIG] [--camera-index N | --view NAME] [--lights "
                      "N,...] [--light-type T,...] "
-                     "[--size WxH] [--frames N] [--msaa N] [--interactive] [--quality LIST] [--json OUT.json] [--chart OUT.png]";
+                     "[--size WxH] [--frames N] [--msaa N] [--interactive] [--quality LIST] [--json OUT.json] [--chart OUT.png] [--scaling-chart OUT.png]";
 
 const char* kBundledModel = ":/resources/models/suzanne/Suzanne.gltf";
 
@@ -94,6 +95,11 @@ int runBench(const QStringList& args) {
     const QCommandLineOption chart(QStringLiteral("chart"),
                                    QStringLiteral("Write a PNG chart of time against error."),
                                    QStringLiteral("OUT.png"));
+    const QCommandLineOption scalingChart(
+        QStringLiteral("scaling-chart"),
+        QStringLiteral("Write a PNG chart of ms/frame against the number of lights (or of triangles, when "
+                       "the scenes differ only in that), one line per tier."),
+        QStringLiteral("OUT.png"));
     const QCommandLineOption noErrors(
         QStringLiteral("no-errors"),
         QStringLiteral("Skip the double-precision reference and the error figures."));
@@ -111,7 +117,8 @@ int runBench(const QStringList& args) {
     const SceneOptionSet scene;
     parser.addOption(help);
     scene.addTo(parser);
-    parser.addOptions({lights, lightType, lightRange, frames, warmup, msaa, interactive, json, chart, noErrors, noUber});
+    parser.addOptions({lights, lightType, lightRange, frames, warmup, msaa, interactive, json, chart, scalingChart,
+                       noErrors, noUber});
     parser.addPositionalArgument(QStringLiteral("MODEL"),
                                  QStringLiteral("Model files (default: the standard suite)."),
                                  QStringLiteral("[MODEL...]"));
@@ -189,6 +196,8 @@ int runBench(const QStringList& args) {
     };
     if (parser.isSet(json) && !checkOutputPath(parser.value(json), &message)) return failed(message);
     if (parser.isSet(chart) && !checkOutputPath(parser.value(chart), &message)) return failed(message);
+    if (parser.isSet(scalingChart) && !checkOutputPath(parser.value(scalingChart), &message))
+        return failed(message);
     if (!displayAvailable())
         return failed(QStringLiteral("lightrig bench needs an X display; run it under xvfb-run -a"));
 
@@ -248,6 +257,9 @@ int runBench(const QStringList& args) {
                    &message))
         return failed(message);
     if (parser.isSet(chart) && !writeImageAtomically(benchChart(report), parser.value(chart), "png", &message))
+        return failed(message);
+    if (parser.isSet(scalingChart) &&
+        !writeImageAtomically(benchScalingChart(report), parser.value(scalingChart), "png", &message))
         return failed(message);
     return Ok;
 }

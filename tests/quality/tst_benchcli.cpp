@@ -97,12 +97,14 @@ class TestBenchCli : public QObject {
     void smallSuite() {
         if (!haveDisplay()) QSKIP("needs an X display with OpenGL: run under xvfb-run -a");
         const QString json = m_dir.filePath(QStringLiteral("bench.json")),
-                      chart = m_dir.filePath(QStringLiteral("chart.png"));
+                      chart = m_dir.filePath(QStringLiteral("chart.png")),
+                      scaling = m_dir.filePath(QStringLiteral("scaling.png"));
         const Run r =
             lightrig({QStringLiteral("--lights"), QStringLiteral("1,4"), QStringLiteral("--light-type"),
                       QStringLiteral("point,spot"), QStringLiteral("--size"), QStringLiteral("64x48"),
                       QStringLiteral("--frames"), QStringLiteral("2"), QStringLiteral("--warmup"),
-                      QStringLiteral("0"), QStringLiteral("--json"), json, QStringLiteral("--chart"), chart});
+                      QStringLiteral("0"), QStringLiteral("--json"), json, QStringLiteral("--chart"), chart,
+                      QStringLiteral("--scaling-chart"), scaling});
         QVERIFY2(r.code == 0, qPrintable(show(r)));
         QVERIFY2(r.out.contains(QStringLiteral("ms med")) && r.out.contains(QStringLiteral("über-shader")),
                  qPrintable(show(r)));
@@ -139,6 +141,18 @@ class TestBenchCli : public QObject {
         const QImage image(chart);
         QVERIFY(!image.isNull());
         QCOMPARE(image.size(), QSize(1000, 640));
+        const QImage curve(scaling);
+        QVERIFY(!curve.isNull());
+        QCOMPARE(curve.size(), QSize(1000, 640));
+        // A line per tier in the tier's colour (exact blue, fast green): the curve was drawn, not just axes.
+        int blue = 0, green = 0;
+        for (int y = 0; y < curve.height(); ++y)
+            for (int x = 0; x < curve.width(); ++x) {
+                const QRgb c = curve.pixel(x, y);
+                blue += c == qRgb(40, 100, 200);
+                green += c == qRgb(40, 160, 70);
+            }
+        QVERIFY2(blue > 50 && green > 50, qPrintable(QStringLiteral("%1 blue, %2 green").arg(blue).arg(green)));
     }
 
     void modelWithItsRigAndOneTier() {
