@@ -20,7 +20,7 @@
 namespace lr::render {
 
 struct ClusterGrid {
-    int tilesX = 16, tilesY = 9, slices = 24;
+    int tilesX = 32, tilesY = 18, slices = 24;
     int count() const { return tilesX * tilesY * slices; }
     bool operator==(const ClusterGrid&) const = default;
 };
