@@ -105,6 +105,7 @@ bool measure(const BenchScene& scene, const BenchOptions& o, Quality q, bool ube
     const RenderStats& stats = gl.renderer().stats();
     r->variants = stats.shaderVariantsCached; // mesh variants (the fixed passes are not counted)
     r->triangles = stats.triangles;
+    if (stats.deferred) r->msaaSamples = 0; // the deferred path never multisamples (renderer.h)
     r->trianglesDrawn = stats.trianglesDrawn;
     r->lightsInRig = stats.lightsInRig;
     r->lightsUploaded = stats.lightsUploaded;

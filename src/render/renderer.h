@@ -46,9 +46,12 @@ struct Targets;
 // whose cost is whole 4x4 blocks per small triangle, but the G-pass costs about as much as a forward
 // pass without lights). Both give the same radiance. Auto: deferred when msaaSamples <= 1 and at least
 // kDeferredMinLights lights are uploaded (measured crossover on llvmpipe, DamagedHelmet at 1280x720:
-// forward ~17 + 3.3 n ms CPU, deferred ~30 + 1.1 n), else forward.
+// forward ~17 + 3.3 n ms CPU, deferred ~30 + 1.1 n), else forward. From kDeferredMsaaMaxLights lights on,
+// Auto shades deferred even when MSAA was asked for, without it: forward with MSAA 4 costs ~2.6x forward
+// (64 lights: ~0.6 s a frame on llvmpipe against ~0.1 s deferred), which would freeze the editor.
 enum class ShadingPath { Auto, Forward, Deferred };
 constexpr int kDeferredMinLights = 6;
+constexpr int kDeferredMsaaMaxLights = 64;
 
 struct RenderSettings {
     double exposureEV = 0.0;
