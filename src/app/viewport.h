@@ -44,6 +44,8 @@ class Viewport : public QOpenGLWidget {
     std::optional<QPointF> lightScreenPosition(int row) const;
     GizmoInteraction* interaction() const { return m_interaction.get(); }
     bool hasRenderedFrame() const { return m_framesRendered > 0; }
+    // Orbiting, panning, dollying or dragging a light right now: frames take the interactive settings.
+    bool isNavigating() const { return m_navigating; }
     QString lastError() const { return m_error; }
 
     // Offscreen renders of the current model with the current camera (same pixels as the viewport).

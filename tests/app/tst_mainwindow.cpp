@@ -262,9 +262,12 @@ class TestMainWindow : public QObject {
         const glm::dvec3 before = doc()->light(0).position;
         const QPoint p0 = at->toPoint();
         QTest::mousePress(viewport(), Qt::LeftButton, Qt::NoModifier, p0);
+        QVERIFY(!viewport()->isNavigating()); // a press alone is not a drag
         for (int i = 1; i <= 8; ++i)
             dragTo(viewport(), p0 + QPoint(5 * i, 0));
+        QVERIFY(viewport()->isNavigating()); // interactive frames while dragging (proxies, no MSAA)
         QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::NoModifier, p0 + QPoint(40, 0));
+        QVERIFY(!viewport()->isNavigating()); // the full-quality frame follows the release
         QCOMPARE(doc()->undoStack()->count(), steps + 1);
         const glm::dvec3 after = doc()->light(0).position;
         QVERIFY(glm::length(after - before) > 1e-6);
@@ -308,6 +311,20 @@ class TestMainWindow : public QObject {
         // A click on empty space clears the selection.
         QTest::mouseClick(viewport(), Qt::LeftButton, Qt::NoModifier, QPoint(3, 3));
         QVERIFY(doc()->selectedRows().isEmpty());
+    }
+
+    // A wheel step dollies with interactive frames, and the full-quality frame follows once the wheel rests.
+    void viewport_wheelDolliesThenSettles() {
+        const ViewCamera before = viewport()->camera();
+        const QPointF at(viewport()->width() / 2.0, viewport()->height() / 2.0);
+        QWheelEvent wheel(at, viewport()->mapToGlobal(at), QPoint(), QPoint(0, 120), Qt::NoButton, Qt::NoModifier,
+                          Qt::NoScrollPhase, false);
+        QApplication::sendEvent(viewport(), &wheel);
+        QVERIFY(viewport()->isNavigating());
+        QVERIFY(glm::length(viewport()->camera().eye - viewport()->camera().target) <
+                glm::length(before.eye - before.target));
+        QTRY_VERIFY_WITH_TIMEOUT(!viewport()->isNavigating(), 3000);
+        viewport()->setCamera(before);
     }
 
     void viewport_coneEdgeDragChangesTheOuterAngle() {
