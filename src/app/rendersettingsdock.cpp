@@ -73,6 +73,10 @@ RenderSettingsDock::RenderSettingsDock(Document* document, ViewSettings* setting
     connect(m_ui->ambient, &ColorButton::colorPicked, this, [this](const glm::dvec3& c) {
         setRigValue(int(RigProperty::Ambient), QVariant::fromValue(c), false);
     });
+    connect(m_ui->rigName, &QLineEdit::editingFinished, this, [this] {
+        if (m_ui->rigName->text() != m_doc->rig().name)
+            setRigValue(int(RigProperty::Name), m_ui->rigName->text(), false);
+    });
     connect(m_doc, &Document::rigChanged, this, [this](const RigChange& change) {
         if (change.kind == RigChange::RigValues || change.kind == RigChange::Reset) loadRig();
     });
@@ -99,6 +103,12 @@ void RenderSettingsDock::loadView() {
 
 void RenderSettingsDock::loadRig() {
     const Rig& rig = m_doc->rig();
+    if (m_ui->rigName->text() != rig.name) {
+        const QSignalBlocker block(m_ui->rigName);
+        m_ui->rigName->setText(rig.name);
+    }
+    m_ui->rigSpace->setText(rig.space == RigSpace::Model ? tr("model (bounding-sphere units)")
+                                                         : tr("world (the model's units)"));
     m_ui->specularModel->setCurrentIndex(int(rig.shading.specular));
     m_ui->viewerModel->setCurrentIndex(int(rig.shading.viewer));
     m_ui->shininess->setValueQuietly(rig.shading.shininess);

@@ -9,11 +9,13 @@
 #include "app/rendersettingsdock.h"
 #include "app/viewsettings.h"
 #include "editor/lighttablemodel.h"
+#include "core/rigjson.h"
 #include "editor/rigfixture.h"
 
 #include <QAbstractItemDelegate>
 #include <QApplication>
 #include <QDoubleSpinBox>
+#include <QLabel>
 #include <QLineEdit>
 #include <QStandardPaths>
 #include <QTableView>
@@ -224,6 +226,36 @@ class TestUiValues : public QObject {
             }
         }
         QVERIFY(std::isfinite(view.options().exposure));
+    }
+
+    // The rig's name: an undoable edit, never longer than the format allows, shown again after undo.
+    void renderSettings_rigName() {
+        Document doc;
+        doc.newRig(everyFieldRig());
+        ViewSettings view;
+        RenderSettingsDock dock(&doc, &view);
+        dock.show();
+        auto* name = dock.findChild<QLineEdit*>(QStringLiteral("rigName"));
+        QVERIFY(name);
+        QCOMPARE(name->text(), doc.rig().name);
+        const QString before = doc.rig().name;
+        const int steps = doc.undoStack()->count();
+        name->setFocus();
+        name->selectAll();
+        name->insert(QStringLiteral("Studio \U0001F4A1 key"));
+        QTest::keyClick(name, Qt::Key_Return);
+        QCOMPARE(doc.rig().name, QStringLiteral("Studio \U0001F4A1 key"));
+        QCOMPARE(doc.undoStack()->count(), steps + 1);
+        name->selectAll();
+        name->insert(QString(10000, QChar(u'n'))); // pasted: the field stops at the format's limit
+        QTest::keyClick(name, Qt::Key_Return);
+        QVERIFY(doc.rig().name.size() <= kMaxRigNameLength);
+        QCOMPARE(validateRig(doc.rig()), QString());
+        doc.undoStack()->undo();
+        doc.undoStack()->undo();
+        QCOMPARE(doc.rig().name, before);
+        QCOMPARE(name->text(), before);
+        QVERIFY(!dock.findChild<QLabel*>(QStringLiteral("rigSpace"))->text().isEmpty());
     }
 
     // The table's cell editors hand their text to the model, which parses and validates it.
