@@ -67,6 +67,16 @@ void scheduleScreenshot(MainWindow* window, const QString& path) {
     });
 }
 
+// Whether a platform for the GUI is given: a display in the environment, a platform chosen there or with
+// Qt's -platform option.
+bool displayGiven(int argc, char** argv) {
+    for (const char* name : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"})
+        if (qEnvironmentVariableIsSet(name)) return true;
+    for (int i = 1; i < argc; ++i)
+        if (qstrcmp(argv[i], "-platform") == 0 || qstrcmp(argv[i], "--platform") == 0) return true;
+    return false;
+}
+
 } // namespace
 
 void setApplicationIdentity() {
@@ -79,9 +89,9 @@ void setApplicationIdentity() {
 }
 
 int runEditor(int argc, char** argv) {
-    {
-        // The command line first, without a GUI: --help, --version and usage errors work without a display,
-        // and without one the editor says so instead of aborting inside Qt's platform plugin.
+    if (!displayGiven(argc, argv)) {
+        // Without a display QApplication would abort inside Qt's platform plugin: answer --help, --version
+        // and usage errors without a GUI, and say what the editor needs.
         QCoreApplication cli(argc, argv);
         setApplicationIdentity();
         const CommandLineResult cl = parseEditorCommandLine(QCoreApplication::arguments());
@@ -89,19 +99,13 @@ int runEditor(int argc, char** argv) {
             std::fputs(qPrintable(cl.message), cl.exitCode == 0 ? stdout : stderr);
             return cl.exitCode;
         }
-        const bool display = qEnvironmentVariableIsSet("DISPLAY") ||
-                             qEnvironmentVariableIsSet("WAYLAND_DISPLAY") ||
-                             qEnvironmentVariableIsSet("QT_QPA_PLATFORM");
-        if (!display) {
-            std::fputs(
-                "lightrig: the editor needs a display (X11 or Wayland); without one, run it under "
-                "xvfb-run -a, or use a subcommand (render, validate, format, bench: lightrig --help)\n",
-                stderr);
-            return 1;
-        }
+        std::fputs("lightrig: the editor needs a display (X11 or Wayland); without one, run it under "
+                   "xvfb-run -a, or use a subcommand (render, validate, format, bench: lightrig --help)\n",
+                   stderr);
+        return 1;
     }
     Viewport::setDefaultSurfaceFormat(); // before the QApplication: OpenGL 3.3 core for every context
-    QApplication app(argc, argv);
+    QApplication app(argc, argv); // takes Qt's own options (-style, -platform, ...) out of the arguments
     setApplicationIdentity();
     const CommandLineResult cl = parseEditorCommandLine(QCoreApplication::arguments());
     if (!cl.options) {

@@ -110,6 +110,11 @@ void TestRigCli::editorWithoutADisplay() {
     QVERIFY2(r.code == 2 && r.err.contains(QStringLiteral("frobnicate")), qPrintable(show(r)));
     r = lightrig({}, false);
     QVERIFY2(r.code == 1 && r.err.contains(QStringLiteral("needs a display")), qPrintable(show(r)));
+    // With a display, Qt's own options are Qt's, not usage errors.
+    if (qEnvironmentVariableIsSet("DISPLAY")) {
+        r = lightrig({QStringLiteral("-style"), QStringLiteral("fusion"), QStringLiteral("--version")});
+        QVERIFY2(r.code == 0 && r.out.startsWith(QStringLiteral("lightrig ")), qPrintable(show(r)));
+    }
 }
 
 // The presets are compiled into the executable too: Qt resource paths are files to it.
