@@ -1,4 +1,5 @@
 #include "benchreport.h"
+#include "benchchart.h"
 
 #include <QJsonArray>
 #include <QPainter>
@@ -29,16 +30,7 @@ double round3(double v) {
 }
 
 QColor tierColor(const BenchResult& r) {
-    if (r.uberShader) return QColor(140, 80, 170);
-    switch (r.quality) {
-    case Quality::Exact:
-        return QColor(40, 100, 200);
-    case Quality::Balanced:
-        return QColor(230, 130, 20);
-    case Quality::Fast:
-        return QColor(40, 160, 70);
-    }
-    return Qt::black;
+    return r.uberShader ? QColor(140, 80, 170) : chart::tierColor(r.quality);
 }
 
 } // namespace
@@ -202,15 +194,9 @@ QJsonObject benchJson(const BenchReport& report) {
 }
 
 QImage benchChart(const BenchReport& report, QSize size) {
-    QImage image(size, QImage::Format_ARGB32_Premultiplied);
-    image.fill(Qt::white);
-    QPainter p(&image);
-    p.setRenderHint(QPainter::Antialiasing);
-    QFont font = p.font();
-    font.setPixelSize(13);
-    p.setFont(font);
-    const QFontMetrics fm(font);
-    const QRectF plot(80, 50, size.width() - 110 - 150, size.height() - 110);
+    chart::Canvas canvas(size);
+    QPainter& p = canvas.painter();
+    const QRectF plot = canvas.plot();
 
     std::vector<const BenchResult*> points;
     for (const BenchResult& r : report.results)
@@ -240,19 +226,11 @@ QImage benchChart(const BenchReport& report, QSize size) {
     auto mapY = [&](double e) { return plot.bottom() - std::clamp(e / y1, 0.0, 1.0) * plot.height(); };
 
     // Title, axes, grid, ticks.
-    p.setPen(Qt::black);
-    QFont bold = font;
-    bold.setBold(true);
-    bold.setPixelSize(15);
-    p.setFont(bold);
-    p.drawText(QRectF(0, 8, size.width(), 24), Qt::AlignHCenter,
-               QStringLiteral("Time against error per quality tier (%1×%2)")
-                   .arg(report.options.size.width())
-                   .arg(report.options.size.height()));
-    p.setFont(font);
-    p.drawText(QRectF(0, 28, size.width(), 18), Qt::AlignHCenter, report.glDescription);
-    p.setPen(QPen(QColor(225, 225, 225), 1));
-    std::vector<double> xTicks;
+    canvas.title(QStringLiteral("Time against error per quality tier (%1×%2)")
+                     .arg(report.options.size.width())
+                     .arg(report.options.size.height()),
+                 report.glDescription);
+    std::vector<double> xTicks, yTicks;
     if (logX) {
         for (double d = x0; d <= x1 * 1.0001; d *= 10.0)
             for (double m : {1.0, 2.0, 5.0})
@@ -263,30 +241,14 @@ QImage benchChart(const BenchReport& report, QSize size) {
         for (double t = 0.0; t <= x1; t += step)
             xTicks.push_back(t);
     }
-    for (double t : xTicks)
-        p.drawLine(QPointF(mapX(t), plot.top()), QPointF(mapX(t), plot.bottom()));
     for (int i = 0; i <= 5; ++i)
-        p.drawLine(QPointF(plot.left(), mapY(y1 * i / 5)), QPointF(plot.right(), mapY(y1 * i / 5)));
-    p.setPen(QPen(Qt::black, 1.2));
-    p.drawRect(plot);
-    for (double t : xTicks) {
-        const QString label = QString::number(t, 'g', 3);
-        p.drawText(QPointF(mapX(t) - fm.horizontalAdvance(label) / 2.0, plot.bottom() + 18), label);
-    }
-    for (int i = 0; i <= 5; ++i) {
-        const QString label = QString::number(y1 * i / 5, 'g', 3);
-        p.drawText(QPointF(plot.left() - 8 - fm.horizontalAdvance(label), mapY(y1 * i / 5) + 5), label);
-    }
-    p.drawText(QRectF(plot.left(), plot.bottom() + 26, plot.width(), 20), Qt::AlignHCenter,
-               QStringLiteral("median ms/frame (wall, glFinish)%1")
-                   .arg(logX ? QStringLiteral(", log scale") : QString()));
-    p.save();
-    p.translate(18, plot.center().y());
-    p.rotate(-90);
-    p.drawText(QRectF(-plot.height() / 2, -10, plot.height(), 20), Qt::AlignHCenter,
-               errors ? QStringLiteral("mean error against the double reference (8-bit sRGB levels)")
-                      : QStringLiteral("error not measured"));
-    p.restore();
+        yTicks.push_back(y1 * i / 5);
+    const auto label = [](double v) { return QString::number(v, 'g', 3); };
+    canvas.axes(xTicks, yTicks, mapX, mapY, label, label,
+                QStringLiteral("median ms/frame (wall, glFinish)%1")
+                    .arg(logX ? QStringLiteral(", log scale") : QString()),
+                errors ? QStringLiteral("mean error against the double reference (8-bit sRGB levels)")
+                       : QStringLiteral("error not measured"));
 
     // One line per scene through its tiers, then the points.
     std::map<QString, std::vector<const BenchResult*>> byScene;
@@ -323,29 +285,14 @@ QImage benchChart(const BenchReport& report, QSize size) {
     }
 
     // Legend.
-    const QRectF legend(plot.right() + 16, plot.top(), 140, 0);
     int row = 0;
-    auto entry = [&](const QString& name, const QColor& c, bool square) {
-        const QPointF at(legend.left() + 8, legend.top() + 12 + 22 * row++);
-        p.setPen(QPen(Qt::black, 0.8));
-        p.setBrush(c);
-        if (square)
-            p.drawRect(QRectF(at.x() - 5, at.y() - 5, 10, 10));
-        else
-            p.drawEllipse(at, 5.5, 5.5);
-        p.setPen(Qt::black);
-        p.drawText(QPointF(at.x() + 14, at.y() + 5), name);
-    };
+    for (Quality q : {Quality::Exact, Quality::Balanced, Quality::Fast})
+        canvas.legendEntry(row++, toString(q), chart::tierColor(q));
     BenchResult probe;
-    for (Quality q : {Quality::Exact, Quality::Balanced, Quality::Fast}) {
-        probe.quality = q;
-        entry(toString(q), tierColor(probe), false);
-    }
     probe.uberShader = true;
     if (std::any_of(points.begin(), points.end(), [](const BenchResult* r) { return r->uberShader; }))
-        entry(QStringLiteral("über-shader"), tierColor(probe), true);
-    p.end();
-    return image;
+        canvas.legendEntry(row++, QStringLiteral("über-shader"), tierColor(probe), true);
+    return canvas.finish();
 }
 
 } // namespace lr

@@ -1,4 +1,5 @@
 #include "benchscaling.h"
+#include "benchchart.h"
 
 #include <QPainter>
 #include <QPainterPath>
@@ -10,18 +11,6 @@
 namespace lr {
 
 namespace {
-
-QColor colorOf(Quality q) {
-    switch (q) {
-    case Quality::Exact:
-        return QColor(40, 100, 200);
-    case Quality::Balanced:
-        return QColor(230, 130, 20);
-    case Quality::Fast:
-        return QColor(40, 160, 70);
-    }
-    return Qt::black;
-}
 
 // Decades around [lo, hi] (both > 0), at least one.
 std::pair<double, double> decades(double lo, double hi) {
@@ -48,15 +37,9 @@ QImage benchScalingChart(const BenchReport& report, QSize size) {
         std::remove_if(points.begin(), points.end(), [&](const BenchResult* r) { return !(xOf(r) > 0.0); }),
         points.end());
 
-    QImage image(size, QImage::Format_ARGB32_Premultiplied);
-    image.fill(Qt::white);
-    QPainter p(&image);
-    p.setRenderHint(QPainter::Antialiasing);
-    QFont font = p.font();
-    font.setPixelSize(13);
-    p.setFont(font);
-    const QFontMetrics fm(font);
-    const QRectF plot(80, 50, size.width() - 110 - 150, size.height() - 110);
+    chart::Canvas canvas(size);
+    QPainter& p = canvas.painter();
+    const QRectF plot = canvas.plot();
     double xLo = 1e300, xHi = 0.0, yLo = 1e300, yHi = 0.0;
     for (const BenchResult* r : points) {
         xLo = std::min(xLo, xOf(r)), xHi = std::max(xHi, xOf(r));
@@ -74,17 +57,11 @@ QImage benchScalingChart(const BenchReport& report, QSize size) {
                (std::log10(y) - std::log10(y0)) / (std::log10(y1) - std::log10(y0)) * plot.height();
     };
 
-    QFont bold = font;
-    bold.setBold(true);
-    bold.setPixelSize(15);
-    p.setFont(bold);
-    p.drawText(QRectF(0, 8, size.width(), 24), Qt::AlignHCenter,
-               QStringLiteral("Frame time against %1 (%2×%3)")
-                   .arg(byTriangles ? QStringLiteral("triangles") : QStringLiteral("lights"))
-                   .arg(report.options.size.width())
-                   .arg(report.options.size.height()));
-    p.setFont(font);
-    p.drawText(QRectF(0, 28, size.width(), 18), Qt::AlignHCenter, report.glDescription);
+    canvas.title(QStringLiteral("Frame time against %1 (%2×%3)")
+                     .arg(byTriangles ? QStringLiteral("triangles") : QStringLiteral("lights"))
+                     .arg(report.options.size.width())
+                     .arg(report.options.size.height()),
+                 report.glDescription);
     // Grid and ticks at 1, 2, 5 of each decade.
     auto ticks = [](double a, double b) {
         std::vector<double> t;
@@ -93,32 +70,12 @@ QImage benchScalingChart(const BenchReport& report, QSize size) {
                 if (d * m <= b * 1.0001) t.push_back(d * m);
         return t;
     };
-    const std::vector<double> xt = ticks(x0, x1), yt = ticks(y0, y1);
-    p.setPen(QPen(QColor(225, 225, 225), 1));
-    for (double t : xt)
-        p.drawLine(QPointF(mapX(t), plot.top()), QPointF(mapX(t), plot.bottom()));
-    for (double t : yt)
-        p.drawLine(QPointF(plot.left(), mapY(t)), QPointF(plot.right(), mapY(t)));
-    p.setPen(QPen(Qt::black, 1.2));
-    p.drawRect(plot);
-    for (double t : xt) {
-        const QString label =
-            t >= 1.0 ? QString::number(qint64(std::llround(t))) : QString::number(t, 'g', 3);
-        p.drawText(QPointF(mapX(t) - fm.horizontalAdvance(label) / 2.0, plot.bottom() + 18), label);
-    }
-    for (double t : yt) {
-        const QString label =
-            t >= 1.0 ? QString::number(qint64(std::llround(t))) : QString::number(t, 'g', 3);
-        p.drawText(QPointF(plot.left() - 8 - fm.horizontalAdvance(label), mapY(t) + 5), label);
-    }
-    p.drawText(QRectF(plot.left(), plot.bottom() + 26, plot.width(), 20), Qt::AlignHCenter,
-               byTriangles ? QStringLiteral("triangles, log scale") : QStringLiteral("lights, log scale"));
-    p.save();
-    p.translate(18, plot.center().y());
-    p.rotate(-90);
-    p.drawText(QRectF(-plot.height() / 2, -10, plot.height(), 20), Qt::AlignHCenter,
-               QStringLiteral("median ms/frame (wall, glFinish), log scale"));
-    p.restore();
+    const auto label = [](double t) {
+        return t >= 1.0 ? QString::number(qint64(std::llround(t))) : QString::number(t, 'g', 3);
+    };
+    canvas.axes(ticks(x0, x1), ticks(y0, y1), mapX, mapY, label, label,
+                byTriangles ? QStringLiteral("triangles, log scale") : QStringLiteral("lights, log scale"),
+                QStringLiteral("median ms/frame (wall, glFinish), log scale"));
 
     // One line per tier through its scenes in order of x.
     std::map<Quality, std::vector<const BenchResult*>> byTier;
@@ -133,20 +90,16 @@ QImage benchScalingChart(const BenchReport& report, QSize size) {
             const QPointF at(mapX(xOf(rs[i])), mapY(rs[i]->msMedian));
             i ? path.lineTo(at) : path.moveTo(at);
         }
-        p.setPen(QPen(colorOf(tier), 2));
+        p.setPen(QPen(chart::tierColor(tier), 2));
         p.setBrush(Qt::NoBrush);
         p.drawPath(path);
         p.setPen(QPen(Qt::black, 0.8));
-        p.setBrush(colorOf(tier));
+        p.setBrush(chart::tierColor(tier));
         for (const BenchResult* r : rs)
             p.drawEllipse(QPointF(mapX(xOf(r)), mapY(r->msMedian)), 4.5, 4.5);
-        const QPointF legend(plot.right() + 24, plot.top() + 12 + 22 * row++);
-        p.drawEllipse(legend, 5.5, 5.5);
-        p.setPen(Qt::black);
-        p.drawText(QPointF(legend.x() + 14, legend.y() + 5), toString(tier));
+        canvas.legendEntry(row++, toString(tier), chart::tierColor(tier));
     }
-    p.end();
-    return image;
+    return canvas.finish();
 }
 
 } // namespace lr
