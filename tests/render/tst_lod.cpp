@@ -3,6 +3,7 @@
 #include "glfixture.h"
 #include "scenes.h"
 
+#include "core/imagecompare.h"
 #include "render/lod.h"
 #include "render/offscreen.h"
 
@@ -13,14 +14,11 @@ using namespace lr::test;
 
 namespace {
 
+// Mean 8-bit difference of the r, g, b channels (core/imagecompare.h).
 double meanDifference(const QImage& a, const QImage& b) {
     const QImage x = a.convertToFormat(QImage::Format_RGBA8888),
                  y = b.convertToFormat(QImage::Format_RGBA8888);
-    double sum = 0.0;
-    for (int row = 0; row < x.height(); ++row)
-        for (int i = 0; i < 4 * x.width(); ++i)
-            sum += std::abs(int(x.constScanLine(row)[i]) - int(y.constScanLine(row)[i]));
-    return sum / (4.0 * x.width() * x.height());
+    return compareSrgb8(x.constBits(), y.constBits(), std::int64_t(x.width()) * x.height()).meanLevels;
 }
 
 std::shared_ptr<Model> denseSphere() { // 640 × 320 × 2 = 409,600 triangles
