@@ -32,16 +32,14 @@ GLuint GpuModel::texture(QOpenGLFunctions_3_3_Core* gl, const MipChain& chain, b
 }
 
 void GpuModel::uploadTextures(QOpenGLFunctions_3_3_Core* gl) {
-    // Every (texture, sRGB) pair some drawn mesh samples; their mipmap chains are built on worker threads.
+    // Every (texture, sRGB) pair some draw samples; their mipmap chains are built on worker threads.
     std::vector<TextureKey> keys;
-    for (const Mesh& mesh : m_model->meshes) {
-        if (mesh.vertices.empty() || mesh.indices.size() < 3) continue;
-        if (mesh.material < 0 || size_t(mesh.material) >= m_model->materials.size()) continue;
-        const MaterialFeatures f = materialFeatures(*m_model, mesh);
-        const Material& m = m_model->materials[size_t(mesh.material)];
-        if (f.baseColorTexture) keys.emplace_back(m.baseColorTexture, true);
-        if (f.normalMap) keys.emplace_back(m.normalTexture, false);
-        if (f.emissiveTexture) keys.emplace_back(m.emissiveTexture, true);
+    for (const GpuDraw& d : m_draws) {
+        if (d.material < 0) continue;
+        const Material& m = m_model->materials[size_t(d.material)];
+        if (d.features.baseColorTexture) keys.emplace_back(m.baseColorTexture, true);
+        if (d.features.normalMap) keys.emplace_back(m.normalTexture, false);
+        if (d.features.emissiveTexture) keys.emplace_back(m.emissiveTexture, true);
     }
     std::sort(keys.begin(), keys.end());
     keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
@@ -52,6 +50,13 @@ void GpuModel::uploadTextures(QOpenGLFunctions_3_3_Core* gl) {
         });
     for (size_t i = 0; i < keys.size(); ++i)
         m_textures.emplace(keys[i], texture(gl, chains[qsizetype(i)], keys[i].second));
+    for (GpuDraw& d : m_draws) {
+        if (d.material < 0) continue;
+        const Material& m = m_model->materials[size_t(d.material)];
+        if (d.features.baseColorTexture) d.baseColorTexture = textureName(m.baseColorTexture, true);
+        if (d.features.normalMap) d.normalTexture = textureName(m.normalTexture, false);
+        if (d.features.emissiveTexture) d.emissiveTexture = textureName(m.emissiveTexture, true);
+    }
 }
 
 GLuint GpuModel::textureName(int index, bool srgb) const {
@@ -65,7 +70,6 @@ bool GpuModel::upload(QOpenGLFunctions_3_3_Core* gl, std::shared_ptr<const Model
     if (!m_model) return true;
     while (gl->glGetError() != GL_NO_ERROR) {
     }
-    uploadTextures(gl);
     for (size_t i = 0; i < m_model->meshes.size(); ++i) {
         const Mesh& mesh = m_model->meshes[i];
         if (mesh.vertices.empty() || mesh.indices.size() < 3) continue;
@@ -87,12 +91,6 @@ bool GpuModel::upload(QOpenGLFunctions_3_3_Core* gl, std::shared_ptr<const Model
                          mesh.indices.data(), GL_STATIC_DRAW);
         setAttributes(gl);
         gl->glBindVertexArray(0);
-        if (d.material >= 0) {
-            const Material& m = m_model->materials[size_t(d.material)];
-            if (d.features.baseColorTexture) d.baseColorTexture = textureName(m.baseColorTexture, true);
-            if (d.features.normalMap) d.normalTexture = textureName(m.normalTexture, false);
-            if (d.features.emissiveTexture) d.emissiveTexture = textureName(m.emissiveTexture, true);
-        }
         m_draws.push_back(d);
         if (const GLenum e = gl->glGetError(); e != GL_NO_ERROR) {
             if (error)
@@ -103,6 +101,15 @@ bool GpuModel::upload(QOpenGLFunctions_3_3_Core* gl, std::shared_ptr<const Model
             release(gl);
             return false;
         }
+    }
+    uploadTextures(gl);
+    if (const GLenum e = gl->glGetError(); e != GL_NO_ERROR) {
+        if (error)
+            *error = QStringLiteral("uploading the textures of %1 failed (GL error 0x%2)")
+                         .arg(m_model->path)
+                         .arg(e, 0, 16);
+        release(gl);
+        return false;
     }
     if (std::int64_t(m_model->triangleCount()) >= kLodMinTriangles)
         m_proxies = QtConcurrent::run([model = m_model] { return buildInteractionLods(*model); });
@@ -128,7 +135,8 @@ bool GpuModel::updateProxies(QOpenGLFunctions_3_3_Core* gl, bool wait) {
     const std::vector<MeshLod> lods = m_proxies.result(); // waits
     m_proxies = {};
     for (const MeshLod& lod : lods) {
-        auto d = std::find_if(m_draws.begin(), m_draws.end(), [&](const GpuDraw& x) { return x.mesh == lod.mesh; });
+        auto d = std::find_if(m_draws.begin(), m_draws.end(),
+                              [&](const GpuDraw& x) { return x.mesh == lod.mesh; });
         if (d == m_draws.end()) continue;
         gl->glGenVertexArrays(1, &d->lodVao);
         gl->glBindVertexArray(d->lodVao);
