@@ -7,4 +7,6 @@
 // which cannot even name the code that allocated it ("<unknown module>"), so no suppression can match it.
 // With the driver kept mapped, those blocks stay reachable and are not reported; real leaks still are.
 // The executable's definition wins over libc's for every library (symbol interposition).
-extern "C" int dlclose(void*) { return 0; }
+extern "C" int dlclose(void*) {
+    return 0;
+}

@@ -78,7 +78,7 @@ void MainWindow::createDocks() {
     resizeDocks({m_lightsDock, m_propertiesDock}, {400, 340}, Qt::Horizontal);
     resizeDocks({m_lightsDock, m_presetsDock}, {300, 400}, Qt::Vertical);
     resizeDocks({m_propertiesDock, m_renderDock}, {560, 300}, Qt::Vertical);
-    addQualityDock(this);  // the Quality panel (qualitydock.h), a tab beside Render settings
+    addQualityDock(this); // the Quality panel (qualitydock.h), a tab beside Render settings
 }
 
 void MainWindow::connectStatus() {

@@ -26,7 +26,8 @@ namespace {
 
 const char* kUsage = "lightrig bench [MODEL...] [--rig RIG] [--camera-index N | --view NAME] [--lights "
                      "N,...] [--light-type T,...] "
-                     "[--size WxH] [--frames N] [--msaa N] [--interactive] [--quality LIST] [--json OUT.json] [--chart OUT.png] [--scaling-chart OUT.png]";
+                     "[--size WxH] [--frames N] [--msaa N] [--interactive] [--quality LIST] [--json "
+                     "OUT.json] [--chart OUT.png] [--scaling-chart OUT.png]";
 
 const char* kBundledModel = ":/resources/models/suzanne/Suzanne.gltf";
 
@@ -117,8 +118,8 @@ int runBench(const QStringList& args) {
     const SceneOptionSet scene;
     parser.addOption(help);
     scene.addTo(parser);
-    parser.addOptions({lights, lightType, lightRange, frames, warmup, msaa, interactive, json, chart, scalingChart,
-                       noErrors, noUber});
+    parser.addOptions({lights, lightType, lightRange, frames, warmup, msaa, interactive, json, chart,
+                       scalingChart, noErrors, noUber});
     parser.addPositionalArgument(QStringLiteral("MODEL"),
                                  QStringLiteral("Model files (default: the standard suite)."),
                                  QStringLiteral("[MODEL...]"));
@@ -253,10 +254,11 @@ int runBench(const QStringList& args) {
                .arg(report.loadAverage.isEmpty() ? QStringLiteral("unknown") : report.loadAverage);
     out << benchTable(report);
     if (parser.isSet(json) &&
-        !writeFileAtomically(parser.value(json), QJsonDocument(benchJson(report)).toJson(QJsonDocument::Indented),
-                   &message))
+        !writeFileAtomically(parser.value(json),
+                             QJsonDocument(benchJson(report)).toJson(QJsonDocument::Indented), &message))
         return failed(message);
-    if (parser.isSet(chart) && !writeImageAtomically(benchChart(report), parser.value(chart), "png", &message))
+    if (parser.isSet(chart) &&
+        !writeImageAtomically(benchChart(report), parser.value(chart), "png", &message))
         return failed(message);
     if (parser.isSet(scalingChart) &&
         !writeImageAtomically(benchScalingChart(report), parser.value(scalingChart), "png", &message))

@@ -14,18 +14,20 @@ bool g_displayAvailable = true;
 struct Subcommand {
     const char* name;
     int (*fn)(const QStringList&);
-    bool needsGui;  // renders with OpenGL: needs a QGuiApplication (and a display, e.g. xvfb-run)
+    bool needsGui; // renders with OpenGL: needs a QGuiApplication (and a display, e.g. xvfb-run)
 };
 const Subcommand kSubcommands[] = {
     {"validate", runValidate, false},
     {"format", runFormat, false},
     {"render", runRender, true},
     {"bench", runBench, true},
-    {"import-worker", runImportWorker, false},  // hidden: model/isolatedimport.h runs it
+    {"import-worker", runImportWorker, false}, // hidden: model/isolatedimport.h runs it
 };
-}  // namespace
+} // namespace
 
-bool displayAvailable() { return g_displayAvailable; }
+bool displayAvailable() {
+    return g_displayAvailable;
+}
 
 QString subcommandOf(int argc, char** argv) {
     if (argc < 2) return {};
@@ -47,7 +49,8 @@ int run(const QString& subcommand, int argc, char** argv) {
             if (!g_displayAvailable) qputenv("QT_QPA_PLATFORM", "offscreen");
             // bench: first frames pay a real shader compile, not a hit in Mesa's on-disk cache (read when
             // the display connection is opened, so set here). MESA_SHADER_CACHE_DISABLE=false keeps it.
-            if (subcommand == QLatin1String("bench") && !qEnvironmentVariableIsSet("MESA_SHADER_CACHE_DISABLE"))
+            if (subcommand == QLatin1String("bench") &&
+                !qEnvironmentVariableIsSet("MESA_SHADER_CACHE_DISABLE"))
                 qputenv("MESA_SHADER_CACHE_DISABLE", "true");
             app = std::make_unique<QGuiApplication>(argc, argv);
         } else {
@@ -55,11 +58,11 @@ int run(const QString& subcommand, int argc, char** argv) {
         }
         QCoreApplication::setApplicationName(QStringLiteral("lightrig"));
         QStringList args = QCoreApplication::arguments();
-        args.removeFirst();  // program
-        return s.fn(args);   // args[0] is the subcommand name
+        args.removeFirst(); // program
+        return s.fn(args);  // args[0] is the subcommand name
     }
     QTextStream(stderr) << "lightrig: unknown command " << subcommand << '\n';
     return Usage;
 }
 
-}  // namespace lr::cli
+} // namespace lr::cli

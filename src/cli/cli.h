@@ -18,10 +18,10 @@ int run(const QString& subcommand, int argc, char** argv);
 // the offscreen platform, which has no OpenGL here): it should fail with "needs an X display".
 bool displayAvailable();
 
-int runValidate(const QStringList& args);  // validate.cpp
-int runFormat(const QStringList& args);    // validate.cpp
-int runRender(const QStringList& args);    // render.cpp
-int runBench(const QStringList& args);     // bench.cpp
-int runImportWorker(const QStringList& args);  // importworker.cpp (hidden, see model/isolatedimport.h)
+int runValidate(const QStringList& args);     // validate.cpp
+int runFormat(const QStringList& args);       // validate.cpp
+int runRender(const QStringList& args);       // render.cpp
+int runBench(const QStringList& args);        // bench.cpp
+int runImportWorker(const QStringList& args); // importworker.cpp (hidden, see model/isolatedimport.h)
 
-}  // namespace lr::cli
+} // namespace lr::cli

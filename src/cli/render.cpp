@@ -41,26 +41,29 @@ double median(std::vector<double> v) {
     return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
 }
 
-}  // namespace
+} // namespace
 
 int runRender(const QStringList& args) {
     QTextStream err(stderr), out(stdout);
     const QString name = QStringLiteral("lightrig render");
     QCommandLineParser parser;
-    parser.setApplicationDescription(
-        QStringLiteral("Renders MODEL lit by a rig into a PNG or JPEG image, exactly as the editor's viewport shows "
-                       "it.\nExit status: 0 written, 1 bad model, rig, camera or output path (nothing written), "
-                       "2 usage error.\nNeeds OpenGL 3.3: run it with a display, e.g. under xvfb-run -a."));
+    parser.setApplicationDescription(QStringLiteral(
+        "Renders MODEL lit by a rig into a PNG or JPEG image, exactly as the editor's viewport shows "
+        "it.\nExit status: 0 written, 1 bad model, rig, camera or output path (nothing written), "
+        "2 usage error.\nNeeds OpenGL 3.3: run it with a display, e.g. under xvfb-run -a."));
     parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
-    const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")}, QStringLiteral("Show this help."));
+    const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},
+                                  QStringLiteral("Show this help."));
     const QCommandLineOption output({QStringLiteral("o"), QStringLiteral("output")},
-                                    QStringLiteral("Output image (.png, .jpg or .jpeg)."), QStringLiteral("OUT"));
+                                    QStringLiteral("Output image (.png, .jpg or .jpeg)."),
+                                    QStringLiteral("OUT"));
     const QCommandLineOption supersample(QStringLiteral("supersample"),
                                          QStringLiteral("Render N×N samples per pixel, 1..4 (default 1)."),
                                          QStringLiteral("N"));
     const QCommandLineOption transparent(QStringLiteral("transparent"),
                                          QStringLiteral("Transparent background (PNG alpha)."));
-    QCommandLineOption frames(QStringLiteral("frames"), QStringLiteral("Time N more frames."), QStringLiteral("N"));
+    QCommandLineOption frames(QStringLiteral("frames"), QStringLiteral("Time N more frames."),
+                              QStringLiteral("N"));
     frames.setFlags(QCommandLineOption::HiddenFromHelp);
     QCommandLineOption msaa(QStringLiteral("msaa"), QStringLiteral("MSAA samples."), QStringLiteral("N"));
     msaa.setFlags(QCommandLineOption::HiddenFromHelp);
@@ -69,7 +72,8 @@ int runRender(const QStringList& args) {
     parser.addOption(output);
     scene.addTo(parser);
     parser.addOptions({supersample, transparent, frames, msaa});
-    parser.addPositionalArgument(QStringLiteral("MODEL"), QStringLiteral("A model file Assimp reads (glTF, OBJ, FBX, ...)."));
+    parser.addPositionalArgument(QStringLiteral("MODEL"),
+                                 QStringLiteral("A model file Assimp reads (glTF, OBJ, FBX, ...)."));
 
     auto usage = [&](const QString& message) {
         err << name << ": " << message << "\nUsage: " << kUsage << "\nTry '" << name << " --help'.\n";
@@ -83,11 +87,15 @@ int runRender(const QStringList& args) {
         return Ok;
     }
     const QStringList positional = parser.positionalArguments();
-    if (positional.size() != 1) return usage(positional.isEmpty() ? QStringLiteral("no MODEL given") : QStringLiteral("one MODEL only"));
-    if (!parser.isSet(output) || parser.value(output).isEmpty()) return usage(QStringLiteral("-o OUT is required"));
+    if (positional.size() != 1)
+        return usage(positional.isEmpty() ? QStringLiteral("no MODEL given")
+                                          : QStringLiteral("one MODEL only"));
+    if (!parser.isSet(output) || parser.value(output).isEmpty())
+        return usage(QStringLiteral("-o OUT is required"));
     const QString outPath = parser.value(output);
     const QByteArray format = formatFor(outPath);
-    if (format.isEmpty()) return usage(QStringLiteral("the output must end in .png, .jpg or .jpeg: %1").arg(outPath));
+    if (format.isEmpty())
+        return usage(QStringLiteral("the output must end in .png, .jpg or .jpeg: %1").arg(outPath));
     QString message;
     const std::optional<SceneOptions> options = scene.read(parser, &message);
     if (!options) return usage(message);
@@ -100,7 +108,8 @@ int runRender(const QStringList& args) {
     if (parser.isSet(frames)) {
         bool ok = false;
         frameCount = parser.value(frames).toInt(&ok);
-        if (!ok || frameCount < 0 || frameCount > 100000) return usage(QStringLiteral("--frames must be 0..100000"));
+        if (!ok || frameCount < 0 || frameCount > 100000)
+            return usage(QStringLiteral("--frames must be 0..100000"));
     }
     if (parser.isSet(msaa)) {
         bool ok = false;
@@ -112,7 +121,8 @@ int runRender(const QStringList& args) {
         err << name << ": " << QString(reason).replace(QLatin1Char('\n'), QLatin1String(" | ")) << '\n';
         return int(Failed);
     };
-    if (!displayAvailable()) return failed(QStringLiteral("lightrig render needs an X display; run it under xvfb-run -a"));
+    if (!displayAvailable())
+        return failed(QStringLiteral("lightrig render needs an X display; run it under xvfb-run -a"));
     if (!checkOutputPath(outPath, &message)) return failed(message);
 
     QElapsedTimer clock;
@@ -138,7 +148,8 @@ int runRender(const QStringList& args) {
         err << name << ": warning: JPEG has no alpha channel; the transparent background is written black\n";
     if (!writeImageAtomically(image, outPath, format, &message)) return failed(message);
     const RenderStats& stats = gl.renderer().stats();
-    out << QStringLiteral("wrote %1 (%2x%3): %4 triangles, %5 of %6 lights (%7), %8, first image %9 ms, load %10 ms\n")
+    out << QStringLiteral(
+               "wrote %1 (%2x%3): %4 triangles, %5 of %6 lights (%7), %8, first image %9 ms, load %10 ms\n")
                .arg(outPath)
                .arg(image.width())
                .arg(image.height())
@@ -174,4 +185,4 @@ int runRender(const QStringList& args) {
     return Ok;
 }
 
-}  // namespace lr::cli
+} // namespace lr::cli

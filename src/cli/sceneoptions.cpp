@@ -12,7 +12,8 @@ namespace lr::cli {
 
 SceneOptionSet::SceneOptionSet()
     : rig(QStringLiteral("rig"),
-          QStringLiteral("Rig file (.json). Default: the model's own lights when it has some, else the default rig."),
+          QStringLiteral(
+              "Rig file (.json). Default: the model's own lights when it has some, else the default rig."),
           QStringLiteral("RIG")),
       cameraIndex(QStringLiteral("camera-index"), QStringLiteral("Use camera N of the model file (from 0)."),
                   QStringLiteral("N")),
@@ -21,12 +22,16 @@ SceneOptionSet::SceneOptionSet()
                           "else three-quarter.")
                .arg(standardViewNames().join(QStringLiteral(", "))),
            QStringLiteral("NAME")),
-      size(QStringLiteral("size"), QStringLiteral("Image size in pixels (default 1280x720)."), QStringLiteral("WxH")),
+      size(QStringLiteral("size"), QStringLiteral("Image size in pixels (default 1280x720)."),
+           QStringLiteral("WxH")),
       quality(QStringLiteral("quality"),
-              QStringLiteral("Quality tier: %1 (default exact).").arg(allowedNames<Quality>()), QStringLiteral("Q")),
-      exposure(QStringLiteral("exposure"), QStringLiteral("Exposure in EV: radiance is scaled by 2^EV (default 0)."),
+              QStringLiteral("Quality tier: %1 (default exact).").arg(allowedNames<Quality>()),
+              QStringLiteral("Q")),
+      exposure(QStringLiteral("exposure"),
+               QStringLiteral("Exposure in EV: radiance is scaled by 2^EV (default 0)."),
                QStringLiteral("EV")),
-      toneMap(QStringLiteral("tonemap"), QStringLiteral("Tone map: %1 (default clamp).").arg(allowedNames<ToneMap>()),
+      toneMap(QStringLiteral("tonemap"),
+              QStringLiteral("Tone map: %1 (default clamp).").arg(allowedNames<ToneMap>()),
               QStringLiteral("OP")) {}
 
 void SceneOptionSet::addTo(QCommandLineParser& parser) const {
@@ -51,12 +56,14 @@ std::optional<SceneOptions> SceneOptionSet::read(const QCommandLineParser& p, QS
     };
     o.rigPath = p.value(rig);
     if (p.isSet(rig) && o.rigPath.isEmpty()) return bad(QStringLiteral("--rig needs a file name"));
-    if (p.isSet(cameraIndex) && p.isSet(view)) return bad(QStringLiteral("--camera-index and --view exclude each other"));
+    if (p.isSet(cameraIndex) && p.isSet(view))
+        return bad(QStringLiteral("--camera-index and --view exclude each other"));
     if (p.isSet(cameraIndex)) {
         bool ok = false;
         const int n = p.value(cameraIndex).toInt(&ok);
         if (!ok || n < 0)
-            return bad(QStringLiteral("--camera-index must be a whole number >= 0, got '%1'").arg(p.value(cameraIndex)));
+            return bad(QStringLiteral("--camera-index must be a whole number >= 0, got '%1'")
+                           .arg(p.value(cameraIndex)));
         o.cameraIndex = n;
     }
     if (p.isSet(view)) {
@@ -67,19 +74,23 @@ std::optional<SceneOptions> SceneOptionSet::read(const QCommandLineParser& p, QS
     }
     if (p.isSet(size)) {
         const auto s = parseSize(p.value(size));
-        if (!s) return bad(QStringLiteral("--size must be WxH with sides 1..32768, got '%1'").arg(p.value(size)));
+        if (!s)
+            return bad(QStringLiteral("--size must be WxH with sides 1..32768, got '%1'").arg(p.value(size)));
         o.size = *s;
     }
     if (p.isSet(quality)) {
-        const QStringList names = qualityList ? p.value(quality).split(QLatin1Char(',')) : QStringList{p.value(quality)};
+        const QStringList names =
+            qualityList ? p.value(quality).split(QLatin1Char(',')) : QStringList{p.value(quality)};
         o.qualities.clear();
         for (const QString& name : names) {
             const auto q = fromString<Quality>(name.trimmed());
             if (!q)
                 return bad(QStringLiteral("--quality must be %1%2, got '%3'")
-                               .arg(allowedNames<Quality>(), qualityList ? QStringLiteral(" (or a comma list)") : QString(),
+                               .arg(allowedNames<Quality>(),
+                                    qualityList ? QStringLiteral(" (or a comma list)") : QString(),
                                     p.value(quality)));
-            if (std::find(o.qualities.begin(), o.qualities.end(), *q) == o.qualities.end()) o.qualities.push_back(*q);
+            if (std::find(o.qualities.begin(), o.qualities.end(), *q) == o.qualities.end())
+                o.qualities.push_back(*q);
         }
         o.quality = o.qualities.front();
     }
@@ -87,11 +98,14 @@ std::optional<SceneOptions> SceneOptionSet::read(const QCommandLineParser& p, QS
         bool ok = false;
         o.exposureEV = p.value(exposure).toDouble(&ok);
         if (!ok || !std::isfinite(o.exposureEV) || std::abs(o.exposureEV) > 60.0)
-            return bad(QStringLiteral("--exposure must be a number of EV in -60..60, got '%1'").arg(p.value(exposure)));
+            return bad(QStringLiteral("--exposure must be a number of EV in -60..60, got '%1'")
+                           .arg(p.value(exposure)));
     }
     if (p.isSet(toneMap)) {
         const auto t = fromString<ToneMap>(p.value(toneMap));
-        if (!t) return bad(QStringLiteral("--tonemap must be %1, got '%2'").arg(allowedNames<ToneMap>(), p.value(toneMap)));
+        if (!t)
+            return bad(QStringLiteral("--tonemap must be %1, got '%2'")
+                           .arg(allowedNames<ToneMap>(), p.value(toneMap)));
         o.toneMap = *t;
     }
     return o;
@@ -110,7 +124,8 @@ bool loadScene(const QString& modelPath, const SceneOptions& options, LoadedScen
         const RigReadResult r = readRigFile(options.rigPath);
         if (!r.ok()) {
             *error = r.errors.value(0, QStringLiteral("%1: cannot read the rig").arg(options.rigPath));
-            if (r.errors.size() > 1) *error += QStringLiteral(" (and %1 more errors)").arg(r.errors.size() - 1);
+            if (r.errors.size() > 1)
+                *error += QStringLiteral(" (and %1 more errors)").arg(r.errors.size() - 1);
             return false;
         }
         scene->rig = *r.rig;
@@ -154,4 +169,4 @@ bool haveDisplay() {
            qEnvironmentVariableIsSet("QT_QPA_PLATFORM");
 }
 
-}  // namespace lr::cli
+} // namespace lr::cli

@@ -21,12 +21,12 @@
 namespace lr::cli {
 
 struct SceneOptions {
-    QString rigPath;                // empty: model lights or the default rig
+    QString rigPath; // empty: model lights or the default rig
     std::optional<int> cameraIndex;
-    QString view;                   // a standardViewNames() name, or empty
+    QString view; // a standardViewNames() name, or empty
     QSize size{1280, 720};
-    Quality quality = Quality::Exact;      // the first of `qualities`
-    std::vector<Quality> qualities{Quality::Exact};  // --quality A,B,... where a list is allowed (bench)
+    Quality quality = Quality::Exact;               // the first of `qualities`
+    std::vector<Quality> qualities{Quality::Exact}; // --quality A,B,... where a list is allowed (bench)
     double exposureEV = 0.0;
     ToneMap toneMap = ToneMap::Clamp;
 };
@@ -43,9 +43,9 @@ struct SceneOptionSet {
 struct LoadedScene {
     std::shared_ptr<Model> model;
     Rig rig;
-    QString rigSource;  // "RIG.json", "the model's lights" or "the default rig"
+    QString rigSource; // "RIG.json", "the model's lights" or "the default rig"
     ViewCamera camera;
-    QString cameraSource;  // "camera 0 of the model", "view three-quarter"
+    QString cameraSource; // "camera 0 of the model", "view three-quarter"
 };
 
 // Loads the model and the rig and picks the camera. False with a one-line reason (exit 1) on failure.
@@ -57,4 +57,4 @@ std::optional<QSize> parseSize(const QString& text, int maxSide = 32768);
 // DISPLAY, WAYLAND_DISPLAY or an explicit QT_QPA_PLATFORM: a platform that may offer OpenGL.
 bool haveDisplay();
 
-}  // namespace lr::cli
+} // namespace lr::cli

@@ -42,7 +42,8 @@ int parse(QCommandLineParser& parser, const QStringList& args, const QString& us
 }
 
 void print(QTextStream& out, const QStringList& lines) {
-    for (const QString& l : lines) out << l << '\n';
+    for (const QString& l : lines)
+        out << l << '\n';
 }
 
 // "FILE: path: reason" -> "FILE: warning: path: reason", so warnings after "FILE: ok" read as such.
@@ -54,7 +55,7 @@ void printWarnings(QTextStream& out, const QString& file, const QStringList& war
             << '\n';
 }
 
-}  // namespace
+} // namespace
 
 int runValidate(const QStringList& args) {
     QCommandLineParser parser;
@@ -129,4 +130,4 @@ int runFormat(const QStringList& args) {
     return rc;
 }
 
-}  // namespace lr::cli
+} // namespace lr::cli

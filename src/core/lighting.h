@@ -26,10 +26,14 @@ template <typename T> constexpr T kMinDenominator = T(1e-4);
 template <typename T> constexpr T kMinConeWidth = T(1e-7);
 
 // x clamped to [0, 1]; NaN -> 0.
-template <typename T> T saturate(T x) { return x > T(0) ? (x < T(1) ? x : T(1)) : T(0); }
+template <typename T> T saturate(T x) {
+    return x > T(0) ? (x < T(1) ? x : T(1)) : T(0);
+}
 
 // max(x, 0) that maps NaN to 0.
-template <typename T> T positive(T x) { return x > T(0) ? x : T(0); }
+template <typename T> T positive(T x) {
+    return x > T(0) ? x : T(0);
+}
 
 // pow(base, exponent) for base >= 0 (negative or NaN base -> 0) and exponent >= 0 (else treated as 0).
 // pow(0, 0) = 1. Results are finite for base in [0, 1], the only range the formulas feed it.
@@ -40,7 +44,9 @@ template <typename T> T safePow(T base, T exponent) {
 }
 
 // acos with its argument clamped into [-1, 1] (dot products of unit vectors overshoot by an ulp).
-template <typename T> T safeAcos(T c) { return std::acos(c > T(-1) ? (c < T(1) ? c : T(1)) : T(-1)); }
+template <typename T> T safeAcos(T c) {
+    return std::acos(c > T(-1) ? (c < T(1) ? c : T(1)) : T(-1));
+}
 
 // v / |v|, scale-invariant (works for denormal and huge components); zero, NaN or Inf -> fallback.
 // After the division by the largest magnitude m one component is exactly ±1, so dot(v, v) is in [1, 3]
@@ -77,7 +83,7 @@ template <typename T> T falloffInversePolynomial(T d, T constant, T linear, T qu
     if (!(w > T(0))) return T(0);
     T denom = constant + linear * d + quadratic * d * d;
     if (!(denom > kMinDenominator<T>)) denom = kMinDenominator<T>;
-    return w / denom;  // denom = +Inf -> 0
+    return w / denom; // denom = +Inf -> 0
 }
 
 // Doc 003: clamp(1 - (d/range)², 0, 1). range <= 0 or d >= range -> 0.
@@ -106,7 +112,9 @@ template <typename T> T coneAnglePower(T cosTheta, T outer, T exponent) {
 }
 
 // Doc 003: cosθ >= cos outer ? 1 : 0.
-template <typename T> T coneHard(T cosTheta, T cosOuter) { return cosTheta >= cosOuter ? T(1) : T(0); }
+template <typename T> T coneHard(T cosTheta, T cosOuter) {
+    return cosTheta >= cosOuter ? T(1) : T(0);
+}
 
 // Doc 001 / glTF: clamp((cosθ - cos outer) / (cos inner - cos outer), 0, 1)^exponent, with the cosines
 // precomputed. Outside the outer cone -> 0 (also with exponent 0); a width below kMinConeWidth
@@ -122,7 +130,9 @@ template <typename T> T coneSmooth(T cosTheta, T cosInner, T cosOuter, T exponen
 
 // Docs 003/004: N·L clamped to [0, 1] (Direct3D's saturate). The upper clamp matters: with float unit
 // vectors N·L can exceed 1 by an ulp or two (dot(normalize(a), normalize(a)) > 1).
-template <typename T> T diffuseLambert(T nDotL) { return saturate(nDotL); }
+template <typename T> T diffuseLambert(T nDotL) {
+    return saturate(nDotL);
+}
 
 // Doc 001: (N·L · 0.5 + 0.5)².
 template <typename T> T diffuseHalfLambert(T nDotL) {
@@ -132,7 +142,7 @@ template <typename T> T diffuseHalfLambert(T nDotL) {
 
 // Doc 000: max(0, reflect(-L, N)·V)^shininess.
 template <typename T> T specularPhong(Vec3<T> N, Vec3<T> L, Vec3<T> V, T shininess) {
-    const Vec3<T> R = T(2) * glm::dot(N, L) * N - L;  // reflect(-L, N)
+    const Vec3<T> R = T(2) * glm::dot(N, L) * N - L; // reflect(-L, N)
     return safePow(saturate(glm::dot(R, V)), shininess);
 }
 
@@ -154,9 +164,11 @@ template <typename T> T rimTerm(Vec3<T> direction, Vec3<T> N, Vec3<T> V, T expon
 template <typename T> T toneMap(ToneMap op, T x) {
     if (!(x > T(0))) return T(0);
     switch (op) {
-    case ToneMap::Clamp: return saturate(x);
-    case ToneMap::Reinhard: return x < std::numeric_limits<T>::max() ? x / (T(1) + x) : T(1);
-    case ToneMap::Aces: {  // Narkowicz 2015 fit
+    case ToneMap::Clamp:
+        return saturate(x);
+    case ToneMap::Reinhard:
+        return x < std::numeric_limits<T>::max() ? x / (T(1) + x) : T(1);
+    case ToneMap::Aces: { // Narkowicz 2015 fit
         if (!(x < T(1e6))) return T(1);
         return saturate((x * (T(2.51) * x + T(0.03))) / (x * (T(2.43) * x + T(0.59)) + T(0.14)));
     }
@@ -174,4 +186,4 @@ template <typename T> T srgbToLinear(T x) {
     return x <= T(0.04045) ? x / T(12.92) : std::pow((x + T(0.055)) / T(1.055), T(2.4));
 }
 
-}  // namespace lr::lighting
+} // namespace lr::lighting

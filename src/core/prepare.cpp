@@ -6,11 +6,13 @@
 namespace lr {
 
 namespace {
-glm::dvec3 transformPoint(const glm::dmat4& m, const glm::dvec3& p) { return glm::dvec3(m * glm::dvec4(p, 1.0)); }
+glm::dvec3 transformPoint(const glm::dmat4& m, const glm::dvec3& p) {
+    return glm::dvec3(m * glm::dvec4(p, 1.0));
+}
 glm::dvec3 transformDirection(const glm::dmat4& m, const glm::dvec3& v) {
     return lighting::safeNormalize(glm::dvec3(m * glm::dvec4(v, 0.0)), glm::dvec3(0, 0, -1));
 }
-}  // namespace
+} // namespace
 
 glm::dvec3 rigToWorld(const Rig& rig, const SceneFrame& frame, const glm::dvec3& p) {
     return rig.space == RigSpace::Model ? frame.center + frame.radius * p : p;
@@ -31,13 +33,14 @@ bool lightReaches(const Rig& rig, const SceneFrame& frame, const Light& light, c
     if (!light.enabled) return false;
     if (!light.usesFalloff()) return true;
     const Falloff& f = light.falloff;
-    const bool bounded = f.model == FalloffModel::RangePower || f.model == FalloffModel::RangeQuadratic ||
-                         ((f.model == FalloffModel::InversePolynomial || f.model == FalloffModel::InverseSquare) &&
-                          f.hasRange());
+    const bool bounded =
+        f.model == FalloffModel::RangePower || f.model == FalloffModel::RangeQuadratic ||
+        ((f.model == FalloffModel::InversePolynomial || f.model == FalloffModel::InverseSquare) &&
+         f.hasRange());
     if (!bounded) return true;
     const double worldRange = f.range / distanceScale(rig, frame);
     const double d = glm::length(rigToWorld(rig, frame, light.position) - center);
-    return d < worldRange + radius;  // the falloff is exactly zero at d >= range
+    return d < worldRange + radius; // the falloff is exactly zero at d >= range
 }
 
 lighting::ShadeLight<double> prepareLight(const Rig& rig, const SceneFrame& frame, const glm::dmat4& view,
@@ -135,4 +138,4 @@ Light makeLight(LightType type, const QString& name) {
     return l;
 }
 
-}  // namespace lr
+} // namespace lr

@@ -59,4 +59,4 @@ template <typename T> lighting::ShadeLight<T> castLight(const lighting::ShadeLig
     return o;
 }
 
-}  // namespace lr
+} // namespace lr

@@ -13,8 +13,6 @@ namespace lr {
 // docs/quality.md names and measures every approximation (and why fast keeps the rig's viewer).
 enum class Quality { Exact, Balanced, Fast };
 
-template <> struct EnumNames<Quality> {
-    static constexpr std::array names{"exact", "balanced", "fast"};
-};
+template <> struct EnumNames<Quality> { static constexpr std::array names{"exact", "balanced", "fast"}; };
 
-}  // namespace lr
+} // namespace lr

@@ -13,18 +13,19 @@ namespace lr {
 
 struct Falloff {
     FalloffModel model = FalloffModel::None;
-    double range = -1.0;    // < 0: no range (only for inverse-polynomial and inverse-square, where it is optional)
-    double exponent = 2.0;  // range-power
-    double constant = 1.0, linear = 0.0, quadratic = 0.0;  // inverse-polynomial
+    double range =
+        -1.0; // < 0: no range (only for inverse-polynomial and inverse-square, where it is optional)
+    double exponent = 2.0;                                // range-power
+    double constant = 1.0, linear = 0.0, quadratic = 0.0; // inverse-polynomial
     bool hasRange() const { return range >= 0.0; }
     bool operator==(const Falloff&) const = default;
 };
 
 struct Cone {
     ConeModel model = ConeModel::Smooth;
-    double inner = 20.0;  // degrees, half-angle from the axis (smooth only)
-    double outer = 35.0;  // degrees, half-angle from the axis
-    double exponent = 1.0;  // angle-power and smooth
+    double inner = 20.0;   // degrees, half-angle from the axis (smooth only)
+    double outer = 35.0;   // degrees, half-angle from the axis
+    double exponent = 1.0; // angle-power and smooth
     bool operator==(const Cone&) const = default;
 };
 
@@ -34,22 +35,22 @@ struct Light {
     bool enabled = true;
     glm::dvec3 color{1.0};
     double intensity = 1.0;
-    std::optional<double> temperature;  // kelvin, tints color
-    glm::dvec3 position{0.0};            // point, spot
-    glm::dvec3 direction{0.0, -1.0, 0.0};  // spot, directional, rim: where the light travels
-    Falloff falloff;                       // point, spot
-    Cone cone;                             // spot
-    DiffuseModel diffuse = DiffuseModel::Lambert;  // not rim
-    bool specularIsColor = false;  // file wrote an RGB colour rather than a factor
-    glm::dvec3 specular{1.0};      // factor f is stored as (f, f, f)
-    std::optional<glm::dvec3> ambient;  // not rim
-    double rimExponent = 1.3;           // rim
+    std::optional<double> temperature;            // kelvin, tints color
+    glm::dvec3 position{0.0};                     // point, spot
+    glm::dvec3 direction{0.0, -1.0, 0.0};         // spot, directional, rim: where the light travels
+    Falloff falloff;                              // point, spot
+    Cone cone;                                    // spot
+    DiffuseModel diffuse = DiffuseModel::Lambert; // not rim
+    bool specularIsColor = false;                 // file wrote an RGB colour rather than a factor
+    glm::dvec3 specular{1.0};                     // factor f is stored as (f, f, f)
+    std::optional<glm::dvec3> ambient;            // not rim
+    double rimExponent = 1.3;                     // rim
 
     bool usesPosition() const { return type == LightType::Point || type == LightType::Spot; }
     bool usesDirection() const { return type != LightType::Point; }
     bool usesFalloff() const { return usesPosition(); }
     bool usesCone() const { return type == LightType::Spot; }
-    bool usesSurfaceModels() const { return type != LightType::Rim; }  // diffuse, specular, ambient
+    bool usesSurfaceModels() const { return type != LightType::Rim; } // diffuse, specular, ambient
     // The colour actually emitted: color tinted by temperature (if any), linear RGB.
     glm::dvec3 effectiveColor() const;
     bool operator==(const Light&) const = default;
@@ -58,7 +59,7 @@ struct Light {
 struct Shading {
     SpecularModel specular = SpecularModel::Phong;
     ViewerModel viewer = ViewerModel::Local;
-    double shininess = 32.0;  // used when the material has none
+    double shininess = 32.0; // used when the material has none
     bool operator==(const Shading&) const = default;
 };
 
@@ -74,4 +75,4 @@ struct Rig {
 // A default-constructed light of the given type with sensible, valid parameters (used by "Add light").
 Light makeLight(LightType type, const QString& name);
 
-}  // namespace lr
+} // namespace lr

@@ -48,7 +48,7 @@ Rig fallbackRig() {
     return rig;
 }
 
-}  // namespace
+} // namespace
 
 RigReadResult readRigFile(const QString& filePath) {
     const QFileInfo info(filePath);
@@ -58,7 +58,7 @@ RigReadResult readRigFile(const QString& filePath) {
         return fileError(filePath, QStringLiteral("cannot open: %1").arg(file.errorString()));
     if (!file.isSequential() && file.size() > kMaxRigFileBytes)
         return fileError(filePath, tooLarge(file.size()));
-    const QByteArray data = file.read(kMaxRigFileBytes + 1);  // one byte more shows "too large" on pipes
+    const QByteArray data = file.read(kMaxRigFileBytes + 1); // one byte more shows "too large" on pipes
     if (file.error() != QFileDevice::NoError)
         return fileError(filePath, QStringLiteral("cannot read: %1").arg(file.errorString()));
     return readRigJson(data, filePath);
@@ -92,7 +92,8 @@ QStringList builtinPresetNames() {
     initPresetResources();
     QStringList names;
     const QStringList files = QDir(kPresetDir).entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name);
-    for (const QString& f : files) names << f.chopped(5);
+    for (const QString& f : files)
+        names << f.chopped(5);
     return names;
 }
 
@@ -121,4 +122,4 @@ Rig defaultRig() {
     return fallbackRig();
 }
 
-}  // namespace lr
+} // namespace lr

@@ -16,15 +16,15 @@ constexpr int kRigFormatVersion = 1;
 constexpr qint64 kMaxRigFileBytes = 16 * 1024 * 1024;
 constexpr int kMaxRigLights = 4096;
 // Value limits of the format (docs/rig-format.md), for editors that want to stay within them.
-constexpr int kMaxRigNameLength = 256;       // rig and light names, in characters (code points)
-constexpr double kMaxRigIntensity = 1e6;     // intensity, colour components, specular, ambient
-constexpr double kMaxRigLength = 1e12;       // |position components|, ranges, inverse-polynomial terms
-constexpr double kMaxRigExponent = 1e4;      // falloff, cone and rim exponents, shininess
+constexpr int kMaxRigNameLength = 256;   // rig and light names, in characters (code points)
+constexpr double kMaxRigIntensity = 1e6; // intensity, colour components, specular, ambient
+constexpr double kMaxRigLength = 1e12;   // |position components|, ranges, inverse-polynomial terms
+constexpr double kMaxRigExponent = 1e4;  // falloff, cone and rim exponents, shininess
 
 struct RigReadResult {
-    std::optional<Rig> rig;  // set only when errors is empty
-    QStringList errors;      // "FILE: lights[2].falloff.range: must be a finite number > 0, got -5"
-    QStringList warnings;    // unknown keys and the like, same format
+    std::optional<Rig> rig; // set only when errors is empty
+    QStringList errors;     // "FILE: lights[2].falloff.range: must be a finite number > 0, got -5"
+    QStringList warnings;   // unknown keys and the like, same format
     bool ok() const { return rig.has_value(); }
 };
 
@@ -37,9 +37,9 @@ QByteArray writeRigJson(const Rig& rig);
 bool saveRigFile(const Rig& rig, const QString& filePath, QString* error);
 
 // Built-in presets (resources/presets/*.json embedded as :/resources/presets/NAME.json).
-QStringList builtinPresetNames();  // sorted, without ".json"
+QStringList builtinPresetNames(); // sorted, without ".json"
 QString builtinPresetPath(const QString& name);
 RigReadResult readBuiltinPreset(const QString& name);
-Rig defaultRig();  // the "default" preset; a built-in fallback if it were ever unreadable
+Rig defaultRig(); // the "default" preset; a built-in fallback if it were ever unreadable
 
-}  // namespace lr
+} // namespace lr

@@ -16,7 +16,7 @@ QString bound(double v) {
         return (v < 0 ? QStringLiteral("-1e") : QStringLiteral("1e")) + QString::number(int(e));
     return QString::fromLatin1(json::formatNumber(v));
 }
-}  // namespace
+} // namespace
 
 QString Interval::describe() const {
     QString s = QStringLiteral("a finite number");
@@ -173,4 +173,4 @@ glm::dvec3 normalizeDirection(const glm::dvec3& v) {
     return lighting::safeNormalize(v, glm::dvec3(0.0, -1.0, 0.0));
 }
 
-}  // namespace lr::rigjson
+} // namespace lr::rigjson

@@ -12,7 +12,7 @@
 
 namespace lr::rigjson {
 
-constexpr int kMaxMessages = 200;  // errors (and warnings) listed per file; the rest are counted
+constexpr int kMaxMessages = 200; // errors (and warnings) listed per file; the rest are counted
 
 // A closed or open bound on a number; infinite values mean "no bound".
 struct Interval {
@@ -20,7 +20,7 @@ struct Interval {
     bool minInclusive = true;
     double max = std::numeric_limits<double>::infinity();
     bool maxInclusive = true;
-    QString describe() const;  // "a finite number > 0 and <= 90"
+    QString describe() const; // "a finite number > 0 and <= 90"
     bool contains(double v) const;
 };
 inline Interval positive(double max) {
@@ -31,12 +31,12 @@ inline Interval nonNegative(double max) {
 }
 
 class Checker {
-public:
+  public:
     Checker(const QByteArray& source, const QString& file) : m_source(source), m_file(file) {}
 
     void error(const QString& path, const QString& reason);
     void warning(const QString& path, const QString& reason);
-    void fileError(const QString& reason);  // about the whole file: "FILE: reason"
+    void fileError(const QString& reason); // about the whole file: "FILE: reason"
     bool hasErrors() const { return !m_errors.isEmpty(); }
     RigReadResult result(std::optional<Rig> rig) const;
 
@@ -49,8 +49,8 @@ public:
     std::optional<bool> boolean(const json::Value& v, const QString& path);
     std::optional<QString> name(const json::Value& v, const QString& path);
     std::optional<glm::dvec3> color(const json::Value& v, const QString& path);
-    std::optional<glm::dvec3> point(const json::Value& v, const QString& path);      // |x| <= kMaxRigLength
-    std::optional<glm::dvec3> direction(const json::Value& v, const QString& path);  // non-zero, normalised
+    std::optional<glm::dvec3> point(const json::Value& v, const QString& path);     // |x| <= kMaxRigLength
+    std::optional<glm::dvec3> direction(const json::Value& v, const QString& path); // non-zero, normalised
     bool isObject(const json::Value& v, const QString& path);
 
     template <typename E> std::optional<E> enumValue(const json::Value& v, const QString& path) {
@@ -60,7 +60,7 @@ public:
         return std::nullopt;
     }
 
-private:
+  private:
     std::optional<glm::dvec3> vec3(const json::Value& v, const QString& path, const Interval& in,
                                    const QString& what);
     const QByteArray& m_source;
@@ -72,14 +72,14 @@ private:
 // One JSON object being read: take() the keys the format defines for it, reject() the ones it defines
 // elsewhere, and finish() to warn about the rest.
 class ObjectView {
-public:
+  public:
     ObjectView(Checker& checker, const json::Value& object, const QString& path);
 
-    const json::Value* take(const char* key);  // first occurrence (duplicates are parse errors)
+    const json::Value* take(const char* key); // first occurrence (duplicates are parse errors)
     QString path(const char* key) const { return json::appendKey(m_path, QString::fromLatin1(key)); }
     const QString& path() const { return m_path; }
-    void reject(const char* key, const QString& reason);  // present -> error at path.key
-    void finish();  // every key not taken or rejected -> "unknown key (ignored)" warning
+    void reject(const char* key, const QString& reason); // present -> error at path.key
+    void finish(); // every key not taken or rejected -> "unknown key (ignored)" warning
 
     // take() + the typed reader; leaves `out` alone when the key is absent or invalid.
     template <typename T, typename Read> void read(const char* key, T& out, Read&& reader) {
@@ -87,7 +87,7 @@ public:
             if (auto r = reader(*v, path(key))) out = *r;
     }
 
-private:
+  private:
     Checker& m_checker;
     const json::Value& m_object;
     QString m_path;
@@ -107,4 +107,4 @@ void rejectMisplaced(ObjectView& o, bool inFalloff, bool inCone, const QString& 
 // that load -> save -> load is exact; others are scaled (safely for tiny and huge components).
 glm::dvec3 normalizeDirection(const glm::dvec3& v);
 
-}  // namespace lr::rigjson
+} // namespace lr::rigjson

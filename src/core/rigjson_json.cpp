@@ -10,12 +10,12 @@ namespace lr::json {
 namespace {
 
 class Parser {
-public:
+  public:
     explicit Parser(const QByteArray& data) : m_data(data), m_p(data.constData()), m_end(m_p + data.size()) {}
 
     Document run() {
         Document doc;
-        if (m_data.startsWith("\xEF\xBB\xBF")) m_p += 3;  // a UTF-8 BOM (Windows editors) is tolerated
+        if (m_data.startsWith("\xEF\xBB\xBF")) m_p += 3; // a UTF-8 BOM (Windows editors) is tolerated
         if (const qsizetype bad = invalidUtf8At(m_data, m_p - m_data.constData()); bad >= 0)
             return fail(doc, bad,
                         QStringLiteral("not valid UTF-8 text (byte 0x%1; is this a binary file?)")
@@ -40,7 +40,7 @@ public:
         return doc;
     }
 
-private:
+  private:
     using Segment = std::variant<QString, qsizetype>;
 
     Document& fail(Document& doc, qsizetype at, const QString& reason) {
@@ -50,7 +50,7 @@ private:
             if (c == '\n')
                 line++, column = 1;
             else if ((uchar(c) & 0xC0) != 0x80)
-                column++;  // count characters, not UTF-8 bytes
+                column++; // count characters, not UTF-8 bytes
         }
         QString where = QStringLiteral("line %1, column %2").arg(line).arg(column);
         if (!m_syntaxPath.isEmpty()) where += QStringLiteral(" (in %1)").arg(m_syntaxPath);
@@ -89,7 +89,8 @@ private:
     }
 
     void skipSpace() {
-        while (m_p != m_end && (*m_p == ' ' || *m_p == '\n' || *m_p == '\r' || *m_p == '\t')) ++m_p;
+        while (m_p != m_end && (*m_p == ' ' || *m_p == '\n' || *m_p == '\r' || *m_p == '\t'))
+            ++m_p;
     }
 
     bool parseValue(Value& out) {
@@ -98,12 +99,19 @@ private:
         out.offset = qint32(m_p - m_data.constData());
         if (m_p == m_end) return unexpected("a value");
         switch (*m_p) {
-        case '{': return parseContainer(out, true);
-        case '[': return parseContainer(out, false);
-        case '"': out.kind = Value::Kind::String; return parseString(out.string);
-        case 't': return literal(out, "true", Value::Kind::Bool, true);
-        case 'f': return literal(out, "false", Value::Kind::Bool, false);
-        case 'n': return literal(out, "null", Value::Kind::Null, false);
+        case '{':
+            return parseContainer(out, true);
+        case '[':
+            return parseContainer(out, false);
+        case '"':
+            out.kind = Value::Kind::String;
+            return parseString(out.string);
+        case 't':
+            return literal(out, "true", Value::Kind::Bool, true);
+        case 'f':
+            return literal(out, "false", Value::Kind::Bool, false);
+        case 'n':
+            return literal(out, "null", Value::Kind::Null, false);
         default:
             if (*m_p == '-' || (*m_p >= '0' && *m_p <= '9')) return parseNumber(out);
             return unexpected("a value");
@@ -124,7 +132,8 @@ private:
         const char* start = m_p;
         auto digits = [&] {
             const char* d = m_p;
-            while (m_p != m_end && *m_p >= '0' && *m_p <= '9') ++m_p;
+            while (m_p != m_end && *m_p >= '0' && *m_p <= '9')
+                ++m_p;
             return m_p != d;
         };
         if (*m_p == '-') ++m_p;
@@ -133,7 +142,7 @@ private:
             if (m_p != m_end && *m_p >= '0' && *m_p <= '9')
                 return error(QStringLiteral("numbers must not have leading zeros"));
         } else if (!digits()) {
-            m_p = start;  // report "-Infinity" or "-x" as a whole
+            m_p = start; // report "-Infinity" or "-x" as a whole
             return unexpected("a value");
         }
         if (m_p != m_end && *m_p == '.') {
@@ -154,10 +163,11 @@ private:
     }
 
     bool parseString(QString& out) {
-        ++m_p;  // opening quote
+        ++m_p; // opening quote
         const char* start = m_p;
-        while (m_p != m_end && *m_p != '"' && *m_p != '\\' && uchar(*m_p) >= 0x20) ++m_p;
-        if (m_p != m_end && *m_p == '"') {  // fast path: no escapes
+        while (m_p != m_end && *m_p != '"' && *m_p != '\\' && uchar(*m_p) >= 0x20)
+            ++m_p;
+        if (m_p != m_end && *m_p == '"') { // fast path: no escapes
             out = QString::fromUtf8(start, m_p - start);
             ++m_p;
             return true;
@@ -178,14 +188,30 @@ private:
             if (++m_p == m_end) return unexpected("an escape");
             const char e = *m_p++;
             switch (e) {
-            case '"': bytes += '"'; break;
-            case '\\': bytes += '\\'; break;
-            case '/': bytes += '/'; break;
-            case 'b': bytes += '\b'; break;
-            case 'f': bytes += '\f'; break;
-            case 'n': bytes += '\n'; break;
-            case 'r': bytes += '\r'; break;
-            case 't': bytes += '\t'; break;
+            case '"':
+                bytes += '"';
+                break;
+            case '\\':
+                bytes += '\\';
+                break;
+            case '/':
+                bytes += '/';
+                break;
+            case 'b':
+                bytes += '\b';
+                break;
+            case 'f':
+                bytes += '\f';
+                break;
+            case 'n':
+                bytes += '\n';
+                break;
+            case 'r':
+                bytes += '\r';
+                break;
+            case 't':
+                bytes += '\t';
+                break;
             case 'u': {
                 char32_t cp = 0;
                 if (!hex4(cp)) return false;
@@ -233,7 +259,7 @@ private:
         const char close = object ? '}' : ']';
         ++m_p;
         skipSpace();
-        QHash<QString, qsizetype> seen;  // key -> first index, once the object is large
+        QHash<QString, qsizetype> seen; // key -> first index, once the object is large
         if (m_p != m_end && *m_p == close) {
             ++m_p;
             --m_depth;
@@ -282,14 +308,15 @@ private:
 
     static bool isDuplicate(const std::vector<Member>& members, QHash<QString, qsizetype>& seen,
                             const QString& key) {
-        constexpr size_t kLinear = 16;  // small objects: a scan; large ones (unknown data): a hash
+        constexpr size_t kLinear = 16; // small objects: a scan; large ones (unknown data): a hash
         if (members.size() < kLinear) {
             for (const Member& m : members)
                 if (m.key == key) return true;
             return false;
         }
         if (seen.isEmpty())
-            for (size_t i = 0; i < members.size(); ++i) seen.insert(members[i].key, qsizetype(i));
+            for (size_t i = 0; i < members.size(); ++i)
+                seen.insert(members[i].key, qsizetype(i));
         if (seen.contains(key)) return true;
         seen.insert(key, qsizetype(members.size()));
         return false;
@@ -308,7 +335,7 @@ private:
     qsizetype m_syntaxAt = 0;
 };
 
-}  // namespace
+} // namespace
 
 Document parse(const QByteArray& data) {
     return Parser(data).run();
@@ -320,4 +347,4 @@ const Value* Value::find(QStringView key) const {
     return nullptr;
 }
 
-}  // namespace lr::json
+} // namespace lr::json

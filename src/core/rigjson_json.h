@@ -14,8 +14,8 @@
 
 namespace lr::json {
 
-constexpr int kMaxDepth = 32;           // arrays and objects nested deeper are refused
-constexpr qint64 kMaxValues = 1 << 20;  // values in one document (a bound on memory, ~4 MiB lights max)
+constexpr int kMaxDepth = 32;          // arrays and objects nested deeper are refused
+constexpr qint64 kMaxValues = 1 << 20; // values in one document (a bound on memory, ~4 MiB lights max)
 
 struct Member;
 
@@ -23,13 +23,13 @@ struct Value {
     enum class Kind : quint8 { Null, Bool, Number, String, Array, Object };
     Kind kind = Kind::Null;
     bool boolean = false;
-    bool finite = true;  // Number: false when the text is out of the range of a double (1e999, 1e-400)
+    bool finite = true; // Number: false when the text is out of the range of a double (1e999, 1e-400)
     double number = 0.0;
-    qint32 offset = 0;  // first byte of the value in the source
-    qint32 length = 0;  // bytes of a number's text
+    qint32 offset = 0; // first byte of the value in the source
+    qint32 length = 0; // bytes of a number's text
     QString string;
-    std::vector<Value> items;     // Array
-    std::vector<Member> members;  // Object, in source order, duplicates included
+    std::vector<Value> items;    // Array
+    std::vector<Member> members; // Object, in source order, duplicates included
 
     bool isNumber() const { return kind == Kind::Number; }
     // The first member named `key`, or nullptr.
@@ -39,13 +39,13 @@ struct Value {
 struct Member {
     QString key;
     Value value;
-    bool duplicate = false;  // an earlier member has the same key (already reported by parse())
+    bool duplicate = false; // an earlier member has the same key (already reported by parse())
 };
 
 struct Document {
     Value root;
-    bool complete = false;  // false: a syntax error stopped the parse (root is partial, don't use it)
-    QStringList errors;     // "LOCATION: reason" without the file name; duplicates first, then syntax
+    bool complete = false; // false: a syntax error stopped the parse (root is partial, don't use it)
+    QStringList errors;    // "LOCATION: reason" without the file name; duplicates first, then syntax
 };
 
 Document parse(const QByteArray& data);
@@ -74,4 +74,4 @@ QByteArray formatNumber(double v);
 // UTF-8 (an unpaired surrogate, which UTF-8 cannot hold, becomes U+FFFD as in QString::toUtf8).
 QByteArray quote(const QString& s);
 
-}  // namespace lr::json
+} // namespace lr::json

@@ -7,8 +7,10 @@ namespace lr::rigjson {
 using json::Value;
 
 namespace {
-QString quoted(const QString& s) { return QLatin1Char('"') + s + QLatin1Char('"'); }
-}  // namespace
+QString quoted(const QString& s) {
+    return QLatin1Char('"') + s + QLatin1Char('"');
+}
+} // namespace
 
 void rejectMisplaced(ObjectView& o, bool inFalloff, bool inCone, const QString& light, bool hasFalloff,
                      bool hasCone) {
@@ -21,7 +23,8 @@ void rejectMisplaced(ObjectView& o, bool inFalloff, bool inCone, const QString& 
         for (const char* key : {"range", "constant", "linear", "quadratic"})
             o.reject(key, reason(key, "falloff", hasFalloff));
     if (!inCone)
-        for (const char* key : {"inner", "outer"}) o.reject(key, reason(key, "cone", hasCone));
+        for (const char* key : {"inner", "outer"})
+            o.reject(key, reason(key, "cone", hasCone));
     if (!inFalloff && !inCone) o.reject("model", QStringLiteral("belongs in \"falloff\" or \"cone\""));
 }
 
@@ -44,7 +47,7 @@ std::optional<Falloff> readFalloff(Checker& c, const Value& v, const QString& pa
         return c.number(x, p, rigjson::nonNegative(kMaxRigLength));
     };
     const QString name = model ? quoted(toString(*model)) : QString();
-    const bool any = !model;  // unknown model: check the values of every falloff field, allow all
+    const bool any = !model; // unknown model: check the values of every falloff field, allow all
     const bool needsRange = model == FalloffModel::RangePower || model == FalloffModel::RangeQuadratic;
     const bool optionalRange =
         model == FalloffModel::InversePolynomial || model == FalloffModel::InverseSquare;
@@ -130,4 +133,4 @@ std::optional<Cone> readCone(Checker& c, const Value& v, const QString& path) {
     return cone;
 }
 
-}  // namespace lr::rigjson
+} // namespace lr::rigjson

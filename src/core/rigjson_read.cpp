@@ -43,7 +43,7 @@ std::optional<Light> readLight(Checker& c, const Value& v, const QString& path) 
         c.error(o.path("type"), QStringLiteral("missing; one of %1").arg(allowedNames<LightType>()));
     if (type) l.type = *type;
     const QString a = type ? QStringLiteral("a %1 light").arg(toString(*type)) : QString();
-    const auto is = [&](bool (Light::*uses)() const) { return !type || (l.*uses)(); };  // unknown type: allow
+    const auto is = [&](bool (Light::*uses)() const) { return !type || (l.*uses)(); }; // unknown type: allow
 
     const auto name = [&](const Value& x, const QString& p) { return c.name(x, p); };
     const auto color = [&](const Value& x, const QString& p) { return c.color(x, p); };
@@ -159,7 +159,7 @@ bool readHeader(Checker& c, ObjectView& top) {
     return true;
 }
 
-}  // namespace
+} // namespace
 
 RigReadResult readRigJson(const QByteArray& data, const QString& displayName) {
     Checker c(data, displayName);
@@ -170,7 +170,8 @@ RigReadResult readRigJson(const QByteArray& data, const QString& displayName) {
         return c.result(std::nullopt);
     }
     const json::Document doc = json::parse(data);
-    for (const QString& e : doc.errors) c.fileError(e);
+    for (const QString& e : doc.errors)
+        c.fileError(e);
     if (!doc.complete) return c.result(std::nullopt);
     if (doc.root.kind != Value::Kind::Object) {
         c.expected(doc.root, QStringLiteral("(top level)"),
@@ -207,4 +208,4 @@ RigReadResult readRigJson(const QByteArray& data, const QString& displayName) {
     return c.result(std::move(rig));
 }
 
-}  // namespace lr
+} // namespace lr

@@ -16,7 +16,7 @@ bool isIdentifier(const QString& key) {
             return false;
     return true;
 }
-}  // namespace
+} // namespace
 
 // Offset of the first byte that is not well-formed UTF-8 (overlong forms, surrogates and code points
 // above U+10FFFF included), or -1.
@@ -69,7 +69,8 @@ void appendUtf8(QByteArray& out, char32_t cp) {
 }
 
 QString appendKey(const QString& path, const QString& key) {
-    constexpr qsizetype kMaxShown = 64;  // longer keys are shortened: messages stay small (no key is that long)
+    constexpr qsizetype kMaxShown =
+        64; // longer keys are shortened: messages stay small (no key is that long)
     if (key.size() > kMaxShown)
         return path + QStringLiteral("[%1...]").arg(QString::fromUtf8(quote(key.left(kMaxShown - 16))));
     if (!isIdentifier(key)) return path + QLatin1Char('[') + QString::fromUtf8(quote(key)) + QLatin1Char(']');
@@ -82,8 +83,10 @@ QString appendIndex(const QString& path, qsizetype index) {
 
 QString describe(const Value& v, const QByteArray& source) {
     switch (v.kind) {
-    case Value::Kind::Null: return QStringLiteral("null");
-    case Value::Kind::Bool: return v.boolean ? QStringLiteral("true") : QStringLiteral("false");
+    case Value::Kind::Null:
+        return QStringLiteral("null");
+    case Value::Kind::Bool:
+        return v.boolean ? QStringLiteral("true") : QStringLiteral("false");
     case Value::Kind::Number: {
         const QString text = QString::fromUtf8(source.mid(v.offset, v.length));
         const QString shown = text.size() > 40 ? text.left(37) + QStringLiteral("...") : text;
@@ -93,27 +96,29 @@ QString describe(const Value& v, const QByteArray& source) {
         const QString s = v.string.size() > 40 ? v.string.left(37) + QStringLiteral("...") : v.string;
         return QStringLiteral("the string ") + QString::fromUtf8(quote(s));
     }
-    case Value::Kind::Array: return QStringLiteral("an array of %1").arg(v.items.size());
-    case Value::Kind::Object: return QStringLiteral("an object");
+    case Value::Kind::Array:
+        return QStringLiteral("an array of %1").arg(v.items.size());
+    case Value::Kind::Object:
+        return QStringLiteral("an object");
     }
     return {};
 }
 
 QByteArray formatNumber(double v) {
-    if (!std::isfinite(v)) return QByteArrayLiteral("null");  // not JSON numbers: the reader rejects null
-    if (v == 0.0) return QByteArrayLiteral("0");              // and -0
+    if (!std::isfinite(v)) return QByteArrayLiteral("null"); // not JSON numbers: the reader rejects null
+    if (v == 0.0) return QByteArrayLiteral("0");             // and -0
     // Shortest round-trip digits, in scientific form: [-]d[.ddd]e[+-]x
     char buf[64];
     const auto r = std::to_chars(buf, buf + sizeof buf, std::abs(v), std::chars_format::scientific);
     const std::string_view sci(buf, r.ptr);
     const size_t e = sci.find('e');
     std::string digits(sci.substr(0, e));
-    if (digits.size() > 1) digits.erase(1, 1);  // drop the '.'
+    if (digits.size() > 1) digits.erase(1, 1); // drop the '.'
     const int exponent = std::atoi(std::string(sci.substr(e + 1)).c_str());
     const int k = int(digits.size());
-    const int n = exponent + 1;  // position of the decimal point relative to the digits
+    const int n = exponent + 1; // position of the decimal point relative to the digits
     std::string out = v < 0 ? "-" : "";
-    if (exponent >= -6 && exponent < 21) {  // fixed notation, as JavaScript's Number.prototype.toString
+    if (exponent >= -6 && exponent < 21) { // fixed notation, as JavaScript's Number.prototype.toString
         if (n >= k) {
             out += digits + std::string(size_t(n - k), '0');
         } else if (n > 0) {
@@ -137,13 +142,27 @@ QByteArray quote(const QString& s) {
     out += '"';
     for (const char c : utf8) {
         switch (c) {
-        case '"': out += "\\\""; break;
-        case '\\': out += "\\\\"; break;
-        case '\b': out += "\\b"; break;
-        case '\f': out += "\\f"; break;
-        case '\n': out += "\\n"; break;
-        case '\r': out += "\\r"; break;
-        case '\t': out += "\\t"; break;
+        case '"':
+            out += "\\\"";
+            break;
+        case '\\':
+            out += "\\\\";
+            break;
+        case '\b':
+            out += "\\b";
+            break;
+        case '\f':
+            out += "\\f";
+            break;
+        case '\n':
+            out += "\\n";
+            break;
+        case '\r':
+            out += "\\r";
+            break;
+        case '\t':
+            out += "\\t";
+            break;
         default:
             if (uchar(c) < 0x20) {
                 char hex[8];
@@ -158,4 +177,4 @@ QByteArray quote(const QString& s) {
     return out;
 }
 
-}  // namespace lr::json
+} // namespace lr::json

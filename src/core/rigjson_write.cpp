@@ -47,7 +47,8 @@ QByteArray blockObject(const Fields& fields, const QByteArray& indent) {
 QByteArray falloff(const Falloff& f) {
     Fields fields{{"model", name(f.model)}};
     switch (f.model) {
-    case FalloffModel::None: break;
+    case FalloffModel::None:
+        break;
     case FalloffModel::RangePower:
         fields.push_back({"range", num(f.range)});
         fields.push_back({"exponent", num(f.exponent)});
@@ -58,7 +59,9 @@ QByteArray falloff(const Falloff& f) {
         fields.push_back({"quadratic", num(f.quadratic)});
         if (f.hasRange()) fields.push_back({"range", num(f.range)});
         break;
-    case FalloffModel::RangeQuadratic: fields.push_back({"range", num(f.range)}); break;
+    case FalloffModel::RangeQuadratic:
+        fields.push_back({"range", num(f.range)});
+        break;
     case FalloffModel::InverseSquare:
         if (f.hasRange()) fields.push_back({"range", num(f.range)});
         break;
@@ -97,7 +100,7 @@ QByteArray light(const Light& l) {
     return blockObject(f, "    ");
 }
 
-}  // namespace
+} // namespace
 
 QByteArray writeRigJson(const Rig& rig) {
     QByteArray lights = "[]";
@@ -122,4 +125,4 @@ QByteArray writeRigJson(const Rig& rig) {
     return blockObject(top, "") + '\n';
 }
 
-}  // namespace lr
+} // namespace lr

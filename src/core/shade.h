@@ -13,24 +13,24 @@ namespace lr::lighting {
 // angles as cosines/radians. Built from a Light by prepareLights() (prepare.h).
 template <typename T> struct ShadeLight {
     LightType type = LightType::Point;
-    Vec3<T> position{0};   // view space (point, spot)
-    Vec3<T> direction{0, 0, -1};  // view space, unit: where the light travels (spot, directional, rim)
-    Vec3<T> color{1};      // effective colour × intensity
-    Vec3<T> specular{1};   // Sc × intensity
-    Vec3<T> ambient{0};    // Ac × intensity
+    Vec3<T> position{0};         // view space (point, spot)
+    Vec3<T> direction{0, 0, -1}; // view space, unit: where the light travels (spot, directional, rim)
+    Vec3<T> color{1};            // effective colour × intensity
+    Vec3<T> specular{1};         // Sc × intensity
+    Vec3<T> ambient{0};          // Ac × intensity
     FalloffModel falloff = FalloffModel::None;
     T range = T(-1), falloffExponent = T(2), constant = T(1), linear = T(0), quadratic = T(0);
     ConeModel cone = ConeModel::Smooth;
-    T cosInner = T(1), cosOuter = T(0), outer = T(1), coneExponent = T(1);  // outer in radians
+    T cosInner = T(1), cosOuter = T(0), outer = T(1), coneExponent = T(1); // outer in radians
     DiffuseModel diffuse = DiffuseModel::Lambert;
     T rimExponent = T(1.3);
 };
 
 template <typename T> struct Surface {
-    Vec3<T> position{0};  // view space
-    Vec3<T> normal{0, 0, 1};  // view space, unit
+    Vec3<T> position{0};     // view space
+    Vec3<T> normal{0, 0, 1}; // view space, unit
     Vec3<T> albedo{1};
-    Vec3<T> specular{1};  // material specular colour (ks)
+    Vec3<T> specular{1}; // material specular colour (ks)
     Vec3<T> emissive{0};
     T shininess = T(32);
 };
@@ -39,26 +39,33 @@ template <typename T> struct ShadeSettings {
     SpecularModel specular = SpecularModel::Phong;
     ViewerModel viewer = ViewerModel::Local;
     Vec3<T> ambient{0};
-    T distanceScale = T(1);  // 1 / bounding radius for rigs in model space, else 1
+    T distanceScale = T(1); // 1 / bounding radius for rigs in model space, else 1
 };
 
 template <typename T> T evalFalloff(const ShadeLight<T>& l, T d) {
     switch (l.falloff) {
-    case FalloffModel::None: return T(1);
-    case FalloffModel::RangePower: return falloffRangePower(d, l.range, l.falloffExponent);
+    case FalloffModel::None:
+        return T(1);
+    case FalloffModel::RangePower:
+        return falloffRangePower(d, l.range, l.falloffExponent);
     case FalloffModel::InversePolynomial:
         return falloffInversePolynomial(d, l.constant, l.linear, l.quadratic, l.range);
-    case FalloffModel::RangeQuadratic: return falloffRangeQuadratic(d, l.range);
-    case FalloffModel::InverseSquare: return falloffInverseSquare(d, l.range);
+    case FalloffModel::RangeQuadratic:
+        return falloffRangeQuadratic(d, l.range);
+    case FalloffModel::InverseSquare:
+        return falloffInverseSquare(d, l.range);
     }
     return T(0);
 }
 
 template <typename T> T evalCone(const ShadeLight<T>& l, T cosTheta) {
     switch (l.cone) {
-    case ConeModel::AnglePower: return coneAnglePower(cosTheta, l.outer, l.coneExponent);
-    case ConeModel::Smooth: return coneSmooth(cosTheta, l.cosInner, l.cosOuter, l.coneExponent);
-    case ConeModel::Hard: return coneHard(cosTheta, l.cosOuter);
+    case ConeModel::AnglePower:
+        return coneAnglePower(cosTheta, l.outer, l.coneExponent);
+    case ConeModel::Smooth:
+        return coneSmooth(cosTheta, l.cosInner, l.cosOuter, l.coneExponent);
+    case ConeModel::Hard:
+        return coneHard(cosTheta, l.cosOuter);
     }
     return T(0);
 }
@@ -70,7 +77,8 @@ template <typename T> Vec3<T> viewVector(const ShadeSettings<T>& s, const Vec3<T
 
 // Radiance one light adds at the surface (linear, HDR).
 template <typename T>
-Vec3<T> shadeLight(const ShadeLight<T>& l, const Surface<T>& s, const ShadeSettings<T>& st, const Vec3<T>& V) {
+Vec3<T> shadeLight(const ShadeLight<T>& l, const Surface<T>& s, const ShadeSettings<T>& st,
+                   const Vec3<T>& V) {
     const Vec3<T>& N = s.normal;
     if (l.type == LightType::Rim) return l.color * rimTerm(l.direction, N, V, l.rimExponent);
 
@@ -78,7 +86,7 @@ Vec3<T> shadeLight(const ShadeLight<T>& l, const Surface<T>& s, const ShadeSetti
     T attenuation = T(1);
     if (l.type != LightType::Directional) {
         const Vec3<T> toLight = l.position - s.position;
-        L = safeNormalize(toLight, N);  // a light on the surface shines along the normal
+        L = safeNormalize(toLight, N); // a light on the surface shines along the normal
         // |toLight| as dot(toLight, L): no squared intermediate, so no overflow or underflow where
         // glm::length's would (float: |toLight| > 1.8e19 or < 1e-19), and one sqrt fewer. An overflowing
         // distance (positions more than ~1.7e38 apart, where L falls back to N) becomes the largest finite
@@ -94,7 +102,7 @@ Vec3<T> shadeLight(const ShadeLight<T>& l, const Surface<T>& s, const ShadeSetti
     T S = T(0);
     if (nDotL > T(0))
         S = st.specular == SpecularModel::Phong ? specularPhong(N, L, V, s.shininess)
-                                                 : specularBlinnPhong(N, L, V, s.shininess);
+                                                : specularBlinnPhong(N, L, V, s.shininess);
     return attenuation * (l.color * s.albedo * D + l.specular * s.specular * S + l.ambient * s.albedo);
 }
 
@@ -103,8 +111,9 @@ template <typename T>
 Vec3<T> shadeSurface(const Surface<T>& s, std::span<const ShadeLight<T>> lights, const ShadeSettings<T>& st) {
     const Vec3<T> V = viewVector(st, s.position);
     Vec3<T> sum = st.ambient * s.albedo;
-    for (const ShadeLight<T>& l : lights) sum += shadeLight(l, s, st, V);
+    for (const ShadeLight<T>& l : lights)
+        sum += shadeLight(l, s, st, V);
     return sum + s.emissive;
 }
 
-}  // namespace lr::lighting
+} // namespace lr::lighting

@@ -17,12 +17,10 @@ enum class ViewerModel { Local, Infinite };
 enum class RigSpace { World, Model };
 enum class ToneMap { Clamp, Reinhard, Aces };
 
-template <typename E> struct EnumNames;  // specialised below: static constexpr std::array names
+template <typename E> struct EnumNames; // specialised below: static constexpr std::array names
 
-#define LR_ENUM_NAMES(E, ...)                                                                               \
-    template <> struct EnumNames<E> {                                                                       \
-        static constexpr std::array names{__VA_ARGS__};                                                     \
-    };
+#define LR_ENUM_NAMES(E, ...)                                                                                \
+    template <> struct EnumNames<E> { static constexpr std::array names{__VA_ARGS__}; };
 LR_ENUM_NAMES(LightType, "point", "spot", "directional", "rim")
 LR_ENUM_NAMES(FalloffModel, "none", "range-power", "inverse-polynomial", "range-quadratic", "inverse-square")
 LR_ENUM_NAMES(ConeModel, "angle-power", "smooth", "hard")
@@ -34,9 +32,13 @@ LR_ENUM_NAMES(ToneMap, "clamp", "reinhard", "aces")
 #undef LR_ENUM_NAMES
 
 template <typename E>
-concept NamedEnum = requires { EnumNames<E>::names; };
+concept NamedEnum = requires {
+    EnumNames<E>::names;
+};
 
-template <NamedEnum E> constexpr int enumCount() { return int(EnumNames<E>::names.size()); }
+template <NamedEnum E> constexpr int enumCount() {
+    return int(EnumNames<E>::names.size());
+}
 
 template <NamedEnum E> QString toString(E value) {
     return QString::fromLatin1(EnumNames<E>::names[size_t(value)]);
@@ -60,4 +62,4 @@ template <NamedEnum E> QString allowedNames() {
     return out;
 }
 
-}  // namespace lr
+} // namespace lr

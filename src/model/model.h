@@ -9,38 +9,38 @@
 #include <QString>
 #include <QStringList>
 #include <cstdint>
+#include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
-#include <glm/geometric.hpp>
 #include <vector>
 
 namespace lr {
 
 struct Vertex {
-    glm::vec3 position{0.0f};  // relative to Model::origin (keeps float precision far from the world origin)
+    glm::vec3 position{0.0f}; // relative to Model::origin (keeps float precision far from the world origin)
     glm::vec3 normal{0.0f, 0.0f, 1.0f};
-    glm::vec2 uv{0.0f};  // (0, 0) = top-left texel = first QImage row: upload QImage bits as they are
-    glm::vec4 tangent{1.0f, 0.0f, 0.0f, 1.0f};  // xyz tangent (+u), w handedness: bitangent = w cross(N, T)
-                                                // points up in the image (normal map +Y, as glTF)
-    glm::vec4 color{1.0f};                    // linear vertex colour
+    glm::vec2 uv{0.0f}; // (0, 0) = top-left texel = first QImage row: upload QImage bits as they are
+    glm::vec4 tangent{1.0f, 0.0f, 0.0f, 1.0f}; // xyz tangent (+u), w handedness: bitangent = w cross(N, T)
+                                               // points up in the image (normal map +Y, as glTF)
+    glm::vec4 color{1.0f};                     // linear vertex colour
 };
 
 struct Texture {
-    QString name;  // file path or "*N" for embedded
-    QImage image;  // RGBA8888, as stored (sRGB-encoded for colour textures)
+    QString name; // file path or "*N" for embedded
+    QImage image; // RGBA8888, as stored (sRGB-encoded for colour textures)
 };
 
 struct Material {
     QString name;
-    glm::vec4 baseColor{1.0f};  // linear RGBA factor
-    int baseColorTexture = -1;  // index into Model::textures, sampled as sRGB
-    int normalTexture = -1;     // linear, tangent space
-    int emissiveTexture = -1;   // sRGB
-    glm::vec3 emissive{0.0f};   // linear factor
-    glm::vec3 specular{1.0f};   // ks
-    float shininess = -1.0f;    // < 0: use the rig's shading.shininess
+    glm::vec4 baseColor{1.0f}; // linear RGBA factor
+    int baseColorTexture = -1; // index into Model::textures, sampled as sRGB
+    int normalTexture = -1;    // linear, tangent space
+    int emissiveTexture = -1;  // sRGB
+    glm::vec3 emissive{0.0f};  // linear factor
+    glm::vec3 specular{1.0f};  // ks
+    float shininess = -1.0f;   // < 0: use the rig's shading.shininess
     bool doubleSided = false;
     bool operator==(const Material&) const = default;
 };
@@ -48,38 +48,38 @@ struct Material {
 struct Mesh {
     QString name;
     std::vector<Vertex> vertices;
-    std::vector<std::uint32_t> indices;  // triangles
-    int material = 0;                    // index into Model::materials
+    std::vector<std::uint32_t> indices; // triangles
+    int material = 0;                   // index into Model::materials
     bool hasVertexColors = false;
     bool hasTangents = false;
 };
 
 struct Camera {
     QString name;
-    glm::dvec3 position{0.0, 0.0, 5.0};  // world
-    glm::dvec3 forward{0.0, 0.0, -1.0};  // unit
-    glm::dvec3 up{0.0, 1.0, 0.0};        // unit
+    glm::dvec3 position{0.0, 0.0, 5.0}; // world
+    glm::dvec3 forward{0.0, 0.0, -1.0}; // unit
+    glm::dvec3 up{0.0, 1.0, 0.0};       // unit
     double yfovDegrees = 45.0;
-    double znear = 0.01, zfar = 1000.0;  // zfar <= 0: infinite
-    double aspect = 0.0;                 // 0: from the viewport
+    double znear = 0.01, zfar = 1000.0; // zfar <= 0: infinite
+    double aspect = 0.0;                // 0: from the viewport
 };
 
 struct Bounds {
-    glm::dvec3 min{0.0}, max{0.0};  // world
+    glm::dvec3 min{0.0}, max{0.0}; // world
     glm::dvec3 center() const { return (min + max) * 0.5; }
-    double radius() const;  // half the diagonal; 1 when empty
+    double radius() const; // half the diagonal; 1 when empty
 };
 
 struct Model {
     QString path;
-    glm::dvec3 origin{0.0};  // world position that Vertex::position is relative to
+    glm::dvec3 origin{0.0}; // world position that Vertex::position is relative to
     std::vector<Mesh> meshes;
-    std::vector<Material> materials;  // never empty after a successful load
+    std::vector<Material> materials; // never empty after a successful load
     std::vector<Texture> textures;
     std::vector<Camera> cameras;
-    Rig lights;              // the file's own lights (world space), empty when it has none
+    Rig lights; // the file's own lights (world space), empty when it has none
     Bounds bounds;
-    QStringList warnings;    // degenerate geometry dropped, textures missing, ...
+    QStringList warnings; // degenerate geometry dropped, textures missing, ...
     // Texture references (as the file writes them) refused only because they lie outside the model's
     // folder, whose files exist: loading again with ModelLoadOptions::allowTexturesOutsideFolder would
     // use them (the editor asks). Never Windows drive paths, which stay refused. Each has a warning too.
@@ -94,4 +94,4 @@ struct Model {
 Model makeSphere(double radius, int segments, int rings, const glm::dvec3& center = glm::dvec3(0.0));
 Model makePlane(double halfSize, const glm::dvec3& center = glm::dvec3(0.0));
 
-}  // namespace lr
+} // namespace lr

@@ -15,23 +15,33 @@ namespace lr {
 namespace {
 using lighting::safeNormalize;
 
-double finiteOr(double v, double fallback) { return std::isfinite(v) ? v : fallback; }
-double clampedFov(double deg) { return std::clamp(finiteOr(deg, 45.0), 1e-3, 179.0); }
-}  // namespace
+double finiteOr(double v, double fallback) {
+    return std::isfinite(v) ? v : fallback;
+}
+double clampedFov(double deg) {
+    return std::clamp(finiteOr(deg, 45.0), 1e-3, 179.0);
+}
+} // namespace
 
-glm::dvec3 ViewCamera::forward() const { return safeNormalize(target - eye, glm::dvec3(0, 0, -1)); }
+glm::dvec3 ViewCamera::forward() const {
+    return safeNormalize(target - eye, glm::dvec3(0, 0, -1));
+}
 
 glm::dvec3 ViewCamera::right() const {
     const glm::dvec3 f = forward();
     glm::dvec3 r = glm::cross(f, safeNormalize(up, glm::dvec3(0, 1, 0)));
-    if (!(glm::dot(r, r) > 1e-20))  // looking along up: pick any perpendicular
+    if (!(glm::dot(r, r) > 1e-20)) // looking along up: pick any perpendicular
         r = glm::cross(f, std::abs(f.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0));
     return safeNormalize(r, glm::dvec3(1, 0, 0));
 }
 
-glm::dvec3 ViewCamera::trueUp() const { return glm::cross(right(), forward()); }
+glm::dvec3 ViewCamera::trueUp() const {
+    return glm::cross(right(), forward());
+}
 
-double ViewCamera::distance() const { return glm::length(target - eye); }
+double ViewCamera::distance() const {
+    return glm::length(target - eye);
+}
 
 glm::dmat4 ViewCamera::view() const {
     const glm::dvec3 f = forward(), r = right(), u = glm::cross(r, f);
@@ -70,7 +80,7 @@ ViewCamera ViewCamera::withClipPlanes(const glm::dvec3& center, double radius) c
     const double r = radius > 0.0 && std::isfinite(radius) ? radius * 1.02 : 1.0;
     const double depth = glm::dot(center - eye, forward());
     double farPlane = depth + r;
-    if (!(farPlane > 0.0)) farPlane = r;  // the scene is behind the camera: anything sane
+    if (!(farPlane > 0.0)) farPlane = r; // the scene is behind the camera: anything sane
     c.zfar = farPlane;
     c.znear = std::max(depth - r, farPlane * 1e-5);
     return c;
@@ -84,11 +94,12 @@ void ViewCamera::orbit(double yawDeg, double pitchDeg) {
     offset = glm::angleAxis(yaw, worldUp) * offset;
     // Keep the pitch strictly between straight down and straight up so `up` stays usable.
     const double len = glm::length(offset);
-    const double current = std::acos(std::clamp(glm::dot(offset / len, worldUp), -1.0, 1.0));  // from up
+    const double current = std::acos(std::clamp(glm::dot(offset / len, worldUp), -1.0, 1.0)); // from up
     const double minAngle = glm::radians(0.5), maxAngle = glm::radians(179.5);
     const double wanted = std::clamp(current - glm::radians(finiteOr(pitchDeg, 0.0)), minAngle, maxAngle);
     glm::dvec3 axis = glm::cross(worldUp, offset);
-    if (glm::dot(axis, axis) > 0.0) offset = glm::angleAxis(wanted - current, safeNormalize(axis, worldUp)) * offset;
+    if (glm::dot(axis, axis) > 0.0)
+        offset = glm::angleAxis(wanted - current, safeNormalize(axis, worldUp)) * offset;
     eye = target + offset;
 }
 
@@ -119,21 +130,27 @@ void ViewCamera::frameAll(const Bounds& bounds, double aspect) {
 }
 
 QStringList standardViewNames() {
-    return {QStringLiteral("front"), QStringLiteral("back"),  QStringLiteral("left"),
-            QStringLiteral("right"), QStringLiteral("top"),   QStringLiteral("three-quarter")};
+    return {QStringLiteral("front"), QStringLiteral("back"), QStringLiteral("left"),
+            QStringLiteral("right"), QStringLiteral("top"),  QStringLiteral("three-quarter")};
 }
 
 std::optional<ViewCamera> standardView(const QString& name, const Bounds& bounds, double aspect) {
     glm::dvec3 toEye, up(0, 1, 0);
-    if (name == QLatin1String("front")) toEye = {0, 0, 1};
-    else if (name == QLatin1String("back")) toEye = {0, 0, -1};
-    else if (name == QLatin1String("left")) toEye = {-1, 0, 0};
-    else if (name == QLatin1String("right")) toEye = {1, 0, 0};
-    else if (name == QLatin1String("top")) toEye = {0, 1, 0}, up = {0, 0, -1};
+    if (name == QLatin1String("front"))
+        toEye = {0, 0, 1};
+    else if (name == QLatin1String("back"))
+        toEye = {0, 0, -1};
+    else if (name == QLatin1String("left"))
+        toEye = {-1, 0, 0};
+    else if (name == QLatin1String("right"))
+        toEye = {1, 0, 0};
+    else if (name == QLatin1String("top"))
+        toEye = {0, 1, 0}, up = {0, 0, -1};
     else if (name == QLatin1String("three-quarter")) {
         const double az = glm::radians(45.0), el = glm::radians(30.0);
         toEye = {std::sin(az) * std::cos(el), std::sin(el), std::cos(az) * std::cos(el)};
-    } else return std::nullopt;
+    } else
+        return std::nullopt;
     ViewCamera c;
     c.up = up;
     c.target = bounds.center();
@@ -154,4 +171,4 @@ ViewCamera fromModelCamera(const Camera& camera, double focusDistance) {
     return c;
 }
 
-}  // namespace lr
+} // namespace lr

@@ -16,18 +16,18 @@ namespace lr {
 struct ViewCamera {
     glm::dvec3 eye{0.0, 0.0, 5.0};
     glm::dvec3 target{0.0};
-    glm::dvec3 up{0.0, 1.0, 0.0};  // world up hint; need not be orthogonal to the view direction
+    glm::dvec3 up{0.0, 1.0, 0.0}; // world up hint; need not be orthogonal to the view direction
     double yfovDeg = 45.0;
-    double znear = 0.0;  // <= 0: chosen per frame from the scene bounds (clipPlanesFor)
-    double zfar = 0.0;   // <= 0 with znear > 0: infinite far plane; with znear <= 0: automatic too
+    double znear = 0.0; // <= 0: chosen per frame from the scene bounds (clipPlanesFor)
+    double zfar = 0.0;  // <= 0 with znear > 0: infinite far plane; with znear <= 0: automatic too
 
-    glm::dvec3 forward() const;  // unit, eye -> target (falls back to -Z when eye == target)
-    glm::dvec3 right() const;    // unit
-    glm::dvec3 trueUp() const;   // unit, orthogonal to forward and right
-    double distance() const;     // |target - eye|
+    glm::dvec3 forward() const; // unit, eye -> target (falls back to -Z when eye == target)
+    glm::dvec3 right() const;   // unit
+    glm::dvec3 trueUp() const;  // unit, orthogonal to forward and right
+    double distance() const;    // |target - eye|
 
-    glm::dmat4 view() const;                   // world -> view
-    glm::dmat4 projection(double aspect) const;  // needs znear > 0 (use withClipPlanes first)
+    glm::dmat4 view() const;                    // world -> view
+    glm::dmat4 projection(double aspect) const; // needs znear > 0 (use withClipPlanes first)
     // Projection of the sub-rectangle [x0,x1]×[y0,y1] (NDC, -1..1) of the full image: for tiled rendering.
     glm::dmat4 projection(double aspect, double x0, double y0, double x1, double y1) const;
 
@@ -37,7 +37,7 @@ struct ViewCamera {
     // Interaction. Angles in degrees; pan offsets in fractions of the viewport height.
     void orbit(double yawDeg, double pitchDeg);
     void pan(double dx, double dy);
-    void dolly(double factor);  // distance *= factor (factor > 0); the target stays
+    void dolly(double factor); // distance *= factor (factor > 0); the target stays
     // Keep the view direction, look at the bounds and back off until they fit.
     void frameAll(const Bounds& bounds, double aspect);
 
@@ -52,4 +52,4 @@ std::optional<ViewCamera> standardView(const QString& name, const Bounds& bounds
 // (<= 0: 1 unit). Its clip planes are kept.
 ViewCamera fromModelCamera(const Camera& camera, double focusDistance = 0.0);
 
-}  // namespace lr
+} // namespace lr

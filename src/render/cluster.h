@@ -10,10 +10,10 @@
 #include "core/shade.h"
 
 #include <cstdint>
-#include <limits>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <limits>
 #include <span>
 #include <vector>
 

@@ -9,7 +9,7 @@ namespace lr {
 
 struct FloatImage {
     int width = 0, height = 0;
-    std::vector<glm::vec4> pixels;  // row-major, top row first
+    std::vector<glm::vec4> pixels; // row-major, top row first
 
     bool isNull() const { return width <= 0 || height <= 0; }
     const glm::vec4& at(int x, int y) const { return pixels[size_t(y) * size_t(width) + size_t(x)]; }
@@ -18,11 +18,11 @@ struct FloatImage {
 
 // What each pixel's surface was shaded with (view space). Background pixels have position.w = 0.
 struct GBuffer {
-    FloatImage position;  // xyz, w = 1 where a surface was drawn
-    FloatImage normal;    // unit normal as shaded (after normal map and double-sided flip), w = 1
-    FloatImage albedo;    // linear rgb, w = alpha
-    FloatImage specular;  // ks rgb, w = shininess
-    FloatImage emissive;  // linear rgb
+    FloatImage position; // xyz, w = 1 where a surface was drawn
+    FloatImage normal;   // unit normal as shaded (after normal map and double-sided flip), w = 1
+    FloatImage albedo;   // linear rgb, w = alpha
+    FloatImage specular; // ks rgb, w = shininess
+    FloatImage emissive; // linear rgb
 };
 
-}  // namespace lr
+} // namespace lr

@@ -25,8 +25,10 @@ struct Builder {
         glm::dvec3 a = toView(worldA), b = toView(worldB);
         const double limit = -nearClip;
         if (!(a.z <= limit) && !(b.z <= limit)) return;
-        if (!(a.z <= limit)) a = b + (a - b) * ((limit - b.z) / (a.z - b.z));
-        else if (!(b.z <= limit)) b = a + (b - a) * ((limit - a.z) / (b.z - a.z));
+        if (!(a.z <= limit))
+            a = b + (a - b) * ((limit - b.z) / (a.z - b.z));
+        else if (!(b.z <= limit))
+            b = a + (b - a) * ((limit - a.z) / (b.z - a.z));
         if (!std::isfinite(a.x + a.y + a.z + b.x + b.y + b.z)) return;
         out.lines.push_back({glm::vec3(a), c, {}});
         out.lines.push_back({glm::vec3(b), c, {}});
@@ -34,8 +36,9 @@ struct Builder {
     void circle(const glm::dvec3& center, const glm::dvec3& normal, double radius, const glm::vec4& c,
                 int segments = 48) {
         const glm::dvec3 n = safeNormalize(normal, glm::dvec3(0, 1, 0));
-        const glm::dvec3 u = safeNormalize(glm::cross(n, std::abs(n.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0)),
-                                           glm::dvec3(1, 0, 0));
+        const glm::dvec3 u =
+            safeNormalize(glm::cross(n, std::abs(n.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0)),
+                          glm::dvec3(1, 0, 0));
         const glm::dvec3 v = glm::cross(n, u);
         glm::dvec3 prev = center + u * radius;
         for (int i = 1; i <= segments; ++i) {
@@ -48,11 +51,13 @@ struct Builder {
     void arrow(const glm::dvec3& from, const glm::dvec3& dir, double length, const glm::vec4& c) {
         const glm::dvec3 tip = from + dir * length;
         line(from, tip, c);
-        const glm::dvec3 side = safeNormalize(glm::cross(dir, std::abs(dir.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0)),
-                                              glm::dvec3(1, 0, 0));
+        const glm::dvec3 side =
+            safeNormalize(glm::cross(dir, std::abs(dir.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0)),
+                          glm::dvec3(1, 0, 0));
         const glm::dvec3 side2 = glm::cross(dir, side);
         const double head = length * 0.2;
-        for (const glm::dvec3& s : {side, -side, side2, -side2}) line(tip, tip - dir * head + s * head * 0.5, c);
+        for (const glm::dvec3& s : {side, -side, side2, -side2})
+            line(tip, tip - dir * head + s * head * 0.5, c);
     }
 };
 
@@ -62,16 +67,17 @@ glm::vec4 displayColor(const Light& l, float alpha) {
     const double m = std::max({c.x, c.y, c.z});
     c = m > 0.0 && std::isfinite(m) ? c / m : glm::dvec3(1.0);
     if (!l.enabled) c = glm::dvec3(0.45);
-    return {float(lighting::linearToSrgb(c.x)), float(lighting::linearToSrgb(c.y)), float(lighting::linearToSrgb(c.z)),
-            alpha};
+    return {float(lighting::linearToSrgb(c.x)), float(lighting::linearToSrgb(c.y)),
+            float(lighting::linearToSrgb(c.z)), alpha};
 }
 
 // The finite world range of a point or spot light, or a negative value when it has none.
 double worldRange(const Rig& rig, const SceneFrame& frame, const Light& l) {
     const Falloff& f = l.falloff;
-    const bool bounded = f.model == FalloffModel::RangePower || f.model == FalloffModel::RangeQuadratic ||
-                         ((f.model == FalloffModel::InversePolynomial || f.model == FalloffModel::InverseSquare) &&
-                          f.hasRange());
+    const bool bounded =
+        f.model == FalloffModel::RangePower || f.model == FalloffModel::RangeQuadratic ||
+        ((f.model == FalloffModel::InversePolynomial || f.model == FalloffModel::InverseSquare) &&
+         f.hasRange());
     if (!bounded) return -1.0;
     const double r = f.range / distanceScale(rig, frame);
     return std::isfinite(r) ? r : -1.0;
@@ -92,14 +98,14 @@ void addGrid(Builder& b, const Bounds& bounds, double radius) {
     }
 }
 
-}  // namespace
+} // namespace
 
 glm::dvec3 directionalAnchor(const SceneFrame& frame, const glm::dvec3& direction) {
     return frame.center - safeNormalize(direction, glm::dvec3(0, -1, 0)) * (frame.radius * 1.6);
 }
 
-GizmoGeometry buildGizmos(const Rig& rig, const SceneFrame& frame, const Bounds& bounds, const glm::dmat4& view,
-                          const GizmoOptions& options) {
+GizmoGeometry buildGizmos(const Rig& rig, const SceneFrame& frame, const Bounds& bounds,
+                          const glm::dmat4& view, const GizmoOptions& options) {
     GizmoGeometry out;
     Builder b{view, out, std::max(options.nearClip, 0.0)};
     const double radius = frame.radius > 0.0 && std::isfinite(frame.radius) ? frame.radius : 1.0;
@@ -107,7 +113,8 @@ GizmoGeometry buildGizmos(const Rig& rig, const SceneFrame& frame, const Bounds&
     if (!options.lights) return out;
     for (size_t i = 0; i < rig.lights.size(); ++i) {
         const Light& l = rig.lights[i];
-        const bool selected = std::find(options.selected.begin(), options.selected.end(), int(i)) != options.selected.end();
+        const bool selected =
+            std::find(options.selected.begin(), options.selected.end(), int(i)) != options.selected.end();
         const glm::vec4 strong = displayColor(l, selected ? 1.0f : 0.8f);
         const glm::vec4 faint = displayColor(l, selected ? 0.7f : 0.35f);
         const glm::dvec3 dir = safeNormalize(l.direction, glm::dvec3(0, -1, 0));
@@ -128,8 +135,9 @@ GizmoGeometry buildGizmos(const Rig& rig, const SceneFrame& frame, const Bounds&
                     const glm::dvec3 centre = at + dir * (len * std::cos(a));
                     const double r = len * std::sin(a);
                     b.circle(centre, dir, r, c, 40);
-                    const glm::dvec3 u = safeNormalize(glm::cross(dir, std::abs(dir.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0)),
-                                                       glm::dvec3(1, 0, 0));
+                    const glm::dvec3 u = safeNormalize(
+                        glm::cross(dir, std::abs(dir.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0)),
+                        glm::dvec3(1, 0, 0));
                     const glm::dvec3 v = glm::cross(dir, u);
                     for (int k = 0; k < spokes; ++k) {
                         const double t = kTwoPi * k / spokes;
@@ -152,4 +160,4 @@ GizmoGeometry buildGizmos(const Rig& rig, const SceneFrame& frame, const Bounds&
     return out;
 }
 
-}  // namespace lr::render
+} // namespace lr::render

@@ -13,28 +13,29 @@
 namespace lr::render {
 
 struct GizmoVertex {
-    glm::vec3 position{0.0f};  // view space
-    glm::vec4 color{1.0f};     // display colour (sRGB-encoded), straight alpha
-    glm::vec2 point{0.0f};     // point sprites: size in pixels, shape (0 point, 1 spot, 2 directional, 3 rim; +8 selected)
+    glm::vec3 position{0.0f}; // view space
+    glm::vec4 color{1.0f};    // display colour (sRGB-encoded), straight alpha
+    glm::vec2 point{
+        0.0f}; // point sprites: size in pixels, shape (0 point, 1 spot, 2 directional, 3 rim; +8 selected)
 };
 
 struct GizmoGeometry {
-    std::vector<GizmoVertex> lines;   // GL_LINES pairs
-    std::vector<GizmoVertex> points;  // GL_POINTS
+    std::vector<GizmoVertex> lines;  // GL_LINES pairs
+    std::vector<GizmoVertex> points; // GL_POINTS
 };
 
 struct GizmoOptions {
     bool lights = true;
     bool grid = false;
-    std::vector<int> selected;  // light indices
+    std::vector<int> selected; // light indices
     double iconPixels = 14.0;
-    double nearClip = 0.0;  // view-space distance in front of the eye; geometry nearer is clipped away
+    double nearClip = 0.0; // view-space distance in front of the eye; geometry nearer is clipped away
 };
 
 // Where a directional or rim light's gizmo is drawn (world): outside the bounding sphere, upstream.
 glm::dvec3 directionalAnchor(const SceneFrame& frame, const glm::dvec3& direction);
 
-GizmoGeometry buildGizmos(const Rig& rig, const SceneFrame& frame, const Bounds& bounds, const glm::dmat4& view,
-                          const GizmoOptions& options);
+GizmoGeometry buildGizmos(const Rig& rig, const SceneFrame& frame, const Bounds& bounds,
+                          const glm::dmat4& view, const GizmoOptions& options);
 
-}  // namespace lr::render
+} // namespace lr::render

@@ -21,4 +21,4 @@ LightTexels packLight(const lighting::ShadeLight<float>& l) {
     return t;
 }
 
-}  // namespace lr::render
+} // namespace lr::render

@@ -13,4 +13,4 @@ using LightTexels = std::array<float, 4 * kLightTexels>;
 
 LightTexels packLight(const lighting::ShadeLight<float>& l);
 
-}  // namespace lr::render
+} // namespace lr::render

@@ -8,8 +8,8 @@
 
 #include <algorithm>
 #include <array>
-#include <cstring>
 #include <cmath>
+#include <cstring>
 
 namespace lr {
 
@@ -31,7 +31,7 @@ bool fail(QString* error, const QString& message) {
     return false;
 }
 
-}  // namespace
+} // namespace
 
 OffscreenRenderer::OffscreenRenderer() = default;
 
@@ -53,21 +53,29 @@ bool OffscreenRenderer::initialize(QString* error) {
     m_context = std::make_unique<QOpenGLContext>();
     m_context->setFormat(contextFormat());
     if (!m_surface->isValid() || !m_context->create() || !m_context->makeCurrent(m_surface.get()))
-        return fail(error, QStringLiteral("could not create an OpenGL 3.3 core profile context on the '%1' platform "
-                                          "(LightRig renders with OpenGL: run it with a display, e.g. under xvfb-run -a)")
-                               .arg(platform));
+        return fail(
+            error,
+            QStringLiteral("could not create an OpenGL 3.3 core profile context on the '%1' platform "
+                           "(LightRig renders with OpenGL: run it with a display, e.g. under xvfb-run -a)")
+                .arg(platform));
     const QSurfaceFormat got = m_context->format();
-    if (m_context->isOpenGLES() || got.version() < qMakePair(3, 3) || got.profile() != QSurfaceFormat::CoreProfile)
-        return fail(error, QStringLiteral("OpenGL 3.3 core profile is not available (got %1 %2.%3%4)")
-                               .arg(m_context->isOpenGLES() ? QStringLiteral("OpenGL ES") : QStringLiteral("OpenGL"))
-                               .arg(got.majorVersion())
-                               .arg(got.minorVersion())
-                               .arg(got.profile() == QSurfaceFormat::CoreProfile ? QString() : QStringLiteral(" compatibility")));
-    if (!m_gl.initializeOpenGLFunctions()) return fail(error, QStringLiteral("cannot resolve the OpenGL 3.3 core functions"));
+    if (m_context->isOpenGLES() || got.version() < qMakePair(3, 3) ||
+        got.profile() != QSurfaceFormat::CoreProfile)
+        return fail(
+            error, QStringLiteral("OpenGL 3.3 core profile is not available (got %1 %2.%3%4)")
+                       .arg(m_context->isOpenGLES() ? QStringLiteral("OpenGL ES") : QStringLiteral("OpenGL"))
+                       .arg(got.majorVersion())
+                       .arg(got.minorVersion())
+                       .arg(got.profile() == QSurfaceFormat::CoreProfile ? QString()
+                                                                         : QStringLiteral(" compatibility")));
+    if (!m_gl.initializeOpenGLFunctions())
+        return fail(error, QStringLiteral("cannot resolve the OpenGL 3.3 core functions"));
     return m_renderer.initialize(error);
 }
 
-bool OffscreenRenderer::makeCurrent() { return m_context && m_context->makeCurrent(m_surface.get()); }
+bool OffscreenRenderer::makeCurrent() {
+    return m_context && m_context->makeCurrent(m_surface.get());
+}
 
 QString OffscreenRenderer::glDescription() const {
     if (!m_context || QOpenGLContext::currentContext() != m_context.get()) return {};
@@ -77,7 +85,8 @@ QString OffscreenRenderer::glDescription() const {
         .arg(QString::fromLatin1(reinterpret_cast<const char*>(gl->glGetString(GL_RENDERER))))
         .arg(f.majorVersion())
         .arg(f.minorVersion())
-        .arg(f.profile() == QSurfaceFormat::CoreProfile ? QStringLiteral("core") : QStringLiteral("compatibility"));
+        .arg(f.profile() == QSurfaceFormat::CoreProfile ? QStringLiteral("core")
+                                                        : QStringLiteral("compatibility"));
 }
 
 bool OffscreenRenderer::setModel(std::shared_ptr<const Model> model, QString* error) {
@@ -107,7 +116,9 @@ bool OffscreenRenderer::ensureTarget(QSize size, QString* error) {
     m_gl.glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (!ok) {
         releaseTarget();
-        return fail(error, QStringLiteral("cannot create a %1x%2 output framebuffer").arg(size.width()).arg(size.height()));
+        return fail(
+            error,
+            QStringLiteral("cannot create a %1x%2 output framebuffer").arg(size.width()).arg(size.height()));
     }
     m_targetSize = size;
     return true;
@@ -124,18 +135,24 @@ QImage OffscreenRenderer::renderImage(const ViewCamera& camera, QSize size, cons
                                       int supersample, QString* error, const TileProgress& progress) {
     if (!makeCurrent()) return fail(error, QStringLiteral("no OpenGL context")), QImage();
     if (size.isEmpty() || size.width() > 65536 || size.height() > 65536)
-        return fail(error, QStringLiteral("image size %1x%2 is out of range").arg(size.width()).arg(size.height())), QImage();
+        return fail(error,
+                    QStringLiteral("image size %1x%2 is out of range").arg(size.width()).arg(size.height())),
+               QImage();
     const int ss = std::clamp(supersample, 1, 4);
     const QSize full = size * ss;
     QImage out(size, QImage::Format_RGBA8888);
-    if (out.isNull()) return fail(error, QStringLiteral("not enough memory for a %1x%2 image").arg(size.width()).arg(size.height())), QImage();
-    const int tile = std::max(ss, maxTileSize() / ss * ss);  // tiles map to whole output pixels
+    if (out.isNull())
+        return fail(error, QStringLiteral("not enough memory for a %1x%2 image")
+                               .arg(size.width())
+                               .arg(size.height())),
+               QImage();
+    const int tile = std::max(ss, maxTileSize() / ss * ss); // tiles map to whole output pixels
     const int total = ((full.width() + tile - 1) / tile) * ((full.height() + tile - 1) / tile);
     int done = 0;
     const auto keepGoing = [&] {
         if (!progress) return true;
         if (!progress(done, total)) return fail(error, QStringLiteral("cancelled"));
-        return makeCurrent() || fail(error, QStringLiteral("no OpenGL context"));  // it may have switched
+        return makeCurrent() || fail(error, QStringLiteral("no OpenGL context")); // it may have switched
     };
     if (!keepGoing()) return QImage();
     for (int ty = 0; ty < full.height(); ty += tile) {
@@ -153,10 +170,11 @@ QImage OffscreenRenderer::renderImage(const ViewCamera& camera, QSize size, cons
             m_gl.glReadPixels(0, 0, rect.width(), rect.height(), GL_RGBA, GL_UNSIGNED_BYTE, part.bits());
             m_gl.glPixelStorei(GL_PACK_ROW_LENGTH, 0);
             m_gl.glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-            part = downsampleLinear(std::move(part).mirrored(), ss);  // GL rows run bottom-up
+            part = downsampleLinear(std::move(part).mirrored(), ss); // GL rows run bottom-up
             const QPoint at(tx / ss, ty / ss);
             for (int y = 0; y < part.height(); ++y)
-                std::memcpy(out.scanLine(at.y() + y) + size_t(at.x()) * 4, part.constScanLine(y), size_t(part.width()) * 4);
+                std::memcpy(out.scanLine(at.y() + y) + size_t(at.x()) * 4, part.constScanLine(y),
+                            size_t(part.width()) * 4);
             ++done;
             if (!keepGoing()) return QImage();
         }
@@ -169,7 +187,9 @@ bool OffscreenRenderer::renderFrame(const ViewCamera& camera, QSize size, const 
     if (!makeCurrent()) return fail(error, QStringLiteral("no OpenGL context"));
     if (size.isEmpty() || size.width() > maxTileSize() || size.height() > maxTileSize())
         return fail(error, QStringLiteral("frame size %1x%2 must be within one tile (%3)")
-                               .arg(size.width()).arg(size.height()).arg(maxTileSize()));
+                               .arg(size.width())
+                               .arg(size.height())
+                               .arg(maxTileSize()));
     if (!ensureTarget(size, error)) return false;
     if (!m_renderer.render(camera, size, settings, m_fbo)) return fail(error, m_renderer.lastError());
     m_gl.glFinish();
@@ -181,7 +201,9 @@ bool OffscreenRenderer::renderRadiance(const ViewCamera& camera, QSize size, con
     if (!makeCurrent()) return fail(error, QStringLiteral("no OpenGL context"));
     if (size.isEmpty() || size.width() > maxTileSize() || size.height() > maxTileSize())
         return fail(error, QStringLiteral("float read-back size %1x%2 must be within one tile (%3)")
-                               .arg(size.width()).arg(size.height()).arg(maxTileSize()));
+                               .arg(size.width())
+                               .arg(size.height())
+                               .arg(maxTileSize()));
     RenderSettings s = settings;
     s.hdrTarget = true;
     s.hdrFloat32 = true;
@@ -197,7 +219,9 @@ bool OffscreenRenderer::renderGBuffer(const ViewCamera& camera, QSize size, cons
     if (!makeCurrent()) return fail(error, QStringLiteral("no OpenGL context"));
     if (size.isEmpty() || size.width() > maxTileSize() || size.height() > maxTileSize())
         return fail(error, QStringLiteral("G-buffer size %1x%2 must be within one tile (%3)")
-                               .arg(size.width()).arg(size.height()).arg(maxTileSize()));
+                               .arg(size.width())
+                               .arg(size.height())
+                               .arg(maxTileSize()));
     if (!m_renderer.renderGBuffer(camera, size, settings, out)) return fail(error, m_renderer.lastError());
     return true;
 }
@@ -206,14 +230,18 @@ QImage downsampleLinear(const QImage& image, int factor) {
     if (factor <= 1 || image.isNull()) return image;
     static const std::array<float, 256> toLinear = [] {
         std::array<float, 256> t{};
-        for (int i = 0; i < 256; ++i) t[size_t(i)] = float(lighting::srgbToLinear(i / 255.0));
+        for (int i = 0; i < 256; ++i)
+            t[size_t(i)] = float(lighting::srgbToLinear(i / 255.0));
         return t;
     }();
-    const QImage src = image.format() == QImage::Format_RGBA8888 ? image : image.convertToFormat(QImage::Format_RGBA8888);
+    const QImage src =
+        image.format() == QImage::Format_RGBA8888 ? image : image.convertToFormat(QImage::Format_RGBA8888);
     const int w = src.width() / factor, h = src.height() / factor;
     QImage out(w, h, QImage::Format_RGBA8888);
     const float n = float(factor * factor);
-    auto encode = [](double v) { return uchar(std::lround(std::clamp(lighting::linearToSrgb(v), 0.0, 1.0) * 255.0)); };
+    auto encode = [](double v) {
+        return uchar(std::lround(std::clamp(lighting::linearToSrgb(v), 0.0, 1.0) * 255.0));
+    };
     for (int y = 0; y < h; ++y) {
         uchar* o = out.scanLine(y);
         for (int x = 0; x < w; ++x) {
@@ -237,4 +265,4 @@ QImage downsampleLinear(const QImage& image, int factor) {
     return out;
 }
 
-}  // namespace lr
+} // namespace lr

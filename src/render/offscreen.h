@@ -24,7 +24,7 @@ namespace lr {
 using TileProgress = std::function<bool(int done, int total)>;
 
 class OffscreenRenderer {
-public:
+  public:
     OffscreenRenderer();
     ~OffscreenRenderer();
     OffscreenRenderer(const OffscreenRenderer&) = delete;
@@ -32,9 +32,9 @@ public:
 
     // Creates the context (3.3 core profile; a clear error when the platform cannot give one).
     bool initialize(QString* error);
-    bool makeCurrent();  // initialize() leaves the context current; call this if you switched away
+    bool makeCurrent(); // initialize() leaves the context current; call this if you switched away
     Renderer& renderer() { return m_renderer; }
-    QString glDescription() const;  // "llvmpipe (LLVM 15.0.6, 256 bits), OpenGL 4.5 core"
+    QString glDescription() const; // "llvmpipe (LLVM 15.0.6, 256 bits), OpenGL 4.5 core"
 
     bool setModel(std::shared_ptr<const Model> model, QString* error = nullptr);
     void setRig(const Rig& rig) { m_renderer.setRig(rig); }
@@ -56,7 +56,7 @@ public:
     int maxTileSize() const;
     void setMaxTileSize(int pixels) { m_tileLimit = pixels; }
 
-private:
+  private:
     bool ensureTarget(QSize size, QString* error);
     void releaseTarget();
 
@@ -73,4 +73,4 @@ private:
 // light weighted by alpha. factor 1 returns the image.
 QImage downsampleLinear(const QImage& image, int factor);
 
-}  // namespace lr
+} // namespace lr

@@ -17,9 +17,10 @@ QByteArray ProgramCache::source(const QString& name) {
     return text;
 }
 
-std::unique_ptr<QOpenGLShaderProgram> ProgramCache::build(const QByteArray& prelude, const QStringList& vertexFiles,
-                                                          const QStringList& fragmentFiles, const QString& what,
-                                                          QString* error) {
+std::unique_ptr<QOpenGLShaderProgram> ProgramCache::build(const QByteArray& prelude,
+                                                          const QStringList& vertexFiles,
+                                                          const QStringList& fragmentFiles,
+                                                          const QString& what, QString* error) {
     // Each file gets a #line with its own source-string number, so a log line "2:14(3)" points at line 14
     // of the second file listed in the message.
     QStringList legend;
@@ -44,7 +45,9 @@ std::unique_ptr<QOpenGLShaderProgram> ProgramCache::build(const QByteArray& prel
         if (error) *error = message;
         return nullptr;
     };
-    if (!missing.isEmpty()) return fail(QStringLiteral("loading"), QStringLiteral(":/shaders/%1 is missing or empty").arg(missing));
+    if (!missing.isEmpty())
+        return fail(QStringLiteral("loading"),
+                    QStringLiteral(":/shaders/%1 is missing or empty").arg(missing));
     auto program = std::make_unique<QOpenGLShaderProgram>();
     if (!program->addShaderFromSourceCode(QOpenGLShader::Vertex, vs))
         return fail(QStringLiteral("vertex shader compile"), program->log());
@@ -69,7 +72,7 @@ MeshProgram* ProgramCache::meshProgram(const FeatureKey& key, QString* error) {
                                 QStringLiteral("deferred.frag")},
                                QStringLiteral("variant [%1]").arg(key.describe()), &message)
                        : build(shaderPrelude(key),
-                               key.quality == Quality::Fast  // the fast tier lights the vertices
+                               key.quality == Quality::Fast // the fast tier lights the vertices
                                    ? QStringList{QStringLiteral("lighting.glsl"), QStringLiteral("mesh.vert")}
                                    : QStringList{QStringLiteral("mesh.vert")},
                                {QStringLiteral("lighting.glsl"), QStringLiteral("cluster.glsl"),
@@ -100,14 +103,16 @@ MeshProgram* ProgramCache::meshProgram(const FeatureKey& key, QString* error) {
     p->setUniformValue("uEmissiveTex", 2);
     p->setUniformValue("uLights", 3);
     p->setUniformValue("uClusterRanges", 8);  // ClusterBuffers::kRangesUnit
-    p->setUniformValue("uClusterIndices", 9);  // ClusterBuffers::kIndicesUnit
-    for (int i = 0; i < 4; ++i) p->setUniformValue(qPrintable(QStringLiteral("uGBuffer%1").arg(i)), 4 + i);
+    p->setUniformValue("uClusterIndices", 9); // ClusterBuffers::kIndicesUnit
+    for (int i = 0; i < 4; ++i)
+        p->setUniformValue(qPrintable(QStringLiteral("uGBuffer%1").arg(i)), 4 + i);
     p->release();
     mp->program = std::move(program);
     return m_mesh.emplace(key, std::move(mp)).first->second.get();
 }
 
-QOpenGLShaderProgram* ProgramCache::fixedProgram(const QString& vertex, const QString& fragment, QString* error) {
+QOpenGLShaderProgram* ProgramCache::fixedProgram(const QString& vertex, const QString& fragment,
+                                                 QString* error) {
     const QString id = vertex + QLatin1Char('+') + fragment;
     if (auto it = m_fixed.constFind(id); it != m_fixed.constEnd()) return it->get();
     auto program = build(basicPrelude(), {vertex}, {QStringLiteral("lighting.glsl"), fragment}, id, error);
@@ -124,9 +129,11 @@ void ProgramCache::clear() {
 }
 
 void ProgramCache::setSourceOverride(const QString& name, const QByteArray& source) {
-    if (source.isEmpty()) m_overrides.remove(name);
-    else m_overrides.insert(name, source);
+    if (source.isEmpty())
+        m_overrides.remove(name);
+    else
+        m_overrides.insert(name, source);
     clear();
 }
 
-}  // namespace lr::render
+} // namespace lr::render

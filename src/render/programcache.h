@@ -18,26 +18,26 @@ struct MeshProgram {
     int modelView = -1, normalMatrix = -1, projection = -1;
     int baseColor = -1, emissive = -1, specular = -1, shininess = -1, ambient = -1, distanceScale = -1;
     int lightCount = -1;
-    int exposureScale = -1, toneMap = -1;  // display output only
+    int exposureScale = -1, toneMap = -1; // display output only
 };
 
 class ProgramCache {
-public:
+  public:
     // The program for `key`, compiled on first request; nullptr when it failed (error says why; a failed
     // key is not retried until clear()).
     MeshProgram* meshProgram(const FeatureKey& key, QString* error);
     // A fixed pass: vertex and fragment shader names under :/shaders/, with the basic prelude.
     QOpenGLShaderProgram* fixedProgram(const QString& vertex, const QString& fragment, QString* error);
 
-    int compiledCount() const { return m_compiled; }  // variants compiled since construction
+    int compiledCount() const { return m_compiled; } // variants compiled since construction
     int cachedCount() const { return int(m_mesh.size()); }
-    void clear();  // context current
+    void clear(); // context current
 
     // Replace a shader file's text (tests, live editing); an empty source restores the embedded one.
     // Clears the cache.
     void setSourceOverride(const QString& name, const QByteArray& source);
 
-private:
+  private:
     QByteArray source(const QString& name);
     std::unique_ptr<QOpenGLShaderProgram> build(const QByteArray& prelude, const QStringList& vertexFiles,
                                                 const QStringList& fragmentFiles, const QString& what,
@@ -50,4 +50,4 @@ private:
     int m_compiled = 0;
 };
 
-}  // namespace lr::render
+} // namespace lr::render

@@ -4,10 +4,10 @@
 #include "reference.h"
 
 #include <QElapsedTimer>
-#include <QOpenGLContext>
-#include <QOpenGLFunctions>
 #include <QFile>
 #include <QFuture>
+#include <QOpenGLContext>
+#include <QOpenGLFunctions>
 #include <QThread>
 #include <algorithm>
 #include <ctime>

@@ -44,9 +44,9 @@ struct BenchOptions {
     std::vector<Quality> tiers{Quality::Exact, Quality::Balanced, Quality::Fast};
     double exposureEV = 0.0;
     ToneMap toneMap = ToneMap::Clamp;
-    bool errors = true;     // compute the reference and the error figures
-    bool uberShader = true; // one more run per scene: the exact tier with every light model compiled in
-    int msaaSamples = -1;   // timed runs: -1 each tier's own (tierMsaaSamples), else this for every tier
+    bool errors = true;       // compute the reference and the error figures
+    bool uberShader = true;   // one more run per scene: the exact tier with every light model compiled in
+    int msaaSamples = -1;     // timed runs: -1 each tier's own (tierMsaaSamples), else this for every tier
     bool interactive = false; // time what the viewport draws while navigating (interaction proxies, lod.h)
 };
 
@@ -62,7 +62,7 @@ struct BenchResult {
     int lightsInRig = 0, lightsUploaded = 0;
     qint64 triangles = 0;
     qint64 trianglesDrawn = 0; // per frame: fewer than triangles when an interaction proxy was drawn
-    int variants = 0; // shader variants compiled for this scene and tier (fresh renderer)
+    int variants = 0;          // shader variants compiled for this scene and tier (fresh renderer)
     double msMedian = 0.0, msMin = 0.0, msMax = 0.0; // wall time per frame with glFinish
     double gpuMsMedian = -1.0;                       // GL_TIME_ELAPSED; < 0: no timer results
     // Process CPU time per frame, all threads: llvmpipe renders on the CPU, and this is far less

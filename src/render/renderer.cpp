@@ -581,10 +581,10 @@ bool Renderer::render(const ViewCamera& camera, QSize size, const RenderSettings
     if (m_lightsDirty || view != m_uploadedView) uploadLights(view);
     const bool fast = settings.quality == Quality::Fast; // per vertex, no MSAA, forward only (F1, F3)
     const int samples = fast ? 0 : settings.msaaSamples;
-    const bool wantDeferred = !fast && (settings.shadingPath == ShadingPath::Deferred ||
-                                        (settings.shadingPath == ShadingPath::Auto &&
-                                         m_stats.lightsUploaded >= (samples <= 1 ? kDeferredMinLights
-                                                                                  : kDeferredMsaaMaxLights)));
+    const bool wantDeferred =
+        !fast && (settings.shadingPath == ShadingPath::Deferred ||
+                  (settings.shadingPath == ShadingPath::Auto &&
+                   m_stats.lightsUploaded >= (samples <= 1 ? kDeferredMinLights : kDeferredMsaaMaxLights)));
     const GLenum colorFormat = !hdr ? GL_RGBA8 : settings.hdrFloat32 ? GL_RGBA32F : GL_RGBA16F;
     if (!ensureTargets(target, wantDeferred ? 0 : samples, colorFormat)) return false;
     const bool deferred = wantDeferred && m_model->model() != nullptr;

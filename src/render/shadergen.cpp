@@ -6,7 +6,9 @@ namespace lr::render {
 
 namespace {
 
-template <typename E> constexpr std::uint8_t bit(E e) { return std::uint8_t(1u << unsigned(e)); }
+template <typename E> constexpr std::uint8_t bit(E e) {
+    return std::uint8_t(1u << unsigned(e));
+}
 
 // "range-power" -> "RANGE_POWER"
 QByteArray macroName(const char* name) {
@@ -19,12 +21,13 @@ QByteArray macroName(const char* name) {
 template <typename E> void defineEnum(QByteArray& out, const char* prefix) {
     const auto& names = EnumNames<E>::names;
     for (size_t i = 0; i < names.size(); ++i)
-        out += "#define LR_" + QByteArray(prefix) + '_' + macroName(names[i]) + ' ' + QByteArray::number(int(i)) +
-               '\n';
+        out += "#define LR_" + QByteArray(prefix) + '_' + macroName(names[i]) + ' ' +
+               QByteArray::number(int(i)) + '\n';
 }
 
 // LR_HAS_<PREFIX>_<NAME> for each present value, and LR_ONLY_<onlyName> when exactly one is present.
-template <typename E> void definePresent(QByteArray& out, const char* prefix, const char* onlyName, unsigned mask) {
+template <typename E>
+void definePresent(QByteArray& out, const char* prefix, const char* onlyName, unsigned mask) {
     const auto& names = EnumNames<E>::names;
     int count = 0, last = -1;
     for (size_t i = 0; i < names.size(); ++i) {
@@ -53,7 +56,7 @@ void defineAllEnums(QByteArray& out) {
     defineEnum<ToneMap>(out, "TONEMAP");
 }
 
-}  // namespace
+} // namespace
 
 std::uint64_t FeatureKey::bits() const {
     std::uint64_t b = 0;
@@ -88,7 +91,8 @@ QString FeatureKey::describe() const {
     if (rig.falloffs) parts << QStringLiteral("falloff:") + namesIn<FalloffModel>(rig.falloffs);
     if (rig.cones) parts << QStringLiteral("cone:") + namesIn<ConeModel>(rig.cones);
     if (rig.diffuses) parts << QStringLiteral("diffuse:") + namesIn<DiffuseModel>(rig.diffuses);
-    parts << QStringLiteral("specular:") + toString(rig.specular) << QStringLiteral("viewer:") + toString(rig.viewer);
+    parts << QStringLiteral("specular:") + toString(rig.specular)
+          << QStringLiteral("viewer:") + toString(rig.viewer);
     if (rig.lightAmbient) parts << QStringLiteral("light-ambient");
     QStringList tex;
     if (material.baseColorTexture) tex << QStringLiteral("base");
@@ -136,7 +140,9 @@ MaterialFeatures materialFeatures(const Model& model, const Mesh& mesh) {
     f.vertexColors = mesh.hasVertexColors;
     if (mesh.material < 0 || size_t(mesh.material) >= model.materials.size()) return f;
     const Material& m = model.materials[size_t(mesh.material)];
-    const auto valid = [&](int t) { return t >= 0 && size_t(t) < model.textures.size() && !model.textures[size_t(t)].image.isNull(); };
+    const auto valid = [&](int t) {
+        return t >= 0 && size_t(t) < model.textures.size() && !model.textures[size_t(t)].image.isNull();
+    };
     f.baseColorTexture = valid(m.baseColorTexture);
     f.normalMap = valid(m.normalTexture);
     f.emissiveTexture = valid(m.emissiveTexture);
@@ -158,9 +164,10 @@ QByteArray shaderPrelude(const FeatureKey& key) {
     definePresent<FalloffModel>(out, "FALLOFF", "FALLOFF", key.rig.falloffs);
     definePresent<ConeModel>(out, "CONE", "CONE", key.rig.cones);
     definePresent<DiffuseModel>(out, "DIFFUSE", "DIFFUSE", key.rig.diffuses);
-    out += "#define LR_SPECULAR LR_SPECULAR_" + macroName(EnumNames<SpecularModel>::names[size_t(key.rig.specular)]) +
+    out += "#define LR_SPECULAR LR_SPECULAR_" +
+           macroName(EnumNames<SpecularModel>::names[size_t(key.rig.specular)]) + '\n';
+    out += "#define LR_VIEWER LR_VIEWER_" + macroName(EnumNames<ViewerModel>::names[size_t(key.rig.viewer)]) +
            '\n';
-    out += "#define LR_VIEWER LR_VIEWER_" + macroName(EnumNames<ViewerModel>::names[size_t(key.rig.viewer)]) + '\n';
     if (key.rig.lightAmbient) out += "#define LR_HAS_LIGHT_AMBIENT 1\n";
     if (key.material.baseColorTexture) out += "#define LR_BASE_COLOR_TEXTURE 1\n";
     if (key.material.normalMap) out += "#define LR_NORMAL_MAP 1\n";
@@ -194,11 +201,17 @@ QByteArray shaderPrelude(const FeatureKey& key) {
         out += "    return r;\n}\n";
     }
     switch (key.output) {
-    case ShaderOutput::Display: out += "#define LR_OUTPUT_DISPLAY 1\n"; break;
-    case ShaderOutput::Radiance: out += "#define LR_OUTPUT_RADIANCE 1\n"; break;
-    case ShaderOutput::GBuffer: out += "#define LR_OUTPUT_GBUFFER 1\n"; break;
+    case ShaderOutput::Display:
+        out += "#define LR_OUTPUT_DISPLAY 1\n";
+        break;
+    case ShaderOutput::Radiance:
+        out += "#define LR_OUTPUT_RADIANCE 1\n";
+        break;
+    case ShaderOutput::GBuffer:
+        out += "#define LR_OUTPUT_GBUFFER 1\n";
+        break;
     }
     return out;
 }
 
-}  // namespace lr::render
+} // namespace lr::render

@@ -22,13 +22,13 @@ enum class ShaderOutput : std::uint8_t { Display, Radiance, GBuffer };
 // What the rig contributes to a key. Computed from the enabled lights (whether they reach the model or
 // not), so moving a light never changes it; only adding a light of a new type or model does.
 struct RigFeatures {
-    std::uint8_t lightTypes = 0;  // bit (1 << int(LightType))
-    std::uint8_t falloffs = 0;    // bit per FalloffModel among point and spot lights
-    std::uint8_t cones = 0;       // bit per ConeModel among spot lights
-    std::uint8_t diffuses = 0;    // bit per DiffuseModel among point, spot and directional lights
+    std::uint8_t lightTypes = 0; // bit (1 << int(LightType))
+    std::uint8_t falloffs = 0;   // bit per FalloffModel among point and spot lights
+    std::uint8_t cones = 0;      // bit per ConeModel among spot lights
+    std::uint8_t diffuses = 0;   // bit per DiffuseModel among point, spot and directional lights
     SpecularModel specular = SpecularModel::Phong;
     ViewerModel viewer = ViewerModel::Local;
-    bool lightAmbient = false;  // some surface light has an ambient colour
+    bool lightAmbient = false; // some surface light has an ambient colour
     bool operator==(const RigFeatures&) const = default;
 };
 
@@ -56,8 +56,8 @@ struct FeatureKey {
     // 1..kMaxShininessInt, so the specular power compiles to a chain of products; 0 otherwise.
     std::uint16_t shininessInt = 0;
 
-    std::uint64_t bits() const;  // a unique packing, for hashing and ordering
-    QString describe() const;    // "point+spot falloff:range-power cone:smooth ... tex:base,normal"
+    std::uint64_t bits() const; // a unique packing, for hashing and ordering
+    QString describe() const;   // "point+spot falloff:range-power cone:smooth ... tex:base,normal"
     bool operator==(const FeatureKey&) const = default;
 };
 
@@ -81,4 +81,4 @@ QByteArray shaderPrelude(const FeatureKey& key);
 // The prelude for passes that only need the enum values and the formulas (tone map, gizmos).
 QByteArray basicPrelude();
 
-}  // namespace lr::render
+} // namespace lr::render

@@ -8,7 +8,8 @@ GLuint makeTexture(QOpenGLFunctions_3_3_Core* gl, GLenum internal, GLenum format
     GLuint t = 0;
     gl->glGenTextures(1, &t);
     gl->glBindTexture(GL_TEXTURE_2D, t);
-    gl->glTexImage2D(GL_TEXTURE_2D, 0, GLint(internal), size.width(), size.height(), 0, format, type, nullptr);
+    gl->glTexImage2D(GL_TEXTURE_2D, 0, GLint(internal), size.width(), size.height(), 0, format, type,
+                     nullptr);
     gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -28,7 +29,7 @@ bool complete(QOpenGLFunctions_3_3_Core* gl, const char* what, QSize size, QStri
     return false;
 }
 
-}  // namespace
+} // namespace
 
 bool Targets::create(QOpenGLFunctions_3_3_Core* gl, QSize s, int n, GLenum format, QString* error) {
     release(gl);
@@ -53,13 +54,16 @@ bool Targets::create(QOpenGLFunctions_3_3_Core* gl, QSize s, int n, GLenum forma
         gl->glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, colorFormat, s.width(), s.height());
         gl->glGenRenderbuffers(1, &msaaDepth);
         gl->glBindRenderbuffer(GL_RENDERBUFFER, msaaDepth);
-        gl->glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT32F, s.width(), s.height());
+        gl->glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT32F, s.width(),
+                                             s.height());
         gl->glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, msaaColor);
         gl->glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, msaaDepth);
         ok = complete(gl, "multisampled scene", s, error);
     }
     if (ok && gl->glGetError() == GL_OUT_OF_MEMORY) {
-        if (error) *error = QStringLiteral("out of GPU memory for a %1x%2 render target").arg(s.width()).arg(s.height());
+        if (error)
+            *error =
+                QStringLiteral("out of GPU memory for a %1x%2 render target").arg(s.width()).arg(s.height());
         ok = false;
     }
     gl->glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -74,7 +78,8 @@ bool Targets::createGBuffer(QOpenGLFunctions_3_3_Core* gl, QString* error) {
     GLenum buffers[kGBufferTargets];
     for (int i = 0; i < kGBufferTargets; ++i) {
         gbuffer[i] = makeTexture(gl, GL_RGBA32F, GL_RGBA, GL_FLOAT, size);
-        gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GLenum(GL_COLOR_ATTACHMENT0 + i), GL_TEXTURE_2D, gbuffer[i], 0);
+        gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GLenum(GL_COLOR_ATTACHMENT0 + i), GL_TEXTURE_2D,
+                                   gbuffer[i], 0);
         buffers[i] = GLenum(GL_COLOR_ATTACHMENT0 + i);
     }
     gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
@@ -85,7 +90,8 @@ bool Targets::createGBuffer(QOpenGLFunctions_3_3_Core* gl, QString* error) {
         gl->glDeleteFramebuffers(1, &gbufferFbo);
         gl->glDeleteTextures(kGBufferTargets, gbuffer);
         gbufferFbo = 0;
-        for (GLuint& t : gbuffer) t = 0;
+        for (GLuint& t : gbuffer)
+            t = 0;
     }
     return ok;
 }
@@ -98,8 +104,9 @@ void Targets::release(QOpenGLFunctions_3_3_Core* gl) {
     gl->glDeleteRenderbuffers(2, rbs);
     gl->glDeleteTextures(6, texs);
     msaaFbo = msaaColor = msaaDepth = fbo = color = depth = gbufferFbo = 0;
-    for (GLuint& t : gbuffer) t = 0;
+    for (GLuint& t : gbuffer)
+        t = 0;
     size = QSize();
 }
 
-}  // namespace lr::render
+} // namespace lr::render

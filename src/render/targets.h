@@ -17,17 +17,17 @@ constexpr int kGBufferTargets = 4;
 
 struct Targets {
     QSize size;
-    int samples = 0;  // > 1: MSAA
-    GLenum colorFormat = 0;  // GL_RGBA8, GL_RGBA16F or GL_RGBA32F
+    int samples = 0;        // > 1: MSAA
+    GLenum colorFormat = 0; // GL_RGBA8, GL_RGBA16F or GL_RGBA32F
     GLuint msaaFbo = 0, msaaColor = 0, msaaDepth = 0;
-    GLuint fbo = 0, color = 0, depth = 0;  // single-sample: textures
+    GLuint fbo = 0, color = 0, depth = 0; // single-sample: textures
     GLuint gbufferFbo = 0;
     GLuint gbuffer[kGBufferTargets] = {};
 
     GLuint drawFbo() const { return samples > 1 ? msaaFbo : fbo; }
     bool create(QOpenGLFunctions_3_3_Core* gl, QSize size, int samples, GLenum colorFormat, QString* error);
-    bool createGBuffer(QOpenGLFunctions_3_3_Core* gl, QString* error);  // for the current size
+    bool createGBuffer(QOpenGLFunctions_3_3_Core* gl, QString* error); // for the current size
     void release(QOpenGLFunctions_3_3_Core* gl);
 };
 
-}  // namespace lr::render
+} // namespace lr::render

@@ -317,8 +317,8 @@ class TestMainWindow : public QObject {
     void viewport_wheelDolliesThenSettles() {
         const ViewCamera before = viewport()->camera();
         const QPointF at(viewport()->width() / 2.0, viewport()->height() / 2.0);
-        QWheelEvent wheel(at, viewport()->mapToGlobal(at), QPoint(), QPoint(0, 120), Qt::NoButton, Qt::NoModifier,
-                          Qt::NoScrollPhase, false);
+        QWheelEvent wheel(at, viewport()->mapToGlobal(at), QPoint(), QPoint(0, 120), Qt::NoButton,
+                          Qt::NoModifier, Qt::NoScrollPhase, false);
         QApplication::sendEvent(viewport(), &wheel);
         QVERIFY(viewport()->isNavigating());
         QVERIFY(glm::length(viewport()->camera().eye - viewport()->camera().target) <

@@ -1,8 +1,8 @@
 // Clustered shading on the GPU gives the same radiance as shading every light: a sphere and a plane lit by
 // 256 small-range lights (and a few unbounded ones) rendered with RenderSettings::clusteredShading on and
 // off, compared in float (RGBA32F read-back) to 1e-5. Skips without a display.
-#include "render/glfixture.h" // tests/render
 #include "render/cluster.h"
+#include "render/glfixture.h" // tests/render
 #include "render/offscreen.h"
 #include "render/scenes.h"
 

@@ -54,8 +54,8 @@ class TestBenchCli : public QObject {
     void help() {
         const Run r = lightrig({QStringLiteral("--help")});
         QVERIFY2(r.code == 0, qPrintable(show(r)));
-        for (const char* option : {"--lights", "--quality", "--json", "--chart", "--frames", "--msaa", "--rig",
-                                   "--camera-index", "--view", "--size", "--exposure", "--tonemap"})
+        for (const char* option : {"--lights", "--quality", "--json", "--chart", "--frames", "--msaa",
+                                   "--rig", "--camera-index", "--view", "--size", "--exposure", "--tonemap"})
             QVERIFY2(r.out.contains(QLatin1String(option)), option);
     }
 
@@ -152,7 +152,8 @@ class TestBenchCli : public QObject {
                 blue += c == qRgb(40, 100, 200);
                 green += c == qRgb(40, 160, 70);
             }
-        QVERIFY2(blue > 50 && green > 50, qPrintable(QStringLiteral("%1 blue, %2 green").arg(blue).arg(green)));
+        QVERIFY2(blue > 50 && green > 50,
+                 qPrintable(QStringLiteral("%1 blue, %2 green").arg(blue).arg(green)));
     }
 
     void modelWithItsRigAndOneTier() {

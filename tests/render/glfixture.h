@@ -19,34 +19,40 @@ inline bool haveDisplay() {
     return qEnvironmentVariableIsSet("DISPLAY") || qEnvironmentVariableIsSet("WAYLAND_DISPLAY");
 }
 
-#define LR_REQUIRE_DISPLAY()                                                                                   \
-    do {                                                                                                       \
-        if (!lr::test::haveDisplay()) QSKIP("needs an X display with OpenGL: run under xvfb-run -a");         \
+#define LR_REQUIRE_DISPLAY()                                                                                 \
+    do {                                                                                                     \
+        if (!lr::test::haveDisplay()) QSKIP("needs an X display with OpenGL: run under xvfb-run -a");        \
     } while (0)
 
 // Without a display, start on the offscreen platform (no OpenGL there) so the tests can skip cleanly.
-#define LR_GL_TEST_MAIN(TestClass)                                                                             \
-    int main(int argc, char** argv) {                                                                          \
-        if (!lr::test::haveDisplay()) qputenv("QT_QPA_PLATFORM", "offscreen");                                \
-        QGuiApplication app(argc, argv);                                                                       \
-        TestClass tc;                                                                                          \
-        QTEST_SET_MAIN_SOURCE_PATH                                                                             \
-        return QTest::qExec(&tc, argc, argv);                                                                  \
+#define LR_GL_TEST_MAIN(TestClass)                                                                           \
+    int main(int argc, char** argv) {                                                                        \
+        if (!lr::test::haveDisplay()) qputenv("QT_QPA_PLATFORM", "offscreen");                               \
+        QGuiApplication app(argc, argv);                                                                     \
+        TestClass tc;                                                                                        \
+        QTEST_SET_MAIN_SOURCE_PATH                                                                           \
+        return QTest::qExec(&tc, argc, argv);                                                                \
     }
 
 struct Comparison {
-    int covered = 0;     // pixels with a surface
-    int compared = 0;    // ... whose reference is well-conditioned
-    int skipped = 0;     // ... where a nudge of ~8 float ulps of the point moves the reference by > tol (edges)
+    int covered = 0;  // pixels with a surface
+    int compared = 0; // ... whose reference is well-conditioned
+    int skipped = 0;  // ... where a nudge of ~8 float ulps of the point moves the reference by > tol (edges)
     int failures = 0;
-    int nonFinite = 0;   // GPU pixels that are NaN or Inf (anywhere in the image)
-    double maxError = 0.0;  // max over compared channels of |gpu - ref| / max(1, |ref|)
+    int nonFinite = 0;     // GPU pixels that are NaN or Inf (anywhere in the image)
+    double maxError = 0.0; // max over compared channels of |gpu - ref| / max(1, |ref|)
     double maxReference = 0.0;
     QString firstFailure;
     QString summary() const {
-        return QStringLiteral("covered %1, compared %2, skipped %3, failed %4, non-finite %5, max error %6, max radiance %7%8")
-            .arg(covered).arg(compared).arg(skipped).arg(failures).arg(nonFinite)
-            .arg(maxError, 0, 'g', 3).arg(maxReference, 0, 'g', 3)
+        return QStringLiteral("covered %1, compared %2, skipped %3, failed %4, non-finite %5, max error %6, "
+                              "max radiance %7%8")
+            .arg(covered)
+            .arg(compared)
+            .arg(skipped)
+            .arg(failures)
+            .arg(nonFinite)
+            .arg(maxError, 0, 'g', 3)
+            .arg(maxReference, 0, 'g', 3)
             .arg(firstFailure.isEmpty() ? QString() : QStringLiteral("; first: ") + firstFailure);
     }
 };
@@ -62,7 +68,8 @@ inline Comparison compareWithReference(const FloatImage& radiance, const GBuffer
     for (int y = 0; y < radiance.height; ++y) {
         for (int x = 0; x < radiance.width; ++x) {
             const glm::vec4 gpu = radiance.at(x, y);
-            if (!std::isfinite(gpu.x) || !std::isfinite(gpu.y) || !std::isfinite(gpu.z) || !std::isfinite(gpu.w)) {
+            if (!std::isfinite(gpu.x) || !std::isfinite(gpu.y) || !std::isfinite(gpu.z) ||
+                !std::isfinite(gpu.w)) {
                 ++c.nonFinite;
                 continue;
             }
@@ -100,7 +107,11 @@ inline Comparison compareWithReference(const FloatImage& radiance, const GBuffer
                 if (!(e <= tol)) {
                     if (c.failures == 0)
                         c.firstFailure = QStringLiteral("pixel (%1,%2) channel %3: gpu %4, reference %5")
-                                             .arg(x).arg(y).arg(k).arg(double(gpu[k]), 0, 'g', 9).arg(ref[k], 0, 'g', 9);
+                                             .arg(x)
+                                             .arg(y)
+                                             .arg(k)
+                                             .arg(double(gpu[k]), 0, 'g', 9)
+                                             .arg(ref[k], 0, 'g', 9);
                     ++c.failures;
                     break;
                 }
@@ -110,4 +121,4 @@ inline Comparison compareWithReference(const FloatImage& radiance, const GBuffer
     return c;
 }
 
-}  // namespace lr::test
+} // namespace lr::test

@@ -26,7 +26,7 @@ inline std::shared_ptr<Model> sphereScene() {
     auto m = std::make_shared<Model>(makeSphere(1.0, 96, 48));
     m->materials[0].baseColor = {0.7f, 0.7f, 0.9f, 1.0f};
     m->materials[0].specular = {1.0f, 1.0f, 1.0f};
-    m->materials[0].shininess = -1.0f;  // the rig's shading.shininess
+    m->materials[0].shininess = -1.0f; // the rig's shading.shininess
     return m;
 }
 
@@ -56,7 +56,8 @@ inline Light point(glm::dvec3 p, FalloffModel f, double range = -1.0) {
     return l;
 }
 
-inline Light spot(glm::dvec3 p, glm::dvec3 target, ConeModel cone, double inner, double outer, double exponent) {
+inline Light spot(glm::dvec3 p, glm::dvec3 target, ConeModel cone, double inner, double outer,
+                  double exponent) {
     Light l = makeLight(LightType::Spot, QStringLiteral("spot"));
     l.position = p;
     l.direction = glm::normalize(target - p);
@@ -100,52 +101,124 @@ inline std::vector<RigCase> rigCases() {
     const glm::dvec3 p(0.5, 0.5, 1.5);
     return {
         {"point-none", [=] { return rigOf({point(p, FalloffModel::None)}); }},
-        {"point-range-power", [=] { Light l = point(p, FalloffModel::RangePower, 3.0); l.falloff.exponent = 2.0; return rigOf({l}); }},
-        {"point-range-power-0.7", [=] { Light l = point(p, FalloffModel::RangePower, 2.2); l.falloff.exponent = 0.7; return rigOf({l}); }},
-        {"point-inverse-polynomial", [=] {
+        {"point-range-power",
+         [=] {
+             Light l = point(p, FalloffModel::RangePower, 3.0);
+             l.falloff.exponent = 2.0;
+             return rigOf({l});
+         }},
+        {"point-range-power-0.7",
+         [=] {
+             Light l = point(p, FalloffModel::RangePower, 2.2);
+             l.falloff.exponent = 0.7;
+             return rigOf({l});
+         }},
+        {"point-inverse-polynomial",
+         [=] {
              Light l = point(p, FalloffModel::InversePolynomial);
              l.falloff.constant = 1.0, l.falloff.linear = 0.3, l.falloff.quadratic = 0.2;
              return rigOf({l});
          }},
-        {"point-inverse-polynomial-range", [=] {
+        {"point-inverse-polynomial-range",
+         [=] {
              Light l = point(p, FalloffModel::InversePolynomial, 2.5);
              l.falloff.constant = 0.5, l.falloff.linear = 0.0, l.falloff.quadratic = 1.0;
              return rigOf({l});
          }},
         {"point-range-quadratic", [=] { return rigOf({point(p, FalloffModel::RangeQuadratic, 2.5)}); }},
-        {"point-inverse-square", [=] { Light l = point(p, FalloffModel::InverseSquare); l.intensity = 2.0; return rigOf({l}); }},
-        {"point-inverse-square-range", [=] { Light l = point(p, FalloffModel::InverseSquare, 2.5); l.intensity = 2.0; return rigOf({l}); }},
-        {"spot-smooth", [] { return rigOf({spot({0.0, 0.3, 2.0}, {0.2, 0.1, 0.0}, ConeModel::Smooth, 15.0, 30.0, 1.0)}); }},
-        {"spot-smooth-exp2-inverse-square", [] {
+        {"point-inverse-square",
+         [=] {
+             Light l = point(p, FalloffModel::InverseSquare);
+             l.intensity = 2.0;
+             return rigOf({l});
+         }},
+        {"point-inverse-square-range",
+         [=] {
+             Light l = point(p, FalloffModel::InverseSquare, 2.5);
+             l.intensity = 2.0;
+             return rigOf({l});
+         }},
+        {"spot-smooth",
+         [] {
+             return rigOf({spot({0.0, 0.3, 2.0}, {0.2, 0.1, 0.0}, ConeModel::Smooth, 15.0, 30.0, 1.0)});
+         }},
+        {"spot-smooth-exp2-inverse-square",
+         [] {
              Light l = spot({-0.3, 0.2, 1.8}, {0.0, 0.0, 0.0}, ConeModel::Smooth, 10.0, 28.0, 2.0);
              l.falloff.model = FalloffModel::InverseSquare;
              l.intensity = 3.0;
              return rigOf({l});
          }},
-        {"spot-angle-power", [] { return rigOf({spot({0.0, 0.0, 2.0}, {0.1, -0.1, 0.0}, ConeModel::AnglePower, 0.0, 35.0, 1.5)}); }},
-        {"spot-hard", [] { return rigOf({spot({0.2, 0.0, 2.0}, {0.0, 0.0, 0.0}, ConeModel::Hard, 0.0, 25.0, 1.0)}); }},
-        {"directional-lambert", [] { return rigOf({directional({-0.3, -0.4, -1.0}, DiffuseModel::Lambert)}); }},
-        {"directional-half-lambert", [] { return rigOf({directional({0.5, -0.2, -1.0}, DiffuseModel::HalfLambert)}); }},
-        {"rim", [] { return rigOf({rim({0.0, 0.0, -1.0}, 1.3)}); }},
-        {"rim-sideways", [] { return rigOf({rim({1.0, -0.5, -0.3}, 3.0)}); }},
-        {"blinn-phong", [=] { Rig r = rigOf({point(p, FalloffModel::None)}); r.shading.specular = SpecularModel::BlinnPhong; return r; }},
-        {"phong-infinite-viewer", [=] { Rig r = rigOf({point(p, FalloffModel::None)}); r.shading.viewer = ViewerModel::Infinite; return r; }},
-        {"blinn-phong-infinite-viewer", [] {
+        {"spot-angle-power",
+         [] {
+             return rigOf({spot({0.0, 0.0, 2.0}, {0.1, -0.1, 0.0}, ConeModel::AnglePower, 0.0, 35.0, 1.5)});
+         }},
+        {"spot-hard",
+         [] {
+             return rigOf({spot({0.2, 0.0, 2.0}, {0.0, 0.0, 0.0}, ConeModel::Hard, 0.0, 25.0, 1.0)});
+         }},
+        {"directional-lambert",
+         [] {
+             return rigOf({directional({-0.3, -0.4, -1.0}, DiffuseModel::Lambert)});
+         }},
+        {"directional-half-lambert",
+         [] {
+             return rigOf({directional({0.5, -0.2, -1.0}, DiffuseModel::HalfLambert)});
+         }},
+        {"rim",
+         [] {
+             return rigOf({rim({0.0, 0.0, -1.0}, 1.3)});
+         }},
+        {"rim-sideways",
+         [] {
+             return rigOf({rim({1.0, -0.5, -0.3}, 3.0)});
+         }},
+        {"blinn-phong",
+         [=] {
+             Rig r = rigOf({point(p, FalloffModel::None)});
+             r.shading.specular = SpecularModel::BlinnPhong;
+             return r;
+         }},
+        {"phong-infinite-viewer",
+         [=] {
+             Rig r = rigOf({point(p, FalloffModel::None)});
+             r.shading.viewer = ViewerModel::Infinite;
+             return r;
+         }},
+        {"blinn-phong-infinite-viewer",
+         [] {
              Rig r = rigOf({directional({-0.3, -0.4, -1.0}, DiffuseModel::Lambert)});
              r.shading.specular = SpecularModel::BlinnPhong;
              r.shading.viewer = ViewerModel::Infinite;
              r.shading.shininess = 80.0;
              return r;
          }},
-        {"light-ambient", [=] { Light l = point(p, FalloffModel::RangeQuadratic, 3.0); l.ambient = glm::dvec3(0.05, 0.04, 0.03); return rigOf({l}); }},
-        {"scene-ambient-only", [] { Rig r = rigOf({}); r.ambient = {0.1, 0.2, 0.3}; return r; }},
-        {"model-space", [] {
+        {"light-ambient",
+         [=] {
+             Light l = point(p, FalloffModel::RangeQuadratic, 3.0);
+             l.ambient = glm::dvec3(0.05, 0.04, 0.03);
+             return rigOf({l});
+         }},
+        {"scene-ambient-only",
+         [] {
+             Rig r = rigOf({});
+             r.ambient = {0.1, 0.2, 0.3};
+             return r;
+         }},
+        {"model-space",
+         [] {
              Rig r = rigOf({point({0.4, 0.5, 0.8}, FalloffModel::RangePower, 1.5)});
              r.space = RigSpace::Model;
              return r;
          }},
-        {"temperature", [=] { Light l = point(p, FalloffModel::None); l.temperature = 3200.0; return rigOf({l}); }},
-        {"mixed-all-types", [=] {
+        {"temperature",
+         [=] {
+             Light l = point(p, FalloffModel::None);
+             l.temperature = 3200.0;
+             return rigOf({l});
+         }},
+        {"mixed-all-types",
+         [=] {
              Light a = point(p, FalloffModel::InverseSquare, 4.0);
              Light b = point({-0.6, 0.2, 1.0}, FalloffModel::RangePower, 2.5);
              b.diffuse = DiffuseModel::HalfLambert;
@@ -167,4 +240,4 @@ inline std::vector<RigCase> rigCases() {
     };
 }
 
-}  // namespace lr::test
+} // namespace lr::test

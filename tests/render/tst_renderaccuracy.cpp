@@ -29,7 +29,7 @@ RenderSettings floatSettings() {
     s.hdrFloat32 = true;
     return s;
 }
-}  // namespace
+} // namespace
 
 class TestRenderAccuracy : public QObject {
     Q_OBJECT
@@ -50,7 +50,7 @@ class TestRenderAccuracy : public QObject {
         return compareWithReference(radiance, g, rig, m_gl.renderer().sceneFrame(), cam.view(), kTolerance);
     }
 
-private slots:
+  private slots:
     void initTestCase() {
         LR_REQUIRE_DISPLAY();
         QString error;
@@ -96,7 +96,7 @@ private slots:
         QFETCH(double, ev);
         QString error;
         QVERIFY(m_gl.setModel(sphereScene(), &error));
-        const Rig rig = rigCases()[size_t(rigCases().size() - 1)].make();  // mixed: a wide range of values
+        const Rig rig = rigCases()[size_t(rigCases().size() - 1)].make(); // mixed: a wide range of values
         m_gl.setRig(rig);
         RenderSettings s = floatSettings();
         s.toneMap = ToneMap(toneMap);
@@ -114,8 +114,9 @@ private slots:
                 const int got[3] = {qRed(px), qGreen(px), qBlue(px)};
                 for (int k = 0; k < 3; ++k) {
                     const double bg[3] = {10 / 255.0, 20 / 255.0, 30 / 255.0};
-                    const double mapped = r.w > 0.5f ? lighting::toneMap(ToneMap(toneMap), double(r[k]) * std::exp2(ev))
-                                                     : lighting::srgbToLinear(bg[k]);
+                    const double mapped =
+                        r.w > 0.5f ? lighting::toneMap(ToneMap(toneMap), double(r[k]) * std::exp2(ev))
+                                   : lighting::srgbToLinear(bg[k]);
                     const int expected = int(std::lround(lighting::linearToSrgb(mapped) * 255.0));
                     worst = std::max(worst, std::abs(got[k] - expected));
                 }
@@ -130,11 +131,12 @@ private slots:
     void materialInputs() {
         QString error;
         auto model = planeScene();
-        QImage tex(64, 64, QImage::Format_RGBA8888);  // four solid quadrants
+        QImage tex(64, 64, QImage::Format_RGBA8888); // four solid quadrants
         for (int y = 0; y < 64; ++y)
             for (int x = 0; x < 64; ++x)
-                tex.setPixelColor(x, y, y < 32 ? (x < 32 ? QColor(200, 0, 0) : QColor(0, 200, 0))
-                                               : (x < 32 ? QColor(0, 0, 200) : QColor(128, 128, 128)));
+                tex.setPixelColor(x, y,
+                                  y < 32 ? (x < 32 ? QColor(200, 0, 0) : QColor(0, 200, 0))
+                                         : (x < 32 ? QColor(0, 0, 200) : QColor(128, 128, 128)));
         model->textures.push_back({QStringLiteral("*0"), tex});
         model->materials[0].baseColorTexture = 0;
         model->materials[0].baseColor = {1.0f, 1.0f, 1.0f, 1.0f};
@@ -142,15 +144,18 @@ private slots:
         m_gl.setRig(rigCases()[0].make());
         ViewCamera cam;
         cam.eye = {0, 0, 3};
-        cam.yfovDeg = 2.0 * glm::degrees(std::atan(2.0 / 3.0));  // the plane (half size 2) fills the view
+        cam.yfovDeg = 2.0 * glm::degrees(std::atan(2.0 / 3.0)); // the plane (half size 2) fills the view
         GBuffer g;
         QVERIFY2(m_gl.renderGBuffer(cam, QSize(64, 64), floatSettings(), &g, &error), qPrintable(error));
         const double c200 = lighting::srgbToLinear(200 / 255.0), c128 = lighting::srgbToLinear(128 / 255.0);
-        const glm::vec4 tl = g.albedo.at(16, 16), tr = g.albedo.at(48, 16), bl = g.albedo.at(16, 48), br = g.albedo.at(48, 48);
-        QVERIFY2(std::abs(tl.r - c200) < 2e-3 && tl.g < 0.05 && tl.b < 0.05, "top-left texel on the top-left of the plane");
+        const glm::vec4 tl = g.albedo.at(16, 16), tr = g.albedo.at(48, 16), bl = g.albedo.at(16, 48),
+                        br = g.albedo.at(48, 48);
+        QVERIFY2(std::abs(tl.r - c200) < 2e-3 && tl.g < 0.05 && tl.b < 0.05,
+                 "top-left texel on the top-left of the plane");
         QVERIFY2(std::abs(tr.g - c200) < 2e-3 && tr.r < 0.05, "top-right texel");
         QVERIFY2(std::abs(bl.b - c200) < 2e-3 && bl.r < 0.05, "bottom-left texel");
-        QVERIFY2(std::abs(br.r - c128) < 2e-3 && std::abs(br.g - c128) < 2e-3, "bottom-right texel, sRGB-decoded");
+        QVERIFY2(std::abs(br.r - c128) < 2e-3 && std::abs(br.g - c128) < 2e-3,
+                 "bottom-right texel, sRGB-decoded");
 
         // A normal map tilted towards +u (red) and towards image-up (green).
         for (const auto& [rgb, expected] : {std::pair{QColor(255, 128, 128), glm::dvec3(1, 0, 0)},
@@ -169,7 +174,8 @@ private slots:
 
         // Vertex colours multiply the base colour.
         auto vc = planeScene();
-        for (Vertex& v : vc->meshes[0].vertices) v.color = {0.5f, 0.25f, 1.0f, 1.0f};
+        for (Vertex& v : vc->meshes[0].vertices)
+            v.color = {0.5f, 0.25f, 1.0f, 1.0f};
         vc->meshes[0].hasVertexColors = true;
         QVERIFY(m_gl.setModel(vc, &error));
         QVERIFY(m_gl.renderGBuffer(cam, QSize(16, 16), floatSettings(), &g, &error));

@@ -16,7 +16,7 @@ namespace {
 struct Run {
     int code = -1;
     QString out, err;
-    QStringList errorLines() const {  // ours, without platform chatter such as XDG_RUNTIME_DIR notes
+    QStringList errorLines() const { // ours, without platform chatter such as XDG_RUNTIME_DIR notes
         QStringList lines;
         for (const QString& l : err.split(QLatin1Char('\n'), Qt::SkipEmptyParts))
             if (l.startsWith(QLatin1String("lightrig"))) lines << l;
@@ -25,14 +25,24 @@ struct Run {
     QString show() const { return QStringLiteral("exit %1\nstdout: %2\nstderr: %3").arg(code).arg(out, err); }
 };
 
-QString suzanne() { return QStringLiteral(LIGHTRIG_SOURCE_DIR "/resources/models/suzanne/Suzanne.gltf"); }
-QString shared(const char* path) { return QStringLiteral(LIGHTRIG_SHARED_MODELS "/") + QLatin1String(path); }
+QString suzanne() {
+    return QStringLiteral(LIGHTRIG_SOURCE_DIR "/resources/models/suzanne/Suzanne.gltf");
+}
+QString shared(const char* path) {
+    return QStringLiteral(LIGHTRIG_SHARED_MODELS "/") + QLatin1String(path);
+}
 
 // Per pixel and channel |a - b|; fails when more than 0.5% of the pixels differ by more than 16 levels or
 // the mean difference exceeds 1 level (rasterisers may differ on a few silhouette pixels).
 QString compareImages(const QImage& got, const QImage& want) {
-    if (got.size() != want.size()) return QStringLiteral("size %1x%2, baseline %3x%4").arg(got.width()).arg(got.height()).arg(want.width()).arg(want.height());
-    const QImage a = got.convertToFormat(QImage::Format_RGBA8888), b = want.convertToFormat(QImage::Format_RGBA8888);
+    if (got.size() != want.size())
+        return QStringLiteral("size %1x%2, baseline %3x%4")
+            .arg(got.width())
+            .arg(got.height())
+            .arg(want.width())
+            .arg(want.height());
+    const QImage a = got.convertToFormat(QImage::Format_RGBA8888),
+                 b = want.convertToFormat(QImage::Format_RGBA8888);
     qint64 sum = 0, bad = 0;
     for (int y = 0; y < a.height(); ++y) {
         const uchar* p = a.constScanLine(y);
@@ -50,11 +60,13 @@ QString compareImages(const QImage& got, const QImage& want) {
     const double pixels = double(a.width()) * a.height();
     const double mean = sum / (pixels * 4);
     if (bad > pixels * 0.005 || mean > 1.0)
-        return QStringLiteral("%1 pixels differ by more than 16 levels, mean difference %2").arg(bad).arg(mean);
+        return QStringLiteral("%1 pixels differ by more than 16 levels, mean difference %2")
+            .arg(bad)
+            .arg(mean);
     return {};
 }
 
-}  // namespace
+} // namespace
 
 class TestRenderCli : public QObject {
     Q_OBJECT
@@ -82,24 +94,28 @@ class TestRenderCli : public QObject {
         QVERIFY2(r.code == 0, qPrintable(r.show()));
         const QImage got(out);
         QVERIFY(!got.isNull());
-        const QString baseline = QStringLiteral(LIGHTRIG_TEST_DATA "/render/baselines/") + name + QStringLiteral(".png");
+        const QString baseline =
+            QStringLiteral(LIGHTRIG_TEST_DATA "/render/baselines/") + name + QStringLiteral(".png");
         if (!QFile::exists(baseline)) {
             QFile::copy(out, baseline);
-            QFAIL(qPrintable(QStringLiteral("no baseline: wrote %1; look at it and commit it").arg(baseline)));
+            QFAIL(
+                qPrintable(QStringLiteral("no baseline: wrote %1; look at it and commit it").arg(baseline)));
         }
         const QString diff = compareImages(got, QImage(baseline));
         if (!diff.isEmpty()) {
             got.save(baseline + QStringLiteral(".actual.png"));
-            QFAIL(qPrintable(QStringLiteral("%1 differs from its baseline: %2 (wrote %3.actual.png)").arg(name, diff, baseline)));
+            QFAIL(qPrintable(QStringLiteral("%1 differs from its baseline: %2 (wrote %3.actual.png)")
+                                 .arg(name, diff, baseline)));
         }
     }
 
-private slots:
+  private slots:
     void initTestCase() {
         QVERIFY2(QFile::exists(QStringLiteral(LIGHTRIG_EXECUTABLE)), LIGHTRIG_EXECUTABLE);
         QVERIFY(m_dir.isValid());
         QDir(m_dir.path()).mkdir(QStringLiteral("xdg"));
-        QFile::setPermissions(path(QStringLiteral("xdg")), QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
+        QFile::setPermissions(path(QStringLiteral("xdg")),
+                              QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
         m_env.insert(QStringLiteral("XDG_RUNTIME_DIR"), path(QStringLiteral("xdg")));
     }
 
@@ -110,16 +126,31 @@ private slots:
         QTest::newRow("no output") << QStringList{m};
         QTest::newRow("two models") << QStringList{m, m, QStringLiteral("-o"), o};
         QTest::newRow("unknown option") << QStringList{m, QStringLiteral("-o"), o, QStringLiteral("--shiny")};
-        QTest::newRow("bad size") << QStringList{m, QStringLiteral("-o"), o, QStringLiteral("--size"), QStringLiteral("12x")};
-        QTest::newRow("zero size") << QStringList{m, QStringLiteral("-o"), o, QStringLiteral("--size"), QStringLiteral("0x10")};
-        QTest::newRow("camera and view") << QStringList{m, QStringLiteral("-o"), o, QStringLiteral("--camera-index"), QStringLiteral("0"), QStringLiteral("--view"), QStringLiteral("top")};
-        QTest::newRow("bad view") << QStringList{m, QStringLiteral("-o"), o, QStringLiteral("--view"), QStringLiteral("sideways")};
-        QTest::newRow("bad camera index") << QStringList{m, QStringLiteral("-o"), o, QStringLiteral("--camera-index"), QStringLiteral("-1")};
-        QTest::newRow("bad quality") << QStringList{m, QStringLiteral("-o"), o, QStringLiteral("--quality"), QStringLiteral("best")};
-        QTest::newRow("bad supersample") << QStringList{m, QStringLiteral("-o"), o, QStringLiteral("--supersample"), QStringLiteral("5")};
-        QTest::newRow("bad exposure") << QStringList{m, QStringLiteral("-o"), o, QStringLiteral("--exposure"), QStringLiteral("bright")};
-        QTest::newRow("bad tonemap") << QStringList{m, QStringLiteral("-o"), o, QStringLiteral("--tonemap"), QStringLiteral("filmic")};
-        QTest::newRow("bad extension") << QStringList{m, QStringLiteral("-o"), QStringLiteral("/tmp/out.bmp")};
+        QTest::newRow("bad size") << QStringList{m, QStringLiteral("-o"), o, QStringLiteral("--size"),
+                                                 QStringLiteral("12x")};
+        QTest::newRow("zero size") << QStringList{m, QStringLiteral("-o"), o, QStringLiteral("--size"),
+                                                  QStringLiteral("0x10")};
+        QTest::newRow("camera and view") << QStringList{m,
+                                                        QStringLiteral("-o"),
+                                                        o,
+                                                        QStringLiteral("--camera-index"),
+                                                        QStringLiteral("0"),
+                                                        QStringLiteral("--view"),
+                                                        QStringLiteral("top")};
+        QTest::newRow("bad view") << QStringList{m, QStringLiteral("-o"), o, QStringLiteral("--view"),
+                                                 QStringLiteral("sideways")};
+        QTest::newRow("bad camera index") << QStringList{
+            m, QStringLiteral("-o"), o, QStringLiteral("--camera-index"), QStringLiteral("-1")};
+        QTest::newRow("bad quality") << QStringList{m, QStringLiteral("-o"), o, QStringLiteral("--quality"),
+                                                    QStringLiteral("best")};
+        QTest::newRow("bad supersample")
+            << QStringList{m, QStringLiteral("-o"), o, QStringLiteral("--supersample"), QStringLiteral("5")};
+        QTest::newRow("bad exposure") << QStringList{m, QStringLiteral("-o"), o, QStringLiteral("--exposure"),
+                                                     QStringLiteral("bright")};
+        QTest::newRow("bad tonemap") << QStringList{m, QStringLiteral("-o"), o, QStringLiteral("--tonemap"),
+                                                    QStringLiteral("filmic")};
+        QTest::newRow("bad extension")
+            << QStringList{m, QStringLiteral("-o"), QStringLiteral("/tmp/out.bmp")};
     }
 
     void usageErrorsExit2() {
@@ -134,16 +165,28 @@ private slots:
         QTest::addColumn<QString>("mentions");
         const QString out = path(QStringLiteral("kept.png"));
         const QString badRig = path(QStringLiteral("bad-rig.json"));
-        QTest::newRow("missing model") << QStringList{path(QStringLiteral("nope.glb")), QStringLiteral("-o"), out} << QStringLiteral("nope.glb");
-        QTest::newRow("not a model") << QStringList{badRig, QStringLiteral("-o"), out} << QStringLiteral("bad-rig.json");
-        QTest::newRow("bad rig") << QStringList{suzanne(), QStringLiteral("--rig"), badRig, QStringLiteral("-o"), out} << QStringLiteral("bad-rig.json");
-        QTest::newRow("missing rig") << QStringList{suzanne(), QStringLiteral("--rig"), path(QStringLiteral("none.json")), QStringLiteral("-o"), out} << QStringLiteral("none.json");
-        QTest::newRow("camera out of range") << QStringList{suzanne(), QStringLiteral("--camera-index"), QStringLiteral("3"), QStringLiteral("-o"), out} << QStringLiteral("camera");
-        QTest::newRow("no such folder") << QStringList{suzanne(), QStringLiteral("-o"), path(QStringLiteral("no/such/dir/x.png"))} << QStringLiteral("does not exist");
+        QTest::newRow("missing model")
+            << QStringList{path(QStringLiteral("nope.glb")), QStringLiteral("-o"), out}
+            << QStringLiteral("nope.glb");
+        QTest::newRow("not a model") << QStringList{badRig, QStringLiteral("-o"), out}
+                                     << QStringLiteral("bad-rig.json");
+        QTest::newRow("bad rig") << QStringList{suzanne(), QStringLiteral("--rig"), badRig,
+                                                QStringLiteral("-o"), out}
+                                 << QStringLiteral("bad-rig.json");
+        QTest::newRow("missing rig") << QStringList{suzanne(), QStringLiteral("--rig"),
+                                                    path(QStringLiteral("none.json")), QStringLiteral("-o"),
+                                                    out}
+                                     << QStringLiteral("none.json");
+        QTest::newRow("camera out of range") << QStringList{suzanne(), QStringLiteral("--camera-index"),
+                                                            QStringLiteral("3"), QStringLiteral("-o"), out}
+                                             << QStringLiteral("camera");
+        QTest::newRow("no such folder")
+            << QStringList{suzanne(), QStringLiteral("-o"), path(QStringLiteral("no/such/dir/x.png"))}
+            << QStringLiteral("does not exist");
     }
 
     void failuresExit1AndWriteNothing() {
-        LR_REQUIRE_DISPLAY();  // without one, every render fails first with "needs an X display"
+        LR_REQUIRE_DISPLAY(); // without one, every render fails first with "needs an X display"
         QFETCH(QStringList, args);
         QFETCH(QString, mentions);
         {
@@ -151,13 +194,14 @@ private slots:
             QVERIFY(rig.open(QIODevice::WriteOnly));
             rig.write("{\"format\": \"lightrig\", \"version\": 1, \"lights\": [{\"type\": \"laser\"}]}");
         }
-        QFile kept(path(QStringLiteral("kept.png")));  // an earlier output stays as it was
+        QFile kept(path(QStringLiteral("kept.png"))); // an earlier output stays as it was
         QVERIFY(kept.open(QIODevice::WriteOnly));
         kept.write("previous");
         kept.close();
         const Run r = lightrig(args);
         QVERIFY2(r.code == 1, qPrintable(r.show()));
-        QVERIFY2(r.errorLines().size() == 1 && r.errorLines().first().contains(mentions), qPrintable(r.show()));
+        QVERIFY2(r.errorLines().size() == 1 && r.errorLines().first().contains(mentions),
+                 qPrintable(r.show()));
         QVERIFY(kept.open(QIODevice::ReadOnly));
         QCOMPARE(kept.readAll(), QByteArray("previous"));
         QVERIFY(!QFile::exists(path(QStringLiteral("no/such/dir/x.png"))));
@@ -168,9 +212,11 @@ private slots:
         env.remove(QStringLiteral("DISPLAY"));
         env.remove(QStringLiteral("WAYLAND_DISPLAY"));
         env.remove(QStringLiteral("QT_QPA_PLATFORM"));
-        const Run r = lightrig({suzanne(), QStringLiteral("-o"), path(QStringLiteral("nodisplay.png"))}, &env);
+        const Run r =
+            lightrig({suzanne(), QStringLiteral("-o"), path(QStringLiteral("nodisplay.png"))}, &env);
         QVERIFY2(r.code == 1, qPrintable(r.show()));
-        QVERIFY2(r.err.contains(QLatin1String("needs an X display; run it under xvfb-run -a")), qPrintable(r.show()));
+        QVERIFY2(r.err.contains(QLatin1String("needs an X display; run it under xvfb-run -a")),
+                 qPrintable(r.show()));
         QVERIFY(!QFile::exists(path(QStringLiteral("nodisplay.png"))));
     }
 
@@ -179,21 +225,23 @@ private slots:
         const Run png = lightrig({suzanne(), QStringLiteral("-o"), path(QStringLiteral("default.png"))});
         QVERIFY2(png.code == 0, qPrintable(png.show()));
         const QImage image(path(QStringLiteral("default.png")));
-        QCOMPARE(image.size(), QSize(1280, 720));  // the default size
+        QCOMPARE(image.size(), QSize(1280, 720)); // the default size
         QCOMPARE(QColor(image.pixel(0, 0)).alpha(), 255);
 
-        const Run jpg = lightrig({suzanne(), QStringLiteral("-o"), path(QStringLiteral("out.jpeg")), QStringLiteral("--size"),
-                                  QStringLiteral("160x90"), QStringLiteral("--view"), QStringLiteral("front"),
-                                  QStringLiteral("--tonemap"), QStringLiteral("aces"), QStringLiteral("--exposure"),
-                                  QStringLiteral("1.5"), QStringLiteral("--supersample"), QStringLiteral("2")});
+        const Run jpg = lightrig(
+            {suzanne(), QStringLiteral("-o"), path(QStringLiteral("out.jpeg")), QStringLiteral("--size"),
+             QStringLiteral("160x90"), QStringLiteral("--view"), QStringLiteral("front"),
+             QStringLiteral("--tonemap"), QStringLiteral("aces"), QStringLiteral("--exposure"),
+             QStringLiteral("1.5"), QStringLiteral("--supersample"), QStringLiteral("2")});
         QVERIFY2(jpg.code == 0, qPrintable(jpg.show()));
         QFile f(path(QStringLiteral("out.jpeg")));
         QVERIFY(f.open(QIODevice::ReadOnly));
-        QVERIFY(f.read(3) == QByteArray("\xFF\xD8\xFF"));  // JPEG, by extension
+        QVERIFY(f.read(3) == QByteArray("\xFF\xD8\xFF")); // JPEG, by extension
         QCOMPARE(QImage(path(QStringLiteral("out.jpeg"))).size(), QSize(160, 90));
 
-        const Run clear = lightrig({suzanne(), QStringLiteral("-o"), path(QStringLiteral("clear.png")), QStringLiteral("--size"),
-                                    QStringLiteral("160x90"), QStringLiteral("--transparent")});
+        const Run clear =
+            lightrig({suzanne(), QStringLiteral("-o"), path(QStringLiteral("clear.png")),
+                      QStringLiteral("--size"), QStringLiteral("160x90"), QStringLiteral("--transparent")});
         QVERIFY2(clear.code == 0, qPrintable(clear.show()));
         const QImage t(path(QStringLiteral("clear.png")));
         QCOMPARE(qAlpha(t.pixel(0, 0)), 0);
@@ -202,22 +250,27 @@ private slots:
 
     void baselineSuzanne() {
         LR_REQUIRE_DISPLAY();
-        checkBaseline(QStringLiteral("suzanne-default-rig"), {suzanne(), QStringLiteral("--size"), QStringLiteral("320x240")});
+        checkBaseline(QStringLiteral("suzanne-default-rig"),
+                      {suzanne(), QStringLiteral("--size"), QStringLiteral("320x240")});
         checkBaseline(QStringLiteral("suzanne-three-point-top-aces"),
-                      {suzanne(), QStringLiteral("--rig"), QStringLiteral(LIGHTRIG_SOURCE_DIR "/resources/presets/three-point.json"),
-                       QStringLiteral("--view"), QStringLiteral("top"), QStringLiteral("--size"), QStringLiteral("240x240"),
-                       QStringLiteral("--tonemap"), QStringLiteral("aces")});
+                      {suzanne(), QStringLiteral("--rig"),
+                       QStringLiteral(LIGHTRIG_SOURCE_DIR "/resources/presets/three-point.json"),
+                       QStringLiteral("--view"), QStringLiteral("top"), QStringLiteral("--size"),
+                       QStringLiteral("240x240"), QStringLiteral("--tonemap"), QStringLiteral("aces")});
     }
 
     void baselineSharedModels() {
         LR_REQUIRE_DISPLAY();
         if (!QFile::exists(shared("gltf/khronos/Duck/glTF-Binary/Duck.glb")))
             QSKIP("../shared/models is not here (third-party test models)");
-        checkBaseline(QStringLiteral("duck-camera0"), {shared("gltf/khronos/Duck/glTF-Binary/Duck.glb"), QStringLiteral("--size"), QStringLiteral("320x240")});
-        checkBaseline(QStringLiteral("helmet-8pt"), {shared("bench/helmet_8pt.glb"), QStringLiteral("--size"), QStringLiteral("320x180")});
+        checkBaseline(QStringLiteral("duck-camera0"), {shared("gltf/khronos/Duck/glTF-Binary/Duck.glb"),
+                                                       QStringLiteral("--size"), QStringLiteral("320x240")});
+        checkBaseline(QStringLiteral("helmet-8pt"),
+                      {shared("bench/helmet_8pt.glb"), QStringLiteral("--size"), QStringLiteral("320x180")});
         checkBaseline(QStringLiteral("box-textured-three-quarter"),
-                      {shared("gltf/khronos/BoxTextured/glTF-Binary/BoxTextured.glb"), QStringLiteral("--view"),
-                       QStringLiteral("three-quarter"), QStringLiteral("--size"), QStringLiteral("200x200")});
+                      {shared("gltf/khronos/BoxTextured/glTF-Binary/BoxTextured.glb"),
+                       QStringLiteral("--view"), QStringLiteral("three-quarter"), QStringLiteral("--size"),
+                       QStringLiteral("200x200")});
     }
 };
 

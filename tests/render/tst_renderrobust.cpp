@@ -392,7 +392,8 @@ class TestRenderRobust : public QObject {
         const QImage edited = m_gl.renderImage(cam, QSize(96, 72), s, 1, &error);
         QVERIFY(!edited.isNull());
         const RenderStats after = m_gl.renderer().stats();
-        QVERIFY2(after.lightBytesUploaded > 0 && after.lightBytesUploaded <= qint64(render::kLightTexels * 16),
+        QVERIFY2(after.lightBytesUploaded > 0 &&
+                     after.lightBytesUploaded <= qint64(render::kLightTexels * 16),
                  qPrintable(QString::number(after.lightBytesUploaded)));
         QCOMPARE(after.shaderVariantsCompiled, before.shaderVariantsCompiled);
 

@@ -54,8 +54,9 @@ inline bool hasMessage(const QStringList& messages, const QString& file, const Q
     return false;
 }
 
-}  // namespace lr::test
+} // namespace lr::test
 
-#define LR_VERIFY_OK(result) QVERIFY2((result).ok() && (result).errors.isEmpty(), qPrintable(lr::test::describe(result)))
+#define LR_VERIFY_OK(result)                                                                                 \
+    QVERIFY2((result).ok() && (result).errors.isEmpty(), qPrintable(lr::test::describe(result)))
 // QCOMPARE cannot print LightRig's enums and structs (QTest::toString and lr::toString collide).
 #define LR_COMPARE(actual, expected) QVERIFY2((actual) == (expected), #actual " differs from " #expected)

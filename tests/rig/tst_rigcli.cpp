@@ -19,7 +19,8 @@ Run lightrig(const QStringList& args, bool withDisplay = true) {
     QProcess p;
     if (!withDisplay) {
         QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-        for (const char* name : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"}) env.remove(QLatin1String(name));
+        for (const char* name : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"})
+            env.remove(QLatin1String(name));
         p.setProcessEnvironment(env);
     }
     p.setProgram(QStringLiteral(LIGHTRIG_EXECUTABLE));
@@ -33,18 +34,20 @@ Run lightrig(const QStringList& args, bool withDisplay = true) {
     return r;
 }
 
-QString show(const Run& r) { return QStringLiteral("exit %1\nstdout:\n%2\nstderr:\n%3").arg(r.code).arg(r.out, r.err); }
+QString show(const Run& r) {
+    return QStringLiteral("exit %1\nstdout:\n%2\nstderr:\n%3").arg(r.code).arg(r.out, r.err);
+}
 
 void copy(const QString& from, const QString& to) {
     QFile::remove(to);
     QVERIFY(QFile::copy(from, to));
     QVERIFY(QFile::setPermissions(to, QFile::ReadOwner | QFile::WriteOwner));
 }
-}  // namespace
+} // namespace
 
 class TestRigCli : public QObject {
     Q_OBJECT
-private slots:
+  private slots:
     void initTestCase();
     void validateGood();
     void validateBad();
@@ -55,7 +58,7 @@ private slots:
     void formatRewrites();
     void formatLeavesBadFilesAlone();
 
-private:
+  private:
     QTemporaryDir m_dir;
 };
 
@@ -71,7 +74,8 @@ void TestRigCli::validateGood() {
     QVERIFY2(r.code == 0, qPrintable(show(r)));
     QVERIFY2(r.lines().contains(a + QStringLiteral(": ok")), qPrintable(show(r)));
     QVERIFY2(r.lines().contains(b + QStringLiteral(": ok")), qPrintable(show(r)));
-    QVERIFY2(r.lines().contains(b + QStringLiteral(": warning: lights[0].colour: unknown key (ignored)")), qPrintable(show(r)));
+    QVERIFY2(r.lines().contains(b + QStringLiteral(": warning: lights[0].colour: unknown key (ignored)")),
+             qPrintable(show(r)));
 }
 
 void TestRigCli::validateBad() {
@@ -81,7 +85,9 @@ void TestRigCli::validateBad() {
     const Run r = lightrig({QStringLiteral("validate"), good, bad, missing});
     QVERIFY2(r.code == 1, qPrintable(show(r)));
     QVERIFY2(r.lines().contains(good + QStringLiteral(": ok")), qPrintable(show(r)));
-    QVERIFY2(r.lines().contains(bad + QStringLiteral(": lights[2].falloff.range: must be a finite number > 0 and <= 1e12, got -5")),
+    QVERIFY2(r.lines().contains(
+                 bad + QStringLiteral(
+                           ": lights[2].falloff.range: must be a finite number > 0 and <= 1e12, got -5")),
              qPrintable(show(r)));
     QVERIFY2(!r.lines().contains(bad + QStringLiteral(": ok")), qPrintable(show(r)));
     QVERIFY2(r.out.contains(missing + QStringLiteral(": cannot open")), qPrintable(show(r)));
@@ -90,10 +96,12 @@ void TestRigCli::validateBad() {
 void TestRigCli::validateUsage() {
     Run r = lightrig({QStringLiteral("validate")});
     QVERIFY2(r.code == 2 && r.err.contains(QStringLiteral("no files")), qPrintable(show(r)));
-    r = lightrig({QStringLiteral("validate"), QStringLiteral("--frobnicate"), dataPath(QStringLiteral("good/minimal.json"))});
+    r = lightrig({QStringLiteral("validate"), QStringLiteral("--frobnicate"),
+                  dataPath(QStringLiteral("good/minimal.json"))});
     QVERIFY2(r.code == 2 && r.err.contains(QStringLiteral("frobnicate")), qPrintable(show(r)));
     r = lightrig({QStringLiteral("validate"), QStringLiteral("--help")});
-    QVERIFY2(r.code == 0 && r.out.startsWith(QStringLiteral("Usage: lightrig validate")), qPrintable(show(r)));
+    QVERIFY2(r.code == 0 && r.out.startsWith(QStringLiteral("Usage: lightrig validate")),
+             qPrintable(show(r)));
     r = lightrig({QStringLiteral("format"), QStringLiteral("--help")});
     QVERIFY2(r.code == 0 && r.out.contains(QStringLiteral("--check")), qPrintable(show(r)));
     r = lightrig({QStringLiteral("format"), QStringLiteral("--check")});
@@ -133,8 +141,9 @@ void TestRigCli::formatCheck() {
     Run r = lightrig({QStringLiteral("format"), QStringLiteral("--check"), canonical});
     QVERIFY2(r.code == 0, qPrintable(show(r)));
     r = lightrig({QStringLiteral("format"), QStringLiteral("--check"), canonical, loose});
-    QVERIFY2(r.code == 1 && r.out.contains(loose + QStringLiteral(": not in canonical form")), qPrintable(show(r)));
-    QCOMPARE(readAll(loose), before);  // --check changes nothing
+    QVERIFY2(r.code == 1 && r.out.contains(loose + QStringLiteral(": not in canonical form")),
+             qPrintable(show(r)));
+    QCOMPARE(readAll(loose), before); // --check changes nothing
 }
 
 void TestRigCli::formatRewrites() {
@@ -160,7 +169,8 @@ void TestRigCli::formatLeavesBadFilesAlone() {
     const QByteArray badBefore = readAll(bad), unknownBefore = readAll(unknown);
     const Run r = lightrig({QStringLiteral("format"), bad, unknown});
     QVERIFY2(r.code == 1, qPrintable(show(r)));
-    QVERIFY2(r.out.contains(bad + QStringLiteral(": lights[1].direction: must not be the zero vector")), qPrintable(show(r)));
+    QVERIFY2(r.out.contains(bad + QStringLiteral(": lights[1].direction: must not be the zero vector")),
+             qPrintable(show(r)));
     QVERIFY2(r.out.contains(unknown + QStringLiteral(": not formatted")), qPrintable(show(r)));
     QCOMPARE(readAll(bad), badBefore);
     QCOMPARE(readAll(unknown), unknownBefore);

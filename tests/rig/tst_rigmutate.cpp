@@ -12,10 +12,43 @@ using namespace lr::test;
 
 namespace {
 const QByteArray kTokens[] = {
-    "{", "}", "[", "]", ",", ":", "\"", "\\", "\\u", "\\ud800", "\\udc00", "1e999", "-1e-400", "-", "0", "01",
-    "1.", ".5", "null", "true", "NaN", "-Infinity", "\xff", "\xc3", "\xe2\x82", "\x00", "\"range\": -1, ",
-    "\"type\": \"rim\", ", "\"name\": \"n\", ", "\"cone\": {}, ", "\"falloff\": {\"model\": \"none\"}, ",
-    "\"inner\": 90, ", "\"version\": 2, ", "[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[", "\t", "\n", " ",
+    "{",
+    "}",
+    "[",
+    "]",
+    ",",
+    ":",
+    "\"",
+    "\\",
+    "\\u",
+    "\\ud800",
+    "\\udc00",
+    "1e999",
+    "-1e-400",
+    "-",
+    "0",
+    "01",
+    "1.",
+    ".5",
+    "null",
+    "true",
+    "NaN",
+    "-Infinity",
+    "\xff",
+    "\xc3",
+    "\xe2\x82",
+    "\x00",
+    "\"range\": -1, ",
+    "\"type\": \"rim\", ",
+    "\"name\": \"n\", ",
+    "\"cone\": {}, ",
+    "\"falloff\": {\"model\": \"none\"}, ",
+    "\"inner\": 90, ",
+    "\"version\": 2, ",
+    "[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[",
+    "\t",
+    "\n",
+    " ",
 };
 
 QByteArray mutate(QByteArray data, QRandomGenerator& rng) {
@@ -23,24 +56,24 @@ QByteArray mutate(QByteArray data, QRandomGenerator& rng) {
     for (int e = 0; e < edits; ++e) {
         const qsizetype at = data.isEmpty() ? 0 : qsizetype(rng.bounded(int(data.size())));
         switch (rng.bounded(6)) {
-        case 0:  // flip a byte
+        case 0: // flip a byte
             if (!data.isEmpty()) data[at] = char(rng.bounded(256));
             break;
-        case 1:  // delete a run
+        case 1: // delete a run
             data.remove(at, qsizetype(rng.bounded(16)));
             break;
-        case 2:  // duplicate a run
+        case 2: // duplicate a run
             data.insert(at, data.mid(at, qsizetype(rng.bounded(64))));
             break;
-        case 3: {  // insert a token
+        case 3: { // insert a token
             const QByteArray& t = kTokens[rng.bounded(int(std::size(kTokens)))];
             data.insert(at, t.isEmpty() ? QByteArray(1, '\0') : t);
             break;
         }
-        case 4:  // truncate
+        case 4: // truncate
             data.truncate(at);
             break;
-        default: {  // swap a digit for another number
+        default: { // swap a digit for another number
             const qsizetype d = data.indexOf(QByteArrayView("0123456789").at(rng.bounded(10)), at);
             if (d >= 0) data.replace(d, 1, QByteArray::number(rng.generateDouble() * 2e3 - 1e3, 'g', 17));
         }
@@ -48,20 +81,22 @@ QByteArray mutate(QByteArray data, QRandomGenerator& rng) {
     }
     return data;
 }
-}  // namespace
+} // namespace
 
 class TestRigMutate : public QObject {
     Q_OBJECT
-private slots:
+  private slots:
     void mutatedFiles();
 };
 
 void TestRigMutate::mutatedFiles() {
     QList<QByteArray> seeds;
-    for (const QString& name : builtinPresetNames()) seeds << readAll(builtinPresetPath(name));
+    for (const QString& name : builtinPresetNames())
+        seeds << readAll(builtinPresetPath(name));
     for (const char* dir : {"good", "bad"}) {
         const QDir d(dataPath(QString::fromLatin1(dir)));
-        for (const QString& f : d.entryList({QStringLiteral("*.json")}, QDir::Files)) seeds << readAll(d.filePath(f));
+        for (const QString& f : d.entryList({QStringLiteral("*.json")}, QDir::Files))
+            seeds << readAll(d.filePath(f));
     }
     QVERIFY(seeds.size() > 30);
     QRandomGenerator rng(4242);

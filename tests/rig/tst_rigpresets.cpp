@@ -29,13 +29,17 @@ Rig preset(const QString& name) {
     return *r.rig;
 }
 
-bool near(const glm::dvec3& a, const glm::dvec3& b) { return glm::length(a - b) < 1e-12; }
-glm::dvec3 unit(double x, double y, double z) { return glm::normalize(glm::dvec3(x, y, z)); }
-}  // namespace
+bool near(const glm::dvec3& a, const glm::dvec3& b) {
+    return glm::length(a - b) < 1e-12;
+}
+glm::dvec3 unit(double x, double y, double z) {
+    return glm::normalize(glm::dvec3(x, y, z));
+}
+} // namespace
 
 class TestRigPresets : public QObject {
     Q_OBJECT
-private slots:
+  private slots:
     void names();
     void everyPreset_data();
     void everyPreset();
@@ -50,16 +54,19 @@ private slots:
 
 void TestRigPresets::names() {
     QCOMPARE(builtinPresetNames(), kExpected);
-    QCOMPARE(builtinPresetPath(QStringLiteral("default")), QStringLiteral(":/resources/presets/default.json"));
+    QCOMPARE(builtinPresetPath(QStringLiteral("default")),
+             QStringLiteral(":/resources/presets/default.json"));
     QStringList onDisk = QDir(QStringLiteral(LIGHTRIG_SOURCE_DIR "/resources/presets"))
                              .entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name);
-    for (QString& f : onDisk) f.chop(5);
+    for (QString& f : onDisk)
+        f.chop(5);
     QCOMPARE(onDisk, kExpected);
 }
 
 void TestRigPresets::everyPreset_data() {
     QTest::addColumn<QString>("name");
-    for (const QString& n : kExpected) QTest::newRow(qPrintable(n)) << n;
+    for (const QString& n : kExpected)
+        QTest::newRow(qPrintable(n)) << n;
 }
 
 void TestRigPresets::everyPreset() {
@@ -70,8 +77,10 @@ void TestRigPresets::everyPreset() {
     QVERIFY(!r.rig->name.isEmpty());
     QVERIFY(!r.rig->lights.empty());
     const QByteArray embedded = readAll(builtinPresetPath(name));
-    QCOMPARE(writeRigJson(*r.rig), embedded);  // canonical: load -> save is byte-identical
-    QCOMPARE(readAll(QStringLiteral(LIGHTRIG_SOURCE_DIR "/resources/presets/") + name + QStringLiteral(".json")), embedded);
+    QCOMPARE(writeRigJson(*r.rig), embedded); // canonical: load -> save is byte-identical
+    QCOMPARE(
+        readAll(QStringLiteral(LIGHTRIG_SOURCE_DIR "/resources/presets/") + name + QStringLiteral(".json")),
+        embedded);
     QStringList names;
     for (const Light& l : r.rig->lights) {
         QVERIFY2(!names.contains(l.name), qPrintable(l.name));
@@ -83,7 +92,8 @@ void TestRigPresets::unknownPreset() {
     const RigReadResult r = readBuiltinPreset(QStringLiteral("nope"));
     QVERIFY(!r.ok());
     QCOMPARE(r.errors.size(), 1);
-    QVERIFY2(r.errors[0].startsWith(QStringLiteral("nope.json: no such built-in preset")), qPrintable(r.errors[0]));
+    QVERIFY2(r.errors[0].startsWith(QStringLiteral("nope.json: no such built-in preset")),
+             qPrintable(r.errors[0]));
 }
 
 // Doc 000: point at (0,50,50), colour (15,0,0), range 100, exponent 3; spot at (0,50,0), colour
@@ -105,7 +115,7 @@ void TestRigPresets::bookPointSpot() {
     QCOMPARE(spot.falloff.range, 300.0);
     LR_COMPARE(spot.cone.model, ConeModel::AnglePower);
     QCOMPARE(spot.cone.outer, 25.0);
-    QCOMPARE(spot.cone.exponent, 0.5);  // the book's pow(affect, 0.5)
+    QCOMPARE(spot.cone.exponent, 0.5); // the book's pow(affect, 0.5)
 }
 
 // Doc 001: spot at (0,2.5,0), direction (0,-1,0.6), inverse-polynomial (0, 0.1, 0.05), smooth cone
@@ -147,14 +157,17 @@ void TestRigPresets::rgbThree() {
     QCOMPARE(blue.falloff.range, 10000.0);
     QCOMPARE(blue.cone.outer, 22.5);
     QVERIFY(blue.color.b > blue.color.r && blue.color.b > blue.color.g);
-    for (const Light& l : rig.lights) QVERIFY(l.specularIsColor);  // doc 003's separate specular colour
+    for (const Light& l : rig.lights)
+        QVERIFY(l.specularIsColor); // doc 003's separate specular colour
 }
 
 // Doc 000's rim: a directional light and a rim light sharing its direction and colour, exponent 1.3.
 void TestRigPresets::rimBacklight() {
     const Rig rig = preset(QStringLiteral("rim-backlight"));
-    const auto dir = std::find_if(rig.lights.begin(), rig.lights.end(), [](const Light& l) { return l.type == LightType::Directional; });
-    const auto rim = std::find_if(rig.lights.begin(), rig.lights.end(), [](const Light& l) { return l.type == LightType::Rim; });
+    const auto dir = std::find_if(rig.lights.begin(), rig.lights.end(),
+                                  [](const Light& l) { return l.type == LightType::Directional; });
+    const auto rim = std::find_if(rig.lights.begin(), rig.lights.end(),
+                                  [](const Light& l) { return l.type == LightType::Rim; });
     QVERIFY(dir != rig.lights.end() && rim != rig.lights.end());
     QCOMPARE(rim->rimExponent, 1.3);
     QCOMPARE(rim->direction, dir->direction);
@@ -192,7 +205,8 @@ void TestRigPresets::defaultRigLightsTheFront() {
     QVERIFY2(upperRight > 0.25 && upperRight < 1.5, qPrintable(QString::number(upperRight)));
     QVERIFY2(luminance({0, -1, 0}) < front, "the underside should be darker than the front");
     for (const Light& l : rig.lights)
-        if (l.usesPosition()) QVERIFY2(glm::length(l.position) < 10.0 && glm::length(l.position) > 1.5, qPrintable(l.name));
+        if (l.usesPosition())
+            QVERIFY2(glm::length(l.position) < 10.0 && glm::length(l.position) > 1.5, qPrintable(l.name));
 }
 
 QTEST_GUILESS_MAIN(TestRigPresets)

@@ -13,7 +13,7 @@ using namespace lr::test;
 
 class TestRigRead : public QObject {
     Q_OBJECT
-private slots:
+  private slots:
     void issueExample();
     void defaults();
     void allFields();
@@ -94,7 +94,7 @@ void TestRigRead::defaults() {
     LR_COMPARE(rig.lights[0].falloff.model, FalloffModel::None);
     LR_COMPARE(rig.lights[1].falloff.model, FalloffModel::InverseSquare);
     QVERIFY(!rig.lights[1].falloff.hasRange());
-    LR_COMPARE(rig.lights[1].cone, (Cone{ConeModel::Smooth, 20.0, 35.0, 1.0}));  // a spot without "cone"
+    LR_COMPARE(rig.lights[1].cone, (Cone{ConeModel::Smooth, 20.0, 35.0, 1.0})); // a spot without "cone"
     QCOMPARE(rig.lights[1].direction, glm::dvec3(0, -1, 0));
     QCOMPARE(rig.lights[3].rimExponent, 1.3);
 }
@@ -127,9 +127,11 @@ void TestRigRead::unknownKeysAreWarnings() {
     LR_VERIFY_OK(r);
     QCOMPARE(r.warnings.size(), 3);
     QVERIFY2(hasMessage(r.warnings, file, QStringLiteral("comment: unknown key")), qPrintable(describe(r)));
-    QVERIFY2(hasMessage(r.warnings, file, QStringLiteral("lights[0].colour: unknown key")), qPrintable(describe(r)));
-    QVERIFY2(hasMessage(r.warnings, file, QStringLiteral("lights[0].falloff-note: unknown key")), qPrintable(describe(r)));
-    QCOMPARE(r.rig->lights[0].color, glm::dvec3(1.0));  // "colour" is not "color"
+    QVERIFY2(hasMessage(r.warnings, file, QStringLiteral("lights[0].colour: unknown key")),
+             qPrintable(describe(r)));
+    QVERIFY2(hasMessage(r.warnings, file, QStringLiteral("lights[0].falloff-note: unknown key")),
+             qPrintable(describe(r)));
+    QCOMPARE(r.rig->lights[0].color, glm::dvec3(1.0)); // "colour" is not "color"
 }
 
 void TestRigRead::utf8BomIsAccepted() {
@@ -153,8 +155,10 @@ static const struct {
     {"nul-byte.json", "line 1, column 48: contains a NUL byte"},
     {"duplicate-key.json", "lights[1].intensity: duplicate key"},
     {"duplicate-escaped-key.json", "lights: duplicate key"},
-    {"overflow.json", "lights[0].intensity: must be a finite number from 0 to 1000000, got 1e999 (out of the range of a double)"},
-    {"underflow.json", "lights[0].falloff.range: must be a finite number > 0 and <= 1e12, got 1e-400 (out of the range"},
+    {"overflow.json", "lights[0].intensity: must be a finite number from 0 to 1000000, got 1e999 (out of the "
+                      "range of a double)"},
+    {"underflow.json",
+     "lights[0].falloff.range: must be a finite number > 0 and <= 1e12, got 1e-400 (out of the range"},
     {"nan.json", "line 1, column 50 (in ambient[0]): NaN is not a JSON number"},
     {"infinity.json", "line 1, column 53 (in ambient[1]): -Infinity is not a JSON number"},
     {"newer-version.json", "version: the file is version 2, newer than this LightRig reads (version 1)"},
@@ -167,9 +171,12 @@ static const struct {
     {"single-quotes.json", "line 1, column 2: unexpected ''', expected a key in double quotes"},
     {"leading-zero.json", "line 1, column 36 (in version): numbers must not have leading zeros"},
     {"bad-escape.json", "line 1, column 50 (in name): invalid escape '\\L' in a string"},
-    {"lone-surrogate.json", "line 1, column 53 (in name): \\u escape: a high surrogate must be followed by a low one"},
+    {"lone-surrogate.json",
+     "line 1, column 53 (in name): \\u escape: a high surrogate must be followed by a low one"},
     {"control-character.json", "line 1, column 50 (in name): control character U+000a inside a string"},
-    {"deep-nesting.json", "line 1, column 78 (in extra[0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0]): nested deeper than 32 levels"},
+    {"deep-nesting.json", "line 1, column 78 (in "
+                          "extra[0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0]["
+                          "0][0][0][0][0][0]): nested deeper than 32 levels"},
     {"studio.json", "lights[2].falloff.range: must be a finite number > 0 and <= 1e12, got -5"},
     {"many-errors.json", "space: must be \"world\" or \"model\""},
 };
@@ -177,7 +184,8 @@ static const struct {
 void TestRigRead::badFiles_data() {
     QTest::addColumn<QString>("file");
     QTest::addColumn<QString>("expected");
-    for (const auto& b : kBadFiles) QTest::newRow(b.file) << QString::fromLatin1(b.file) << QString::fromUtf8(b.expected);
+    for (const auto& b : kBadFiles)
+        QTest::newRow(b.file) << QString::fromLatin1(b.file) << QString::fromUtf8(b.expected);
 }
 
 void TestRigRead::badFiles() {
@@ -186,7 +194,8 @@ void TestRigRead::badFiles() {
     const QString path = dataPath(QStringLiteral("bad/") + file);
     const RigReadResult r = readRigFile(path);
     QVERIFY2(!r.ok() && !r.rig.has_value(), qPrintable(describe(r)));
-    QVERIFY2(hasMessage(r.errors, path, expected), qPrintable(QStringLiteral("expected \"%1\"\n").arg(expected) + describe(r)));
+    QVERIFY2(hasMessage(r.errors, path, expected),
+             qPrintable(QStringLiteral("expected \"%1\"\n").arg(expected) + describe(r)));
     // The same bytes through readRigJson give the same messages under the given display name.
     const RigReadResult fromBytes = readRigJson(readAll(path), file);
     QVERIFY2(hasMessage(fromBytes.errors, file, expected), qPrintable(describe(fromBytes)));
@@ -194,9 +203,11 @@ void TestRigRead::badFiles() {
 
 void TestRigRead::everyBadFileIsChecked() {
     QStringList listed;
-    for (const auto& b : kBadFiles) listed << QString::fromLatin1(b.file);
+    for (const auto& b : kBadFiles)
+        listed << QString::fromLatin1(b.file);
     listed.sort();
-    const QStringList files = QDir(dataPath(QStringLiteral("bad"))).entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name);
+    const QStringList files =
+        QDir(dataPath(QStringLiteral("bad"))).entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name);
     QCOMPARE(files, listed);
 }
 
@@ -219,69 +230,91 @@ void TestRigRead::reportsAllErrors() {
         QStringLiteral("lights[3].exponent: must be a finite number > 0"),
     };
     for (const QString& e : expected)
-        QVERIFY2(hasMessage(r.errors, path, e), qPrintable(QStringLiteral("missing \"%1\"\n").arg(e) + describe(r)));
+        QVERIFY2(hasMessage(r.errors, path, e),
+                 qPrintable(QStringLiteral("missing \"%1\"\n").arg(e) + describe(r)));
     QCOMPARE(r.errors.size(), expected.size());
 }
 
 void TestRigRead::duplicateKeysAnywhere() {
     const QByteArray deep = rigJson(spotWithCone(R"({"model": "hard", "outer": 10, "outer": 20})"));
     RigReadResult r = readRigJson(deep, QStringLiteral("d.json"));
-    QVERIFY2(hasMessage(r.errors, QStringLiteral("d.json"), QStringLiteral("lights[0].cone.outer: duplicate key")), qPrintable(describe(r)));
+    QVERIFY2(
+        hasMessage(r.errors, QStringLiteral("d.json"), QStringLiteral("lights[0].cone.outer: duplicate key")),
+        qPrintable(describe(r)));
     // The first of two equal keys wins for the other checks; both are errors anyway.
-    r = readRigJson(R"({"format": "lightrig", "version": 1, "version": 1, "lights": []})", QStringLiteral("v.json"));
-    QCOMPARE(r.errors, QStringList{QStringLiteral("v.json: version: duplicate key; each key may appear only once")});
+    r = readRigJson(R"({"format": "lightrig", "version": 1, "version": 1, "lights": []})",
+                    QStringLiteral("v.json"));
+    QCOMPARE(r.errors,
+             QStringList{QStringLiteral("v.json: version: duplicate key; each key may appear only once")});
     // Many keys (the hashed path of the detector) in an unknown object.
     QByteArray big = "{";
-    for (int i = 0; i < 100; ++i) big += "\"k" + QByteArray::number(i) + "\": 0, ";
+    for (int i = 0; i < 100; ++i)
+        big += "\"k" + QByteArray::number(i) + "\": 0, ";
     big += "\"k57\": 1}";
     r = readRigJson(rigJson({}, "\"extra\": " + big + ','), QStringLiteral("h.json"));
-    QVERIFY2(hasMessage(r.errors, QStringLiteral("h.json"), QStringLiteral("extra.k57: duplicate key")), qPrintable(describe(r)));
+    QVERIFY2(hasMessage(r.errors, QStringLiteral("h.json"), QStringLiteral("extra.k57: duplicate key")),
+             qPrintable(describe(r)));
     QCOMPARE(r.errors.size(), 1);
 }
 
 // Names are limited in characters (code points), not UTF-16 units or bytes: 256 emoji are fine.
 void TestRigRead::nameLengthInCharacters() {
-    const QByteArray emoji = "\xf0\x9f\x92\xa1";  // U+1F4A1, two UTF-16 units, four bytes
+    const QByteArray emoji = "\xf0\x9f\x92\xa1"; // U+1F4A1, two UTF-16 units, four bytes
     QByteArray name;
-    for (int i = 0; i < kMaxRigNameLength; ++i) name += emoji;
-    RigReadResult r = readRigJson(rigJson(with(kRim, "\"name\": \"" + name + '"'), "\"name\": \"" + name + "\","),
-                                  QStringLiteral("n.json"));
+    for (int i = 0; i < kMaxRigNameLength; ++i)
+        name += emoji;
+    RigReadResult r =
+        readRigJson(rigJson(with(kRim, "\"name\": \"" + name + '"'), "\"name\": \"" + name + "\","),
+                    QStringLiteral("n.json"));
     LR_VERIFY_OK(r);
     QCOMPARE(r.rig->name.size(), 2 * kMaxRigNameLength);
     r = readRigJson(rigJson(with(kRim, "\"name\": \"" + name + "x\"")), QStringLiteral("n.json"));
-    QCOMPARE(r.errors, QStringList{QStringLiteral("n.json: lights[0].name: must be at most 256 characters, got 257")});
+    QCOMPARE(r.errors,
+             QStringList{QStringLiteral("n.json: lights[0].name: must be at most 256 characters, got 257")});
 }
 
 // Paths quote keys that are not identifiers and shorten absurdly long ones, so that many messages about
 // keys under one long key stay small.
 void TestRigRead::keysInPaths() {
-    RigReadResult r = readRigJson(rigJson({}, R"("my key": 1, "\u00e9t\u00e9": 2,)"), QStringLiteral("k.json"));
+    RigReadResult r =
+        readRigJson(rigJson({}, R"("my key": 1, "\u00e9t\u00e9": 2,)"), QStringLiteral("k.json"));
     LR_VERIFY_OK(r);
-    QVERIFY2(hasMessage(r.warnings, QStringLiteral("k.json"), QStringLiteral("[\"my key\"]: unknown key")), qPrintable(describe(r)));
-    QVERIFY2(hasMessage(r.warnings, QStringLiteral("k.json"), QString::fromUtf8("[\"\u00e9t\u00e9\"]: unknown key")), qPrintable(describe(r)));
+    QVERIFY2(hasMessage(r.warnings, QStringLiteral("k.json"), QStringLiteral("[\"my key\"]: unknown key")),
+             qPrintable(describe(r)));
+    QVERIFY2(hasMessage(r.warnings, QStringLiteral("k.json"),
+                        QString::fromUtf8("[\"\u00e9t\u00e9\"]: unknown key")),
+             qPrintable(describe(r)));
     const QByteArray longKey(100'000, 'k');
     QByteArray inner;
-    for (int i = 0; i < 150; ++i) inner += "\"d\": 0, ";
+    for (int i = 0; i < 150; ++i)
+        inner += "\"d\": 0, ";
     r = readRigJson(rigJson({}, "\"" + longKey + "\": {" + inner + "\"e\": 0},"), QStringLiteral("l.json"));
     QCOMPARE(r.errors.size(), 149);
     qsizetype total = 0;
-    for (const QString& e : r.errors) total += e.size();
+    for (const QString& e : r.errors)
+        total += e.size();
     QVERIFY2(total < 149 * 200, qPrintable(r.errors.first()));
-    QVERIFY2(r.errors.first().startsWith(QStringLiteral("l.json: [\"") + QString(48, QLatin1Char('k')) + QStringLiteral("\"...].d: duplicate key")),
+    QVERIFY2(r.errors.first().startsWith(QStringLiteral("l.json: [\"") + QString(48, QLatin1Char('k')) +
+                                         QStringLiteral("\"...].d: duplicate key")),
              qPrintable(r.errors.first()));
 }
 
 void TestRigRead::numbersOutOfRange() {
     for (const char* text : {"1e999", "-1e999", "1e-400", "123e456789"}) {
-        const RigReadResult r = readRigJson(rigJson(with(kPoint, QByteArray(R"("intensity": )") + text)), QStringLiteral("n.json"));
+        const RigReadResult r = readRigJson(rigJson(with(kPoint, QByteArray(R"("intensity": )") + text)),
+                                            QStringLiteral("n.json"));
         QVERIFY2(hasMessage(r.errors, QStringLiteral("n.json"),
-                            QStringLiteral("lights[0].intensity: must be a finite number from 0 to 1000000, got %1 (out of the range of a double)")
+                            QStringLiteral("lights[0].intensity: must be a finite number from 0 to 1000000, "
+                                           "got %1 (out of the range of a double)")
                                 .arg(QLatin1String(text))),
                  qPrintable(describe(r)));
     }
     // The largest finite double and a subnormal are numbers (rejected or accepted by their field's rule).
-    RigReadResult r = readRigJson(rigJson(with(kPoint, R"("intensity": 1.7976931348623157e308)")), QStringLiteral("m.json"));
-    QVERIFY2(hasMessage(r.errors, QStringLiteral("m.json"), QStringLiteral("lights[0].intensity: must be a finite number from 0 to 1000000, got 1.7976931348623157e308")),
+    RigReadResult r = readRigJson(rigJson(with(kPoint, R"("intensity": 1.7976931348623157e308)")),
+                                  QStringLiteral("m.json"));
+    QVERIFY2(hasMessage(r.errors, QStringLiteral("m.json"),
+                        QStringLiteral("lights[0].intensity: must be a finite number from 0 to 1000000, got "
+                                       "1.7976931348623157e308")),
              qPrintable(describe(r)));
     r = readRigJson(rigJson(with(kPoint, R"("intensity": 5e-324)")), QStringLiteral("s.json"));
     LR_VERIFY_OK(r);
@@ -293,8 +326,9 @@ void TestRigRead::overLargeFile() {
     QByteArray data = rigJson(kPoint);
     data.append(QByteArray(kMaxRigFileBytes - data.size() + 1, ' '));
     const RigReadResult r = readRigJson(data, QStringLiteral("big.json"));
-    QCOMPARE(r.errors, QStringList{QStringLiteral("big.json: the file is 16777217 bytes; rig files are limited to 16 MiB")});
-    data.chop(1);  // exactly 16 MiB is allowed
+    QCOMPARE(r.errors, QStringList{QStringLiteral(
+                           "big.json: the file is 16777217 bytes; rig files are limited to 16 MiB")});
+    data.chop(1); // exactly 16 MiB is allowed
     LR_VERIFY_OK(readRigJson(data, QStringLiteral("ok.json")));
 
     QTemporaryDir dir;
@@ -302,20 +336,24 @@ void TestRigRead::overLargeFile() {
     const QString path = dir.filePath(QStringLiteral("big.json"));
     QFile f(path);
     QVERIFY(f.open(QIODevice::WriteOnly));
-    QVERIFY(f.resize(qint64(kMaxRigFileBytes) * 4));  // sparse: 64 MiB of NULs, never read
+    QVERIFY(f.resize(qint64(kMaxRigFileBytes) * 4)); // sparse: 64 MiB of NULs, never read
     f.close();
     const RigReadResult fromFile = readRigFile(path);
-    QCOMPARE(fromFile.errors, QStringList{path + QStringLiteral(": the file is 67108864 bytes; rig files are limited to 16 MiB")});
+    QCOMPARE(
+        fromFile.errors,
+        QStringList{path + QStringLiteral(": the file is 67108864 bytes; rig files are limited to 16 MiB")});
 }
 
 void TestRigRead::tooManyLights() {
     QByteArray lights;
-    for (int i = 0; i < kMaxRigLights; ++i) lights += (i ? ", " : "") + kDirectional;
+    for (int i = 0; i < kMaxRigLights; ++i)
+        lights += (i ? ", " : "") + kDirectional;
     RigReadResult r = readRigJson(rigJson(lights), QStringLiteral("max.json"));
     LR_VERIFY_OK(r);
     QCOMPARE(r.rig->lights.size(), size_t(kMaxRigLights));
     r = readRigJson(rigJson(lights + ", " + kDirectional), QStringLiteral("over.json"));
-    QCOMPARE(r.errors, QStringList{QStringLiteral("over.json: lights: 4097 lights; at most 4096 are allowed")});
+    QCOMPARE(r.errors,
+             QStringList{QStringLiteral("over.json: lights: 4097 lights; at most 4096 are allowed")});
 }
 
 void TestRigRead::nestingLimit() {
@@ -325,11 +363,13 @@ void TestRigRead::nestingLimit() {
     LR_VERIFY_OK(r);
     QCOMPARE(r.warnings.size(), 1);
     r = readRigJson(rigJson({}, "\"extra\": " + nested(32) + ','), QStringLiteral("deep.json"));
-    QVERIFY2(!r.ok() && r.errors.size() == 1 && r.errors[0].contains(QStringLiteral("nested deeper than 32 levels")),
+    QVERIFY2(!r.ok() && r.errors.size() == 1 &&
+                 r.errors[0].contains(QStringLiteral("nested deeper than 32 levels")),
              qPrintable(describe(r)));
     // Far deeper input (a stack-overflow attempt) fails the same way.
     r = readRigJson(nested(1'000'000), QStringLiteral("bomb.json"));
-    QVERIFY2(!r.ok() && r.errors.size() == 1 && r.errors[0].contains(QStringLiteral("nested deeper")), qPrintable(describe(r)));
+    QVERIFY2(!r.ok() && r.errors.size() == 1 && r.errors[0].contains(QStringLiteral("nested deeper")),
+             qPrintable(describe(r)));
 }
 
 void TestRigRead::directionsAreNormalised() {
@@ -343,8 +383,8 @@ void TestRigRead::directionsAreNormalised() {
         {"[3, 0, 4]", {0.6, 0, 0.8}},
     };
     for (const auto& c : cases) {
-        const RigReadResult r = readRigJson(rigJson(QByteArray(R"({"type": "rim", "direction": )") + c.json + '}'),
-                                            QStringLiteral("d.json"));
+        const RigReadResult r = readRigJson(
+            rigJson(QByteArray(R"({"type": "rim", "direction": )") + c.json + '}'), QStringLiteral("d.json"));
         LR_VERIFY_OK(r);
         const glm::dvec3 d = r.rig->lights[0].direction;
         QVERIFY2(glm::length(d - c.expected) < 1e-15, c.json);
@@ -359,7 +399,8 @@ void TestRigRead::missingFile() {
     QCOMPARE(r.errors.size(), 1);
     QVERIFY2(r.errors[0].startsWith(path + QStringLiteral(": cannot open")), qPrintable(r.errors[0]));
     r = readRigFile(dataPath(QStringLiteral("bad")));
-    QCOMPARE(r.errors, QStringList{dataPath(QStringLiteral("bad")) + QStringLiteral(": is a directory, not a rig file")});
+    QCOMPARE(r.errors, QStringList{dataPath(QStringLiteral("bad")) +
+                                   QStringLiteral(": is a directory, not a rig file")});
 }
 
 QTEST_GUILESS_MAIN(TestRigRead)

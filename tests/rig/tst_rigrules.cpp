@@ -7,116 +7,204 @@ using namespace lr::test;
 
 class TestRigRules : public QObject {
     Q_OBJECT
-private slots:
+  private slots:
     void rules_data();
     void rules();
 };
 
 void TestRigRules::rules_data() {
     QTest::addColumn<QByteArray>("json");
-    QTest::addColumn<QString>("expected");  // "json.path: start of the reason"
+    QTest::addColumn<QString>("expected"); // "json.path: start of the reason"
     auto row = [](const char* name, const QByteArray& json, const char* expected) {
         QTest::newRow(name) << json << QString::fromUtf8(expected);
     };
     // The document and its header.
     row("format missing", R"({"version": 1, "lights": []})", "format: missing");
-    row("format not a string", R"({"format": 1, "version": 1, "lights": []})", "format: must be \"lightrig\"");
+    row("format not a string", R"({"format": 1, "version": 1, "lights": []})",
+        "format: must be \"lightrig\"");
     row("version missing", R"({"format": "lightrig", "lights": []})", "version: missing");
-    row("version 0", R"({"format": "lightrig", "version": 0, "lights": []})", "version: must be the integer 1");
-    row("version 1.5", R"({"format": "lightrig", "version": 1.5, "lights": []})", "version: must be the integer 1");
-    row("version string", R"({"format": "lightrig", "version": "1", "lights": []})", "version: must be the integer 1");
-    row("version 2", R"({"format": "lightrig", "version": 2, "lights": []})", "version: the file is version 2, newer");
+    row("version 0", R"({"format": "lightrig", "version": 0, "lights": []})",
+        "version: must be the integer 1");
+    row("version 1.5", R"({"format": "lightrig", "version": 1.5, "lights": []})",
+        "version: must be the integer 1");
+    row("version string", R"({"format": "lightrig", "version": "1", "lights": []})",
+        "version: must be the integer 1");
+    row("version 2", R"({"format": "lightrig", "version": 2, "lights": []})",
+        "version: the file is version 2, newer");
     row("name not a string", rigJson({}, R"("name": 42,)"), "name: must be a string, got 42");
-    row("name too long", rigJson({}, "\"name\": \"" + QByteArray(257, 'x') + "\","), "name: must be at most 256 characters");
-    row("space", rigJson({}, R"("space": "local",)"), "space: must be \"world\" or \"model\", got the string \"local\"");
+    row("name too long", rigJson({}, "\"name\": \"" + QByteArray(257, 'x') + "\","),
+        "name: must be at most 256 characters");
+    row("space", rigJson({}, R"("space": "local",)"),
+        "space: must be \"world\" or \"model\", got the string \"local\"");
     row("ambient 2 components", rigJson({}, R"("ambient": [1, 1],)"), "ambient: must be an RGB colour");
-    row("ambient negative", rigJson({}, R"("ambient": [0, -0.5, 0],)"), "ambient[1]: must be a finite number from 0 to 1000000, got -0.5");
+    row("ambient negative", rigJson({}, R"("ambient": [0, -0.5, 0],)"),
+        "ambient[1]: must be a finite number from 0 to 1000000, got -0.5");
     row("shading not object", rigJson({}, R"("shading": "phong",)"), "shading: must be an object");
-    row("shading.specular", rigJson({}, R"("shading": {"specular": "gouraud"},)"), "shading.specular: must be \"phong\" or \"blinn-phong\"");
-    row("shading.viewer", rigJson({}, R"("shading": {"viewer": "ortho"},)"), "shading.viewer: must be \"local\" or \"infinite\"");
-    row("shading.shininess 0", rigJson({}, R"("shading": {"shininess": 0},)"), "shading.shininess: must be a finite number > 0 and <= 10000, got 0");
+    row("shading.specular", rigJson({}, R"("shading": {"specular": "gouraud"},)"),
+        "shading.specular: must be \"phong\" or \"blinn-phong\"");
+    row("shading.viewer", rigJson({}, R"("shading": {"viewer": "ortho"},)"),
+        "shading.viewer: must be \"local\" or \"infinite\"");
+    row("shading.shininess 0", rigJson({}, R"("shading": {"shininess": 0},)"),
+        "shading.shininess: must be a finite number > 0 and <= 10000, got 0");
     row("lights missing", R"({"format": "lightrig", "version": 1})", "lights: missing");
-    row("lights not array", R"({"format": "lightrig", "version": 1, "lights": {}})", "lights: must be an array");
+    row("lights not array", R"({"format": "lightrig", "version": 1, "lights": {}})",
+        "lights: must be an array");
     row("light not object", rigJson("1"), "lights[0]: must be an object");
     // Every light.
     row("type missing", rigJson(R"({"position": [0, 0, 0]})"), "lights[0].type: missing");
-    row("type unknown", rigJson(R"({"type": "area"})"), "lights[0].type: must be \"point\", \"spot\", \"directional\" or \"rim\"");
-    row("light name too long", rigJson(with(kRim, "\"name\": \"" + QByteArray(257, 'y') + '"')), "lights[0].name: must be at most 256 characters, got 257");
+    row("type unknown", rigJson(R"({"type": "area"})"),
+        "lights[0].type: must be \"point\", \"spot\", \"directional\" or \"rim\"");
+    row("light name too long", rigJson(with(kRim, "\"name\": \"" + QByteArray(257, 'y') + '"')),
+        "lights[0].name: must be at most 256 characters, got 257");
     row("enabled", rigJson(with(kRim, R"("enabled": "yes")")), "lights[0].enabled: must be true or false");
-    row("color 2 components", rigJson(with(kPoint, R"("color": [1, 1])")), "lights[0].color: must be an RGB colour");
-    row("color string", rigJson(with(kPoint, R"("color": "#ffffff")")), "lights[0].color: must be an RGB colour");
-    row("color negative", rigJson(with(kPoint, R"("color": [-1, 0, 0])")), "lights[0].color[0]: must be a finite number from 0 to 1000000, got -1");
-    row("color huge", rigJson(with(kPoint, R"("color": [0, 0, 2e6])")), "lights[0].color[2]: must be a finite number from 0 to 1000000, got 2e6");
-    row("temperature low", rigJson(with(kPoint, R"("temperature": 999)")), "lights[0].temperature: must be a finite number from 1000 to 40000, got 999");
-    row("temperature high", rigJson(with(kRim, R"("temperature": 40001)")), "lights[0].temperature: must be a finite number from 1000 to 40000");
-    row("intensity negative", rigJson(with(kPoint, R"("intensity": -1)")), "lights[0].intensity: must be a finite number from 0 to 1000000, got -1");
-    row("intensity huge", rigJson(with(kPoint, R"("intensity": 1000001)")), "lights[0].intensity: must be a finite number from 0 to 1000000");
-    row("position missing", rigJson(R"({"type": "point", "falloff": {"model": "none"}})"), "lights[0].position: missing");
-    row("position too far", rigJson(R"({"type": "point", "position": [1e13, 0, 0], "falloff": {"model": "none"}})"), "lights[0].position[0]: must be a finite number from -1e12 to 1e12, got 1e13");
-    row("position on directional", rigJson(with(kDirectional, R"("position": [0, 0, 0])")), "lights[0].position: a directional light has no position");
-    row("position on rim", rigJson(with(kRim, R"("position": [0, 0, 0])")), "lights[0].position: a rim light has no position");
+    row("color 2 components", rigJson(with(kPoint, R"("color": [1, 1])")),
+        "lights[0].color: must be an RGB colour");
+    row("color string", rigJson(with(kPoint, R"("color": "#ffffff")")),
+        "lights[0].color: must be an RGB colour");
+    row("color negative", rigJson(with(kPoint, R"("color": [-1, 0, 0])")),
+        "lights[0].color[0]: must be a finite number from 0 to 1000000, got -1");
+    row("color huge", rigJson(with(kPoint, R"("color": [0, 0, 2e6])")),
+        "lights[0].color[2]: must be a finite number from 0 to 1000000, got 2e6");
+    row("temperature low", rigJson(with(kPoint, R"("temperature": 999)")),
+        "lights[0].temperature: must be a finite number from 1000 to 40000, got 999");
+    row("temperature high", rigJson(with(kRim, R"("temperature": 40001)")),
+        "lights[0].temperature: must be a finite number from 1000 to 40000");
+    row("intensity negative", rigJson(with(kPoint, R"("intensity": -1)")),
+        "lights[0].intensity: must be a finite number from 0 to 1000000, got -1");
+    row("intensity huge", rigJson(with(kPoint, R"("intensity": 1000001)")),
+        "lights[0].intensity: must be a finite number from 0 to 1000000");
+    row("position missing", rigJson(R"({"type": "point", "falloff": {"model": "none"}})"),
+        "lights[0].position: missing");
+    row("position too far",
+        rigJson(R"({"type": "point", "position": [1e13, 0, 0], "falloff": {"model": "none"}})"),
+        "lights[0].position[0]: must be a finite number from -1e12 to 1e12, got 1e13");
+    row("position on directional", rigJson(with(kDirectional, R"("position": [0, 0, 0])")),
+        "lights[0].position: a directional light has no position");
+    row("position on rim", rigJson(with(kRim, R"("position": [0, 0, 0])")),
+        "lights[0].position: a rim light has no position");
     row("direction missing", rigJson(R"({"type": "directional"})"), "lights[0].direction: missing");
-    row("direction zero", rigJson(R"({"type": "rim", "direction": [0, 0, 0]})"), "lights[0].direction: must not be the zero vector");
-    row("direction component", rigJson(R"({"type": "directional", "direction": [0, "down", 0]})"), "lights[0].direction[1]: must be a finite number, got the string \"down\"");
-    row("direction on point", rigJson(with(kPoint, R"("direction": [0, -1, 0])")), "lights[0].direction: a point light has no direction");
-    row("falloff missing", rigJson(R"({"type": "spot", "position": [0, 0, 0], "direction": [0, -1, 0]})"), "lights[0].falloff: missing");
-    row("falloff on directional", rigJson(with(kDirectional, R"("falloff": {"model": "none"})")), "lights[0].falloff: a directional light has no falloff");
-    row("falloff on rim", rigJson(with(kRim, R"("falloff": {"model": "none"})")), "lights[0].falloff: a rim light has no falloff");
-    row("range on directional", rigJson(with(kDirectional, R"("range": 5)")), "lights[0].range: a directional light has no range");
+    row("direction zero", rigJson(R"({"type": "rim", "direction": [0, 0, 0]})"),
+        "lights[0].direction: must not be the zero vector");
+    row("direction component", rigJson(R"({"type": "directional", "direction": [0, "down", 0]})"),
+        "lights[0].direction[1]: must be a finite number, got the string \"down\"");
+    row("direction on point", rigJson(with(kPoint, R"("direction": [0, -1, 0])")),
+        "lights[0].direction: a point light has no direction");
+    row("falloff missing", rigJson(R"({"type": "spot", "position": [0, 0, 0], "direction": [0, -1, 0]})"),
+        "lights[0].falloff: missing");
+    row("falloff on directional", rigJson(with(kDirectional, R"("falloff": {"model": "none"})")),
+        "lights[0].falloff: a directional light has no falloff");
+    row("falloff on rim", rigJson(with(kRim, R"("falloff": {"model": "none"})")),
+        "lights[0].falloff: a rim light has no falloff");
+    row("range on directional", rigJson(with(kDirectional, R"("range": 5)")),
+        "lights[0].range: a directional light has no range");
     row("range on point", rigJson(with(kPoint, R"("range": 5)")), "lights[0].range: belongs in \"falloff\"");
-    row("quadratic on point", rigJson(with(kPoint, R"("quadratic": 1)")), "lights[0].quadratic: belongs in \"falloff\"");
-    row("inner on point", rigJson(with(kPoint, R"("inner": 10)")), "lights[0].inner: a point light has no inner");
+    row("quadratic on point", rigJson(with(kPoint, R"("quadratic": 1)")),
+        "lights[0].quadratic: belongs in \"falloff\"");
+    row("inner on point", rigJson(with(kPoint, R"("inner": 10)")),
+        "lights[0].inner: a point light has no inner");
     row("outer on spot", rigJson(with(kSpot, R"("outer": 10)")), "lights[0].outer: belongs in \"cone\"");
-    row("model on light", rigJson(with(kPoint, R"("model": "none")")), "lights[0].model: belongs in \"falloff\" or \"cone\"");
-    row("cone on point", rigJson(with(kPoint, R"("cone": {"model": "hard", "outer": 10})")), "lights[0].cone: a point light has no cone");
-    row("cone on directional", rigJson(with(kDirectional, R"("cone": {})")), "lights[0].cone: a directional light has no cone");
-    row("diffuse unknown", rigJson(with(kPoint, R"("diffuse": "oren-nayar")")), "lights[0].diffuse: must be \"lambert\" or \"half-lambert\"");
-    row("diffuse on rim", rigJson(with(kRim, R"("diffuse": "lambert")")), "lights[0].diffuse: a rim light has no diffuse term");
-    row("specular negative", rigJson(with(kPoint, R"("specular": -1)")), "lights[0].specular: must be a finite number from 0 to 1000000, got -1");
-    row("specular string", rigJson(with(kPoint, R"("specular": "white")")), "lights[0].specular: must be a factor >= 0 or an RGB colour");
-    row("specular colour", rigJson(with(kPoint, R"("specular": [1, -1, 1])")), "lights[0].specular[1]: must be a finite number from 0");
-    row("specular on rim", rigJson(with(kRim, R"("specular": 1)")), "lights[0].specular: a rim light has no specular term");
-    row("ambient on rim", rigJson(with(kRim, R"("ambient": [0, 0, 0])")), "lights[0].ambient: a rim light has no ambient term");
-    row("light ambient", rigJson(with(kDirectional, R"("ambient": [1, 1])")), "lights[0].ambient: must be an RGB colour");
-    row("exponent on point", rigJson(with(kPoint, R"("exponent": 2)")), "lights[0].exponent: only rim lights have an exponent");
-    row("rim exponent 0", rigJson(with(kRim, R"("exponent": 0)")), "lights[0].exponent: must be a finite number > 0 and <= 10000, got 0");
-    row("rim exponent huge", rigJson(with(kRim, R"("exponent": 1e5)")), "lights[0].exponent: must be a finite number > 0 and <= 10000, got 1e5");
+    row("model on light", rigJson(with(kPoint, R"("model": "none")")),
+        "lights[0].model: belongs in \"falloff\" or \"cone\"");
+    row("cone on point", rigJson(with(kPoint, R"("cone": {"model": "hard", "outer": 10})")),
+        "lights[0].cone: a point light has no cone");
+    row("cone on directional", rigJson(with(kDirectional, R"("cone": {})")),
+        "lights[0].cone: a directional light has no cone");
+    row("diffuse unknown", rigJson(with(kPoint, R"("diffuse": "oren-nayar")")),
+        "lights[0].diffuse: must be \"lambert\" or \"half-lambert\"");
+    row("diffuse on rim", rigJson(with(kRim, R"("diffuse": "lambert")")),
+        "lights[0].diffuse: a rim light has no diffuse term");
+    row("specular negative", rigJson(with(kPoint, R"("specular": -1)")),
+        "lights[0].specular: must be a finite number from 0 to 1000000, got -1");
+    row("specular string", rigJson(with(kPoint, R"("specular": "white")")),
+        "lights[0].specular: must be a factor >= 0 or an RGB colour");
+    row("specular colour", rigJson(with(kPoint, R"("specular": [1, -1, 1])")),
+        "lights[0].specular[1]: must be a finite number from 0");
+    row("specular on rim", rigJson(with(kRim, R"("specular": 1)")),
+        "lights[0].specular: a rim light has no specular term");
+    row("ambient on rim", rigJson(with(kRim, R"("ambient": [0, 0, 0])")),
+        "lights[0].ambient: a rim light has no ambient term");
+    row("light ambient", rigJson(with(kDirectional, R"("ambient": [1, 1])")),
+        "lights[0].ambient: must be an RGB colour");
+    row("exponent on point", rigJson(with(kPoint, R"("exponent": 2)")),
+        "lights[0].exponent: only rim lights have an exponent");
+    row("rim exponent 0", rigJson(with(kRim, R"("exponent": 0)")),
+        "lights[0].exponent: must be a finite number > 0 and <= 10000, got 0");
+    row("rim exponent huge", rigJson(with(kRim, R"("exponent": 1e5)")),
+        "lights[0].exponent: must be a finite number > 0 and <= 10000, got 1e5");
     // Falloff.
     row("falloff not object", rigJson(pointWithFalloff("\"none\"")), "lights[0].falloff: must be an object");
-    row("falloff model missing", rigJson(pointWithFalloff(R"({"range": 5})")), "lights[0].falloff.model: missing");
-    row("falloff model unknown", rigJson(pointWithFalloff(R"({"model": "linear"})")), "lights[0].falloff.model: must be \"none\", \"range-power\"");
-    row("range-power no range", rigJson(pointWithFalloff(R"({"model": "range-power", "exponent": 2})")), "lights[0].falloff.range: missing");
-    row("range-power range -5", rigJson(pointWithFalloff(R"({"model": "range-power", "range": -5})")), "lights[0].falloff.range: must be a finite number > 0 and <= 1e12, got -5");
-    row("range-power range 0", rigJson(pointWithFalloff(R"({"model": "range-power", "range": 0})")), "lights[0].falloff.range: must be a finite number > 0 and <= 1e12, got 0");
-    row("range-power exponent 0", rigJson(pointWithFalloff(R"({"model": "range-power", "range": 5, "exponent": 0})")), "lights[0].falloff.exponent: must be a finite number > 0");
-    row("range-power constant", rigJson(pointWithFalloff(R"({"model": "range-power", "range": 5, "constant": 1})")), "lights[0].falloff.constant: the \"range-power\" falloff has no constant term");
-    row("polynomial all zero", rigJson(pointWithFalloff(R"({"model": "inverse-polynomial", "constant": 0, "linear": 0, "quadratic": 0})")), "lights[0].falloff: constant, linear and quadratic are all 0");
-    row("polynomial negative", rigJson(pointWithFalloff(R"({"model": "inverse-polynomial", "linear": -0.1})")), "lights[0].falloff.linear: must be a finite number from 0 to 1e12, got -0.1");
-    row("polynomial exponent", rigJson(pointWithFalloff(R"({"model": "inverse-polynomial", "exponent": 2})")), "lights[0].falloff.exponent: the \"inverse-polynomial\" falloff has no exponent");
-    row("polynomial range 0", rigJson(pointWithFalloff(R"({"model": "inverse-polynomial", "range": 0})")), "lights[0].falloff.range: must be a finite number > 0");
-    row("range-quadratic no range", rigJson(pointWithFalloff(R"({"model": "range-quadratic"})")), "lights[0].falloff.range: missing");
-    row("range-quadratic exponent", rigJson(pointWithFalloff(R"({"model": "range-quadratic", "range": 5, "exponent": 2})")), "lights[0].falloff.exponent: the \"range-quadratic\" falloff has no exponent");
-    row("inverse-square exponent", rigJson(pointWithFalloff(R"({"model": "inverse-square", "exponent": 2})")), "lights[0].falloff.exponent: the \"inverse-square\" falloff has no exponent");
-    row("inverse-square quadratic", rigJson(pointWithFalloff(R"({"model": "inverse-square", "quadratic": 1})")), "lights[0].falloff.quadratic: the \"inverse-square\" falloff has no quadratic term");
-    row("inverse-square range", rigJson(pointWithFalloff(R"({"model": "inverse-square", "range": -1})")), "lights[0].falloff.range: must be a finite number > 0");
-    row("none range", rigJson(pointWithFalloff(R"({"model": "none", "range": 5})")), "lights[0].falloff.range: the \"none\" falloff has no range");
-    row("none exponent", rigJson(pointWithFalloff(R"({"model": "none", "exponent": 1})")), "lights[0].falloff.exponent: the \"none\" falloff has no exponent");
-    row("falloff inner", rigJson(pointWithFalloff(R"({"model": "none", "inner": 1})")), "lights[0].falloff.inner: belongs in \"cone\"");
+    row("falloff model missing", rigJson(pointWithFalloff(R"({"range": 5})")),
+        "lights[0].falloff.model: missing");
+    row("falloff model unknown", rigJson(pointWithFalloff(R"({"model": "linear"})")),
+        "lights[0].falloff.model: must be \"none\", \"range-power\"");
+    row("range-power no range", rigJson(pointWithFalloff(R"({"model": "range-power", "exponent": 2})")),
+        "lights[0].falloff.range: missing");
+    row("range-power range -5", rigJson(pointWithFalloff(R"({"model": "range-power", "range": -5})")),
+        "lights[0].falloff.range: must be a finite number > 0 and <= 1e12, got -5");
+    row("range-power range 0", rigJson(pointWithFalloff(R"({"model": "range-power", "range": 0})")),
+        "lights[0].falloff.range: must be a finite number > 0 and <= 1e12, got 0");
+    row("range-power exponent 0",
+        rigJson(pointWithFalloff(R"({"model": "range-power", "range": 5, "exponent": 0})")),
+        "lights[0].falloff.exponent: must be a finite number > 0");
+    row("range-power constant",
+        rigJson(pointWithFalloff(R"({"model": "range-power", "range": 5, "constant": 1})")),
+        "lights[0].falloff.constant: the \"range-power\" falloff has no constant term");
+    row("polynomial all zero",
+        rigJson(pointWithFalloff(
+            R"({"model": "inverse-polynomial", "constant": 0, "linear": 0, "quadratic": 0})")),
+        "lights[0].falloff: constant, linear and quadratic are all 0");
+    row("polynomial negative",
+        rigJson(pointWithFalloff(R"({"model": "inverse-polynomial", "linear": -0.1})")),
+        "lights[0].falloff.linear: must be a finite number from 0 to 1e12, got -0.1");
+    row("polynomial exponent", rigJson(pointWithFalloff(R"({"model": "inverse-polynomial", "exponent": 2})")),
+        "lights[0].falloff.exponent: the \"inverse-polynomial\" falloff has no exponent");
+    row("polynomial range 0", rigJson(pointWithFalloff(R"({"model": "inverse-polynomial", "range": 0})")),
+        "lights[0].falloff.range: must be a finite number > 0");
+    row("range-quadratic no range", rigJson(pointWithFalloff(R"({"model": "range-quadratic"})")),
+        "lights[0].falloff.range: missing");
+    row("range-quadratic exponent",
+        rigJson(pointWithFalloff(R"({"model": "range-quadratic", "range": 5, "exponent": 2})")),
+        "lights[0].falloff.exponent: the \"range-quadratic\" falloff has no exponent");
+    row("inverse-square exponent", rigJson(pointWithFalloff(R"({"model": "inverse-square", "exponent": 2})")),
+        "lights[0].falloff.exponent: the \"inverse-square\" falloff has no exponent");
+    row("inverse-square quadratic",
+        rigJson(pointWithFalloff(R"({"model": "inverse-square", "quadratic": 1})")),
+        "lights[0].falloff.quadratic: the \"inverse-square\" falloff has no quadratic term");
+    row("inverse-square range", rigJson(pointWithFalloff(R"({"model": "inverse-square", "range": -1})")),
+        "lights[0].falloff.range: must be a finite number > 0");
+    row("none range", rigJson(pointWithFalloff(R"({"model": "none", "range": 5})")),
+        "lights[0].falloff.range: the \"none\" falloff has no range");
+    row("none exponent", rigJson(pointWithFalloff(R"({"model": "none", "exponent": 1})")),
+        "lights[0].falloff.exponent: the \"none\" falloff has no exponent");
+    row("falloff inner", rigJson(pointWithFalloff(R"({"model": "none", "inner": 1})")),
+        "lights[0].falloff.inner: belongs in \"cone\"");
     // Cone.
     row("cone not object", rigJson(spotWithCone("30")), "lights[0].cone: must be an object");
     row("cone model missing", rigJson(spotWithCone(R"({"outer": 30})")), "lights[0].cone.model: missing");
-    row("cone model unknown", rigJson(spotWithCone(R"({"model": "soft", "outer": 30})")), "lights[0].cone.model: must be \"angle-power\", \"smooth\" or \"hard\"");
-    row("smooth inner missing", rigJson(spotWithCone(R"({"model": "smooth", "outer": 30})")), "lights[0].cone.inner: missing");
+    row("cone model unknown", rigJson(spotWithCone(R"({"model": "soft", "outer": 30})")),
+        "lights[0].cone.model: must be \"angle-power\", \"smooth\" or \"hard\"");
+    row("smooth inner missing", rigJson(spotWithCone(R"({"model": "smooth", "outer": 30})")),
+        "lights[0].cone.inner: missing");
     row("outer missing", rigJson(spotWithCone(R"({"model": "hard"})")), "lights[0].cone.outer: missing");
-    row("inner 0", rigJson(spotWithCone(R"({"model": "smooth", "inner": 0, "outer": 30})")), "lights[0].cone.inner: must be a finite number > 0 and <= 90, got 0");
-    row("outer 91", rigJson(spotWithCone(R"({"model": "angle-power", "outer": 91})")), "lights[0].cone.outer: must be a finite number > 0 and <= 90, got 91");
-    row("inner > outer", rigJson(spotWithCone(R"({"model": "smooth", "inner": 40, "outer": 35})")), "lights[0].cone.inner: must be <= outer (35), got 40");
-    row("angle-power inner", rigJson(spotWithCone(R"({"model": "angle-power", "inner": 10, "outer": 30})")), "lights[0].cone.inner: the \"angle-power\" cone has no inner angle");
-    row("hard inner", rigJson(spotWithCone(R"({"model": "hard", "inner": 10, "outer": 30})")), "lights[0].cone.inner: the \"hard\" cone has no inner angle");
-    row("hard exponent", rigJson(spotWithCone(R"({"model": "hard", "outer": 30, "exponent": 2})")), "lights[0].cone.exponent: the \"hard\" cone has no exponent");
-    row("smooth exponent 0", rigJson(spotWithCone(R"({"model": "smooth", "inner": 10, "outer": 30, "exponent": 0})")), "lights[0].cone.exponent: must be a finite number > 0");
-    row("cone range", rigJson(spotWithCone(R"({"model": "hard", "outer": 30, "range": 4})")), "lights[0].cone.range: belongs in \"falloff\"");
-    row("second light", rigJson(kPoint + ", " + with(kSpot, R"("intensity": -3)")), "lights[1].intensity: must be a finite number from 0");
+    row("inner 0", rigJson(spotWithCone(R"({"model": "smooth", "inner": 0, "outer": 30})")),
+        "lights[0].cone.inner: must be a finite number > 0 and <= 90, got 0");
+    row("outer 91", rigJson(spotWithCone(R"({"model": "angle-power", "outer": 91})")),
+        "lights[0].cone.outer: must be a finite number > 0 and <= 90, got 91");
+    row("inner > outer", rigJson(spotWithCone(R"({"model": "smooth", "inner": 40, "outer": 35})")),
+        "lights[0].cone.inner: must be <= outer (35), got 40");
+    row("angle-power inner", rigJson(spotWithCone(R"({"model": "angle-power", "inner": 10, "outer": 30})")),
+        "lights[0].cone.inner: the \"angle-power\" cone has no inner angle");
+    row("hard inner", rigJson(spotWithCone(R"({"model": "hard", "inner": 10, "outer": 30})")),
+        "lights[0].cone.inner: the \"hard\" cone has no inner angle");
+    row("hard exponent", rigJson(spotWithCone(R"({"model": "hard", "outer": 30, "exponent": 2})")),
+        "lights[0].cone.exponent: the \"hard\" cone has no exponent");
+    row("smooth exponent 0",
+        rigJson(spotWithCone(R"({"model": "smooth", "inner": 10, "outer": 30, "exponent": 0})")),
+        "lights[0].cone.exponent: must be a finite number > 0");
+    row("cone range", rigJson(spotWithCone(R"({"model": "hard", "outer": 30, "range": 4})")),
+        "lights[0].cone.range: belongs in \"falloff\"");
+    row("second light", rigJson(kPoint + ", " + with(kSpot, R"("intensity": -3)")),
+        "lights[1].intensity: must be a finite number from 0");
 }
 
 // Each row breaks exactly one rule: exactly one error, naming the path; no rig comes back.
@@ -127,7 +215,8 @@ void TestRigRules::rules() {
     const RigReadResult r = readRigJson(json, file);
     QVERIFY2(!r.ok() && !r.rig.has_value(), qPrintable(describe(r)));
     QVERIFY2(r.errors.size() == 1, qPrintable(describe(r)));
-    QVERIFY2(hasMessage(r.errors, file, expected), qPrintable(QStringLiteral("expected \"%1: %2...\"\n").arg(file, expected) + describe(r)));
+    QVERIFY2(hasMessage(r.errors, file, expected),
+             qPrintable(QStringLiteral("expected \"%1: %2...\"\n").arg(file, expected) + describe(r)));
 }
 
 QTEST_GUILESS_MAIN(TestRigRules)

@@ -17,7 +17,7 @@ namespace {
 // Random valid rigs: values spread over the allowed ranges (ordinary, round, huge, tiny, subnormal),
 // names with escapes and non-ASCII text, every type and model; unused fields left at their defaults.
 class RigGenerator {
-public:
+  public:
     explicit RigGenerator(quint32 seed) : m_rng(seed) {}
 
     Rig rig() {
@@ -27,23 +27,30 @@ public:
         r.ambient = color();
         r.shading = {pick<SpecularModel>(), pick<ViewerModel>(), positive(kMaxRigExponent)};
         const int n = int(m_rng.bounded(8));
-        for (int i = 0; i < n; ++i) r.lights.push_back(light());
+        for (int i = 0; i < n; ++i)
+            r.lights.push_back(light());
         return r;
     }
 
-private:
+  private:
     template <typename E> E pick() { return E(m_rng.bounded(enumCount<E>())); }
     bool chance(double p) { return m_rng.generateDouble() < p; }
 
     // In [0, max]: mostly ordinary, sometimes 0, max, a round number, tiny or subnormal.
     double value(double max) {
         switch (m_rng.bounded(8)) {
-        case 0: return 0.0;
-        case 1: return max;
-        case 2: return double(m_rng.bounded(100)) / 10.0;
-        case 3: return std::ldexp(m_rng.generateDouble(), -int(m_rng.bounded(1060)));  // down to subnormals
-        case 4: return max * m_rng.generateDouble();
-        default: return std::min(max, std::exp(m_rng.generateDouble() * 10.0 - 5.0));
+        case 0:
+            return 0.0;
+        case 1:
+            return max;
+        case 2:
+            return double(m_rng.bounded(100)) / 10.0;
+        case 3:
+            return std::ldexp(m_rng.generateDouble(), -int(m_rng.bounded(1060))); // down to subnormals
+        case 4:
+            return max * m_rng.generateDouble();
+        default:
+            return std::min(max, std::exp(m_rng.generateDouble() * 10.0 - 5.0));
         }
     }
     double positive(double max) {
@@ -54,16 +61,20 @@ private:
     glm::dvec3 color() { return {value(kMaxRigIntensity), value(2.0), value(1.0)}; }
     glm::dvec3 unit() {
         glm::dvec3 v;
-        do v = {m_rng.generateDouble() * 2 - 1, m_rng.generateDouble() * 2 - 1, m_rng.generateDouble() * 2 - 1};
+        do
+            v = {m_rng.generateDouble() * 2 - 1, m_rng.generateDouble() * 2 - 1,
+                 m_rng.generateDouble() * 2 - 1};
         while (glm::dot(v, v) < 1e-6);
         return glm::normalize(v);
     }
     QString name() {
-        static const char16_t pieces[][4] = {u"a", u"Key", u" ", u"\"", u"\\", u"\n", u"\t", u"\u00e9", u"\u6f22",
-                                             u"\U0001F4A1", u"\u0001", u"/", u"\u007f", u"\u2028"};
+        static const char16_t pieces[][4] = {u"a",      u"Key", u" ",      u"\"",     u"\\",
+                                             u"\n",     u"\t",  u"\u00e9", u"\u6f22", u"\U0001F4A1",
+                                             u"\u0001", u"/",   u"\u007f", u"\u2028"};
         QString s;
         const int n = int(m_rng.bounded(12));
-        for (int i = 0; i < n; ++i) s += QString::fromUtf16(pieces[m_rng.bounded(int(std::size(pieces)))]);
+        for (int i = 0; i < n; ++i)
+            s += QString::fromUtf16(pieces[m_rng.bounded(int(std::size(pieces)))]);
         return s;
     }
 
@@ -81,14 +92,20 @@ private:
             Falloff& f = l.falloff;
             f.model = pick<FalloffModel>();
             switch (f.model) {
-            case FalloffModel::None: break;
-            case FalloffModel::RangePower: f.range = positive(kMaxRigLength), f.exponent = positive(kMaxRigExponent); break;
+            case FalloffModel::None:
+                break;
+            case FalloffModel::RangePower:
+                f.range = positive(kMaxRigLength), f.exponent = positive(kMaxRigExponent);
+                break;
             case FalloffModel::InversePolynomial:
-                f.constant = value(kMaxRigLength), f.linear = value(kMaxRigLength), f.quadratic = value(kMaxRigLength);
+                f.constant = value(kMaxRigLength), f.linear = value(kMaxRigLength),
+                f.quadratic = value(kMaxRigLength);
                 if (f.constant == 0.0 && f.linear == 0.0 && f.quadratic == 0.0) f.quadratic = 1.0;
                 if (chance(0.5)) f.range = positive(kMaxRigLength);
                 break;
-            case FalloffModel::RangeQuadratic: f.range = positive(kMaxRigLength); break;
+            case FalloffModel::RangeQuadratic:
+                f.range = positive(kMaxRigLength);
+                break;
             case FalloffModel::InverseSquare:
                 if (chance(0.5)) f.range = positive(kMaxRigLength);
                 break;
@@ -124,11 +141,11 @@ void writeFile(const QString& path, const QByteArray& data) {
     QCOMPARE(f.write(data), data.size());
 }
 
-}  // namespace
+} // namespace
 
 class TestRigWrite : public QObject {
     Q_OBJECT
-private slots:
+  private slots:
     void randomRigsRoundTrip();
     void loadSaveIsByteIdentical_data();
     void loadSaveIsByteIdentical();
@@ -150,14 +167,16 @@ void TestRigWrite::randomRigsRoundTrip() {
         const RigReadResult r = readRigJson(text, QStringLiteral("random.json"));
         QVERIFY2(r.ok(), qPrintable(describe(r) + QStringLiteral("\n") + QString::fromUtf8(text)));
         QVERIFY2(r.warnings.isEmpty(), qPrintable(describe(r)));
-        QVERIFY2(*r.rig == rig, qPrintable(QStringLiteral("rig %1 changed:\n").arg(i) + QString::fromUtf8(text)));
+        QVERIFY2(*r.rig == rig,
+                 qPrintable(QStringLiteral("rig %1 changed:\n").arg(i) + QString::fromUtf8(text)));
         QCOMPARE(writeRigJson(*r.rig), text);
     }
 }
 
 void TestRigWrite::loadSaveIsByteIdentical_data() {
     QTest::addColumn<QString>("file");
-    for (const char* f : {"good/issue-example.json", "good/minimal.json", "good/all-fields.json", "good/utf8-bom.json"})
+    for (const char* f :
+         {"good/issue-example.json", "good/minimal.json", "good/all-fields.json", "good/utf8-bom.json"})
         QTest::newRow(f) << dataPath(QString::fromLatin1(f));
 }
 
@@ -188,7 +207,8 @@ void TestRigWrite::numbersAreShortestAndExact() {
     QVERIFY2(text.contains("\"intensity\": 4,"), text.constData());
     QVERIFY2(text.contains("\"position\": [0.1, 0.3333333333333333, 0]"), text.constData());
     QVERIFY2(text.contains("\"color\": [1e-7, 123456.789125, 100000]"), text.constData());
-    QVERIFY2(text.contains("\"falloff\": {\"model\": \"range-power\", \"range\": 8, \"exponent\": 2}"), text.constData());
+    QVERIFY2(text.contains("\"falloff\": {\"model\": \"range-power\", \"range\": 8, \"exponent\": 2}"),
+             text.constData());
     const RigReadResult r = readRigJson(text, QStringLiteral("n.json"));
     LR_VERIFY_OK(r);
     QCOMPARE(r.rig->lights[0].position.y, 1.0 / 3.0);
@@ -210,8 +230,10 @@ void TestRigWrite::onlyUsedFieldsAreWritten() {
     Rig rig;
     rig.lights = {point, rim};
     const QByteArray text = writeRigJson(rig);
-    for (const char* key : {"\"cone\"", "\"direction\": [1, 0, 0]", "\"diffuse\"", "\"specular\": 0.5", "\"ambient\": [0.2", "\"position\": [1, 2, 3]", "7"})
-        QVERIFY2(!text.contains(key), qPrintable(QStringLiteral("%1 in\n%2").arg(QLatin1String(key), QString::fromUtf8(text))));
+    for (const char* key : {"\"cone\"", "\"direction\": [1, 0, 0]", "\"diffuse\"", "\"specular\": 0.5",
+                            "\"ambient\": [0.2", "\"position\": [1, 2, 3]", "7"})
+        QVERIFY2(!text.contains(key),
+                 qPrintable(QStringLiteral("%1 in\n%2").arg(QLatin1String(key), QString::fromUtf8(text))));
     const RigReadResult r = readRigJson(text, QStringLiteral("u.json"));
     LR_VERIFY_OK(r);
     LR_COMPARE(r.rig->lights[0].falloff, point.falloff);
@@ -231,7 +253,7 @@ void TestRigWrite::saveAndReload() {
     LR_VERIFY_OK(r);
     QVERIFY(*r.rig == rig);
     QCOMPARE(readAll(path), writeRigJson(rig));
-    QVERIFY(saveRigFile(rig, path, nullptr));  // overwriting, no error string wanted
+    QVERIFY(saveRigFile(rig, path, nullptr)); // overwriting, no error string wanted
     QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList{QStringLiteral("rig.json")});
 }
 
@@ -241,11 +263,12 @@ void TestRigWrite::saveRefusesInvalidRig() {
     writeFile(path, "old contents");
     Rig rig;
     Light l = makeLight(LightType::Point, QStringLiteral("bad"));
-    l.falloff = {FalloffModel::RangePower, -1.0, 2.0};  // no range: invalid for range-power
+    l.falloff = {FalloffModel::RangePower, -1.0, 2.0}; // no range: invalid for range-power
     rig.lights = {l};
     QString error;
     QVERIFY(!saveRigFile(rig, path, &error));
-    QVERIFY2(error.startsWith(path + QStringLiteral(": not saved: the rig is invalid: lights[0].falloff.range: must be")),
+    QVERIFY2(error.startsWith(
+                 path + QStringLiteral(": not saved: the rig is invalid: lights[0].falloff.range: must be")),
              qPrintable(error));
     QCOMPARE(readAll(path), QByteArray("old contents"));
 }
@@ -255,13 +278,15 @@ void TestRigWrite::nonFiniteValuesAreNotSaved() {
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("rig.json"));
     writeFile(path, "old contents");
-    for (const double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    for (const double bad :
+         {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
         Rig rig;
         rig.lights = {makeLight(LightType::Directional, QStringLiteral("d"))};
         rig.lights[0].intensity = bad;
         QString error;
         QVERIFY(!saveRigFile(rig, path, &error));
-        QVERIFY2(error.contains(QStringLiteral("lights[0].intensity: must be a finite number")), qPrintable(error));
+        QVERIFY2(error.contains(QStringLiteral("lights[0].intensity: must be a finite number")),
+                 qPrintable(error));
         QCOMPARE(readAll(path), QByteArray("old contents"));
     }
 }
@@ -272,11 +297,12 @@ void TestRigWrite::failedSaveKeepsOldFile() {
     writeFile(path, "old contents");
     RigGenerator gen(11);
     Rig rig = gen.rig();
-    while (rig.lights.size() < 4) rig.lights.push_back(makeLight(LightType::Spot, QStringLiteral("spot")));
+    while (rig.lights.size() < 4)
+        rig.lights.push_back(makeLight(LightType::Spot, QStringLiteral("spot")));
 
     rlimit old{};
     QCOMPARE(getrlimit(RLIMIT_FSIZE, &old), 0);
-    const auto oldHandler = std::signal(SIGXFSZ, SIG_IGN);  // write() fails with EFBIG instead
+    const auto oldHandler = std::signal(SIGXFSZ, SIG_IGN); // write() fails with EFBIG instead
     rlimit small = old;
     small.rlim_cur = 100;
     QCOMPARE(setrlimit(RLIMIT_FSIZE, &small), 0);
@@ -297,11 +323,13 @@ void TestRigWrite::readOnlyDirectoryKeepsOldFile() {
     writeFile(path, "old contents");
     QFile::setPermissions(path, QFile::ReadOwner | QFile::WriteOwner);
     QVERIFY(QFile::setPermissions(dir.path(), QFile::ReadOwner | QFile::ExeOwner));
-    const bool privileged = ::access(qPrintable(dir.path()), W_OK) == 0;  // root ignores the mode
+    const bool privileged = ::access(qPrintable(dir.path()), W_OK) == 0; // root ignores the mode
     QString error;
     const bool saved = saveRigFile(Rig{}, path, &error);
     QFile::setPermissions(dir.path(), QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
-    if (privileged) QSKIP("running with privileges that ignore directory permissions (failedSaveKeepsOldFile covers this)");
+    if (privileged)
+        QSKIP(
+            "running with privileges that ignore directory permissions (failedSaveKeepsOldFile covers this)");
     QVERIFY(!saved);
     QVERIFY2(error.startsWith(path + QStringLiteral(": not saved: ")), qPrintable(error));
     QCOMPARE(readAll(path), QByteArray("old contents"));

@@ -70,7 +70,8 @@ class TestAtomicSave : public QObject {
         const QByteArray versions[2] = {writeRigJson(largeRig(0)), writeRigJson(largeRig(1))};
         QVERIFY(versions[0].size() > 1'000'000); // large enough that a write takes a while
         const QByteArray hashes[2] = {hashOf(versions[0]), hashOf(versions[1])};
-        for (const QByteArray& v : versions) QVERIFY(readRigJson(v, target).ok());
+        for (const QByteArray& v : versions)
+            QVERIFY(readRigJson(v, target).ok());
         QString error;
         QVERIFY2(saveRigFile(largeRig(1), target, &error), qPrintable(error));
         int lastVersion = 1; // what the file holds before the next child starts
@@ -114,8 +115,9 @@ class TestAtomicSave : public QObject {
                 QFAIL(qPrintable(QStringLiteral("kill %1: the file (%2 bytes) is neither version; it %3")
                                      .arg(k)
                                      .arg(bytes.size())
-                                     .arg(read.ok() ? QStringLiteral("reads as a rig")
-                                                    : QStringLiteral("does not read: ") + read.errors.value(0))));
+                                     .arg(read.ok()
+                                              ? QStringLiteral("reads as a rig")
+                                              : QStringLiteral("does not read: ") + read.errors.value(0))));
             }
             const int now = h == hashes[0] ? 0 : 1;
             // The last finished save's version, or the one in progress (killed between rename and "end").

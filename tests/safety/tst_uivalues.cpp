@@ -8,8 +8,8 @@
 #include "app/propertiesdock.h"
 #include "app/rendersettingsdock.h"
 #include "app/viewsettings.h"
-#include "editor/lighttablemodel.h"
 #include "core/rigjson.h"
+#include "editor/lighttablemodel.h"
 #include "editor/rigfixture.h"
 
 #include <QAbstractItemDelegate>
