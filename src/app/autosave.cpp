@@ -1,5 +1,6 @@
 #include "autosave.h"
 
+#include "core/atomicwrite.h"
 #include "core/rigjson.h"
 #include "editor/document.h"
 
@@ -9,7 +10,6 @@
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QSaveFile>
 #include <QStandardPaths>
 #include <QUndoStack>
 #include <QtConcurrent/QtConcurrentRun>
@@ -36,17 +36,6 @@ QString newSessionId() {
     return QStringLiteral("session-%1-%2")
         .arg(QCoreApplication::applicationPid())
         .arg(QDateTime::currentDateTimeUtc().toString(QStringLiteral("yyyyMMddThhmmsszzz")));
-}
-
-bool writeAtomically(const QString& path, const QByteArray& data, QString* error) {
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(data) != data.size() || !file.flush() ||
-        !file.commit()) {
-        *error = QStringLiteral("%1: %2").arg(path, file.errorString());
-        file.cancelWriting();
-        return false;
-    }
-    return true;
 }
 
 } // namespace
@@ -127,7 +116,8 @@ QString writeAutosave(const Rig& rig, const QString& original, const QString& ri
     meta.insert(QStringLiteral("saved"), QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs));
     meta.insert(QStringLiteral("name"), rig.name);
     meta.insert(QStringLiteral("lights"), qint64(rig.lights.size()));
-    if (!writeAtomically(metaPath, QJsonDocument(meta).toJson(), &error)) return error;
+    error = writeFileAtomically(metaPath, QJsonDocument(meta).toJson());
+    if (!error.isEmpty()) return QStringLiteral("%1: not saved: %2").arg(metaPath, error);
     return {};
 }
 } // namespace

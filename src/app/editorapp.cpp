@@ -5,6 +5,7 @@
 #include "editor/document.h"
 #include "mainwindow.h"
 #include "presetsdock.h"
+#include "render/imagefile.h"
 #include "sessionsafety.h"
 #include "viewport.h"
 #include "viewsettings.h"
@@ -43,10 +44,14 @@ void scheduleScreenshot(MainWindow* window, const QString& path) {
             window->viewport()->update();
             QTimer::singleShot(400, window, [window, path] {
                 const QImage image = window->grab().toImage();
-                const bool ok = !image.isNull() && image.save(path);
-                std::fprintf(ok ? stdout : stderr,
-                             ok ? "lightrig: wrote %s (%dx%d)\n" : "lightrig: could not write %s\n",
-                             qPrintable(QDir::toNativeSeparators(path)), image.width(), image.height());
+                const QString reason = writeImageAtomically(image, path);
+                const bool ok = reason.isEmpty();
+                if (ok)
+                    std::fprintf(stdout, "lightrig: wrote %s (%dx%d)\n",
+                                 qPrintable(QDir::toNativeSeparators(path)), image.width(), image.height());
+                else
+                    std::fprintf(stderr, "lightrig: could not write %s: %s\n",
+                                 qPrintable(QDir::toNativeSeparators(path)), qPrintable(reason));
                 QCoreApplication::exit(ok ? 0 : 1);
             });
         });

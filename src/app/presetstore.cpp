@@ -1,5 +1,7 @@
 #include "presetstore.h"
 
+#include "render/imagefile.h"
+
 #include <QDir>
 #include <QFileInfo>
 #include <QRegularExpression>
@@ -49,9 +51,11 @@ QString PresetStore::save(const QString& name, const Rig& rig, const QImage& thu
     QString error;
     if (!saveRigFile(named, path, &error)) return error;
     const QString png = QDir(m_userDir).filePath(base + QStringLiteral(".png"));
-    if (!thumbnail.isNull() && !thumbnail.save(png, "PNG")) {
-        emit changed();
-        return tr("%1: could not write the thumbnail (the preset itself was saved)").arg(png);
+    if (!thumbnail.isNull()) {
+        if (const QString reason = writeImageAtomically(thumbnail, png, "png"); !reason.isEmpty()) {
+            emit changed();
+            return tr("%1: could not write the thumbnail (the preset itself was saved): %2").arg(png, reason);
+        }
     }
     emit changed();
     return {};

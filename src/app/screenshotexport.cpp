@@ -1,5 +1,6 @@
 #include "screenshotexport.h"
 
+#include "render/imagefile.h"
 #include "screenshotdialog.h"
 #include "viewport.h"
 
@@ -9,9 +10,7 @@
 #include <QFileInfo>
 #include <QFutureWatcher>
 #include <QImage>
-#include <QImageWriter>
 #include <QProgressDialog>
-#include <QSaveFile>
 #include <QTimer>
 #include <QtConcurrent/QtConcurrentRun>
 
@@ -19,25 +18,9 @@ namespace lr {
 
 QString saveImageAtomically(const QImage& image, const QString& path, const QByteArray& format,
                             const std::atomic<bool>* cancel, bool* cancelled) {
-    const auto stop = [cancel, cancelled] {
-        const bool now = cancel && cancel->load();
-        if (cancelled) *cancelled = now;
-        return now;
-    };
-    if (stop()) return QStringLiteral("cancelled");
-    const bool jpeg = format == "JPEG";
-    const QImage pixels = jpeg ? image.convertToFormat(QImage::Format_RGB888) : image;
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
-        return QStringLiteral("%1: could not write the image: %2").arg(path, file.errorString());
-    QImageWriter writer(&file, format);
-    if (jpeg) writer.setQuality(92);
-    if (!writer.write(pixels))
-        return QStringLiteral("%1: could not write the image: %2").arg(path, writer.errorString());
-    if (stop()) return QStringLiteral("cancelled"); // ~QSaveFile removes the temporary file
-    if (!file.commit())
-        return QStringLiteral("%1: could not write the image: %2").arg(path, file.errorString());
-    return {};
+    const QString reason = writeImageAtomically(image, path, format, cancel, cancelled);
+    if (reason.isEmpty() || (cancelled && *cancelled)) return reason;
+    return QStringLiteral("%1: could not write the image: %2").arg(path, reason);
 }
 
 ScreenshotExportResult exportScreenshotWithProgress(QWidget* parent, Viewport* viewport,

@@ -1,7 +1,7 @@
 // "Export screenshot" without freezing the editor and without losing files. The image is rendered tile by
 // tile on the GUI thread (the GL context lives there) with a window-modal QProgressDialog that advances per
 // tile and has Cancel; the event loop runs between tiles, so the window keeps repainting. The file is then
-// encoded and written on a worker thread through QSaveFile: it is replaced only by a complete image, and
+// encoded and written on a worker thread (render/imagefile.h): it is replaced only by a complete image, and
 // a cancel (during the render or the writing) or a failure leaves any existing file byte for byte as it was.
 #pragma once
 
@@ -17,7 +17,7 @@ namespace lr {
 class Viewport;
 struct ScreenshotOptions;
 
-// Writes `image` to `path` as `format` ("PNG" or "JPEG", quality 92) through QSaveFile. When *cancel is set
+// Writes `image` to `path` as `format` ("PNG" or "JPEG", quality 92) atomically. When *cancel is set
 // before the commit, nothing is written, *cancelled is set and the result is "cancelled". "" on success,
 // else "PATH: could not write the image: reason". Thread-safe.
 QString saveImageAtomically(const QImage& image, const QString& path, const QByteArray& format,

@@ -254,14 +254,13 @@ int runBench(const QStringList& args) {
                .arg(report.loadAverage.isEmpty() ? QStringLiteral("unknown") : report.loadAverage);
     out << benchTable(report);
     if (parser.isSet(json) &&
-        !writeFileAtomically(parser.value(json),
-                             QJsonDocument(benchJson(report)).toJson(QJsonDocument::Indented), &message))
+        !writeOutputFile(parser.value(json), QJsonDocument(benchJson(report)).toJson(QJsonDocument::Indented),
+                         &message))
         return failed(message);
-    if (parser.isSet(chart) &&
-        !writeImageAtomically(benchChart(report), parser.value(chart), "png", &message))
+    if (parser.isSet(chart) && !writeOutputImage(benchChart(report), parser.value(chart), "png", &message))
         return failed(message);
     if (parser.isSet(scalingChart) &&
-        !writeImageAtomically(benchScalingChart(report), parser.value(scalingChart), "png", &message))
+        !writeOutputImage(benchScalingChart(report), parser.value(scalingChart), "png", &message))
         return failed(message);
     return Ok;
 }

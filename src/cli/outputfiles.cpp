@@ -1,9 +1,10 @@
 #include "outputfiles.h"
 
+#include "core/atomicwrite.h"
+#include "render/imagefile.h"
+
 #include <QDir>
 #include <QFileInfo>
-#include <QImageWriter>
-#include <QSaveFile>
 
 namespace lr::cli {
 
@@ -25,26 +26,14 @@ bool checkOutputPath(const QString& path, QString* error) {
     return true;
 }
 
-bool writeFileAtomically(const QString& path, const QByteArray& data, QString* error) {
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(data) != data.size() || !file.commit())
-        return cannotWrite(path, file.errorString(), error);
-    return true;
+bool writeOutputFile(const QString& path, const QByteArray& data, QString* error) {
+    const QString reason = writeFileAtomically(path, data);
+    return reason.isEmpty() || cannotWrite(path, reason, error);
 }
 
-bool writeImageAtomically(const QImage& image, const QString& path, const QByteArray& format,
-                          QString* error) {
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly)) return cannotWrite(path, file.errorString(), error);
-    QImageWriter writer(&file, format);
-    if (format == "jpeg") writer.setQuality(92);
-    const QImage out = format == "jpeg" ? image.convertToFormat(QImage::Format_RGB888) : image;
-    if (!writer.write(out)) {
-        file.cancelWriting();
-        return cannotWrite(path, writer.errorString(), error);
-    }
-    if (!file.commit()) return cannotWrite(path, file.errorString(), error);
-    return true;
+bool writeOutputImage(const QImage& image, const QString& path, const QByteArray& format, QString* error) {
+    const QString reason = writeImageAtomically(image, path, format);
+    return reason.isEmpty() || cannotWrite(path, reason, error);
 }
 
 } // namespace lr::cli

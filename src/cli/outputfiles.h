@@ -1,5 +1,6 @@
 // Output files of the command line (`render`, `bench`): checked before any work starts, written atomically
-// (QSaveFile: a failed or interrupted write leaves any previous file as it was). Errors name the file.
+// (core/atomicwrite.h, render/imagefile.h: a failed or interrupted write leaves any previous file as it
+// was). Errors name the file and the system's reason: "cannot write o.png: no space left on device".
 #pragma once
 
 #include <QByteArray>
@@ -11,9 +12,9 @@ namespace lr::cli {
 // False with "cannot write PATH: the folder F does not exist" / "...: it is a folder".
 bool checkOutputPath(const QString& path, QString* error);
 
-bool writeFileAtomically(const QString& path, const QByteArray& data, QString* error);
+bool writeOutputFile(const QString& path, const QByteArray& data, QString* error);
 
 // format: "png" or "jpeg" (quality 92, no alpha).
-bool writeImageAtomically(const QImage& image, const QString& path, const QByteArray& format, QString* error);
+bool writeOutputImage(const QImage& image, const QString& path, const QByteArray& format, QString* error);
 
 } // namespace lr::cli

@@ -146,7 +146,7 @@ int runRender(const QStringList& args) {
     if (image.isNull()) return failed(message);
     if (settings.transparentBackground && format == "jpeg")
         err << name << ": warning: JPEG has no alpha channel; the transparent background is written black\n";
-    if (!writeImageAtomically(image, outPath, format, &message)) return failed(message);
+    if (!writeOutputImage(image, outPath, format, &message)) return failed(message);
     const RenderStats& stats = gl.renderer().stats();
     out << QStringLiteral(
                "wrote %1 (%2x%3): %4 triangles, %5 of %6 lights (%7), %8, first image %9 ms, load %10 ms\n")

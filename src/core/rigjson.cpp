@@ -2,10 +2,11 @@
 // rigjson_write.cpp (canonical writer), rigjson_json.* (strict JSON), docs/rig-format.md.
 #include "rigjson.h"
 
+#include "atomicwrite.h"
+
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
-#include <QSaveFile>
 #include <QtDebug>
 #include <glm/geometric.hpp>
 
@@ -74,17 +75,8 @@ bool saveRigFile(const Rig& rig, const QString& filePath, QString* error) {
     const RigReadResult check = readRigJson(data, filePath);
     if (!check.ok())
         return fail(QStringLiteral("the rig is invalid: ") + check.errors.first().mid(filePath.size() + 2));
-    QSaveFile file(filePath);
-    if (!file.open(QIODevice::WriteOnly)) return fail(file.errorString());
-    // Flush and check before commit(): Qt 6.4's commit() can report success after a short write (a full
-    // disk, the file size limit) and rename a truncated file over the old one; an explicit flush() fails.
-    const bool written = file.write(data) == data.size() && file.flush() && file.size() == data.size();
-    if (!written) {
-        const QString reason = file.errorString();
-        file.cancelWriting();
-        return fail(reason);
-    }
-    if (!file.commit()) return fail(file.errorString());
+    const QString reason = writeFileAtomically(filePath, data); // flushed and size-checked
+    if (!reason.isEmpty()) return fail(reason);
     return true;
 }
 

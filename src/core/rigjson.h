@@ -33,7 +33,8 @@ RigReadResult readRigJson(const QByteArray& data, const QString& displayName);
 RigReadResult readRigFile(const QString& filePath);
 
 QByteArray writeRigJson(const Rig& rig);
-// Atomic (QSaveFile): on failure the previous file is intact and *error says why (naming the file).
+// Atomic (writeFileAtomically, atomicwrite.h): on failure the previous file is intact and *error says why:
+// "FILE: not saved: no space left on device".
 bool saveRigFile(const Rig& rig, const QString& filePath, QString* error);
 
 // Built-in presets (resources/presets/*.json embedded as :/resources/presets/NAME.json).

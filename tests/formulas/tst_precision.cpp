@@ -319,8 +319,8 @@ class TestPrecision : public QObject {
             stf.specular = st.specular, stf.viewer = st.viewer;
             const ShadeLight<double> lr = toDouble(lf);
             Surface<double> sr = s;
-            sr.position = Vec3d(sf.position), sr.normal = Vec3d(sf.normal), sr.albedo = Vec3d(sf.albedo);
-            sr.specular = Vec3d(sf.specular), sr.shininess = sf.shininess;
+            sr.position = toD(sf.position), sr.normal = toD(sf.normal), sr.albedo = toD(sf.albedo);
+            sr.specular = toD(sf.specular), sr.shininess = asStored(sf.shininess);
             const Vec3d Vr = viewVector(st, sr.position);
             const Vec3d rf = toD(shadeLight(lf, sf, stf, viewVector(stf, sf.position)));
             const Vec3d rd = shadeLight(lr, sr, st, Vr);

@@ -1,42 +1,28 @@
 // `lightrig bench` run as the user runs it (QProcess on the built executable): usage errors exit 2, bad
 // inputs exit 1 with a reason and write nothing, and a small run prints the table and writes a JSON file
 // with the documented keys and a PNG chart. Timing values are checked for sanity only (no timed tests).
+#include "support/cli.h"
+
 #include <QFile>
 #include <QImage>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QProcess>
 #include <QSet>
 #include <QTemporaryDir>
 #include <QTest>
 
 namespace {
 
-struct Run {
-    int code = -1;
-    QString out, err;
-};
+using Run = lrtest::CliRun;
+using lrtest::haveDisplay;
 
 Run lightrig(const QStringList& args, int timeoutMs = 120000) {
-    QProcess p;
-    p.setProgram(QStringLiteral(LIGHTRIG_EXECUTABLE));
-    p.setArguments(QStringList{QStringLiteral("bench")} + args);
-    p.start();
-    Run r;
-    if (!p.waitForFinished(timeoutMs) || p.exitStatus() != QProcess::NormalExit) return r;
-    r.code = p.exitCode();
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
+    return lrtest::runLightrig(QStringList{QStringLiteral("bench")} + args, nullptr, timeoutMs);
 }
 
 QString show(const Run& r) {
-    return QStringLiteral("exit %1\nstdout:\n%2\nstderr:\n%3").arg(r.code).arg(r.out, r.err);
-}
-
-bool haveDisplay() {
-    return qEnvironmentVariableIsSet("DISPLAY") || qEnvironmentVariableIsSet("WAYLAND_DISPLAY");
+    return r.show();
 }
 
 } // namespace

@@ -5,6 +5,7 @@
 #include "core/prepare.h"
 #include "core/shade.h"
 #include "render/floatimage.h"
+#include "support/cli.h"
 
 #include <QGuiApplication>
 #include <QString>
@@ -15,9 +16,7 @@
 
 namespace lr::test {
 
-inline bool haveDisplay() {
-    return qEnvironmentVariableIsSet("DISPLAY") || qEnvironmentVariableIsSet("WAYLAND_DISPLAY");
-}
+using lrtest::haveDisplay; // tests/support/cli.h
 
 #define LR_REQUIRE_DISPLAY()                                                                                 \
     do {                                                                                                     \

@@ -3,27 +3,17 @@
 // extension; and image baselines of real models (tests/data/render/baselines, compared per pixel;
 // a missing baseline is written and the test fails so that it gets reviewed and committed).
 #include "glfixture.h"
+#include "support/cli.h"
 
 #include <QDir>
 #include <QFile>
 #include <QImage>
-#include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
 
 namespace {
 
-struct Run {
-    int code = -1;
-    QString out, err;
-    QStringList errorLines() const { // ours, without platform chatter such as XDG_RUNTIME_DIR notes
-        QStringList lines;
-        for (const QString& l : err.split(QLatin1Char('\n'), Qt::SkipEmptyParts))
-            if (l.startsWith(QLatin1String("lightrig"))) lines << l;
-        return lines;
-    }
-    QString show() const { return QStringLiteral("exit %1\nstdout: %2\nstderr: %3").arg(code).arg(out, err); }
-};
+using Run = lrtest::CliRun; // errorLines(): ours, without platform chatter such as XDG_RUNTIME_DIR notes
 
 QString suzanne() {
     return QStringLiteral(LIGHTRIG_SOURCE_DIR "/resources/models/suzanne/Suzanne.gltf");
@@ -74,17 +64,7 @@ class TestRenderCli : public QObject {
     QProcessEnvironment m_env = QProcessEnvironment::systemEnvironment();
 
     Run lightrig(const QStringList& args, const QProcessEnvironment* env = nullptr) {
-        QProcess p;
-        p.setProgram(QStringLiteral(LIGHTRIG_EXECUTABLE));
-        p.setArguments(QStringList{QStringLiteral("render")} + args);
-        p.setProcessEnvironment(env ? *env : m_env);
-        p.start();
-        Run r;
-        if (!p.waitForFinished(120000) || p.exitStatus() != QProcess::NormalExit) return r;
-        r.code = p.exitCode();
-        r.out = QString::fromUtf8(p.readAllStandardOutput());
-        r.err = QString::fromUtf8(p.readAllStandardError());
-        return r;
+        return lrtest::runLightrig(QStringList{QStringLiteral("render")} + args, env ? env : &m_env);
     }
     QString path(const QString& name) const { return m_dir.filePath(name); }
 

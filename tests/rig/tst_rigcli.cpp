@@ -1,41 +1,23 @@
 // `lightrig validate` and `lightrig format`, run as the user runs them (QProcess on the built executable):
 // output lines and exit codes 0 (all good), 1 (a file is bad), 2 (usage).
 #include "rigtest.h"
+#include "support/cli.h"
 
-#include <QProcess>
 #include <QTemporaryDir>
 
 using namespace lr;
 using namespace lr::test;
 
 namespace {
-struct Run {
-    int code = -1;
-    QString out, err;
-    QStringList lines() const { return out.split(QLatin1Char('\n'), Qt::SkipEmptyParts); }
-};
+using Run = lrtest::CliRun;
 
 Run lightrig(const QStringList& args, bool withDisplay = true) {
-    QProcess p;
-    if (!withDisplay) {
-        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-        for (const char* name : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"})
-            env.remove(QLatin1String(name));
-        p.setProcessEnvironment(env);
-    }
-    p.setProgram(QStringLiteral(LIGHTRIG_EXECUTABLE));
-    p.setArguments(args);
-    p.start();
-    Run r;
-    if (!p.waitForFinished(30000) || p.exitStatus() != QProcess::NormalExit) return r;
-    r.code = p.exitCode();
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
+    const QProcessEnvironment noDisplay = lrtest::environmentWithoutDisplay();
+    return lrtest::runLightrig(args, withDisplay ? nullptr : &noDisplay, 30000);
 }
 
 QString show(const Run& r) {
-    return QStringLiteral("exit %1\nstdout:\n%2\nstderr:\n%3").arg(r.code).arg(r.out, r.err);
+    return r.show();
 }
 
 void copy(const QString& from, const QString& to) {

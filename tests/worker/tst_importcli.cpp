@@ -2,9 +2,9 @@
 // hit (provoked with the worker's test-only LIGHTRIG_WORKER_TEST_CRASH) is exit status 1 with the worker's
 // message on stderr and no output file. Needs an X display (ctest under xvfb-run -a); skips without one.
 #include "model/importprotocol.h"
+#include "support/cli.h"
 
 #include <QFileInfo>
-#include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -24,21 +24,13 @@ struct Run {
 };
 
 Run lightrig(const QStringList& args, const QByteArray& crashMode) {
-    QProcess p;
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
     env.remove(QStringLiteral("LIGHTRIG_IMPORT_WORKER")); // the worker is lightrig itself
     if (!crashMode.isEmpty())
         env.insert(QString::fromLatin1(lr::importprotocol::kTestCrashVariable),
                    QString::fromLatin1(crashMode));
-    p.setProcessEnvironment(env);
-    p.start(QStringLiteral(LIGHTRIG_EXECUTABLE), args);
-    if (!p.waitForFinished(120'000)) {
-        p.kill();
-        p.waitForFinished();
-        return {};
-    }
-    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1,
-            QString::fromUtf8(p.readAllStandardError())};
+    const lrtest::CliRun r = lrtest::runLightrig(args, &env, 120'000);
+    return {r.code, r.err};
 }
 
 Run render(const QString& model, const QString& out, const QByteArray& crashMode) {
