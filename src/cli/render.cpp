@@ -90,6 +90,7 @@ int runRender(const QStringList& args) {
     if (positional.size() != 1)
         return usage(positional.isEmpty() ? QStringLiteral("no MODEL given")
                                           : QStringLiteral("one MODEL only"));
+    if (positional.first().isEmpty()) return usage(QStringLiteral("MODEL is an empty path"));
     if (!parser.isSet(output) || parser.value(output).isEmpty())
         return usage(QStringLiteral("-o OUT is required"));
     const QString outPath = parser.value(output);

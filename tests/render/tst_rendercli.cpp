@@ -10,6 +10,7 @@
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
+#include <sys/stat.h>
 
 namespace {
 
@@ -117,12 +118,14 @@ class TestRenderCli : public QObject {
         QFile::setPermissions(path(QStringLiteral("xdg")),
                               QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
         m_env.insert(QStringLiteral("XDG_RUNTIME_DIR"), path(QStringLiteral("xdg")));
+        QVERIFY(::mkfifo(QFile::encodeName(path(QStringLiteral("fifo.json"))).constData(), 0600) == 0);
     }
 
     void usageErrorsExit2_data() {
         QTest::addColumn<QStringList>("args");
         const QString m = suzanne(), o = QStringLiteral("/tmp/never-written.png");
         QTest::newRow("no model") << QStringList{QStringLiteral("-o"), o};
+        QTest::newRow("empty model path") << QStringList{QString(), QStringLiteral("-o"), o}; // was exit 1
         QTest::newRow("no output") << QStringList{m};
         QTest::newRow("two models") << QStringList{m, m, QStringLiteral("-o"), o};
         QTest::newRow("unknown option") << QStringList{m, QStringLiteral("-o"), o, QStringLiteral("--shiny")};
@@ -177,6 +180,10 @@ class TestRenderCli : public QObject {
                                                     path(QStringLiteral("none.json")), QStringLiteral("-o"),
                                                     out}
                                      << QStringLiteral("none.json");
+        QTest::newRow("rig is a FIFO")
+            << QStringList{suzanne(), QStringLiteral("--rig"), path(QStringLiteral("fifo.json")),
+                           QStringLiteral("-o"), out}
+            << QStringLiteral("fifo.json: is not a regular file");
         QTest::newRow("camera out of range") << QStringList{suzanne(), QStringLiteral("--camera-index"),
                                                             QStringLiteral("3"), QStringLiteral("-o"), out}
                                              << QStringLiteral("camera");
