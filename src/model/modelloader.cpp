@@ -17,6 +17,9 @@ namespace {
 
 // Share of the progress bar for Assimp's reading and post-processing; the rest is ours.
 constexpr double kAssimpShare = 0.8;
+// Above this many pairs of coincident vertices (detail::coincidentVertexPairs) the SpatialSort-based
+// post-processing steps are skipped: at ~3e8 pairs a second in SpatialSort, about a second in all.
+constexpr qint64 kMaxCoincidentPairs = 100'000'000;
 
 struct ProgressState {
     std::function<bool(double)> callback;
@@ -78,11 +81,21 @@ ModelLoadResult import(const QString& path, const ModelLoadOptions& options) {
     importer.SetProgressHandler(new AssimpProgress(progress));
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
     importer.SetPropertyFloat(AI_CONFIG_PP_GSN_MAX_SMOOTHING_ANGLE, 80.0f);
-    const unsigned flags = aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_CalcTangentSpace |
-                           aiProcess_JoinIdenticalVertices | aiProcess_SortByPType |
-                           aiProcess_ValidateDataStructure;
-    const aiScene* scene = importer.ReadFile(folder.modelFile().toUtf8().constData(), flags);
+    // Two passes of Assimp's post-processing, in its own order: the linear steps while reading; the steps
+    // built on SpatialSort (smooth normals, tangents, joining vertices) only when few vertices share a
+    // position, since SpatialSort is quadratic in the number of coincident vertices (an OBJ of 100,000
+    // copies of one triangle took minutes). Without them meshes.cpp computes flat normals per face.
+    const unsigned readFlags =
+        aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_ValidateDataStructure;
+    const unsigned smoothFlags =
+        aiProcess_GenSmoothNormals | aiProcess_CalcTangentSpace | aiProcess_JoinIdenticalVertices;
+    const aiScene* scene = importer.ReadFile(folder.modelFile().toUtf8().constData(), readFlags);
     if (progress.cancelled) return failure(name, QStringLiteral("cancelled"), true);
+    qint64 coincidentPairs = 0;
+    if (scene && (coincidentPairs = detail::coincidentVertexPairs(scene)) <= kMaxCoincidentPairs) {
+        scene = importer.ApplyPostProcessing(smoothFlags);
+        if (progress.cancelled) return failure(name, QStringLiteral("cancelled"), true);
+    }
 
     const QStringList refusals = io->refusals();
     if (!scene) {
@@ -97,6 +110,11 @@ ModelLoadResult import(const QString& path, const ModelLoadOptions& options) {
     model->path = path;
     for (const QString& r : refusals)
         model->warnings << QStringLiteral("%1: refused: %2").arg(name, r);
+    if (coincidentPairs > kMaxCoincidentPairs)
+        model->warnings << QStringLiteral("%1: %2 pairs of vertices share a position; normals are flat and "
+                                          "vertices not joined (smoothing them would take quadratic time)")
+                               .arg(name)
+                               .arg(coincidentPairs);
     const auto keepGoing = [&](double f) {
         return progress.report(kAssimpShare + f * (0.95 - kAssimpShare));
     };
