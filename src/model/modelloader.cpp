@@ -51,9 +51,11 @@ bool isGltf(const QString& path) {
     return suffix == QLatin1String("gltf") || suffix == QLatin1String("glb");
 }
 
-ModelLoadResult failure(const QString& displayName, const QString& reason, bool cancelled = false) {
+// Errors name the model as the caller gave it (a file name alone is ambiguous in batch runs); warnings,
+// which come with the loaded model, name just the file.
+ModelLoadResult failure(const QString& givenPath, const QString& reason, bool cancelled = false) {
     ModelLoadResult r;
-    r.error = QStringLiteral("could not import %1: %2").arg(displayName, reason);
+    r.error = QStringLiteral("could not import %1: %2").arg(givenPath, reason);
     r.cancelled = cancelled;
     return r;
 }
@@ -64,16 +66,17 @@ ModelLoadResult import(const QString& path, const ModelLoadOptions& options) {
     const detail::ModelFolder folder(path, options.allowTexturesOutsideFolder);
     const QString& name = folder.displayName();
     const QFileInfo info(folder.modelFile());
-    if (!info.exists()) return failure(name, QStringLiteral("no such file (%1)").arg(path));
-    if (!info.isFile()) return failure(name, QStringLiteral("not a file (%1)").arg(path));
+    if (!info.exists()) return failure(path, QStringLiteral("no such file"));
+    if (!info.isFile())
+        return failure(path, QStringLiteral("not a regular file (a folder, FIFO, socket or device)"));
 
     const bool gltf = isGltf(path);
     if (const QString refusal = detail::preflight(folder.modelFile(), options.maxDataUriBytes);
         !refusal.isEmpty())
-        return failure(name, refusal);
+        return failure(path, refusal);
 
     ProgressState progress{options.progress};
-    if (!progress.report(0.0)) return failure(name, QStringLiteral("cancelled"), true);
+    if (!progress.report(0.0)) return failure(path, QStringLiteral("cancelled"), true);
 
     Assimp::Importer importer;
     auto* io = new detail::QtIOSystem(folder);
@@ -90,11 +93,11 @@ ModelLoadResult import(const QString& path, const ModelLoadOptions& options) {
     const unsigned smoothFlags =
         aiProcess_GenSmoothNormals | aiProcess_CalcTangentSpace | aiProcess_JoinIdenticalVertices;
     const aiScene* scene = importer.ReadFile(folder.modelFile().toUtf8().constData(), readFlags);
-    if (progress.cancelled) return failure(name, QStringLiteral("cancelled"), true);
+    if (progress.cancelled) return failure(path, QStringLiteral("cancelled"), true);
     qint64 coincidentPairs = 0;
     if (scene && (coincidentPairs = detail::coincidentVertexPairs(scene)) <= kMaxCoincidentPairs) {
         scene = importer.ApplyPostProcessing(smoothFlags);
-        if (progress.cancelled) return failure(name, QStringLiteral("cancelled"), true);
+        if (progress.cancelled) return failure(path, QStringLiteral("cancelled"), true);
     }
 
     const QStringList refusals = io->refusals();
@@ -103,7 +106,7 @@ ModelLoadResult import(const QString& path, const ModelLoadOptions& options) {
         if (reason.isEmpty()) reason = QStringLiteral("Assimp gave no reason");
         if (!refusals.isEmpty())
             reason += QStringLiteral(" (refused: %1)").arg(refusals.join(QStringLiteral("; ")));
-        return failure(name, reason);
+        return failure(path, reason);
     }
 
     auto model = std::make_shared<Model>();
@@ -119,16 +122,16 @@ ModelLoadResult import(const QString& path, const ModelLoadOptions& options) {
         return progress.report(kAssimpShare + f * (0.95 - kAssimpShare));
     };
     if (!detail::convertMeshes(scene, name, *model, keepGoing))
-        return failure(name, QStringLiteral("cancelled"), true);
+        return failure(path, QStringLiteral("cancelled"), true);
     if (model->meshes.empty()) {
         QString reason = QStringLiteral("the file has no triangles");
         if (!model->warnings.isEmpty())
             reason += QStringLiteral(" (%1)").arg(model->warnings.join(QStringLiteral("; ")));
-        return failure(name, reason);
+        return failure(path, reason);
     }
     detail::convertMaterials(scene, folder, options.maxDataUriBytes, *model);
     detail::convertLightsAndCameras(scene, gltf, name, *model);
-    if (!progress.report(1.0)) return failure(name, QStringLiteral("cancelled"), true);
+    if (!progress.report(1.0)) return failure(path, QStringLiteral("cancelled"), true);
     model->loadMs = double(timer.nsecsElapsed()) / 1e6;
     ModelLoadResult result;
     result.model = std::move(model);
@@ -138,15 +141,14 @@ ModelLoadResult import(const QString& path, const ModelLoadOptions& options) {
 } // namespace
 
 ModelLoadResult loadModel(const QString& path, const ModelLoadOptions& options) {
-    const QString display = QFileInfo(path).fileName().isEmpty() ? path : QFileInfo(path).fileName();
     try {
         return import(path, options);
     } catch (const std::bad_alloc&) {
-        return failure(display, QStringLiteral("out of memory"));
+        return failure(path, QStringLiteral("out of memory"));
     } catch (const std::exception& e) {
-        return failure(display, QString::fromUtf8(e.what()));
+        return failure(path, QString::fromUtf8(e.what()));
     } catch (...) {
-        return failure(display, QStringLiteral("unknown error"));
+        return failure(path, QStringLiteral("unknown error"));
     }
 }
 
