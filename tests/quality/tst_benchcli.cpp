@@ -67,6 +67,8 @@ class TestBenchCli : public QObject {
         QTest::addRow("bad tier") << QStringList{"--quality", "exact,bogus"};
         QTest::addRow("bad counts") << QStringList{"--lights", "8,x"};
         QTest::addRow("negative count") << QStringList{"--lights", "-1"};
+        // Past what the renderer shades (65,535 lights): refused, not silently dropped (issue 18).
+        QTest::addRow("too many lights") << QStringList{"--lights", "8,65536"};
         QTest::addRow("bad type") << QStringList{"--light-type", "laser"};
         QTest::addRow("rig and lights") << QStringList{"--rig", "r.json", "--lights", "8"};
         QTest::addRow("camera and view") << QStringList{"--camera-index", "0", "--view", "front"};
