@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/vector_relational.hpp>
+#include <limits>
 #include <numbers>
 
 namespace lr::detail {
@@ -245,6 +246,13 @@ void convertLightsAndCameras(const aiScene* scene, bool gltf, const QString& dis
                                   .arg(displayName, cam.name);
         }
         const double znear = ac->mClipPlaneNear, zfar = ac->mClipPlaneFar;
+        // A near plane below float's normal range (glTF znear 1e-45) leaves no depth precision: the model
+        // rendered as an empty background. Such a camera is ignored; views of the model remain.
+        if (znear > 0.0 && znear < double(std::numeric_limits<float>::min()) * 1e6) {
+            model.warnings << QStringLiteral("%1: camera %2 has an unusable near plane (%3); ignored")
+                                  .arg(displayName, cam.name, QString::number(znear, 'g', 6));
+            continue;
+        }
         if (std::isfinite(znear) && znear > 0.0) cam.znear = znear;
         cam.zfar = std::isfinite(zfar) && zfar > cam.znear ? zfar : 0.0;
         model.cameras.push_back(cam);

@@ -94,6 +94,7 @@ class TestModel : public QObject {
     void hostileHeadersAndPlyCommentsAreRefused();
     void coincidentVerticesSkipSmoothing();
     void modelLightsGetTheRigLimits();
+    void unusableCameraIsIgnored();
     void errorsNameTheFile();
     void importableSuffixesListTheCommonFormats();
 };
@@ -648,6 +649,20 @@ void TestModel::modelLightsGetTheRigLimits() {
                  said.contains(QStringLiteral("skipped")),
              qPrintable(said));
     QVERIFY(readRigJson(writeRigJson(limits.model->lights), QStringLiteral("m.json")).ok());
+}
+
+// gltf-camera-nan.gltf: yfov 1e39, znear 1e-45. The near plane leaves no depth precision (the model
+// rendered as the background alone): the camera is ignored with a warning, and the model's views remain.
+void TestModel::unusableCameraIsIgnored() {
+    const ModelLoadResult r = loadModel(dataFile(QStringLiteral("hostile/gltf-camera-nan.gltf")));
+    QVERIFY2(r.ok(), qPrintable(r.error));
+    QVERIFY(r.model->cameras.empty());
+    QVERIFY2(r.model->warnings.join(QLatin1Char('\n'))
+                 .contains(QStringLiteral("has an unusable near plane (1.4013e-45); ignored")),
+             qPrintable(r.model->warnings.join(QLatin1Char('\n'))));
+    // A camera with an ordinary near plane is kept (scene.gltf's).
+    const ModelLoadResult scene = loadModel(dataFile(QStringLiteral("scene.gltf")));
+    QVERIFY2(scene.ok() && !scene.model->cameras.empty(), qPrintable(scene.error));
 }
 
 // Errors name the path as given, not only its file name ("could not import empty.obj" was ambiguous in
