@@ -1,9 +1,10 @@
 // Checks run on a model file before Assimp sees it, for inputs known to make Assimp 5.2.5 allocate
 // without bound, hang, abort or crash: glTF data URIs over the size limit, GLB header and chunk
 // lengths beyond the file, OFF and PLY headers declaring more elements than the file can hold (Assimp
-// allocates by the declared count), PLY headers without end_header (Assimp waits for it forever), and
-// ASCII PLY data with non-numeric lines (a comment inside the data makes the Debian build abort in an
-// ai_assert). Each check is linear in the file's size.
+// allocates by the declared count), PLY headers without end_header (Assimp waits for it forever),
+// Collada index lists with non-numeric characters (an endless loop in Assimp), and ASCII PLY data with
+// non-numeric lines (a comment inside the data makes the Debian build abort in an ai_assert). Each check is
+// linear in the file's size.
 #include "importdetail.h"
 
 #include <QByteArrayView>
@@ -166,6 +167,38 @@ QString checkPly(QByteArrayView text) {
     return {};
 }
 
+// Collada index lists (<p>, <h>) hold integers only: Assimp 5.2.5 reads them with a loop that stops only
+// at the end of the text, and a character that is not part of a number is never consumed (a '4' turned
+// into '$' in duck.dae hung the importer until the time limit).
+QString checkColladaIndices(QByteArrayView text) {
+    int line = 1;
+    qsizetype counted = 0;
+    for (qsizetype at = text.indexOf("<"); at >= 0 && at + 2 < text.size(); at = text.indexOf("<", at + 1)) {
+        const char tag = text[at + 1], after = text[at + 2];
+        if ((tag != 'p' && tag != 'h') || (after != '>' && after != ' ' && after != '\t' && after != '\n'))
+            continue;
+        const qsizetype open = text.indexOf('>', at);
+        if (open < 0) return {};
+        for (qsizetype i = open + 1; i < text.size() && text[i] != '<'; ++i) {
+            const char c = text[i];
+            if ((c >= '0' && c <= '9') || c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '-' ||
+                c == '+')
+                continue;
+            for (; counted < i; ++counted)
+                line += text[counted] == '\n' ? 1 : 0;
+            const QString what = uchar(c) >= 0x20 && uchar(c) < 0x7f
+                                     ? QStringLiteral("'%1'").arg(QLatin1Char(c))
+                                     : QStringLiteral("byte 0x%1").arg(uchar(c), 2, 16, QLatin1Char('0'));
+            return QStringLiteral("line %1: the <%2> index list holds %3, which is not part of an integer")
+                .arg(line)
+                .arg(QLatin1Char(tag))
+                .arg(what);
+        }
+        at = open;
+    }
+    return {};
+}
+
 quint32 u32At(QByteArrayView bytes, qsizetype at) {
     return quint32(uchar(bytes[at])) | quint32(uchar(bytes[at + 1])) << 8 |
            quint32(uchar(bytes[at + 2])) << 16 | quint32(uchar(bytes[at + 3])) << 24;
@@ -244,6 +277,9 @@ QString preflight(const QString& path, qint64 maxDataUriBytes) {
                 .arg(largest)
                 .arg(maxDataUriBytes);
     }
+    if (suffix == QLatin1String("dae") ||
+        text.first(std::min<qsizetype>(text.size(), 4096)).contains("<COLLADA"))
+        if (const QString refusal = checkColladaIndices(text); !refusal.isEmpty()) return refusal;
     if (text.startsWith("ply\n") || text.startsWith("ply\r\n")) return checkPly(text);
     if (suffix == QLatin1String("off")) return checkOff(text);
     return {};

@@ -528,6 +528,12 @@ void TestModel::hostileHeadersAndPlyCommentsAreRefused() {
         {"long-header.glb", glb(30604, 2) + "{}" + QByteArray(62, ' '),
          "the GLB header declares 30604 bytes, but the file has 84"},
         {"short.glb", QByteArray("glTF\x02\0\0\0", 8), "shorter than a GLB header"},
+        // A Collada index list with a character that is not part of a number: Assimp 5.2.5 loops forever
+        // (a mutated duck.dae in scripts/sweep).
+        {"loop.dae",
+         "<?xml version=\"1.0\"?>\n<COLLADA>\n<library_geometries><geometry><mesh>\n<triangles count=\"1\">"
+         "<p>0 1 2 178$</p></triangles></mesh></geometry></library_geometries></COLLADA>\n",
+         "line 4: the <p> index list holds '$', which is not part of an integer"},
         // A PLY header that never ends: Assimp waited for end_header until the worker's time limit.
         {"trunc.ply", "ply\nformat ascii 1.0          \ne", "the PLY header has no end_header line"},
     };
