@@ -108,7 +108,9 @@ float powSpecular(float base, float shininess) { return lrPow(base, shininess); 
 
 float falloffRangePower(float d, float range, float exponent) {
     if (!(d < range)) return 0.0;
-    return lrPow(saturate(1.0 - d / range), exponent);
+    float t = 1.0 - d / range;
+    if (!(t > 1e-6)) return 0.0; // kRangeEdge: the last 1e-6 of the range is 0, as in double
+    return lrPow(saturate(t), exponent);
 }
 
 float rangeWindow(float d, float range) {

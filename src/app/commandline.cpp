@@ -46,6 +46,16 @@ CommandLineResult parseEditorCommandLine(const QStringList& args) {
         return result;
     }
     const QStringList positional = parser.positionalArguments();
+    // A mistyped subcommand ("lightrig valdiate f.json") would otherwise open the editor on a model of
+    // that name, which headless looks like a hang.
+    if (!positional.isEmpty() && !QFileInfo::exists(positional.first())) {
+        result.message = QCoreApplication::translate(
+                             "lightrig", "lightrig: '%1' is neither a subcommand (%2) nor an existing model "
+                                         "file\nTry 'lightrig --help' or 'lightrig SUBCOMMAND --help'.\n")
+                             .arg(positional.first(), QStringLiteral("validate, format, render, bench"));
+        result.exitCode = 2;
+        return result;
+    }
     if (positional.size() > 1) {
         result.message =
             QCoreApplication::translate("lightrig", "lightrig: expected at most one MODEL, got %1\n\n%2")

@@ -8,6 +8,7 @@
 #include "outputfiles.h"
 #include "sceneoptions.h"
 
+#include "render/camera.h"
 #include "render/offscreen.h"
 
 #include <QCommandLineParser>
@@ -17,6 +18,7 @@
 #include <QTextStream>
 #include <algorithm>
 #include <ctime>
+#include <optional>
 #include <vector>
 
 namespace lr::cli {
@@ -33,6 +35,23 @@ QByteArray formatFor(const QString& path) {
     if (suffix == QLatin1String("png")) return "png";
     if (suffix == QLatin1String("jpg") || suffix == QLatin1String("jpeg")) return "jpeg";
     return {};
+}
+
+// Pixels of the model seen through `camera`, from a small render with a transparent background (alpha is
+// 0 where nothing was drawn); -1 when the render failed (*error says why).
+int coveredPixels(OffscreenRenderer& gl, const ViewCamera& camera, QSize size, RenderSettings settings,
+                  QString* error) {
+    settings.transparentBackground = true;
+    const QImage probe =
+        gl.renderImage(camera, size.scaled(64, 64, Qt::KeepAspectRatio).expandedTo(QSize(1, 1)), settings, 1,
+                       error)
+            .convertToFormat(QImage::Format_RGBA8888);
+    if (probe.isNull()) return -1;
+    int covered = 0;
+    for (int y = 0; y < probe.height(); ++y)
+        for (int x = 0; x < probe.width(); ++x)
+            covered += probe.constScanLine(y)[4 * x + 3] > 0 ? 1 : 0;
+    return covered;
 }
 
 double median(std::vector<double> v) {
@@ -90,6 +109,7 @@ int runRender(const QStringList& args) {
     if (positional.size() != 1)
         return usage(positional.isEmpty() ? QStringLiteral("no MODEL given")
                                           : QStringLiteral("one MODEL only"));
+    if (positional.first().isEmpty()) return usage(QStringLiteral("MODEL is an empty path"));
     if (!parser.isSet(output) || parser.value(output).isEmpty())
         return usage(QStringLiteral("-o OUT is required"));
     const QString outPath = parser.value(output);
@@ -130,6 +150,9 @@ int runRender(const QStringList& args) {
     LoadedScene loaded;
     if (!loadScene(positional.first(), *options, &loaded, &message)) return failed(message);
     const double loadMs = clock.nsecsElapsed() * 1e-6;
+    auto warn = [&](const QString& warning) { err << name << ": warning: " << warning << '\n'; };
+    for (const QString& w : loaded.model->warnings)
+        warn(w);
 
     OffscreenRenderer gl;
     if (!gl.initialize(&message) || !gl.setModel(loaded.model, &message)) return failed(message);
@@ -140,6 +163,45 @@ int runRender(const QStringList& args) {
     settings.quality = options->quality;
     settings.transparentBackground = parser.isSet(transparent);
     settings.msaaSamples = samples;
+    // Never an empty image in silence (a model at scale 1e38, or seen through a broken camera, rendered as
+    // the background alone with exit 0): when the model covers no pixel, a view chosen here (no --view or
+    // --camera-index) moves to the first standard view that shows it, with a warning; a view the user
+    // chose is kept, with a warning; and when no view shows anything, nothing is written (exit 1).
+    const int covered = coveredPixels(gl, loaded.camera, options->size, settings, &message);
+    if (covered < 0) return failed(message);
+    if (covered == 0) {
+        const double aspect = double(options->size.width()) / double(options->size.height());
+        std::optional<QString> visibleFrom;
+        for (const QString& view : standardViewNames()) {
+            const std::optional<ViewCamera> camera = standardView(view, loaded.model->bounds, aspect);
+            if (!camera) continue;
+            const int n = coveredPixels(gl, *camera, options->size, settings, &message);
+            if (n < 0) return failed(message);
+            if (n == 0) continue;
+            visibleFrom = view;
+            if (!options->cameraIndex && options->view.isEmpty()) {
+                warn(QStringLiteral("%1 covers no pixel from %2; rendered from view %3 instead")
+                         .arg(positional.first(), loaded.cameraSource, view));
+                loaded.camera = *camera;
+                loaded.cameraSource = QStringLiteral("view ") + view;
+            } else {
+                warn(QStringLiteral("%1 covers no pixel from %2 (the image shows only the background; it is "
+                                    "visible from view %3)")
+                         .arg(positional.first(), loaded.cameraSource, view));
+            }
+            break;
+        }
+        if (!visibleFrom)
+            return failed(QStringLiteral("nothing of %1 can be drawn: it covers no pixel from any view (its "
+                                         "bounds run from [%2, %3, %4] to [%5, %6, %7])")
+                              .arg(positional.first())
+                              .arg(loaded.model->bounds.min.x, 0, 'g', 3)
+                              .arg(loaded.model->bounds.min.y, 0, 'g', 3)
+                              .arg(loaded.model->bounds.min.z, 0, 'g', 3)
+                              .arg(loaded.model->bounds.max.x, 0, 'g', 3)
+                              .arg(loaded.model->bounds.max.y, 0, 'g', 3)
+                              .arg(loaded.model->bounds.max.z, 0, 'g', 3));
+    }
     clock.restart();
     const QImage image = gl.renderImage(loaded.camera, options->size, settings, ss, &message);
     const double firstMs = clock.nsecsElapsed() * 1e-6;

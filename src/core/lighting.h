@@ -62,10 +62,17 @@ template <typename T> Vec3<T> safeNormalize(Vec3<T> v, Vec3<T> fallback) {
 
 // ---- distance falloff a(d); range < 0 means "no range" where the range is optional ----
 
-// Doc 000: clamp(1 - d/range, 0, 1)^exponent. range <= 0 or d >= range -> 0.
+// Where 1 - d/range is below this, range-power gives 0 in float and double alike: float cannot resolve
+// it (1 - d/range carries ~1e-7 of rounding), and the two disagreed there by rounding alone, visibly
+// at high exposure (a light 1e12 away at range 1e12, +60 EV: white in double, black on the GPU).
+inline constexpr double kRangeEdge = 1e-6;
+
+// Doc 000: clamp(1 - d/range, 0, 1)^exponent. range <= 0 or d >= range (1 - kRangeEdge) -> 0.
 template <typename T> T falloffRangePower(T d, T range, T exponent) {
     if (!(d < range)) return T(0);
-    return safePow(saturate(T(1) - d / range), exponent);
+    const T t = T(1) - d / range;
+    if (!(t > T(kRangeEdge))) return T(0);
+    return safePow(saturate(t), exponent);
 }
 
 // glTF/Filament smooth range window clamp(1 - (d/range)^4, 0, 1)^2; range < 0 -> 1, d >= range -> 0.

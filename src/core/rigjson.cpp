@@ -54,6 +54,11 @@ Rig fallbackRig() {
 RigReadResult readRigFile(const QString& filePath) {
     const QFileInfo info(filePath);
     if (info.isDir()) return fileError(filePath, QStringLiteral("is a directory, not a rig file"));
+    // A FIFO, socket or device would block the open or the read (a FIFO without a writer forever):
+    // rig files are regular files (symbolic links to them included; ":/" resources count as files).
+    if (info.exists() && !info.isFile())
+        return fileError(filePath, QStringLiteral("is not a regular file (a FIFO, socket or device); rig "
+                                                  "files must be regular files"));
     QFile file(filePath);
     if (!file.open(QIODevice::ReadOnly))
         return fileError(filePath, QStringLiteral("cannot open: %1").arg(file.errorString()));

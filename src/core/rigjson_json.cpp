@@ -16,6 +16,10 @@ class Parser {
     Document run() {
         Document doc;
         if (m_data.startsWith("\xEF\xBB\xBF")) m_p += 3; // a UTF-8 BOM (Windows editors) is tolerated
+        if (const char* utf16 = utf16Endianness(m_data))
+            return fail(doc, 0,
+                        QStringLiteral("the file is UTF-16 (%1); rig files must be UTF-8 (save it as UTF-8)")
+                            .arg(QLatin1String(utf16)));
         if (const qsizetype bad = invalidUtf8At(m_data, m_p - m_data.constData()); bad >= 0)
             return fail(doc, bad,
                         QStringLiteral("not valid UTF-8 text (byte 0x%1; is this a binary file?)")
@@ -35,6 +39,7 @@ class Parser {
         doc.errors = m_errors;
         if (m_moreDuplicates)
             doc.errors << QStringLiteral("%1 more duplicate keys not listed").arg(m_moreDuplicates);
+        if (m_valueLimit) doc.valueLimitPath = m_syntaxPath;
         if (!m_syntax.isEmpty()) return fail(doc, m_syntaxAt, m_syntax);
         doc.complete = true;
         return doc;
@@ -71,13 +76,40 @@ class Parser {
         if (m_p == m_end)
             return error(QStringLiteral("unexpected end of file, expected %1 (is the file truncated?)")
                              .arg(QLatin1String(expected)));
-        const QByteArray word = QByteArray(m_p, std::min<qsizetype>(9, m_end - m_p));
-        for (const char* special : {"NaN", "Infinity", "-Infinity", "inf", "-inf", "nan"})
-            if (word.startsWith(special))
-                return error(QStringLiteral("%1 is not a JSON number; numbers must be finite")
-                                 .arg(QLatin1String(special)));
+        if (const qsizetype n = nonFiniteWord(); n > 0)
+            return error(
+                QStringLiteral("%1 is not a JSON number; numbers must be finite").arg(QLatin1String(m_p, n)));
         const QString ch = QString::fromUtf8(m_p, std::min<qsizetype>(4, m_end - m_p)).left(1);
         return error(QStringLiteral("unexpected '%1', expected %2").arg(ch, QLatin1String(expected)));
+    }
+
+    // The length of a non-finite number as other languages write it at m_p ("NaN", "-nan", "+Infinity",
+    // "INF", any case, an optional sign), or 0.
+    qsizetype nonFiniteWord() const {
+        const char* p = m_p;
+        if (p != m_end && (*p == '-' || *p == '+')) ++p;
+        for (const char* word : {"infinity", "inf", "nan"}) {
+            const qsizetype n = qsizetype(qstrlen(word));
+            if (m_end - p >= n &&
+                QByteArrayView(p, n).compare(QByteArrayView(word, n), Qt::CaseInsensitive) == 0)
+                return p + n - m_p;
+        }
+        return 0;
+    }
+
+    // "little-endian" or "big-endian" when `data` looks like UTF-16 text (a UTF-16 byte order mark, or a
+    // NUL in every other byte of the first characters, as ASCII JSON encoded in UTF-16 has), else nullptr.
+    static const char* utf16Endianness(const QByteArray& data) {
+        if (data.startsWith("\xFF\xFE")) return "little-endian";
+        if (data.startsWith("\xFE\xFF")) return "big-endian";
+        if (data.size() < 2) return nullptr;
+        const qsizetype n = std::min<qsizetype>(data.size() & ~qsizetype(1), 64);
+        bool evenNul = true, oddNul = true;
+        for (qsizetype i = 0; i < n; i += 2) {
+            evenNul = evenNul && data[i] == '\0' && data[i + 1] != '\0';
+            oddNul = oddNul && data[i + 1] == '\0' && data[i] != '\0';
+        }
+        return oddNul ? "little-endian" : evenNul ? "big-endian" : nullptr;
     }
 
     QString currentPath() const {
@@ -94,8 +126,10 @@ class Parser {
     }
 
     bool parseValue(Value& out) {
-        if (++m_values > kMaxValues)
+        if (++m_values > kMaxValues) {
+            m_valueLimit = m_syntax.isEmpty();
             return error(QStringLiteral("more than %1 values; not a rig file").arg(kMaxValues));
+        }
         out.offset = qint32(m_p - m_data.constData());
         if (m_p == m_end) return unexpected("a value");
         switch (*m_p) {
@@ -327,6 +361,7 @@ class Parser {
     const char* m_end;
     int m_depth = 0;
     qint64 m_values = 0;
+    bool m_valueLimit = false;
     static constexpr qsizetype kMaxDuplicateMessages = 200;
     qint64 m_moreDuplicates = 0;
     std::vector<Segment> m_path;

@@ -10,6 +10,7 @@
 #include <QByteArray>
 #include <QString>
 #include <QStringList>
+#include <optional>
 #include <vector>
 
 namespace lr::json {
@@ -46,6 +47,9 @@ struct Document {
     Value root;
     bool complete = false; // false: a syntax error stopped the parse (root is partial, don't use it)
     QStringList errors;    // "LOCATION: reason" without the file name; duplicates first, then syntax
+    // Set when the kMaxValues limit stopped the parse: the path of the value past the limit ("lights[74897]
+    // .color[0]"), so that a reader can say which part of its format made the document too large.
+    std::optional<QString> valueLimitPath;
 };
 
 Document parse(const QByteArray& data);

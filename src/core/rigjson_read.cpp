@@ -159,6 +159,17 @@ bool readHeader(Checker& c, ObjectView& top) {
     return true;
 }
 
+// When the parser's value limit stopped at lights[N] with N past kMaxRigLights: N (the lights read).
+std::optional<qsizetype> lightsAtValueLimit(const json::Document& doc) {
+    static const QString prefix = QStringLiteral("lights[");
+    if (!doc.valueLimitPath || !doc.valueLimitPath->startsWith(prefix)) return std::nullopt;
+    const qsizetype close = doc.valueLimitPath->indexOf(QLatin1Char(']'), prefix.size());
+    bool ok = false;
+    const qsizetype index = doc.valueLimitPath->mid(prefix.size(), close - prefix.size()).toLongLong(&ok);
+    if (!ok || close < 0 || index < kMaxRigLights) return std::nullopt;
+    return index;
+}
+
 } // namespace
 
 RigReadResult readRigJson(const QByteArray& data, const QString& displayName) {
@@ -170,6 +181,14 @@ RigReadResult readRigJson(const QByteArray& data, const QString& displayName) {
         return c.result(std::nullopt);
     }
     const json::Document doc = json::parse(data);
+    if (const std::optional<qsizetype> lights = lightsAtValueLimit(doc)) {
+        // A rig of 100,000 lights runs into the parser's value limit first: give the light-count error
+        // a rig of 4,097 lights gets, not "more than 1048576 values" somewhere inside light 74,897.
+        c.error(
+            QStringLiteral("lights"),
+            QStringLiteral("more than %1 lights; at most %2 are allowed").arg(*lights).arg(kMaxRigLights));
+        return c.result(std::nullopt);
+    }
     for (const QString& e : doc.errors)
         c.fileError(e);
     if (!doc.complete) return c.result(std::nullopt);

@@ -30,8 +30,15 @@ void convertMaterials(const aiScene* scene, const ModelFolder& folder, qint64 ma
 // lights.cpp: model.lights and model.cameras. `gltf`: the scene came from Assimp's glTF importers.
 void convertLightsAndCameras(const aiScene* scene, bool gltf, const QString& displayName, Model& model);
 
-// preflight.cpp: why the file must not reach Assimp (empty when it may): a data URI over the limit, an
-// OFF/PLY header declaring more elements than the file holds, non-numeric lines in ASCII PLY data.
+// meshes.cpp: the number of pairs of vertices within Assimp's smoothing distance of each other (1e-4 of
+// a mesh's bounding-box diagonal), estimated per mesh from a grid of cells of that size: the work of
+// the post-processing steps built on SpatialSort (smooth normals, tangents, joining), which grows with
+// the square of the vertices at one position.
+qint64 coincidentVertexPairs(const aiScene* scene);
+
+// preflight.cpp: why the file must not reach Assimp (empty when it may): a data URI over the limit, GLB
+// lengths beyond the file, an OFF/PLY header declaring more elements than the file holds or (PLY) not
+// ending, non-numeric lines in ASCII PLY data.
 QString preflight(const QString& path, qint64 maxDataUriBytes);
 // The length of the longest "data:" URI in glTF JSON or a GLB's JSON chunk.
 qint64 largestDataUri(QByteArrayView bytes);

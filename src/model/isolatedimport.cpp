@@ -299,11 +299,9 @@ ModelLoadResult importModelIsolated(const QString& path, const ModelLoadOptions&
                                     const ImportLimits& limits) {
     QElapsedTimer timer;
     timer.start();
-    const QString fileName = QFileInfo(path).fileName();
-    const QString name = fileName.isEmpty() ? path : fileName;
     const auto failure = [&](const QString& reason, bool cancelled = false) {
         ModelLoadResult r;
-        r.error = QStringLiteral("could not import %1: %2").arg(name, reason);
+        r.error = QStringLiteral("could not import %1: %2").arg(path, reason); // the path as given
         r.cancelled = cancelled;
         return r;
     };

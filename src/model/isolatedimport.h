@@ -2,11 +2,11 @@
 // or allocation bomb cannot take down the editor or `lightrig render`: the child imports with
 // loadModel (modelloader.h) and sends the Model back in modelcodec.h's form, which is validated here
 // before anything uses it. Whatever goes wrong becomes ModelLoadResult::error:
-//   "could not import spider.fbx: the importer crashed (signal 11)"
-//   "could not import spider.fbx: the importer aborted (signal 6)"
-//   "could not import spider.fbx: the importer ran out of its 8 GiB memory limit"
-//   "could not import spider.fbx: the importer did not finish within 120 s"
-//   "could not import spider.fbx: the importer sent a malformed reply (<reason>)"
+//   "could not import models/spider.fbx: the importer crashed (signal 11)" (the path as given)
+//   "could not import models/spider.fbx: the importer aborted (signal 6)"
+//   "could not import models/spider.fbx: the importer ran out of its 8 GiB memory limit"
+//   "could not import models/spider.fbx: the importer did not finish within 120 s"
+//   "could not import models/spider.fbx: the importer sent a malformed reply (<reason>)"
 // and the caller keeps whatever it had.
 #pragma once
 

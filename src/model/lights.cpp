@@ -9,6 +9,8 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
+#include <glm/vector_relational.hpp>
+#include <limits>
 #include <numbers>
 
 namespace lr::detail {
@@ -88,6 +90,54 @@ void setCone(const aiLight& al, bool gltf, Light& light) {
     light.cone.exponent = gltf ? 2.0 : 1.0;
 }
 
+QString number(double v) {
+    return QString::number(v, 'g', 6);
+}
+
+// The rig format's limits (core/rigjson.h) applied to a light read from a model file, which would
+// otherwise skip them (a glTF light of colour [-1, 2, 1e30] and intensity -5 was rendered, and the rig
+// could not be saved): out-of-range values are clamped and a light that still would not load is
+// dropped, each with a warning. `raw` is the file's colour with its intensity folded in. False: drop it.
+bool applyRigLimits(const aiColor3D& raw, const QString& where, Light& light, QStringList& warnings) {
+    if (!std::isfinite(raw.r) || !std::isfinite(raw.g) || !std::isfinite(raw.b) || raw.r < 0 || raw.g < 0 ||
+        raw.b < 0)
+        warnings << QStringLiteral("%1: colour × intensity [%2, %3, %4] has negative or non-finite "
+                                   "components; clamped to 0")
+                        .arg(where, number(raw.r), number(raw.g), number(raw.b));
+    if (light.intensity > kMaxRigIntensity) {
+        warnings << QStringLiteral("%1: intensity %2 clamped to %3")
+                        .arg(where, number(light.intensity), number(kMaxRigIntensity));
+        light.intensity = kMaxRigIntensity;
+    }
+    if (light.name.size() > kMaxRigNameLength) {
+        warnings << QStringLiteral("%1: name shortened to %2 characters").arg(where).arg(kMaxRigNameLength);
+        light.name.truncate(kMaxRigNameLength);
+    }
+    for (double* length :
+         {&light.falloff.range, &light.falloff.constant, &light.falloff.linear, &light.falloff.quadratic})
+        if (*length > kMaxRigLength) {
+            warnings << QStringLiteral("%1: falloff value %2 clamped to %3")
+                            .arg(where, number(*length), number(kMaxRigLength));
+            *length = kMaxRigLength;
+        }
+    if (light.usesPosition() &&
+        glm::any(glm::greaterThan(glm::abs(light.position), glm::dvec3(kMaxRigLength)))) {
+        warnings << QStringLiteral("%1: position beyond ±%2 (the rig format's limit); skipped")
+                        .arg(where, number(kMaxRigLength));
+        return false;
+    }
+    // Whatever else the format refuses: check the light as a rig file would be read.
+    Rig one;
+    one.lights = {light};
+    const RigReadResult check = readRigJson(writeRigJson(one), QStringLiteral("-"));
+    if (!check.ok()) {
+        warnings << QStringLiteral("%1: not a valid rig light (%2); skipped")
+                        .arg(where, check.errors.first().mid(3));
+        return false;
+    }
+    return true;
+}
+
 } // namespace
 
 void convertLightsAndCameras(const aiScene* scene, bool gltf, const QString& displayName, Model& model) {
@@ -143,10 +193,18 @@ void convertLightsAndCameras(const aiScene* scene, bool gltf, const QString& dis
                                   .arg(kMaxRigLights);
             break;
         }
-        rig.lights.push_back(light);
+        if (applyRigLimits(al->mColorDiffuse, QStringLiteral("%1: light %2").arg(displayName, name), light,
+                           model.warnings))
+            rig.lights.push_back(light);
     }
+    const glm::dvec3 ambient = rig.ambient;
     for (int i = 0; i < 3; ++i)
-        rig.ambient[i] = std::isfinite(rig.ambient[i]) ? rig.ambient[i] : 0.0;
+        rig.ambient[i] =
+            std::isfinite(rig.ambient[i]) ? std::clamp(rig.ambient[i], 0.0, kMaxRigIntensity) : 0.0;
+    if (rig.ambient != ambient)
+        model.warnings << QStringLiteral("%1: ambient light [%2, %3, %4] clamped to 0..%5")
+                              .arg(displayName, number(ambient.r), number(ambient.g), number(ambient.b),
+                                   number(kMaxRigIntensity));
 
     for (unsigned i = 0; i < scene->mNumCameras && scene->mCameras; ++i) {
         const aiCamera* ac = scene->mCameras[i];
@@ -188,6 +246,13 @@ void convertLightsAndCameras(const aiScene* scene, bool gltf, const QString& dis
                                   .arg(displayName, cam.name);
         }
         const double znear = ac->mClipPlaneNear, zfar = ac->mClipPlaneFar;
+        // A near plane below float's normal range (glTF znear 1e-45) leaves no depth precision: the model
+        // rendered as an empty background. Such a camera is ignored; views of the model remain.
+        if (znear > 0.0 && znear < double(std::numeric_limits<float>::min()) * 1e6) {
+            model.warnings << QStringLiteral("%1: camera %2 has an unusable near plane (%3); ignored")
+                                  .arg(displayName, cam.name, QString::number(znear, 'g', 6));
+            continue;
+        }
         if (std::isfinite(znear) && znear > 0.0) cam.znear = znear;
         cam.zfar = std::isfinite(zfar) && zfar > cam.znear ? zfar : 0.0;
         model.cameras.push_back(cam);

@@ -2,12 +2,14 @@
 // would poison a frame: non-finite positions, out-of-range indices, zero-area triangles, bad normals.
 #include "importdetail.h"
 
+#include <array>
 #include <assimp/scene.h>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 #include <limits>
+#include <unordered_map>
 #include <utility>
 
 namespace lr::detail {
@@ -253,6 +255,45 @@ bool convertMeshes(const aiScene* scene, const QString& displayName, Model& mode
     warn(counts.nonTriangles, "polygon", "that could not be triangulated dropped");
     warn(counts.normalsFixed, "zero-length or invalid normal", "recomputed from the faces");
     return true;
+}
+
+} // namespace lr::detail
+
+namespace lr::detail {
+
+qint64 coincidentVertexPairs(const aiScene* scene) {
+    struct CellHash {
+        std::size_t operator()(const std::array<qint64, 3>& c) const {
+            return std::size_t(c[0] * 73856093ll ^ c[1] * 19349663ll ^ c[2] * 83492791ll);
+        }
+    };
+    qint64 pairs = 0;
+    std::unordered_map<std::array<qint64, 3>, qint64, CellHash> cells;
+    for (unsigned m = 0; m < scene->mNumMeshes && scene->mMeshes; ++m) {
+        const aiMesh* am = scene->mMeshes[m];
+        if (!am || !am->mVertices) continue;
+        glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+        for (unsigned i = 0; i < am->mNumVertices; ++i) {
+            const glm::dvec3 p(am->mVertices[i].x, am->mVertices[i].y, am->mVertices[i].z);
+            if (!isFinite(p)) continue;
+            lo = glm::min(lo, p);
+            hi = glm::max(hi, p);
+        }
+        // Assimp's smoothing epsilon (ComputePositionEpsilon); 0 when every vertex is at one point.
+        const double cell = hi.x >= lo.x ? 1e-4 * glm::length(hi - lo) : 0.0;
+        cells.clear();
+        for (unsigned i = 0; i < am->mNumVertices; ++i) {
+            const glm::dvec3 p(am->mVertices[i].x, am->mVertices[i].y, am->mVertices[i].z);
+            if (!isFinite(p)) continue;
+            std::array<qint64, 3> key{0, 0, 0};
+            if (cell > 0.0 && std::isfinite(cell))
+                for (int k = 0; k < 3; ++k)
+                    key[k] = qint64(std::floor((p[k] - lo[k]) / cell));
+            pairs += cells[key]++; // the new vertex pairs with every earlier one in its cell
+            if (pairs > (qint64(1) << 60)) return pairs; // far past any limit; no overflow
+        }
+    }
+    return pairs;
 }
 
 } // namespace lr::detail

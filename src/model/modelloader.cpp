@@ -17,6 +17,9 @@ namespace {
 
 // Share of the progress bar for Assimp's reading and post-processing; the rest is ours.
 constexpr double kAssimpShare = 0.8;
+// Above this many pairs of coincident vertices (detail::coincidentVertexPairs) the SpatialSort-based
+// post-processing steps are skipped: at ~3e8 pairs a second in SpatialSort, about a second in all.
+constexpr qint64 kMaxCoincidentPairs = 100'000'000;
 
 struct ProgressState {
     std::function<bool(double)> callback;
@@ -48,9 +51,11 @@ bool isGltf(const QString& path) {
     return suffix == QLatin1String("gltf") || suffix == QLatin1String("glb");
 }
 
-ModelLoadResult failure(const QString& displayName, const QString& reason, bool cancelled = false) {
+// Errors name the model as the caller gave it (a file name alone is ambiguous in batch runs); warnings,
+// which come with the loaded model, name just the file.
+ModelLoadResult failure(const QString& givenPath, const QString& reason, bool cancelled = false) {
     ModelLoadResult r;
-    r.error = QStringLiteral("could not import %1: %2").arg(displayName, reason);
+    r.error = QStringLiteral("could not import %1: %2").arg(givenPath, reason);
     r.cancelled = cancelled;
     return r;
 }
@@ -61,16 +66,17 @@ ModelLoadResult import(const QString& path, const ModelLoadOptions& options) {
     const detail::ModelFolder folder(path, options.allowTexturesOutsideFolder);
     const QString& name = folder.displayName();
     const QFileInfo info(folder.modelFile());
-    if (!info.exists()) return failure(name, QStringLiteral("no such file (%1)").arg(path));
-    if (!info.isFile()) return failure(name, QStringLiteral("not a file (%1)").arg(path));
+    if (!info.exists()) return failure(path, QStringLiteral("no such file"));
+    if (!info.isFile())
+        return failure(path, QStringLiteral("not a regular file (a folder, FIFO, socket or device)"));
 
     const bool gltf = isGltf(path);
     if (const QString refusal = detail::preflight(folder.modelFile(), options.maxDataUriBytes);
         !refusal.isEmpty())
-        return failure(name, refusal);
+        return failure(path, refusal);
 
     ProgressState progress{options.progress};
-    if (!progress.report(0.0)) return failure(name, QStringLiteral("cancelled"), true);
+    if (!progress.report(0.0)) return failure(path, QStringLiteral("cancelled"), true);
 
     Assimp::Importer importer;
     auto* io = new detail::QtIOSystem(folder);
@@ -78,11 +84,21 @@ ModelLoadResult import(const QString& path, const ModelLoadOptions& options) {
     importer.SetProgressHandler(new AssimpProgress(progress));
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
     importer.SetPropertyFloat(AI_CONFIG_PP_GSN_MAX_SMOOTHING_ANGLE, 80.0f);
-    const unsigned flags = aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_CalcTangentSpace |
-                           aiProcess_JoinIdenticalVertices | aiProcess_SortByPType |
-                           aiProcess_ValidateDataStructure;
-    const aiScene* scene = importer.ReadFile(folder.modelFile().toUtf8().constData(), flags);
-    if (progress.cancelled) return failure(name, QStringLiteral("cancelled"), true);
+    // Two passes of Assimp's post-processing, in its own order: the linear steps while reading; the steps
+    // built on SpatialSort (smooth normals, tangents, joining vertices) only when few vertices share a
+    // position, since SpatialSort is quadratic in the number of coincident vertices (an OBJ of 100,000
+    // copies of one triangle took minutes). Without them meshes.cpp computes flat normals per face.
+    const unsigned readFlags =
+        aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_ValidateDataStructure;
+    const unsigned smoothFlags =
+        aiProcess_GenSmoothNormals | aiProcess_CalcTangentSpace | aiProcess_JoinIdenticalVertices;
+    const aiScene* scene = importer.ReadFile(folder.modelFile().toUtf8().constData(), readFlags);
+    if (progress.cancelled) return failure(path, QStringLiteral("cancelled"), true);
+    qint64 coincidentPairs = 0;
+    if (scene && (coincidentPairs = detail::coincidentVertexPairs(scene)) <= kMaxCoincidentPairs) {
+        scene = importer.ApplyPostProcessing(smoothFlags);
+        if (progress.cancelled) return failure(path, QStringLiteral("cancelled"), true);
+    }
 
     const QStringList refusals = io->refusals();
     if (!scene) {
@@ -90,27 +106,32 @@ ModelLoadResult import(const QString& path, const ModelLoadOptions& options) {
         if (reason.isEmpty()) reason = QStringLiteral("Assimp gave no reason");
         if (!refusals.isEmpty())
             reason += QStringLiteral(" (refused: %1)").arg(refusals.join(QStringLiteral("; ")));
-        return failure(name, reason);
+        return failure(path, reason);
     }
 
     auto model = std::make_shared<Model>();
     model->path = path;
     for (const QString& r : refusals)
         model->warnings << QStringLiteral("%1: refused: %2").arg(name, r);
+    if (coincidentPairs > kMaxCoincidentPairs)
+        model->warnings << QStringLiteral("%1: %2 pairs of vertices share a position; normals are flat and "
+                                          "vertices not joined (smoothing them would take quadratic time)")
+                               .arg(name)
+                               .arg(coincidentPairs);
     const auto keepGoing = [&](double f) {
         return progress.report(kAssimpShare + f * (0.95 - kAssimpShare));
     };
     if (!detail::convertMeshes(scene, name, *model, keepGoing))
-        return failure(name, QStringLiteral("cancelled"), true);
+        return failure(path, QStringLiteral("cancelled"), true);
     if (model->meshes.empty()) {
         QString reason = QStringLiteral("the file has no triangles");
         if (!model->warnings.isEmpty())
             reason += QStringLiteral(" (%1)").arg(model->warnings.join(QStringLiteral("; ")));
-        return failure(name, reason);
+        return failure(path, reason);
     }
     detail::convertMaterials(scene, folder, options.maxDataUriBytes, *model);
     detail::convertLightsAndCameras(scene, gltf, name, *model);
-    if (!progress.report(1.0)) return failure(name, QStringLiteral("cancelled"), true);
+    if (!progress.report(1.0)) return failure(path, QStringLiteral("cancelled"), true);
     model->loadMs = double(timer.nsecsElapsed()) / 1e6;
     ModelLoadResult result;
     result.model = std::move(model);
@@ -120,15 +141,14 @@ ModelLoadResult import(const QString& path, const ModelLoadOptions& options) {
 } // namespace
 
 ModelLoadResult loadModel(const QString& path, const ModelLoadOptions& options) {
-    const QString display = QFileInfo(path).fileName().isEmpty() ? path : QFileInfo(path).fileName();
     try {
         return import(path, options);
     } catch (const std::bad_alloc&) {
-        return failure(display, QStringLiteral("out of memory"));
+        return failure(path, QStringLiteral("out of memory"));
     } catch (const std::exception& e) {
-        return failure(display, QString::fromUtf8(e.what()));
+        return failure(path, QString::fromUtf8(e.what()));
     } catch (...) {
-        return failure(display, QStringLiteral("unknown error"));
+        return failure(path, QStringLiteral("unknown error"));
     }
 }
 

@@ -52,7 +52,7 @@ struct ModelLoadOptions {
 
 struct ModelLoadResult {
     std::shared_ptr<Model> model; // null on failure
-    QString error;                // "could not import spider.fbx: <reason>" on failure
+    QString error;                // "could not import PATH: <reason>" on failure, PATH as given
     bool cancelled = false;       // the progress callback returned false
     bool ok() const { return model != nullptr; }
 };

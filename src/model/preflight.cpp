@@ -1,7 +1,10 @@
 // Checks run on a model file before Assimp sees it, for inputs known to make Assimp 5.2.5 allocate
-// without bound, abort or crash: glTF data URIs over the size limit, OFF and PLY headers declaring
-// more elements than the file can hold (Assimp allocates by the declared count), and ASCII PLY data
-// with non-numeric lines (a comment inside the data makes the Debian build abort in an ai_assert).
+// without bound, hang, abort or crash: glTF data URIs over the size limit, GLB header and chunk
+// lengths beyond the file, OFF and PLY headers declaring more elements than the file can hold (Assimp
+// allocates by the declared count), PLY headers without end_header (Assimp waits for it forever),
+// Collada index lists with non-numeric characters (an endless loop in Assimp), and ASCII PLY data with
+// non-numeric lines (a comment inside the data makes the Debian build abort in an ai_assert). Each check is
+// linear in the file's size.
 #include "importdetail.h"
 
 #include <QByteArrayView>
@@ -145,7 +148,7 @@ QString checkPly(QByteArrayView text) {
         }
         if (needed > std::numeric_limits<qint64>::max() / 4) break;
     }
-    if (!ended) return {};
+    if (!ended) return QStringLiteral("the PLY header has no end_header line (is the file truncated?)");
     if (needed > text.size() - pos) return tooManyElements(declared, "elements", needed, text.size());
     if (!ascii) return {};
     for (int lineNo = 1; nextLine(text, &pos, &line); ++lineNo) {
@@ -161,6 +164,81 @@ QString checkPly(QByteArrayView text) {
             .arg(lineNo)
             .arg(QString::fromLatin1(line.first(std::min<qsizetype>(line.size(), 40)).toByteArray()));
     }
+    return {};
+}
+
+// Collada index lists (<p>, <h>) hold integers only: Assimp 5.2.5 reads them with a loop that stops only
+// at the end of the text, and a character that is not part of a number is never consumed (a '4' turned
+// into '$' in duck.dae hung the importer until the time limit).
+QString checkColladaIndices(QByteArrayView text) {
+    int line = 1;
+    qsizetype counted = 0;
+    for (qsizetype at = text.indexOf("<"); at >= 0 && at + 2 < text.size(); at = text.indexOf("<", at + 1)) {
+        const char tag = text[at + 1], after = text[at + 2];
+        if ((tag != 'p' && tag != 'h') || (after != '>' && after != ' ' && after != '\t' && after != '\n'))
+            continue;
+        const qsizetype open = text.indexOf('>', at);
+        if (open < 0) return {};
+        for (qsizetype i = open + 1; i < text.size() && text[i] != '<'; ++i) {
+            const char c = text[i];
+            if ((c >= '0' && c <= '9') || c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '-' ||
+                c == '+')
+                continue;
+            for (; counted < i; ++counted)
+                line += text[counted] == '\n' ? 1 : 0;
+            const QString what = uchar(c) >= 0x20 && uchar(c) < 0x7f
+                                     ? QStringLiteral("'%1'").arg(QLatin1Char(c))
+                                     : QStringLiteral("byte 0x%1").arg(uchar(c), 2, 16, QLatin1Char('0'));
+            return QStringLiteral("line %1: the <%2> index list holds %3, which is not part of an integer")
+                .arg(line)
+                .arg(QLatin1Char(tag))
+                .arg(what);
+        }
+        at = open;
+    }
+    return {};
+}
+
+quint32 u32At(QByteArrayView bytes, qsizetype at) {
+    return quint32(uchar(bytes[at])) | quint32(uchar(bytes[at + 1])) << 8 |
+           quint32(uchar(bytes[at + 2])) << 16 | quint32(uchar(bytes[at + 3])) << 24;
+}
+
+// A binary glTF's header and chunk lengths against the bytes present: Assimp allocates what they claim
+// (an 80-byte file whose JSON chunk claimed 4 GB cost 4.2 GB and a minute).
+QString checkGlb(QByteArrayView bytes) {
+    const qint64 size = bytes.size();
+    if (size < 12)
+        return QStringLiteral("the file is %1 bytes, shorter than a GLB header (12 bytes)").arg(size);
+    const quint32 version = u32At(bytes, 4), length = u32At(bytes, 8);
+    if (version != 1 && version != 2)
+        return QStringLiteral("the GLB header has version %1; glTF binary files are version 1 or 2")
+            .arg(version);
+    if (length > size)
+        return QStringLiteral("the GLB header declares %1 bytes, but the file has %2 (is it truncated or "
+                              "corrupted?)")
+            .arg(length)
+            .arg(size);
+    if (version == 1) { // glTF 1.0 binary: content length and format, then the content
+        if (size < 20 || u32At(bytes, 12) > quint32(length) - std::min<quint32>(length, 20))
+            return QStringLiteral("the GLB content length exceeds the file's %1 bytes").arg(length);
+        return {};
+    }
+    int index = 0;
+    for (qint64 at = 12; at < length; ++index) {
+        if (length - at < 8)
+            return QStringLiteral("GLB chunk %1 is cut off after %2 bytes of its header")
+                .arg(index)
+                .arg(length - at);
+        const quint32 chunk = u32At(bytes, at);
+        if (qint64(chunk) > length - at - 8)
+            return QStringLiteral("GLB chunk %1 declares %2 bytes, but only %3 follow in the file")
+                .arg(index)
+                .arg(chunk)
+                .arg(length - at - 8);
+        at += 8 + qint64(chunk);
+    }
+    if (index == 0) return QStringLiteral("the GLB file has no JSON chunk");
     return {};
 }
 
@@ -190,6 +268,8 @@ QString preflight(const QString& path, qint64 maxDataUriBytes) {
     const Bytes bytes(path);
     const QByteArrayView text = bytes.view;
     const QString suffix = QFileInfo(path).suffix().toLower();
+    if (text.startsWith("glTF"))
+        if (const QString refusal = checkGlb(text); !refusal.isEmpty()) return refusal;
     if (suffix == QLatin1String("gltf") || suffix == QLatin1String("glb") || text.startsWith("glTF")) {
         const qint64 largest = largestDataUri(text);
         if (largest > maxDataUriBytes)
@@ -197,6 +277,9 @@ QString preflight(const QString& path, qint64 maxDataUriBytes) {
                 .arg(largest)
                 .arg(maxDataUriBytes);
     }
+    if (suffix == QLatin1String("dae") ||
+        text.first(std::min<qsizetype>(text.size(), 4096)).contains("<COLLADA"))
+        if (const QString refusal = checkColladaIndices(text); !refusal.isEmpty()) return refusal;
     if (text.startsWith("ply\n") || text.startsWith("ply\r\n")) return checkPly(text);
     if (suffix == QLatin1String("off")) return checkOff(text);
     return {};

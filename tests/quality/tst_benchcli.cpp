@@ -53,6 +53,8 @@ class TestBenchCli : public QObject {
         QTest::addRow("bad tier") << QStringList{"--quality", "exact,bogus"};
         QTest::addRow("bad counts") << QStringList{"--lights", "8,x"};
         QTest::addRow("negative count") << QStringList{"--lights", "-1"};
+        // Past what the renderer shades (65,535 lights): refused, not silently dropped (issue 18).
+        QTest::addRow("too many lights") << QStringList{"--lights", "8,65536"};
         QTest::addRow("bad type") << QStringList{"--light-type", "laser"};
         QTest::addRow("rig and lights") << QStringList{"--rig", "r.json", "--lights", "8"};
         QTest::addRow("camera and view") << QStringList{"--camera-index", "0", "--view", "front"};
@@ -152,6 +154,40 @@ class TestBenchCli : public QObject {
         const QStringList lines = r.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
         QCOMPARE(lines.size(), 3); // heading, column titles, one result
         QVERIFY(lines[2].startsWith(QStringLiteral("scene ")) && lines[2].contains(QStringLiteral(" fast ")));
+    }
+
+    // Issue 18: a valid rig with a range-power light 1e12 above an 8×8 plane, range 1e12, seen from above
+    // at +60 EV: every GPU tier was black where the double reference was white (1 - d/range is rounding
+    // noise of ~1e-16 in double and 0 in float, and 2^60 made the noise white). Both now give 0 in the last
+    // 1e-6 of the range (core/lighting.h kRangeEdge), so every tier agrees with the reference.
+    void farRangePowerLightAgreesWithTheReference() {
+        if (!haveDisplay()) QSKIP("needs an X display with OpenGL: run under xvfb-run -a");
+        const QString plane = m_dir.filePath(QStringLiteral("plane.obj"));
+        QFile obj(plane);
+        QVERIFY(obj.open(QIODevice::WriteOnly));
+        obj.write("v -4 0 -4\nv 4 0 -4\nv 4 0 4\nv -4 0 4\nvn 0 1 0\nf 1//1 3//1 2//1\nf 1//1 4//1 3//1\n");
+        obj.close();
+        const QString json = m_dir.filePath(QStringLiteral("far.json"));
+        const Run r =
+            lightrig({plane, QStringLiteral("--rig"),
+                      QStringLiteral(LIGHTRIG_TEST_DATA "/model/hostile/far-light-range-power-1e12.rig.json"),
+                      QStringLiteral("--view"), QStringLiteral("top"), QStringLiteral("--exposure"),
+                      QStringLiteral("60"), QStringLiteral("--tonemap"), QStringLiteral("aces"),
+                      QStringLiteral("--size"), QStringLiteral("32x32"), QStringLiteral("--frames"),
+                      QStringLiteral("1"), QStringLiteral("--warmup"), QStringLiteral("0"),
+                      QStringLiteral("--no-uber"), QStringLiteral("--json"), json});
+        QVERIFY2(r.code == 0, qPrintable(show(r)));
+        QFile f(json);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QJsonArray results =
+            QJsonDocument::fromJson(f.readAll()).object().value(QStringLiteral("results")).toArray();
+        QCOMPARE(results.size(), 3); // exact, balanced, fast
+        for (const QJsonValue& v : results) {
+            const QJsonObject o = v.toObject();
+            QVERIFY2(o.value(QStringLiteral("max_error_levels")).isDouble() &&
+                         o.value(QStringLiteral("max_error_levels")).toDouble() <= 1.0,
+                     qPrintable(QJsonDocument(o).toJson()));
+        }
     }
 };
 

@@ -10,6 +10,7 @@
 #include <QImage>
 #include <QTemporaryDir>
 #include <QTest>
+#include <sys/stat.h>
 
 namespace {
 
@@ -97,12 +98,14 @@ class TestRenderCli : public QObject {
         QFile::setPermissions(path(QStringLiteral("xdg")),
                               QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
         m_env.insert(QStringLiteral("XDG_RUNTIME_DIR"), path(QStringLiteral("xdg")));
+        QVERIFY(::mkfifo(QFile::encodeName(path(QStringLiteral("fifo.json"))).constData(), 0600) == 0);
     }
 
     void usageErrorsExit2_data() {
         QTest::addColumn<QStringList>("args");
         const QString m = suzanne(), o = QStringLiteral("/tmp/never-written.png");
         QTest::newRow("no model") << QStringList{QStringLiteral("-o"), o};
+        QTest::newRow("empty model path") << QStringList{QString(), QStringLiteral("-o"), o}; // was exit 1
         QTest::newRow("no output") << QStringList{m};
         QTest::newRow("two models") << QStringList{m, m, QStringLiteral("-o"), o};
         QTest::newRow("unknown option") << QStringList{m, QStringLiteral("-o"), o, QStringLiteral("--shiny")};
@@ -157,6 +160,10 @@ class TestRenderCli : public QObject {
                                                     path(QStringLiteral("none.json")), QStringLiteral("-o"),
                                                     out}
                                      << QStringLiteral("none.json");
+        QTest::newRow("rig is a FIFO")
+            << QStringList{suzanne(), QStringLiteral("--rig"), path(QStringLiteral("fifo.json")),
+                           QStringLiteral("-o"), out}
+            << QStringLiteral("fifo.json: is not a regular file");
         QTest::newRow("camera out of range") << QStringList{suzanne(), QStringLiteral("--camera-index"),
                                                             QStringLiteral("3"), QStringLiteral("-o"), out}
                                              << QStringLiteral("camera");
@@ -185,6 +192,47 @@ class TestRenderCli : public QObject {
         QVERIFY(kept.open(QIODevice::ReadOnly));
         QCOMPARE(kept.readAll(), QByteArray("previous"));
         QVERIFY(!QFile::exists(path(QStringLiteral("no/such/dir/x.png"))));
+    }
+
+    // Issue 18: models at extreme scales or seen through a broken camera rendered as the background alone,
+    // with exit 0 and nothing said. Now: a framed image with a warning, or exit 1 with nothing written.
+    void extremeModelsAreNeverAnEmptyImageInSilence_data() {
+        QTest::addColumn<QString>("model");
+        QTest::addColumn<QString>("warning");
+        const QString hostile = QStringLiteral(LIGHTRIG_TEST_DATA "/model/hostile/");
+        QTest::newRow("camera yfov 1e39, znear 1e-45") << hostile + QStringLiteral("gltf-camera-nan.gltf")
+                                                       << QStringLiteral("has an unusable near plane");
+        QTest::newRow("node scale 1e38")
+            << hostile + QStringLiteral("gltf-node-huge-scale.gltf") << QString();
+        QTest::newRow("coordinates 3e38") << hostile + QStringLiteral("ply-huge-coords.ply") << QString();
+    }
+
+    void extremeModelsAreNeverAnEmptyImageInSilence() {
+        LR_REQUIRE_DISPLAY();
+        QFETCH(QString, model);
+        QFETCH(QString, warning);
+        const QString out = path(QStringLiteral("extreme.png"));
+        QFile::remove(out);
+        const Run r =
+            lightrig({model, QStringLiteral("-o"), out, QStringLiteral("--size"), QStringLiteral("64x48")});
+        if (r.code == 1) { // nothing can be drawn: said so, nothing written
+            QVERIFY2(r.err.contains(QStringLiteral("nothing of ")) &&
+                         r.err.contains(QStringLiteral("can be drawn")),
+                     qPrintable(r.show()));
+            QVERIFY(!QFile::exists(out));
+            return;
+        }
+        QVERIFY2(r.code == 0, qPrintable(r.show()));
+        if (!warning.isEmpty()) QVERIFY2(r.err.contains(warning), qPrintable(r.show()));
+        // The image shows the model: some pixel differs from the background of the corner.
+        const QImage image(out);
+        QVERIFY(!image.isNull());
+        const QRgb background = image.pixel(0, 0);
+        int covered = 0;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x)
+                covered += image.pixel(x, y) != background;
+        QVERIFY2(covered > 0, qPrintable(r.show()));
     }
 
     void withoutDisplayExplains() {

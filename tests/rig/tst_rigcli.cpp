@@ -4,6 +4,7 @@
 #include "support/cli.h"
 
 #include <QTemporaryDir>
+#include <sys/stat.h>
 
 using namespace lr;
 using namespace lr::test;
@@ -36,6 +37,8 @@ class TestRigCli : public QObject {
     void validateUsage();
     void editorWithoutADisplay();
     void validateEmbeddedPreset();
+    void fifoIsRefused();
+    void typoIsAUsageError();
     void formatCheck();
     void formatRewrites();
     void formatLeavesBadFilesAlone();
@@ -112,6 +115,37 @@ void TestRigCli::validateEmbeddedPreset() {
     const QString path = builtinPresetPath(QStringLiteral("default"));
     const Run r = lightrig({QStringLiteral("validate"), path});
     QVERIFY2(r.code == 0 && r.lines() == QStringList{path + QStringLiteral(": ok")}, qPrintable(show(r)));
+}
+
+// `mkfifo f.json; lightrig validate f.json` blocked forever; now every reader of rig files refuses it.
+void TestRigCli::fifoIsRefused() {
+    const QString fifo = m_dir.filePath(QStringLiteral("fifo.json"));
+    QVERIFY(::mkfifo(QFile::encodeName(fifo).constData(), 0600) == 0);
+    const QString expected =
+        fifo +
+        QStringLiteral(": is not a regular file (a FIFO, socket or device); rig files must be regular files");
+    for (const char* sub : {"validate", "format"}) {
+        const Run r = lightrig({QLatin1String(sub), fifo}); // code -1 after 30 s: it blocked
+        QVERIFY2(r.code == 1 && r.lines().contains(expected), qPrintable(show(r)));
+    }
+}
+
+// `lightrig <typo>` took the word for a model file and opened the editor (headless: "needs a display",
+// which looks like a hang under xvfb-run). A first word that is neither a subcommand nor an existing file
+// is a usage error naming the subcommands; with and without a display.
+void TestRigCli::typoIsAUsageError() {
+    for (const bool display : {false, true}) {
+        if (display && !qEnvironmentVariableIsSet("DISPLAY")) continue;
+        const Run r =
+            lightrig({QStringLiteral("valdiate"), dataPath(QStringLiteral("good/minimal.json"))}, display);
+        QVERIFY2(r.code == 2, qPrintable(show(r)));
+        QVERIFY2(r.err.contains(QStringLiteral("valdiate")) &&
+                     r.err.contains(QStringLiteral("validate, format, render, bench")),
+                 qPrintable(show(r)));
+        // A single word that is not a file, too (the editor's MODEL argument).
+        const Run one = lightrig({QStringLiteral("rendr")}, display);
+        QVERIFY2(one.code == 2 && one.err.contains(QStringLiteral("rendr")), qPrintable(show(one)));
+    }
 }
 
 void TestRigCli::formatCheck() {

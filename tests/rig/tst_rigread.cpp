@@ -6,7 +6,13 @@
 
 #include <QDir>
 #include <QTemporaryDir>
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <thread>
+#include <unistd.h>
 
 using namespace lr;
 using namespace lr::test;
@@ -29,9 +35,12 @@ class TestRigRead : public QObject {
     void numbersOutOfRange();
     void overLargeFile();
     void tooManyLights();
+    void farTooManyLights();
+    void nonFiniteSpellings();
     void nestingLimit();
     void directionsAreNormalised();
     void missingFile();
+    void fifoIsRefused();
 };
 
 void TestRigRead::issueExample() {
@@ -153,6 +162,8 @@ static const struct {
     {"binary.json", "line 1, column 1: not valid UTF-8 text (byte 0x89; is this a binary file?)"},
     {"invalid-utf8.json", "line 1, column 50: not valid UTF-8 text (byte 0xe9"},
     {"nul-byte.json", "line 1, column 48: contains a NUL byte"},
+    {"utf16.json", "line 1, column 1: the file is UTF-16 (little-endian); rig files must be UTF-8"},
+    {"utf16-be-no-bom.json", "line 1, column 1: the file is UTF-16 (big-endian); rig files must be UTF-8"},
     {"duplicate-key.json", "lights[1].intensity: duplicate key"},
     {"duplicate-escaped-key.json", "lights: duplicate key"},
     {"overflow.json", "lights[0].intensity: must be a finite number from 0 to 1000000, got 1e999 (out of the "
@@ -356,6 +367,43 @@ void TestRigRead::tooManyLights() {
              QStringList{QStringLiteral("over.json: lights: 4097 lights; at most 4096 are allowed")});
 }
 
+// 150,000 lights (1.5 million values) run into the JSON parser's value limit before the light count is
+// known (the issue's 100,000 lights stopped in lights[74897].color[0]): the error is still about the
+// number of lights, not "more than 1048576 values" inside some light.
+void TestRigRead::farTooManyLights() {
+    QByteArray lights;
+    const QByteArray light =
+        R"({"type": "point", "position": [1, 2, 3], "color": [1, 0.5, 0.25]})"; // 10 values
+    for (int i = 0; i < 150'000; ++i)
+        lights += (i ? ", " : "") + light;
+    const RigReadResult r = readRigJson(rigJson(lights), QStringLiteral("huge.json"));
+    QCOMPARE(r.errors, QStringList{QStringLiteral(
+                           "huge.json: lights: more than 104857 lights; at most 4096 are allowed")});
+    // Too many values elsewhere (not lights) keep the parser's message.
+    QByteArray numbers = "[";
+    for (int i = 0; i < (1 << 20) + 1; ++i)
+        numbers += i ? ",0" : "0";
+    const RigReadResult other =
+        readRigJson(rigJson({}, "\"extra\": " + numbers + "],"), QStringLiteral("x.json"));
+    QVERIFY2(other.errors.size() == 1 && other.errors[0].contains(QStringLiteral("more than 1048576 values")),
+             qPrintable(describe(other)));
+}
+
+// Every spelling of a non-finite number other languages write gets the specific message, with the text
+// as written, not a generic syntax error.
+void TestRigRead::nonFiniteSpellings() {
+    for (const char* word : {"NaN", "-NaN", "+NaN", "NAN", "nan", "-nan", "Infinity", "+Infinity",
+                             "-Infinity", "INF", "-inf", "+Inf"}) {
+        const RigReadResult r = readRigJson(rigJson({}, QByteArray("\"ambient\": [") + word + ", 0, 0],"),
+                                            QStringLiteral("n.json"));
+        QVERIFY2(r.errors.size() == 1 &&
+                     r.errors[0] == QStringLiteral("n.json: line 1, column 50 (in ambient[0]): %1 is not a "
+                                                   "JSON number; numbers must be finite")
+                                        .arg(QLatin1String(word)),
+                 qPrintable(QLatin1String(word) + QLatin1Char('\n') + describe(r)));
+    }
+}
+
 void TestRigRead::nestingLimit() {
     const auto nested = [](int depth) { return QByteArray(depth, '[') + QByteArray(depth, ']'); };
     // The document object is level 1, so an unknown value may nest 31 more levels.
@@ -401,6 +449,30 @@ void TestRigRead::missingFile() {
     r = readRigFile(dataPath(QStringLiteral("bad")));
     QCOMPARE(r.errors, QStringList{dataPath(QStringLiteral("bad")) +
                                    QStringLiteral(": is a directory, not a rig file")});
+}
+
+// A FIFO (or socket, or device) is refused before it is opened: opening a FIFO without a writer blocks
+// forever. If the reader did open it, a watchdog opens the writing end after 3 s so the test fails with
+// the wrong message instead of hanging.
+void TestRigRead::fifoIsRefused() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString fifo = dir.filePath(QStringLiteral("f.json"));
+    QVERIFY(::mkfifo(QFile::encodeName(fifo).constData(), 0600) == 0);
+    std::atomic<bool> done{false};
+    std::thread watchdog([&] {
+        const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(3);
+        while (!done && std::chrono::steady_clock::now() < until)
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        if (done) return;
+        const int fd = ::open(QFile::encodeName(fifo).constData(), O_WRONLY | O_NONBLOCK);
+        if (fd >= 0) ::close(fd);
+    });
+    const RigReadResult r = readRigFile(fifo);
+    done = true;
+    watchdog.join();
+    QCOMPARE(r.errors, QStringList{fifo + QStringLiteral(": is not a regular file (a FIFO, socket or "
+                                                         "device); rig files must be regular files")});
 }
 
 QTEST_GUILESS_MAIN(TestRigRead)

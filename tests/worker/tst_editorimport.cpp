@@ -60,7 +60,7 @@ void TestEditorImport::crashKeepsTheOpenModelAndRig() {
     QVERIFY(files.openModel(kData + QStringLiteral("/scene.gltf")));
     QVERIFY(failed.wait(60'000));
     QCOMPARE(failed.at(0).at(1).toString(),
-             QStringLiteral("could not import scene.gltf: the importer crashed (signal 11)"));
+             QStringLiteral("could not import %1/scene.gltf: the importer crashed (signal 11)").arg(kData));
     QCOMPARE(m_errors.size(), 1);
     QVERIFY(m_errors.at(0).details.contains(failed.at(0).at(1).toString()));
     QCOMPARE(scene.model(), before); // the very same model object

@@ -68,17 +68,19 @@ void TestImportCli::renderImporterDeaths_data() {
     QTest::addColumn<QByteArray>("mode");
     QTest::addColumn<QString>("message");
     QTest::newRow("segv") << QByteArray("segv")
-                          << QStringLiteral("could not import quad.obj: the importer crashed (signal 11)");
+                          << QStringLiteral("could not import " LIGHTRIG_TEST_DATA
+                                            "/model/quad.obj: the importer crashed (signal 11)");
     QTest::newRow("abort") << QByteArray("abort")
-                           << QStringLiteral("could not import quad.obj: the importer aborted (signal 6)");
+                           << QStringLiteral("could not import " LIGHTRIG_TEST_DATA
+                                             "/model/quad.obj: the importer aborted (signal 6)");
 #ifndef TEST_ASAN // AddressSanitizer builds run the worker without an address-space limit
     QTest::newRow("oom") << QByteArray("oom")
-                         << QStringLiteral(
-                                "could not import quad.obj: the importer ran out of its 8 GiB memory limit");
+                         << QStringLiteral("could not import " LIGHTRIG_TEST_DATA
+                                           "/model/quad.obj: the importer ran out of its 8 GiB memory limit");
 #endif
     QTest::newRow("garbage") << QByteArray("garbage")
-                             << QStringLiteral(
-                                    "could not import quad.obj: the importer sent a malformed reply");
+                             << QStringLiteral("could not import " LIGHTRIG_TEST_DATA
+                                               "/model/quad.obj: the importer sent a malformed reply");
 }
 
 void TestImportCli::renderImporterDeaths() {
@@ -104,8 +106,8 @@ void TestImportCli::benchImporterDeath() {
                             QStringLiteral("64x48"), QStringLiteral("--json"), json},
                            "segv");
     QCOMPARE(r.status, 1);
-    QVERIFY2(r.err.contains(QStringLiteral(
-                 "lightrig bench: could not import quad.obj: the importer crashed (signal 11)")),
+    QVERIFY2(r.err.contains(QStringLiteral("lightrig bench: could not import " LIGHTRIG_TEST_DATA
+                                           "/model/quad.obj: the importer crashed (signal 11)")),
              qPrintable(r.err));
     QVERIFY(!QFileInfo::exists(json));
 }
