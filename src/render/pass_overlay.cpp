@@ -6,7 +6,9 @@
 #include "targets.h"
 #include "textureunits.h"
 
+#include <cmath>
 #include <cstddef>
+#include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 namespace lr::render {
@@ -48,10 +50,18 @@ bool OverlayPass::run(const FrameContext& frame, PassScene& scene) {
     QOpenGLShaderProgram* p = scene.programs->fixedProgram(kOverlayShader, &error);
     if (!p) return fail(scene, error);
     // Gizmos are clipped on the CPU at half the near distance and drawn with depth clamping, so lights
-    // outside the scene's depth range stay visible; the shader fades the parts behind the model.
+    // outside the scene's depth range stay visible; the shader fades the parts behind the model, and
+    // drops the grid's.
     glBindFramebuffer(GL_FRAMEBUFFER, frame.outputFbo);
     p->bind();
     p->setUniformValue("uHasDepth", scene.model->model() != nullptr);
+    // The grid (gizmos.cpp: under the bounds, 1.5 radii each way) fades from the eye's distance to its
+    // centre to one extent beyond: full in front, gone at the far edge of an oblique view.
+    const double radius =
+        scene.frame.radius > 0.0 && std::isfinite(scene.frame.radius) ? scene.frame.radius : 1.0;
+    const glm::dvec3 gridCentre(scene.bounds.center().x, scene.bounds.min.y, scene.bounds.center().z);
+    const double fadeStart = glm::length(glm::dvec3(frame.view * glm::dvec4(gridCentre, 1.0)));
+    p->setUniformValue("uGridFade", float(fadeStart), float(fadeStart + 1.5 * radius));
     glUniformMatrix4fv(p->uniformLocation("uProjection"), 1, GL_FALSE,
                        glm::value_ptr(glm::mat4(frame.projection)));
     glActiveTexture(textureUnit(TextureUnit::SceneDepth));

@@ -147,6 +147,109 @@ class TestRenderPasses : public QObject {
         QCOMPARE(m_gl->renderer().renderPlan(),
                  QStringLiteral("geometry (G-buffer) > deferred lighting > tone map > overlay"));
     }
+
+    // Issue 12: from above, the ground grid lies under the whole model: every pixel inside the model's
+    // silhouette must be exactly what the frame without the grid has there (it showed through at 30%).
+    void gridIsHiddenByTheModel_data() {
+        QTest::addColumn<int>("msaa");
+        QTest::addColumn<bool>("hdr");
+        QTest::addColumn<int>("path");
+        QTest::newRow("display") << 0 << false << int(ShadingPath::Forward);
+        QTest::newRow("display-msaa") << 4 << false << int(ShadingPath::Forward);
+        QTest::newRow("hdr-msaa") << 4 << true << int(ShadingPath::Forward);
+        QTest::newRow("deferred") << 0 << false << int(ShadingPath::Deferred);
+    }
+
+    void gridIsHiddenByTheModel() {
+        if (!startGl()) QSKIP("needs an X display with OpenGL: run under xvfb-run -a");
+        QFETCH(int, msaa);
+        QFETCH(bool, hdr);
+        QFETCH(int, path);
+        QString error;
+        QVERIFY(m_gl->setModel(sphereScene(), &error));
+        m_gl->setRig(rigOf({point({0.5, 2.0, 1.0}, FalloffModel::None)}));
+        ViewCamera top;
+        top.eye = {0.0, 4.0, 0.0};
+        top.target = {0.0, 0.0, 0.0};
+        top.up = {0.0, 0.0, -1.0};
+        top.yfovDeg = 45.0;
+        const QSize size(160, 120);
+        RenderSettings s;
+        s.msaaSamples = msaa;
+        s.hdrTarget = hdr;
+        s.shadingPath = ShadingPath(path);
+        const QImage without = m_gl->renderImage(top, size, s, 1, &error);
+        s.showGrid = true;
+        const QImage with = m_gl->renderImage(top, size, s, 1, &error);
+        GBuffer g;
+        QVERIFY2(!without.isNull() && !with.isNull() && m_gl->renderGBuffer(top, size, s, &g, &error),
+                 qPrintable(error));
+        const auto covered = [&](int x, int y) {
+            return x >= 0 && y >= 0 && x < size.width() && y < size.height() && g.position.at(x, y).w > 0.5f;
+        };
+        int inside = 0, changedInside = 0, gridOutside = 0;
+        for (int y = 0; y < size.height(); ++y) {
+            for (int x = 0; x < size.width(); ++x) {
+                const bool changed = with.pixel(x, y) != without.pixel(x, y);
+                bool interior = true; // the silhouette's edge pixels mix model and ground under MSAA
+                for (int dy = -1; dy <= 1; ++dy)
+                    for (int dx = -1; dx <= 1; ++dx)
+                        interior = interior && covered(x + dx, y + dy);
+                if (interior) {
+                    ++inside;
+                    changedInside += changed;
+                } else if (!covered(x, y)) {
+                    gridOutside += changed;
+                }
+            }
+        }
+        QVERIFY2(inside > 2000, qPrintable(QString::number(inside)));
+        QVERIFY2(gridOutside > 200, qPrintable(QString::number(gridOutside))); // the grid is drawn around it
+        QCOMPARE(changedInside, 0);
+    }
+
+    // The grid fades with distance (as Blender's): seen obliquely, its far edge is much fainter than its
+    // near edge (without the fade both are drawn alike).
+    void gridFadesWithDistance() {
+        if (!startGl()) QSKIP("needs an X display with OpenGL: run under xvfb-run -a");
+        QString error;
+        QVERIFY(m_gl->setModel(nullptr, &error)); // the grid alone: under the unit sphere's bounds
+        m_gl->setRig(Rig());
+        ViewCamera cam;
+        cam.eye = {0.0, 1.0, 4.0};
+        cam.target = {0.0, -0.577, 0.0};
+        cam.yfovDeg = 45.0;
+        const QSize size(200, 240);
+        RenderSettings s;
+        s.msaaSamples = 0;
+        const QImage without = m_gl->renderImage(cam, size, s, 1, &error);
+        s.showGrid = true;
+        const QImage with = m_gl->renderImage(cam, size, s, 1, &error);
+        QVERIFY2(!without.isNull() && !with.isNull(), qPrintable(error));
+        // The rows of the grid's near (z = +1.5) and far (z = -1.5) edges.
+        const ViewCamera e = m_gl->renderer().effectiveCamera(cam);
+        const Bounds b = m_gl->renderer().bounds();
+        const auto row = [&](double z) {
+            const glm::dvec4 p = e.projection(double(size.width()) / size.height()) * e.view() *
+                                 glm::dvec4(0.0, b.min.y, z, 1.0);
+            return int((0.5 - 0.5 * p.y / p.w) * size.height());
+        };
+        const int nearRow = row(1.45), farRow = row(-1.45);
+        QVERIFY2(farRow + 10 < nearRow && farRow >= 0 && nearRow < size.height(),
+                 qPrintable(QStringLiteral("%1 %2").arg(farRow).arg(nearRow)));
+        const auto strongest = [&](int y0, int y1) {
+            int m = 0;
+            for (int y = y0; y <= y1; ++y)
+                for (int x = 0; x < size.width(); ++x)
+                    m = std::max(m, std::abs(qGreen(with.pixel(x, y)) - qGreen(without.pixel(x, y))));
+            return m;
+        };
+        const int nearLevels = strongest(nearRow - 4, nearRow + 2),
+                  farLevels = strongest(farRow - 2, farRow + 2);
+        QVERIFY2(nearLevels > 40, qPrintable(QString::number(nearLevels)));
+        QVERIFY2(farLevels * 4 < nearLevels,
+                 qPrintable(QStringLiteral("far %1, near %2").arg(farLevels).arg(nearLevels)));
+    }
 };
 
 LR_GL_TEST_MAIN(TestRenderPasses)
