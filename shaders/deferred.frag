@@ -2,10 +2,10 @@
 // covered pixels run. Every covered pixel is shaded once with whole 4x4 blocks of work, where the forward
 // pass would shade the partial blocks of every small triangle (a software rasteriser's main waste).
 // Same Surface values (RGBA32F, exact), same shadeSurface(): the same radiance as the forward path.
-uniform sampler2D uGBuffer0;  // position.xyz, shininess
-uniform sampler2D uGBuffer1;  // normal.xyz, emissive.r
-uniform sampler2D uGBuffer2;  // albedo.rgb, emissive.g
-uniform sampler2D uGBuffer3;  // specular.rgb, emissive.b
+uniform sampler2D uGBuffer0;  // decodeGBuffer's g0 .. g3 (gbuffer.glsl, generated from src/render/gbuffer.h)
+uniform sampler2D uGBuffer1;
+uniform sampler2D uGBuffer2;
+uniform sampler2D uGBuffer3;
 uniform vec3 uAmbient;
 uniform float uDistanceScale;
 #ifdef LR_OUTPUT_DISPLAY
@@ -17,17 +17,8 @@ out vec4 oColor;
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
-    vec4 g0 = texelFetch(uGBuffer0, p, 0);
-    vec4 g1 = texelFetch(uGBuffer1, p, 0);
-    vec4 g2 = texelFetch(uGBuffer2, p, 0);
-    vec4 g3 = texelFetch(uGBuffer3, p, 0);
-    Surface s;
-    s.position = g0.xyz;
-    s.shininess = g0.w;
-    s.normal = g1.xyz;
-    s.albedo = g2.rgb;
-    s.specular = g3.rgb;
-    s.emissive = vec3(g1.w, g2.w, g3.w);
+    Surface s = decodeGBuffer(texelFetch(uGBuffer0, p, 0), texelFetch(uGBuffer1, p, 0),
+                              texelFetch(uGBuffer2, p, 0), texelFetch(uGBuffer3, p, 0));
     ShadeSettings st;
     st.ambient = uAmbient;
     st.distanceScale = uDistanceScale;

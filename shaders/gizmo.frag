@@ -1,12 +1,16 @@
 // Gizmo fragments: parts hidden by the model (scene depth) are drawn faint, not dropped, so a light
 // behind the model can still be found and picked. Point sprites draw the light icons:
 // shape 0 point (disc), 1 spot (disc with a ring), 2 directional (sun with rays), 3 rim (hollow ring);
-// +8: selected (white outline).
+// +8: selected (white outline). Lines of shape 16 (kGridShape, gizmos.h) are the ground grid: hidden parts
+// are dropped (the model occludes its ground) and the grid fades out with distance from the eye between
+// uGridFade.x and uGridFade.y, as Blender's does.
 uniform sampler2D uSceneDepth;
 uniform bool uHasDepth;
 uniform bool uPoints;
+uniform vec2 uGridFade;
 
 in vec4 vColor;
+in float vDistance;
 flat in int vShape;
 
 out vec4 oColor;
@@ -34,9 +38,14 @@ void main() {
         else if (r > 0.8) c = selected ? vec4(1.0, 1.0, 1.0, 1.0) : vec4(0.0, 0.0, 0.0, 0.85);
         else c = vec4(0.0, 0.0, 0.0, 0.35);
     }
+    bool grid = !uPoints && vShape == 16;
     if (uHasDepth) {
         float sceneDepth = texelFetch(uSceneDepth, ivec2(gl_FragCoord.xy), 0).r;
-        if (gl_FragCoord.z > sceneDepth + 1e-6) c.a *= 0.3;
+        if (gl_FragCoord.z > sceneDepth + 1e-6) {
+            if (grid) discard;
+            c.a *= 0.3;
+        }
     }
+    if (grid) c.a *= 1.0 - smoothstep(uGridFade.x, uGridFade.y, vDistance);
     oColor = c;
 }

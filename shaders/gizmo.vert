@@ -7,10 +7,12 @@ layout(location = 2) in vec2 aPoint;     // point sprites: size in pixels, shape
 uniform mat4 uProjection;
 
 out vec4 vColor;
+out float vDistance;  // from the eye
 flat out int vShape;
 
 void main() {
     gl_Position = uProjection * vec4(aPosition, 1.0);
+    vDistance = length(aPosition);
     gl_PointSize = aPoint.x;
     vColor = aColor;
     vShape = int(aPoint.y + 0.5);

@@ -2,7 +2,8 @@
 //   LR_OUTPUT_DISPLAY: shades it with every uploaded light and applies exposure, tone map and sRGB
 //     encoding right here (exactly what tonemap.frag does to a float target, without the extra pass);
 //   LR_OUTPUT_RADIANCE: writes the linear HDR radiance (alpha = coverage) for the tone-map pass;
-//   LR_OUTPUT_GBUFFER: writes the Surface (src/render/targets.h layout) for the deferred lighting pass
+//   LR_OUTPUT_GBUFFER: writes the Surface (encodeGBuffer: the codec of src/render/gbuffer.h) for the
+//     deferred lighting pass
 //     (deferred.frag) and for the CPU double-precision reference.
 in vec3 vPosition;
 in vec3 vNormal;
@@ -38,10 +39,10 @@ uniform sampler2D uEmissiveTex;  // sRGB
 #endif
 
 #ifdef LR_OUTPUT_GBUFFER
-layout(location = 0) out vec4 oGBuffer0;  // view-space position.xyz, shininess
-layout(location = 1) out vec4 oGBuffer1;  // unit normal as shaded, emissive.r
-layout(location = 2) out vec4 oGBuffer2;  // albedo.rgb, emissive.g
-layout(location = 3) out vec4 oGBuffer3;  // specular (ks).rgb, emissive.b
+layout(location = 0) out vec4 oGBuffer0;  // encodeGBuffer's g0 .. g3 (gbuffer.glsl)
+layout(location = 1) out vec4 oGBuffer1;
+layout(location = 2) out vec4 oGBuffer2;
+layout(location = 3) out vec4 oGBuffer3;
 #elif defined(LR_OUTPUT_DISPLAY)
 uniform float uExposureScale;  // 2^EV
 uniform int uToneMap;
@@ -88,10 +89,12 @@ Surface surfaceHere() {
 void main() {
     Surface s = surfaceHere();
 #ifdef LR_OUTPUT_GBUFFER
-    oGBuffer0 = vec4(s.position, s.shininess);
-    oGBuffer1 = vec4(s.normal, s.emissive.r);
-    oGBuffer2 = vec4(s.albedo, s.emissive.g);
-    oGBuffer3 = vec4(s.specular, s.emissive.b);
+    vec4 g0, g1, g2, g3;
+    encodeGBuffer(s, g0, g1, g2, g3);
+    oGBuffer0 = g0;
+    oGBuffer1 = g1;
+    oGBuffer2 = g2;
+    oGBuffer3 = g3;
 #else
     ShadeSettings st;
     st.ambient = uAmbient;

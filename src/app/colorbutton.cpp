@@ -1,6 +1,6 @@
 #include "colorbutton.h"
 
-#include "core/lighting.h"
+#include "core/colour.h"
 
 #include <QColorDialog>
 #include <QPainter>
@@ -35,14 +35,14 @@ QColor ColorButton::toDisplay(const glm::dvec3& linear) {
     const double s = hdrScale(linear);
     auto channel = [s](double v) {
         const double x = std::isfinite(v) ? std::clamp(v / s, 0.0, 1.0) : 0.0;
-        return int(std::lround(lighting::linearToSrgb(x) * 255.0));
+        return int(std::lround(colour::linearToSrgb(x) * 255.0));
     };
     return QColor(channel(linear.r), channel(linear.g), channel(linear.b));
 }
 
 glm::dvec3 ColorButton::fromDisplay(const QColor& srgb, double scale) {
-    return glm::dvec3(lighting::srgbToLinear(srgb.redF()), lighting::srgbToLinear(srgb.greenF()),
-                      lighting::srgbToLinear(srgb.blueF())) *
+    return glm::dvec3(colour::srgbToLinear(srgb.redF()), colour::srgbToLinear(srgb.greenF()),
+                      colour::srgbToLinear(srgb.blueF())) *
            scale;
 }
 

@@ -8,6 +8,7 @@
 // branch, pow/acos get arguments inside their domains, and normalising a zero vector returns a fallback.
 #pragma once
 
+#include "colour.h"
 #include "types.h"
 
 #include <algorithm>
@@ -166,31 +167,10 @@ template <typename T> T rimTerm(Vec3<T> direction, Vec3<T> N, Vec3<T> V, T expon
     return safePow(p1 * p2, exponent);
 }
 
-// ---- tone mapping and output encoding ----
+// ---- tone mapping and output encoding: core/colour.h, here under their lighting:: names ----
 
-template <typename T> T toneMap(ToneMap op, T x) {
-    if (!(x > T(0))) return T(0);
-    switch (op) {
-    case ToneMap::Clamp:
-        return saturate(x);
-    case ToneMap::Reinhard:
-        return x < std::numeric_limits<T>::max() ? x / (T(1) + x) : T(1);
-    case ToneMap::Aces: { // Narkowicz 2015 fit
-        if (!(x < T(1e6))) return T(1);
-        return saturate((x * (T(2.51) * x + T(0.03))) / (x * (T(2.43) * x + T(0.59)) + T(0.14)));
-    }
-    }
-    return T(0);
-}
-
-template <typename T> T linearToSrgb(T x) {
-    x = saturate(x);
-    return x <= T(0.0031308) ? T(12.92) * x : T(1.055) * std::pow(x, T(1) / T(2.4)) - T(0.055);
-}
-
-template <typename T> T srgbToLinear(T x) {
-    x = saturate(x);
-    return x <= T(0.04045) ? x / T(12.92) : std::pow((x + T(0.055)) / T(1.055), T(2.4));
-}
+using colour::linearToSrgb;
+using colour::srgbToLinear;
+using colour::toneMap;
 
 } // namespace lr::lighting

@@ -103,9 +103,9 @@ glm::dvec3 temperatureToRgb(double kelvin) {
         g = 288.1221695283 * std::pow(t - 60.0, -0.0755148492);
         b = 255.0;
     }
-    glm::dvec3 c(lighting::srgbToLinear(std::clamp(r, 0.0, 255.0) / 255.0),
-                 lighting::srgbToLinear(std::clamp(g, 0.0, 255.0) / 255.0),
-                 lighting::srgbToLinear(std::clamp(b, 0.0, 255.0) / 255.0));
+    glm::dvec3 c(colour::srgbToLinear(std::clamp(r, 0.0, 255.0) / 255.0),
+                 colour::srgbToLinear(std::clamp(g, 0.0, 255.0) / 255.0),
+                 colour::srgbToLinear(std::clamp(b, 0.0, 255.0) / 255.0));
     const double m = std::max({c.x, c.y, c.z});
     return m > 0.0 ? c / m : glm::dvec3(1.0);
 }

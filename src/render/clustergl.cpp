@@ -1,5 +1,7 @@
 #include "clustergl.h"
 
+#include "textureunits.h"
+
 namespace lr::render {
 
 namespace {
@@ -26,18 +28,18 @@ void ClusterBuffers::upload(QOpenGLFunctions_3_3_Core* gl, const ClusterData& da
         gl->glGenTextures(1, &m_rangeTexture);
         gl->glGenTextures(1, &m_indexTexture);
     }
-    gl->glActiveTexture(GL_TEXTURE0 + kRangesUnit);
+    gl->glActiveTexture(textureUnit(TextureUnit::ClusterRanges));
     fill(gl, m_rangeBuffer, m_rangeTexture, GL_RG32UI, data.ranges);
-    gl->glActiveTexture(GL_TEXTURE0 + kIndicesUnit);
+    gl->glActiveTexture(textureUnit(TextureUnit::ClusterIndices));
     fill(gl, m_indexBuffer, m_indexTexture, GL_R32UI, data.indices);
     gl->glBindBuffer(GL_TEXTURE_BUFFER, 0);
     gl->glActiveTexture(GL_TEXTURE0);
 }
 
 void ClusterBuffers::bind(QOpenGLFunctions_3_3_Core* gl) const {
-    gl->glActiveTexture(GL_TEXTURE0 + kRangesUnit);
+    gl->glActiveTexture(textureUnit(TextureUnit::ClusterRanges));
     gl->glBindTexture(GL_TEXTURE_BUFFER, m_rangeTexture);
-    gl->glActiveTexture(GL_TEXTURE0 + kIndicesUnit);
+    gl->glActiveTexture(textureUnit(TextureUnit::ClusterIndices));
     gl->glBindTexture(GL_TEXTURE_BUFFER, m_indexTexture);
     gl->glActiveTexture(GL_TEXTURE0);
 }

@@ -10,10 +10,8 @@ namespace lr::render {
 
 class ClusterBuffers {
   public:
-    static constexpr GLuint kRangesUnit = 8, kIndicesUnit = 9; // texture units (lights: 3, G-buffer: 4..7)
-
     void upload(QOpenGLFunctions_3_3_Core* gl, const ClusterData& data);
-    void bind(QOpenGLFunctions_3_3_Core* gl) const; // to kRangesUnit / kIndicesUnit; leaves unit 0 active
+    void bind(QOpenGLFunctions_3_3_Core* gl) const; // to TextureUnit::ClusterRanges / ClusterIndices
     void release(QOpenGLFunctions_3_3_Core* gl);
     bool empty() const { return m_rangeBuffer == 0; }
 

@@ -109,7 +109,11 @@ GizmoGeometry buildGizmos(const Rig& rig, const SceneFrame& frame, const Bounds&
     GizmoGeometry out;
     Builder b{view, out, std::max(options.nearClip, 0.0)};
     const double radius = frame.radius > 0.0 && std::isfinite(frame.radius) ? frame.radius : 1.0;
-    if (options.grid) addGrid(b, bounds, radius);
+    if (options.grid) {
+        addGrid(b, bounds, radius);
+        for (GizmoVertex& v : out.lines)
+            v.point.y = kGridShape;
+    }
     if (!options.lights) return out;
     for (size_t i = 0; i < rig.lights.size(); ++i) {
         const Light& l = rig.lights[i];

@@ -1,5 +1,7 @@
 #include "mipchain.h"
 
+#include "core/colour.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -9,9 +11,7 @@ namespace lr::render {
 
 namespace {
 
-double srgbToLinear(double c) {
-    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
+using colour::srgbToLinear;
 
 constexpr int kGuessBuckets = 4096;
 

@@ -1,6 +1,6 @@
 #include "offscreen.h"
 
-#include "core/lighting.h"
+#include "core/colour.h"
 
 #include <QGuiApplication>
 #include <QOffscreenSurface>
@@ -231,7 +231,7 @@ QImage downsampleLinear(const QImage& image, int factor) {
     static const std::array<float, 256> toLinear = [] {
         std::array<float, 256> t{};
         for (int i = 0; i < 256; ++i)
-            t[size_t(i)] = float(lighting::srgbToLinear(i / 255.0));
+            t[size_t(i)] = float(colour::srgbToLinear(i / 255.0));
         return t;
     }();
     const QImage src =
@@ -240,7 +240,7 @@ QImage downsampleLinear(const QImage& image, int factor) {
     QImage out(w, h, QImage::Format_RGBA8888);
     const float n = float(factor * factor);
     auto encode = [](double v) {
-        return uchar(std::lround(std::clamp(lighting::linearToSrgb(v), 0.0, 1.0) * 255.0));
+        return uchar(std::lround(std::clamp(colour::linearToSrgb(v), 0.0, 1.0) * 255.0));
     };
     for (int y = 0; y < h; ++y) {
         uchar* o = out.scanLine(y);

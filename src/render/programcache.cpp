@@ -1,5 +1,8 @@
 #include "programcache.h"
 
+#include "gbuffer.h"
+#include "textureunits.h"
+
 #include <QFile>
 #include <QLoggingCategory>
 
@@ -7,26 +10,50 @@ Q_LOGGING_CATEGORY(lcShaders, "lightrig.render.shaders", QtInfoMsg)
 
 namespace lr::render {
 
+namespace {
+
+// Every sampler the program declares, to its unit (textureunits.h).
+void bindSamplers(QOpenGLShaderProgram* p) {
+    p->bind();
+    for (const SamplerBinding& b : kSamplerBindings) {
+        const int location = p->uniformLocation(b.uniform);
+        if (location >= 0) p->setUniformValue(location, GLint(GLuint(b.unit) + GLuint(b.offset)));
+    }
+    p->release();
+}
+
+} // namespace
+
 QByteArray ProgramCache::source(const QString& name) {
     if (auto it = m_overrides.constFind(name); it != m_overrides.constEnd()) return *it;
     if (auto it = m_sources.constFind(name); it != m_sources.constEnd()) return *it;
-    QFile f(QStringLiteral(":/shaders/") + name);
     QByteArray text;
-    if (f.open(QIODevice::ReadOnly)) text = f.readAll();
+    if (name == QLatin1String("gbuffer.glsl")) {
+        text = gbufferGlsl();
+    } else {
+        QFile f(QStringLiteral(":/shaders/") + name);
+        if (f.open(QIODevice::ReadOnly)) text = f.readAll();
+    }
     m_sources.insert(name, text);
     return text;
 }
 
+const ShaderConfig& shaderConfig(const FeatureKey& key) {
+    if (key.deferredLighting) return kDeferredLightingShader;
+    return key.quality == Quality::Fast ? kVertexLitMeshShader : kMeshShader;
+}
+
 std::unique_ptr<QOpenGLShaderProgram> ProgramCache::build(const QByteArray& prelude,
-                                                          const QStringList& vertexFiles,
-                                                          const QStringList& fragmentFiles,
-                                                          const QString& what, QString* error) {
+                                                          const ShaderConfig& config, const QString& what,
+                                                          QString* error) {
     // Each file gets a #line with its own source-string number, so a log line "2:14(3)" points at line 14
     // of the second file listed in the message.
     QStringList legend;
-    auto assemble = [&](const QStringList& files, QString* missing) {
+    auto assemble = [&](const std::array<const char*, 4>& files, QString* missing) {
         QByteArray text = prelude;
-        for (const QString& file : files) {
+        for (const char* name : files) {
+            if (!name) break;
+            const QString file = QString::fromLatin1(name);
             const QByteArray body = source(file);
             if (body.isEmpty()) *missing = file;
             const int number = int(legend.size()) + 1;
@@ -36,8 +63,8 @@ std::unique_ptr<QOpenGLShaderProgram> ProgramCache::build(const QByteArray& prel
         return text;
     };
     QString missing;
-    const QByteArray vs = assemble(vertexFiles, &missing);
-    const QByteArray fs = assemble(fragmentFiles, &missing);
+    const QByteArray vs = assemble(config.vertex, &missing);
+    const QByteArray fs = assemble(config.fragment, &missing);
     auto fail = [&](const QString& stage, const QString& log) {
         const QString message = QStringLiteral("shader %1: %2 failed (sources: %3):\n%4")
                                     .arg(what, stage, legend.join(QStringLiteral(", ")), log.trimmed());
@@ -66,18 +93,10 @@ MeshProgram* ProgramCache::meshProgram(const FeatureKey& key, QString* error) {
         return nullptr;
     }
     QString message;
-    auto program = key.deferredLighting
-                       ? build(shaderPrelude(key), {QStringLiteral("fullscreen.vert")},
-                               {QStringLiteral("lighting.glsl"), QStringLiteral("cluster.glsl"),
-                                QStringLiteral("deferred.frag")},
-                               QStringLiteral("variant [%1]").arg(key.describe()), &message)
-                       : build(shaderPrelude(key),
-                               key.quality == Quality::Fast // the fast tier lights the vertices
-                                   ? QStringList{QStringLiteral("lighting.glsl"), QStringLiteral("mesh.vert")}
-                                   : QStringList{QStringLiteral("mesh.vert")},
-                               {QStringLiteral("lighting.glsl"), QStringLiteral("cluster.glsl"),
-                                QStringLiteral("mesh.frag")},
-                               QStringLiteral("variant [%1]").arg(key.describe()), &message);
+    const ShaderConfig& config = shaderConfig(key);
+    auto program =
+        build(shaderPrelude(key), config,
+              QStringLiteral("%1 variant [%2]").arg(QLatin1String(config.name), key.describe()), &message);
     if (!program) {
         m_failed.emplace(key, message);
         if (error) *error = message;
@@ -97,27 +116,18 @@ MeshProgram* ProgramCache::meshProgram(const FeatureKey& key, QString* error) {
     mp->lightCount = p->uniformLocation("uLightCount");
     mp->exposureScale = p->uniformLocation("uExposureScale");
     mp->toneMap = p->uniformLocation("uToneMap");
-    p->bind();
-    p->setUniformValue("uBaseColorTex", 0);
-    p->setUniformValue("uNormalTex", 1);
-    p->setUniformValue("uEmissiveTex", 2);
-    p->setUniformValue("uLights", 3);
-    p->setUniformValue("uClusterRanges", 8);  // ClusterBuffers::kRangesUnit
-    p->setUniformValue("uClusterIndices", 9); // ClusterBuffers::kIndicesUnit
-    for (int i = 0; i < 4; ++i)
-        p->setUniformValue(qPrintable(QStringLiteral("uGBuffer%1").arg(i)), 4 + i);
-    p->release();
+    bindSamplers(p);
     mp->program = std::move(program);
     return m_mesh.emplace(key, std::move(mp)).first->second.get();
 }
 
-QOpenGLShaderProgram* ProgramCache::fixedProgram(const QString& vertex, const QString& fragment,
-                                                 QString* error) {
-    const QString id = vertex + QLatin1Char('+') + fragment;
+QOpenGLShaderProgram* ProgramCache::fixedProgram(const ShaderConfig& config, QString* error) {
+    const QString id = QLatin1String(config.name);
     if (auto it = m_fixed.constFind(id); it != m_fixed.constEnd()) return it->get();
-    auto program = build(basicPrelude(), {vertex}, {QStringLiteral("lighting.glsl"), fragment}, id, error);
+    auto program = build(basicPrelude(), config, id, error);
     if (!program) return nullptr;
     QOpenGLShaderProgram* p = program.get();
+    bindSamplers(p);
     m_fixed.insert(id, std::shared_ptr<QOpenGLShaderProgram>(program.release()));
     return p;
 }

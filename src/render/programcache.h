@@ -1,16 +1,44 @@
-// Compiled shader programs, one per distinct FeatureKey, plus the fixed passes (tone map, gizmos).
-// Sources are the embedded :/shaders/NAME files (overridable for tests); compile and link errors carry
-// the GLSL log. Needs the current context of the owning Renderer.
+// Compiled shader programs, one per distinct FeatureKey, plus the fixed passes (tone map, overlay).
+// Every program is a named ShaderConfig: the files of each stage, in order, after the prelude. Sources are
+// the embedded :/shaders/NAME files (overridable for tests) and the generated G-buffer codec
+// (gbuffer.glsl, gbuffer.h); compile and link errors carry the GLSL log. Sampler uniforms are bound to
+// their units once, from textureunits.h. Needs the current context of the owning Renderer.
 #pragma once
 
 #include "shadergen.h"
 
 #include <QHash>
 #include <QOpenGLShaderProgram>
+#include <array>
 #include <memory>
 #include <unordered_map>
 
 namespace lr::render {
+
+// A named shader configuration (TrenchBroom's idea): which files make each stage.
+struct ShaderConfig {
+    const char* name;
+    std::array<const char*, 4> vertex{}; // files under :/shaders/, in order; nullptr ends the list
+    std::array<const char*, 4> fragment{};
+};
+
+inline constexpr ShaderConfig kMeshShader{
+    "mesh", {"mesh.vert"}, {"lighting.glsl", "cluster.glsl", "gbuffer.glsl", "mesh.frag"}};
+// The fast tier lights the vertices.
+inline constexpr ShaderConfig kVertexLitMeshShader{
+    "mesh, vertex-lit",
+    {"lighting.glsl", "mesh.vert"},
+    {"lighting.glsl", "cluster.glsl", "gbuffer.glsl", "mesh.frag"}};
+inline constexpr ShaderConfig kDeferredLightingShader{
+    "deferred lighting",
+    {"fullscreen.vert"},
+    {"lighting.glsl", "cluster.glsl", "gbuffer.glsl", "deferred.frag"}};
+inline constexpr ShaderConfig kToneMapShader{
+    "tone map", {"fullscreen.vert"}, {"lighting.glsl", "tonemap.frag"}};
+inline constexpr ShaderConfig kOverlayShader{"overlay", {"gizmo.vert"}, {"lighting.glsl", "gizmo.frag"}};
+
+// The configuration a FeatureKey compiles with.
+const ShaderConfig& shaderConfig(const FeatureKey& key);
 
 // A mesh program and its uniform locations (looked up once).
 struct MeshProgram {
@@ -26,8 +54,8 @@ class ProgramCache {
     // The program for `key`, compiled on first request; nullptr when it failed (error says why; a failed
     // key is not retried until clear()).
     MeshProgram* meshProgram(const FeatureKey& key, QString* error);
-    // A fixed pass: vertex and fragment shader names under :/shaders/, with the basic prelude.
-    QOpenGLShaderProgram* fixedProgram(const QString& vertex, const QString& fragment, QString* error);
+    // A fixed pass (kToneMapShader, kOverlayShader), with the basic prelude; compiled once.
+    QOpenGLShaderProgram* fixedProgram(const ShaderConfig& config, QString* error);
 
     int compiledCount() const { return m_compiled; } // variants compiled since construction
     int cachedCount() const { return int(m_mesh.size()); }
@@ -39,9 +67,8 @@ class ProgramCache {
 
   private:
     QByteArray source(const QString& name);
-    std::unique_ptr<QOpenGLShaderProgram> build(const QByteArray& prelude, const QStringList& vertexFiles,
-                                                const QStringList& fragmentFiles, const QString& what,
-                                                QString* error);
+    std::unique_ptr<QOpenGLShaderProgram> build(const QByteArray& prelude, const ShaderConfig& config,
+                                                const QString& what, QString* error);
 
     std::unordered_map<FeatureKey, std::unique_ptr<MeshProgram>, FeatureKeyHash> m_mesh;
     std::unordered_map<FeatureKey, QString, FeatureKeyHash> m_failed;

@@ -1,6 +1,8 @@
 #include "reference.h"
 
+#include "core/colour.h"
 #include "core/lighting.h"
+#include "gbuffer.h"
 
 #include <QtConcurrent/QtConcurrentMap>
 #include <algorithm>
@@ -17,17 +19,12 @@ ReferenceScene makeReferenceScene(const Rig& rig, const SceneFrame& frame, const
     s.exposureEV = settings.exposureEV;
     s.toneMap = settings.toneMap;
     const QColor bg = settings.background.toRgb();
-    s.background = {lighting::srgbToLinear(bg.redF()), lighting::srgbToLinear(bg.greenF()),
-                    lighting::srgbToLinear(bg.blueF())};
+    s.background = colour::srgbToLinear(glm::dvec3(bg.redF(), bg.greenF(), bg.blueF()));
     return s;
 }
 
 glm::dvec3 encodeSrgb(const glm::dvec3& radiance, double exposureEV, ToneMap op) {
-    const double scale = std::exp2(std::clamp(exposureEV, -60.0, 60.0));
-    glm::dvec3 out;
-    for (int c = 0; c < 3; ++c)
-        out[c] = lighting::linearToSrgb(lighting::toneMap(op, radiance[c] * scale));
-    return out;
+    return colour::displayColour(radiance, colour::exposureScale(exposureEV), op);
 }
 
 std::uint8_t toLevel(double srgb01) {
@@ -65,13 +62,7 @@ void ReferenceJob::evaluateRow(int y) {
                 px[c] = toLevel(bg[c]);
             continue;
         }
-        lighting::Surface<double> s;
-        s.position = V(g.position.at(x, y));
-        s.normal = V(g.normal.at(x, y));
-        s.albedo = V(g.albedo.at(x, y));
-        s.specular = V(g.specular.at(x, y));
-        s.shininess = g.specular.at(x, y).w;
-        s.emissive = V(g.emissive.at(x, y));
+        const lighting::Surface<double> s = render::surfaceAt(g, x, y);
         const V radiance = lighting::shadeSurface<double>(s, sc.lights, sc.settings);
         m_out.radiance[i] = radiance;
         m_out.covered[i] = 1;

@@ -66,22 +66,22 @@ std::uint64_t FeatureKey::bits() const {
         shift += width;
     };
     put(rig.lightTypes, 4);
-    put(rig.falloffs, 5);
-    put(rig.cones, 3);
-    put(rig.diffuses, 2);
-    put(unsigned(rig.specular), 1);
-    put(unsigned(rig.viewer), 1);
+    put(rig.falloffs, keybits::kFalloffs);
+    put(rig.cones, keybits::kCones);
+    put(rig.diffuses, keybits::kDiffuses);
+    put(unsigned(rig.specular), keybits::kSpecular);
+    put(unsigned(rig.viewer), keybits::kViewer);
     put(rig.lightAmbient, 1);
     put(material.baseColorTexture, 1);
     put(material.normalMap, 1);
     put(material.emissiveTexture, 1);
     put(material.vertexColors, 1);
     put(material.doubleSided, 1);
-    put(unsigned(quality), 2);
-    put(unsigned(output), 2);
+    put(unsigned(quality), keybits::kQuality);
+    put(unsigned(output), keybits::kOutput);
     put(deferredLighting, 1);
     put(clustered, 1);
-    put(shininessInt, 9);
+    put(shininessInt, keybits::kShininessInt);
     return b;
 }
 

@@ -67,6 +67,21 @@ struct FeatureKeyHash {
 
 constexpr int kMaxShininessInt = 256;
 
+// Widths of FeatureKey::bits()'s fields (shadergen.cpp packs them in this order). A model or tier that
+// outgrows its field fails to compile here instead of silently aliasing two shader variants.
+namespace keybits {
+constexpr int kFalloffs = 5, kCones = 3, kDiffuses = 2, kSpecular = 1, kViewer = 1, kQuality = 2, kOutput = 2,
+              kShininessInt = 9;
+} // namespace keybits
+static_assert(enumCount<FalloffModel>() <= keybits::kFalloffs, "widen FeatureKey::bits()'s falloff field");
+static_assert(enumCount<ConeModel>() <= keybits::kCones, "widen FeatureKey::bits()'s cone field");
+static_assert(enumCount<DiffuseModel>() <= keybits::kDiffuses, "widen FeatureKey::bits()'s diffuse field");
+static_assert(enumCount<SpecularModel>() <= (1 << keybits::kSpecular));
+static_assert(enumCount<ViewerModel>() <= (1 << keybits::kViewer));
+static_assert(enumCount<Quality>() <= (1 << keybits::kQuality));
+static_assert(int(ShaderOutput::GBuffer) < (1 << keybits::kOutput));
+static_assert(kMaxShininessInt < (1 << keybits::kShininessInt));
+
 RigFeatures rigFeatures(const Rig& rig);
 // Every light type and model present (the über-shader); the rig-wide specular and viewer models stay.
 RigFeatures allRigFeatures(const RigFeatures& rig);

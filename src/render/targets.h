@@ -2,18 +2,16 @@
 // - the scene target: colour (RGBA8 display colours, or RGBA16F/RGBA32F radiance for the HDR path) and a
 //   depth texture; with MSAA, multisampled renderbuffers that resolve into it;
 // - on demand, the G-buffer: four RGBA32F textures sharing the scene's depth texture, so the deferred
-//   lighting pass (drawn into the scene target) can depth-test away the background. Layout:
-//     0: view-space position.xyz, shininess   1: normal.xyz, emissive.r
-//     2: albedo.rgb, emissive.g               3: specular (ks).rgb, emissive.b
+//   lighting pass (drawn into the scene target) can depth-test away the background. Layout: gbuffer.h.
 #pragma once
+
+#include "gbuffer.h"
 
 #include <QOpenGLFunctions_3_3_Core>
 #include <QSize>
 #include <QString>
 
 namespace lr::render {
-
-constexpr int kGBufferTargets = 4;
 
 struct Targets {
     QSize size;

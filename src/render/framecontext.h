@@ -1,0 +1,46 @@
+// One frame, computed once by Renderer before any pass runs: the camera's matrices, the target, the colour
+// path and its exposure, the shading path and whether the lights were binned into clusters. Passes read
+// it and nothing else of the frame: no pass leaves state for another except through the targets their
+// reads() and writes() declare (renderpass.h).
+#pragma once
+
+#include "camera.h"
+#include "core/shade.h"
+#include "rendersettings.h"
+
+#include <QOpenGLFunctions_3_3_Core>
+#include <QRect>
+#include <QSize>
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+namespace lr::render {
+
+// Display: exposure, tone map and sRGB per fragment into an 8-bit target. Hdr: linear radiance into a
+// float target, then the tone-map pass. Both give the same pixels without MSAA.
+enum class ColourPath { Display, Hdr };
+
+struct FrameContext {
+    const RenderSettings* settings = nullptr;
+    ViewCamera camera;                     // with its clip planes (Renderer::effectiveCamera)
+    glm::dmat4 view{1.0}, projection{1.0}; // projection of the tile when there is one
+    QSize imageSize;                       // the whole image
+    QSize targetSize;                      // what this frame renders: the tile or the image
+    ColourPath colourPath = ColourPath::Display;
+    float exposureScale = 1.0f; // colour::exposureScale(settings.exposureEV)
+    ToneMap toneMap = ToneMap::Clamp;
+    glm::vec4 clearColour{0.0f};           // what the scene target is cleared to
+    glm::vec3 backgroundLinear{0.0f};      // the tone-map pass composites over it
+    bool transparent = false;              // straight alpha, 0 where there is no model
+    lighting::ShadeSettings<double> shade; // the rig's scene-wide settings (ambient, scale)
+    bool fast = false;                     // Quality::Fast: per vertex, no MSAA, forward only
+    bool deferred = false;                 // G-pass + deferred lighting
+    bool clustered = false;                // the lights were binned for this frame
+    bool overlays = false;                 // gizmos or grid
+    int samples = 0;                       // of the scene target (> 1: MSAA)
+    bool gbufferReadBack = false;          // renderGBuffer: clear the G-buffer's colour too
+    GLuint outputFbo = 0;                  // the caller's framebuffer
+};
+
+} // namespace lr::render

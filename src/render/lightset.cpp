@@ -1,0 +1,138 @@
+#include "lightset.h"
+
+#include "lightpack.h"
+#include "programcache.h"
+#include "shadergen.h"
+#include "textureunits.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <glm/gtc/type_ptr.hpp>
+#include <limits>
+
+namespace lr::render {
+
+void LightSet::initialize(QOpenGLFunctions_3_3_Core* gl) {
+    gl->glGenBuffers(1, &m_buffer);
+    gl->glGenTextures(1, &m_texture);
+    m_capacity = 0;
+    m_dirty = true;
+}
+
+void LightSet::release(QOpenGLFunctions_3_3_Core* gl) {
+    m_clusters.release(gl);
+    gl->glDeleteBuffers(1, &m_buffer);
+    gl->glDeleteTextures(1, &m_texture);
+    m_buffer = m_texture = 0;
+    m_capacity = 0;
+    m_packed.clear();
+    m_dirty = true;
+}
+
+void LightSet::setRig(const Rig& rig) {
+    m_rig = rig;
+    m_dirty = true;
+}
+
+void LightSet::update(QOpenGLFunctions_3_3_Core* gl, const SceneFrame& frame, const glm::dmat4& view,
+                      RenderStats* stats) {
+    if (!m_dirty && view == m_uploadedView) return;
+    std::vector<float> data;
+    data.reserve(m_rig.lights.size() * 4 * kLightTexels);
+    int count = 0;
+    const double scale = prepareSettings(m_rig, frame).distanceScale;
+    m_bounds.clear();
+    m_boundedLights = 0;
+    for (const Light& l : m_rig.lights) {
+        if (!lightReaches(m_rig, frame, l, frame.center, frame.radius)) continue;
+        const lighting::ShadeLight<double> prepared = prepareLight(m_rig, frame, view, l);
+        m_bounds.push_back(lightBounds(prepared, scale));
+        m_boundedLights += m_bounds.back().bounded ? 1 : 0;
+        const LightTexels t = packLight(castLight<float>(prepared));
+        data.insert(data.end(), t.begin(), t.end());
+        ++count;
+    }
+    gl->glBindBuffer(GL_TEXTURE_BUFFER, m_buffer);
+    if (count > m_capacity || m_capacity == 0) {
+        m_capacity = std::max({count, 2 * m_capacity, 16});
+        gl->glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(m_capacity) * kLightTexels * 16, nullptr,
+                         GL_DYNAMIC_DRAW);
+        gl->glBindTexture(GL_TEXTURE_BUFFER, m_texture);
+        gl->glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, m_buffer);
+        m_packed.clear(); // the new store holds nothing yet
+    }
+    // Only the texels that changed go up: dragging one light of many sends that light's 128 bytes (a view
+    // change moves every view-space light, and then everything differs).
+    const auto same = [](float a, float b) {
+        return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b);
+    };
+    size_t first = 0, last = data.size();
+    if (m_packed.size() == data.size()) {
+        first = size_t(std::mismatch(data.begin(), data.end(), m_packed.begin(), same).first - data.begin());
+        while (last > first && same(data[last - 1], m_packed[last - 1]))
+            --last;
+    }
+    if (last > first)
+        gl->glBufferSubData(GL_TEXTURE_BUFFER, GLintptr(first * sizeof(float)),
+                            GLsizeiptr((last - first) * sizeof(float)), data.data() + first);
+    stats->lightBytesUploaded = qint64((last - first) * sizeof(float));
+    m_packed = std::move(data);
+    gl->glBindBuffer(GL_TEXTURE_BUFFER, 0);
+    m_count = count;
+    stats->lightsUploaded = count;
+    m_uploadedView = view;
+    m_dirty = false;
+}
+
+bool LightSet::cluster(QOpenGLFunctions_3_3_Core* gl, const glm::dmat4& projection, QSize target,
+                       int clusteredShading, RenderStats* stats) {
+    stats->clustered = false;
+    stats->clusterLightRefs = 0;
+    const bool wanted =
+        clusteredShading > 0 || (clusteredShading < 0 && m_boundedLights > kClusterMinBoundedLights);
+    if (!wanted) return false;
+    ClusterView cv;
+    cv.projection = projection;
+    cv.width = std::max(1, target.width());
+    cv.height = std::max(1, target.height());
+    // near and far back from the projection: P22 = -(f+n)/(f-n), P32 = -2fn/(f-n) (f infinite: P22 = -1)
+    const double p22 = projection[2][2], p32 = projection[3][2];
+    cv.znear = p32 / (p22 - 1.0);
+    cv.zfar = p22 > -1.0 ? p32 / (p22 + 1.0) : std::numeric_limits<double>::infinity();
+    if (!(cv.znear > 0.0) || !std::isfinite(cv.znear)) return false;
+    const ClusterData data = binLights(m_bounds, cv);
+    m_clusters.upload(gl, data);
+    stats->clustered = true;
+    stats->clusterLightRefs = qint64(data.indices.size());
+    m_clusterUniforms = {float(data.lookup.tileScale.x), float(data.lookup.tileScale.y),
+                         float(data.lookup.znear), float(data.lookup.sliceScale)};
+    m_clusterGlobal = data.globalCount;
+    m_clusterGrid = {data.grid.tilesX, data.grid.tilesY, data.grid.slices};
+    return true;
+}
+
+void LightSet::bind(QOpenGLFunctions_3_3_Core* gl, bool clustered) const {
+    gl->glActiveTexture(textureUnit(TextureUnit::Lights));
+    gl->glBindTexture(GL_TEXTURE_BUFFER, m_texture);
+    if (clustered) m_clusters.bind(gl);
+    gl->glActiveTexture(GL_TEXTURE0);
+}
+
+void LightSet::setUniforms(QOpenGLFunctions_3_3_Core* gl, const MeshProgram& p,
+                           const lighting::ShadeSettings<double>& shade, bool clustered) const {
+    gl->glUniform3fv(p.ambient, 1, glm::value_ptr(glm::vec3(shade.ambient)));
+    gl->glUniform1f(p.distanceScale, float(shade.distanceScale));
+    gl->glUniform1i(p.lightCount, m_count);
+    if (!clustered) return;
+    const GLuint id = p.program->programId();
+    gl->glUniform1i(gl->glGetUniformLocation(id, "uGlobalLightCount"), m_clusterGlobal);
+    gl->glUniform3i(gl->glGetUniformLocation(id, "uClusterGrid"), m_clusterGrid.x, m_clusterGrid.y,
+                    m_clusterGrid.z);
+    gl->glUniform2f(gl->glGetUniformLocation(id, "uClusterTileScale"), m_clusterUniforms.x,
+                    m_clusterUniforms.y);
+    gl->glUniform1f(gl->glGetUniformLocation(id, "uClusterNear"), m_clusterUniforms.z);
+    gl->glUniform1f(gl->glGetUniformLocation(id, "uClusterSliceScale"), m_clusterUniforms.w);
+}
+
+} // namespace lr::render

@@ -1,0 +1,64 @@
+// The GPU light set: one rig's lights prepared in view space and packed (lightpack.h) into a texture
+// buffer of kLightTexels RGBA32F texels per light, re-uploading only the texels that changed; and, per
+// frame, their clustered binning (cluster.h, clustergl.h). Separate from the GPU scene (GpuModel), so two
+// rigs can be drawn over one model. Needs the current context of the owning Renderer.
+#pragma once
+
+#include "cluster.h"
+#include "clustergl.h"
+#include "core/prepare.h"
+#include "core/rig.h"
+#include "rendersettings.h"
+
+#include <QOpenGLFunctions_3_3_Core>
+#include <QSize>
+#include <glm/mat4x4.hpp>
+#include <vector>
+
+namespace lr::render {
+
+struct MeshProgram;
+
+class LightSet {
+  public:
+    void initialize(QOpenGLFunctions_3_3_Core* gl);
+    void release(QOpenGLFunctions_3_3_Core* gl);
+
+    void setRig(const Rig& rig); // cheap: uploaded by the next update()
+    const Rig& rig() const { return m_rig; }
+    void invalidate() { m_dirty = true; } // the scene frame changed (a new model)
+
+    // Prepares and uploads every enabled light that can reach the scene, for `view`, when the rig or the
+    // view changed since the last upload. Sets stats->lightsUploaded and lightBytesUploaded.
+    void update(QOpenGLFunctions_3_3_Core* gl, const SceneFrame& frame, const glm::dmat4& view,
+                RenderStats* stats);
+    int count() const { return m_count; }
+
+    // Bins the uploaded lights for this projection and target; false when clustering is off for this
+    // frame (settings, too few bounded lights, or a projection without a usable near plane).
+    bool cluster(QOpenGLFunctions_3_3_Core* gl, const glm::dmat4& projection, QSize target,
+                 int clusteredShading, RenderStats* stats);
+
+    // Binds the light buffer (TextureUnit::Lights) and, when clustered, the cluster lists.
+    void bind(QOpenGLFunctions_3_3_Core* gl, bool clustered) const;
+    // The bound program's light uniforms: scene ambient, distance scale, light count, cluster grid.
+    void setUniforms(QOpenGLFunctions_3_3_Core* gl, const MeshProgram& p,
+                     const lighting::ShadeSettings<double>& shade, bool clustered) const;
+
+  private:
+    Rig m_rig;
+    bool m_dirty = true;
+    glm::dmat4 m_uploadedView{0.0};
+    int m_count = 0;
+    GLuint m_buffer = 0, m_texture = 0;
+    std::vector<float> m_packed;       // what the buffer holds, to upload only what changed
+    int m_capacity = 0;                // lights the buffer holds
+    std::vector<LightBounds> m_bounds; // per uploaded light, view space
+    int m_boundedLights = 0;
+    ClusterBuffers m_clusters;
+    glm::vec4 m_clusterUniforms{0.0f}; // tile scale x, y, near, slice scale
+    glm::ivec3 m_clusterGrid{0};
+    int m_clusterGlobal = 0;
+};
+
+} // namespace lr::render

@@ -1,0 +1,148 @@
+// The geometry pass: the model's draws grouped by shader variant, into the G-buffer or shaded.
+#include "gpumodel.h"
+#include "lightset.h"
+#include "passes.h"
+#include "programcache.h"
+#include "shadergen.h"
+#include "targets.h"
+#include "textureunits.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/ext/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/mat3x3.hpp>
+
+namespace lr::render {
+
+const char* GeometryPass::name() const {
+    return m_output == Output::GBuffer ? "geometry (G-buffer)" : "geometry (shaded)";
+}
+
+PassResources GeometryPass::reads() const {
+    return m_output == Output::GBuffer ? PassResources(0)
+                                       : PassResources(resource::Lights | resource::Clusters);
+}
+
+PassResources GeometryPass::writes() const {
+    return m_output == Output::GBuffer ? PassResources(resource::GBuffer | resource::SceneDepth)
+                                       : PassResources(resource::SceneColor | resource::SceneDepth);
+}
+
+bool GeometryPass::run(const FrameContext& frame, PassScene& scene) {
+    const bool gpass = m_output == Output::GBuffer;
+    const Targets& targets = *scene.targets;
+    glViewport(0, 0, frame.targetSize.width(), frame.targetSize.height());
+    if (gpass) {
+        // The G-buffer's colour needs no clear for the lighting pass (it reads only pixels a surface was
+        // drawn on); a read-back reads every pixel.
+        glBindFramebuffer(GL_FRAMEBUFFER, targets.gbufferFbo);
+        if (frame.gbufferReadBack) glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+        glClear(GL_DEPTH_BUFFER_BIT | (frame.gbufferReadBack ? GL_COLOR_BUFFER_BIT : 0));
+    } else {
+        glBindFramebuffer(GL_FRAMEBUFFER, targets.drawFbo());
+        glClearColor(frame.clearColour.r, frame.clearColour.g, frame.clearColour.b, frame.clearColour.a);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    }
+    const ShaderOutput output = gpass                                 ? ShaderOutput::GBuffer
+                                : frame.colourPath == ColourPath::Hdr ? ShaderOutput::Radiance
+                                                                      : ShaderOutput::Display;
+    const RenderSettings& settings = *frame.settings;
+    const Rig& rig = *scene.rig;
+    const Model* model = scene.model->model();
+    scene.stats->drawCalls = 0;
+    scene.stats->trianglesDrawn = 0;
+    if (!model || scene.model->draws().empty()) return true;
+    const glm::dmat4 modelView = frame.view * glm::translate(glm::dmat4(1.0), model->origin);
+    const glm::mat4 mv(modelView), proj(frame.projection);
+    const glm::mat3 normalMatrix(glm::transpose(glm::inverse(glm::dmat3(modelView))));
+    const RigFeatures rigUses = rigFeatures(rig);
+    // Fast lights the vertices, each with every light: clusters (per fragment) do not apply.
+    const bool clustered = !gpass && frame.clustered;
+    const bool useProxies = settings.interactive && scene.mutableModel->updateProxies(this);
+    const RigFeatures shaded = settings.forceAllFeatures ? allRigFeatures(rigUses) : rigUses;
+
+    // Group the draws by program so each variant is bound once per frame.
+    std::vector<std::pair<FeatureKey, const GpuDraw*>> order;
+    order.reserve(scene.model->draws().size());
+    for (const GpuDraw& d : scene.model->draws()) {
+        FeatureKey key;
+        if (!gpass) key.rig = shaded; // the G-pass does no lighting
+        key.material = d.features;
+        key.quality = gpass ? Quality::Exact : settings.quality; // the G-buffer is the exact surface
+        if (key.quality == Quality::Balanced) { // B2: an integer shininess becomes a chain of products
+            const Material& m = d.material >= 0 ? model->materials[size_t(d.material)] : Material();
+            const double n = m.shininess >= 0.0f ? double(m.shininess) : rig.shading.shininess;
+            if (n >= 1.0 && n <= kMaxShininessInt && n == std::floor(n)) key.shininessInt = std::uint16_t(n);
+        }
+        key.output = output;
+        key.clustered = clustered;
+        order.emplace_back(key, &d);
+    }
+    std::stable_sort(order.begin(), order.end(),
+                     [](const auto& a, const auto& b) { return a.first.bits() < b.first.bits(); });
+
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    glFrontFace(GL_CCW);
+    glCullFace(GL_BACK);
+    scene.lights->bind(this, clustered);
+    bool ok = true;
+    MeshProgram* current = nullptr;
+    const Material defaultMaterial;
+    for (const auto& [key, d] : order) {
+        QString error;
+        MeshProgram* p = scene.programs->meshProgram(key, &error);
+        if (!p) {
+            ok = fail(scene, error);
+            continue;
+        }
+        if (p != current) {
+            current = p;
+            p->program->bind();
+            glUniformMatrix4fv(p->modelView, 1, GL_FALSE, glm::value_ptr(mv));
+            glUniformMatrix3fv(p->normalMatrix, 1, GL_FALSE, glm::value_ptr(normalMatrix));
+            glUniformMatrix4fv(p->projection, 1, GL_FALSE, glm::value_ptr(proj));
+            scene.lights->setUniforms(this, *p, frame.shade, clustered);
+            if (p->exposureScale >= 0) glUniform1f(p->exposureScale, frame.exposureScale);
+            if (p->toneMap >= 0) glUniform1i(p->toneMap, int(frame.toneMap));
+        }
+        const Material& m = d->material >= 0 ? model->materials[size_t(d->material)] : defaultMaterial;
+        glUniform4fv(p->baseColor, 1, glm::value_ptr(m.baseColor));
+        glUniform3fv(p->emissive, 1, glm::value_ptr(m.emissive));
+        glUniform3fv(p->specular, 1, glm::value_ptr(m.specular));
+        glUniform1f(p->shininess, m.shininess >= 0.0f ? m.shininess : float(rig.shading.shininess));
+        const GLuint textures[kMaterialTextureUnits] = {d->baseColorTexture, d->normalTexture,
+                                                        d->emissiveTexture};
+        const GLuint sampler = key.quality == Quality::Fast ? scene.fastSampler : 0;
+        for (int i = 0; i < kMaterialTextureUnits; ++i) {
+            if (!textures[i]) continue;
+            const GLuint unit = GLuint(TextureUnit::BaseColor) + GLuint(i);
+            glActiveTexture(GL_TEXTURE0 + unit);
+            glBindTexture(GL_TEXTURE_2D, textures[i]);
+            glBindSampler(unit, sampler);
+        }
+        if (settings.cullBackFaces && !d->features.doubleSided)
+            glEnable(GL_CULL_FACE);
+        else
+            glDisable(GL_CULL_FACE);
+        const bool proxy = useProxies && d->lodVao;
+        glBindVertexArray(proxy ? d->lodVao : d->vao);
+        const GLsizei indices = proxy ? d->lodIndexCount : d->indexCount;
+        glDrawElements(GL_TRIANGLES, indices, GL_UNSIGNED_INT, nullptr);
+        scene.stats->trianglesDrawn += indices / 3;
+        ++scene.stats->drawCalls;
+    }
+    glBindVertexArray(0);
+    for (int i = 0; i < kMaterialTextureUnits; ++i)
+        glBindSampler(GLuint(TextureUnit::BaseColor) + GLuint(i), 0);
+    glDisable(GL_CULL_FACE);
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+    glActiveTexture(GL_TEXTURE0);
+    return ok;
+}
+
+} // namespace lr::render

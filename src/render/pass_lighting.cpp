@@ -1,0 +1,89 @@
+// The deferred lighting pass: the G-buffer's surfaces shaded once per covered pixel.
+#include "gpumodel.h"
+#include "lightset.h"
+#include "passes.h"
+#include "programcache.h"
+#include "shadergen.h"
+#include "targets.h"
+#include "textureunits.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lr::render {
+
+namespace {
+
+// The pixels of a `size` target that the box can cover under `viewProjection` (conservative; the whole
+// target when a corner is behind the eye).
+QRect screenBounds(const Bounds& box, const glm::dmat4& viewProjection, QSize size) {
+    double x0 = 1, y0 = 1, x1 = -1, y1 = -1;
+    for (int i = 0; i < 8; ++i) {
+        const glm::dvec3 c((i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
+                           (i & 4) ? box.max.z : box.min.z);
+        const glm::dvec4 p = viewProjection * glm::dvec4(c, 1.0);
+        if (!(p.w > 1e-12)) return QRect(QPoint(0, 0), size);
+        x0 = std::min(x0, p.x / p.w), x1 = std::max(x1, p.x / p.w);
+        y0 = std::min(y0, p.y / p.w), y1 = std::max(y1, p.y / p.w);
+    }
+    const auto px = [&](double ndc, int extent) {
+        return std::clamp((ndc * 0.5 + 0.5) * extent, 0.0, double(extent));
+    };
+    const int left = int(std::floor(px(x0, size.width()))) - 1,
+              right = int(std::ceil(px(x1, size.width()))) + 1;
+    const int bottom = int(std::floor(px(y0, size.height()))) - 1,
+              top = int(std::ceil(px(y1, size.height()))) + 1;
+    return QRect(QPoint(0, 0), size).intersected(QRect(left, bottom, right - left, top - bottom)); // GL rows
+}
+
+} // namespace
+
+bool DeferredLightingPass::run(const FrameContext& frame, PassScene& scene) {
+    const Targets& targets = *scene.targets;
+    glBindFramebuffer(GL_FRAMEBUFFER, targets.fbo);
+    glViewport(0, 0, frame.targetSize.width(), frame.targetSize.height());
+    glClearColor(frame.clearColour.r, frame.clearColour.g, frame.clearColour.b, frame.clearColour.a);
+    glClear(GL_COLOR_BUFFER_BIT);
+    const Model* model = scene.model->model();
+    if (!model) return true;
+    const RenderSettings& settings = *frame.settings;
+    FeatureKey key;
+    key.rig = settings.forceAllFeatures ? allRigFeatures(rigFeatures(*scene.rig)) : rigFeatures(*scene.rig);
+    key.quality = settings.quality; // never Fast: the fast tier is always forward
+    key.output = frame.colourPath == ColourPath::Hdr ? ShaderOutput::Radiance : ShaderOutput::Display;
+    key.deferredLighting = true;
+    key.clustered = frame.clustered;
+    QString error;
+    MeshProgram* p = scene.programs->meshProgram(key, &error);
+    if (!p) return fail(scene, error);
+    p->program->bind();
+    scene.lights->setUniforms(this, *p, frame.shade, key.clustered);
+    if (p->exposureScale >= 0) glUniform1f(p->exposureScale, frame.exposureScale);
+    if (p->toneMap >= 0) glUniform1i(p->toneMap, int(frame.toneMap));
+    scene.lights->bind(this, key.clustered);
+    for (int i = 0; i < kGBufferTargets; ++i) {
+        glActiveTexture(textureUnit(TextureUnit::GBuffer0, i));
+        glBindTexture(GL_TEXTURE_2D, targets.gbuffer[i]);
+    }
+    glActiveTexture(GL_TEXTURE0);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_GREATER); // the triangle lies on the far plane: passes where a surface was drawn
+    glDepthMask(GL_FALSE);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_BLEND);
+    // Only the model's screen rectangle: a software rasteriser runs the shader for background blocks too,
+    // even where the depth test rejects every pixel.
+    const QRect scissor = screenBounds(model->bounds, frame.projection * frame.view, frame.targetSize);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(scissor.x(), scissor.y(), scissor.width(), scissor.height());
+    glBindVertexArray(scene.emptyVao);
+    if (!scissor.isEmpty()) glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    glDisable(GL_SCISSOR_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    p->program->release();
+    return true;
+}
+
+} // namespace lr::render

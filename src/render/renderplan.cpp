@@ -1,0 +1,90 @@
+#include "renderplan.h"
+
+#include <QLoggingCategory>
+#include <QStringList>
+
+Q_LOGGING_CATEGORY(lcPlan, "lightrig.render.plan", QtInfoMsg)
+
+namespace lr::render {
+
+QString describeResources(PassResources r) {
+    static const char* const names[] = {"lights",      "clusters", "g-buffer", "scene-color",
+                                        "scene-depth", "resolved", "output"};
+    QStringList out;
+    for (int i = 0; i < int(std::size(names)); ++i)
+        if (r & (1u << i)) out << QLatin1String(names[i]);
+    return out.join(QLatin1Char('+'));
+}
+
+RenderPlan::RenderPlan() = default;
+RenderPlan::~RenderPlan() = default;
+
+bool RenderPlan::initialize() {
+    for (RenderPass* p : std::initializer_list<RenderPass*>{&m_gbuffer, &m_shaded, &m_lighting, &m_resolve,
+                                                            &m_present, &m_toneMap, &m_overlay})
+        if (!p->initialize()) return false;
+    return true;
+}
+
+void RenderPlan::release() {
+    for (RenderPass* p : std::initializer_list<RenderPass*>{&m_gbuffer, &m_shaded, &m_lighting, &m_resolve,
+                                                            &m_present, &m_toneMap, &m_overlay})
+        p->release();
+    m_passes.clear();
+    m_hasKey = false;
+}
+
+const std::vector<RenderPass*>& RenderPlan::select(const PlanKey& key) {
+    if (m_hasKey && key == m_key) return m_passes;
+    m_key = key;
+    m_hasKey = true;
+    ++m_builds;
+    m_passes.clear();
+    // A shadow pass goes first (it writes shadow maps the geometry or lighting pass reads).
+    if (key.deferred) {
+        m_passes.push_back(&m_gbuffer);
+        m_passes.push_back(&m_lighting);
+    } else {
+        m_passes.push_back(&m_shaded);
+    }
+    // An environment pass (sky behind the model) goes here: after the surfaces, depth-tested against the
+    // scene depth, before the resolve.
+    if (key.msaa && (key.hdr || key.overlays)) m_passes.push_back(&m_resolve);
+    m_passes.push_back(key.hdr ? static_cast<RenderPass*>(&m_toneMap) : &m_present);
+    if (key.overlays) m_passes.push_back(&m_overlay);
+    const QString problem = check(m_passes, key.msaa);
+    if (!problem.isEmpty()) qCWarning(lcPlan).noquote() << "render plan" << describe() << ":" << problem;
+    qCDebug(lcPlan).noquote() << "render plan:" << describe();
+    return m_passes;
+}
+
+bool RenderPlan::run(const FrameContext& frame, PassScene& scene) {
+    bool ok = true;
+    for (RenderPass* p : m_passes)
+        ok = p->run(frame, scene) && ok;
+    return ok;
+}
+
+QString RenderPlan::describe() const {
+    QStringList names;
+    for (const RenderPass* p : m_passes)
+        names << QLatin1String(p->name());
+    return names.join(QStringLiteral(" > "));
+}
+
+QString RenderPlan::check(const std::vector<RenderPass*>& passes, bool msaa) {
+    PassResources available = resource::Lights | resource::Clusters;
+    QStringList problems;
+    for (const RenderPass* p : passes) {
+        if (const PassResources missing = p->reads() & ~available)
+            problems << QStringLiteral("%1 reads %2 before anything writes it")
+                            .arg(QLatin1String(p->name()), describeResources(missing));
+        available |= p->writes();
+        // A single-sample scene target is its own resolve.
+        if (!msaa && (available & resource::SceneColor)) available |= resource::Resolved;
+    }
+    if (!(available & resource::Output)) problems << QStringLiteral("nothing writes the output");
+    return problems.join(QStringLiteral("; "));
+}
+
+} // namespace lr::render

@@ -1,0 +1,76 @@
+// What a frame is asked to be (RenderSettings, compared to decide when the render plan is rebuilt) and
+// what it cost (RenderStats). No GL here.
+#pragma once
+
+#include "core/quality.h"
+#include "core/types.h"
+
+#include <QColor>
+#include <QtGlobal>
+#include <vector>
+
+namespace lr {
+
+// Forward: one pass shades every fragment of every triangle. Deferred: a G-pass writes the surfaces, then
+// one full-screen pass shades each covered pixel once (no MSAA; much cheaper on software rasterisers,
+// whose cost is whole 4x4 blocks per small triangle, but the G-pass costs about as much as a forward
+// pass without lights). Both give the same radiance. Auto: deferred when msaaSamples <= 1 and at least
+// kDeferredMinLights lights are uploaded (measured crossover on llvmpipe, DamagedHelmet at 1280x720:
+// forward ~17 + 3.3 n ms CPU, deferred ~30 + 1.1 n), else forward. From kDeferredMsaaMaxLights lights on,
+// Auto shades deferred even when MSAA was asked for, without it: forward with MSAA 4 costs ~2.6x forward
+// (64 lights: ~0.6 s a frame on llvmpipe against ~0.1 s deferred), which would freeze the editor.
+enum class ShadingPath { Auto, Forward, Deferred };
+constexpr int kDeferredMinLights = 6;
+constexpr int kDeferredMsaaMaxLights = 64;
+
+struct RenderSettings {
+    double exposureEV = 0.0;
+    ToneMap toneMap = ToneMap::Clamp;
+    QColor background = QColor(38, 38, 42); // sRGB
+    bool transparentBackground = false;     // alpha 0 where there is no model (straight alpha)
+    int msaaSamples = 4;                    // 0 or 1: off; clamped to what the driver offers
+    bool showGizmos = false;
+    bool showGrid = false;
+    std::vector<int> selectedLights; // indices into the rig's lights, highlighted
+    // How the rig is evaluated (docs/quality.md): Exact per pixel as src/core; Balanced per pixel with
+    // measured cheaper evaluations; Fast per vertex (Gouraud), never MSAA (msaaSamples and the deferred
+    // path are ignored). The G-buffer is always the exact per-pixel surface.
+    Quality quality = Quality::Exact;
+    // The über-shader: compile every light type and model into the lighting code whatever the rig uses
+    // (for `lightrig bench`, to measure what specialising the shaders per scene saves). Same pixels.
+    bool forceAllFeatures = false;
+    bool cullBackFaces = true; // single-sided materials; double-sided ones are never culled
+    // The default path shades, exposes, tone-maps and encodes each fragment straight into an 8-bit target
+    // (MSAA resolves display colours). The HDR path renders linear radiance into a float target and
+    // tone-maps it in a full-screen pass (MSAA then resolves radiance); readRadiance() needs it.
+    bool hdrTarget = false;
+    bool hdrFloat32 = false; // HDR path: RGBA32F instead of RGBA16F
+    // Clustered forward shading (render/cluster.h): -1 automatic (when more than a few lights have a
+    // bounded range), 0 never, 1 always. Same pixels either way: it only skips exact zeros.
+    int clusteredShading = -1;
+    ShadingPath shadingPath = ShadingPath::Auto; // Deferred ignores msaaSamples
+    // The view or a light is being dragged: dense models draw their interaction proxy (lod.h) once it is
+    // built; the full mesh otherwise.
+    bool interactive = false;
+    bool operator==(const RenderSettings&) const = default;
+};
+
+struct RenderStats {
+    int shaderVariantsCompiled = 0; // since initialize()
+    int shaderVariantsCached = 0;
+    int lightsUploaded = 0; // in the last frame: enabled and able to reach the model
+    int lightsInRig = 0;
+    qint64 triangles = 0;
+    int drawCalls = 0;
+    bool deferred = false; // the last frame took the deferred path
+    double lastGpuMs =
+        -1.0; // GL_TIME_ELAPSED of a recent frame (asynchronous: a frame or two old); < 0: none yet
+    bool clustered = false;        // the last frame used clustered shading
+    qint64 clusterLightRefs = 0;   // its light-index list: global lights + per-cluster entries
+    double lastCpuMs = 0.0;        // CPU time spent in the last render() call (GL submission, not completion)
+    qint64 lightBytesUploaded = 0; // by the last light upload: only the texels that changed
+    qint64 trianglesDrawn = 0;     // in the last frame (interaction proxies count their own)
+    int renderPlanBuilds = 0; // pass chains built since initialize(): only when the kind of frame changes
+};
+
+} // namespace lr

@@ -1,0 +1,53 @@
+// Every texture unit the renderer uses, in one enum, and the sampler uniforms bound to them. ProgramCache
+// sets every sampler uniform a program declares from kSamplerBindings once after linking; the passes bind
+// textures with glActiveTexture(textureUnit(TextureUnit::X)). Nothing else numbers a unit.
+#pragma once
+
+#include <QOpenGLFunctions_3_3_Core>
+
+namespace lr::render {
+
+enum class TextureUnit : GLuint {
+    BaseColor = 0, // material textures (mesh.frag); GpuDraw's order
+    Normal = 1,
+    Emissive = 2,
+    Lights = 3,   // the packed light buffer (samplerBuffer, kLightTexels texels per light)
+    GBuffer0 = 4, // .. GBuffer0 + kGBufferTargets - 1: the deferred lighting pass's input (gbuffer.h)
+    ClusterRanges = 8,
+    ClusterIndices = 9,
+    SceneColor = 10, // the tone-map pass's input (resolved radiance)
+    SceneDepth = 11, // the overlay pass's occlusion test (resolved depth)
+};
+
+constexpr int kMaterialTextureUnits = 3; // BaseColor, Normal, Emissive
+
+constexpr GLenum textureUnit(TextureUnit unit, int offset = 0) {
+    return GLenum(GL_TEXTURE0 + GLuint(unit) + GLuint(offset));
+}
+
+struct SamplerBinding {
+    const char* uniform;
+    TextureUnit unit;
+    int offset = 0;
+};
+
+inline constexpr SamplerBinding kSamplerBindings[] = {
+    {"uBaseColorTex", TextureUnit::BaseColor},
+    {"uNormalTex", TextureUnit::Normal},
+    {"uEmissiveTex", TextureUnit::Emissive},
+    {"uLights", TextureUnit::Lights},
+    {"uGBuffer0", TextureUnit::GBuffer0, 0},
+    {"uGBuffer1", TextureUnit::GBuffer0, 1},
+    {"uGBuffer2", TextureUnit::GBuffer0, 2},
+    {"uGBuffer3", TextureUnit::GBuffer0, 3},
+    {"uClusterRanges", TextureUnit::ClusterRanges},
+    {"uClusterIndices", TextureUnit::ClusterIndices},
+    {"uHdr", TextureUnit::SceneColor},
+    {"uSceneDepth", TextureUnit::SceneDepth},
+};
+
+// GL 3.3 guarantees 16 texture image units per fragment stage.
+static_assert(GLuint(TextureUnit::SceneDepth) < 16);
+static_assert(GLuint(TextureUnit::GBuffer0) + 4 <= GLuint(TextureUnit::ClusterRanges));
+
+} // namespace lr::render

@@ -1,0 +1,256 @@
+// The renderer's structure (issue 11): the pass chains and their declared reads and writes, the plan
+// rebuilt only when the kind of frame changes, the one table of texture units, the G-buffer codec and the
+// colour module. And the overlay (issue 12): the ground grid is depth-tested against the model and fades
+// with distance.
+#include "glfixture.h"
+#include "scenes.h"
+
+#include "core/colour.h"
+#include "render/gbuffer.h"
+#include "render/offscreen.h"
+#include "render/renderplan.h"
+#include "render/textureunits.h"
+
+#include <QSet>
+#include <QTest>
+
+using namespace lr;
+using namespace lr::render;
+using namespace lr::test;
+
+class TestRenderPasses : public QObject {
+    Q_OBJECT
+    std::unique_ptr<OffscreenRenderer> m_gl;
+
+    bool startGl() {
+        if (!haveDisplay()) return false;
+        if (m_gl) return true;
+        m_gl = std::make_unique<OffscreenRenderer>();
+        QString error;
+        if (!m_gl->initialize(&error)) qFatal("%s", qPrintable(error));
+        return true;
+    }
+
+  private slots:
+    void everyPlanIsConsistent() {
+        RenderPlan plan;
+        for (int bits = 0; bits < 16; ++bits) {
+            const PlanKey key{bool(bits & 1), bool(bits & 2), bool(bits & 4), bool(bits & 8)};
+            const auto& passes = plan.select(key);
+            const QString where = plan.describe();
+            QVERIFY2(RenderPlan::check(passes, key.msaa).isEmpty(),
+                     qPrintable(where + ": " + RenderPlan::check(passes, key.msaa)));
+            QCOMPARE(QString::fromLatin1(passes.front()->name()), key.deferred
+                                                                      ? QStringLiteral("geometry (G-buffer)")
+                                                                      : QStringLiteral("geometry (shaded)"));
+            QCOMPARE(where.contains(QLatin1String("deferred lighting")), key.deferred);
+            QCOMPARE(where.contains(QLatin1String("tone map")), key.hdr);
+            QCOMPARE(where.contains(QLatin1String("present")), !key.hdr);
+            QCOMPARE(QString::fromLatin1(passes.back()->name()) == QLatin1String("overlay"), key.overlays);
+            QCOMPARE(where.contains(QLatin1String("resolve")), key.msaa && (key.hdr || key.overlays));
+        }
+        QCOMPARE(plan.builds(), 16);
+        plan.select(PlanKey{true, true, false, true});
+        plan.select(PlanKey{true, true, false, true});
+        QCOMPARE(plan.builds(), 17); // the same key twice: one build
+    }
+
+    void checkNamesAMissingInput() {
+        ToneMapPass toneMap;
+        GeometryPass shaded(GeometryPass::Output::Shaded);
+        OverlayPass overlay;
+        // Multisampled radiance must be resolved before the tone-map pass can read it.
+        const QString e = RenderPlan::check({&shaded, &toneMap}, true);
+        QVERIFY2(e.contains(QLatin1String("tone map reads resolved")), qPrintable(e));
+        QVERIFY(RenderPlan::check({&shaded, &toneMap}, false).isEmpty());
+        QVERIFY(RenderPlan::check({&overlay}, false).contains(QLatin1String("overlay reads")));
+        QVERIFY(RenderPlan::check({&shaded}, false).contains(QLatin1String("nothing writes the output")));
+    }
+
+    void textureUnitsAreDistinct() {
+        QSet<GLuint> units;
+        QSet<QByteArray> names;
+        for (const SamplerBinding& b : kSamplerBindings) {
+            const GLuint unit = GLuint(b.unit) + GLuint(b.offset);
+            QVERIFY2(!units.contains(unit), b.uniform);
+            QVERIFY2(!names.contains(b.uniform), b.uniform);
+            QVERIFY(unit < 16);
+            units.insert(unit);
+            names.insert(b.uniform);
+        }
+    }
+
+    void gbufferCodecRoundTrips() {
+        lighting::Surface<float> s;
+        s.position = {1.5f, -2.25f, -7.0f};
+        s.normal = {0.0f, 0.6f, 0.8f};
+        s.albedo = {0.1f, 0.2f, 0.3f};
+        s.specular = {0.4f, 0.5f, 0.6f};
+        s.emissive = {0.7f, 0.8f, 0.9f};
+        s.shininess = 42.0f;
+        const GBufferTexels t = encodeGBuffer(s);
+        const lighting::Surface<float> d = decodeGBuffer(t);
+        QCOMPARE(d.position, s.position);
+        QCOMPARE(d.normal, s.normal);
+        QCOMPARE(d.albedo, s.albedo);
+        QCOMPARE(d.specular, s.specular);
+        QCOMPARE(d.emissive, s.emissive);
+        QCOMPARE(d.shininess, s.shininess);
+        // Every channel of every target holds exactly one field.
+        int used[kGBufferTargets][4] = {};
+        for (const GBufferSlot& slot : kGBufferLayout)
+            for (int c = 0; c < slot.width; ++c)
+                ++used[slot.target][slot.channel + c];
+        for (const auto& target : used)
+            for (int n : target)
+                QCOMPARE(n, 1);
+        // The GLSL twin is generated from the same table.
+        const QByteArray glsl = gbufferGlsl();
+        for (const GBufferSlot& slot : kGBufferLayout)
+            QVERIFY2(glsl.contains(QByteArray("s.") + slot.member), slot.member);
+    }
+
+    void colourModuleIsTheOneDisplayTransform() {
+        QCOMPARE(colour::exposureScale(1.0), 2.0);
+        QCOMPARE(colour::exposureScale(-2.0), 0.25);
+        QCOMPARE(colour::exposureScale(1000.0), std::exp2(60.0)); // clamped to ±60 EV
+        const glm::dvec3 radiance(0.02, 0.3, 4.0);
+        for (ToneMap op : {ToneMap::Clamp, ToneMap::Reinhard, ToneMap::Aces}) {
+            const glm::dvec3 d = colour::displayColour(radiance, 2.0, op);
+            for (int c = 0; c < 3; ++c)
+                QCOMPARE(d[c], colour::linearToSrgb(colour::toneMap(op, radiance[c] * 2.0)));
+        }
+        QCOMPARE(colour::srgbToLinear(colour::linearToSrgb(0.5)), 0.5);
+    }
+
+    void planIsRebuiltOnlyWhenTheFrameKindChanges() {
+        if (!startGl()) QSKIP("needs an X display with OpenGL: run under xvfb-run -a");
+        QString error;
+        QVERIFY(m_gl->setModel(sphereScene(), &error));
+        m_gl->setRig(rigOf({point({0.5, 1.0, 2.0}, FalloffModel::InverseSquare)}));
+        RenderSettings s;
+        s.msaaSamples = 0;
+        QVERIFY2(m_gl->renderFrame(sphereCamera(), QSize(64, 48), s, &error), qPrintable(error));
+        const int builds = m_gl->renderer().stats().renderPlanBuilds;
+        QCOMPARE(m_gl->renderer().renderPlan(), QStringLiteral("geometry (shaded) > present"));
+        s.exposureEV = 1.5; // a value, not a kind of frame
+        s.toneMap = ToneMap::Aces;
+        QVERIFY(m_gl->renderFrame(sphereCamera(), QSize(64, 48), s, &error));
+        QCOMPARE(m_gl->renderer().stats().renderPlanBuilds, builds);
+        s.hdrTarget = true;
+        QVERIFY(m_gl->renderFrame(sphereCamera(), QSize(64, 48), s, &error));
+        QCOMPARE(m_gl->renderer().stats().renderPlanBuilds, builds + 1);
+        QCOMPARE(m_gl->renderer().renderPlan(), QStringLiteral("geometry (shaded) > tone map"));
+        s.shadingPath = ShadingPath::Deferred;
+        s.showGrid = true;
+        QVERIFY(m_gl->renderFrame(sphereCamera(), QSize(64, 48), s, &error));
+        QCOMPARE(m_gl->renderer().renderPlan(),
+                 QStringLiteral("geometry (G-buffer) > deferred lighting > tone map > overlay"));
+    }
+
+    // Issue 12: from above, the ground grid lies under the whole model: every pixel inside the model's
+    // silhouette must be exactly what the frame without the grid has there (it showed through at 30%).
+    void gridIsHiddenByTheModel_data() {
+        QTest::addColumn<int>("msaa");
+        QTest::addColumn<bool>("hdr");
+        QTest::addColumn<int>("path");
+        QTest::newRow("display") << 0 << false << int(ShadingPath::Forward);
+        QTest::newRow("display-msaa") << 4 << false << int(ShadingPath::Forward);
+        QTest::newRow("hdr-msaa") << 4 << true << int(ShadingPath::Forward);
+        QTest::newRow("deferred") << 0 << false << int(ShadingPath::Deferred);
+    }
+
+    void gridIsHiddenByTheModel() {
+        if (!startGl()) QSKIP("needs an X display with OpenGL: run under xvfb-run -a");
+        QFETCH(int, msaa);
+        QFETCH(bool, hdr);
+        QFETCH(int, path);
+        QString error;
+        QVERIFY(m_gl->setModel(sphereScene(), &error));
+        m_gl->setRig(rigOf({point({0.5, 2.0, 1.0}, FalloffModel::None)}));
+        ViewCamera top;
+        top.eye = {0.0, 4.0, 0.0};
+        top.target = {0.0, 0.0, 0.0};
+        top.up = {0.0, 0.0, -1.0};
+        top.yfovDeg = 45.0;
+        const QSize size(160, 120);
+        RenderSettings s;
+        s.msaaSamples = msaa;
+        s.hdrTarget = hdr;
+        s.shadingPath = ShadingPath(path);
+        const QImage without = m_gl->renderImage(top, size, s, 1, &error);
+        s.showGrid = true;
+        const QImage with = m_gl->renderImage(top, size, s, 1, &error);
+        GBuffer g;
+        QVERIFY2(!without.isNull() && !with.isNull() && m_gl->renderGBuffer(top, size, s, &g, &error),
+                 qPrintable(error));
+        const auto covered = [&](int x, int y) {
+            return x >= 0 && y >= 0 && x < size.width() && y < size.height() && g.position.at(x, y).w > 0.5f;
+        };
+        int inside = 0, changedInside = 0, gridOutside = 0;
+        for (int y = 0; y < size.height(); ++y) {
+            for (int x = 0; x < size.width(); ++x) {
+                const bool changed = with.pixel(x, y) != without.pixel(x, y);
+                bool interior = true; // the silhouette's edge pixels mix model and ground under MSAA
+                for (int dy = -1; dy <= 1; ++dy)
+                    for (int dx = -1; dx <= 1; ++dx)
+                        interior = interior && covered(x + dx, y + dy);
+                if (interior) {
+                    ++inside;
+                    changedInside += changed;
+                } else if (!covered(x, y)) {
+                    gridOutside += changed;
+                }
+            }
+        }
+        QVERIFY2(inside > 2000, qPrintable(QString::number(inside)));
+        QVERIFY2(gridOutside > 200, qPrintable(QString::number(gridOutside))); // the grid is drawn around it
+        QCOMPARE(changedInside, 0);
+    }
+
+    // The grid fades with distance (as Blender's): seen obliquely, its far edge is much fainter than its
+    // near edge (without the fade both are drawn alike).
+    void gridFadesWithDistance() {
+        if (!startGl()) QSKIP("needs an X display with OpenGL: run under xvfb-run -a");
+        QString error;
+        QVERIFY(m_gl->setModel(nullptr, &error)); // the grid alone: under the unit sphere's bounds
+        m_gl->setRig(Rig());
+        ViewCamera cam;
+        cam.eye = {0.0, 1.0, 4.0};
+        cam.target = {0.0, -0.577, 0.0};
+        cam.yfovDeg = 45.0;
+        const QSize size(200, 240);
+        RenderSettings s;
+        s.msaaSamples = 0;
+        const QImage without = m_gl->renderImage(cam, size, s, 1, &error);
+        s.showGrid = true;
+        const QImage with = m_gl->renderImage(cam, size, s, 1, &error);
+        QVERIFY2(!without.isNull() && !with.isNull(), qPrintable(error));
+        // The rows of the grid's near (z = +1.5) and far (z = -1.5) edges.
+        const ViewCamera e = m_gl->renderer().effectiveCamera(cam);
+        const Bounds b = m_gl->renderer().bounds();
+        const auto row = [&](double z) {
+            const glm::dvec4 p = e.projection(double(size.width()) / size.height()) * e.view() *
+                                 glm::dvec4(0.0, b.min.y, z, 1.0);
+            return int((0.5 - 0.5 * p.y / p.w) * size.height());
+        };
+        const int nearRow = row(1.45), farRow = row(-1.45);
+        QVERIFY2(farRow + 10 < nearRow && farRow >= 0 && nearRow < size.height(),
+                 qPrintable(QStringLiteral("%1 %2").arg(farRow).arg(nearRow)));
+        const auto strongest = [&](int y0, int y1) {
+            int m = 0;
+            for (int y = y0; y <= y1; ++y)
+                for (int x = 0; x < size.width(); ++x)
+                    m = std::max(m, std::abs(qGreen(with.pixel(x, y)) - qGreen(without.pixel(x, y))));
+            return m;
+        };
+        const int nearLevels = strongest(nearRow - 4, nearRow + 2),
+                  farLevels = strongest(farRow - 2, farRow + 2);
+        QVERIFY2(nearLevels > 40, qPrintable(QString::number(nearLevels)));
+        QVERIFY2(farLevels * 4 < nearLevels,
+                 qPrintable(QStringLiteral("far %1, near %2").arg(farLevels).arg(nearLevels)));
+    }
+};
+
+LR_GL_TEST_MAIN(TestRenderPasses)
+#include "tst_renderpasses.moc"
