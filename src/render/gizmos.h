@@ -16,7 +16,7 @@ struct GizmoVertex {
     glm::vec3 position{0.0f}; // view space
     glm::vec4 color{1.0f};    // display colour (sRGB-encoded), straight alpha
     glm::vec2 point{
-        0.0f}; // point sprites: size in pixels, shape (0 point, 1 spot, 2 directional, 3 rim; +8 selected)
+        0.0f}; // point sprites: size in pixels, shape (GizmoShape, core/lighttypes.h; +8 selected)
 };
 
 struct GizmoGeometry {

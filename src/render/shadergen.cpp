@@ -65,7 +65,7 @@ std::uint64_t FeatureKey::bits() const {
         b |= v << shift;
         shift += width;
     };
-    put(rig.lightTypes, 4);
+    put(rig.lightTypes, kLightTypeCount);
     put(rig.falloffs, 5);
     put(rig.cones, 3);
     put(rig.diffuses, 2);
