@@ -188,7 +188,9 @@ class TestLightsDock : public QObject {
         QTest::mouseClick(view()->viewport(), Qt::LeftButton, {}, view()->visualRect(spotType).center());
         QTRY_VERIFY(view()->viewport()->findChild<QComboBox*>() &&
                     view()->viewport()->findChild<QComboBox*>()->isVisible()); // SelectedClicked, delayed
-        QCOMPARE(m_doc->selectedRows(), (QList<int>{0, 1, 2}));
+        QCOMPARE(m_doc->selectedRows(), (QList<int>{0, 1, 2})); // the click kept all three selected
+        QCOMPARE(view()->viewport()->findChild<QComboBox*>()->currentData().toInt(), int(LightType::Spot));
+        QCOMPARE(view()->viewport()->findChild<QComboBox*>()->currentText(), QStringLiteral("Spot"));
         // An empty part of the table: below the last row.
         const QRect last = view()->visualRect(cell(2, LightTableModel::NameColumn));
         const QPoint empty(last.center().x(), last.bottom() + 3 * last.height());
