@@ -1,6 +1,6 @@
 #include "app/delegates.h"
 
-#include "core/types.h"
+#include "core/lighttypes.h"
 #include "editor/lightproperty.h"
 
 #include <QColorDialog>
@@ -14,6 +14,15 @@
 namespace lr {
 
 namespace {
+
+// The text an editor started with: an editor closed with it unchanged writes nothing (so opening a cell of
+// one of several selected rows and clicking elsewhere edits no light).
+constexpr const char* kInitialText = "lrInitialText";
+
+bool unchanged(const QObject* editor, const QString& text) {
+    const QVariant initial = editor->property(kInitialText);
+    return initial.isValid() && initial.toString() == text;
+}
 
 QString formatVec3(const glm::dvec3& v) {
     return QStringLiteral("%1, %2, %3")
@@ -95,14 +104,16 @@ QWidget* ColorSwatchDelegate::createEditor(QWidget* parent, const QStyleOptionVi
 }
 
 void ColorSwatchDelegate::setEditorData(QWidget* editor, const QModelIndex& index) const {
-    static_cast<ColorEditor*>(editor)->edit()->setText(
-        formatVec3(index.data(Qt::EditRole).value<glm::dvec3>()));
+    const QString text = formatVec3(index.data(Qt::EditRole).value<glm::dvec3>());
+    static_cast<ColorEditor*>(editor)->edit()->setText(text);
+    editor->setProperty(kInitialText, text);
 }
 
 void ColorSwatchDelegate::setModelData(QWidget* editor, QAbstractItemModel* model,
                                        const QModelIndex& index) const {
     double v[3];
     const QString text = static_cast<ColorEditor*>(editor)->edit()->text();
+    if (unchanged(editor, text)) return;
     // Text that is not three numbers goes to the model as it is, so the refusal carries the model's reason.
     if (parseVec3(text, v))
         model->setData(index, QVariant::fromValue(glm::dvec3(v[0], v[1], v[2])));
@@ -126,35 +137,38 @@ QWidget* NumberDelegate::createEditor(QWidget* parent, const QStyleOptionViewIte
 
 void NumberDelegate::setEditorData(QWidget* editor, const QModelIndex& index) const {
     const QVariant v = index.data(Qt::EditRole);
-    static_cast<QLineEdit*>(editor)->setText(v.isValid() ? QString::number(v.toDouble(), 'g', 10)
-                                                         : QString());
+    const QString text = v.isValid() ? QString::number(v.toDouble(), 'g', 10) : QString();
+    static_cast<QLineEdit*>(editor)->setText(text);
+    editor->setProperty(kInitialText, text);
 }
 
 void NumberDelegate::setModelData(QWidget* editor, QAbstractItemModel* model,
                                   const QModelIndex& index) const {
     // Text goes to the model, which parses and validates it (empty = none where the value is optional).
-    model->setData(index, static_cast<QLineEdit*>(editor)->text().trimmed());
+    const QString text = static_cast<QLineEdit*>(editor)->text().trimmed();
+    if (unchanged(editor, text)) return;
+    model->setData(index, text);
 }
 
 QWidget* LightTypeDelegate::createEditor(QWidget* parent, const QStyleOptionViewItem&,
                                          const QModelIndex&) const {
     auto* combo = new QComboBox(parent);
-    for (int i = 0; i < enumCount<LightType>(); ++i) {
-        QString name = toString(LightType(i));
-        name[0] = name[0].toUpper();
-        combo->addItem(name, i);
-    }
+    for (const LightType t : allLightTypes())
+        combo->addItem(lightTypeLabel(t), int(t));
     return combo;
 }
 
 void LightTypeDelegate::setEditorData(QWidget* editor, const QModelIndex& index) const {
     auto* combo = static_cast<QComboBox*>(editor);
     combo->setCurrentIndex(combo->findData(index.data(Qt::EditRole).toInt()));
+    editor->setProperty(kInitialText, combo->currentText());
 }
 
 void LightTypeDelegate::setModelData(QWidget* editor, QAbstractItemModel* model,
                                      const QModelIndex& index) const {
-    model->setData(index, static_cast<QComboBox*>(editor)->currentData().toInt());
+    auto* combo = static_cast<QComboBox*>(editor);
+    if (unchanged(editor, combo->currentText())) return;
+    model->setData(index, combo->currentData().toInt());
 }
 
 } // namespace lr

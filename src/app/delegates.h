@@ -1,7 +1,8 @@
 // Item delegates of the light table: a colour swatch with an "r, g, b" (linear, HDR) editor plus a colour
 // dialog button, a plain number editor (wide ranges, empty = none where allowed) and a light type combo box.
 // Values are validated by the model (through the document's commands); a refused edit is reported by
-// LightTableModel::editRefused and leaves the rig as it was.
+// LightTableModel::editRefused and leaves the rig as it was. An editor closed without a change writes
+// nothing.
 #pragma once
 
 #include <QStyledItemDelegate>

@@ -29,15 +29,13 @@ LightsDock::LightsDock(Document* document, QWidget* parent)
     m_toolBar->setObjectName(QStringLiteral("LightsToolBar"));
     m_toolBar->setIconSize(QSize(16, 16));
     m_toolBar->setToolButtonStyle(Qt::ToolButtonTextOnly);
-    const char* labels[4] = {QT_TR_NOOP("Point"), QT_TR_NOOP("Spot"), QT_TR_NOOP("Directional"),
-                             QT_TR_NOOP("Rim")};
-    for (int t = 0; t < 4; ++t) {
-        auto* a = new QAction(tr(labels[t]), this);
-        a->setObjectName(QStringLiteral("addLight_%1").arg(toString(LightType(t))));
-        a->setToolTip(tr("Add a %1 light").arg(toString(LightType(t))));
+    for (const LightType t : allLightTypes()) {
+        auto* a = new QAction(lightTypeLabel(t), this);
+        a->setObjectName(QStringLiteral("addLight_%1").arg(toString(t)));
+        a->setToolTip(tr("Add a %1 light").arg(toString(t)));
         a->setStatusTip(a->toolTip());
-        connect(a, &QAction::triggered, this, [this, t] { addLight(LightType(t)); });
-        m_addActions[t] = a;
+        connect(a, &QAction::triggered, this, [this, t] { addLight(t); });
+        m_addActions[size_t(t)] = a;
         m_toolBar->addAction(a);
     }
     m_toolBar->addSeparator();
@@ -121,8 +119,9 @@ QTableView* LightsDock::view() const {
 }
 
 QList<QAction*> LightsDock::lightActions() const {
-    return {m_addActions[0], m_addActions[1], m_addActions[2], m_addActions[3],
-            m_duplicate,     m_delete,        m_rename};
+    QList<QAction*> actions(m_addActions.begin(), m_addActions.end());
+    actions << m_duplicate << m_delete << m_rename;
+    return actions;
 }
 
 QList<int> LightsDock::selectedRows() const {

@@ -6,7 +6,9 @@
 // them in its menus.
 #pragma once
 
-#include "core/types.h"
+#include "core/lighttypes.h"
+
+#include <array>
 
 #include <QDockWidget>
 
@@ -33,7 +35,7 @@ class LightsDock : public QDockWidget {
     QTableView* view() const;
     QToolBar* toolBar() const { return m_toolBar; }
 
-    QAction* addLightAction(LightType type) const { return m_addActions[int(type)]; }
+    QAction* addLightAction(LightType type) const { return m_addActions[size_t(type)]; }
     QAction* duplicateAction() const { return m_duplicate; } // Ctrl+D
     QAction* deleteAction() const { return m_delete; }       // Delete (while the table has focus)
     QAction* renameAction() const { return m_rename; }       // F2
@@ -62,7 +64,7 @@ class LightsDock : public QDockWidget {
     LightTableView* m_view;
     QToolBar* m_toolBar;
     QLabel* m_message;
-    QAction* m_addActions[4] = {};
+    std::array<QAction*, kLightTypeCount> m_addActions{};
     QAction* m_duplicate = nullptr;
     QAction* m_delete = nullptr;
     QAction* m_rename = nullptr;

@@ -1,5 +1,6 @@
 #include "app/lighttableview.h"
 
+#include "editor/lightproperty.h"
 #include "editor/lighttablemodel.h"
 
 #include <QDropEvent>
@@ -27,11 +28,18 @@ QList<int> LightSortProxy::selectedSourceRows() const {
     return rows;
 }
 
+bool LightSortProxy::spreadsToSelection(int column) {
+    const LightPropertyInfo* row = lightPropertyInfo(LightTableModel::propertyOf(column));
+    return !row || !(row->uniquePerLight || row->deliberateForMany);
+}
+
 bool LightSortProxy::setData(const QModelIndex& index, const QVariant& value, int role) {
     if (!index.isValid()) return false;
+    // An editor closed without a change (clicking into a cell, then elsewhere) edits nothing, on no row.
+    if (role == Qt::EditRole && value == index.data(Qt::EditRole)) return true;
     const int row = mapToSource(index).row();
     const QList<int> rows = selectedSourceRows();
-    if (rows.size() > 1 && rows.contains(row))
+    if (rows.size() > 1 && rows.contains(row) && spreadsToSelection(index.column()))
         return m_source->setDataForRows(rows, index.column(), value, role);
     return QSortFilterProxyModel::setData(index, value, role);
 }

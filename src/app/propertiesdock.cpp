@@ -19,15 +19,6 @@
 namespace lr {
 
 namespace {
-using P = LightProperty;
-
-template <typename E> QComboBox* enumCombo(QWidget* parent) {
-    auto* combo = new QComboBox(parent);
-    for (int i = 0; i < enumCount<E>(); ++i)
-        combo->addItem(toString(E(i)));
-    return combo;
-}
-
 QWidget* hbox(QWidget* parent, std::initializer_list<QWidget*> widgets) {
     auto* w = new QWidget(parent);
     auto* l = new QHBoxLayout(w);
@@ -72,24 +63,113 @@ QString PropertiesDock::message() const {
     return m_message->text();
 }
 
-void PropertiesDock::addRow(LightProperty property, const QString& label, QWidget* field) {
-    field->setObjectName(propertyFieldName(property));
-    m_form->addRow(label, field);
-    m_fields.insert(property, field);
-}
-
-NumberEdit* PropertiesDock::addNumber(LightProperty property, const QString& label, double min, double max,
-                                      bool minExclusive, const QString& suffix) {
-    auto* e = new NumberEdit(m_panel);
-    e->setLimits(min, max, minExclusive);
-    e->setWhat(lightPropertyName(property));
-    e->setSuffix(suffix);
-    addRow(property, label, e);
-    m_numbers.insert(property, e);
+void PropertiesDock::connectNumber(LightProperty property, NumberEdit* e) {
     connect(e, &NumberEdit::valueEdited, this, [this, property](double v) { apply(property, v, true); });
     connect(e, &QAbstractSpinBox::editingFinished, this, &PropertiesDock::finishGesture);
     connect(e, &NumberEdit::rejected, this, &PropertiesDock::showMessage);
-    return e;
+}
+
+PropertiesDock::Field PropertiesDock::createField(const LightPropertyInfo& row) {
+    const LightProperty p = row.id;
+    const PropertyField how = propertyField(p);
+    Field f;
+    auto number = [&] {
+        auto* e = new NumberEdit(m_panel);
+        e->setLimits(row.min, row.max, row.minExclusive);
+        e->setWhat(row.displayName());
+        if (row.suffix) e->setSuffix(QString::fromUtf8(row.suffix));
+        return e;
+    };
+    auto toggle = [&] {
+        auto* box = new QCheckBox(m_panel);
+        box->setToolTip(tr("Whether the light has a %1").arg(row.displayName()));
+        return box;
+    };
+    switch (how.editor) {
+    case PropertyEditor::LineEdit:
+        f.widget = f.line = new QLineEdit(m_panel);
+        f.line->setMaxLength(kMaxLightNameLength);
+        connect(f.line, &QLineEdit::editingFinished, this, [this, p, line = f.line] {
+            const QList<int> rows = m_doc->selectedRows();
+            if (rows.size() != 1 || line->text() == lightValue(m_doc->light(rows.first()), p).toString())
+                return;
+            apply(p, line->text().trimmed(), false);
+            refresh();
+        });
+        break;
+    case PropertyEditor::ComboBox:
+        f.widget = f.combo = new QComboBox(m_panel);
+        f.combo->addItems(row.choices());
+        connect(f.combo, &QComboBox::activated, this, [this, p](int i) { apply(p, i, false); });
+        break;
+    case PropertyEditor::CheckBox:
+        f.widget = f.check = new QCheckBox(tr("On"), m_panel);
+        connect(f.check, &QCheckBox::clicked, this, [this, p](bool on) { apply(p, on, false); });
+        break;
+    case PropertyEditor::ColorButton:
+        f.widget = f.color = new ColorButton(m_panel);
+        connect(f.color, &ColorButton::colorPicked, this,
+                [this, p](const glm::dvec3& c) { apply(p, QVariant::fromValue(c), false); });
+        break;
+    case PropertyEditor::Number:
+        f.widget = f.number = number();
+        connectNumber(p, f.number);
+        break;
+    case PropertyEditor::LogSlider:
+        f.widget = f.slider = new LogSliderEdit(m_panel);
+        f.slider->setLimits(how.sliderMin, row.max);
+        f.slider->spinBox()->setWhat(row.displayName());
+        f.number = f.slider->spinBox();
+        connect(f.slider, &LogSliderEdit::valueEdited, this, [this, p](double v) { apply(p, v, true); });
+        connect(f.slider, &LogSliderEdit::editFinished, this, &PropertiesDock::finishGesture);
+        connect(f.number, &NumberEdit::rejected, this, &PropertiesDock::showMessage);
+        break;
+    case PropertyEditor::OptionalNumber:
+        f.check = toggle();
+        f.number = number();
+        f.number->setValueQuietly(how.initial);
+        f.widget = hbox(m_panel, {f.check, f.number});
+        connect(f.check, &QCheckBox::clicked, this, [this, p, e = f.number](bool on) {
+            apply(p, on ? QVariant(e->value()) : QVariant(), false);
+        });
+        connectNumber(p, f.number);
+        break;
+    case PropertyEditor::OptionalColor:
+        f.check = toggle();
+        f.color = new ColorButton(m_panel);
+        f.widget = hbox(m_panel, {f.check, f.color});
+        connect(f.check, &QCheckBox::clicked, this, [this, p, c = f.color](bool on) {
+            apply(p, on ? QVariant::fromValue(c->color()) : QVariant(), false);
+        });
+        connect(f.color, &ColorButton::colorPicked, this,
+                [this, p](const glm::dvec3& c) { apply(p, QVariant::fromValue(c), false); });
+        break;
+    case PropertyEditor::Vector:
+        f.widget = f.vector = new Vec3Edit(m_panel);
+        f.vector->setLimits(row.min, row.max);
+        f.vector->setWhat(row.displayName());
+        connect(f.vector, &Vec3Edit::componentEdited, this,
+                [this, p](int axis, double value) { applyComponent(p, axis, value); });
+        connect(f.vector, &Vec3Edit::editFinished, this, &PropertiesDock::finishGesture);
+        connect(f.vector, &Vec3Edit::rejected, this, &PropertiesDock::showMessage);
+        break;
+    case PropertyEditor::FactorOrColor:
+        f.combo = new QComboBox(m_panel);
+        f.combo->addItems({tr("factor"), tr("colour")});
+        f.number = new NumberEdit(m_panel);
+        f.number->setLimits(row.min, row.max);
+        f.number->setWhat(row.displayName());
+        f.color = new ColorButton(m_panel);
+        f.widget = hbox(m_panel, {f.combo, f.number, f.color});
+        connect(f.combo, &QComboBox::activated, this, [this, p, e = f.number, c = f.color](int kind) {
+            apply(p, kind == 0 ? QVariant(e->value()) : QVariant::fromValue(c->color()), false);
+        });
+        connectNumber(p, f.number);
+        connect(f.color, &ColorButton::colorPicked, this,
+                [this, p](const glm::dvec3& c) { apply(p, QVariant::fromValue(c), false); });
+        break;
+    }
+    return f;
 }
 
 void PropertiesDock::build() {
@@ -110,139 +190,13 @@ void PropertiesDock::build() {
     outer->addWidget(m_message);
     outer->addStretch(1);
 
-    m_name = new QLineEdit(m_panel);
-    m_name->setMaxLength(kMaxLightNameLength);
-    addRow(P::Name, tr("&Name"), m_name);
-    connect(m_name, &QLineEdit::editingFinished, this, [this] {
-        const QList<int> rows = m_doc->selectedRows();
-        if (rows.size() != 1 || m_name->text() == m_doc->light(rows.first()).name) return;
-        QString error;
-        if (!m_doc->renameLight(rows.first(), m_name->text().trimmed(), &error)) showMessage(error);
-        refresh();
-    });
-
-    m_type = enumCombo<LightType>(m_panel);
-    addRow(P::Type, tr("&Type"), m_type);
-    connect(m_type, &QComboBox::activated, this,
-            [this](int i) { apply(P::Type, toString(LightType(i)), false); });
-
-    m_enabled = new QCheckBox(tr("On"), m_panel);
-    addRow(P::Enabled, tr("&Enabled"), m_enabled);
-    connect(m_enabled, &QCheckBox::clicked, this, [this](bool on) {
-        QString error;
-        if (!m_doc->setLightsEnabled(m_doc->selectedRows(), on, &error)) showMessage(error);
-    });
-
-    m_color = new ColorButton(m_panel);
-    addRow(P::Color, tr("&Colour"), m_color);
-    connect(m_color, &ColorButton::colorPicked, this,
-            [this](const glm::dvec3& c) { apply(P::Color, QVariant::fromValue(c), false); });
-
-    m_temperatureOn = new QCheckBox(m_panel);
-    m_temperatureOn->setToolTip(tr("Tint the colour by a black body's temperature"));
-    m_temperature = new NumberEdit(m_panel);
-    m_temperature->setLimits(kMinTemperature, kMaxTemperature);
-    m_temperature->setWhat(lightPropertyName(P::Temperature));
-    m_temperature->setSuffix(QStringLiteral(" K"));
-    m_temperature->setValueQuietly(6500.0);
-    addRow(P::Temperature, tr("Te&mperature"), hbox(m_panel, {m_temperatureOn, m_temperature}));
-    connect(m_temperatureOn, &QCheckBox::clicked, this, [this](bool on) {
-        apply(P::Temperature, on ? QVariant(m_temperature->value()) : QVariant(), false);
-    });
-    connect(m_temperature, &NumberEdit::valueEdited, this,
-            [this](double v) { apply(P::Temperature, v, true); });
-    connect(m_temperature, &QAbstractSpinBox::editingFinished, this, &PropertiesDock::finishGesture);
-    connect(m_temperature, &NumberEdit::rejected, this, &PropertiesDock::showMessage);
-
-    m_intensity = new LogSliderEdit(m_panel);
-    m_intensity->setLimits(1e-3, kMaxIntensity);
-    m_intensity->spinBox()->setWhat(lightPropertyName(P::Intensity));
-    addRow(P::Intensity, tr("&Intensity"), m_intensity);
-    connect(m_intensity, &LogSliderEdit::valueEdited, this,
-            [this](double v) { apply(P::Intensity, v, true); });
-    connect(m_intensity, &LogSliderEdit::editFinished, this, &PropertiesDock::finishGesture);
-    connect(m_intensity->spinBox(), &NumberEdit::rejected, this, &PropertiesDock::showMessage);
-
-    auto vec3Row = [this](LightProperty property, const QString& label) {
-        auto* v = new Vec3Edit(m_panel);
-        v->setLimits(-kMaxCoordinate, kMaxCoordinate);
-        v->setWhat(lightPropertyName(property));
-        addRow(property, label, v);
-        connect(v, &Vec3Edit::componentEdited, this,
-                [this, property](int axis, double value) { applyComponent(property, axis, value); });
-        connect(v, &Vec3Edit::editFinished, this, &PropertiesDock::finishGesture);
-        connect(v, &Vec3Edit::rejected, this, &PropertiesDock::showMessage);
-        return v;
-    };
-    m_position = vec3Row(P::Position, tr("&Position"));
-    m_direction = vec3Row(P::Direction, tr("&Direction"));
-
-    m_falloff = enumCombo<FalloffModel>(m_panel);
-    addRow(P::FalloffModel, tr("&Falloff"), m_falloff);
-    connect(m_falloff, &QComboBox::activated, this,
-            [this](int i) { apply(P::FalloffModel, toString(FalloffModel(i)), false); });
-
-    m_rangeOn = new QCheckBox(m_panel);
-    m_rangeOn->setToolTip(tr("Limit the light to a range (optional for this falloff model)"));
-    m_range = new NumberEdit(m_panel);
-    m_range->setLimits(0.0, kMaxCoordinate, true);
-    m_range->setWhat(lightPropertyName(P::FalloffRange));
-    m_range->setValueQuietly(10.0);
-    addRow(P::FalloffRange, tr("&Range"), hbox(m_panel, {m_rangeOn, m_range}));
-    connect(m_rangeOn, &QCheckBox::clicked, this,
-            [this](bool on) { apply(P::FalloffRange, on ? QVariant(m_range->value()) : QVariant(), false); });
-    connect(m_range, &NumberEdit::valueEdited, this, [this](double v) { apply(P::FalloffRange, v, true); });
-    connect(m_range, &QAbstractSpinBox::editingFinished, this, &PropertiesDock::finishGesture);
-    connect(m_range, &NumberEdit::rejected, this, &PropertiesDock::showMessage);
-
-    addNumber(P::FalloffExponent, tr("Falloff e&xponent"), 0.0, kMaxExponent, true);
-    addNumber(P::FalloffConstant, tr("Consta&nt"), 0.0, kMaxPolynomialCoefficient, false);
-    addNumber(P::FalloffLinear, tr("&Linear"), 0.0, kMaxPolynomialCoefficient, false);
-    addNumber(P::FalloffQuadratic, tr("&Quadratic"), 0.0, kMaxPolynomialCoefficient, false);
-
-    m_cone = enumCombo<ConeModel>(m_panel);
-    addRow(P::ConeModel, tr("C&one"), m_cone);
-    connect(m_cone, &QComboBox::activated, this,
-            [this](int i) { apply(P::ConeModel, toString(ConeModel(i)), false); });
-    addNumber(P::ConeInner, tr("Inner an&gle"), 0.0, 90.0, true, QStringLiteral("°"));
-    addNumber(P::ConeOuter, tr("O&uter angle"), 0.0, 90.0, true, QStringLiteral("°"));
-    addNumber(P::ConeExponent, tr("Cone exponen&t"), 0.0, kMaxExponent, true);
-
-    m_diffuse = enumCombo<DiffuseModel>(m_panel);
-    addRow(P::Diffuse, tr("Di&ffuse"), m_diffuse);
-    connect(m_diffuse, &QComboBox::activated, this,
-            [this](int i) { apply(P::Diffuse, toString(DiffuseModel(i)), false); });
-
-    m_specularKind = new QComboBox(m_panel);
-    m_specularKind->addItems({tr("factor"), tr("colour")});
-    m_specularFactor = new NumberEdit(m_panel);
-    m_specularFactor->setLimits(0.0, kMaxColorComponent);
-    m_specularFactor->setWhat(lightPropertyName(P::Specular));
-    m_specularColor = new ColorButton(m_panel);
-    addRow(P::Specular, tr("&Specular"), hbox(m_panel, {m_specularKind, m_specularFactor, m_specularColor}));
-    connect(m_specularKind, &QComboBox::activated, this, [this](int kind) {
-        apply(P::Specular,
-              kind == 0 ? QVariant(m_specularFactor->value()) : QVariant::fromValue(m_specularColor->color()),
-              false);
-    });
-    connect(m_specularFactor, &NumberEdit::valueEdited, this,
-            [this](double v) { apply(P::Specular, v, true); });
-    connect(m_specularFactor, &QAbstractSpinBox::editingFinished, this, &PropertiesDock::finishGesture);
-    connect(m_specularFactor, &NumberEdit::rejected, this, &PropertiesDock::showMessage);
-    connect(m_specularColor, &ColorButton::colorPicked, this,
-            [this](const glm::dvec3& c) { apply(P::Specular, QVariant::fromValue(c), false); });
-
-    m_ambientOn = new QCheckBox(m_panel);
-    m_ambientOn->setToolTip(tr("The light's own ambient term (attenuated like the rest of the light)"));
-    m_ambient = new ColorButton(m_panel);
-    addRow(P::Ambient, tr("&Ambient"), hbox(m_panel, {m_ambientOn, m_ambient}));
-    connect(m_ambientOn, &QCheckBox::clicked, this, [this](bool on) {
-        apply(P::Ambient, on ? QVariant::fromValue(m_ambient->color()) : QVariant(), false);
-    });
-    connect(m_ambient, &ColorButton::colorPicked, this,
-            [this](const glm::dvec3& c) { apply(P::Ambient, QVariant::fromValue(c), false); });
-
-    addNumber(P::RimExponent, tr("Rim e&xponent"), 0.0, kMaxExponent, true);
+    for (const LightPropertyInfo& row : lightProperties()) {
+        const Field f = createField(row);
+        f.widget->setObjectName(propertyFieldName(row.id));
+        m_form->addRow(row.displayLabel(), f.widget);
+        m_fields.insert(row.id, f.widget);
+        m_parts.insert(row.id, f);
+    }
 
     auto* scroll = new QScrollArea(this);
     scroll->setWidgetResizable(true);
@@ -268,14 +222,16 @@ void PropertiesDock::apply(LightProperty property, const QVariant& value, bool c
 void PropertiesDock::applyComponent(LightProperty property, int axis, double value) {
     const QList<int> rows = m_doc->selectedRows();
     if (rows.isEmpty()) return;
+    // Typing x, y and z is one step: the gesture lasts until focus leaves the vector
+    // (Vec3Edit::editFinished), however long the pauses between the components.
     if (!m_editToken) m_editToken = m_doc->beginContinuousEdit();
-    m_idle.start();
+    m_idle.stop();
     QVariantList values;
     QList<int> applied;
     for (int row : rows) {
         const Light& l = m_doc->light(row);
         if (!lightPropertyApplies(l, property)) continue;
-        glm::dvec3 v = property == P::Position ? l.position : l.direction;
+        glm::dvec3 v = lightValue(l, property).value<glm::dvec3>();
         v[axis] = value;
         values.append(QVariant::fromValue(v));
         applied.append(row);
@@ -316,12 +272,18 @@ void PropertiesDock::refresh() {
                                 .arg(rows.size())
                                 .arg(light.name.toHtmlEscaped()));
     updateVisibility(rows);
-    loadValues(light);
-    m_name->setEnabled(rows.size() == 1);
-    bool mixedColor = false;
-    for (int row : rows)
-        mixedColor = mixedColor || m_doc->light(row).color != light.color;
-    if (mixedColor) m_color->setMixed(true);
+    for (const LightPropertyInfo& row : lightProperties()) {
+        const Field& f = m_parts[row.id];
+        loadValue(row, f, light);
+        // A value each light has for itself (the name) is edited with one light selected.
+        if (row.uniquePerLight) f.widget->setEnabled(rows.size() == 1);
+        if (f.color && row.kind == LightValueKind::Color) {
+            bool mixed = false;
+            for (int r : rows)
+                mixed = mixed || row.get(m_doc->light(r)) != row.get(light);
+            if (mixed) f.color->setMixed(true);
+        }
+    }
 }
 
 void PropertiesDock::updateVisibility(const QList<int>& rows) {
@@ -337,46 +299,59 @@ void PropertiesDock::updateVisibility(const QList<int>& rows) {
     }
 }
 
-void PropertiesDock::loadValues(const Light& light) {
-    if (!m_name->hasFocus() || m_name->text() != light.name) m_name->setText(light.name);
-    setCombo(m_type, int(light.type));
-    setCheck(m_enabled, light.enabled);
-    m_color->setColor(light.color);
-    setCheck(m_temperatureOn, light.temperature.has_value());
-    if (light.temperature) m_temperature->setValueQuietly(*light.temperature);
-    m_temperature->setEnabled(light.temperature.has_value());
-    m_intensity->setValue(light.intensity);
-    m_position->setValue(light.position);
-    m_direction->setValue(light.direction);
-    const Falloff& f = light.falloff;
-    setCombo(m_falloff, int(f.model));
-    const bool rangeOptional =
-        f.model == FalloffModel::InversePolynomial || f.model == FalloffModel::InverseSquare;
-    m_rangeOn->setVisible(rangeOptional);
-    setCheck(m_rangeOn, f.hasRange());
-    if (f.hasRange()) m_range->setValueQuietly(f.range);
-    m_range->setEnabled(f.hasRange() || !rangeOptional);
-    m_numbers[P::FalloffExponent]->setValueQuietly(f.exponent);
-    m_numbers[P::FalloffConstant]->setValueQuietly(f.constant);
-    m_numbers[P::FalloffLinear]->setValueQuietly(f.linear);
-    m_numbers[P::FalloffQuadratic]->setValueQuietly(f.quadratic);
-    setCombo(m_cone, int(light.cone.model));
-    m_numbers[P::ConeInner]->setValueQuietly(light.cone.inner);
-    m_numbers[P::ConeOuter]->setValueQuietly(light.cone.outer);
-    m_numbers[P::ConeExponent]->setValueQuietly(light.cone.exponent);
-    setCombo(m_diffuse, int(light.diffuse));
-    setCombo(m_specularKind, light.specularIsColor ? 1 : 0);
-    m_specularFactor->setVisible(!light.specularIsColor);
-    m_specularColor->setVisible(light.specularIsColor);
-    if (light.specularIsColor)
-        m_specularColor->setColor(light.specular);
-    else
-        m_specularFactor->setValueQuietly(light.specular.x);
-    if (!light.specularIsColor) m_specularColor->setColor(light.specular);
-    setCheck(m_ambientOn, light.ambient.has_value());
-    m_ambient->setColor(light.ambient.value_or(glm::dvec3(0.05)));
-    m_ambient->setEnabled(light.ambient.has_value());
-    m_numbers[P::RimExponent]->setValueQuietly(light.rimExponent);
+void PropertiesDock::loadValue(const LightPropertyInfo& row, const Field& f, const Light& light) {
+    const QVariant value = row.get(light);
+    switch (propertyField(row.id).editor) {
+    case PropertyEditor::LineEdit:
+        if (!f.line->hasFocus() || f.line->text() != value.toString()) f.line->setText(value.toString());
+        break;
+    case PropertyEditor::ComboBox:
+        setCombo(f.combo, value.toInt());
+        break;
+    case PropertyEditor::CheckBox:
+        setCheck(f.check, value.toBool());
+        break;
+    case PropertyEditor::ColorButton:
+        f.color->setColor(value.value<glm::dvec3>());
+        break;
+    case PropertyEditor::Number:
+        f.number->setValueQuietly(value.toDouble());
+        break;
+    case PropertyEditor::LogSlider:
+        f.slider->setValue(value.toDouble());
+        break;
+    case PropertyEditor::OptionalNumber: {
+        // The "has a value" box only where "none" is allowed for this light (a range-power falloff needs
+        // its range; an inverse-square one may have none).
+        const bool noneAllowed = validateLightValue(light, row.id, QVariant()).isEmpty();
+        f.check->setVisible(noneAllowed);
+        setCheck(f.check, value.isValid());
+        if (value.isValid()) f.number->setValueQuietly(value.toDouble());
+        f.number->setEnabled(value.isValid() || !noneAllowed);
+        break;
+    }
+    case PropertyEditor::OptionalColor:
+        setCheck(f.check, value.isValid());
+        f.color->setColor(value.isValid() ? value.value<glm::dvec3>() : glm::dvec3(0.05));
+        f.color->setEnabled(value.isValid());
+        break;
+    case PropertyEditor::Vector:
+        f.vector->setValue(value.value<glm::dvec3>());
+        break;
+    case PropertyEditor::FactorOrColor: {
+        const bool isColor = value.metaType() == QMetaType::fromType<glm::dvec3>();
+        setCombo(f.combo, isColor ? 1 : 0);
+        f.number->setVisible(!isColor);
+        f.color->setVisible(isColor);
+        if (isColor) {
+            f.color->setColor(value.value<glm::dvec3>());
+        } else {
+            f.number->setValueQuietly(value.toDouble());
+            f.color->setColor(glm::dvec3(value.toDouble()));
+        }
+        break;
+    }
+    }
 }
 
 } // namespace lr

@@ -1,5 +1,6 @@
-// Which light properties the Properties dock shows for a light: exactly the values its type and its
-// falloff/cone models use (docs/rig-format.md), in display order.
+// Which light properties the Properties dock shows for a light, in which order and with which editor widget.
+// What a property is (label, limits, suffix, which types use it, when it is shown) is its row in the
+// light-property table (editor/lightproperty.h); this file adds only how the dock edits it.
 #pragma once
 
 #include "core/rig.h"
@@ -9,11 +10,34 @@
 
 namespace lr {
 
-// Every property the dock can show, in the order of its rows.
+// The widget a row of the dock edits its property with.
+enum class PropertyEditor {
+    LineEdit,       // QLineEdit (Text)
+    ComboBox,       // QComboBox of the row's choices (Enum)
+    CheckBox,       // QCheckBox (Bool)
+    ColorButton,    // ColorButton (Color)
+    Number,         // NumberEdit with the row's limits and suffix (Number)
+    LogSlider,      // LogSliderEdit: a logarithmic slider beside a NumberEdit (wide Number ranges)
+    OptionalNumber, // a "has a value" QCheckBox beside a NumberEdit (OptionalNumber)
+    OptionalColor,  // a "has a value" QCheckBox beside a ColorButton (OptionalColor)
+    Vector,         // Vec3Edit (Vector)
+    FactorOrColor,  // a factor/colour QComboBox beside a NumberEdit and a ColorButton (FactorOrColor)
+};
+
+struct PropertyField {
+    LightProperty property;
+    PropertyEditor editor;
+    double initial = 0.0;   // OptionalNumber: the value offered when "none" is switched on
+    double sliderMin = 0.0; // LogSlider: the smallest non-zero slider value
+};
+
+// Every property the dock can show, in the order of its rows (the property table's order).
 const QList<LightProperty>& propertyRows();
-// The object name of a property's field widget ("coneOuter"), used by tests and style sheets.
+// How the dock edits a property: the default editor of its kind unless kFieldEditors names another.
+PropertyField propertyField(LightProperty property);
+// The object name of a property's field widget ("coneOuter": the row's key), used by tests and style sheets.
 QString propertyFieldName(LightProperty property);
-// Whether the dock shows `property` for this light.
+// Whether the dock shows `property` for this light (LightPropertyInfo::isShown).
 bool propertyShown(const Light& light, LightProperty property);
 
 } // namespace lr

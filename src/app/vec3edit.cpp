@@ -20,7 +20,12 @@ Vec3Edit::Vec3Edit(QWidget* parent) : QWidget(parent) {
         layout->addWidget(e);
         m_edits[size_t(axis)] = e;
         connect(e, &NumberEdit::valueEdited, this, [this, axis](double v) { emit componentEdited(axis, v); });
-        connect(e, &QAbstractSpinBox::editingFinished, this, &Vec3Edit::editFinished);
+        // Moving between x, y and z is one edit: it finishes when focus leaves the three fields.
+        // (A spin box reports editingFinished on focus out, when the window's focus has already moved.)
+        connect(e, &QAbstractSpinBox::editingFinished, this, [this] {
+            const QWidget* focus = window()->focusWidget();
+            if (!focus || !isAncestorOf(focus)) emit editFinished();
+        });
         connect(e, &NumberEdit::rejected, this, &Vec3Edit::rejected);
         connect(e, &NumberEdit::accepted, this, &Vec3Edit::accepted);
     }

@@ -1,5 +1,7 @@
 // Three NumberEdits for a position or direction. Edits are reported per component so that, with several
-// lights selected, changing x moves every light's x and leaves their y and z alone.
+// lights selected, changing x moves every light's x and leaves their y and z alone. The edit of the vector
+// finishes (editFinished) when focus leaves all three fields, not when it moves from x to y: typing x, y and
+// z is one edit.
 #pragma once
 
 #include <QWidget>

@@ -194,10 +194,11 @@ int runBench(const QStringList& args) {
     const bool suite = models.isEmpty();
     const bool procedural = !counts.empty() || !types.empty() || (suite && !parser.isSet(scene.rig));
     if (procedural && counts.empty()) counts = suite ? std::vector<int>{1, 8, 64, 256} : std::vector<int>{8};
-    if (procedural && types.empty())
-        types = suite ? std::vector<LightType>{LightType::Point, LightType::Spot, LightType::Directional,
-                                               LightType::Rim}
-                      : std::vector<LightType>{LightType::Point};
+    if (procedural && types.empty()) {
+        constexpr auto all = allLightTypes();
+        types =
+            suite ? std::vector<LightType>(all.begin(), all.end()) : std::vector<LightType>{LightType::Point};
+    }
 
     auto failed = [&](const QString& reason) {
         err << name << ": " << QString(reason).replace(QLatin1Char('\n'), QLatin1String(" | ")) << '\n';

@@ -115,27 +115,17 @@ glm::dvec3 Light::effectiveColor() const {
 }
 
 Light makeLight(LightType type, const QString& name) {
+    const LightTypeTraits& t = traitsOf(type);
     Light l;
     l.name = name;
     l.type = type;
     l.position = glm::dvec3(2.0, 2.0, 2.0);
-    switch (type) {
-    case LightType::Point:
-        l.falloff = {FalloffModel::RangePower, 8.0, 2.0};
-        break;
-    case LightType::Spot:
-        l.direction = lighting::safeNormalize(-l.position, glm::dvec3(0, -1, 0));
-        l.falloff = {FalloffModel::RangePower, 8.0, 2.0};
-        l.cone = {ConeModel::Smooth, 20.0, 35.0, 1.0};
-        break;
-    case LightType::Directional:
-        l.direction = lighting::safeNormalize(glm::dvec3(-1, -1, -1), glm::dvec3(0, -1, 0));
-        break;
-    case LightType::Rim:
-        l.direction = glm::dvec3(0, 0, -1);
-        break;
+    if (t.usesDirection) {
+        const glm::dvec3 d(t.defaultDirection[0], t.defaultDirection[1], t.defaultDirection[2]);
+        l.direction = lighting::safeNormalize(d == glm::dvec3(0.0) ? -l.position : d, glm::dvec3(0, -1, 0));
     }
-    return l;
+    if (t.usesFalloff) l.falloff = {FalloffModel::RangePower, t.defaultRange, 2.0};
+    return l; // the cone: Cone{} (smooth, 20°/35°, exponent 1)
 }
 
 } // namespace lr

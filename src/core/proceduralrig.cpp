@@ -32,19 +32,6 @@ glm::dvec3 hsvToRgb(double h, double s, double v) {
     }
 }
 
-double defaultTotal(LightType type) {
-    switch (type) {
-    case LightType::Point:
-    case LightType::Spot:
-        return 6.0;
-    case LightType::Directional:
-        return 1.6;
-    case LightType::Rim:
-        return 0.8;
-    }
-    return 1.0;
-}
-
 } // namespace
 
 Rig proceduralRig(const ProceduralRigOptions& o) {
@@ -53,7 +40,7 @@ Rig proceduralRig(const ProceduralRigOptions& o) {
     rig.space = RigSpace::Model;
     rig.ambient = glm::dvec3(0.02);
     const int n = std::max(0, o.count);
-    const double total = o.totalIntensity > 0.0 ? o.totalIntensity : defaultTotal(o.type);
+    const double total = o.totalIntensity > 0.0 ? o.totalIntensity : traitsOf(o.type).benchIntensity;
     rig.lights.reserve(size_t(n));
     for (int i = 0; i < n; ++i) {
         Light l = makeLight(o.type, QStringLiteral("L%1").arg(i));
@@ -72,7 +59,7 @@ Rig proceduralRig(const ProceduralRigOptions& o) {
         if (l.usesCone())
             l.cone = {ConeModel::Smooth, 0.3 * 180.0 / glm::pi<double>(), 0.6 * 180.0 / glm::pi<double>(),
                       2.0};
-        if (o.type == LightType::Rim) l.rimExponent = 1.3;
+        if (l.usesRimExponent()) l.rimExponent = 1.3;
         rig.lights.push_back(std::move(l));
     }
     return rig;

@@ -2,6 +2,7 @@
 // angles are stored in degrees as in files (the formulas take radians), directions are unit length.
 #pragma once
 
+#include "lighttypes.h"
 #include "types.h"
 
 #include <QString>
@@ -36,21 +37,23 @@ struct Light {
     glm::dvec3 color{1.0};
     double intensity = 1.0;
     std::optional<double> temperature;            // kelvin, tints color
-    glm::dvec3 position{0.0};                     // point, spot
-    glm::dvec3 direction{0.0, -1.0, 0.0};         // spot, directional, rim: where the light travels
-    Falloff falloff;                              // point, spot
-    Cone cone;                                    // spot
-    DiffuseModel diffuse = DiffuseModel::Lambert; // not rim
+    glm::dvec3 position{0.0};                     // usesPosition()
+    glm::dvec3 direction{0.0, -1.0, 0.0};         // usesDirection(): where the light travels
+    Falloff falloff;                              // usesFalloff()
+    Cone cone;                                    // usesCone()
+    DiffuseModel diffuse = DiffuseModel::Lambert; // usesSurfaceModels()
     bool specularIsColor = false;                 // file wrote an RGB colour rather than a factor
     glm::dvec3 specular{1.0};                     // factor f is stored as (f, f, f)
-    std::optional<glm::dvec3> ambient;            // not rim
-    double rimExponent = 1.3;                     // rim
+    std::optional<glm::dvec3> ambient;            // usesSurfaceModels()
+    double rimExponent = 1.3;                     // usesRimExponent()
 
-    bool usesPosition() const { return type == LightType::Point || type == LightType::Spot; }
-    bool usesDirection() const { return type != LightType::Point; }
-    bool usesFalloff() const { return usesPosition(); }
-    bool usesCone() const { return type == LightType::Spot; }
-    bool usesSurfaceModels() const { return type != LightType::Rim; } // diffuse, specular, ambient
+    // What its type uses (lighttypes.h).
+    bool usesPosition() const { return traitsOf(type).usesPosition; }
+    bool usesDirection() const { return traitsOf(type).usesDirection; }
+    bool usesFalloff() const { return traitsOf(type).usesFalloff; }
+    bool usesCone() const { return traitsOf(type).usesCone; }
+    bool usesSurfaceModels() const { return traitsOf(type).usesSurfaceModels; } // diffuse, specular, ambient
+    bool usesRimExponent() const { return traitsOf(type).usesRimExponent; }
     // The colour actually emitted: color tinted by temperature (if any), linear RGB.
     glm::dvec3 effectiveColor() const;
     bool operator==(const Light&) const = default;

@@ -63,8 +63,8 @@ std::optional<Light> readLight(Checker& c, const Value& v, const QString& path) 
             c.error(o.path("position"), QStringLiteral("missing; %1 needs a position [x, y, z]").arg(a));
         }
     } else {
-        o.reject("position",
-                 QStringLiteral("%1 has no position (only point and spot lights have one)").arg(a));
+        o.reject("position", QStringLiteral("%1 has no position (only %2 lights have one)")
+                                 .arg(a, lightTypesWith(&LightTypeTraits::usesPosition)));
     }
     if (is(&Light::usesDirection)) {
         if (const Value* d = o.take("direction")) {
@@ -75,7 +75,7 @@ std::optional<Light> readLight(Checker& c, const Value& v, const QString& path) 
                 QStringLiteral("missing; %1 needs a direction [x, y, z], where its light travels").arg(a));
         }
     } else {
-        o.reject("direction", QStringLiteral("a point light has no direction (it shines in all directions)"));
+        o.reject("direction", QStringLiteral("%1 has no direction (it shines in all directions)").arg(a));
     }
     if (is(&Light::usesFalloff)) {
         if (const Value* f = o.take("falloff")) {
@@ -85,13 +85,15 @@ std::optional<Light> readLight(Checker& c, const Value& v, const QString& path) 
                     QStringLiteral("missing; %1 needs a falloff, e.g. {\"model\": \"none\"}").arg(a));
         }
     } else {
-        o.reject("falloff", QStringLiteral("%1 has no falloff (only point and spot lights have one)").arg(a));
+        o.reject("falloff", QStringLiteral("%1 has no falloff (only %2 lights have one)")
+                                .arg(a, lightTypesWith(&LightTypeTraits::usesFalloff)));
     }
     if (is(&Light::usesCone)) {
         if (const Value* cv = o.take("cone"))
             if (const auto cone = readCone(c, *cv, o.path("cone"))) l.cone = *cone;
     } else {
-        o.reject("cone", QStringLiteral("%1 has no cone (only spot lights have one)").arg(a));
+        o.reject("cone", QStringLiteral("%1 has no cone (only %2 lights have one)")
+                             .arg(a, lightTypesWith(&LightTypeTraits::usesCone)));
     }
     if (is(&Light::usesSurfaceModels)) {
         o.read("diffuse", l.diffuse,
@@ -100,15 +102,16 @@ std::optional<Light> readLight(Checker& c, const Value& v, const QString& path) 
         if (const Value* am = o.take("ambient")) l.ambient = c.color(*am, o.path("ambient"));
     } else {
         for (const char* key : {"diffuse", "specular", "ambient"})
-            o.reject(key, QStringLiteral("a rim light has no %1 term").arg(QLatin1String(key)));
+            o.reject(key, QStringLiteral("%1 has no %2 term").arg(a, QLatin1String(key)));
     }
-    if (!type || type == LightType::Rim)
+    if (is(&Light::usesRimExponent))
         o.read("exponent", l.rimExponent, [&](const Value& x, const QString& p) {
             return c.number(x, p, rigjson::positive(kMaxRigExponent));
         });
     else
-        o.reject("exponent", QStringLiteral("only rim lights have an exponent; a falloff or cone exponent "
-                                            "belongs in \"falloff\" or \"cone\""));
+        o.reject("exponent", QStringLiteral("only %1 lights have an exponent; a falloff or cone exponent "
+                                            "belongs in \"falloff\" or \"cone\"")
+                                 .arg(lightTypesWith(&LightTypeTraits::usesRimExponent)));
     rejectMisplaced(o, false, false, a, is(&Light::usesFalloff), is(&Light::usesCone));
     o.finish();
     return type ? std::optional(l) : std::nullopt;

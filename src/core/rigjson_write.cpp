@@ -96,7 +96,7 @@ QByteArray light(const Light& l) {
             f.push_back({"specular", num(l.specular.x)});
         if (l.ambient) f.push_back({"ambient", vec(*l.ambient)});
     }
-    if (l.type == LightType::Rim) f.push_back({"exponent", num(l.rimExponent)});
+    if (l.usesRimExponent()) f.push_back({"exponent", num(l.rimExponent)});
     return blockObject(f, "    ");
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "lighting.h"
+#include "lighttypes.h"
 
 #include <span>
 
@@ -84,7 +85,7 @@ Vec3<T> shadeLight(const ShadeLight<T>& l, const Surface<T>& s, const ShadeSetti
 
     Vec3<T> L = -l.direction;
     T attenuation = T(1);
-    if (l.type != LightType::Directional) {
+    if (traitsOf(l.type).usesPosition) {
         const Vec3<T> toLight = l.position - s.position;
         L = safeNormalize(toLight, N); // a light on the surface shines along the normal
         // |toLight| as dot(toLight, L): no squared intermediate, so no overflow or underflow where
@@ -94,7 +95,7 @@ Vec3<T> shadeLight(const ShadeLight<T>& l, const Surface<T>& s, const ShadeSetti
         T d = glm::dot(toLight, L) * st.distanceScale;
         if (!(std::abs(d) <= std::numeric_limits<T>::max())) d = std::numeric_limits<T>::max();
         attenuation = evalFalloff(l, d);
-        if (l.type == LightType::Spot) attenuation *= evalCone(l, glm::dot(-L, l.direction));
+        if (traitsOf(l.type).usesCone) attenuation *= evalCone(l, glm::dot(-L, l.direction));
         if (!(attenuation > T(0))) return Vec3<T>(0);
     }
     const T nDotL = glm::dot(N, L);

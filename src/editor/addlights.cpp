@@ -23,20 +23,23 @@ std::unique_ptr<AddLights> AddLights::create(Document* doc, int row, std::vector
 }
 
 AddLights::AddLights(Document* doc, int row, std::vector<Light> lights, const QString& text)
-    : m_doc(doc), m_row(row), m_lights(std::move(lights)) {
+    : RigCommand(doc), m_row(row), m_lights(std::move(lights)) {
     setText(text);
 }
 
 void AddLights::undo() {
-    m_doc->removeLightsAt(m_row, count());
+    removeLights(m_ids);
 }
 
 void AddLights::redo() {
     if (m_ids.isEmpty())
         for (size_t i = 0; i < m_lights.size(); ++i)
-            m_ids.append(m_doc->newLightId());
-    m_doc->insertLightsAt(m_row, m_lights, m_ids);
-    m_doc->setSelection(QSet<LightId>(m_ids.begin(), m_ids.end()), m_ids.front());
+            m_ids.append(newLightId());
+    QList<int> rows;
+    for (int i = 0; i < count(); ++i)
+        rows.append(m_row + i);
+    insertLights(rows, m_lights, m_ids);
+    select(m_ids);
 }
 
 } // namespace lr

@@ -2,15 +2,14 @@
 // on the first redo and keep them through undo/redo; redo selects them.
 #pragma once
 
-#include "editor/document.h"
+#include "editor/rigcommand.h"
 
-#include <QUndoCommand>
 #include <memory>
 #include <vector>
 
 namespace lr {
 
-class AddLights : public QUndoCommand {
+class AddLights : public RigCommand {
   public:
     // row: insertion index (-1: append). nullptr and *error when the rig would exceed kMaxRigLights, when
     // lights is empty or a light is invalid (validateLight).
@@ -25,7 +24,6 @@ class AddLights : public QUndoCommand {
     AddLights(Document* document, int row, std::vector<Light> lights, const QString& text);
 
   private:
-    Document* m_doc;
     int m_row;
     std::vector<Light> m_lights;
     QList<LightId> m_ids; // assigned on first redo

@@ -43,43 +43,67 @@ std::unique_ptr<ChangeLightValue> ChangeLightValue::create(Document* doc, const 
     order.erase(std::unique(order.begin(), order.end(), [](auto a, auto b) { return a.first == b.first; }),
                 order.end());
 
-    QList<int> kept;
+    const LightPropertyInfo& row = *lightPropertyInfo(property);
+    QList<LightId> kept;
     std::vector<Light> before, after;
     kept.reserve(qsizetype(order.size()));
     before.reserve(order.size());
     after.reserve(order.size());
-    for (const auto& [row, vi] : order) {
-        const Light& l = doc->light(row);
-        if (!lightPropertyApplies(l, property)) continue;
+    bool changes = false;
+    for (const auto& [r, vi] : order) {
+        const Light& l = doc->light(r);
+        if (!row.applies(l)) continue;
         if (const QString e = validateLightValue(l, property, values[vi]); !e.isEmpty())
             return fail(order.size() > 1 ? QStringLiteral("%1: %2").arg(l.name, e) : e);
-        kept.append(row);
+        kept.append(doc->lightId(r));
         before.push_back(l);
         after.push_back(withLightValue(l, property, values[vi]));
+        changes = changes || after.back() != l;
     }
     if (kept.isEmpty())
         return fail(tr("the %1 does not apply to %2")
-                        .arg(lightPropertyName(property),
+                        .arg(row.displayName(),
                              rows.size() == 1 ? doc->light(rows[0]).name : tr("the selected lights")));
-    return std::unique_ptr<ChangeLightValue>(
-        new ChangeLightValue(doc, std::move(kept), property, std::move(before), std::move(after)));
+    if (row.uniquePerLight) {
+        // No two lights share it (names): a value another light has, or one given to several lights, gets
+        // the first free number, as Add names new lights ("Key" -> "Key 2").
+        QSet<QString> taken;
+        for (int i = 0; i < doc->lightCount(); ++i)
+            if (!kept.contains(doc->lightId(i))) taken.insert(row.get(doc->light(i)).toString());
+        changes = false;
+        for (size_t i = 0; i < after.size(); ++i) {
+            const QString wanted = row.get(after[i]).toString();
+            QString name = wanted;
+            for (int n = 2; taken.contains(name); ++n)
+                name = QStringLiteral("%1 %2").arg(wanted).arg(n);
+            taken.insert(name);
+            after[i] = withLightValue(after[i], property, name);
+            if (const QString e = validateLightValue(after[i], property, name); !e.isEmpty()) return fail(e);
+            changes = changes || after[i] != before[i];
+        }
+    }
+    if (!changes) return fail(QString()); // nothing to do: no step, and not an error
+    return std::unique_ptr<ChangeLightValue>(new ChangeLightValue(doc, std::move(kept), property,
+                                                                  std::move(before), std::move(after),
+                                                                  values.value(order.front().second)));
 }
 
-ChangeLightValue::ChangeLightValue(Document* doc, QList<int> rows, LightProperty property,
-                                   std::vector<Light> before, std::vector<Light> after)
-    : m_doc(doc), m_rows(std::move(rows)), m_property(property), m_before(std::move(before)),
+ChangeLightValue::ChangeLightValue(Document* doc, QList<LightId> ids, LightProperty property,
+                                   std::vector<Light> before, std::vector<Light> after, const QVariant& value)
+    : RigCommand(doc), m_ids(std::move(ids)), m_property(property), m_before(std::move(before)),
       m_after(std::move(after)), m_session(doc->continuousEditSession()) {
-    const QString what = lightPropertyName(property);
-    setText(m_rows.size() == 1 ? tr("Change %1 of %2").arg(what, m_before.front().name)
-                               : tr("Change %1 of %2 lights").arg(what).arg(m_rows.size()));
+    const LightPropertyInfo& row = *lightPropertyInfo(property);
+    const QString lights = m_ids.size() == 1 ? m_before.front().name : tr("%1 lights").arg(m_ids.size());
+    setText(row.undoText ? row.undoText(lights, value)
+                         : tr("Change %1 of %2").arg(row.displayName(), lights));
 }
 
 void ChangeLightValue::undo() {
-    m_doc->setLightsAt(m_rows, m_before, m_property);
+    setLights(m_ids, m_before, m_property);
 }
 
 void ChangeLightValue::redo() {
-    m_doc->setLightsAt(m_rows, m_after, m_property);
+    setLights(m_ids, m_after, m_property);
     updateObsolete();
 }
 
@@ -89,7 +113,7 @@ void ChangeLightValue::updateObsolete() {
 
 bool ChangeLightValue::mergeWith(const QUndoCommand* other) {
     const auto* o = static_cast<const ChangeLightValue*>(other);
-    if (m_session == 0 || o->m_session != m_session || o->m_property != m_property || o->m_rows != m_rows)
+    if (m_session == 0 || o->m_session != m_session || o->m_property != m_property || o->m_ids != m_ids)
         return false;
     m_after = o->m_after;
     updateObsolete();

@@ -38,17 +38,17 @@ std::unique_ptr<ChangeRigValue> ChangeRigValue::create(Document* doc, RigPropert
 }
 
 ChangeRigValue::ChangeRigValue(Document* doc, RigProperty property, QVariant before, QVariant after)
-    : m_doc(doc), m_property(property), m_before(std::move(before)), m_after(std::move(after)),
+    : RigCommand(doc), m_property(property), m_before(std::move(before)), m_after(std::move(after)),
       m_session(doc->continuousEditSession()) {
     setText(tr("Change %1").arg(rigPropertyName(property)));
 }
 
 void ChangeRigValue::undo() {
-    m_doc->setRigValueNow(m_property, m_before);
+    setRigValue(m_property, m_before);
 }
 
 void ChangeRigValue::redo() {
-    m_doc->setRigValueNow(m_property, m_after);
+    setRigValue(m_property, m_after);
     setObsolete(settingsWith(Rig{}, m_property, m_before) == settingsWith(Rig{}, m_property, m_after));
 }
 

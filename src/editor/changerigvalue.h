@@ -3,12 +3,11 @@
 
 #include "editor/changelightvalue.h" // CommandId
 
-#include <QUndoCommand>
 #include <memory>
 
 namespace lr {
 
-class ChangeRigValue : public QUndoCommand {
+class ChangeRigValue : public RigCommand {
   public:
     // nullptr and *error when the value is invalid (validateRigValue).
     static std::unique_ptr<ChangeRigValue> create(Document* document, RigProperty property,
@@ -21,7 +20,6 @@ class ChangeRigValue : public QUndoCommand {
 
   private:
     ChangeRigValue(Document* document, RigProperty property, QVariant before, QVariant after);
-    Document* m_doc;
     RigProperty m_property;
     QVariant m_before, m_after;
     int m_session;

@@ -1,13 +1,12 @@
-// All undo commands of the editor (one family per file). Usually pushed through Document's convenience
-// methods; each has a static create() that validates first and returns nullptr with a reason when refused.
+// All undo commands of the editor (one family per file, each a RigCommand: rigcommand.h). Usually pushed
+// through Document's convenience methods; each has a static create() that validates first and returns nullptr
+// with a reason when refused. ChangeLightValue is the only command that changes values of lights.
 #pragma once
 
 #include "editor/addlights.h"
 #include "editor/changelightvalue.h"
 #include "editor/changerigvalue.h"
 #include "editor/duplicatelights.h"
-#include "editor/enablelights.h"
 #include "editor/movelights.h"
 #include "editor/removelights.h"
-#include "editor/renamelight.h"
 #include "editor/replacerig.h"

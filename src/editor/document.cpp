@@ -142,8 +142,8 @@ bool Document::setRigValue(RigProperty property, const QVariant& value, QString*
     return pushChecked(cmd.release(), error, reason);
 }
 
-QString Document::uniqueLightName(const QString& base) const {
-    QSet<QString> names;
+QString Document::uniqueLightName(const QString& base, const QSet<QString>& taken) const {
+    QSet<QString> names = taken;
     for (const Light& l : m_rig.lights)
         names.insert(l.name);
     if (!names.contains(base)) return base;
@@ -154,9 +154,7 @@ QString Document::uniqueLightName(const QString& base) const {
 }
 
 bool Document::addLight(LightType type, QString* error) {
-    QString base = toString(type);
-    base[0] = base[0].toUpper();
-    const Light light = makeLight(type, uniqueLightName(base));
+    const Light light = makeLight(type, uniqueLightName(lightTypeLabel(type)));
     return addLights(-1, {light}, tr("Add %1 light").arg(toString(type)), error);
 }
 
@@ -185,15 +183,11 @@ bool Document::moveLights(const QList<int>& rows, int destination, QString* erro
 }
 
 bool Document::renameLight(int row, const QString& name, QString* error) {
-    QString reason;
-    auto cmd = RenameLight::create(this, row, name, &reason);
-    return pushChecked(cmd.release(), error, reason);
+    return setLightValue({row}, LightProperty::Name, name, error);
 }
 
 bool Document::setLightsEnabled(const QList<int>& rows, bool enabled, QString* error) {
-    QString reason;
-    auto cmd = EnableLights::create(this, rows, enabled, &reason);
-    return pushChecked(cmd.release(), error, reason);
+    return setLightValue(rows, LightProperty::Enabled, enabled, error);
 }
 
 bool Document::replaceRig(const Rig& rig, const QString& text, QString* error) {

@@ -102,17 +102,20 @@ class Document : public QObject {
     // Inserts lights at row (-1: append) as one step and selects them.
     bool addLights(int row, const std::vector<Light>& lights, const QString& text, QString* error = nullptr);
     bool removeLights(const QList<int>& rows, QString* error = nullptr);
-    // Copies ("NAME copy") inserted as one block after the last of rows, then selected.
+    // Copies inserted as one block after the last of rows, then selected: each named like Add names a new
+    // light ("Key" -> "Key 2", "Key 2" -> "Key 3") and, when it has a position, moved a little aside so it
+    // does not hide its original.
     bool duplicateLights(const QList<int>& rows, QString* error = nullptr);
     // Moves rows (any set) so they end up contiguous, in their current order, before the light that is now at
     // index destination (0..lightCount(); lightCount() = to the end). Same convention as Qt's drop row.
     bool moveLights(const QList<int>& rows, int destination, QString* error = nullptr);
+    // setLightValue for the name (numbered when another light has it: "Key 2") and for on/off.
     bool renameLight(int row, const QString& name, QString* error = nullptr);
     bool setLightsEnabled(const QList<int>& rows, bool enabled, QString* error = nullptr);
     // One undo step replacing the whole rig (apply preset, import lights from a model).
     bool replaceRig(const Rig& rig, const QString& text, QString* error = nullptr);
-    // "Spot", "Spot 2", ... : the first "BASE" / "BASE N" no light is called.
-    QString uniqueLightName(const QString& base) const;
+    // "Spot", "Spot 2", ... : the first "BASE" / "BASE N" no light is called (nor any of `taken`).
+    QString uniqueLightName(const QString& base, const QSet<QString>& taken = {}) const;
 
     // ---- selection (not an undo step) ----
     const QSet<LightId>& selection() const { return m_selection; }
@@ -142,16 +145,9 @@ class Document : public QObject {
     void modifiedChanged(bool modified);       // the undo stack's clean state changed
 
   private:
-    friend class ChangeLightValue;
-    friend class ChangeRigValue;
-    friend class AddLights;
-    friend class RemoveLights;
-    friend class MoveLights;
-    friend class RenameLight;
-    friend class ReplaceRig;
-    friend class EnableLights;
+    friend class RigCommand; // the mutation interface of every undo command (rigcommand.h)
 
-    // Primitives for the commands. Each emits the RigChange signals and prunes selection/solo as needed.
+    // Primitives behind RigCommand. Each emits the RigChange signals and prunes selection/solo as needed.
     LightId newLightId() { return ++m_lastId; }
     void setLightsAt(const QList<int>& rows, const std::vector<Light>& lights, LightProperty property);
     void insertLightsAt(int row, const std::vector<Light>& lights, const QList<LightId>& ids);

@@ -2,7 +2,9 @@
 
 #include "core/rigjson.h"
 
+#include <QCoreApplication>
 #include <QVector3D>
+#include <array>
 #include <cmath>
 #include <glm/geometric.hpp>
 
@@ -100,58 +102,450 @@ bool rangeOptional(FalloffModel m) {
            m == FalloffModel::None;
 }
 
+// ---- value conversions and checks used by the table's rows ----
+
+double number(const QVariant& v, double fallback) {
+    return toDouble(v).value_or(fallback);
+}
+
+template <typename E> QString enumCheck(const LightPropertyInfo& row, const QVariant& v) {
+    return checkEnum<E>(row.displayName(), v);
+}
+
+template <typename E> QStringList enumChoices() {
+    QStringList out;
+    for (int i = 0; i < enumCount<E>(); ++i)
+        out << toString(E(i));
+    return out;
+}
+
+QStringList lightTypeChoices() {
+    QStringList out;
+    for (const LightType t : allLightTypes())
+        out << lightTypeLabel(t);
+    return out;
+}
+
+QString checkName(const LightPropertyInfo&, const QVariant& v) {
+    if (v.metaType().id() != QMetaType::QString) return QStringLiteral("name must be text");
+    const QString s = v.toString();
+    if (s.trimmed().isEmpty()) return QStringLiteral("name must not be empty");
+    if (s.size() > kMaxLightNameLength)
+        return QStringLiteral("name must be at most %1 characters, got %2")
+            .arg(kMaxLightNameLength)
+            .arg(s.size());
+    for (const QChar c : s)
+        if (c.category() == QChar::Other_Control)
+            return QStringLiteral("name must not contain control characters");
+    return {};
+}
+
+QString checkBool(const LightPropertyInfo& row, const QVariant& v) {
+    return v.metaType().id() == QMetaType::Bool
+               ? QString()
+               : QStringLiteral("%1 must be true or false").arg(row.displayName());
+}
+
+QString checkDirection(const LightPropertyInfo& row, const QVariant& v) {
+    const auto d = toVec3(v, false);
+    if (QString e = checkVec3(row.displayName(), d, row.min, row.max); !e.isEmpty()) return e;
+    const double len = glm::length(*d);
+    if (!(len > 1e-12) || !std::isfinite(len)) return QStringLiteral("direction must not be zero");
+    return {};
+}
+
+QString checkSpecular(const LightPropertyInfo& row, const QVariant& v) {
+    if (auto c = toVec3(v, true)) return checkVec3(QStringLiteral("specular colour"), c, row.min, row.max);
+    return checkRange(QStringLiteral("specular factor"), toDouble(v), row.min, row.max, false);
+}
+
+QString undoRename(const QString& light, const QVariant& name) {
+    return QCoreApplication::translate("lr::ChangeLightValue", "Rename %1 to %2").arg(light, name.toString());
+}
+
+QString undoSwitch(const QString& lights, const QVariant& on) {
+    return on.toBool() ? QCoreApplication::translate("lr::ChangeLightValue", "Switch on %1").arg(lights)
+                       : QCoreApplication::translate("lr::ChangeLightValue", "Switch off %1").arg(lights);
+}
+
+bool hasRangeModel(const Light& l) {
+    return l.falloff.model != FalloffModel::None;
+}
+
+using P = LightProperty;
+using K = LightValueKind;
+using T = LightTypeTraits;
+
+// One row per property, in the Properties dock's order. The rig format's limits are in lightproperty.h.
+const LightPropertyInfo kLightProperties[] = {
+    {.id = P::Name,
+     .name = QT_TRANSLATE_NOOP("lr::LightProperty", "name"),
+     .label = QT_TRANSLATE_NOOP("lr::LightProperty", "&Name"),
+     .key = "name",
+     .jsonField = "name",
+     .kind = K::Text,
+     .check = checkName,
+     .get = [](const Light& l) { return QVariant(l.name); },
+     .set = [](Light& l, const QVariant& v) { l.name = v.toString(); },
+     .undoText = undoRename,
+     .uniquePerLight = true},
+    {.id = P::Type,
+     .name = QT_TRANSLATE_NOOP("lr::LightProperty", "type"),
+     .label = QT_TRANSLATE_NOOP("lr::LightProperty", "&Type"),
+     .key = "type",
+     .jsonField = "type",
+     .kind = K::Enum,
+     .check = enumCheck<LightType>,
+     .choices = lightTypeChoices,
+     .get = [](const Light& l) { return QVariant::fromValue(l.type); },
+     .set = [](Light& l, const QVariant& v) { l.type = toEnum<LightType>(v).value_or(l.type); },
+     .deliberateForMany = true},
+    {.id = P::Enabled,
+     .name = QT_TRANSLATE_NOOP("lr::LightProperty", "on/off"),
+     .label = QT_TRANSLATE_NOOP("lr::LightProperty", "&Enabled"),
+     .tableLabel = QT_TRANSLATE_NOOP("lr::LightProperty", "On"),
+     .key = "enabled",
+     .jsonField = "enabled",
+     .kind = K::Bool,
+     .check = checkBool,
+     .get = [](const Light& l) { return QVariant(l.enabled); },
+     .set = [](Light& l, const QVariant& v) { l.enabled = v.toBool(); },
+     .undoText = undoSwitch},
+    {.id = P::Color,
+     .name = QT_TRANSLATE_NOOP("lr::LightProperty", "colour"),
+     .label = QT_TRANSLATE_NOOP("lr::LightProperty", "&Colour"),
+     .key = "color",
+     .jsonField = "color",
+     .kind = K::Color,
+     .min = 0.0,
+     .max = kMaxColorComponent,
+     .get = [](const Light& l) { return QVariant::fromValue(l.color); },
+     .set = [](Light& l, const QVariant& v) { l.color = toVec3(v, true).value_or(l.color); }},
+    {.id = P::Temperature,
+     .name = QT_TRANSLATE_NOOP("lr::LightProperty", "temperature"),
+     .label = QT_TRANSLATE_NOOP("lr::LightProperty", "Te&mperature"),
+     .key = "temperature",
+     .jsonField = "temperature",
+     .kind = K::OptionalNumber,
+     .min = kMinTemperature,
+     .max = kMaxTemperature,
+     .unit = "kelvin",
+     .suffix = " K",
+     .get = [](const Light& l) { return l.temperature ? QVariant(*l.temperature) : QVariant(); },
+     .set = [](Light& l, const QVariant& v) { l.temperature = toDouble(v); },
+     .shownWith = P::Color},
+    {.id = P::Intensity,
+     .name = QT_TRANSLATE_NOOP("lr::LightProperty", "intensity"),
+     .label = QT_TRANSLATE_NOOP("lr::LightProperty", "&Intensity"),
+     .key = "intensity",
+     .jsonField = "intensity",
+     .kind = K::Number,
+     .min = 0.0,
+     .max = kMaxIntensity,
+     .get = [](const Light& l) { return QVariant(l.intensity); },
+     .set = [](Light& l, const QVariant& v) { l.intensity = number(v, l.intensity); }},
+    {.id = P::Position,
+     .name = QT_TRANSLATE_NOOP("lr::LightProperty", "position"),
+     .label = QT_TRANSLATE_NOOP("lr::LightProperty", "&Position"),
+     .key = "position",
+     .jsonField = "position",
+     .kind = K::Vector,
+     .min = -kMaxCoordinate,
+     .max = kMaxCoordinate,
+     .usedBy = &T::usesPosition,
+     .get = [](const Light& l) { return QVariant::fromValue(l.position); },
+     .set = [](Light& l, const QVariant& v) { l.position = toVec3(v, false).value_or(l.position); }},
+    {.id = P::Direction,
+     .name = QT_TRANSLATE_NOOP("lr::LightProperty", "direction"),
+     .label = QT_TRANSLATE_NOOP("lr::LightProperty", "&Direction"),
+     .key = "direction",
+     .jsonField = "direction",
+     .kind = K::Vector,
+     .min = -kMaxCoordinate,
+     .max = kMaxCoordinate,
+     .usedBy = &T::usesDirection,
+     .check = checkDirection,
+     .get = [](const Light& l) { return QVariant::fromValue(l.direction); },
+     .set =
+         [](Light& l, const QVariant& v) {
+             if (auto c = toVec3(v, false); c && glm::length(*c) > 0.0) l.direction = glm::normalize(*c);
+         }},
+    {.id = P::FalloffModel,
+     .name = QT_TRANSLATE_NOOP("lr::LightProperty", "falloff model"),
+     .label = QT_TRANSLATE_NOOP("lr::LightProperty", "&Falloff"),
+     .key = "falloffModel",
+     .jsonField = "falloff.model",
+     .kind = K::Enum,
+     .usedBy = &T::usesFalloff,
+     .check = enumCheck<FalloffModel>,
+     .choices = enumChoices<FalloffModel>,
+     .get = [](const Light& l) { return QVariant::fromValue(l.falloff.model); },
+     .set =
+         [](Light& l, const QVariant& v) {
+             const auto m = toEnum<FalloffModel>(v);
+             if (!m) return;
+             l.falloff.model = *m;
+             // A model that needs a range gets one; inverse-polynomial needs a positive coefficient.
+             if (!rangeOptional(*m) && !l.falloff.hasRange()) l.falloff.range = 10.0;
+             if (*m == FalloffModel::InversePolynomial &&
+                 !(l.falloff.constant > 0 || l.falloff.linear > 0 || l.falloff.quadratic > 0))
+                 l.falloff.constant = 1.0;
+         },
+     .shownWith = P::FalloffRange},
+    {.id = P::FalloffRange,
+     .name = QT_TRANSLATE_NOOP("lr::LightProperty", "range"),
+     .label = QT_TRANSLATE_NOOP("lr::LightProperty", "&Range"),
+     .key = "falloffRange",
+     .jsonField = "falloff.range",
+     .kind = K::OptionalNumber,
+     .min = 0.0,
+     .max = kMaxCoordinate,
+     .minExclusive = true,
+     .usedBy = &T::usesFalloff,
+     .shown = hasRangeModel,
+     .get = [](const Light& l) { return l.falloff.hasRange() ? QVariant(l.falloff.range) : QVariant(); },
+     .set = [](Light& l, const QVariant& v) { l.falloff.range = toDouble(v).value_or(-1.0); }},
+    {.id = P::FalloffExponent,
+     .name = QT_TRANSLATE_NOOP("lr::LightProperty", "falloff exponent"),
+     .label = QT_TRANSLATE_NOOP("lr::LightProperty", "Falloff e&xponent"),
+     .key = "falloffExponent",
+     .jsonField = "falloff.exponent",
+     .kind = K::Number,
+     .min = 0.0,
+     .max = kMaxExponent,
+     .minExclusive = true,
+     .usedBy = &T::usesFalloff,
+     .shown = [](const Light& l) { return l.falloff.model == FalloffModel::RangePower; },
+     .get = [](const Light& l) { return QVariant(l.falloff.exponent); },
+     .set = [](Light& l, const QVariant& v) { l.falloff.exponent = number(v, l.falloff.exponent); }},
+    {.id = P::FalloffConstant,
+     .name = QT_TRANSLATE_NOOP("lr::LightProperty", "constant attenuation"),
+     .label = QT_TRANSLATE_NOOP("lr::LightProperty", "Consta&nt"),
+     .key = "falloffConstant",
+     .jsonField = "falloff.constant",
+     .kind = K::Number,
+     .min = 0.0,
+     .max = kMaxPolynomialCoefficient,
+     .usedBy = &T::usesFalloff,
+     .shown = [](const Light& l) { return l.falloff.model == FalloffModel::InversePolynomial; },
+     .get = [](const Light& l) { return QVariant(l.falloff.constant); },
+     .set = [](Light& l, const QVariant& v) { l.falloff.constant = number(v, l.falloff.constant); }},
+    {.id = P::FalloffLinear,
+     .name = QT_TRANSLATE_NOOP("lr::LightProperty", "linear attenuation"),
+     .label = QT_TRANSLATE_NOOP("lr::LightProperty", "&Linear"),
+     .key = "falloffLinear",
+     .jsonField = "falloff.linear",
+     .kind = K::Number,
+     .min = 0.0,
+     .max = kMaxPolynomialCoefficient,
+     .usedBy = &T::usesFalloff,
+     .shown = [](const Light& l) { return l.falloff.model == FalloffModel::InversePolynomial; },
+     .get = [](const Light& l) { return QVariant(l.falloff.linear); },
+     .set = [](Light& l, const QVariant& v) { l.falloff.linear = number(v, l.falloff.linear); }},
+    {.id = P::FalloffQuadratic,
+     .name = QT_TRANSLATE_NOOP("lr::LightProperty", "quadratic attenuation"),
+     .label = QT_TRANSLATE_NOOP("lr::LightProperty", "&Quadratic"),
+     .key = "falloffQuadratic",
+     .jsonField = "falloff.quadratic",
+     .kind = K::Number,
+     .min = 0.0,
+     .max = kMaxPolynomialCoefficient,
+     .usedBy = &T::usesFalloff,
+     .shown = [](const Light& l) { return l.falloff.model == FalloffModel::InversePolynomial; },
+     .get = [](const Light& l) { return QVariant(l.falloff.quadratic); },
+     .set = [](Light& l, const QVariant& v) { l.falloff.quadratic = number(v, l.falloff.quadratic); }},
+    {.id = P::ConeModel,
+     .name = QT_TRANSLATE_NOOP("lr::LightProperty", "cone model"),
+     .label = QT_TRANSLATE_NOOP("lr::LightProperty", "C&one"),
+     .key = "coneModel",
+     .jsonField = "cone.model",
+     .kind = K::Enum,
+     .usedBy = &T::usesCone,
+     .check = enumCheck<ConeModel>,
+     .choices = enumChoices<ConeModel>,
+     .get = [](const Light& l) { return QVariant::fromValue(l.cone.model); },
+     .set =
+         [](Light& l, const QVariant& v) {
+             if (auto m = toEnum<ConeModel>(v)) {
+                 l.cone.model = *m;
+                 l.cone.inner = std::min(l.cone.inner, l.cone.outer);
+             }
+         }},
+    {.id = P::ConeInner,
+     .name = QT_TRANSLATE_NOOP("lr::LightProperty", "cone inner angle"),
+     .label = QT_TRANSLATE_NOOP("lr::LightProperty", "Inner an&gle"),
+     .key = "coneInner",
+     .jsonField = "cone.inner",
+     .kind = K::Number,
+     .min = 0.0,
+     .max = kMaxConeAngle,
+     .minExclusive = true,
+     .unit = "degrees",
+     .suffix = "°",
+     .usedBy = &T::usesCone,
+     .shown = [](const Light& l) { return l.cone.model == ConeModel::Smooth; },
+     .get = [](const Light& l) { return QVariant(l.cone.inner); },
+     .set = [](Light& l, const QVariant& v) { l.cone.inner = number(v, l.cone.inner); }},
+    {.id = P::ConeOuter,
+     .name = QT_TRANSLATE_NOOP("lr::LightProperty", "cone outer angle"),
+     .label = QT_TRANSLATE_NOOP("lr::LightProperty", "O&uter angle"),
+     .key = "coneOuter",
+     .jsonField = "cone.outer",
+     .kind = K::Number,
+     .min = 0.0,
+     .max = kMaxConeAngle,
+     .minExclusive = true,
+     .unit = "degrees",
+     .suffix = "°",
+     .usedBy = &T::usesCone,
+     .get = [](const Light& l) { return QVariant(l.cone.outer); },
+     .set =
+         [](Light& l, const QVariant& v) {
+             l.cone.outer = number(v, l.cone.outer);
+             // Only a smooth cone uses the inner angle; for the others it follows the outer angle down so
+             // that switching to smooth later stays valid.
+             if (l.cone.model != ConeModel::Smooth) l.cone.inner = std::min(l.cone.inner, l.cone.outer);
+         }},
+    {.id = P::ConeExponent,
+     .name = QT_TRANSLATE_NOOP("lr::LightProperty", "cone exponent"),
+     .label = QT_TRANSLATE_NOOP("lr::LightProperty", "Cone exponen&t"),
+     .key = "coneExponent",
+     .jsonField = "cone.exponent",
+     .kind = K::Number,
+     .min = 0.0,
+     .max = kMaxExponent,
+     .minExclusive = true,
+     .usedBy = &T::usesCone,
+     .shown = [](const Light& l) { return l.cone.model != ConeModel::Hard; },
+     .get = [](const Light& l) { return QVariant(l.cone.exponent); },
+     .set = [](Light& l, const QVariant& v) { l.cone.exponent = number(v, l.cone.exponent); }},
+    {.id = P::Diffuse,
+     .name = QT_TRANSLATE_NOOP("lr::LightProperty", "diffuse model"),
+     .label = QT_TRANSLATE_NOOP("lr::LightProperty", "Di&ffuse"),
+     .key = "diffuse",
+     .jsonField = "diffuse",
+     .kind = K::Enum,
+     .usedBy = &T::usesSurfaceModels,
+     .check = enumCheck<DiffuseModel>,
+     .choices = enumChoices<DiffuseModel>,
+     .get = [](const Light& l) { return QVariant::fromValue(l.diffuse); },
+     .set = [](Light& l, const QVariant& v) { l.diffuse = toEnum<DiffuseModel>(v).value_or(l.diffuse); }},
+    {.id = P::Specular,
+     .name = QT_TRANSLATE_NOOP("lr::LightProperty", "specular"),
+     .label = QT_TRANSLATE_NOOP("lr::LightProperty", "&Specular"),
+     .key = "specular",
+     .jsonField = "specular",
+     .kind = K::FactorOrColor,
+     .min = 0.0,
+     .max = kMaxColorComponent,
+     .usedBy = &T::usesSurfaceModels,
+     .check = checkSpecular,
+     .get =
+         [](const Light& l) {
+             return l.specularIsColor ? QVariant::fromValue(l.specular) : QVariant(l.specular.x);
+         },
+     .set =
+         [](Light& l, const QVariant& v) {
+             if (auto c = toVec3(v, true)) {
+                 l.specular = *c;
+                 l.specularIsColor = true;
+             } else if (auto f = toDouble(v)) {
+                 l.specular = glm::dvec3(*f);
+                 l.specularIsColor = false;
+             }
+         }},
+    {.id = P::Ambient,
+     .name = QT_TRANSLATE_NOOP("lr::LightProperty", "light ambient"),
+     .label = QT_TRANSLATE_NOOP("lr::LightProperty", "&Ambient"),
+     .key = "ambient",
+     .jsonField = "ambient",
+     .kind = K::OptionalColor,
+     .min = 0.0,
+     .max = kMaxColorComponent,
+     .usedBy = &T::usesSurfaceModels,
+     .get = [](const Light& l) { return l.ambient ? QVariant::fromValue(*l.ambient) : QVariant(); },
+     .set = [](Light& l, const QVariant& v) { l.ambient = toVec3(v, true); }},
+    {.id = P::RimExponent,
+     .name = QT_TRANSLATE_NOOP("lr::LightProperty", "rim exponent"),
+     .label = QT_TRANSLATE_NOOP("lr::LightProperty", "Rim e&xponent"),
+     .key = "rimExponent",
+     .jsonField = "exponent",
+     .kind = K::Number,
+     .min = 0.0,
+     .max = kMaxExponent,
+     .minExclusive = true,
+     .usedBy = &T::usesRimExponent,
+     .get = [](const Light& l) { return QVariant(l.rimExponent); },
+     .set = [](Light& l, const QVariant& v) { l.rimExponent = number(v, l.rimExponent); }},
+};
+static_assert(std::size(kLightProperties) == size_t(kLightPropertyCount), "one row per LightProperty");
+
+// Row index by id (the table is in display order, not enum order).
+const std::array<int, kLightPropertyCount>& rowIndex() {
+    static const std::array<int, kLightPropertyCount> index = [] {
+        std::array<int, kLightPropertyCount> out{};
+        out.fill(-1);
+        for (int i = 0; i < kLightPropertyCount; ++i)
+            out[size_t(kLightProperties[i].id)] = i;
+        for (int i : out)
+            Q_ASSERT_X(i >= 0, "kLightProperties", "a LightProperty has no row");
+        return out;
+    }();
+    return index;
+}
+
+// The generic check of a row by its kind (rows with their own `check` use that instead).
+QString checkByKind(const LightPropertyInfo& row, const QVariant& v) {
+    QString what = row.displayName();
+    if (row.unit) what += QStringLiteral(" (%1)").arg(QLatin1String(row.unit));
+    switch (row.kind) {
+    case K::OptionalNumber:
+        if (isNone(v)) return {};
+        [[fallthrough]];
+    case K::Number:
+        return checkRange(what, toDouble(v), row.min, row.max, row.minExclusive);
+    case K::OptionalColor:
+        if (isNone(v)) return {};
+        [[fallthrough]];
+    case K::Color:
+        return checkVec3(what, toVec3(v, true), row.min, row.max);
+    case K::Vector:
+        return checkVec3(what, toVec3(v, false), row.min, row.max);
+    default:
+        return QStringLiteral("not an editable light value");
+    }
+}
+
 } // namespace
 
+QString LightPropertyInfo::displayName() const {
+    return QCoreApplication::translate("lr::LightProperty", name);
+}
+
+QString LightPropertyInfo::displayLabel() const {
+    return QCoreApplication::translate("lr::LightProperty", label);
+}
+
+bool LightPropertyInfo::applies(const Light& light) const {
+    return !usedBy || traitsOf(light.type).*usedBy;
+}
+
+bool LightPropertyInfo::isShown(const Light& light) const {
+    return applies(light) && (!shown || shown(light));
+}
+
+std::span<const LightPropertyInfo> lightProperties() {
+    return kLightProperties;
+}
+
+const LightPropertyInfo* lightPropertyInfo(LightProperty p) {
+    if (int(p) < 0 || int(p) >= kLightPropertyCount) return nullptr;
+    return &kLightProperties[rowIndex()[size_t(p)]];
+}
+
 QString lightPropertyName(LightProperty p) {
-    switch (p) {
-    case LightProperty::Name:
-        return QStringLiteral("name");
-    case LightProperty::Type:
-        return QStringLiteral("type");
-    case LightProperty::Enabled:
-        return QStringLiteral("on/off");
-    case LightProperty::Color:
-        return QStringLiteral("colour");
-    case LightProperty::Intensity:
-        return QStringLiteral("intensity");
-    case LightProperty::Temperature:
-        return QStringLiteral("temperature");
-    case LightProperty::Position:
-        return QStringLiteral("position");
-    case LightProperty::Direction:
-        return QStringLiteral("direction");
-    case LightProperty::FalloffModel:
-        return QStringLiteral("falloff model");
-    case LightProperty::FalloffRange:
-        return QStringLiteral("range");
-    case LightProperty::FalloffExponent:
-        return QStringLiteral("falloff exponent");
-    case LightProperty::FalloffConstant:
-        return QStringLiteral("constant attenuation");
-    case LightProperty::FalloffLinear:
-        return QStringLiteral("linear attenuation");
-    case LightProperty::FalloffQuadratic:
-        return QStringLiteral("quadratic attenuation");
-    case LightProperty::ConeModel:
-        return QStringLiteral("cone model");
-    case LightProperty::ConeInner:
-        return QStringLiteral("cone inner angle");
-    case LightProperty::ConeOuter:
-        return QStringLiteral("cone outer angle");
-    case LightProperty::ConeExponent:
-        return QStringLiteral("cone exponent");
-    case LightProperty::Diffuse:
-        return QStringLiteral("diffuse model");
-    case LightProperty::Specular:
-        return QStringLiteral("specular");
-    case LightProperty::Ambient:
-        return QStringLiteral("light ambient");
-    case LightProperty::RimExponent:
-        return QStringLiteral("rim exponent");
-    case LightProperty::Any:
-        break;
-    }
-    return QStringLiteral("light");
+    const LightPropertyInfo* row = lightPropertyInfo(p);
+    return row ? row->displayName() : QStringLiteral("light");
 }
 
 QString rigPropertyName(RigProperty p) {
@@ -175,86 +569,13 @@ QString rigPropertyName(RigProperty p) {
 }
 
 bool lightPropertyApplies(const Light& l, LightProperty p) {
-    switch (p) {
-    case LightProperty::Position:
-        return l.usesPosition();
-    case LightProperty::Direction:
-        return l.usesDirection();
-    case LightProperty::FalloffModel:
-    case LightProperty::FalloffRange:
-    case LightProperty::FalloffExponent:
-    case LightProperty::FalloffConstant:
-    case LightProperty::FalloffLinear:
-    case LightProperty::FalloffQuadratic:
-        return l.usesFalloff();
-    case LightProperty::ConeModel:
-    case LightProperty::ConeInner:
-    case LightProperty::ConeOuter:
-    case LightProperty::ConeExponent:
-        return l.usesCone();
-    case LightProperty::Diffuse:
-    case LightProperty::Specular:
-    case LightProperty::Ambient:
-        return l.usesSurfaceModels();
-    case LightProperty::RimExponent:
-        return l.type == LightType::Rim;
-    case LightProperty::Any:
-        return false;
-    default:
-        return true;
-    }
+    const LightPropertyInfo* row = lightPropertyInfo(p);
+    return row && row->applies(l);
 }
 
 QVariant lightValue(const Light& l, LightProperty p) {
-    switch (p) {
-    case LightProperty::Name:
-        return l.name;
-    case LightProperty::Type:
-        return QVariant::fromValue(l.type);
-    case LightProperty::Enabled:
-        return l.enabled;
-    case LightProperty::Color:
-        return QVariant::fromValue(l.color);
-    case LightProperty::Intensity:
-        return l.intensity;
-    case LightProperty::Temperature:
-        return l.temperature ? QVariant(*l.temperature) : QVariant();
-    case LightProperty::Position:
-        return QVariant::fromValue(l.position);
-    case LightProperty::Direction:
-        return QVariant::fromValue(l.direction);
-    case LightProperty::FalloffModel:
-        return QVariant::fromValue(l.falloff.model);
-    case LightProperty::FalloffRange:
-        return l.falloff.hasRange() ? QVariant(l.falloff.range) : QVariant();
-    case LightProperty::FalloffExponent:
-        return l.falloff.exponent;
-    case LightProperty::FalloffConstant:
-        return l.falloff.constant;
-    case LightProperty::FalloffLinear:
-        return l.falloff.linear;
-    case LightProperty::FalloffQuadratic:
-        return l.falloff.quadratic;
-    case LightProperty::ConeModel:
-        return QVariant::fromValue(l.cone.model);
-    case LightProperty::ConeInner:
-        return l.cone.inner;
-    case LightProperty::ConeOuter:
-        return l.cone.outer;
-    case LightProperty::ConeExponent:
-        return l.cone.exponent;
-    case LightProperty::Diffuse:
-        return QVariant::fromValue(l.diffuse);
-    case LightProperty::Specular:
-        return l.specularIsColor ? QVariant::fromValue(l.specular) : QVariant(l.specular.x);
-    case LightProperty::Ambient:
-        return l.ambient ? QVariant::fromValue(*l.ambient) : QVariant();
-    case LightProperty::RimExponent:
-        return l.rimExponent;
-    case LightProperty::Any:
-        break;
-    }
-    return {};
+    const LightPropertyInfo* row = lightPropertyInfo(p);
+    return row ? row->get(l) : QVariant();
 }
 
 QVariant rigValue(const Rig& r, RigProperty p) {
@@ -278,74 +599,9 @@ QVariant rigValue(const Rig& r, RigProperty p) {
 }
 
 QString validateLightValue(LightProperty p, const QVariant& v) {
-    const QString what = lightPropertyName(p);
-    switch (p) {
-    case LightProperty::Name: {
-        if (v.metaType().id() != QMetaType::QString) return QStringLiteral("name must be text");
-        const QString s = v.toString();
-        if (s.trimmed().isEmpty()) return QStringLiteral("name must not be empty");
-        if (s.size() > kMaxLightNameLength)
-            return QStringLiteral("name must be at most %1 characters, got %2")
-                .arg(kMaxLightNameLength)
-                .arg(s.size());
-        for (const QChar c : s)
-            if (c.category() == QChar::Other_Control)
-                return QStringLiteral("name must not contain control characters");
-        return {};
-    }
-    case LightProperty::Type:
-        return checkEnum<LightType>(what, v);
-    case LightProperty::Enabled:
-        return v.metaType().id() == QMetaType::Bool ? QString()
-                                                    : QStringLiteral("on/off must be true or false");
-    case LightProperty::Color:
-        return checkVec3(what, toVec3(v, true), 0.0, kMaxColorComponent);
-    case LightProperty::Intensity:
-        return checkRange(what, toDouble(v), 0.0, kMaxIntensity, false);
-    case LightProperty::Temperature:
-        if (isNone(v)) return {};
-        return checkRange(QStringLiteral("temperature (kelvin)"), toDouble(v), kMinTemperature,
-                          kMaxTemperature, false);
-    case LightProperty::Position:
-        return checkVec3(what, toVec3(v, false), -kMaxCoordinate, kMaxCoordinate);
-    case LightProperty::Direction: {
-        const auto d = toVec3(v, false);
-        if (QString e = checkVec3(what, d, -kMaxCoordinate, kMaxCoordinate); !e.isEmpty()) return e;
-        const double len = glm::length(*d);
-        if (!(len > 1e-12) || !std::isfinite(len)) return QStringLiteral("direction must not be zero");
-        return {};
-    }
-    case LightProperty::FalloffModel:
-        return checkEnum<FalloffModel>(what, v);
-    case LightProperty::FalloffRange:
-        if (isNone(v)) return {};
-        return checkRange(what, toDouble(v), 0.0, kMaxCoordinate, true);
-    case LightProperty::FalloffExponent:
-    case LightProperty::ConeExponent:
-    case LightProperty::RimExponent:
-        return checkRange(what, toDouble(v), 0.0, kMaxExponent, true);
-    case LightProperty::FalloffConstant:
-    case LightProperty::FalloffLinear:
-    case LightProperty::FalloffQuadratic:
-        return checkRange(what, toDouble(v), 0.0, kMaxPolynomialCoefficient, false);
-    case LightProperty::ConeModel:
-        return checkEnum<ConeModel>(what, v);
-    case LightProperty::ConeInner:
-    case LightProperty::ConeOuter:
-        return checkRange(what + QStringLiteral(" (degrees)"), toDouble(v), 0.0, 90.0, true);
-    case LightProperty::Diffuse:
-        return checkEnum<DiffuseModel>(what, v);
-    case LightProperty::Specular:
-        if (auto c = toVec3(v, true))
-            return checkVec3(QStringLiteral("specular colour"), c, 0.0, kMaxColorComponent);
-        return checkRange(QStringLiteral("specular factor"), toDouble(v), 0.0, kMaxColorComponent, false);
-    case LightProperty::Ambient:
-        if (isNone(v)) return {};
-        return checkVec3(what, toVec3(v, true), 0.0, kMaxColorComponent);
-    case LightProperty::Any:
-        break;
-    }
-    return QStringLiteral("not an editable light value");
+    const LightPropertyInfo* row = lightPropertyInfo(p);
+    if (!row) return QStringLiteral("not an editable light value");
+    return row->check ? row->check(*row, v) : checkByKind(*row, v);
 }
 
 QString validateLightValue(const Light& l, LightProperty p, const QVariant& v) {
@@ -419,94 +675,7 @@ QString validateRig(const Rig& r) {
 
 Light withLightValue(const Light& light, LightProperty p, const QVariant& v) {
     Light l = light;
-    switch (p) {
-    case LightProperty::Name:
-        l.name = v.toString();
-        break;
-    case LightProperty::Type:
-        if (auto t = toEnum<LightType>(v)) l.type = *t;
-        break;
-    case LightProperty::Enabled:
-        l.enabled = v.toBool();
-        break;
-    case LightProperty::Color:
-        if (auto c = toVec3(v, true)) l.color = *c;
-        break;
-    case LightProperty::Intensity:
-        l.intensity = toDouble(v).value_or(l.intensity);
-        break;
-    case LightProperty::Temperature:
-        l.temperature = toDouble(v);
-        break;
-    case LightProperty::Position:
-        if (auto c = toVec3(v, false)) l.position = *c;
-        break;
-    case LightProperty::Direction:
-        if (auto c = toVec3(v, false); c && glm::length(*c) > 0.0) l.direction = glm::normalize(*c);
-        break;
-    case LightProperty::FalloffModel:
-        if (auto m = toEnum<FalloffModel>(v)) {
-            l.falloff.model = *m;
-            if (!rangeOptional(*m) && !l.falloff.hasRange()) l.falloff.range = 10.0;
-            if (*m == FalloffModel::InversePolynomial &&
-                !(l.falloff.constant > 0 || l.falloff.linear > 0 || l.falloff.quadratic > 0))
-                l.falloff.constant = 1.0;
-        }
-        break;
-    case LightProperty::FalloffRange:
-        l.falloff.range = toDouble(v).value_or(-1.0);
-        break;
-    case LightProperty::FalloffExponent:
-        l.falloff.exponent = toDouble(v).value_or(l.falloff.exponent);
-        break;
-    case LightProperty::FalloffConstant:
-        l.falloff.constant = toDouble(v).value_or(l.falloff.constant);
-        break;
-    case LightProperty::FalloffLinear:
-        l.falloff.linear = toDouble(v).value_or(l.falloff.linear);
-        break;
-    case LightProperty::FalloffQuadratic:
-        l.falloff.quadratic = toDouble(v).value_or(l.falloff.quadratic);
-        break;
-    case LightProperty::ConeModel:
-        if (auto m = toEnum<ConeModel>(v)) {
-            l.cone.model = *m;
-            l.cone.inner = std::min(l.cone.inner, l.cone.outer);
-        }
-        break;
-    case LightProperty::ConeInner:
-        l.cone.inner = toDouble(v).value_or(l.cone.inner);
-        break;
-    case LightProperty::ConeOuter:
-        l.cone.outer = toDouble(v).value_or(l.cone.outer);
-        // Only a smooth cone uses the inner angle; for the others it follows the outer angle down so that
-        // switching to smooth later stays valid.
-        if (l.cone.model != ConeModel::Smooth) l.cone.inner = std::min(l.cone.inner, l.cone.outer);
-        break;
-    case LightProperty::ConeExponent:
-        l.cone.exponent = toDouble(v).value_or(l.cone.exponent);
-        break;
-    case LightProperty::Diffuse:
-        if (auto m = toEnum<DiffuseModel>(v)) l.diffuse = *m;
-        break;
-    case LightProperty::Specular:
-        if (auto c = toVec3(v, true)) {
-            l.specular = *c;
-            l.specularIsColor = true;
-        } else if (auto f = toDouble(v)) {
-            l.specular = glm::dvec3(*f);
-            l.specularIsColor = false;
-        }
-        break;
-    case LightProperty::Ambient:
-        l.ambient = toVec3(v, true);
-        break;
-    case LightProperty::RimExponent:
-        l.rimExponent = toDouble(v).value_or(l.rimExponent);
-        break;
-    case LightProperty::Any:
-        break;
-    }
+    if (const LightPropertyInfo* row = lightPropertyInfo(p)) row->set(l, v);
     return l;
 }
 

@@ -3,6 +3,12 @@
 // ranges (docs/rig-format.md), before any command is created: nothing invalid, NaN, Inf or out of range is
 // ever stored.
 //
+// Everything the editor knows about a light property is one row of a table (lightProperties(),
+// LightPropertyInfo: its name and label, JSON field, kind, limits, unit, which light types use it, when the
+// Properties dock shows it, how to get and set it, its undo text). Validation, the Properties dock, the light
+// table's columns and the undo texts all read that row; adding a property is adding a row
+// (docs/architecture.md, "Where to add things").
+//
 // Value types (what lightValue() returns and what validate/apply accept):
 //   Name                 QString (non-empty after trimming, <= kMaxLightNameLength characters)
 //   Type                 lr::LightType (also accepts int index or the file name, e.g. "spot")
@@ -25,8 +31,10 @@
 #include <QColor>
 #include <QMetaType>
 #include <QString>
+#include <QStringList>
 #include <QVariant>
 #include <glm/vec3.hpp>
+#include <span>
 
 namespace lr {
 
@@ -69,14 +77,69 @@ constexpr double kMaxCoordinate = kMaxRigLength;                      // |positi
 constexpr double kMaxExponent = kMaxRigExponent; // falloff, cone and rim exponents (all > 0)
 constexpr double kMaxPolynomialCoefficient = kMaxRigLength;
 constexpr double kMaxShininess = kMaxRigExponent; // > 0
+constexpr double kMaxConeAngle = 90.0;            // degrees, half-angle; > 0
+
+// How a property's value is held and edited (the Properties dock picks a default editor widget per kind).
+enum class LightValueKind {
+    Text,           // QString
+    Enum,           // an enum from types.h (choices() lists its items in index order)
+    Bool,           // bool
+    Number,         // double in [min, max] ((min, max] when minExclusive)
+    OptionalNumber, // a Number, or an invalid QVariant for "none"
+    Color,          // glm::dvec3 linear RGB, components in [min, max]
+    OptionalColor,  // a Color, or an invalid QVariant for "none"
+    Vector,         // glm::dvec3, components in [min, max]
+    FactorOrColor,  // a Number factor or a Color (specular)
+};
+
+// One row of the light-property table.
+struct LightPropertyInfo {
+    LightProperty id;
+    const char* name;  // lower case, for messages and undo texts ("cone outer angle"); translatable
+    const char* label; // the dock's label with its mnemonic ("O&uter angle"); translatable
+    const char* tableLabel = nullptr; // the light table's column header when not `label` ("On")
+    const char* key;                  // stable identifier: the dock's field object name, tests ("coneOuter")
+    const char* jsonField;            // where the rig file keeps it, relative to the light ("cone.outer")
+    LightValueKind kind;
+    double min = 0.0, max = 0.0; // Number, Color, Vector kinds
+    bool minExclusive = false;
+    const char* unit = nullptr;   // named in range messages: "cone inner angle (degrees) must be ..."
+    const char* suffix = nullptr; // shown after the number ("°", " K")
+    // The light types that use it (a LightTypeTraits flag); nullptr: every type. Commands skip lights
+    // where a property does not apply.
+    bool LightTypeTraits::*usedBy = nullptr;
+    // Shown by the dock only when this also holds (the light's models use it); nullptr: whenever it applies.
+    bool (*shown)(const Light&) = nullptr;
+    // Its own context-free check; nullptr: the check of its kind and limits.
+    QString (*check)(const LightPropertyInfo& row, const QVariant& value) = nullptr;
+    QStringList (*choices)() = nullptr; // Enum: item texts in index order
+    QVariant (*get)(const Light&) = nullptr;
+    void (*set)(Light&, const QVariant&) = nullptr; // a value that validated; keeps the light consistent
+    // The undo text for `lights` ("Key" or "3 lights") set to value; nullptr: "Change NAME of LIGHTS".
+    QString (*undoText)(const QString& lights, const QVariant& value) = nullptr;
+    // Other displays that change with it (Temperature tints the colour swatch; the falloff model decides
+    // whether there is a range); Any: none.
+    LightProperty shownWith = LightProperty::Any;
+    bool uniquePerLight = false;    // no two lights share a value (names): never set on several at once
+    bool deliberateForMany = false; // changing several lights at once must be a deliberate act (type)
+
+    QString displayName() const;
+    QString displayLabel() const;
+    bool applies(const Light& light) const;
+    bool isShown(const Light& light) const; // applies and `shown`
+};
+
+// Every light property, in the Properties dock's order.
+std::span<const LightPropertyInfo> lightProperties();
+// The row of a property; nullptr for Any (and anything out of range).
+const LightPropertyInfo* lightPropertyInfo(LightProperty property);
 
 // Human-readable name for undo texts and messages: "intensity", "cone outer angle".
 QString lightPropertyName(LightProperty property);
 QString rigPropertyName(RigProperty property);
 
-// Whether the property means anything for this light (Position: point/spot; Cone*: spot; Falloff*:
-// point/spot; Diffuse/Specular/Ambient: not rim; RimExponent: rim; the rest: all). Commands only touch lights
-// where the property applies.
+// Whether the property means anything for this light (its row's usedBy flag of the light's type). Commands
+// only touch lights where the property applies.
 bool lightPropertyApplies(const Light& light, LightProperty property);
 
 // The light's current value, in the types listed above.

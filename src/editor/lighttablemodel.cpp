@@ -1,5 +1,6 @@
 #include "editor/lighttablemodel.h"
 
+#include <QCoreApplication>
 #include <QDataStream>
 #include <QIODevice>
 #include <QMimeData>
@@ -9,18 +10,30 @@ namespace lr {
 
 namespace {
 
-QString typeLabel(LightType t) {
-    QString s = toString(t);
-    s[0] = s[0].toUpper();
-    return s;
-}
-
 QString formatNumber(double v) {
     return QString::number(v, 'g', 4);
 }
 
-bool hasRangeColumn(const Light& l) {
-    return l.usesFalloff() && l.falloff.model != FalloffModel::None;
+// The light property each column shows, in column order (Any: the Solo column, which is view state).
+constexpr LightProperty kColumnProperty[LightTableModel::ColumnCount] = {
+    LightProperty::Name,  LightProperty::Type,      LightProperty::Enabled,      LightProperty::Any,
+    LightProperty::Color, LightProperty::Intensity, LightProperty::FalloffRange,
+};
+
+const LightPropertyInfo* columnRow(int column) {
+    return column >= 0 && column < LightTableModel::ColumnCount ? lightPropertyInfo(kColumnProperty[column])
+                                                                : nullptr;
+}
+
+// Whether the cell has a value: its property is shown for this light (lightproperty.h).
+bool hasCell(const LightPropertyInfo* row, const Light& l) {
+    return row && row->isShown(l);
+}
+
+QString headerLabel(const LightPropertyInfo& row) {
+    return (row.tableLabel ? QCoreApplication::translate("lr::LightProperty", row.tableLabel)
+                           : row.displayLabel())
+        .remove(QLatin1Char('&'));
 }
 
 } // namespace
@@ -41,22 +54,7 @@ int LightTableModel::columnCount(const QModelIndex& parent) const {
 }
 
 LightProperty LightTableModel::propertyOf(int column) {
-    switch (column) {
-    case NameColumn:
-        return LightProperty::Name;
-    case TypeColumn:
-        return LightProperty::Type;
-    case OnColumn:
-        return LightProperty::Enabled;
-    case ColorColumn:
-        return LightProperty::Color;
-    case IntensityColumn:
-        return LightProperty::Intensity;
-    case FalloffColumn:
-        return LightProperty::FalloffRange;
-    default:
-        return LightProperty::Any;
-    }
+    return column >= 0 && column < ColumnCount ? kColumnProperty[column] : LightProperty::Any;
 }
 
 QVariant LightTableModel::data(const QModelIndex& index, int role) const {
@@ -64,65 +62,54 @@ QVariant LightTableModel::data(const QModelIndex& index, int role) const {
         return {};
     const Light& l = m_doc->light(index.row());
     const int col = index.column();
+    const LightPropertyInfo* row = columnRow(col);
+    const bool cell = hasCell(row, l);
+    const QVariant value = cell ? row->get(l) : QVariant();
+    using K = LightValueKind;
     switch (role) {
     case LightIdRole:
         return QVariant::fromValue(m_doc->lightId(index.row()));
     case PropertyRole:
-        return propertyOf(col) == LightProperty::Any ? QVariant() : QVariant(int(propertyOf(col)));
+        return row ? QVariant(int(row->id)) : QVariant();
     case Qt::CheckStateRole:
-        if (col == OnColumn) return l.enabled ? Qt::Checked : Qt::Unchecked;
         if (col == SoloColumn) return m_doc->isSoloed(index.row()) ? Qt::Checked : Qt::Unchecked;
+        if (row && row->kind == K::Bool) return value.toBool() ? Qt::Checked : Qt::Unchecked;
         return {};
     case Qt::DecorationRole:
-        if (col == ColorColumn) return displayColor(l.effectiveColor());
+        if (row && row->kind == K::Color) return displayColor(l.effectiveColor());
         return {};
     case Qt::DisplayRole:
-        switch (col) {
-        case NameColumn:
-            return l.name;
-        case TypeColumn:
-            return typeLabel(l.type);
-        case IntensityColumn:
-            return formatNumber(l.intensity);
-        case FalloffColumn:
-            return hasRangeColumn(l) && l.falloff.hasRange() ? formatNumber(l.falloff.range)
-                                                             : QStringLiteral("—");
+        if (!row) return {};
+        switch (row->kind) {
+        case K::Text:
+            return value;
+        case K::Enum:
+            return row->choices().value(value.toInt());
+        case K::Number:
+        case K::OptionalNumber:
+            return value.isValid() ? formatNumber(value.toDouble()) : QStringLiteral("—");
         default:
             return {};
         }
     case Qt::EditRole:
-        switch (col) {
-        case NameColumn:
-            return l.name;
-        case TypeColumn:
-            return int(l.type);
-        case ColorColumn:
-            return QVariant::fromValue(l.color);
-        case IntensityColumn:
-            return l.intensity;
-        case FalloffColumn:
-            return hasRangeColumn(l) && l.falloff.hasRange() ? QVariant(l.falloff.range) : QVariant();
-        default:
-            return {};
-        }
+        if (!row || row->kind == K::Bool) return {};
+        return row->kind == K::Enum ? QVariant(value.toInt()) : value;
     case SortRole:
-        switch (col) {
-        case NameColumn:
-            return l.name.toLower();
-        case TypeColumn:
-            return int(l.type);
-        case OnColumn:
-            return int(l.enabled);
-        case SoloColumn:
-            return int(m_doc->isSoloed(index.row()));
-        case ColorColumn: {
+        if (col == SoloColumn) return int(m_doc->isSoloed(index.row()));
+        if (!row) return {};
+        switch (row->kind) {
+        case K::Text:
+            return value.toString().toLower();
+        case K::Enum:
+        case K::Bool:
+            return value.toInt();
+        case K::Color: {
             const glm::dvec3 c = l.effectiveColor();
             return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
         }
-        case IntensityColumn:
-            return l.intensity;
-        case FalloffColumn:
-            return hasRangeColumn(l) && l.falloff.hasRange() ? l.falloff.range : -1.0;
+        case K::Number:
+        case K::OptionalNumber:
+            return value.isValid() ? value.toDouble() : -1.0;
         default:
             return {};
         }
@@ -135,7 +122,7 @@ QVariant LightTableModel::data(const QModelIndex& index, int role) const {
             return tip;
         }
         case FalloffColumn:
-            if (!l.usesFalloff()) return tr("%1 lights have no distance falloff").arg(typeLabel(l.type));
+            if (!l.usesFalloff()) return tr("%1 lights have no distance falloff").arg(lightTypeLabel(l.type));
             return tr("Falloff: %1").arg(toString(l.falloff.model));
         case SoloColumn:
             return tr("Solo: while any light is soloed, only soloed lights render (not saved)");
@@ -143,7 +130,8 @@ QVariant LightTableModel::data(const QModelIndex& index, int role) const {
             return {};
         }
     case Qt::TextAlignmentRole:
-        if (col == IntensityColumn || col == FalloffColumn) return int(Qt::AlignRight | Qt::AlignVCenter);
+        if (row && (row->kind == K::Number || row->kind == K::OptionalNumber))
+            return int(Qt::AlignRight | Qt::AlignVCenter);
         return {};
     default:
         return {};
@@ -152,25 +140,10 @@ QVariant LightTableModel::data(const QModelIndex& index, int role) const {
 
 QVariant LightTableModel::headerData(int section, Qt::Orientation orientation, int role) const {
     if (orientation != Qt::Horizontal) return QAbstractTableModel::headerData(section, orientation, role);
+    const LightPropertyInfo* row = columnRow(section);
     if (role == Qt::DisplayRole) {
-        switch (section) {
-        case NameColumn:
-            return tr("Name");
-        case TypeColumn:
-            return tr("Type");
-        case OnColumn:
-            return tr("On");
-        case SoloColumn:
-            return tr("Solo");
-        case ColorColumn:
-            return tr("Colour");
-        case IntensityColumn:
-            return tr("Intensity");
-        case FalloffColumn:
-            return tr("Range");
-        default:
-            return {};
-        }
+        if (section == SoloColumn) return tr("Solo");
+        return row ? QVariant(headerLabel(*row)) : QVariant();
     }
     if (role == Qt::ToolTipRole && section == FalloffColumn)
         return tr("The distance falloff's range (— when none)");
@@ -180,18 +153,11 @@ QVariant LightTableModel::headerData(int section, Qt::Orientation orientation, i
 Qt::ItemFlags LightTableModel::flags(const QModelIndex& index) const {
     if (!index.isValid()) return Qt::ItemIsDropEnabled;
     Qt::ItemFlags f = Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemIsDragEnabled;
-    switch (index.column()) {
-    case OnColumn:
-    case SoloColumn:
+    const LightPropertyInfo* row = columnRow(index.column());
+    if (index.column() == SoloColumn || (row && row->kind == LightValueKind::Bool))
         f |= Qt::ItemIsUserCheckable;
-        break;
-    case FalloffColumn:
-        if (m_doc && hasRangeColumn(m_doc->light(index.row()))) f |= Qt::ItemIsEditable;
-        break;
-    default:
+    else if (m_doc && hasCell(row, m_doc->light(index.row())))
         f |= Qt::ItemIsEditable;
-        break;
-    }
     return f;
 }
 
@@ -213,35 +179,26 @@ bool LightTableModel::setDataForRows(const QList<int>& rows, int column, const Q
         if (r < 0 || r >= m_doc->lightCount()) return refuse(tr("no light at row %1").arg(r));
     QString error;
     bool ok = false;
-    if (role == Qt::CheckStateRole) {
-        const bool on = value.toInt() == Qt::Checked;
-        if (column == OnColumn)
-            ok = m_doc->setLightsEnabled(rows, on, &error);
-        else if (column == SoloColumn) {
-            m_doc->setSoloed(rows, on);
-            ok = true;
-        } else
+    const LightPropertyInfo* row = columnRow(column);
+    if (column == SoloColumn && (role == Qt::CheckStateRole || role == Qt::EditRole)) {
+        m_doc->setSoloed(rows, role == Qt::CheckStateRole ? value.toInt() == Qt::Checked : value.toBool());
+        ok = true;
+    } else if (role == Qt::CheckStateRole) {
+        if (row && row->kind == LightValueKind::Bool)
+            ok = m_doc->setLightValue(rows, row->id, value.toInt() == Qt::Checked, &error);
+        else
             error = tr("this column has no checkbox");
     } else if (role == Qt::EditRole) {
-        if (column == NameColumn) {
-            if (rows.size() == 1)
-                ok = m_doc->renameLight(rows.front(), value.toString(), &error);
-            else
-                ok = m_doc->setLightValue(rows, LightProperty::Name, value, &error);
-        } else if (column == OnColumn) {
-            ok = m_doc->setLightsEnabled(rows, value.toBool(), &error);
-        } else if (column == SoloColumn) {
-            m_doc->setSoloed(rows, value.toBool());
-            ok = true;
-        } else if (propertyOf(column) != LightProperty::Any) {
+        if (!row) {
+            error = tr("this column cannot be edited");
+        } else {
             QVariant v = value;
-            // A number typed as text ("2.5") is fine; an empty range cell means "no range".
-            if (column == FalloffColumn && v.metaType().id() == QMetaType::QString &&
+            if (row->kind == LightValueKind::Bool) v = value.toBool();
+            // A number typed as text ("2.5") is fine; an empty optional number means "none".
+            if (row->kind == LightValueKind::OptionalNumber && v.metaType().id() == QMetaType::QString &&
                 v.toString().trimmed().isEmpty())
                 v = QVariant();
-            ok = m_doc->setLightValue(rows, propertyOf(column), v, &error);
-        } else {
-            error = tr("this column cannot be edited");
+            ok = m_doc->setLightValue(rows, row->id, v, &error);
         }
     } else {
         return false;
@@ -367,31 +324,20 @@ void LightTableModel::onChanged(const RigChange& c) {
         break;
     }
     case RigChange::LightValues: {
-        int first = 0, last = ColumnCount - 1;
-        switch (c.lightProperty) {
-        case LightProperty::Name:
-            first = last = NameColumn;
-            break;
-        case LightProperty::Enabled:
-            first = last = OnColumn;
-            break;
-        case LightProperty::Color:
-        case LightProperty::Temperature:
-            first = last = ColorColumn;
-            break;
-        case LightProperty::Intensity:
-            first = last = IntensityColumn;
-            break;
-        case LightProperty::FalloffModel:
-        case LightProperty::FalloffRange:
-            first = last = FalloffColumn;
-            break;
-        case LightProperty::Type:
-        case LightProperty::Any:
-            break;
-        default:
-            return; // not shown in the table
+        // The columns that show the property, or a value shown with it (lightproperty.h: shownWith); a type
+        // change or several values: every column.
+        int first = ColumnCount, last = -1;
+        const bool all = c.lightProperty == LightProperty::Any || c.lightProperty == LightProperty::Type;
+        const LightPropertyInfo* changed = lightPropertyInfo(c.lightProperty);
+        for (int col = 0; col < ColumnCount; ++col) {
+            const LightProperty p = kColumnProperty[col];
+            if (all ||
+                (p != LightProperty::Any && (p == c.lightProperty || (changed && changed->shownWith == p)))) {
+                first = std::min(first, col);
+                last = std::max(last, col);
+            }
         }
+        if (last < 0) return; // not shown in the table
         emit dataChanged(index(c.first, first), index(c.last, last));
         break;
     }

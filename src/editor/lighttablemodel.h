@@ -1,5 +1,7 @@
 // The light table: one row per light of a Document, columns name, type, on, solo, colour, intensity and the
-// main falloff parameter (the range; "—" when the light has none). Editing goes through the document's
+// main falloff parameter (the range; "—" when the light has none). Every column but solo shows one light
+// property (propertyOf) and reads its header, text, editability and edits from the property's row in the
+// light-property table (editor/lightproperty.h); solo is view state. Editing goes through the document's
 // commands (setData -> one undo step), never into the rig directly. Follows the document's structural changes
 // (including undo/redo) with proper insert/remove/move/reset signals, and value changes with dataChanged on
 // the affected cells only.

@@ -51,7 +51,7 @@ std::unique_ptr<MoveLights> MoveLights::create(Document* doc, const QList<int>& 
 }
 
 MoveLights::MoveLights(Document* doc, QList<BlockMove> moves, int count)
-    : m_doc(doc), m_moves(std::move(moves)) {
+    : RigCommand(doc), m_moves(std::move(moves)) {
     if (m_moves.size() > 1) {
         // The same moves as one permutation: simulate them on the identity order.
         std::vector<int> order(size_t(doc->lightCount()));
@@ -74,18 +74,18 @@ MoveLights::MoveLights(Document* doc, QList<BlockMove> moves, int count)
 }
 
 void MoveLights::redo() {
-    if (!m_order.isEmpty()) return m_doc->reorderLights(m_order);
+    if (!m_order.isEmpty()) return reorderLights(m_order);
     for (const BlockMove& m : std::as_const(m_moves))
-        m_doc->moveLightBlock(m.first, m.count, m.destination);
+        moveLightBlock(m.first, m.count, m.destination);
 }
 
 void MoveLights::undo() {
-    if (!m_order.isEmpty()) return m_doc->reorderLights(m_inverse);
+    if (!m_order.isEmpty()) return reorderLights(m_inverse);
     for (auto it = m_moves.crbegin(); it != m_moves.crend(); ++it) {
         const BlockMove& m = *it;
         const bool down = m.destination > m.first;
         const int now = down ? m.destination - m.count : m.destination;
-        m_doc->moveLightBlock(now, m.count, down ? m.first : m.first + m.count);
+        moveLightBlock(now, m.count, down ? m.first : m.first + m.count);
     }
 }
 

@@ -4,14 +4,13 @@
 // change, not one signal per block).
 #pragma once
 
-#include "editor/document.h"
+#include "editor/rigcommand.h"
 
-#include <QUndoCommand>
 #include <memory>
 
 namespace lr {
 
-class MoveLights : public QUndoCommand {
+class MoveLights : public RigCommand {
   public:
     // nullptr and *error when rows are empty/out of range or destination is outside 0..lightCount(), or when
     // the move would change nothing (*error empty then).
@@ -26,8 +25,7 @@ class MoveLights : public QUndoCommand {
 
   private:
     MoveLights(Document* document, QList<BlockMove> moves, int count);
-    Document* m_doc;
-    QList<BlockMove> m_moves;
+    QList<BlockMove> m_moves;      // positions, not ids: a move is about where lights are
     QList<int> m_order, m_inverse; // permutation (several blocks only)
 };
 

@@ -16,7 +16,7 @@ std::unique_ptr<RemoveLights> RemoveLights::create(Document* doc, const QList<in
     return std::unique_ptr<RemoveLights>(new RemoveLights(doc, std::move(sorted)));
 }
 
-RemoveLights::RemoveLights(Document* doc, QList<int> rows) : m_doc(doc), m_rows(std::move(rows)) {
+RemoveLights::RemoveLights(Document* doc, QList<int> rows) : RigCommand(doc), m_rows(std::move(rows)) {
     m_lights.reserve(size_t(m_rows.size()));
     for (int r : m_rows) {
         m_lights.push_back(doc->light(r));
@@ -28,12 +28,12 @@ RemoveLights::RemoveLights(Document* doc, QList<int> rows) : m_doc(doc), m_rows(
 }
 
 void RemoveLights::redo() {
-    m_doc->removeLightRows(m_rows);
+    removeLights(m_ids);
 }
 
 void RemoveLights::undo() {
-    m_doc->insertLightRows(m_rows, m_lights, m_ids);
-    m_doc->setSelection(QSet<LightId>(m_ids.begin(), m_ids.end()), m_ids.front());
+    insertLights(m_rows, m_lights, m_ids);
+    select(m_ids);
 }
 
 } // namespace lr

@@ -2,15 +2,14 @@
 // selects them again).
 #pragma once
 
-#include "editor/document.h"
+#include "editor/rigcommand.h"
 
-#include <QUndoCommand>
 #include <memory>
 #include <vector>
 
 namespace lr {
 
-class RemoveLights : public QUndoCommand {
+class RemoveLights : public RigCommand {
   public:
     // nullptr and *error when rows is empty or out of range. Duplicate rows are ignored.
     static std::unique_ptr<RemoveLights> create(Document* document, const QList<int>& rows,
@@ -20,8 +19,7 @@ class RemoveLights : public QUndoCommand {
 
   private:
     RemoveLights(Document* document, QList<int> rows);
-    Document* m_doc;
-    QList<int> m_rows; // sorted ascending
+    QList<int> m_rows; // sorted ascending: where undo puts the lights back
     std::vector<Light> m_lights;
     QList<LightId> m_ids;
 };

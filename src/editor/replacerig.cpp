@@ -12,21 +12,21 @@ std::unique_ptr<ReplaceRig> ReplaceRig::create(Document* doc, const Rig& rig, co
 }
 
 ReplaceRig::ReplaceRig(Document* doc, Rig rig, const QString& text)
-    : m_doc(doc), m_before(doc->rig()), m_after(std::move(rig)), m_beforeIds(doc->lightIds()) {
+    : RigCommand(doc), m_before(doc->rig()), m_after(std::move(rig)), m_beforeIds(doc->lightIds()) {
     setText(text);
 }
 
 void ReplaceRig::undo() {
-    m_doc->resetRig(m_before, m_beforeIds);
+    resetRig(m_before, m_beforeIds);
 }
 
 void ReplaceRig::redo() {
     if (m_afterIds.size() != qsizetype(m_after.lights.size())) {
         m_afterIds.clear();
         for (size_t i = 0; i < m_after.lights.size(); ++i)
-            m_afterIds.append(m_doc->newLightId());
+            m_afterIds.append(newLightId());
     }
-    m_doc->resetRig(m_after, m_afterIds);
+    resetRig(m_after, m_afterIds);
 }
 
 } // namespace lr

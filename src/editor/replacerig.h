@@ -2,14 +2,13 @@
 // fresh ids; undo restores the previous rig with its ids. Selection and solo of vanished lights are dropped.
 #pragma once
 
-#include "editor/document.h"
+#include "editor/rigcommand.h"
 
-#include <QUndoCommand>
 #include <memory>
 
 namespace lr {
 
-class ReplaceRig : public QUndoCommand {
+class ReplaceRig : public RigCommand {
   public:
     // nullptr and *error when the rig has more than kMaxRigLights lights or an invalid value (validateRig).
     static std::unique_ptr<ReplaceRig> create(Document* document, const Rig& rig, const QString& text,
@@ -19,7 +18,6 @@ class ReplaceRig : public QUndoCommand {
 
   private:
     ReplaceRig(Document* document, Rig rig, const QString& text);
-    Document* m_doc;
     Rig m_before, m_after;
     QList<LightId> m_beforeIds, m_afterIds;
 };

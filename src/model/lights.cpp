@@ -138,6 +138,22 @@ bool applyRigLimits(const aiColor3D& raw, const QString& where, Light& light, QS
     return true;
 }
 
+// Assimp's light sources by their glTF (KHR_lights_punctual) names, which kLightTypeTraits maps to types.
+QString gltfTypeName(aiLightSourceType type) {
+    switch (type) {
+    case aiLightSource_POINT:
+        return QStringLiteral("point");
+    case aiLightSource_SPOT:
+        return QStringLiteral("spot");
+    case aiLightSource_DIRECTIONAL:
+        return QStringLiteral("directional");
+    case aiLightSource_AREA:
+        return QStringLiteral("area");
+    default:
+        return {};
+    }
+}
+
 } // namespace
 
 void convertLightsAndCameras(const aiScene* scene, bool gltf, const QString& displayName, Model& model) {
@@ -159,27 +175,19 @@ void convertLightsAndCameras(const aiScene* scene, bool gltf, const QString& dis
         light.direction =
             unitOr(glm::dmat3(world) * glm::dvec3(al->mDirection.x, al->mDirection.y, al->mDirection.z),
                    glm::dvec3(0.0, 0.0, -1.0));
-        switch (al->mType) {
-        case aiLightSource_POINT:
-            light.type = LightType::Point;
-            break;
-        case aiLightSource_SPOT:
-            light.type = LightType::Spot;
-            break;
-        case aiLightSource_DIRECTIONAL:
-            light.type = LightType::Directional;
-            break;
-        case aiLightSource_AMBIENT: {
+        if (al->mType == aiLightSource_AMBIENT) {
             rig.ambient += light.color * light.intensity;
             continue;
         }
-        default:
+        const std::optional<LightType> type = lightTypeFromGltf(gltfTypeName(al->mType));
+        if (!type) {
             model.warnings << QStringLiteral(
                                   "%1: light %2 of a type LightRig does not model (area or undefined) "
                                   "skipped")
                                   .arg(displayName, name);
             continue;
         }
+        light.type = *type;
         if (light.usesPosition() && !isFinite(light.position)) {
             model.warnings
                 << QStringLiteral("%1: light %2 has no finite position; skipped").arg(displayName, name);

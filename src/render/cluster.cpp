@@ -8,7 +8,7 @@ namespace lr::render {
 
 LightBounds lightBounds(const lighting::ShadeLight<double>& l, double distanceScale) {
     LightBounds b;
-    if (l.type == LightType::Directional || l.type == LightType::Rim) return b;
+    if (!traitsOf(l.type).boundable) return b;
     if (!(distanceScale > 0.0) || !std::isfinite(distanceScale)) return b;
     double range = 0.0;
     switch (l.falloff) {

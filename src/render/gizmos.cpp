@@ -127,12 +127,12 @@ GizmoGeometry buildGizmos(const Rig& rig, const SceneFrame& frame, const Bounds&
             at = rigToWorld(rig, frame, l.position);
             const double range = worldRange(rig, frame, l);
             const bool drawRange = range > 0.0 && range < radius * 1e4;
-            if (drawRange && (selected || l.type == LightType::Point)) {
+            if (drawRange && (selected || traitsOf(l.type).alwaysShowsRange)) {
                 b.circle(at, {1, 0, 0}, range, faint);
                 b.circle(at, {0, 1, 0}, range, faint);
                 b.circle(at, {0, 0, 1}, range, faint);
             }
-            if (l.type == LightType::Spot) {
+            if (l.usesCone()) {
                 const double len = drawRange ? std::min(range, radius * 3.0) : radius;
                 auto cone = [&](double halfAngleDeg, const glm::vec4& c, int spokes) {
                     const double a = glm::radians(std::clamp(halfAngleDeg, 0.0, 179.0));
@@ -155,7 +155,7 @@ GizmoGeometry buildGizmos(const Rig& rig, const SceneFrame& frame, const Bounds&
             at = directionalAnchor(frame, dir);
             b.arrow(at, dir, radius * 0.6, strong);
         }
-        const float shape = float(int(l.type) + (selected ? 8 : 0));
+        const float shape = float(int(traitsOf(l.type).gizmo) + (selected ? 8 : 0));
         const float size = float(options.iconPixels * (selected ? 1.35 : 1.0));
         const glm::dvec3 p = b.toView(at);
         if (p.z <= -b.nearClip && std::isfinite(p.x + p.y + p.z))

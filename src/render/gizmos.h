@@ -15,8 +15,8 @@ namespace lr::render {
 struct GizmoVertex {
     glm::vec3 position{0.0f}; // view space
     glm::vec4 color{1.0f};    // display colour (sRGB-encoded), straight alpha
-    // Point sprites: size in pixels, shape (0 point, 1 spot, 2 directional, 3 rim; +8 selected). Lines: 0,
-    // or kGridShape for the ground grid (depth-tested against the model, fading with distance).
+    // Point sprites: size in pixels, shape (GizmoShape, core/lighttypes.h; +8 selected). Lines: 0, or
+    // kGridShape for the ground grid (depth-tested against the model, fading with distance).
     glm::vec2 point{0.0f};
 };
 

@@ -65,7 +65,7 @@ std::uint64_t FeatureKey::bits() const {
         b |= v << shift;
         shift += width;
     };
-    put(rig.lightTypes, 4);
+    put(rig.lightTypes, kLightTypeCount);
     put(rig.falloffs, keybits::kFalloffs);
     put(rig.cones, keybits::kCones);
     put(rig.diffuses, keybits::kDiffuses);

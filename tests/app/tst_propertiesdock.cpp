@@ -4,6 +4,7 @@
 #include "app/numberedit.h"
 #include "app/propertiesdock.h"
 #include "app/propertyfields.h"
+#include "app/vec3edit.h"
 #include "editor/document.h"
 
 #include <QLineEdit>
@@ -200,6 +201,48 @@ class TestPropertiesDock : public QObject {
         QCOMPARE(doc.undoStack()->count(), before + 1);
         doc.undoStack()->undo();
         QVERIFY(doc.light(0).intensity != 7.5 && doc.light(1).intensity != 7.5);
+    }
+
+    // Issue 11: typing x, y and z of a position made three "Change position" steps; one edit of a vector
+    // field is one step, however long the user pauses between the components.
+    void vectorEdit_isOneStep() {
+        Document doc;
+        PropertiesDock dock(&doc);
+        dock.show();
+        dock.activateWindow(); // no window manager under Xvfb: ask for focus directly
+        QVERIFY(QTest::qWaitForWindowActive(&dock));
+        QVERIFY(doc.addLight(LightType::Point));
+        doc.setSelectedRows({0}, 0);
+        auto* position = qobject_cast<Vec3Edit*>(dock.field(LightProperty::Position));
+        QVERIFY(position);
+        const glm::dvec3 start = doc.light(0).position;
+        const glm::dvec3 typed(1.5, -2.25, 3.0);
+        const int before = doc.undoStack()->count();
+        position->component(0)->setFocus();
+        for (int axis = 0; axis < 3; ++axis) {
+            NumberEdit* e = position->component(axis);
+            QTRY_VERIFY(e->hasFocus());
+            e->selectAll();
+            QTest::keyClicks(e, QByteArray::number(typed[axis]));
+            if (axis == 1) QTest::qWait(1300); // longer than the dock's pause that ends other gestures
+            if (axis < 2) QTest::keyClick(e, Qt::Key_Tab);
+        }
+        dock.field(LightProperty::Name)->setFocus(); // leave the vector
+        QTRY_VERIFY(dock.field(LightProperty::Name)->hasFocus());
+        QCOMPARE(doc.light(0).position, typed);
+        QCOMPARE(doc.undoStack()->count(), before + 1);
+        QCOMPARE(doc.undoStack()->text(before), QStringLiteral("Change position of Point"));
+        // The next edit of the vector, after leaving it, is a step of its own.
+        position->component(2)->setFocus();
+        QTRY_VERIFY(position->component(2)->hasFocus());
+        position->component(2)->selectAll();
+        QTest::keyClicks(position->component(2), "4");
+        dock.field(LightProperty::Name)->setFocus();
+        QTRY_COMPARE(doc.light(0).position.z, 4.0);
+        QCOMPARE(doc.undoStack()->count(), before + 2);
+        doc.undoStack()->undo();
+        doc.undoStack()->undo();
+        QCOMPARE(doc.light(0).position, start);
     }
 
     void spinSteps_mergeIntoOneStep() {

@@ -1,6 +1,7 @@
 // Every undo command: do, undo, redo restore the exact rig (serialised bytes); merging of continuous edits;
 // invalid values refused with a reason and nothing stored.
 #include "editor/commands.h"
+#include "editor/duplicatelights.h"
 #include "rigfixture.h"
 
 #include <QSignalSpy>
@@ -399,12 +400,101 @@ class TestCommands : public QObject {
         Document doc;
         doc.newRig(lrtest::sampleRig());
         checkDoUndoRedo(doc, [&] { return doc.duplicateLights({3, 0}); });
-        QCOMPARE(names(doc), (QStringList{"L0", "L1", "L2", "L3", "L0 copy", "L3 copy", "L4", "L5"}));
+        QCOMPARE(names(doc), (QStringList{"L0", "L1", "L2", "L3", "L0 2", "L3 2", "L4", "L5"}));
         QCOMPARE(doc.selectedRows(), (QList<int>{4, 5}));
         Light copy = doc.light(4);
+        QCOMPARE(copy.position, doc.light(0).position + duplicateOffset(doc.light(0)));
         copy.name = QStringLiteral("L0");
+        copy.position = doc.light(0).position;
         QCOMPARE(copy, doc.light(0));
         QVERIFY(doc.lightId(4) != doc.lightId(0));
+        QCOMPARE(doc.light(5).direction, doc.light(3).direction); // a rim light has no position to move
+    }
+
+    // Issue 11: Ctrl+D stacked copies in one place and named them "Key copy copy copy".
+    void duplicatesAreNumberedAndSpreadOut() {
+        Document doc;
+        Rig rig;
+        Light key = makeLight(LightType::Spot, QStringLiteral("Key"));
+        key.position = {0, 0, 0};
+        rig.lights = {key};
+        doc.newRig(rig);
+        QVERIFY(doc.duplicateLights({0}));       // Key -> Key 2
+        QVERIFY(doc.duplicateLights({1}));       // Key 2 -> Key 3
+        QVERIFY(doc.duplicateLights({0}));       // Key again -> Key 4
+        QVERIFY(doc.duplicateLights({0, 1, 2})); // three at once: Key 5, 6, 7
+        QCOMPARE(names(doc), (QStringList{"Key", "Key 4", "Key 2", "Key 5", "Key 6", "Key 7", "Key 3"}));
+        QCOMPARE(duplicateBaseName(QStringLiteral("Fill 12")), QStringLiteral("Fill"));
+        QCOMPARE(duplicateBaseName(QStringLiteral("42")), QStringLiteral("42"));
+        QCOMPARE(duplicateBaseName(QStringLiteral("Key copy")), QStringLiteral("Key copy"));
+        // No two lights share a position: every copy moved off its original and off the earlier copies.
+        for (int i = 0; i < doc.lightCount(); ++i)
+            for (int j = i + 1; j < doc.lightCount(); ++j)
+                QVERIFY2(doc.light(i).position != doc.light(j).position,
+                         qPrintable(doc.light(i).name + QStringLiteral(" and ") + doc.light(j).name));
+        QCOMPARE(doc.undoStack()->count(), 4);
+    }
+
+    // Issue 11: renaming allowed a name another light had, while Add numbers its names.
+    void renameToATakenNameNumbersIt() {
+        Document doc;
+        doc.newRig(lrtest::sampleRig());
+        QVERIFY(doc.renameLight(2, QStringLiteral("L4")));
+        QCOMPARE(doc.light(2).name, QStringLiteral("L4 2"));
+        QCOMPARE(doc.light(4).name, QStringLiteral("L4"));
+        QVERIFY(doc.renameLight(3, QStringLiteral("L4")));
+        QCOMPARE(doc.light(3).name, QStringLiteral("L4 3"));
+        // One name for several lights: numbered in row order.
+        QVERIFY(doc.setLightValue({5, 0, 1}, LightProperty::Name, QStringLiteral("Same")));
+        QCOMPARE(names(doc), (QStringList{"Same", "Same 2", "L4 2", "L4 3", "L4", "Same 3"}));
+        QCOMPARE(doc.undoStack()->count(), 3);
+        const QStringList all = names(doc);
+        QCOMPARE(QSet<QString>(all.begin(), all.end()).size(), doc.lightCount());
+        // Its own name again is no step and no error.
+        QString error = QStringLiteral("unset");
+        QVERIFY(doc.renameLight(2, QStringLiteral("L4 2"), &error));
+        QVERIFY(error.isEmpty());
+        QCOMPARE(doc.undoStack()->count(), 3);
+        doc.undoStack()->setIndex(0);
+        QCOMPARE(doc.rig(), lrtest::sampleRig());
+    }
+
+    // A value command finds its lights by id: rows that moved in between do not redirect it.
+    void valueCommandsKeyOnLightIds() {
+        Document doc;
+        doc.newRig(lrtest::pointRig(4));
+        auto cmd = ChangeLightValue::create(&doc, {1}, LightProperty::Intensity, 7.0);
+        QVERIFY(cmd);
+        QVERIFY(doc.moveLights({1}, 4)); // P1 goes to the end
+        doc.undoStack()->push(cmd.release());
+        QCOMPARE(doc.light(3).name, QStringLiteral("P1"));
+        QCOMPARE(doc.light(3).intensity, 7.0);
+        QCOMPARE(doc.light(1).intensity, 1.0);
+        doc.undoStack()->undo();
+        QCOMPARE(doc.light(3).intensity, 1.0);
+    }
+
+    // Names, on/off and values are one command family with texts from the property table.
+    void oneValueCommandWithTableTexts() {
+        Document doc;
+        doc.newRig(lrtest::sampleRig());
+        auto text = [&] { return doc.undoStack()->text(doc.undoStack()->index() - 1); };
+        QVERIFY(doc.renameLight(1, QStringLiteral("Key")));
+        QCOMPARE(text(), QStringLiteral("Rename L1 to Key"));
+        QVERIFY(doc.setLightsEnabled({1, 2}, false));
+        QCOMPARE(text(), QStringLiteral("Switch off 2 lights"));
+        QVERIFY(doc.setLightValue({0, 1, 2}, LightProperty::Type, QVariant::fromValue(LightType::Spot)));
+        QCOMPARE(text(), QStringLiteral("Change type of 3 lights"));
+        QVERIFY(doc.setLightValue({5}, LightProperty::ConeOuter, 50.0));
+        QCOMPARE(text(), QStringLiteral("Change cone outer angle of L5"));
+        for (int i = 0; i < doc.undoStack()->count(); ++i)
+            QVERIFY(dynamic_cast<const ChangeLightValue*>(doc.undoStack()->command(i)));
+        // Setting what a light already has is no step.
+        const int steps = doc.undoStack()->count();
+        QString error = QStringLiteral("unset");
+        QVERIFY(doc.setLightValue({5}, LightProperty::ConeOuter, 50.0, &error));
+        QVERIFY(error.isEmpty());
+        QCOMPARE(doc.undoStack()->count(), steps);
     }
 
     void moveLights_data() {

@@ -156,7 +156,9 @@ class TestLightsDock : public QObject {
         QVERIFY(m_doc->light(4).enabled);
     }
 
-    void typeComboEditsAllSelected() {
+    // Issue 12: changing the type of several lights must be deliberate, so the table's type combo changes the
+    // row it was opened on; the Properties dock changes every selected light.
+    void typeComboEditsOnlyItsRow() {
         m_doc->setSelectedRows({0, 4}, 0);
         const QModelIndex index = cell(0, LightTableModel::TypeColumn);
         view()->selectionModel()->setCurrentIndex(index, QItemSelectionModel::NoUpdate);
@@ -166,9 +168,51 @@ class TestLightsDock : public QObject {
         QVERIFY(combo);
         combo->setCurrentIndex(combo->findData(int(LightType::Directional)));
         QTest::keyClick(combo, Qt::Key_Return);
-        QTRY_COMPARE(m_doc->light(4).type, LightType::Directional);
-        QCOMPARE(m_doc->light(0).type, LightType::Directional);
+        QTRY_COMPARE(m_doc->light(0).type, LightType::Directional);
+        QCOMPARE(m_doc->light(4).type, LightType::Point);
         QCOMPARE(m_doc->undoStack()->count(), 1);
+        QCOMPARE(m_doc->selectedRows(), (QList<int>{0, 4}));
+    }
+
+    // Issue 12, item 1: select a point, a spot and a directional light; click the selected spot's Type cell
+    // (an inline combo opens); click an empty part of the table. Nothing may change.
+    void openingTheTypeComboOnSeveralSelectedChangesNothing() {
+        m_doc->newRig();
+        m_dock->addLightAction(LightType::Point)->trigger();
+        m_dock->addLightAction(LightType::Spot)->trigger();
+        m_dock->addLightAction(LightType::Directional)->trigger();
+        const int steps = m_doc->undoStack()->count();
+        selectInView({0, 1, 2});
+        QCOMPARE(m_doc->selectedRows(), (QList<int>{0, 1, 2}));
+        const QModelIndex spotType = cell(1, LightTableModel::TypeColumn);
+        QTest::mouseClick(view()->viewport(), Qt::LeftButton, {}, view()->visualRect(spotType).center());
+        QTRY_VERIFY(view()->viewport()->findChild<QComboBox*>() &&
+                    view()->viewport()->findChild<QComboBox*>()->isVisible()); // SelectedClicked, delayed
+        QCOMPARE(m_doc->selectedRows(), (QList<int>{0, 1, 2})); // the click kept all three selected
+        QCOMPARE(view()->viewport()->findChild<QComboBox*>()->currentData().toInt(), int(LightType::Spot));
+        QCOMPARE(view()->viewport()->findChild<QComboBox*>()->currentText(), QStringLiteral("Spot"));
+        // An empty part of the table: below the last row.
+        const QRect last = view()->visualRect(cell(2, LightTableModel::NameColumn));
+        const QPoint empty(last.center().x(), last.bottom() + 3 * last.height());
+        QVERIFY(view()->viewport()->rect().contains(empty));
+        QVERIFY(!view()->indexAt(empty).isValid());
+        QTest::mouseClick(view()->viewport(), Qt::LeftButton, {}, empty);
+        QTRY_VERIFY(!editorOpen());
+        QCOMPARE(m_doc->undoStack()->count(), steps);
+        QCOMPARE(m_doc->light(0).type, LightType::Point);
+        QCOMPARE(m_doc->light(1).type, LightType::Spot);
+        QCOMPARE(m_doc->light(2).type, LightType::Directional);
+        // The same for a number cell of several selected rows: opening and leaving it edits nothing.
+        selectInView({0, 1, 2});
+        view()->selectionModel()->setCurrentIndex(cell(1, LightTableModel::IntensityColumn),
+                                                  QItemSelectionModel::NoUpdate);
+        QVERIFY(m_doc->setLightValue({0}, LightProperty::Intensity, 3.0));
+        view()->edit(cell(1, LightTableModel::IntensityColumn));
+        QTRY_VERIFY(editorOpen());
+        QTest::mouseClick(view()->viewport(), Qt::LeftButton, {}, empty);
+        QTRY_VERIFY(!editorOpen());
+        QCOMPARE(m_doc->undoStack()->count(), steps + 1);
+        QCOMPARE(m_doc->light(0).intensity, 3.0);
     }
 
     void toolbarActions() {
@@ -186,13 +230,13 @@ class TestLightsDock : public QObject {
         m_dock->duplicateAction()->trigger();
         QCOMPARE(m_doc->lightCount(), 12);
         QCOMPARE(viewSelectedSourceRows(), (QList<int>{2, 3}));
-        QCOMPARE(m_doc->light(2).name, QStringLiteral("L0 copy"));
+        QCOMPARE(m_doc->light(2).name, QStringLiteral("L0 2")); // numbered like Add, not "L0 copy"
         // Delete key while the table has focus.
         view()->setFocus();
         QTRY_VERIFY(view()->hasFocus());
         QTest::keyClick(view(), Qt::Key_Delete);
         QCOMPARE(m_doc->lightCount(), 10);
-        QVERIFY(!names(*m_doc).contains(QStringLiteral("L0 copy")));
+        QVERIFY(!names(*m_doc).contains(QStringLiteral("L0 2")));
         QVERIFY(!m_dock->deleteAction()->isEnabled());
         QCOMPARE(m_doc->undoStack()->count(), 6); // 4 adds, duplicate, delete
         // F2 renames the current light in place.
