@@ -1,7 +1,10 @@
 #include "propertiesdock.h"
 
 #include "colorbutton.h"
+#include "colorpreview.h"
+#include "directionangles.h"
 #include "logslider.h"
+#include "modeltooltips.h"
 #include "numberedit.h"
 #include "propertyfields.h"
 #include "vec3edit.h"
@@ -134,6 +137,7 @@ void PropertiesDock::build() {
     });
 
     m_color = new ColorButton(m_panel);
+    previewColorEdits(m_color, m_doc, P::Color); // live preview while the dialog is open
     addRow(P::Color, tr("&Colour"), m_color);
     connect(m_color, &ColorButton::colorPicked, this,
             [this](const glm::dvec3& c) { apply(P::Color, QVariant::fromValue(c), false); });
@@ -176,8 +180,10 @@ void PropertiesDock::build() {
     };
     m_position = vec3Row(P::Position, tr("&Position"));
     m_direction = vec3Row(P::Direction, tr("&Direction"));
+    addDirectionAngles(m_form, m_direction, m_doc); // azimuth/elevation below x, y, z (directionangles.h)
 
     m_falloff = enumCombo<FalloffModel>(m_panel);
+    installModelTooltips<FalloffModel>(m_falloff);
     addRow(P::FalloffModel, tr("&Falloff"), m_falloff);
     connect(m_falloff, &QComboBox::activated, this,
             [this](int i) { apply(P::FalloffModel, toString(FalloffModel(i)), false); });
@@ -201,6 +207,7 @@ void PropertiesDock::build() {
     addNumber(P::FalloffQuadratic, tr("&Quadratic"), 0.0, kMaxPolynomialCoefficient, false);
 
     m_cone = enumCombo<ConeModel>(m_panel);
+    installModelTooltips<ConeModel>(m_cone);
     addRow(P::ConeModel, tr("C&one"), m_cone);
     connect(m_cone, &QComboBox::activated, this,
             [this](int i) { apply(P::ConeModel, toString(ConeModel(i)), false); });
@@ -209,6 +216,7 @@ void PropertiesDock::build() {
     addNumber(P::ConeExponent, tr("Cone exponen&t"), 0.0, kMaxExponent, true);
 
     m_diffuse = enumCombo<DiffuseModel>(m_panel);
+    installModelTooltips<DiffuseModel>(m_diffuse);
     addRow(P::Diffuse, tr("Di&ffuse"), m_diffuse);
     connect(m_diffuse, &QComboBox::activated, this,
             [this](int i) { apply(P::Diffuse, toString(DiffuseModel(i)), false); });
@@ -219,6 +227,7 @@ void PropertiesDock::build() {
     m_specularFactor->setLimits(0.0, kMaxColorComponent);
     m_specularFactor->setWhat(lightPropertyName(P::Specular));
     m_specularColor = new ColorButton(m_panel);
+    previewColorEdits(m_specularColor, m_doc, P::Specular);
     addRow(P::Specular, tr("&Specular"), hbox(m_panel, {m_specularKind, m_specularFactor, m_specularColor}));
     connect(m_specularKind, &QComboBox::activated, this, [this](int kind) {
         apply(P::Specular,
@@ -235,6 +244,7 @@ void PropertiesDock::build() {
     m_ambientOn = new QCheckBox(m_panel);
     m_ambientOn->setToolTip(tr("The light's own ambient term (attenuated like the rest of the light)"));
     m_ambient = new ColorButton(m_panel);
+    previewColorEdits(m_ambient, m_doc, P::Ambient);
     addRow(P::Ambient, tr("&Ambient"), hbox(m_panel, {m_ambientOn, m_ambient}));
     connect(m_ambientOn, &QCheckBox::clicked, this, [this](bool on) {
         apply(P::Ambient, on ? QVariant::fromValue(m_ambient->color()) : QVariant(), false);
