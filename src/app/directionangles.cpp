@@ -54,6 +54,9 @@ DirectionAnglesEdit::DirectionAnglesEdit(Document* document, QFormLayout* form, 
     layout->addWidget(m_elevation, 1);
     connect(m_azimuth, &NumberEdit::valueEdited, this, [this](double v) { apply(true, v); });
     connect(m_elevation, &NumberEdit::valueEdited, this, [this](double v) { apply(false, v); });
+    m_idle.setSingleShot(true);
+    m_idle.setInterval(1000);
+    connect(&m_idle, &QTimer::timeout, this, [this] { m_edit.reset(); });
     for (NumberEdit* e : {m_azimuth, m_elevation})
         connect(e, &QAbstractSpinBox::editingFinished, this, [this] { m_edit.reset(); });
     connect(m_doc, &Document::rigChanged, this, &DirectionAnglesEdit::refresh);
@@ -94,6 +97,7 @@ void DirectionAnglesEdit::apply(bool azimuth, double degrees) {
     }
     if (rows.isEmpty()) return;
     if (!m_edit) m_edit = std::make_unique<ContinuousEdit>(m_doc);
+    m_idle.start();
     m_doc->setLightValues(rows, LightProperty::Direction, values);
 }
 

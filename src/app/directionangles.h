@@ -5,6 +5,7 @@
 // light's other angle; one typing or stepping gesture is one undo step.
 #pragma once
 
+#include <QTimer>
 #include <QWidget>
 #include <glm/vec3.hpp>
 #include <memory>
@@ -42,6 +43,7 @@ class DirectionAnglesEdit : public QWidget {
     NumberEdit* m_azimuth;
     NumberEdit* m_elevation;
     std::unique_ptr<ContinuousEdit> m_edit;
+    QTimer m_idle; // ends the edit a second after the last step (arrows and wheel have no editingFinished)
 };
 
 // Inserts the azimuth/elevation row below `directionField`'s row of `form` (the field showing x, y, z);
