@@ -48,9 +48,20 @@ glm::dvec3 ColorButton::fromDisplay(const QColor& srgb, double scale) {
 
 void ColorButton::pick() {
     const QColor initial = toDisplay(m_color);
-    const QColor chosen = QColorDialog::getColor(initial, this, tr("Light colour"));
-    if (!chosen.isValid() || (chosen.rgb() == initial.rgb() && !m_mixed)) return;
-    const glm::dvec3 picked = fromDisplay(chosen, m_mixed ? 1.0 : hdrScale(m_color));
+    const double scale = m_mixed ? 1.0 : hdrScale(m_color);
+    QColorDialog dialog(initial, this);
+    dialog.setObjectName(QStringLiteral("colorDialog"));
+    dialog.setWindowTitle(tr("Light colour"));
+    // Live preview: every colour the dialog shows is announced, so the viewport can follow it.
+    emit previewStarted();
+    connect(&dialog, &QColorDialog::currentColorChanged, this, [this, scale](const QColor& c) {
+        if (c.isValid()) emit colorPreviewed(fromDisplay(c, scale));
+    });
+    const bool accepted = dialog.exec() == QDialog::Accepted;
+    const QColor chosen = dialog.selectedColor();
+    emit previewFinished(accepted);
+    if (!accepted || !chosen.isValid() || (chosen.rgb() == initial.rgb() && !m_mixed)) return;
+    const glm::dvec3 picked = fromDisplay(chosen, scale);
     setColor(picked);
     emit colorPicked(picked);
 }

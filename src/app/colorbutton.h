@@ -1,6 +1,7 @@
 // A button showing a linear-RGB colour swatch; clicking opens QColorDialog. HDR colours (components > 1,
 // e.g. the book's red light of 15) keep their brightness: the dialog edits the colour divided by its
 // largest component (when > 1) and the result is scaled back, so OK without a change changes nothing.
+// While the dialog is open every colour it shows is announced (colorPreviewed) for a live preview.
 #pragma once
 
 #include <QToolButton>
@@ -24,6 +25,11 @@ class ColorButton : public QToolButton {
 
   signals:
     void colorPicked(const glm::dvec3& linear); // user chose a different colour
+    // While the dialog is open (live preview, see colorpreview.h): started, each colour it shows, and
+    // finished (accepted: OK, colorPicked follows when the colour changed; else Cancel: take it back).
+    void previewStarted();
+    void colorPreviewed(const glm::dvec3& linear);
+    void previewFinished(bool accepted);
 
   private:
     void pick();

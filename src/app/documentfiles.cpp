@@ -1,5 +1,6 @@
 #include "documentfiles.h"
 
+#include "core/rigjson.h"
 #include "editor/document.h"
 #include "errordialog.h"
 #include "lightimport.h"
@@ -20,13 +21,23 @@ namespace lr {
 namespace {
 const QString kRigFilter = QObject::tr("LightRig rigs (*.json);;All files (*)");
 
-QString lastDir() {
-    return QSettings().value(QStringLiteral("files/lastDir"), QDir::homePath()).toString();
-}
-void rememberDir(const QString& path) {
-    QSettings().setValue(QStringLiteral("files/lastDir"), QFileInfo(path).absolutePath());
+QString folderKey(DocumentFiles::FileKind kind) {
+    return kind == DocumentFiles::FileKind::Rig ? QStringLiteral("files/lastRigDir")
+                                                : QStringLiteral("files/lastModelDir");
 }
 } // namespace
+
+QString DocumentFiles::lastFolder(FileKind kind) {
+    // "files/lastDir" was the one folder both kinds shared before: still a better start than home.
+    const QSettings s;
+    const QString dir = s.value(folderKey(kind), s.value(QStringLiteral("files/lastDir"))).toString();
+    return !dir.isEmpty() && QFileInfo(dir).isDir() ? dir : QDir::homePath();
+}
+
+void DocumentFiles::rememberFolder(FileKind kind, const QString& filePath) {
+    if (filePath.isEmpty() || filePath.startsWith(QLatin1String(":/"))) return; // bundled resources
+    QSettings().setValue(folderKey(kind), QFileInfo(filePath).absolutePath());
+}
 
 struct DocumentFiles::Load {
     QString path;
@@ -44,15 +55,12 @@ DocumentFiles::DocumentFiles(Document* document, Scene* scene, RecentFiles* rece
                : answer == QMessageBox::Discard ? UnsavedAnswer::Discard
                                                 : UnsavedAnswer::Cancel;
     };
+    // The folders are remembered when a file of that kind was opened or saved (rememberFolder), not here.
     askOpenPath = [this](const QString& title, const QString& filter) {
-        const QString p = QFileDialog::getOpenFileName(m_window, title, lastDir(), filter);
-        if (!p.isEmpty()) rememberDir(p);
-        return p;
+        return QFileDialog::getOpenFileName(m_window, title, lastFolder(m_askingKind), filter);
     };
     askSavePath = [this](const QString& title, const QString& suggested, const QString& filter) {
-        const QString p = QFileDialog::getSaveFileName(m_window, title, suggested, filter);
-        if (!p.isEmpty()) rememberDir(p);
-        return p;
+        return QFileDialog::getSaveFileName(m_window, title, suggested, filter);
     };
     askTexturesOutsideFolder = [this](const QString& path, const QStringList& references) {
         return askLoadTexturesOutsideFolder(m_window, path, references);
@@ -90,12 +98,12 @@ bool DocumentFiles::newRig() {
 
 bool DocumentFiles::openRig(const QString& requested) {
     QString path = requested;
-    if (path.isEmpty()) path = askOpenPath(tr("Open rig"), kRigFilter);
+    if (path.isEmpty()) {
+        m_askingKind = FileKind::Rig;
+        path = askOpenPath(tr("Open rig"), kRigFilter);
+    }
     if (path.isEmpty()) return false;
-    if (!maybeSave()) return false;
-    QStringList warnings;
-    const QString error = m_doc->load(path, &warnings);
-    if (!error.isEmpty()) {
+    auto refuse = [this, &path](const QString& error) {
         const QStringList lines = error.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
         showError(m_window, {tr("Open rig"),
                              tr("Could not open %1: %n error(s). The rig that was open is unchanged.",
@@ -103,7 +111,18 @@ bool DocumentFiles::openRig(const QString& requested) {
                                  .arg(QFileInfo(path).fileName()),
                              lines});
         return false;
-    }
+    };
+    // Check the file before asking about unsaved changes: a file that cannot be opened must not cost the
+    // user a question (or a save) first.
+    const RigReadResult check = readRigFile(path);
+    if (!check.ok())
+        return refuse(check.errors.isEmpty() ? tr("%1: could not be read").arg(path)
+                                             : check.errors.join(QLatin1Char('\n')));
+    if (!maybeSave()) return false;
+    QStringList warnings;
+    const QString error = m_doc->load(path, &warnings); // read again: it may have changed while we asked
+    if (!error.isEmpty()) return refuse(error);
+    rememberFolder(FileKind::Rig, path);
     m_recent->add(path);
     emit statusMessage(warnings.isEmpty()
                            ? tr("Opened %1").arg(QDir::toNativeSeparators(path))
@@ -130,7 +149,7 @@ bool DocumentFiles::saveAs(const QString& requested) {
         const QString name = m_doc->rig().name.isEmpty() ? tr("rig") : m_doc->rig().name;
         const QString suggested =
             m_doc->filePath().isEmpty() || m_doc->filePath().startsWith(QLatin1String(":/"))
-                ? QDir(lastDir()).filePath(name + QStringLiteral(".json"))
+                ? QDir(lastFolder(FileKind::Rig)).filePath(name + QStringLiteral(".json"))
                 : m_doc->filePath();
         path = askSavePath(tr("Save rig as"), suggested, kRigFilter);
     }
@@ -142,6 +161,7 @@ bool DocumentFiles::saveAs(const QString& requested) {
         showError(m_window, {tr("Save rig"), tr("Could not save the rig."), error.split(QLatin1Char('\n'))});
         return false;
     }
+    rememberFolder(FileKind::Rig, path);
     m_recent->add(path);
     emit statusMessage(tr("Saved %1").arg(QDir::toNativeSeparators(path)));
     return true;
@@ -149,7 +169,10 @@ bool DocumentFiles::saveAs(const QString& requested) {
 
 bool DocumentFiles::openModel(const QString& requested) {
     QString path = requested;
-    if (path.isEmpty()) path = askOpenPath(tr("Open model"), modelFileFilter() + tr(";;All files (*)"));
+    if (path.isEmpty()) {
+        m_askingKind = FileKind::Model;
+        path = askOpenPath(tr("Open model"), modelFileFilter() + tr(";;All files (*)"));
+    }
     if (path.isEmpty()) return false;
     startModelLoad(path, false);
     return true;
@@ -212,6 +235,7 @@ void DocumentFiles::modelImported(const std::shared_ptr<Load>& load, const Model
     if (result.ok()) {
         m_scene->setModel(result.model, load->path);
         if (!load->path.startsWith(QLatin1String(":/"))) m_recent->add(load->path);
+        rememberFolder(FileKind::Model, load->path);
         const auto& m = *result.model;
         emit statusMessage(tr("Loaded %1: %2 triangles, %3 meshes, %4 materials in %5 ms%6%7")
                                .arg(name)
@@ -224,13 +248,17 @@ void DocumentFiles::modelImported(const std::shared_ptr<Load>& load, const Model
                                         : tr(" (%n warning(s))", nullptr, int(m.warnings.size())),
                                     note));
         emit modelLoaded(load->path);
-    } else if (!result.cancelled) {
+        emit modelLoadFinished();
+    } else {
+        // Finished (the Loading bar goes) before the error dialog opens, not behind it; then the failure,
+        // whose handler may start another load (the bundled model as a fallback).
+        emit modelLoadFinished();
+        if (result.cancelled) return;
         emit modelLoadFailed(load->path, result.error);
         showError(m_window, {tr("Open model"),
                              tr("Could not open %1. The model that was open is unchanged.").arg(name),
                              {result.error}});
     }
-    emit modelLoadFinished();
 }
 
 void DocumentFiles::cancelModelLoad() {

@@ -25,6 +25,13 @@ class DocumentFiles : public QObject {
     Q_OBJECT
   public:
     enum class UnsavedAnswer { Save, Discard, Cancel };
+    enum class FileKind { Rig, Model };
+
+    // The folder the open/save dialogs start in, one per kind of file (QSettings "files/lastRigDir",
+    // "files/lastModelDir"): a model's folder is never proposed for a rig. rememberFolder is called when a
+    // file of that kind was opened or saved.
+    static QString lastFolder(FileKind kind);
+    static void rememberFolder(FileKind kind, const QString& filePath);
 
     DocumentFiles(Document* document, Scene* scene, RecentFiles* recent, QWidget* window);
     ~DocumentFiles() override;
@@ -32,6 +39,7 @@ class DocumentFiles : public QObject {
     // Hooks for tests and scripted runs: the question asked before unsaved changes would be lost, and the
     // file dialogs (return "" for cancel). Defaults use QMessageBox / QFileDialog.
     std::function<UnsavedAnswer(const QString& documentName)> askUnsaved;
+    // askOpenPath's default starts in lastFolder() of the kind being opened.
     std::function<QString(const QString& title, const QString& filter)> askOpenPath;
     std::function<QString(const QString& title, const QString& suggested, const QString& filter)> askSavePath;
     // Asked before the rig is written to a path (sessionsafety.cpp: "changed on disk since opened,
@@ -43,8 +51,10 @@ class DocumentFiles : public QObject {
 
     bool maybeSave(); // true when it is fine to drop the current rig (saved, discarded or unmodified)
     bool newRig();
-    bool openRig(const QString& path = QString()); // "" asks for a file
-    bool save();                                   // untitled: save as
+    // "" asks for a file. The file is read and checked first: one that cannot be opened is reported without
+    // asking about unsaved changes; then maybeSave(), then the load.
+    bool openRig(const QString& path = QString());
+    bool save(); // untitled: save as
     bool saveAs(const QString& path = QString());
     // Starts loading a model ("" asks for a file); returns false only when nothing was started.
     bool openModel(const QString& path = QString());
@@ -59,8 +69,8 @@ class DocumentFiles : public QObject {
     void modelLoadStarted(const QString& path);
     void modelLoadProgress(double fraction);
     void modelLoaded(const QString& path);
-    void modelLoadFailed(const QString& path, const QString& error); // not emitted for cancellation
-    void modelLoadFinished();                                        // after loaded, failed or cancelled
+    void modelLoadFailed(const QString& path, const QString& error); // after modelLoadFinished; not on cancel
+    void modelLoadFinished(); // loaded, failed or cancelled (before a failure is reported: no bar behind it)
     void statusMessage(const QString& text);
 
   private:
@@ -74,6 +84,7 @@ class DocumentFiles : public QObject {
     QPointer<QWidget> m_window;
     std::shared_ptr<Load> m_loading;
     QFutureWatcher<ModelLoadResult>* m_watcher = nullptr;
+    FileKind m_askingKind = FileKind::Rig; // which kind askOpenPath's default dialog is asked for
 };
 
 } // namespace lr

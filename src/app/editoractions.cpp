@@ -1,5 +1,6 @@
 #include "editoractions.h"
 
+#include "controlshelp.h"
 #include "documentfiles.h"
 #include "editor/document.h"
 #include "errordialog.h"
@@ -59,7 +60,10 @@ void EditorActions::createFileMenu() {
     connect(m_window->recentFiles(), &RecentFiles::openRequested, files, &DocumentFiles::openFile);
     menu->addSeparator();
     save = add(tr("&Save"), QKeySequence::Save, [files] { files->save(); });
-    saveAs = add(tr("Save &as…"), QKeySequence::SaveAs, [files] { files->saveAs(); });
+    // Spelled out: QKeySequence::SaveAs is empty on platforms without a theme that defines it (X11 without
+    // KDE or GNOME, Xvfb), which left Save As without a shortcut.
+    saveAs =
+        add(tr("Save &as…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S), [files] { files->saveAs(); });
     menu->addSeparator();
     importLights =
         add(tr("&Import lights from model"), QKeySequence(), [files] { files->importLightsFromModel(); });
@@ -132,16 +136,16 @@ void EditorActions::createOtherMenus() {
     for (QDockWidget* dock : m_window->findChildren<QDockWidget*>())
         windows->addAction(dock->toggleViewAction());
     QMenu* help = m_window->menuBar()->addMenu(tr("&Help"));
+    controls = help->addAction(tr("&Controls"));
+    controls->setShortcut(QKeySequence::HelpContents);
+    connect(controls, &QAction::triggered, m_window, [this] { showControls(m_window); });
     QAction* about = help->addAction(tr("&About LightRig"));
     connect(about, &QAction::triggered, m_window, [this] {
         QMessageBox::about(
             m_window, tr("About LightRig"),
             tr("<b>LightRig %1</b><p>Design light rigs on 3D models: point, spot, directional and rim "
                "lights with the falloff and cone models of classic real-time rendering.</p>"
-               "<p>Viewport: left drag orbits, middle drag or Shift+left drag pans, the wheel "
-               "dollies. Click a light to select it, drag it to move it (Ctrl or Alt: along the "
-               "view axis), drag a spot's cone edge to change its angle, Shift+click the model "
-               "to aim the selected light there.</p>")
+               "<p>Help › Controls lists the mouse and keyboard bindings.</p>")
                 .arg(QApplication::applicationVersion()));
     });
 }

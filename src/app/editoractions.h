@@ -31,6 +31,7 @@ class EditorActions : public QObject {
     QAction* lookThroughLight = nullptr;
     QAction* showGizmos = nullptr;
     QAction* showGrid = nullptr;
+    QAction* controls = nullptr; // Help > Controls (F1): the mouse and key bindings (controlshelp.h)
     QMenu* recentMenu = nullptr;
     QMenu* standardViewsMenu = nullptr;
     QMenu* modelCamerasMenu = nullptr;

@@ -2,6 +2,7 @@
 
 #include "render/gizmos.h"
 #include "scene.h"
+#include "undodiscard.h"
 
 #include <cmath>
 
@@ -28,6 +29,10 @@ double spotGizmoLength(const Rig& rig, const SceneFrame& frame, const Light& lig
     const double range = bounded ? f.range / distanceScale(rig, frame) : -1.0;
     return range > 0.0 && std::isfinite(range) && range < radius * 1e4 ? std::min(range, radius * 3.0)
                                                                        : radius;
+}
+
+double roundConeAngle(double degrees) {
+    return std::round(degrees / kConeStepDegrees) * kConeStepDegrees;
 }
 
 GizmoInteraction::GizmoInteraction(Document* document, Scene* scene) : m_doc(document), m_scene(scene) {}
@@ -120,7 +125,10 @@ void GizmoInteraction::move(const ScreenProjector& projector, const QPointF& scr
                                                 l.direction, screen, m_rimDistance);
         // A smooth cone's outer angle stays at or above its inner one (the document refuses less).
         const double lowest = l.cone.model == ConeModel::Smooth ? std::max(0.5, l.cone.inner) : 0.5;
-        if (angle) m_doc->setLightValue({row}, LightProperty::ConeOuter, std::clamp(*angle, lowest, 90.0));
+        // Rounded to kConeStepDegrees: a drag leaves 32.5°, not 32.59493°.
+        if (angle)
+            m_doc->setLightValue({row}, LightProperty::ConeOuter,
+                                 std::clamp(roundConeAngle(*angle), lowest, 90.0));
         return;
     }
     const bool alongView = modifiers & (Qt::ControlModifier | Qt::AltModifier);
@@ -188,9 +196,9 @@ bool GizmoInteraction::cancel() {
     const int before = m_startIndex;
     reset();
     if (!changed) return false;
-    // The drag is one merged step on top of where it started (if it pushed anything at all).
-    QUndoStack* stack = m_doc->undoStack();
-    if (stack->index() == before + 1) stack->undo();
+    // Take back every step the drag pushed (one merged step, or one per property for a mixed selection),
+    // leaving nothing to redo: a cancelled drag never happened.
+    discardStepsAbove(m_doc, before);
     return true;
 }
 

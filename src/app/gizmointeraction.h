@@ -22,6 +22,10 @@ glm::dvec3 lightAnchor(const Rig& rig, const SceneFrame& frame, const Light& lig
 // Length (world) of a spot light's cone gizmo: its range when it has one (capped), else the scene's radius.
 double spotGizmoLength(const Rig& rig, const SceneFrame& frame, const Light& light);
 
+// Cone angles set by dragging the cone edge are rounded to this step (degrees); typed values stay exact.
+constexpr double kConeStepDegrees = 0.5;
+double roundConeAngle(double degrees);
+
 class GizmoInteraction {
   public:
     static constexpr double kPickPixels = 12.0; // how near a click must be to a gizmo
@@ -44,7 +48,8 @@ class GizmoInteraction {
     // Mouse moved with the button held; `worldPerPixel` converts pixels to world units at the light's depth.
     void move(const ScreenProjector& projector, const QPointF& screen, Qt::KeyboardModifiers modifiers);
     void release(); // the button was released: ends the drag (one undo step)
-    // Ends the drag and takes back what it changed (Escape). Returns true when there was something to undo.
+    // Ends the drag and takes back what it changed (Escape), leaving nothing on the redo side. Returns true
+    // when there was something to undo.
     bool cancel();
     bool isDragging() const { return m_drag != Drag::None; }
     Drag drag() const { return m_drag; }

@@ -53,7 +53,9 @@ LightTableView::LightTableView(QWidget* parent) : QTableView(parent) {
     setDefaultDropAction(Qt::MoveAction);
     setDragDropOverwriteMode(false); // drops land between rows
     setDropIndicatorShown(true);
-    setEditTriggers(DoubleClicked | EditKeyPressed | SelectedClicked);
+    // No EditKeyPressed: F2 is the Lights dock's Rename action, which renames only the current selected light
+    // (the view's own F2 edited its current index, still set on an unselected row after a Delete).
+    setEditTriggers(DoubleClicked | SelectedClicked);
     setAlternatingRowColors(true);
     setWordWrap(false);
     verticalHeader()->hide();

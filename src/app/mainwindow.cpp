@@ -68,17 +68,24 @@ void MainWindow::createDocks() {
     history->setEmptyLabel(tr("<opened>"));
     m_historyDock->setWidget(history);
 
-    // Left: the console (lights) over presets and history. Right: properties over render settings.
-    addDockWidget(Qt::LeftDockWidgetArea, m_lightsDock);
-    addDockWidget(Qt::LeftDockWidgetArea, m_presetsDock);
+    // The default layout, usable at the default 1280×800 (issue 12: a left column left the light table 250 px
+    // wide, its Solo, Colour, Intensity and Falloff columns behind a scrollbar, and Render settings' form
+    // squeezed Properties to ~100 px). The light table spans the bottom under the viewport, where all its
+    // columns fit, with presets and history beside it; Properties has the whole right column, Render
+    // settings and Quality as tabs behind it.
+    setCorner(Qt::TopRightCorner, Qt::RightDockWidgetArea);
+    setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
+    addDockWidget(Qt::BottomDockWidgetArea, m_lightsDock);
+    addDockWidget(Qt::BottomDockWidgetArea, m_presetsDock);
     tabifyDockWidget(m_presetsDock, m_historyDock);
     addDockWidget(Qt::RightDockWidgetArea, m_propertiesDock);
-    addDockWidget(Qt::RightDockWidgetArea, m_renderDock);
-    m_presetsDock->raise();
-    resizeDocks({m_lightsDock, m_propertiesDock}, {400, 340}, Qt::Horizontal);
-    resizeDocks({m_lightsDock, m_presetsDock}, {300, 400}, Qt::Vertical);
-    resizeDocks({m_propertiesDock, m_renderDock}, {560, 300}, Qt::Vertical);
+    tabifyDockWidget(m_propertiesDock, m_renderDock);
     addQualityDock(this); // the Quality panel (qualitydock.h), a tab beside Render settings
+    m_presetsDock->raise();
+    m_propertiesDock->raise();
+    resizeDocks({m_propertiesDock}, {390}, Qt::Horizontal);
+    resizeDocks({m_lightsDock, m_presetsDock}, {620, 260}, Qt::Horizontal);
+    resizeDocks({m_lightsDock}, {230}, Qt::Vertical);
 }
 
 void MainWindow::connectStatus() {

@@ -1,7 +1,10 @@
 #include "propertiesdock.h"
 
 #include "colorbutton.h"
+#include "colorpreview.h"
+#include "directionangles.h"
 #include "logslider.h"
+#include "modeltooltips.h"
 #include "numberedit.h"
 #include "propertyfields.h"
 #include "vec3edit.h"
@@ -196,6 +199,15 @@ void PropertiesDock::build() {
         m_form->addRow(row.displayLabel(), f.widget);
         m_fields.insert(row.id, f.widget);
         m_parts.insert(row.id, f);
+        // Hooks of their own files: live colour preview (colorpreview.h), the models' tooltips
+        // (modeltooltips.h) and azimuth/elevation below a direction's x, y, z (directionangles.h).
+        if (f.color && (row.id == LightProperty::Color || row.id == LightProperty::Specular ||
+                        row.id == LightProperty::Ambient))
+            previewColorEdits(f.color, m_doc, row.id);
+        if (f.combo && row.id == LightProperty::FalloffModel) installModelTooltips<FalloffModel>(f.combo);
+        if (f.combo && row.id == LightProperty::ConeModel) installModelTooltips<ConeModel>(f.combo);
+        if (f.combo && row.id == LightProperty::Diffuse) installModelTooltips<DiffuseModel>(f.combo);
+        if (row.id == LightProperty::Direction) addDirectionAngles(m_form, f.widget, m_doc);
     }
 
     auto* scroll = new QScrollArea(this);

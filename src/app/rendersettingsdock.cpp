@@ -2,6 +2,7 @@
 
 #include "colorbutton.h"
 #include "editor/document.h"
+#include "modeltooltips.h"
 #include "numberedit.h"
 #include "ui_rendersettings.h"
 #include "viewsettings.h"
@@ -40,6 +41,8 @@ RenderSettingsDock::RenderSettingsDock(Document* document, ViewSettings* setting
     fillCombo<Quality>(m_ui->quality);
     fillCombo<SpecularModel>(m_ui->specularModel);
     fillCombo<ViewerModel>(m_ui->viewerModel);
+    installModelTooltips<SpecularModel>(m_ui->specularModel);
+    installModelTooltips<ViewerModel>(m_ui->viewerModel);
     m_ui->shininess->setLimits(0.0, kMaxShininess, true);
     m_ui->shininess->setWhat(rigPropertyName(RigProperty::Shininess));
 

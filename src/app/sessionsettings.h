@@ -1,5 +1,6 @@
-// What the editor restores at the next start, in QSettings: window geometry and dock layout
-// (saveGeometry/saveState), the last model and the last rig file. Kept separate from the main window so the
+// What the editor restores at the next start, in QSettings: the window's client rectangle and maximized
+// state (not saveGeometry's frame position, which drifted under some window managers), the dock layout
+// (saveState), the last model and the last rig file. Kept separate from the main window so the
 // window only says when to save and restore.
 #pragma once
 
@@ -12,7 +13,8 @@ namespace lr {
 class SessionSettings {
   public:
     // Bump when the dock set changes so an old layout is not restored onto new docks.
-    static constexpr int kStateVersion = 1;
+    // 2: the default layout of issue 12 (table at the bottom, Properties the whole right column).
+    static constexpr int kStateVersion = 2;
 
     static void saveWindow(const QMainWindow* window);
     static bool restoreWindow(QMainWindow* window); // false when nothing was stored

@@ -3,12 +3,31 @@
 #include "app/logslider.h"
 #include "app/numberedit.h"
 
+#include <QApplication>
+#include <QLineEdit>
+#include <QMouseEvent>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QTest>
 #include <glm/geometric.hpp>
 
 using namespace lr;
+
+namespace {
+void mouse(QWidget* w, QEvent::Type type, double x, Qt::KeyboardModifiers mods = Qt::NoModifier) {
+    const QPointF pos(x, w->height() / 2.0);
+    const Qt::MouseButton button = type == QEvent::MouseMove ? Qt::NoButton : Qt::LeftButton;
+    const Qt::MouseButtons held = type == QEvent::MouseButtonRelease ? Qt::NoButton : Qt::LeftButton;
+    QMouseEvent e(type, pos, w->mapToGlobal(pos), button, held, mods);
+    QApplication::sendEvent(w, &e);
+}
+// Drags the slider from x0 to x1 in steps of 5 px (the moves carry `mods`); no release.
+void dragSlider(QWidget* w, double x0, double x1, Qt::KeyboardModifiers mods = Qt::NoModifier) {
+    const int steps = std::max(1, int(std::abs(x1 - x0) / 5.0));
+    for (int i = 1; i <= steps; ++i)
+        mouse(w, QEvent::MouseMove, x0 + (x1 - x0) * i / steps, mods);
+}
+} // namespace
 
 class TestWidgets : public QObject {
     Q_OBJECT
@@ -44,6 +63,83 @@ class TestWidgets : public QObject {
         QVERIFY(std::abs(e.value() - 100.0) / 100.0 < 0.02);
         emit e.slider()->sliderReleased();
         QCOMPARE(finished.count(), 1);
+    }
+
+    // Issue 12 item 5: 75 px of drag took 1 to 3620 (absolute log scale over 1e-3..1e6). Now a drag is
+    // relative in EV: 40 px doubles, Shift is 10x finer, Ctrl is 4x coarser in whole EV steps.
+    void logSlider_dragIsRelativeInEv() {
+        LogSliderEdit e;
+        e.setLimits(1e-3, 1e6);
+        e.resize(400, 30);
+        e.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&e));
+        QWidget* s = e.slider();
+        QSignalSpy edited(&e, &LogSliderEdit::valueEdited), finished(&e, &LogSliderEdit::editFinished);
+
+        e.setValue(1.0);
+        mouse(s, QEvent::MouseButtonPress, 20); // a press does not jump to the position under the mouse
+        QCOMPARE(e.value(), 1.0);
+        dragSlider(s, 20, 95); // 75 px: 75/40 EV
+        QVERIFY2(std::abs(e.value() - std::exp2(75.0 / 40.0)) < 0.02, qPrintable(QString::number(e.value())));
+        QVERIFY(edited.count() > 5); // continuous
+        dragSlider(s, 95, 20);       // back where it started: the value it started with
+        QCOMPARE(e.value(), 1.0);
+        mouse(s, QEvent::MouseButtonRelease, 20);
+        QCOMPARE(finished.count(), 1);
+
+        // The same 75 px near 5000 is the same factor: fine at any magnitude.
+        e.setValue(5000.0);
+        mouse(s, QEvent::MouseButtonPress, 300);
+        dragSlider(s, 300, 225);
+        QVERIFY2(std::abs(e.value() / 5000.0 - std::exp2(-75.0 / 40.0)) < 0.01,
+                 qPrintable(QString::number(e.value())));
+        mouse(s, QEvent::MouseButtonRelease, 225);
+
+        // Shift: ten times finer.
+        e.setValue(2.0);
+        mouse(s, QEvent::MouseButtonPress, 20);
+        dragSlider(s, 20, 100, Qt::ShiftModifier); // 80 px = 0.2 EV
+        QVERIFY2(std::abs(e.value() - 2.0 * std::exp2(0.2)) < 0.01, qPrintable(QString::number(e.value())));
+        mouse(s, QEvent::MouseButtonRelease, 100);
+
+        // Ctrl: coarse, in whole EV steps (powers of two from the start).
+        e.setValue(3.0);
+        mouse(s, QEvent::MouseButtonPress, 20);
+        dragSlider(s, 20, 65, Qt::ControlModifier); // 45 px * 4 / 40 = 4.5 EV: snaps to a whole EV
+        const double ev = std::log2(e.value() / 3.0);
+        QVERIFY2(std::abs(ev - std::round(ev)) < 0.01 && ev >= 4.0, qPrintable(QString::number(ev)));
+        mouse(s, QEvent::MouseButtonRelease, 65);
+
+        // Far drags stop at the limits; arrow keys step a third of an EV, one gesture each.
+        e.setValue(1.0);
+        mouse(s, QEvent::MouseButtonPress, 0);
+        dragSlider(s, 0, 2000, Qt::ControlModifier);
+        QCOMPARE(e.value(), 1e6);
+        mouse(s, QEvent::MouseButtonRelease, 2000);
+        e.setValue(8.0);
+        const int before = finished.count();
+        QTest::keyClick(s, Qt::Key_Left);
+        QVERIFY(std::abs(e.value() - 8.0 * std::exp2(-1.0 / 3.0)) < 0.01);
+        QCOMPARE(finished.count(), before + 1);
+    }
+
+    // The typed field keeps exactly what was typed (no rounding to a slider step).
+    void logSlider_typedValueIsExact() {
+        LogSliderEdit e;
+        e.setLimits(1e-3, 1e6);
+        e.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&e));
+        QSignalSpy edited(&e, &LogSliderEdit::valueEdited);
+        QLineEdit* line = e.spinBox()->findChild<QLineEdit*>();
+        QVERIFY(line);
+        e.spinBox()->setFocus();
+        line->selectAll();
+        QTest::keyClicks(line, QStringLiteral("1234.5678"));
+        QTest::keyClick(line, Qt::Key_Return);
+        QCOMPARE(e.value(), 1234.5678);
+        QVERIFY(edited.count() > 0);
+        QCOMPARE(edited.last().at(0).toDouble(), 1234.5678);
+        QCOMPARE(e.slider()->value(), e.positionFor(1234.5678)); // the handle shows it
     }
 
     void numberEdit_validatesAsTyped() {
