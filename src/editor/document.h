@@ -150,6 +150,7 @@ class Document : public QObject {
     friend class RenameLight;
     friend class ReplaceRig;
     friend class EnableLights;
+    friend class ChangeRigSpace;
 
     // Primitives for the commands. Each emits the RigChange signals and prunes selection/solo as needed.
     LightId newLightId() { return ++m_lastId; }
