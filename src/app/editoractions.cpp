@@ -94,11 +94,16 @@ void EditorActions::createViewMenu() {
     Viewport* viewport = m_window->viewport();
     frame = menu->addAction(tr("&Frame selection"));
     frame->setShortcut(QKeySequence(Qt::Key_F));
-    frame->setToolTip(tr("Frame the selected lights, or the whole scene when no light is selected (F)"));
+    frame->setToolTip(
+        tr("Frame the model and the selected lights, or the model when no light is selected (F)"));
     connect(frame, &QAction::triggered, viewport, &Viewport::frameSelectionOrAll);
     frameAll = menu->addAction(tr("Frame &all"));
     frameAll->setShortcut(QKeySequence(Qt::Key_Home));
     connect(frameAll, &QAction::triggered, viewport, &Viewport::frameAll);
+    frameAllLights = menu->addAction(tr("Frame all &lights"));
+    frameAllLights->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_F));
+    frameAllLights->setToolTip(tr("Frame the model and every light around it (Shift+F)"));
+    connect(frameAllLights, &QAction::triggered, viewport, &Viewport::frameAllLights);
     standardViewsMenu = menu->addMenu(tr("&Standard views"));
     int key = Qt::Key_1;
     for (const QString& name : standardViewNames()) {

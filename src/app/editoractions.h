@@ -26,8 +26,9 @@ class EditorActions : public QObject {
     QAction* quit = nullptr;
     QAction* undo = nullptr;
     QAction* redo = nullptr;
-    QAction* frame = nullptr; // F: the selected lights, or everything when none is selected
+    QAction* frame = nullptr; // F: the model and the selected lights, or the model when none is selected
     QAction* frameAll = nullptr;
+    QAction* frameAllLights = nullptr; // Shift+F: the model and every light around it
     QAction* lookThroughLight = nullptr;
     QAction* showGizmos = nullptr;
     QAction* showGrid = nullptr;

@@ -1,8 +1,16 @@
 #include "editorstatusbar.h"
 
+#include <QApplication>
+#include <QClipboard>
+#include <QDialog>
+#include <QDialogButtonBox>
 #include <QLabel>
+#include <QPlainTextEdit>
 #include <QProgressBar>
+#include <QPushButton>
+#include <QStyle>
 #include <QToolButton>
+#include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
 
@@ -10,7 +18,7 @@ namespace lr {
 
 EditorStatusBar::EditorStatusBar(QWidget* parent)
     : QStatusBar(parent), m_rig(new QLabel(this)), m_frameTime(new QLabel(this)),
-      m_progress(new QProgressBar(this)), m_cancel(new QToolButton(this)) {
+      m_progress(new QProgressBar(this)), m_cancel(new QToolButton(this)), m_warnings(new QToolButton(this)) {
     m_frameTime->setObjectName(QStringLiteral("frameTime"));
     m_frameTime->setToolTip(tr("Time to render the last viewport frame (GPU timer query)"));
     m_frameTime->setMinimumWidth(
@@ -20,6 +28,13 @@ EditorStatusBar::EditorStatusBar(QWidget* parent)
     m_progress->setTextVisible(false);
     m_cancel->setText(tr("Cancel"));
     m_cancel->setToolTip(tr("Stop loading the model (the current one stays)"));
+    m_warnings->setObjectName(QStringLiteral("importWarnings"));
+    m_warnings->setAutoRaise(true);
+    m_warnings->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    m_warnings->setIcon(style()->standardIcon(QStyle::SP_MessageBoxWarning));
+    m_warnings->hide();
+    connect(m_warnings, &QToolButton::clicked, this, &EditorStatusBar::showModelWarnings);
+    addPermanentWidget(m_warnings);
     addPermanentWidget(m_progress);
     addPermanentWidget(m_cancel);
     addPermanentWidget(m_rig);
@@ -52,6 +67,52 @@ void EditorStatusBar::showLoading(const QString& fileName) {
 
 void EditorStatusBar::setLoadProgress(double fraction) {
     m_progress->setValue(int(std::lround(std::clamp(fraction, 0.0, 1.0) * 1000.0)));
+}
+
+void EditorStatusBar::setModelWarnings(const QString& fileName, const QStringList& warnings) {
+    m_warningsFile = fileName;
+    m_warningsList = warnings;
+    m_warnings->setText(tr("%n import warning(s)", nullptr, int(warnings.size())));
+    m_warnings->setToolTip(warnings.isEmpty()
+                               ? QString()
+                               : tr("%1 was imported with warnings; click to read them").arg(fileName));
+    m_warnings->setVisible(!warnings.isEmpty());
+    if (m_warningsText) {
+        m_warningsText->setPlainText(warnings.join(QLatin1Char('\n')));
+        m_warningsDialog->setWindowTitle(tr("Import warnings: %1").arg(fileName));
+        if (warnings.isEmpty()) m_warningsDialog->hide();
+    }
+}
+
+QDialog* EditorStatusBar::showModelWarnings() {
+    if (!m_warningsDialog) {
+        m_warningsDialog = new QDialog(window());
+        m_warningsDialog->setObjectName(QStringLiteral("importWarningsDialog"));
+        auto* layout = new QVBoxLayout(m_warningsDialog);
+        auto* intro =
+            new QLabel(tr("Everything the importer reported for this model (missing or refused "
+                          "textures, dropped geometry, ...). The model loaded; these parts may look "
+                          "different from the file's intent."),
+                       m_warningsDialog);
+        intro->setWordWrap(true);
+        m_warningsText = new QPlainTextEdit(m_warningsDialog);
+        m_warningsText->setReadOnly(true);
+        m_warningsText->setLineWrapMode(QPlainTextEdit::WidgetWidth);
+        auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, m_warningsDialog);
+        QPushButton* copy = buttons->addButton(tr("Copy"), QDialogButtonBox::ActionRole);
+        connect(copy, &QPushButton::clicked, this,
+                [this] { QApplication::clipboard()->setText(m_warningsList.join(QLatin1Char('\n'))); });
+        connect(buttons, &QDialogButtonBox::rejected, m_warningsDialog, &QDialog::hide);
+        layout->addWidget(intro);
+        layout->addWidget(m_warningsText, 1);
+        layout->addWidget(buttons);
+        m_warningsDialog->resize(640, 320);
+    }
+    m_warningsText->setPlainText(m_warningsList.join(QLatin1Char('\n')));
+    m_warningsDialog->setWindowTitle(tr("Import warnings: %1").arg(m_warningsFile));
+    m_warningsDialog->show();
+    m_warningsDialog->raise();
+    return m_warningsDialog;
 }
 
 void EditorStatusBar::hideLoading() {

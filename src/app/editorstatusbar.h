@@ -1,10 +1,13 @@
 // The main window's status bar: messages, the viewport's frame time (GPU ms from timer queries, CPU ms as a
-// fallback) and the progress of a background model load with a Cancel button.
+// fallback), the progress of a background model load with a Cancel button, and the open model's import
+// warnings: a "⚠ N import warnings" button that stays until the next model and opens the full list.
 #pragma once
 
 #include <QStatusBar>
 
+class QDialog;
 class QLabel;
+class QPlainTextEdit;
 class QProgressBar;
 class QToolButton;
 
@@ -21,6 +24,11 @@ class EditorStatusBar : public QStatusBar {
     void setLoadProgress(double fraction); // 0..1
     void hideLoading();
     QString frameTimeText() const;
+    // The model's warnings (model/model.h Model::warnings); none hides the button.
+    void setModelWarnings(const QString& fileName, const QStringList& warnings);
+    QToolButton* warningsButton() const { return m_warnings; }
+    // The list of warnings, non-modal (created on first use; the button opens it).
+    QDialog* showModelWarnings();
 
   signals:
     void cancelLoadRequested();
@@ -30,6 +38,11 @@ class EditorStatusBar : public QStatusBar {
     QLabel* m_frameTime;
     QProgressBar* m_progress;
     QToolButton* m_cancel;
+    QToolButton* m_warnings;
+    QDialog* m_warningsDialog = nullptr;
+    QPlainTextEdit* m_warningsText = nullptr;
+    QString m_warningsFile;
+    QStringList m_warningsList;
 };
 
 } // namespace lr

@@ -141,10 +141,12 @@ void LightsDock::showMessage(const QString& text) {
 
 void LightsDock::addLight(LightType type) {
     QString error;
-    if (!m_doc->addLight(type, &error))
+    if (!addPlacedLight(m_doc, type, m_placementView ? m_placementView() : PlacementView{}, &error)) {
         showMessage(error);
-    else
+    } else {
         showMessage({});
+        emit lightAdded(m_doc->lightCount() - 1);
+    }
     m_view->setFocus();
 }
 

@@ -7,10 +7,12 @@
 #pragma once
 
 #include "core/lighttypes.h"
+#include "editor/placement.h"
 
 #include <array>
 
 #include <QDockWidget>
+#include <functional>
 
 class QAction;
 class QLabel;
@@ -44,9 +46,15 @@ class LightsDock : public QDockWidget {
     // Document rows of the view's selection (sorted). The selection model is kept equal to the document's.
     QList<int> selectedRows() const;
 
+    // Where new lights go (editor/placement.h): the model's bounds and the view, asked at each add. Unset:
+    // a unit model seen from +Z.
+    void setPlacementView(std::function<PlacementView()> view) { m_placementView = std::move(view); }
+
   signals:
     // An edit was refused (reason for the status bar); also shown in the dock's message line.
     void editRefused(const QString& reason);
+    // A light was added with the toolbar (row: its index), e.g. for the viewport to bring it into view.
+    void lightAdded(int row);
 
   private:
     void addLight(LightType type);
@@ -69,6 +77,7 @@ class LightsDock : public QDockWidget {
     QAction* m_delete = nullptr;
     QAction* m_rename = nullptr;
     bool m_syncing = false;
+    std::function<PlacementView()> m_placementView;
 };
 
 } // namespace lr

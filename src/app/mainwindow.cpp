@@ -55,8 +55,17 @@ QString MainWindow::bundledModelPath() {
 
 void MainWindow::createDocks() {
     m_lightsDock = new LightsDock(m_doc, this);
+    // New lights go around the model as seen now (editor/placement.h), and the view follows them.
+    m_lightsDock->setPlacementView([this] {
+        const ViewCamera& c = m_viewport->camera();
+        return PlacementView{m_scene->frame(), c.eye - c.target, c.trueUp()};
+    });
+    connect(m_lightsDock, &LightsDock::lightAdded, m_viewport,
+            [this](int row) { m_viewport->keepLightsInView({row}); });
     m_propertiesDock = new PropertiesDock(m_doc, this);
     m_renderDock = new RenderSettingsDock(m_doc, m_viewSettings, this);
+    m_renderDock->setSceneFrameProvider([this] { return m_scene->frame(); }); // for the space switch
+    m_renderDock->setScene(m_scene);                                          // the model's up axis
     m_presetsDock = new PresetsDock(m_doc, m_presets, this);
     m_presetsDock->setThumbnailRenderer([this](const Rig& rig, const QSize& size) {
         return m_scene->isEmpty() ? QImage() : m_viewport->renderThumbnail(rig, size);
@@ -101,6 +110,9 @@ void MainWindow::connectStatus() {
     connect(m_files, &DocumentFiles::modelLoadProgress, m_status, &EditorStatusBar::setLoadProgress);
     connect(m_files, &DocumentFiles::modelLoadFinished, m_status, &EditorStatusBar::hideLoading);
     connect(m_status, &EditorStatusBar::cancelLoadRequested, m_files, &DocumentFiles::cancelModelLoad);
+    connect(m_scene, &Scene::modelChanged, this, [this] {
+        m_status->setModelWarnings(QFileInfo(m_scene->path()).fileName(), m_scene->model()->warnings);
+    });
     auto summary = [this] {
         const int n = m_doc->lightCount();
         int on = 0;

@@ -12,17 +12,26 @@
 #include <QComboBox>
 #include <QEvent>
 #include <QFileInfo>
+#include <QGridLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScreen>
 #include <QSpinBox>
 #include <QSplitter>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QVBoxLayout>
+#include <cmath>
 
 namespace lr {
+
+namespace {
+constexpr QSize kMinChartSize(360, 230);
+constexpr int kDifferenceGain = 16;
+} // namespace
 
 QualityDock::QualityDock(QWidget* parent) : QDockWidget(tr("Quality"), parent) {
     setObjectName(QStringLiteral("QualityDock"));
@@ -63,22 +72,82 @@ QualityDock::QualityDock(QWidget* parent) : QDockWidget(tr("Quality"), parent) {
     layout->addWidget(m_status);
 
     auto* split = new QSplitter(Qt::Vertical, body);
-    m_table = new QTableWidget(0, int(benchTableHeaders().size()), split);
-    m_table->setHorizontalHeaderLabels(benchTableHeaders());
+    split->setObjectName(QStringLiteral("qualitySplitter"));
+    split->setChildrenCollapsible(false);
+    const QStringList names = columnNames(), tips = columnToolTips();
+    m_table = new QTableWidget(0, int(names.size()), split);
+    for (int c = 0; c < names.size(); ++c) {
+        auto* header = new QTableWidgetItem(names[c]);
+        header->setToolTip(tips[c]);
+        m_table->setHorizontalHeaderItem(c, header);
+    }
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_table->setWordWrap(true);
     m_table->verticalHeader()->setVisible(false);
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    m_chart = new QLabel(split);
+    m_table->horizontalHeader()->setDefaultAlignment(
+        Qt::Alignment(QFlag(int(Qt::AlignCenter) | int(Qt::TextWordWrap))));
+    m_table->setMinimumHeight(120);
+
+    auto* views = new QTabWidget(split);
+    views->setObjectName(QStringLiteral("qualityViews"));
+    m_chart = new QLabel(views);
+    m_chart->setObjectName(QStringLiteral("qualityChart"));
     m_chart->setAlignment(Qt::AlignCenter);
-    m_chart->setMinimumSize(200, 120);
+    m_chart->setMinimumSize(kMinChartSize);
+    m_chart->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
+    m_chart->setToolTip(tr("Each tier as a point: time per frame across, average error up; lower left is "
+                           "cheaper and closer to the reference"));
     m_chart->installEventFilter(this);
+    views->addTab(m_chart, tr("Chart"));
+
+    auto* compare = new QWidget(views);
+    auto* grid = new QGridLayout(compare);
+    m_compareCaption =
+        new QLabel(tr("Measure, then pick a row to compare its image with the reference."), compare);
+    m_compareCaption->setWordWrap(true);
+    grid->addWidget(m_compareCaption, 0, 0, 1, 3);
+    auto image = [&](const QString& name, const QString& title, const QString& tip, int column) {
+        auto* caption = new QLabel(title, compare);
+        caption->setAlignment(Qt::AlignCenter);
+        caption->setToolTip(tip);
+        auto* label = new QLabel(compare);
+        label->setObjectName(name);
+        label->setAlignment(Qt::AlignCenter);
+        label->setMinimumSize(120, 90);
+        label->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
+        label->setToolTip(tip);
+        label->installEventFilter(this);
+        grid->addWidget(caption, 1, column);
+        grid->addWidget(label, 2, column);
+        return label;
+    };
+    m_tierImage = image(QStringLiteral("tierImage"), tr("This tier"),
+                        tr("The selected tier's picture (single sample, as measured)"), 0);
+    m_referenceImage =
+        image(QStringLiteral("referenceImage"), tr("Reference"),
+              tr("The same view computed in double precision on the CPU: what the tiers aim for"), 1);
+    m_differenceImage =
+        image(QStringLiteral("differenceImage"), tr("Difference (×%1)").arg(kDifferenceGain),
+              tr("Where the two differ: black is identical; red to yellow to white is a larger "
+                 "difference, amplified %1 times so single levels show")
+                  .arg(kDifferenceGain),
+              2);
+    grid->setRowStretch(2, 1);
+    views->addTab(compare, tr("Compare images"));
     split->addWidget(m_table);
-    split->addWidget(m_chart);
+    split->addWidget(views);
+    split->setStretchFactor(0, 1);
+    split->setStretchFactor(1, 2);
     layout->addWidget(split, 1);
 
     auto* bottom = new QHBoxLayout;
+    m_large = new QPushButton(tr("Open large"), body);
+    m_large->setToolTip(tr("Float this panel in its own large window (drag it back to dock it again)"));
+    connect(m_large, &QPushButton::clicked, this, &QualityDock::openLarge);
+    bottom->addWidget(m_large);
     m_use = new QPushButton(tr("Use tier"), body);
     m_use->setToolTip(tr("Render the viewport with the tier of the selected row"));
     m_use->setEnabled(false);
@@ -92,6 +161,7 @@ QualityDock::QualityDock(QWidget* parent) : QDockWidget(tr("Quality"), parent) {
     connect(m_table, &QTableWidget::itemSelectionChanged, this, [this] {
         const int row = m_table->currentRow();
         m_use->setEnabled(m_chooser && row >= 0 && row < int(m_report.results.size()) && !m_running);
+        updateComparison();
     });
     connect(m_use, &QPushButton::clicked, this, [this] {
         const int row = m_table->currentRow();
@@ -135,6 +205,7 @@ void QualityDock::measure() {
     options.frames = m_frames->value();
     options.exposureEV = request->exposureEV;
     options.toneMap = request->toneMap;
+    options.keepImages = true; // the visual comparison
     m_cancelRequested = false;
     setRunning(true);
     m_progress->setValue(0);
@@ -174,18 +245,129 @@ void QualityDock::measure() {
     }
 }
 
+QStringList QualityDock::columnNames() {
+    return {tr("Tier"),
+            tr("Time per frame"),
+            tr("Speed"),
+            tr("First frame"),
+            tr("Worst pixel"),
+            tr("Average error"),
+            tr("Pixels visibly off"),
+            tr("Similarity"),
+            tr("Broken pixels")};
+}
+
+QStringList QualityDock::columnToolTips() {
+    return {
+        tr("The quality tier. exact: every light per pixel, as the double-precision model; balanced: cheaper "
+           "evaluations per pixel; fast: lighting per vertex. \"exact, all models\" is exact drawn with one "
+           "shader that has every light model compiled in, to show what specialised shaders save."),
+        tr("Median time to draw one frame at the measured size, in milliseconds (lower is better). Hover a "
+           "cell for the fastest and slowest frame and the processor time."),
+        tr("How many times faster than the exact tier (2.0× = twice as fast)."),
+        tr("Time to the first picture in a fresh window, in milliseconds: loading the model, uploading it, "
+           "compiling the shaders and drawing."),
+        tr("The largest difference from the reference on any pixel, in 8-bit colour levels (0 = identical, "
+           "255 = white instead of black)."),
+        tr("The average difference from the reference over the model's pixels, in 8-bit colour levels."),
+        tr("Share of the model's pixels that differ from the reference by more than one colour level (a "
+           "difference of one level cannot be seen)."),
+        tr("Peak signal-to-noise ratio against the reference, in decibels: higher is closer; above about 40 "
+           "dB "
+           "a difference is hard to see; ∞ means identical."),
+        tr("Pixels whose lighting computed to NaN or infinity; should be 0."),
+    };
+}
+
 void QualityDock::showReport() {
+    const QString none = QStringLiteral("–");
+    auto number = [](double v, int decimals) { return QString::number(v, 'f', decimals); };
     m_table->setRowCount(int(m_report.results.size()));
     for (int row = 0; row < int(m_report.results.size()); ++row) {
-        const QStringList cells = benchTableRow(m_report.results[size_t(row)]);
+        const BenchResult& r = m_report.results[size_t(row)];
+        const ErrorFigures& e = r.errors;
+        const QStringList cells{
+            r.uberShader ? tr("exact, all models") : toString(r.quality),
+            tr("%1 ms").arg(number(r.msMedian, 2)),
+            r.speedUp > 0.0 ? QStringLiteral("%1×").arg(number(r.speedUp, 2)) : none,
+            tr("%1 ms").arg(number(r.firstFrameMs, 0)),
+            r.hasErrors ? tr("%n level(s)", nullptr, e.maxLevels) : none,
+            r.hasErrors ? number(e.meanLevels, 3) : none,
+            r.hasErrors ? QStringLiteral("%1%").arg(number(100.0 * e.shareOver1(), 2)) : none,
+            r.hasErrors
+                ? (std::isfinite(e.psnrDb) ? tr("%1 dB").arg(number(e.psnrDb, 1)) : QStringLiteral("∞"))
+                : none,
+            r.hasErrors ? QString::number(e.nonFinite) : none,
+        };
         for (int c = 0; c < cells.size(); ++c) {
             auto* item = new QTableWidgetItem(cells[c]);
-            if (c >= 3) item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+            if (c >= 1) item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
             m_table->setItem(row, c, item);
         }
+        m_table->item(row, 0)->setToolTip(
+            tr("%1: %2 of %3 lights drawn, %4 triangles, %5 shader variant(s), MSAA %6×")
+                .arg(r.scene)
+                .arg(r.lightsUploaded)
+                .arg(r.lightsInRig)
+                .arg(r.triangles)
+                .arg(r.variants)
+                .arg(r.msaaSamples));
+        m_table->item(row, 1)->setToolTip(
+            tr("fastest %1 ms, slowest %2 ms; processor time %3 ms%4")
+                .arg(number(r.msMin, 2), number(r.msMax, 2), number(r.cpuMsMedian, 1),
+                     r.gpuMsMedian >= 0.0 ? tr("; GPU time %1 ms").arg(number(r.gpuMsMedian, 2))
+                                          : QString()));
     }
+    m_table->resizeColumnsToContents();
+    m_differenceRow = -1; // a new report: the cached difference image is stale
     m_chartImage = benchChart(m_report);
     updateChart();
+    updateComparison();
+}
+
+void QualityDock::updateComparison() {
+    const int row = std::max(0, m_table->currentRow()); // the first tier until a row is picked
+    const bool have =
+        row >= 0 && row < int(m_report.results.size()) && !m_report.results[size_t(row)].image.isNull();
+    auto show = [](QLabel* label, const QImage& image) {
+        if (image.isNull()) {
+            label->clear();
+            return;
+        }
+        const QSize room = label->size() * label->devicePixelRatioF();
+        QPixmap pixmap =
+            QPixmap::fromImage(image.scaled(room, Qt::KeepAspectRatio, Qt::SmoothTransformation));
+        pixmap.setDevicePixelRatio(label->devicePixelRatioF());
+        label->setPixmap(pixmap);
+    };
+    if (!have) {
+        show(m_tierImage, {});
+        show(m_referenceImage, {});
+        show(m_differenceImage, {});
+        return;
+    }
+    const BenchResult& r = m_report.results[size_t(row)];
+    if (m_differenceRow != row) {
+        m_differenceCache = benchDifferenceImage(r.image, r.reference, kDifferenceGain);
+        m_differenceRow = row;
+    }
+    m_compareCaption->setText(
+        tr("%1 against the double-precision reference: worst pixel %n level(s) off, "
+           "%2% of the pixels visibly off.",
+           nullptr, r.errors.maxLevels)
+            .arg(m_table->item(row, 0)->text(), QString::number(100.0 * r.errors.shareOver1(), 'f', 2)));
+    show(m_tierImage, r.image);
+    show(m_referenceImage, r.reference);
+    show(m_differenceImage, m_differenceCache);
+}
+
+void QualityDock::openLarge() {
+    setFloating(true);
+    const QRect screen = this->screen() ? this->screen()->availableGeometry() : QRect(0, 0, 1280, 800);
+    resize(std::min(1100, screen.width() - 40), std::min(760, screen.height() - 40));
+    move(screen.center() - rect().center());
+    show();
+    raise();
 }
 
 void QualityDock::updateChart() {
@@ -198,7 +380,12 @@ void QualityDock::updateChart() {
 }
 
 bool QualityDock::eventFilter(QObject* watched, QEvent* event) {
-    if (watched == m_chart && event->type() == QEvent::Resize) updateChart();
+    if (event->type() == QEvent::Resize) {
+        if (watched == m_chart)
+            updateChart();
+        else if (watched == m_tierImage || watched == m_referenceImage || watched == m_differenceImage)
+            updateComparison();
+    }
     return QDockWidget::eventFilter(watched, event);
 }
 

@@ -1,6 +1,9 @@
 // The Quality panel: measures, on demand, what each quality tier costs and how far it is from the
 // double-precision reference for the user's own scene and view (the same measurement as `lightrig bench`,
-// src/render/qualitybench.h), with progress and cancel, and shows the table and the time/error chart.
+// src/render/qualitybench.h), with progress and cancel, and shows the results three ways: a table in plain
+// words (every column explains itself in its tooltip), the time/error chart, and a visual comparison of the
+// selected tier's image, the reference and where they differ. Table, chart and comparison share a splitter;
+// "Open large" floats the dock at a size where the chart is readable.
 // "Use tier" stores the selected row's tier in the view settings (the Render settings dock's combo box).
 //
 // The measurement runs on the GUI thread between event-loop passes (OpenGL needs the thread of its
@@ -49,6 +52,10 @@ class QualityDock : public QDockWidget {
     const BenchReport& report() const { return m_report; }
     void setFrames(int frames); // timed frames per tier (default 30)
 
+    // The table's columns, for the tests and the docs: header text and its tooltip.
+    static QStringList columnNames();
+    static QStringList columnToolTips();
+
   public slots:
     void measure(); // no-op while running
     void cancel();
@@ -60,6 +67,8 @@ class QualityDock : public QDockWidget {
     void showReport();
     void setRunning(bool running);
     void updateChart();
+    void updateComparison();
+    void openLarge();
     bool eventFilter(QObject* watched, QEvent* event) override;
 
     SceneProvider m_provider;
@@ -73,6 +82,13 @@ class QualityDock : public QDockWidget {
     QLabel* m_status = nullptr;
     QTableWidget* m_table = nullptr;
     QLabel* m_chart = nullptr;
+    QLabel* m_compareCaption = nullptr;
+    QLabel* m_tierImage = nullptr;
+    QLabel* m_referenceImage = nullptr;
+    QLabel* m_differenceImage = nullptr;
+    QPushButton* m_large = nullptr;
+    QImage m_differenceCache;
+    int m_differenceRow = -1;
     BenchReport m_report;
     QImage m_chartImage;
     bool m_running = false;

@@ -1,9 +1,11 @@
 #include "rendersettingsdock.h"
 
 #include "colorbutton.h"
+#include "editor/changerigspace.h"
 #include "editor/document.h"
 #include "modeltooltips.h"
 #include "numberedit.h"
+#include "scene.h"
 #include "ui_rendersettings.h"
 #include "viewsettings.h"
 
@@ -43,6 +45,9 @@ RenderSettingsDock::RenderSettingsDock(Document* document, ViewSettings* setting
     fillCombo<ViewerModel>(m_ui->viewerModel);
     installModelTooltips<SpecularModel>(m_ui->specularModel);
     installModelTooltips<ViewerModel>(m_ui->viewerModel);
+    for (const QString& axis : modelUpAxisNames())
+        m_ui->modelUp->addItem(axis == QLatin1String("+Y") ? tr("+Y (as the file)") : axis);
+    m_ui->modelUp->setEnabled(false);
     m_ui->shininess->setLimits(0.0, kMaxShininess, true);
     m_ui->shininess->setWhat(rigPropertyName(RigProperty::Shininess));
 
@@ -80,11 +85,34 @@ RenderSettingsDock::RenderSettingsDock(Document* document, ViewSettings* setting
         if (m_ui->rigName->text() != m_doc->rig().name)
             setRigValue(int(RigProperty::Name), m_ui->rigName->text(), false);
     });
+    connect(m_ui->rigSpace, &QComboBox::activated, this, [this](int i) {
+        if (RigSpace(i) == m_doc->rig().space) return;
+        QString error;
+        if (!changeRigSpace(m_doc, RigSpace(i), m_frame ? m_frame() : SceneFrame{}, &error)) {
+            m_ui->message->setText(error);
+            loadRig();
+        } else {
+            m_ui->message->clear();
+        }
+    });
     connect(m_doc, &Document::rigChanged, this, [this](const RigChange& change) {
         if (change.kind == RigChange::RigValues || change.kind == RigChange::Reset) loadRig();
     });
     loadView();
     loadRig();
+}
+
+void RenderSettingsDock::setScene(Scene* scene) {
+    m_scene = scene;
+    auto sync = [this] {
+        const QSignalBlocker block(m_ui->modelUp);
+        m_ui->modelUp->setCurrentIndex(int(m_scene->upAxis()));
+        m_ui->modelUp->setEnabled(!m_scene->isEmpty());
+    };
+    connect(m_scene, &Scene::modelChanged, this, sync);
+    connect(m_ui->modelUp, &QComboBox::activated, this,
+            [this](int i) { m_scene->setUpAxis(ModelUpAxis(i)); });
+    sync();
 }
 
 RenderSettingsDock::~RenderSettingsDock() {
@@ -110,8 +138,7 @@ void RenderSettingsDock::loadRig() {
         const QSignalBlocker block(m_ui->rigName);
         m_ui->rigName->setText(rig.name);
     }
-    m_ui->rigSpace->setText(rig.space == RigSpace::Model ? tr("model (bounding-sphere units)")
-                                                         : tr("world (the model's units)"));
+    m_ui->rigSpace->setCurrentIndex(int(rig.space));
     m_ui->specularModel->setCurrentIndex(int(rig.shading.specular));
     m_ui->viewerModel->setCurrentIndex(int(rig.shading.viewer));
     m_ui->shininess->setValueQuietly(rig.shading.shininess);

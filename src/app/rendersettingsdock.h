@@ -1,9 +1,14 @@
 // The Render settings dock (form ui/rendersettings.ui): view settings (exposure, tone mapping, quality,
 // background, grid, gizmos; ViewSettings, kept in QSettings) and the rig's shading values (specular model,
-// viewer, shininess, ambient; undoable Document edits).
+// viewer, shininess, ambient; undoable Document edits) and the rig's space (world or model; switching
+// converts the lights so they stay where they are, one undo step), and the model's up axis (scene.h, per
+// file).
 #pragma once
 
+#include "core/prepare.h"
+
 #include <QDockWidget>
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -14,6 +19,7 @@ class RenderSettingsForm;
 namespace lr {
 
 class Document;
+class Scene;
 class ViewSettings;
 
 class RenderSettingsDock : public QDockWidget {
@@ -23,6 +29,11 @@ class RenderSettingsDock : public QDockWidget {
     ~RenderSettingsDock() override;
 
     Ui::RenderSettingsForm* form() const { return m_ui.get(); }
+    // The model's bounding sphere, for the Space switch (editor/changerigspace.h converts the lights
+    // through it). Unset: the unit sphere.
+    void setSceneFrameProvider(std::function<SceneFrame()> frame) { m_frame = std::move(frame); }
+    // The scene whose model's up axis the "Model up axis" box shows and sets (disabled without one).
+    void setScene(Scene* scene);
 
   private:
     void loadView();
@@ -34,6 +45,8 @@ class RenderSettingsDock : public QDockWidget {
     Document* m_doc;
     ViewSettings* m_settings;
     std::optional<int> m_editToken;
+    std::function<SceneFrame()> m_frame;
+    Scene* m_scene = nullptr;
 };
 
 } // namespace lr

@@ -1,9 +1,12 @@
 // The model the rig is designed on: shared, immutable once loaded (the renderer, the picking code and
 // background loads hold it by shared_ptr). Never null: an empty model until the first load finishes.
+// The model is shown with its up axis (model/upaxis.h), remembered per file in QSettings (keyed by the
+// canonical path): model() is the rotated model everything draws and picks on; the rig is not touched.
 #pragma once
 
 #include "core/prepare.h"
 #include "model/model.h"
+#include "model/upaxis.h"
 
 #include <QObject>
 #include <memory>
@@ -20,13 +23,20 @@ class Scene : public QObject {
     bool isEmpty() const { return m_model->meshes.empty(); }
     // Where a rig in model space is anchored (bounding sphere of the model; unit sphere when empty).
     SceneFrame frame() const;
+    // Shows the model with the up axis remembered for path (+Y when none).
     void setModel(std::shared_ptr<const Model> model, const QString& path);
+
+    ModelUpAxis upAxis() const { return m_upAxis; }
+    // Rotates the model to this up axis (relative to the file as imported) and remembers it for the file.
+    void setUpAxis(ModelUpAxis axis);
+    static ModelUpAxis rememberedUpAxis(const QString& path);
 
   signals:
     void modelChanged();
 
   private:
     std::shared_ptr<const Model> m_model;
+    ModelUpAxis m_upAxis = ModelUpAxis::YUp;
     QString m_path;
 };
 

@@ -169,10 +169,8 @@ void Viewport::onModelChanged() {
     if (!m_cameraFramed) {
         if (auto c = standardView(QStringLiteral("three-quarter"), b, aspect())) m_camera = *c;
         m_cameraFramed = true;
-    } else {
-        m_camera.znear = m_camera.zfar = 0.0;
-        m_camera.frameAll(b, aspect());
     }
+    frameAllLights(); // the model and the rig's lights around it, from the current direction
     update();
 }
 
@@ -222,19 +220,33 @@ void Viewport::frameSelectionOrAll() {
         frameAll();
         return;
     }
+    frameModelAndLights(rows); // the light and what it lights: flying to the light alone lost the model
+}
+
+void Viewport::frameAllLights() {
     const SceneFrame f = m_scene->frame();
-    Bounds b;
-    b.min = glm::dvec3(std::numeric_limits<double>::infinity());
-    b.max = -b.min;
+    QList<int> rows;
+    for (int row = 0; row < m_doc->lightCount(); ++row) {
+        const double d = glm::length(lightAnchor(m_doc->rig(), f, m_doc->light(row)) - f.center);
+        if (std::isfinite(d) && d <= kFramedLightRadii * f.radius) rows.append(row);
+    }
+    frameModelAndLights(rows);
+}
+
+bool Viewport::onScreen(int row) const {
+    const auto p = lightScreenPosition(row);
+    return p && QRectF(rect()).contains(*p);
+}
+
+void Viewport::keepLightsInView(const QList<int>& rows) {
+    bool missing = false;
     for (int row : rows)
-        include(b, lightAnchor(m_doc->rig(), f, m_doc->light(row)));
-    // A single light gets some room around it: a quarter of the scene's radius.
-    const glm::dvec3 pad(0.25 * f.radius);
-    b.min -= pad;
-    b.max += pad;
-    m_camera.znear = m_camera.zfar = 0.0;
-    m_camera.frameAll(b, aspect());
-    update();
+        missing |= row >= 0 && row < m_doc->lightCount() && !onScreen(row);
+    if (!missing) return;
+    QList<int> framed = rows; // and the lights in view now, so bringing one in does not push another out
+    for (int row = 0; row < m_doc->lightCount(); ++row)
+        if (!framed.contains(row) && onScreen(row)) framed.append(row);
+    frameModelAndLights(framed);
 }
 
 void Viewport::frameModelAndLights(const QList<int>& rows) {

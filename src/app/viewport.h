@@ -31,6 +31,7 @@ class Viewport : public QOpenGLWidget {
     Q_OBJECT
   public:
     Viewport(Document* document, Scene* scene, ViewSettings* settings, QWidget* parent = nullptr);
+    static constexpr double kFramedLightRadii = 12.0;
     ~Viewport() override;
 
     // Requests OpenGL 3.3 core (with a depth buffer and MSAA) for every context; call before QApplication.
@@ -58,10 +59,17 @@ class Viewport : public QOpenGLWidget {
     QString exportScreenshot(const ScreenshotOptions& options);
 
   public slots:
-    void frameAll();
+    void frameAll(); // the model
+    // F: the model together with the selected lights (the model alone when none is selected).
     void frameSelectionOrAll();
     // Frames the model together with the gizmos of these lights (the README screenshot shows both).
     void frameModelAndLights(const QList<int>& rows);
+    // The model and every light within kFramedLightRadii bounding radii of it (farther lights would leave
+    // the model a dot). What a newly loaded model starts with, so the presets' key and fill are in view.
+    void frameAllLights();
+    // Frames the model, these lights and those on screen when one of these is off-screen (a light just
+    // added); else nothing.
+    void keepLightsInView(const QList<int>& rows);
     void setStandardView(const QString& name);
     void setModelCamera(int index);
     void lookThroughLight(int row);
@@ -87,6 +95,7 @@ class Viewport : public QOpenGLWidget {
     RenderSettings renderSettings(bool gizmos) const;
     void onModelChanged();
     double aspect() const;
+    bool onScreen(int row) const;
 
     Document* m_doc;
     Scene* m_scene;

@@ -119,8 +119,11 @@ GizmoGeometry buildGizmos(const Rig& rig, const SceneFrame& frame, const Bounds&
         const Light& l = rig.lights[i];
         const bool selected =
             std::find(options.selected.begin(), options.selected.end(), int(i)) != options.selected.end();
-        const glm::vec4 strong = displayColor(l, selected ? 1.0f : 0.8f);
-        const glm::vec4 faint = displayColor(l, selected ? 0.7f : 0.35f);
+        // Selected lights stand out: their lines in the selection colour at full strength, their icon larger
+        // (white-rimmed by gizmo.frag); the others recede a little.
+        const glm::vec4 strong = selected ? kSelectedColor : displayColor(l, 0.65f);
+        const glm::vec4 faint =
+            selected ? glm::vec4(glm::vec3(kSelectedColor), 0.75f) : displayColor(l, 0.3f);
         const glm::dvec3 dir = safeNormalize(l.direction, glm::dvec3(0, -1, 0));
         glm::dvec3 at;
         if (l.usesPosition()) {
@@ -156,7 +159,7 @@ GizmoGeometry buildGizmos(const Rig& rig, const SceneFrame& frame, const Bounds&
             b.arrow(at, dir, radius * 0.6, strong);
         }
         const float shape = float(int(traitsOf(l.type).gizmo) + (selected ? 8 : 0));
-        const float size = float(options.iconPixels * (selected ? 1.35 : 1.0));
+        const float size = float(options.iconPixels * (selected ? kSelectedIconScale : 1.0));
         const glm::dvec3 p = b.toView(at);
         if (p.z <= -b.nearClip && std::isfinite(p.x + p.y + p.z))
             out.points.push_back({glm::vec3(p), displayColor(l, 1.0f), {size, shape}});

@@ -35,6 +35,11 @@ struct GizmoOptions {
     double nearClip = 0.0; // view-space distance in front of the eye; geometry nearer is clipped away
 };
 
+// Selected lights' lines (sRGB, opaque: a saturated amber no light colour is drawn in at full alpha) and
+// how much larger their icon is.
+inline const glm::vec4 kSelectedColor{1.0f, 0.66f, 0.0f, 1.0f};
+constexpr double kSelectedIconScale = 1.8;
+
 // Where a directional or rim light's gizmo is drawn (world): outside the bounding sphere, upstream.
 glm::dvec3 directionalAnchor(const SceneFrame& frame, const glm::dvec3& direction);
 

@@ -10,6 +10,7 @@
 #include <QOpenGLFunctions>
 #include <QThread>
 #include <algorithm>
+#include <cstdlib>
 #include <ctime>
 
 namespace lr {
@@ -140,6 +141,10 @@ bool measure(const BenchScene& scene, const BenchOptions& o, Quality q, bool ube
         FloatImage radiance;
         if (!gl.renderRadiance(scene.camera, o.size, single, &radiance, error)) return false;
         r->errors = compareWithReference(image, *reference);
+        if (o.keepImages) {
+            r->image = image.convertToFormat(QImage::Format_RGBA8888);
+            r->reference = reference->srgb;
+        }
         r->errors.nonFinite =
             countNonFinite(&radiance.pixels.data()->x, std::int64_t(radiance.pixels.size()), 4);
         r->hasErrors = true;
@@ -148,6 +153,26 @@ bool measure(const BenchScene& scene, const BenchOptions& o, Quality q, bool ube
 }
 
 } // namespace
+
+QImage benchDifferenceImage(const QImage& image, const QImage& reference, int gain) {
+    if (image.isNull() || reference.isNull() || image.size() != reference.size()) return {};
+    const QImage a = image.convertToFormat(QImage::Format_RGBA8888);
+    const QImage b = reference.convertToFormat(QImage::Format_RGBA8888);
+    QImage out(a.size(), QImage::Format_RGB32);
+    for (int y = 0; y < a.height(); ++y) {
+        const uchar* pa = a.constScanLine(y);
+        const uchar* pb = b.constScanLine(y);
+        auto* po = reinterpret_cast<QRgb*>(out.scanLine(y));
+        for (int x = 0; x < a.width(); ++x) {
+            int d = 0;
+            for (int c = 0; c < 3; ++c)
+                d = std::max(d, std::abs(int(pa[4 * x + c]) - int(pb[4 * x + c])));
+            const int v = std::min(765, d * std::max(1, gain)); // 0..765: black -> red -> yellow -> white
+            po[x] = qRgb(std::min(255, v), std::clamp(v - 255, 0, 255), std::clamp(v - 510, 0, 255));
+        }
+    }
+    return out;
+}
 
 int tierMsaaSamples(Quality quality) {
     return quality == Quality::Fast ? 0 : 4;

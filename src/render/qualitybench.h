@@ -21,6 +21,7 @@
 #include "model/model.h"
 #include "render/camera.h"
 
+#include <QImage>
 #include <QSize>
 #include <QString>
 #include <functional>
@@ -48,6 +49,7 @@ struct BenchOptions {
     bool uberShader = true;   // one more run per scene: the exact tier with every light model compiled in
     int msaaSamples = -1;     // timed runs: -1 each tier's own (tierMsaaSamples), else this for every tier
     bool interactive = false; // time what the viewport draws while navigating (interaction proxies, lod.h)
+    bool keepImages = false;  // with errors: keep each tier's image and the reference (BenchResult::image)
 };
 
 // MSAA samples a tier renders with (exact, balanced: 4; fast: none).
@@ -76,6 +78,9 @@ struct BenchResult {
     ErrorFigures errors;     // against the double reference (nonFinite from the float radiance)
     double speedUp = 0.0;    // exact's ms_median / this ms_median for the same scene (0: no exact run)
     double cpuSpeedUp = 0.0; // the same ratio of cpu_ms_median (steadier on a shared machine)
+    // BenchOptions::keepImages: the single-sample 8-bit image the errors were measured on, and the
+    // reference's (sRGB, RGBA8888); null otherwise.
+    QImage image, reference;
 };
 
 struct BenchReport {
@@ -85,6 +90,11 @@ struct BenchReport {
     double referenceMs = 0.0; // total CPU time of the references (wall)
     QString loadAverage;      // /proc/loadavg at the end of the run (empty where unavailable)
 };
+
+// Where and how much a tier's image differs from the reference: each pixel the largest channel difference
+// in 8-bit levels times `gain` (clamped), as a heat map from black (identical) through red to yellow/white.
+// Images of different sizes (or null ones) give a null image.
+QImage benchDifferenceImage(const QImage& image, const QImage& reference, int gain = 16);
 
 // Called now and then with the fraction done and what is being measured; return false to cancel.
 using BenchProgress = std::function<bool(double fraction, const QString& what)>;

@@ -14,6 +14,7 @@
 
 #include <QAbstractItemDelegate>
 #include <QApplication>
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QLineEdit>
@@ -255,7 +256,7 @@ class TestUiValues : public QObject {
         doc.undoStack()->undo();
         QCOMPARE(doc.rig().name, before);
         QCOMPARE(name->text(), before);
-        QVERIFY(!dock.findChild<QLabel*>(QStringLiteral("rigSpace"))->text().isEmpty());
+        QVERIFY(!dock.findChild<QComboBox*>(QStringLiteral("rigSpace"))->currentText().isEmpty());
     }
 
     // The table's cell editors hand their text to the model, which parses and validates it.

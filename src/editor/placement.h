@@ -1,0 +1,38 @@
+// Where "Add light" puts a new light: relative to the model, whatever its size. A new point or spot light
+// sits on a sphere of kPlacementDistance bounding radii around the model's centre (the distance the studio
+// presets use in model space), on the viewer's side and above, so it lights what the user is looking at;
+// a spot and a directional light face the model's centre; a point or spot light's range is kPlacementRange
+// radii, so it reaches all of the model. Successive lights walk around the viewer's side (they do not stack).
+// Positions and ranges are written in the rig's own space (world units, or radii in model space).
+#pragma once
+
+#include "core/prepare.h"
+#include "core/rig.h"
+
+#include <QString>
+#include <glm/vec3.hpp>
+
+namespace lr {
+
+class Document;
+
+constexpr double kPlacementDistance = 3.0; // bounding radii from the model's centre
+constexpr double kPlacementRange = 8.0;    // bounding radii
+
+// What the placement needs to know about the scene and the view (world units).
+struct PlacementView {
+    SceneFrame frame;                       // the model's bounding sphere
+    glm::dvec3 towardViewer{0.0, 0.0, 1.0}; // from the model towards the camera (need not be unit length)
+    glm::dvec3 up{0.0, 1.0, 0.0};           // the camera's up
+};
+
+// makeLight(type, name) moved, aimed and scaled for the model. `index` picks the spot around the viewer's
+// side (0, 1, 2, ...: the number of lights already in the rig gives successive lights different places).
+Light placeNewLight(const Rig& rig, LightType type, const QString& name, const PlacementView& view,
+                    int index);
+
+// Appends placeNewLight(type, a unique name like "Spot 2") to the document as one undo step ("Add spot
+// light") and selects it; false and *error when refused (the rig is full).
+bool addPlacedLight(Document* document, LightType type, const PlacementView& view, QString* error = nullptr);
+
+} // namespace lr

@@ -1,0 +1,188 @@
+// Issue 12 item 3: new lights are placed relative to the model (any size) and a rig switches between model
+// and world space as one undo step without its lights moving in the scene.
+#include "core/prepare.h"
+#include "editor/changerigspace.h"
+#include "editor/placement.h"
+#include "rigfixture.h"
+
+#include <QSignalSpy>
+#include <QTest>
+#include <glm/geometric.hpp>
+
+using namespace lr;
+
+namespace {
+
+// The spider's bounding sphere (fbx/spider.fbx: diagonal about 25,770 units), off the origin.
+const SceneFrame kBigModel{glm::dvec3(1000.0, -400.0, 250.0), 12885.0};
+
+PlacementView bigView() {
+    PlacementView v;
+    v.frame = kBigModel;
+    v.towardViewer = glm::dvec3(1.0, 0.5, 1.0);
+    return v;
+}
+
+// World position of a light, and the world range of a bounded falloff.
+glm::dvec3 worldPosition(const Rig& rig, const Light& l) {
+    return rigToWorld(rig, kBigModel, l.position);
+}
+double worldRange(const Rig& rig, const Light& l) {
+    return l.falloff.range / distanceScale(rig, kBigModel);
+}
+
+// Radiance-relevant attenuation of a light at a world point: the same in either space after a switch.
+double attenuationAt(const Rig& rig, const Light& l, const glm::dvec3& world) {
+    const glm::dmat4 identity(1.0);
+    const lighting::ShadeLight<double> s = prepareLight(rig, kBigModel, identity, l);
+    const double d = glm::length(s.position - world) * distanceScale(rig, kBigModel);
+    return lighting::evalFalloff(s, d) * s.color.x;
+}
+
+Rig mixedWorldRig() {
+    Rig rig;
+    rig.space = RigSpace::World;
+    Light p = makeLight(LightType::Point, QStringLiteral("P"));
+    p.position = glm::dvec3(30000.0, 5000.0, -2000.0);
+    p.falloff = {FalloffModel::RangePower, 60000.0, 2.0};
+    Light s = makeLight(LightType::Spot, QStringLiteral("S"));
+    s.position = glm::dvec3(-20000.0, 10000.0, 3000.0);
+    s.falloff = Falloff{};
+    s.falloff.model = FalloffModel::InverseSquare;
+    s.falloff.range = 90000.0;
+    s.intensity = 4.0e5;
+    Light q = makeLight(LightType::Point, QStringLiteral("Q"));
+    q.position = glm::dvec3(0.0, 20000.0, 0.0);
+    q.falloff = Falloff{};
+    q.falloff.model = FalloffModel::InversePolynomial;
+    q.falloff.constant = 1.0, q.falloff.linear = 1e-4, q.falloff.quadratic = 1e-9;
+    Light d = makeLight(LightType::Directional, QStringLiteral("D"));
+    rig.lights = {p, s, q, d};
+    return rig;
+}
+
+} // namespace
+
+class TestPlacement : public QObject {
+    Q_OBJECT
+  private slots:
+    void newLightsSitAroundTheModel_data() {
+        QTest::addColumn<int>("space");
+        QTest::newRow("world") << int(RigSpace::World);
+        QTest::newRow("model") << int(RigSpace::Model);
+    }
+    void newLightsSitAroundTheModel() {
+        QFETCH(int, space);
+        Rig rig;
+        rig.space = RigSpace(space);
+        const PlacementView view = bigView();
+        for (LightType type : {LightType::Point, LightType::Spot}) {
+            const Light l = placeNewLight(rig, type, QStringLiteral("L"), view, 0);
+            QVERIFY(validateLight(l).isEmpty());
+            const glm::dvec3 at = worldPosition(rig, l);
+            // On the placement sphere: outside the model, kPlacementDistance radii from its centre.
+            QVERIFY(std::abs(glm::length(at - kBigModel.center) - kPlacementDistance * kBigModel.radius) <
+                    1e-6 * kBigModel.radius);
+            // On the viewer's side and above the centre.
+            QVERIFY(glm::dot(at - kBigModel.center, view.towardViewer) > 0.0);
+            QVERIFY(at.y > kBigModel.center.y);
+            // Its range reaches past the far side of the model.
+            QVERIFY(worldRange(rig, l) > (kPlacementDistance + 1.0) * kBigModel.radius);
+            if (type == LightType::Spot) {
+                const glm::dvec3 toCentre = glm::normalize(kBigModel.center - at);
+                QVERIFY(glm::dot(glm::normalize(l.direction), toCentre) > 1.0 - 1e-9);
+            }
+            // It reaches the model's centre with a useful share of its intensity (not 0 as at (2, 2, 2)).
+            QVERIFY(attenuationAt(rig, l, kBigModel.center) > 0.3);
+        }
+        const Light d = placeNewLight(rig, LightType::Directional, QStringLiteral("D"), view, 0);
+        QVERIFY(glm::dot(d.direction, view.towardViewer) < 0.0); // travels from the viewer's side
+    }
+
+    void successiveLightsDoNotStack() {
+        const Rig rig;
+        const Light a = placeNewLight(rig, LightType::Point, QStringLiteral("A"), bigView(), 0);
+        const Light b = placeNewLight(rig, LightType::Point, QStringLiteral("B"), bigView(), 1);
+        QVERIFY(glm::length(a.position - b.position) > kBigModel.radius);
+    }
+
+    void addPlacedLight_isOneUndoStepWithAUniqueName() {
+        Document doc;
+        PlacementView view = bigView();
+        QVERIFY(addPlacedLight(&doc, LightType::Spot, view));
+        QVERIFY(addPlacedLight(&doc, LightType::Spot, view));
+        QCOMPARE(doc.lightCount(), 2);
+        QCOMPARE(doc.light(1).name, QStringLiteral("Spot 2"));
+        QCOMPARE(doc.selectedRows(), QList<int>{1});
+        QVERIFY(glm::length(doc.light(0).position - kBigModel.center) > 2.0 * kBigModel.radius);
+        doc.undoStack()->undo();
+        QCOMPARE(doc.lightCount(), 1);
+    }
+
+    void switchingSpace_keepsEveryLightWhereItWas() {
+        const Rig world = mixedWorldRig();
+        QString error;
+        const std::optional<Rig> model = convertRigSpace(world, RigSpace::Model, kBigModel, &error);
+        QVERIFY2(model, qPrintable(error));
+        QCOMPARE(int(model->space), int(RigSpace::Model));
+        const glm::dvec3 probe(4000.0, 2000.0, -1000.0);
+        for (size_t i = 0; i < world.lights.size(); ++i) {
+            const Light& a = world.lights[i];
+            const Light& b = model->lights[i];
+            QCOMPARE(b.direction, a.direction);
+            if (!a.usesPosition()) continue;
+            QVERIFY(glm::length(worldPosition(world, a) - worldPosition(*model, b)) <
+                    1e-9 * kBigModel.radius);
+            const double before = attenuationAt(world, a, probe), after = attenuationAt(*model, b, probe);
+            QVERIFY2(std::abs(before - after) <= 1e-9 * std::max(1.0, std::abs(before)),
+                     qPrintable(QStringLiteral("%1: %2 vs %3").arg(a.name).arg(before).arg(after)));
+            QVERIFY(before > 0.0);
+        }
+        // And back: the original numbers (to rounding).
+        const std::optional<Rig> back = convertRigSpace(*model, RigSpace::World, kBigModel, &error);
+        QVERIFY(back);
+        for (size_t i = 0; i < world.lights.size(); ++i) {
+            QVERIFY(glm::length(back->lights[i].position - world.lights[i].position) < 1e-6);
+            QVERIFY(std::abs(back->lights[i].intensity - world.lights[i].intensity) <
+                    1e-6 * world.lights[i].intensity);
+        }
+    }
+
+    void switchingSpace_refusesValuesPastTheFormatsLimits() {
+        Rig rig;
+        rig.space = RigSpace::Model;
+        Light l = makeLight(LightType::Point, QStringLiteral("Bright"));
+        l.falloff = Falloff{};
+        l.falloff.model = FalloffModel::InverseSquare;
+        l.intensity = 100.0; // × 12885² in world units: past kMaxRigIntensity
+        rig.lights = {l};
+        QString error;
+        QVERIFY(!convertRigSpace(rig, RigSpace::World, kBigModel, &error));
+        QVERIFY2(error.contains(QLatin1String("Bright")) && error.contains(QLatin1String("world")),
+                 qPrintable(error));
+    }
+
+    void changeRigSpace_isOneUndoStep_keepingIdsAndSelection() {
+        Document doc;
+        doc.newRig(mixedWorldRig());
+        doc.setSelectedRows({1});
+        const LightId id = doc.lightId(1);
+        QSignalSpy changed(&doc, &Document::rigChanged);
+        QString error;
+        QVERIFY2(changeRigSpace(&doc, RigSpace::Model, kBigModel, &error), qPrintable(error));
+        QCOMPARE(int(doc.rig().space), int(RigSpace::Model));
+        QCOMPARE(doc.undoStack()->count(), 1);
+        QCOMPARE(doc.lightId(1), id);
+        QCOMPARE(doc.selectedRows(), QList<int>{1});
+        QVERIFY(changed.count() >= 2);
+        QVERIFY(glm::length(doc.light(0).position) < 10.0);                 // radii now
+        QVERIFY(!changeRigSpace(&doc, RigSpace::Model, kBigModel, &error)); // already there
+        doc.undoStack()->undo();
+        QCOMPARE(doc.rig(), mixedWorldRig());
+        doc.undoStack()->redo();
+        QCOMPARE(int(doc.rig().space), int(RigSpace::Model));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestPlacement)
+#include "tst_placement.moc"

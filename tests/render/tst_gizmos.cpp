@@ -1,0 +1,47 @@
+// Issue 12 item 4: a selected light's gizmo is clearly distinct from the others (its lines in the selection
+// colour, its icon larger), whatever the lights' own colours.
+#include "render/gizmos.h"
+
+#include <QTest>
+#include <glm/ext/matrix_transform.hpp>
+
+using namespace lr;
+using namespace lr::render;
+
+class TestGizmos : public QObject {
+    Q_OBJECT
+  private slots:
+    void selectedGizmosStandOut() {
+        Rig rig;
+        Light a = makeLight(LightType::Spot, QStringLiteral("a"));
+        a.color = glm::dvec3(0.2, 0.9, 0.3);
+        rig.lights = {a, a};
+        rig.lights[1].position = glm::dvec3(-2.0, 2.0, 2.0);
+        const glm::dmat4 view = glm::lookAt(glm::dvec3(0, 0, 10), glm::dvec3(0), glm::dvec3(0, 1, 0));
+        GizmoOptions options;
+        options.selected = {1};
+        const Bounds bounds{glm::dvec3(-1), glm::dvec3(1)};
+        const GizmoGeometry g = buildGizmos(rig, SceneFrame{}, bounds, view, options);
+        QCOMPARE(int(g.points.size()), 2);
+        const float plain = g.points[0].point.x, chosen = g.points[1].point.x;
+        QVERIFY2(chosen >= 1.6f * plain, qPrintable(QStringLiteral("%1 vs %2").arg(chosen).arg(plain)));
+        // Lines: the unselected light's in its own colour, below full strength; the selected one's opaque in
+        // the selection colour. Both lights draw the same number of vertices, unselected first.
+        QVERIFY(!g.lines.empty() && g.lines.size() % 2 == 0);
+        const GizmoVertex& first = g.lines.front();
+        const GizmoVertex& last = g.lines.back();
+        QVERIFY(first.color.a < 0.9f);
+        QVERIFY(glm::vec3(first.color) != glm::vec3(kSelectedColor));
+        QVERIFY(glm::vec3(last.color) == glm::vec3(kSelectedColor));
+        int selectedLines = 0;
+        for (const GizmoVertex& v : g.lines)
+            if (glm::vec3(v.color) == glm::vec3(kSelectedColor)) {
+                ++selectedLines;
+                QVERIFY(v.color.a >= 0.75f);
+            }
+        QVERIFY(selectedLines > 0 && selectedLines < int(g.lines.size()));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestGizmos)
+#include "tst_gizmos.moc"
