@@ -545,6 +545,13 @@ void TestModel::hostileHeadersAndPlyCommentsAreRefused() {
         QVERIFY2(r.error.startsWith(QStringLiteral("could not import %1: ").arg(path)), qPrintable(r.error));
         QVERIFY2(r.error.contains(QLatin1String(c.reason)), qPrintable(r.error));
     }
+    // The sweep's reproducers themselves (tests/data/model/hostile).
+    for (const auto& [file, reason] :
+         {std::pair{"hostile/glb-huge-chunk.glb", "the GLB header declares 100 bytes, but the file has 80"},
+          std::pair{"hostile/trunc-cube-32.ply", "the PLY header has no end_header line"}}) {
+        const ModelLoadResult r = loadModel(dataFile(QLatin1String(file)));
+        QVERIFY2(!r.ok() && r.error.contains(QLatin1String(reason)), qPrintable(r.error));
+    }
     // A well-formed GLB (a JSON and a BIN chunk) passes the checks and loads.
     QByteArray json =
         R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],)"
