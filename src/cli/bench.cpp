@@ -24,10 +24,11 @@ namespace lr::cli {
 
 namespace {
 
-const char* kUsage = "lightrig bench [MODEL...] [--rig RIG] [--camera-index N | --view NAME] [--lights "
-                     "N,...] [--light-type T,...] "
-                     "[--size WxH] [--frames N] [--msaa N] [--interactive] [--quality LIST] [--json "
-                     "OUT.json] [--chart OUT.png] [--scaling-chart OUT.png]";
+const char* kUsage =
+    "lightrig bench [MODEL...] [--rig RIG] [--camera-index N | --view NAME] [--lights "
+    "N,...] [--light-type T,...] "
+    "[--size WxH] [--frames N] [--msaa N] [--interactive] [--quality LIST] [--approximations LIST] [--json "
+    "OUT.json] [--chart OUT.png] [--scaling-chart OUT.png]";
 
 const char* kBundledModel = ":/resources/models/suzanne/Suzanne.gltf";
 
@@ -121,11 +122,17 @@ int runBench(const QStringList& args) {
         QStringLiteral("interactive"),
         QStringLiteral("Time what the editor's viewport draws while you navigate: dense models (300k+ "
                        "triangles) as their simplified interaction proxy."));
+    const QCommandLineOption approximations(
+        QStringLiteral("approximations"),
+        QStringLiteral("The balanced and fast tiers' approximations to compile in, for measuring each "
+                       "(docs/quality.md): a comma-separated list of b1, b2, b3, b4, f2, or none (default "
+                       "b1,b2,b4, what the tiers ship with)."),
+        QStringLiteral("LIST"));
     const SceneOptionSet scene;
     parser.addOption(help);
     scene.addTo(parser);
     parser.addOptions({lights, lightType, lightRange, frames, warmup, msaa, interactive, json, chart,
-                       scalingChart, noErrors, noUber});
+                       scalingChart, noErrors, noUber, approximations});
     parser.addPositionalArgument(QStringLiteral("MODEL"),
                                  QStringLiteral("Model files (default: the standard suite)."),
                                  QStringLiteral("[MODEL...]"));
@@ -152,6 +159,9 @@ int runBench(const QStringList& args) {
     options.errors = !parser.isSet(noErrors);
     options.uberShader = !parser.isSet(noUber);
     options.interactive = parser.isSet(interactive);
+    if (parser.isSet(approximations) &&
+        !render::approx::parseApproximations(parser.value(approximations), &options.approximations, &message))
+        return usage(QStringLiteral("--approximations: ") + message);
     auto readInt = [&](const QCommandLineOption& o, int lo, int hi, int* value) {
         if (!parser.isSet(o)) return true;
         bool ok = false;

@@ -70,7 +70,8 @@ bool GeometryPass::run(const FrameContext& frame, PassScene& scene) {
         if (!gpass) key.rig = shaded; // the G-pass does no lighting
         key.material = d.features;
         key.quality = gpass ? Quality::Exact : settings.quality; // the G-buffer is the exact surface
-        if (key.quality == Quality::Balanced) { // B2: an integer shininess becomes a chain of products
+        key.approximations = approx::forTier(settings.approximations, key.quality);
+        if (key.approximations & approx::kB2) { // B2: an integer shininess becomes a chain of products
             const Material& m = d.material >= 0 ? model->materials[size_t(d.material)] : Material();
             const double n = m.shininess >= 0.0f ? double(m.shininess) : rig.shading.shininess;
             if (n >= 1.0 && n <= kMaxShininessInt && n == std::floor(n)) key.shininessInt = std::uint16_t(n);

@@ -50,6 +50,7 @@ bool DeferredLightingPass::run(const FrameContext& frame, PassScene& scene) {
     FeatureKey key;
     key.rig = settings.forceAllFeatures ? allRigFeatures(rigFeatures(*scene.rig)) : rigFeatures(*scene.rig);
     key.quality = settings.quality; // never Fast: the fast tier is always forward
+    key.approximations = approx::forTier(settings.approximations, key.quality);
     key.output = frame.colourPath == ColourPath::Hdr ? ShaderOutput::Radiance : ShaderOutput::Display;
     key.deferredLighting = true;
     key.clustered = frame.clustered;

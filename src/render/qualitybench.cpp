@@ -31,6 +31,7 @@ RenderSettings tierSettings(const BenchOptions& o, Quality q, bool uber) {
     s.quality = q;
     s.msaaSamples = o.msaaSamples >= 0 ? o.msaaSamples : tierMsaaSamples(q);
     s.forceAllFeatures = uber;
+    s.approximations = o.approximations;
     s.interactive = o.interactive;
     return s;
 }

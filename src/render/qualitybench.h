@@ -19,6 +19,7 @@
 #include "core/quality.h"
 #include "core/rig.h"
 #include "model/model.h"
+#include "render/approximations.h"
 #include "render/camera.h"
 
 #include <QImage>
@@ -50,6 +51,7 @@ struct BenchOptions {
     int msaaSamples = -1;     // timed runs: -1 each tier's own (tierMsaaSamples), else this for every tier
     bool interactive = false; // time what the viewport draws while navigating (interaction proxies, lod.h)
     bool keepImages = false;  // with errors: keep each tier's image and the reference (BenchResult::image)
+    std::uint8_t approximations = render::approx::kDefault; // the tiers' approximations (approximations.h)
 };
 
 // MSAA samples a tier renders with (exact, balanced: 4; fast: none).

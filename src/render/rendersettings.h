@@ -2,6 +2,7 @@
 // what it cost (RenderStats). No GL here.
 #pragma once
 
+#include "approximations.h"
 #include "core/quality.h"
 #include "core/types.h"
 
@@ -39,6 +40,9 @@ struct RenderSettings {
     // The über-shader: compile every light type and model into the lighting code whatever the rig uses
     // (for `lightrig bench`, to measure what specialising the shaders per scene saves). Same pixels.
     bool forceAllFeatures = false;
+    // The balanced and fast tiers' approximations (approx:: bits in shadergen.h, docs/quality.md): what the
+    // tiers ship with unless a measurement (`lightrig bench --approximations`) picks others.
+    std::uint8_t approximations = render::approx::kDefault; // B1, B2, B4
     bool cullBackFaces = true; // single-sided materials; double-sided ones are never culled
     // The default path shades, exposes, tone-maps and encodes each fragment straight into an 8-bit target
     // (MSAA resolves display colours). The HDR path renders linear radiance into a float target and

@@ -82,6 +82,7 @@ std::uint64_t FeatureKey::bits() const {
     put(deferredLighting, 1);
     put(clustered, 1);
     put(shininessInt, keybits::kShininessInt);
+    put(approximations, keybits::kApproximations);
     return b;
 }
 
@@ -177,20 +178,17 @@ QByteArray shaderPrelude(const FeatureKey& key) {
     out += "#define LR_QUALITY_" + macroName(EnumNames<Quality>::names[size_t(key.quality)]) + " 1\n";
     if (key.deferredLighting) out += "#define LR_DEFERRED_LIGHTING 1\n";
     if (key.clustered) out += "#define LR_CLUSTERED 1\n";
-    // The balanced tier's approximations (docs/quality.md): B1, B2 and B4; B3 (early-outs) measured no gain
-    // on llvmpipe. LIGHTRIG_BALANCED=b1,b3 (environment, whole process) picks others, for measuring each.
-    static const QByteArrayList balanced = qEnvironmentVariableIsSet("LIGHTRIG_BALANCED")
-                                               ? qgetenv("LIGHTRIG_BALANCED").toLower().split(',')
-                                               : QByteArrayList{"b1", "b2", "b4"};
-    if (key.quality == Quality::Balanced)
-        for (const char* b : {"b1", "b2", "b3", "b4"})
-            if (balanced.contains(b)) out += "#define LR_" + QByteArray(b).toUpper() + " 1\n";
-    // Measuring F2 (docs/quality.md): LIGHTRIG_FAST_INFINITE_VIEWER=1 gives the fast tier Direct3D's
-    // infinite viewer (dropped from the tier: it saved no measurable time and doubled its error).
-    if (key.quality == Quality::Fast && qEnvironmentVariableIntValue("LIGHTRIG_FAST_INFINITE_VIEWER") == 1)
-        out += "#define LR_FAST_INFINITE_VIEWER 1\n";
+    // The tier's approximations (docs/quality.md), as the key names them (approx::forTier keeps its own).
+    const std::uint8_t approximations = approx::forTier(key.approximations, key.quality);
+    const std::pair<std::uint8_t, const char*> defines[] = {{approx::kB1, "LR_B1"},
+                                                            {approx::kB2, "LR_B2"},
+                                                            {approx::kB3, "LR_B3"},
+                                                            {approx::kB4, "LR_B4"},
+                                                            {approx::kF2, "LR_FAST_INFINITE_VIEWER"}};
+    for (const auto& [bit, name] : defines)
+        if (approximations & bit) out += "#define " + QByteArray(name) + " 1\n";
     if (key.quality == Quality::Balanced && key.shininessInt > 0 && key.shininessInt <= kMaxShininessInt &&
-        balanced.contains("b2")) {
+        (approximations & approx::kB2)) {
         // x^n by repeated squaring, unrolled here so the shader is a plain chain of products.
         out += "#define LR_SHININESS_INT " + QByteArray::number(key.shininessInt) + '\n';
         out += "float powShininessInt(float x) {\n    float r = 1.0, b = x;\n";
@@ -213,5 +211,54 @@ QByteArray shaderPrelude(const FeatureKey& key) {
     }
     return out;
 }
+
+namespace approx {
+
+namespace {
+constexpr std::pair<std::uint8_t, const char*> kNames[] = {
+    {kB1, "b1"}, {kB2, "b2"}, {kB3, "b3"}, {kB4, "b4"}, {kF2, "f2"}};
+static_assert(std::size(kNames) == kCount);
+} // namespace
+
+std::uint8_t forTier(std::uint8_t set, Quality quality) {
+    switch (quality) {
+    case Quality::Balanced:
+        return set & kBalancedMask;
+    case Quality::Fast:
+        return set & kFastMask;
+    default:
+        return 0;
+    }
+}
+
+bool parseApproximations(const QString& text, std::uint8_t* out, QString* error) {
+    std::uint8_t set = 0;
+    const QString trimmed = text.trimmed().toLower();
+    if (trimmed != QLatin1String("none")) {
+        for (const QString& word : trimmed.split(QLatin1Char(','))) {
+            bool found = false;
+            for (const auto& [bit, name] : kNames)
+                if (word.trimmed() == QLatin1String(name)) set |= bit, found = true;
+            if (!found) {
+                if (error)
+                    *error = QStringLiteral("unknown approximation '%1' (expected a comma-separated list of "
+                                            "b1, b2, b3, b4, f2, or none)")
+                                 .arg(word.trimmed());
+                return false;
+            }
+        }
+    }
+    *out = set;
+    return true;
+}
+
+QString approximationNames(std::uint8_t set) {
+    QStringList names;
+    for (const auto& [bit, name] : kNames)
+        if (set & bit) names << QLatin1String(name);
+    return names.isEmpty() ? QStringLiteral("none") : names.join(QLatin1Char(','));
+}
+
+} // namespace approx
 
 } // namespace lr::render

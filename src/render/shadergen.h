@@ -3,6 +3,7 @@
 // compiled once into a program whose source is shaders/*.glsl with #defines prepended. No GL here.
 #pragma once
 
+#include "approximations.h"
 #include "core/quality.h"
 #include "core/rig.h"
 #include "model/model.h"
@@ -55,6 +56,9 @@ struct FeatureKey {
     // Balanced tier (B2 in docs/quality.md): the material's shininess when it is a whole number in
     // 1..kMaxShininessInt, so the specular power compiles to a chain of products; 0 otherwise.
     std::uint16_t shininessInt = 0;
+    // The tier's approximations compiled in (named bits, approx:: below; docs/quality.md). Only the bits of
+    // the key's own tier are kept (approx::forTier), so exact variants never multiply.
+    std::uint8_t approximations = 0;
 
     std::uint64_t bits() const; // a unique packing, for hashing and ordering
     QString describe() const;   // "point+spot falloff:range-power cone:smooth ... tex:base,normal"
@@ -81,6 +85,10 @@ static_assert(enumCount<ViewerModel>() <= (1 << keybits::kViewer));
 static_assert(enumCount<Quality>() <= (1 << keybits::kQuality));
 static_assert(int(ShaderOutput::GBuffer) < (1 << keybits::kOutput));
 static_assert(kMaxShininessInt < (1 << keybits::kShininessInt));
+namespace keybits {
+constexpr int kApproximations = 5;
+}
+static_assert(approx::kCount <= keybits::kApproximations, "widen FeatureKey::bits()'s approximation field");
 
 RigFeatures rigFeatures(const Rig& rig);
 // Every light type and model present (the über-shader); the rig-wide specular and viewer models stay.

@@ -59,6 +59,7 @@ class TestBenchCli : public QObject {
         QTest::addRow("rig and lights") << QStringList{"--rig", "r.json", "--lights", "8"};
         QTest::addRow("camera and view") << QStringList{"--camera-index", "0", "--view", "front"};
         QTest::addRow("bad size") << QStringList{"--size", "12"};
+        QTest::addRow("bad approximation") << QStringList{"--approximations", "b1,b9"};
         QTest::addRow("unknown option") << QStringList{"--fastest"};
     }
 

@@ -9,6 +9,7 @@
 #include "render/gbuffer.h"
 #include "render/offscreen.h"
 #include "render/renderplan.h"
+#include "render/shadergen.h"
 #include "render/textureunits.h"
 
 #include <QSet>
@@ -53,6 +54,43 @@ class TestRenderPasses : public QObject {
         plan.select(PlanKey{true, true, false, true});
         plan.select(PlanKey{true, true, false, true});
         QCOMPARE(plan.builds(), 17); // the same key twice: one build
+    }
+
+    // The tiers' approximations are named variant bits of the key (approximations.h), chosen through
+    // RenderSettings, not environment variables: each compiles only into its own tier's shaders, and two
+    // choices are two variants.
+    void approximationsAreVariantBitsOfTheirTier() {
+        FeatureKey balanced;
+        balanced.quality = Quality::Balanced;
+        balanced.approximations = approx::forTier(approx::kDefault, Quality::Balanced);
+        const QByteArray shipped = shaderPrelude(balanced);
+        QVERIFY(shipped.contains("#define LR_B1 1") && shipped.contains("#define LR_B4 1"));
+        QVERIFY(!shipped.contains("LR_B3"));
+        FeatureKey withB3 = balanced;
+        withB3.approximations = approx::forTier(approx::kDefault | approx::kB3, Quality::Balanced);
+        QVERIFY(shaderPrelude(withB3).contains("#define LR_B3 1"));
+        QVERIFY(withB3.bits() != balanced.bits());
+        FeatureKey exact;
+        exact.approximations = approx::forTier(approx::kBalancedMask | approx::kF2, Quality::Exact);
+        QCOMPARE(int(exact.approximations), 0);
+        const QByteArray exactPrelude = shaderPrelude(exact);
+        QVERIFY(!exactPrelude.contains("LR_B1") && !exactPrelude.contains("LR_FAST_INFINITE_VIEWER"));
+        FeatureKey fast;
+        fast.quality = Quality::Fast;
+        fast.approximations = approx::forTier(approx::kDefault | approx::kF2, Quality::Fast);
+        QCOMPARE(int(fast.approximations), int(approx::kF2));
+        QVERIFY(shaderPrelude(fast).contains("#define LR_FAST_INFINITE_VIEWER 1"));
+        QCOMPARE(int(RenderSettings().approximations), int(approx::kDefault));
+
+        std::uint8_t set = 0;
+        QString error;
+        QVERIFY(approx::parseApproximations(QStringLiteral("B1, b3,f2"), &set, &error));
+        QCOMPARE(int(set), int(approx::kB1 | approx::kB3 | approx::kF2));
+        QVERIFY(approx::parseApproximations(QStringLiteral("none"), &set, &error));
+        QCOMPARE(int(set), 0);
+        QVERIFY(!approx::parseApproximations(QStringLiteral("b1,b9"), &set, &error));
+        QVERIFY2(error.contains(QLatin1String("'b9'")), qPrintable(error));
+        QCOMPARE(approx::approximationNames(approx::kDefault), QStringLiteral("b1,b2,b4"));
     }
 
     void checkNamesAMissingInput() {
