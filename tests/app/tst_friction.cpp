@@ -26,6 +26,7 @@
 #include "core/rigjson.h"
 #include "editor/document.h"
 #include "model/isolatedimport.h"
+#include "startwindow.h"
 
 #include <QAction>
 #include <QApplication>
@@ -111,15 +112,8 @@ class TestFriction : public QObject {
             qWarning("unexpected file dialog");
             return QString();
         };
-        QSignalSpy loaded(m_window->files(), &DocumentFiles::modelLoadFinished);
-        EditorOptions options;
-        options.restoreSession = false;
-        m_window->openInitial(options);
-        m_window->show();
-        QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
-        QApplication::setActiveWindow(m_window.get());
-        QVERIFY(loaded.count() > 0 || loaded.wait(60000));
-        QTRY_VERIFY_WITH_TIMEOUT(viewport()->hasRenderedFrame(), 30000);
+        const QString started = test::startMainWindow(*m_window);
+        QVERIFY2(started.isEmpty(), qPrintable(started));
     }
 
     void cleanupTestCase() {

@@ -20,6 +20,7 @@
 #include "core/rigjson.h"
 #include "editor/document.h"
 #include "model/isolatedimport.h"
+#include "startwindow.h"
 
 #include <QAction>
 #include <QApplication>
@@ -82,16 +83,8 @@ class TestMainWindow : public QObject {
         m_window->files()->askSavePath = [noDialog](const QString&, const QString&, const QString&) {
             return noDialog();
         };
-        QSignalSpy loaded(m_window->files(), &DocumentFiles::modelLoadFinished);
-        EditorOptions options;
-        options.restoreSession = false;
-        m_window->openInitial(options);
-        m_window->show();
-        QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
-        QApplication::setActiveWindow(m_window.get());
-        QVERIFY(loaded.count() > 0 || loaded.wait(60000));
-        QVERIFY2(!m_window->scene()->isEmpty(), "the bundled model loaded");
-        QTRY_VERIFY_WITH_TIMEOUT(viewport()->hasRenderedFrame(), 30000);
+        const QString started = test::startMainWindow(*m_window);
+        QVERIFY2(started.isEmpty(), qPrintable(started));
         QVERIFY2(viewport()->lastError().isEmpty(), qPrintable(viewport()->lastError()));
         QVERIFY(m_errors.isEmpty());
     }

@@ -19,6 +19,7 @@
 #include "editor/document.h"
 #include "editor/placement.h"
 #include "model/isolatedimport.h"
+#include "startwindow.h"
 
 #include <QAction>
 #include <QApplication>
@@ -98,16 +99,8 @@ class TestNewUser : public QObject {
         QVERIFY(m_dir.isValid());
         setErrorPresenter([this](const ErrorReport& r) { m_errors.append(r); });
         m_window = std::make_unique<MainWindow>();
-        QSignalSpy loaded(m_window->files(), &DocumentFiles::modelLoadFinished);
-        EditorOptions options;
-        options.restoreSession = false;
-        m_window->openInitial(options);
-        m_window->show();
-        QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
-        QApplication::setActiveWindow(m_window.get());
-        QVERIFY(loaded.count() > 0 || loaded.wait(60000));
-        QVERIFY(!scene()->isEmpty());
-        QTRY_VERIFY_WITH_TIMEOUT(viewport()->hasRenderedFrame(), 30000);
+        const QString started = test::startMainWindow(*m_window);
+        QVERIFY2(started.isEmpty(), qPrintable(started));
     }
 
     void cleanupTestCase() {

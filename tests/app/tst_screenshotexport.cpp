@@ -12,6 +12,7 @@
 #include "app/viewport.h"
 #include "editor/document.h"
 #include "model/isolatedimport.h"
+#include "startwindow.h"
 
 #include <QApplication>
 #include <QDir>
@@ -66,14 +67,8 @@ class TestScreenshotExport : public QObject {
         QVERIFY(m_dir.isValid());
         setErrorPresenter([this](const ErrorReport& r) { m_errors.append(r); });
         m_window = std::make_unique<MainWindow>();
-        QSignalSpy loaded(m_window->files(), &DocumentFiles::modelLoadFinished);
-        EditorOptions options;
-        options.restoreSession = false;
-        m_window->openInitial(options);
-        m_window->show();
-        QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
-        QVERIFY(loaded.count() > 0 || loaded.wait(60000));
-        QTRY_VERIFY_WITH_TIMEOUT(viewport()->hasRenderedFrame(), 30000);
+        const QString started = test::startMainWindow(*m_window);
+        QVERIFY2(started.isEmpty(), qPrintable(started));
         viewport()->frameAll();
     }
     void cleanupTestCase() {
