@@ -5,6 +5,7 @@
 #include "core/prepare.h"
 #include "core/shade.h"
 #include "render/floatimage.h"
+#include "render/gbuffer.h"
 #include "support/cli.h"
 
 #include <QGuiApplication>
@@ -74,13 +75,7 @@ inline Comparison compareWithReference(const FloatImage& radiance, const GBuffer
             }
             if (g.position.at(x, y).w < 0.5f) continue;
             ++c.covered;
-            lighting::Surface<double> s;
-            s.position = V(g.position.at(x, y));
-            s.normal = V(g.normal.at(x, y));
-            s.albedo = V(g.albedo.at(x, y));
-            s.specular = V(g.specular.at(x, y));
-            s.shininess = g.specular.at(x, y).w;
-            s.emissive = V(g.emissive.at(x, y));
+            const lighting::Surface<double> s = render::surfaceAt(g, x, y); // the G-buffer codec's decode
             const V ref = lighting::shadeSurface<double>(s, lights, settings);
             // Conditioning: nudge the point by ~8 float ulps of its coordinates; a jump means an edge.
             double spread = 0.0;
