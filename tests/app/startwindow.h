@@ -6,16 +6,45 @@
 
 #include "app/commandline.h"
 #include "app/documentfiles.h"
+#include "app/editorapp.h"
 #include "app/mainwindow.h"
 #include "app/scene.h"
 #include "app/viewport.h"
+#include "editor/document.h"
+#include "model/isolatedimport.h"
 
 #include <QApplication>
+#include <QSettings>
 #include <QSignalSpy>
+#include <QStandardPaths>
 #include <QString>
 #include <QTest>
 
 namespace lr::test {
+
+// What every app test does first: settings in Qt's test-mode folders under its own application name, cleared,
+// and models imported by the built lightrig.
+inline void prepareEditorTest(const QString& applicationName) {
+    QStandardPaths::setTestModeEnabled(true);
+    setApplicationIdentity();
+    QCoreApplication::setApplicationName(applicationName);
+    setImportWorkerExecutable(QStringLiteral(LIGHTRIG_EXECUTABLE));
+    QSettings().clear();
+}
+
+// A new rig of one spot light half-way between the framed model and the camera, a little off-centre (in
+// view, in front of the model). False when the light could not be added or placed.
+inline bool spotInFrontOfTheModel(MainWindow& window) {
+    Document* doc = window.document();
+    doc->newRig(Rig{});
+    if (!doc->addLight(LightType::Spot)) return false;
+    window.viewport()->frameAll();
+    const SceneFrame frame = window.scene()->frame();
+    const ViewCamera cam = window.viewport()->camera();
+    const glm::dvec3 world =
+        frame.center + (cam.eye - frame.center) * 0.5 + cam.right() * (0.3 * frame.radius);
+    return doc->setLightValue({0}, LightProperty::Position, QVariant::fromValue(world));
+}
 
 // An empty string when the window is ready, else what did not happen (for QVERIFY2).
 inline QString startMainWindow(MainWindow& window) {

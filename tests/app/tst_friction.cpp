@@ -42,7 +42,6 @@
 #include <QScrollBar>
 #include <QSettings>
 #include <QSignalSpy>
-#include <QStandardPaths>
 #include <QTableView>
 #include <QTemporaryDir>
 #include <QTest>
@@ -79,25 +78,14 @@ class TestFriction : public QObject {
     }
 
     void spotInFrontOfTheModel() {
-        doc()->newRig(Rig{});
-        QVERIFY(doc()->addLight(LightType::Spot));
-        viewport()->frameAll();
-        const SceneFrame frame = m_window->scene()->frame();
-        const ViewCamera cam = viewport()->camera();
-        const glm::dvec3 world =
-            frame.center + (cam.eye - frame.center) * 0.5 + cam.right() * (0.3 * frame.radius);
-        QVERIFY(doc()->setLightValue({0}, LightProperty::Position, QVariant::fromValue(world)));
+        QVERIFY(test::spotInFrontOfTheModel(*m_window));
         doc()->setSelectedRows({0}, 0);
         QApplication::processEvents();
     }
 
   private slots:
     void initTestCase() {
-        QStandardPaths::setTestModeEnabled(true);
-        setApplicationIdentity();
-        QCoreApplication::setApplicationName(QStringLiteral("lightrig-friction-test"));
-        setImportWorkerExecutable(QStringLiteral(LIGHTRIG_EXECUTABLE));
-        QSettings().clear();
+        test::prepareEditorTest(QStringLiteral("lightrig-friction-test"));
         QVERIFY(m_dir.isValid());
         setErrorPresenter([this](const ErrorReport& r) {
             m_errors.append(r);

@@ -31,7 +31,6 @@
 #include <QMimeData>
 #include <QSettings>
 #include <QSignalSpy>
-#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QToolBar>
@@ -65,11 +64,7 @@ class TestMainWindow : public QObject {
 
   private slots:
     void initTestCase() {
-        QStandardPaths::setTestModeEnabled(true);
-        setApplicationIdentity();
-        QCoreApplication::setApplicationName(QStringLiteral("lightrig-test"));
-        setImportWorkerExecutable(QStringLiteral(LIGHTRIG_EXECUTABLE)); // models import in lightrig
-        QSettings().clear();
+        test::prepareEditorTest(QStringLiteral("lightrig-test")); // models import in lightrig
         QVERIFY(m_dir.isValid());
         setErrorPresenter([this](const ErrorReport& r) { m_errors.append(r); });
         // No test may end up in a modal file dialog (it would wait forever under Xvfb).
@@ -232,15 +227,9 @@ class TestMainWindow : public QObject {
     }
 
     void viewport_selectDragAndAim() {
-        doc()->newRig(Rig{});
-        QVERIFY(doc()->addLight(LightType::Spot));
-        viewport()->frameAll();
+        // The spot in front of the model, between it and the camera, a little off-centre.
+        QVERIFY(test::spotInFrontOfTheModel(*m_window));
         const SceneFrame frame = m_window->scene()->frame();
-        // Put the spot in front of the model, between it and the camera, a little off-centre.
-        const ViewCamera cam = viewport()->camera();
-        const glm::dvec3 world =
-            frame.center + (cam.eye - frame.center) * 0.5 + cam.right() * (0.3 * frame.radius);
-        QVERIFY(doc()->setLightValue({0}, LightProperty::Position, QVariant::fromValue(world)));
         doc()->setSelection({});
         QApplication::processEvents();
 

@@ -29,7 +29,6 @@
 #include <QPlainTextEdit>
 #include <QSettings>
 #include <QSignalSpy>
-#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QToolBar>
@@ -91,11 +90,7 @@ class TestNewUser : public QObject {
 
   private slots:
     void initTestCase() {
-        QStandardPaths::setTestModeEnabled(true);
-        setApplicationIdentity();
-        QCoreApplication::setApplicationName(QStringLiteral("lightrig-test-newuser"));
-        setImportWorkerExecutable(QStringLiteral(LIGHTRIG_EXECUTABLE));
-        QSettings().clear();
+        test::prepareEditorTest(QStringLiteral("lightrig-test-newuser"));
         QVERIFY(m_dir.isValid());
         setErrorPresenter([this](const ErrorReport& r) { m_errors.append(r); });
         m_window = std::make_unique<MainWindow>();

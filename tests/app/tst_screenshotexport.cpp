@@ -23,7 +23,6 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
-#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
@@ -59,11 +58,7 @@ class TestScreenshotExport : public QObject {
 
   private slots:
     void initTestCase() {
-        QStandardPaths::setTestModeEnabled(true);
-        setApplicationIdentity();
-        QCoreApplication::setApplicationName(QStringLiteral("lightrig-test"));
-        setImportWorkerExecutable(QStringLiteral(LIGHTRIG_EXECUTABLE));
-        QSettings().clear();
+        test::prepareEditorTest(QStringLiteral("lightrig-test"));
         QVERIFY(m_dir.isValid());
         setErrorPresenter([this](const ErrorReport& r) { m_errors.append(r); });
         m_window = std::make_unique<MainWindow>();
