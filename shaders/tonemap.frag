@@ -10,8 +10,7 @@ uniform bool uTransparent;
 out vec4 oColor;
 
 vec3 mapped(vec3 radiance) {  // displayEncode() without the encoding: composited before it
-    vec3 x = radiance * uExposureScale;
-    return vec3(toneMap(uToneMap, x.r), toneMap(uToneMap, x.g), toneMap(uToneMap, x.b));
+    return toneMapRgb(uToneMap, radiance * uExposureScale);
 }
 
 vec3 encode(vec3 c) { return vec3(linearToSrgb(c.r), linearToSrgb(c.g), linearToSrgb(c.b)); }
