@@ -167,6 +167,92 @@ template <typename T> T rimTerm(Vec3<T> direction, Vec3<T> N, Vec3<T> V, T expon
     return safePow(p1 * p2, exponent);
 }
 
+// ---- physically based: the glTF 2.0 metal-rough BRDF (specification, Appendix B) ----
+// α = roughness²; D Trowbridge-Reitz/GGX; V the height-correlated Smith visibility G / (4 |N·L| |N·V|);
+// F Schlick's Fresnel; diffuse (1 - F) c_diff / π. Radiance of a punctual light = f · E · N·L, where E is
+// the light's illuminance at the surface (candela / d² × falloff × cone, or lux for a directional light).
+
+inline constexpr double kPi = 3.14159265358979323846;
+// Perceptual roughness is floored here (three.js's floor; Filament's is 0.045): at 0 a punctual light's
+// highlight is a Dirac delta that no renderer can show, and D = α² / (π (...)²) is 0/0 at N·H = 1.
+inline constexpr double kMinRoughness = 0.0525;
+// |N·V| is floored here: at a silhouette N·V reaches 0 and the visibility's denominator with it.
+inline constexpr double kMinNDotV = 1e-5;
+// Dielectric reflectance at normal incidence (IOR 1.5).
+inline constexpr double kDielectricF0 = 0.04;
+
+// α = max(roughness, kMinRoughness)²; roughness above 1 or NaN -> 1.
+template <typename T> T pbrAlpha(T roughness) {
+    const T r = roughness > T(kMinRoughness) ? (roughness < T(1) ? roughness : T(1))
+                                             : (roughness > T(1) ? T(1) : T(kMinRoughness));
+    return r * r;
+}
+
+// D(h) = α² / (π ((N·H)² (α² - 1) + 1)²) for N·H > 0, else 0. The bracket is written as
+// (N·H)² α² + |N×H|² (Lagrange's identity, Filament): 1 - (N·H)² cancels catastrophically in float near
+// the highlight's centre, where the cross product keeps its precision.
+template <typename T> T ggxDistribution(Vec3<T> N, Vec3<T> H, T alpha) {
+    const T nDotH = glm::dot(N, H);
+    if (!(nDotH > T(0))) return T(0);
+    const Vec3<T> c = glm::cross(N, H);
+    const T a2 = alpha * alpha;
+    const T k = nDotH * nDotH * a2 + glm::dot(c, c);
+    return a2 / (T(kPi) * k * k); // k >= (N·H)² α² > 0
+}
+
+// Height-correlated Smith visibility (Heitz 2014; glTF sample viewer, three.js, Filament):
+// 0.5 / (N·L sqrt((N·V)² (1 - α²) + α²) + N·V sqrt((N·L)² (1 - α²) + α²)), for N·L > 0 and N·V > 0.
+template <typename T> T smithVisibility(T nDotL, T nDotV, T alpha) {
+    const T a2 = alpha * alpha;
+    const T gv = nDotL * std::sqrt(nDotV * nDotV * (T(1) - a2) + a2);
+    const T gl = nDotV * std::sqrt(nDotL * nDotL * (T(1) - a2) + a2);
+    const T denom = gv + gl;
+    return denom > T(0) ? T(0.5) / denom : T(0);
+}
+
+// Schlick: F0 + (1 - F0) (1 - |V·H|)^5.
+template <typename T> Vec3<T> fresnelSchlick(const Vec3<T>& f0, T vDotH) {
+    const T m = T(1) - saturate(std::abs(vDotH));
+    const T m2 = m * m;
+    return f0 + (Vec3<T>(1) - f0) * (m2 * m2 * m);
+}
+
+// The material's diffuse colour c_diff = baseColor (1 - metallic) and F0 = mix(0.04, baseColor, metallic),
+// metallic clamped to [0, 1] (NaN -> 0) and base colour to >= 0.
+template <typename T> Vec3<T> pbrDiffuseColor(const Vec3<T>& baseColor, T metallic) {
+    const Vec3<T> b(positive(baseColor.x), positive(baseColor.y), positive(baseColor.z));
+    return b * (T(1) - saturate(metallic));
+}
+template <typename T> Vec3<T> pbrF0(const Vec3<T>& baseColor, T metallic) {
+    const Vec3<T> b(positive(baseColor.x), positive(baseColor.y), positive(baseColor.z));
+    const T m = saturate(metallic);
+    return Vec3<T>(T(kDielectricF0)) * (T(1) - m) + b * m;
+}
+
+// One punctual light's two lobes at the surface, per unit of light: diffuse = (1 - F) c_diff / π · cosTerm
+// (cosTerm: N·L, or the half-Lambert wrap when a light asks for it), specular = F D V · N·L. The caller
+// multiplies by the light's colour, intensity and attenuation.
+template <typename T> struct PbrLobes {
+    Vec3<T> diffuse{0};
+    Vec3<T> specular{0};
+};
+
+template <typename T>
+PbrLobes<T> pbrLobes(Vec3<T> N, Vec3<T> L, Vec3<T> V, const Vec3<T>& cDiff, const Vec3<T>& f0, T alpha,
+                     T cosTerm) {
+    PbrLobes<T> o;
+    const Vec3<T> H = safeNormalize(L + V, N); // L = -V: H = N
+    const Vec3<T> F = fresnelSchlick(f0, glm::dot(V, H));
+    o.diffuse = (Vec3<T>(1) - F) * cDiff * (cosTerm * T(1.0 / kPi));
+    const T nDotL = glm::dot(N, L);
+    if (!(nDotL > T(0))) return o; // no specular from behind (a wrapped diffuse may still light it)
+    T nDotV = std::abs(glm::dot(N, V));
+    if (!(nDotV > T(kMinNDotV))) nDotV = T(kMinNDotV);
+    const T nl = nDotL < T(1) ? nDotL : T(1);
+    o.specular = F * (ggxDistribution(N, H, alpha) * smithVisibility(nl, nDotV, alpha) * nl);
+    return o;
+}
+
 // ---- tone mapping and output encoding: core/colour.h, here under their lighting:: names ----
 
 using colour::linearToSrgb;

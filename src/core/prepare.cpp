@@ -83,8 +83,10 @@ std::vector<lighting::ShadeLight<double>> prepareLights(const Rig& rig, const Sc
 
 lighting::ShadeSettings<double> prepareSettings(const Rig& rig, const SceneFrame& frame) {
     lighting::ShadeSettings<double> s;
+    s.model = rig.shading.model;
     s.specular = rig.shading.specular;
-    s.viewer = rig.shading.viewer;
+    // Physically based shading always uses the true (local) viewer.
+    s.viewer = rig.shading.model == ShadingModel::Pbr ? ViewerModel::Local : rig.shading.viewer;
     s.ambient = rig.ambient;
     s.distanceScale = distanceScale(rig, frame);
     return s;

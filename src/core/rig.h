@@ -60,6 +60,8 @@ struct Light {
 };
 
 struct Shading {
+    ShadingModel model = ShadingModel::Classic;
+    // Classic only (kept, neither read nor written, under Pbr):
     SpecularModel specular = SpecularModel::Phong;
     ViewerModel viewer = ViewerModel::Local;
     double shininess = 32.0; // used when the material has none

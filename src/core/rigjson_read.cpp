@@ -120,6 +120,16 @@ std::optional<Light> readLight(Checker& c, const Value& v, const QString& path) 
 void readShading(Checker& c, const Value& v, const QString& path, Shading& s) {
     if (!c.isObject(v, path)) return;
     ObjectView o(c, v, path);
+    o.read("model", s.model,
+           [&](const Value& x, const QString& p) { return c.enumValue<ShadingModel>(x, p); });
+    if (s.model == ShadingModel::Pbr) {
+        for (const char* key : {"specular", "viewer", "shininess"})
+            o.reject(key, QStringLiteral("physically based shading (\"model\": \"pbr\") has no %1; the "
+                                         "materials' roughness and metallic values replace it")
+                              .arg(QLatin1String(key)));
+        o.finish();
+        return;
+    }
     o.read("specular", s.specular,
            [&](const Value& x, const QString& p) { return c.enumValue<SpecularModel>(x, p); });
     o.read("viewer", s.viewer,

@@ -112,9 +112,12 @@ QByteArray writeRigJson(const Rig& rig) {
         }
         lights += "  ]";
     }
-    const Fields shading{{"specular", name(rig.shading.specular)},
-                         {"viewer", name(rig.shading.viewer)},
-                         {"shininess", num(rig.shading.shininess)}};
+    // Classic shading is the default and keeps its three keys; physically based shading has none of them.
+    const Fields shading = rig.shading.model == ShadingModel::Pbr
+                               ? Fields{{"model", name(rig.shading.model)}}
+                               : Fields{{"specular", name(rig.shading.specular)},
+                                        {"viewer", name(rig.shading.viewer)},
+                                        {"shininess", num(rig.shading.shininess)}};
     const Fields top{{"format", "\"lightrig\""},
                      {"version", QByteArray::number(kRigFormatVersion)},
                      {"name", str(rig.name)},

@@ -33,10 +33,13 @@ template <typename T> struct Surface {
     Vec3<T> albedo{1};
     Vec3<T> specular{1}; // material specular colour (ks)
     Vec3<T> emissive{0};
-    T shininess = T(32);
+    T shininess = T(32); // classic
+    // Physically based (glTF metal-rough): albedo is the base colour; occlusion scales ambient light only.
+    T metallic = T(0), roughness = T(1), occlusion = T(1);
 };
 
 template <typename T> struct ShadeSettings {
+    ShadingModel model = ShadingModel::Classic;
     SpecularModel specular = SpecularModel::Phong;
     ViewerModel viewer = ViewerModel::Local;
     Vec3<T> ambient{0};
@@ -76,28 +79,36 @@ template <typename T> Vec3<T> viewVector(const ShadeSettings<T>& s, const Vec3<T
     return s.viewer == ViewerModel::Local ? safeNormalize(-P, infinite) : infinite;
 }
 
-// Radiance one light adds at the surface (linear, HDR).
+// The direction to a light and its attenuation (falloff × cone; 1 for a directional light) at the surface.
+// False when the light adds nothing there.
+template <typename T>
+bool lightArrival(const ShadeLight<T>& l, const Surface<T>& s, const ShadeSettings<T>& st, Vec3<T>* L,
+                  T* attenuation) {
+    *L = -l.direction;
+    *attenuation = T(1);
+    if (!traitsOf(l.type).usesPosition) return true;
+    const Vec3<T> toLight = l.position - s.position;
+    *L = safeNormalize(toLight, s.normal); // a light on the surface shines along the normal
+    // |toLight| as dot(toLight, L): no squared intermediate, so no overflow or underflow where
+    // glm::length's would (float: |toLight| > 1.8e19 or < 1e-19), and one sqrt fewer. An overflowing
+    // distance (positions more than ~1.7e38 apart, where L falls back to N) becomes the largest finite
+    // value: every falloff then returns its limit.
+    T d = glm::dot(toLight, *L) * st.distanceScale;
+    if (!(std::abs(d) <= std::numeric_limits<T>::max())) d = std::numeric_limits<T>::max();
+    *attenuation = evalFalloff(l, d);
+    if (traitsOf(l.type).usesCone) *attenuation *= evalCone(l, glm::dot(-*L, l.direction));
+    return *attenuation > T(0);
+}
+
+// Radiance one light adds at the surface (linear, HDR), classic models.
 template <typename T>
 Vec3<T> shadeLight(const ShadeLight<T>& l, const Surface<T>& s, const ShadeSettings<T>& st,
                    const Vec3<T>& V) {
     const Vec3<T>& N = s.normal;
     if (l.type == LightType::Rim) return l.color * rimTerm(l.direction, N, V, l.rimExponent);
-
-    Vec3<T> L = -l.direction;
-    T attenuation = T(1);
-    if (traitsOf(l.type).usesPosition) {
-        const Vec3<T> toLight = l.position - s.position;
-        L = safeNormalize(toLight, N); // a light on the surface shines along the normal
-        // |toLight| as dot(toLight, L): no squared intermediate, so no overflow or underflow where
-        // glm::length's would (float: |toLight| > 1.8e19 or < 1e-19), and one sqrt fewer. An overflowing
-        // distance (positions more than ~1.7e38 apart, where L falls back to N) becomes the largest finite
-        // value: every falloff then returns its limit.
-        T d = glm::dot(toLight, L) * st.distanceScale;
-        if (!(std::abs(d) <= std::numeric_limits<T>::max())) d = std::numeric_limits<T>::max();
-        attenuation = evalFalloff(l, d);
-        if (traitsOf(l.type).usesCone) attenuation *= evalCone(l, glm::dot(-L, l.direction));
-        if (!(attenuation > T(0))) return Vec3<T>(0);
-    }
+    Vec3<T> L;
+    T attenuation;
+    if (!lightArrival(l, s, st, &L, &attenuation)) return Vec3<T>(0);
     const T nDotL = glm::dot(N, L);
     const T D = l.diffuse == DiffuseModel::Lambert ? diffuseLambert(nDotL) : diffuseHalfLambert(nDotL);
     T S = T(0);
@@ -107,10 +118,40 @@ Vec3<T> shadeLight(const ShadeLight<T>& l, const Surface<T>& s, const ShadeSetti
     return attenuation * (l.color * s.albedo * D + l.specular * s.specular * S + l.ambient * s.albedo);
 }
 
+// Radiance one light adds at the surface under physically based shading (docs/lighting-models.md):
+//   attenuation · (colour·intensity · diffuse lobe + Sc·intensity · specular lobe + Ac·intensity · c_diff/π);
+// the falloff, cone and diffuse models are the light's own (glTF lights: inverse-square with the range
+// window, smooth cone of exponent 2, Lambert). A rim light adds its classic term.
+template <typename T>
+Vec3<T> shadeLightPbr(const ShadeLight<T>& l, const Surface<T>& s, const ShadeSettings<T>& st,
+                      const Vec3<T>& V, const Vec3<T>& cDiff, const Vec3<T>& f0, T alpha) {
+    const Vec3<T>& N = s.normal;
+    if (l.type == LightType::Rim) return l.color * rimTerm(l.direction, N, V, l.rimExponent);
+    Vec3<T> L;
+    T attenuation;
+    if (!lightArrival(l, s, st, &L, &attenuation)) return Vec3<T>(0);
+    const T nDotL = glm::dot(N, L);
+    const T cosTerm = l.diffuse == DiffuseModel::Lambert ? diffuseLambert(nDotL) : diffuseHalfLambert(nDotL);
+    const PbrLobes<T> f = pbrLobes(N, L, V, cDiff, f0, alpha, cosTerm);
+    return attenuation * (l.color * f.diffuse + l.specular * f.specular +
+                          l.ambient * cDiff * (saturate(s.occlusion) * T(1.0 / kPi)));
+}
+
 // Scene ambient + every light + emissive.
 template <typename T>
 Vec3<T> shadeSurface(const Surface<T>& s, std::span<const ShadeLight<T>> lights, const ShadeSettings<T>& st) {
     const Vec3<T> V = viewVector(st, s.position);
+    if (st.model == ShadingModel::Pbr) {
+        // The scene ambient is an irradiance (lux, as three.js's AmbientLight) on the diffuse lobe,
+        // scaled by the material's occlusion.
+        const Vec3<T> cDiff = pbrDiffuseColor(s.albedo, s.metallic);
+        const Vec3<T> f0 = pbrF0(s.albedo, s.metallic);
+        const T alpha = pbrAlpha(s.roughness);
+        Vec3<T> sum = st.ambient * cDiff * (saturate(s.occlusion) * T(1.0 / kPi));
+        for (const ShadeLight<T>& l : lights)
+            sum += shadeLightPbr(l, s, st, V, cDiff, f0, alpha);
+        return sum + s.emissive;
+    }
     Vec3<T> sum = st.ambient * s.albedo;
     for (const ShadeLight<T>& l : lights)
         sum += shadeLight(l, s, st, V);

@@ -15,7 +15,10 @@ enum class DiffuseModel { Lambert, HalfLambert };
 enum class SpecularModel { Phong, BlinnPhong };
 enum class ViewerModel { Local, Infinite };
 enum class RigSpace { World, Model };
-enum class ToneMap { Clamp, Reinhard, Aces };
+enum class ToneMap { Clamp, Reinhard, Aces, Neutral, Agx };
+// Classic: the design documents' diffuse/specular models. Pbr: the glTF 2.0 metal-rough BRDF (Appendix B)
+// with KHR_lights_punctual units (docs/lighting-models.md, "Physically based shading").
+enum class ShadingModel { Classic, Pbr };
 
 template <typename E> struct EnumNames; // specialised below: static constexpr std::array names
 
@@ -28,7 +31,8 @@ LR_ENUM_NAMES(DiffuseModel, "lambert", "half-lambert")
 LR_ENUM_NAMES(SpecularModel, "phong", "blinn-phong")
 LR_ENUM_NAMES(ViewerModel, "local", "infinite")
 LR_ENUM_NAMES(RigSpace, "world", "model")
-LR_ENUM_NAMES(ToneMap, "clamp", "reinhard", "aces")
+LR_ENUM_NAMES(ToneMap, "clamp", "reinhard", "aces", "neutral", "agx")
+LR_ENUM_NAMES(ShadingModel, "classic", "pbr")
 #undef LR_ENUM_NAMES
 
 template <typename E>

@@ -10,6 +10,11 @@ std::size_t Model::triangleCount() const {
         n += m.indices.size() / 3;
     return n;
 }
+bool Model::hasPbrMaterials() const {
+    for (const Material& m : materials)
+        if (m.pbr) return true;
+    return false;
+}
 std::size_t Model::vertexCount() const {
     std::size_t n = 0;
     for (const Mesh& m : meshes)

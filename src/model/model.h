@@ -32,16 +32,43 @@ struct Texture {
     QImage image; // RGBA8888, as stored (sRGB-encoded for colour textures)
 };
 
+enum class AlphaMode { Opaque, Mask, Blend }; // glTF alphaMode
+
+// KHR_texture_transform of one texture reference: uv' = offset + R(rotation) · (scale ⊙ uv), in the
+// glTF convention (u right, v down the image), and the UV set it reads (0 only today; others warn).
+struct TextureTransform {
+    glm::vec2 offset{0.0f};
+    float rotation = 0.0f; // radians, counter-clockwise in UV space as glTF writes it
+    glm::vec2 scale{1.0f};
+    bool isIdentity() const {
+        return offset == glm::vec2(0.0f) && rotation == 0.0f && scale == glm::vec2(1.0f);
+    }
+    bool operator==(const TextureTransform&) const = default;
+};
+
 struct Material {
     QString name;
     glm::vec4 baseColor{1.0f}; // linear RGBA factor
     int baseColorTexture = -1; // index into Model::textures, sampled as sRGB
     int normalTexture = -1;    // linear, tangent space
     int emissiveTexture = -1;  // sRGB
-    glm::vec3 emissive{0.0f};  // linear factor
-    glm::vec3 specular{1.0f};  // ks
-    float shininess = -1.0f;   // < 0: use the rig's shading.shininess
+    glm::vec3 emissive{0.0f};  // linear factor, KHR_materials_emissive_strength folded in
+    glm::vec3 specular{1.0f};  // ks (classic shading)
+    float shininess = -1.0f;   // < 0: use the rig's shading.shininess (classic shading)
     bool doubleSided = false;
+    // Physically based (glTF metal-rough). `pbr`: the file carried these values (glTF, or PBR keys of
+    // another format); otherwise they were converted from specular/shininess (docs/lighting-models.md).
+    bool pbr = false;
+    float metallic = 0.0f, roughness = 1.0f;
+    int metallicRoughnessTexture = -1; // linear: G = roughness, B = metallic
+    int occlusionTexture = -1;         // linear: R = occlusion
+    float occlusionStrength = 1.0f;
+    float normalScale = 1.0f;
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    float alphaCutoff = 0.5f;
+    // One transform per texture role (base colour, normal, emissive, metal-rough, occlusion).
+    TextureTransform baseColorTransform, normalTransform, emissiveTransform, metallicRoughnessTransform,
+        occlusionTransform;
     bool operator==(const Material&) const = default;
 };
 
@@ -87,6 +114,8 @@ struct Model {
     double loadMs = 0.0;
 
     std::size_t triangleCount() const;
+    // Whether any material carries physically based values (opened without a rig, it renders PBR).
+    bool hasPbrMaterials() const;
     std::size_t vertexCount() const;
 };
 

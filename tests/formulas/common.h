@@ -25,7 +25,7 @@ using Vec3d = Vec3<double>;
 inline constexpr double kEpsF = std::numeric_limits<float>::epsilon();
 inline constexpr double kUlpF = kEpsF / 2;
 inline constexpr float kDenormF = 1e-40f; // a float denormal (min normal is 1.18e-38)
-inline constexpr double kPi = 3.14159265358979323846;
+using lighting::kPi;
 
 inline double radians(double deg) {
     return deg * kPi / 180.0;

@@ -25,7 +25,13 @@ class RigGenerator {
         r.name = name();
         r.space = pick<RigSpace>();
         r.ambient = color();
-        r.shading = {pick<SpecularModel>(), pick<ViewerModel>(), positive(kMaxRigExponent)};
+        // Under physically based shading the classic keys are neither written nor read: they stay default.
+        r.shading.model = pick<ShadingModel>();
+        if (r.shading.model == ShadingModel::Classic) {
+            r.shading.specular = pick<SpecularModel>();
+            r.shading.viewer = pick<ViewerModel>();
+            r.shading.shininess = positive(kMaxRigExponent);
+        }
         const int n = int(m_rng.bounded(8));
         for (int i = 0; i < n; ++i)
             r.lights.push_back(light());

@@ -102,7 +102,7 @@ inline Model fullModel() {
     m.lights.name = QStringLiteral("file lights");
     m.lights.space = RigSpace::Model;
     m.lights.ambient = {0.01, 0.02, 0.03};
-    m.lights.shading = {SpecularModel::BlinnPhong, ViewerModel::Infinite, 7.0};
+    m.lights.shading = {ShadingModel::Classic, SpecularModel::BlinnPhong, ViewerModel::Infinite, 7.0};
     for (int i = 0; i < 7; ++i)
         m.lights.lights.push_back(lightVariant(i));
     m.bounds = {{-1.0, -2.0, -3.0}, {4.0, 5.0, 6.0}};
