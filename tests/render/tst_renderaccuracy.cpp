@@ -89,6 +89,10 @@ class TestRenderAccuracy : public QObject {
         QTest::newRow("clamp +1.5") << int(ToneMap::Clamp) << 1.5;
         QTest::newRow("reinhard +2") << int(ToneMap::Reinhard) << 2.0;
         QTest::newRow("aces -0.5") << int(ToneMap::Aces) << -0.5;
+        QTest::newRow("neutral 0") << int(ToneMap::Neutral) << 0.0;
+        QTest::newRow("neutral +2") << int(ToneMap::Neutral) << 2.0;
+        QTest::newRow("agx 0") << int(ToneMap::Agx) << 0.0;
+        QTest::newRow("agx +3") << int(ToneMap::Agx) << 3.0;
     }
 
     void toneMappedOutput() {
@@ -112,11 +116,12 @@ class TestRenderAccuracy : public QObject {
                 const glm::vec4 r = radiance.at(x, y);
                 const QRgb px = image.pixel(x, y);
                 const int got[3] = {qRed(px), qGreen(px), qBlue(px)};
+                // Neutral and AgX act on the colour, the others per channel: colour::toneMapRgb does both.
+                const glm::dvec3 mappedRgb =
+                    colour::toneMapRgb(ToneMap(toneMap), glm::dvec3(r.x, r.y, r.z) * std::exp2(ev));
                 for (int k = 0; k < 3; ++k) {
                     const double bg[3] = {10 / 255.0, 20 / 255.0, 30 / 255.0};
-                    const double mapped =
-                        r.w > 0.5f ? lighting::toneMap(ToneMap(toneMap), double(r[k]) * std::exp2(ev))
-                                   : lighting::srgbToLinear(bg[k]);
+                    const double mapped = r.w > 0.5f ? mappedRgb[k] : lighting::srgbToLinear(bg[k]);
                     const int expected = int(std::lround(lighting::linearToSrgb(mapped) * 255.0));
                     worst = std::max(worst, std::abs(got[k] - expected));
                 }

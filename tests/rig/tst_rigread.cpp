@@ -22,6 +22,7 @@ class TestRigRead : public QObject {
   private slots:
     void issueExample();
     void defaults();
+    void physicallyBasedShading();
     void allFields();
     void unknownKeysAreWarnings();
     void utf8BomIsAccepted();
@@ -54,6 +55,7 @@ void TestRigRead::issueExample() {
     LR_COMPARE(rig.shading.specular, SpecularModel::Phong);
     LR_COMPARE(rig.shading.viewer, ViewerModel::Local);
     QCOMPARE(rig.shading.shininess, 32.0);
+    LR_COMPARE(rig.shading.model, ShadingModel::Classic); // files before physically based shading
     QCOMPARE(rig.lights.size(), size_t(4));
     const Light& key = rig.lights[0];
     LR_COMPARE(key.type, LightType::Spot);
@@ -89,6 +91,7 @@ void TestRigRead::defaults() {
     QCOMPARE(rig.ambient, glm::dvec3(0.0));
     LR_COMPARE(rig.shading, Shading{});
     QCOMPARE(rig.shading.shininess, 32.0);
+    LR_COMPARE(rig.shading.model, ShadingModel::Classic); // files before physically based shading
     QCOMPARE(rig.lights.size(), size_t(4));
     for (const Light& l : rig.lights) {
         QCOMPARE(l.enabled, true);
@@ -106,6 +109,26 @@ void TestRigRead::defaults() {
     LR_COMPARE(rig.lights[1].cone, (Cone{ConeModel::Smooth, 20.0, 35.0, 1.0})); // a spot without "cone"
     QCOMPARE(rig.lights[1].direction, glm::dvec3(0, -1, 0));
     QCOMPARE(rig.lights[3].rimExponent, 1.3);
+}
+
+void TestRigRead::physicallyBasedShading() {
+    // The model is read; the classic keys stay at their defaults and are not written back.
+    const RigReadResult r =
+        readRigJson(rigJson(kPoint, R"("shading": {"model": "pbr"},)"), QStringLiteral("pbr.json"));
+    LR_VERIFY_OK(r);
+    LR_COMPARE(r.rig->shading.model, ShadingModel::Pbr);
+    const QByteArray written = writeRigJson(*r.rig);
+    QVERIFY2(written.contains(R"("shading": {"model": "pbr"})"), written.constData());
+    QVERIFY(!written.contains("shininess"));
+    // Classic rigs are written as before, without a model key.
+    Rig classic = *r.rig;
+    classic.shading.model = ShadingModel::Classic;
+    const QByteArray classicText = writeRigJson(classic);
+    QVERIFY(!classicText.contains("\"model\": \"classic\""));
+    QVERIFY(classicText.contains(R"("shading": {"specular": "phong", "viewer": "local", "shininess": 32})"));
+    const RigReadResult back = readRigJson(classicText, QStringLiteral("classic.json"));
+    LR_VERIFY_OK(back);
+    QVERIFY(*back.rig == classic);
 }
 
 void TestRigRead::allFields() {

@@ -46,6 +46,12 @@ void TestRigRules::rules_data() {
         "shading.viewer: must be \"local\" or \"infinite\"");
     row("shading.shininess 0", rigJson({}, R"("shading": {"shininess": 0},)"),
         "shading.shininess: must be a finite number > 0 and <= 10000, got 0");
+    row("shading.model", rigJson({}, R"("shading": {"model": "physical"},)"),
+        "shading.model: must be \"classic\" or \"pbr\"");
+    row("pbr with specular", rigJson({}, R"("shading": {"model": "pbr", "specular": "phong"},)"),
+        "shading.specular: physically based shading (\"model\": \"pbr\") has no specular");
+    row("pbr with shininess", rigJson({}, R"("shading": {"model": "pbr", "shininess": 8},)"),
+        "shading.shininess: physically based shading (\"model\": \"pbr\") has no shininess");
     row("lights missing", R"({"format": "lightrig", "version": 1})", "lights: missing");
     row("lights not array", R"({"format": "lightrig", "version": 1, "lights": {}})",
         "lights: must be an array");
