@@ -352,6 +352,15 @@ class TestMaterials : public QObject {
         QVERIFY2(std::abs(c.red() - 128) <= 1 && std::abs(c.green() - 128) <= 1 && c.blue() == 0,
                  qPrintable(c.name()));
         QCOMPARE(display.pixelColor(2, 2), QColor(0, 255, 0));
+        if (!deferred) { // multisampled: the blend pass draws into the MSAA target before the resolve
+            d.msaaSamples = 4;
+            const QImage msaa = m_gl.renderImage(straightCamera(), QSize(kSize, kSize), d, 1, &error);
+            QVERIFY2(!msaa.isNull(), qPrintable(error));
+            const QColor cm = msaa.pixelColor(kSize / 2, kSize / 2);
+            QVERIFY2(std::abs(cm.red() - c.red()) <= 1 && std::abs(cm.green() - c.green()) <= 1 &&
+                         cm.blue() == 0,
+                     qPrintable(cm.name()));
+        }
         // The G-buffer (the CPU reference's input) holds the opaque surfaces only.
         GBuffer g;
         QVERIFY(m_gl.renderGBuffer(straightCamera(), QSize(kSize, kSize), s, &g, &error));
