@@ -352,6 +352,13 @@ class TestMaterials : public QObject {
         QVERIFY2(std::abs(c.red() - 128) <= 1 && std::abs(c.green() - 128) <= 1 && c.blue() == 0,
                  qPrintable(c.name()));
         QCOMPARE(display.pixelColor(2, 2), QColor(0, 255, 0));
+        if (!deferred) { // the fast tier (vertex-lit) blends the same way
+            RenderSettings fast = d;
+            fast.quality = Quality::Fast;
+            const QImage f = m_gl.renderImage(straightCamera(), QSize(kSize, kSize), fast, 1, &error);
+            QVERIFY2(!f.isNull(), qPrintable(error));
+            QCOMPARE(f.pixelColor(kSize / 2, kSize / 2), c);
+        }
         if (!deferred) { // multisampled: the blend pass draws into the MSAA target before the resolve
             d.msaaSamples = 4;
             const QImage msaa = m_gl.renderImage(straightCamera(), QSize(kSize, kSize), d, 1, &error);
