@@ -1,4 +1,5 @@
-// Mesh fragment stage: builds the Surface (material, textures, normal map, double-sided flip), then
+// Mesh fragment stage: builds the Surface (material, textures through their KHR_texture_transform, normal
+// map with its scale, double-sided flip; alpha MASK discards under the cutoff), then
 //   LR_OUTPUT_DISPLAY: shades it with every uploaded light and applies exposure, tone map and sRGB
 //     encoding right here (exactly what tonemap.frag does to a float target, without the extra pass);
 //   LR_OUTPUT_RADIANCE: writes the linear HDR radiance (alpha = coverage) for the tone-map pass;
@@ -9,6 +10,18 @@ in vec3 vPosition;
 in vec3 vNormal;
 #if defined(LR_BASE_COLOR_TEXTURE) || defined(LR_NORMAL_MAP) || defined(LR_EMISSIVE_TEXTURE)
 in vec2 vUv;
+// A texture role's UV: KHR_texture_transform's T·R·S (a mat3 per role, ProgramCache's uniforms, set from
+// Material's TextureTransform), or the vertex UV as it is when no used texture has a transform.
+#ifdef LR_TEXTURE_TRANSFORM
+uniform mat3 uBaseColorTransform;
+uniform mat3 uNormalTransform;
+uniform mat3 uEmissiveTransform;
+uniform mat3 uMetalRoughTransform;
+uniform mat3 uOcclusionTransform;
+vec2 lrUv(mat3 t) { return (t * vec3(vUv, 1.0)).xy; }
+#else
+#define lrUv(t) vUv
+#endif
 #endif
 #ifdef LR_NORMAL_MAP
 in vec4 vTangent;
@@ -33,6 +46,13 @@ uniform sampler2D uBaseColorTex;  // sRGB texture: sampled as linear
 #endif
 #ifdef LR_NORMAL_MAP
 uniform sampler2D uNormalTex;
+uniform float uNormalScale;  // glTF normalTexture.scale: multiplies the sampled X and Y
+#endif
+#ifdef LR_ALPHA_MASK
+uniform float uAlphaCutoff;  // glTF alphaCutoff
+#endif
+#ifdef LR_ALPHA_BLEND
+float lrAlpha = 1.0;  // the base alpha, for "over" blending (pass_blend.cpp)
 #endif
 #ifdef LR_EMISSIVE_TEXTURE
 uniform sampler2D uEmissiveTex;  // sRGB
@@ -46,9 +66,10 @@ layout(location = 3) out vec4 oGBuffer3;
 #elif defined(LR_OUTPUT_DISPLAY)
 uniform float uExposureScale;  // 2^EV
 uniform int uToneMap;
-layout(location = 0) out vec4 oColor;  // sRGB-encoded display colour, alpha 1
+layout(location = 0) out vec4 oColor;  // sRGB-encoded display colour, alpha 1 (BLEND: premultiplied)
 #else
-layout(location = 0) out vec4 oColor;  // linear radiance, alpha 1 (coverage after the MSAA resolve)
+layout(location = 0) out vec4 oColor;  // linear radiance, alpha 1 (coverage after the MSAA resolve;
+                                       // BLEND: premultiplied by the base alpha)
 #endif
 
 Surface surfaceHere() {
@@ -62,7 +83,8 @@ Surface surfaceHere() {
 #if defined(LR_NORMAL_MAP) && !defined(LR_QUALITY_FAST)
     vec3 t = safeNormalize(vTangent.xyz - n * dot(n, vTangent.xyz), vec3(0.0));
     vec3 b = cross(n, t) * (vTangent.w < 0.0 ? -1.0 : 1.0);
-    vec3 m = texture(uNormalTex, vUv).xyz * 2.0 - 1.0;
+    vec3 m = texture(uNormalTex, lrUv(uNormalTransform)).xyz * 2.0 - 1.0;
+    m *= vec3(uNormalScale, uNormalScale, 1.0);  // glTF: scale X and Y before normalising
     n = safeNormalize(t * m.x + b * m.y + n * m.z, n);
 #endif
 #ifdef LR_DOUBLE_SIDED
@@ -71,16 +93,22 @@ Surface surfaceHere() {
     s.normal = n;
     vec4 base = uBaseColor;
 #ifdef LR_BASE_COLOR_TEXTURE
-    base *= texture(uBaseColorTex, vUv);
+    base *= texture(uBaseColorTex, lrUv(uBaseColorTransform));
 #endif
 #ifdef LR_VERTEX_COLOR
     base *= vColor;
+#endif
+#ifdef LR_ALPHA_MASK
+    if (!(base.a >= uAlphaCutoff)) discard;  // glTF: opaque where alpha >= cutoff (NaN discarded)
+#endif
+#ifdef LR_ALPHA_BLEND
+    lrAlpha = saturate(base.a);
 #endif
     s.albedo = base.rgb;
     s.specular = uSpecular;
     s.emissive = uEmissive;
 #ifdef LR_EMISSIVE_TEXTURE
-    s.emissive *= texture(uEmissiveTex, vUv).rgb;
+    s.emissive *= texture(uEmissiveTex, lrUv(uEmissiveTransform)).rgb;
 #endif
     s.shininess = uShininess;
     return s;
@@ -107,9 +135,14 @@ void main() {
     vec3 radiance = shadeSurface(s, st);
 #endif
 #ifdef LR_OUTPUT_DISPLAY
-    oColor = vec4(displayEncode(radiance, uExposureScale, uToneMap), 1.0);
+    vec3 colour = displayEncode(radiance, uExposureScale, uToneMap);
 #else
-    oColor = vec4(radiance, 1.0);
+    vec3 colour = radiance;
+#endif
+#ifdef LR_ALPHA_BLEND
+    oColor = vec4(colour * lrAlpha, lrAlpha);  // premultiplied "over" (pass_blend.cpp)
+#else
+    oColor = vec4(colour, 1.0);
 #endif
 #endif
 }

@@ -5,6 +5,7 @@
 #include <QtConcurrent/QtConcurrentRun>
 #include <algorithm>
 #include <cstddef>
+#include <glm/common.hpp>
 
 namespace lr::render {
 
@@ -79,6 +80,10 @@ bool GpuModel::upload(QOpenGLFunctions_3_3_Core* gl, std::shared_ptr<const Model
             mesh.material >= 0 && size_t(mesh.material) < m_model->materials.size() ? mesh.material : -1;
         d.features = materialFeatures(*m_model, mesh);
         d.indexCount = GLsizei(mesh.indices.size() / 3 * 3);
+        glm::vec3 lo(mesh.vertices.front().position), hi(lo);
+        for (const Vertex& v : mesh.vertices)
+            lo = glm::min(lo, v.position), hi = glm::max(hi, v.position);
+        d.center = 0.5f * (lo + hi);
         gl->glGenVertexArrays(1, &d.vao);
         gl->glBindVertexArray(d.vao);
         gl->glGenBuffers(1, &d.vbo);

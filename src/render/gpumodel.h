@@ -25,6 +25,7 @@ struct GpuDraw {
     GLuint baseColorTexture = 0, normalTexture = 0, emissiveTexture = 0;
     GLuint lodVao = 0, lodIbo = 0; // the interaction proxy (lod.h) over the same vertices; 0: none
     GLsizei lodIndexCount = 0;
+    glm::vec3 center{0.0f}; // of the mesh's bounds, relative to Model::origin: the blend pass sorts by it
 };
 
 class GpuModel {

@@ -53,40 +53,65 @@ bool GeometryPass::run(const FrameContext& frame, PassScene& scene) {
     scene.stats->drawCalls = 0;
     scene.stats->trianglesDrawn = 0;
     if (!model || scene.model->draws().empty()) return true;
+    // Fast lights the vertices, each with every light: clusters (per fragment) do not apply.
+    const bool clustered = !gpass && frame.clustered;
+    const RigFeatures rigUses = rigFeatures(rig);
+    const RigFeatures shaded = settings.forceAllFeatures ? allRigFeatures(rigUses) : rigUses;
+
+    // Group the draws by program so each variant is bound once per frame. Blended (alphaMode BLEND)
+    // meshes are the blend pass's (pass_blend.cpp): after all opaque geometry, never in the G-buffer.
+    std::vector<std::pair<FeatureKey, const GpuDraw*>> order;
+    order.reserve(scene.model->draws().size());
+    for (const GpuDraw& d : scene.model->draws())
+        if (!d.features.alphaBlend)
+            order.emplace_back(meshKey(frame, scene, d, output, clustered, shaded), &d);
+    std::stable_sort(order.begin(), order.end(),
+                     [](const auto& a, const auto& b) { return a.first.bits() < b.first.bits(); });
+    return drawMeshes(frame, scene, order, clustered, false);
+}
+
+FeatureKey MeshPass::meshKey(const FrameContext& frame, const PassScene& scene, const GpuDraw& d,
+                             ShaderOutput output, bool clustered, const RigFeatures& shaded) const {
+    const RenderSettings& settings = *frame.settings;
+    const Rig& rig = *scene.rig;
+    const Model* model = scene.model->model();
+    const bool gpass = output == ShaderOutput::GBuffer;
+    FeatureKey key;
+    if (!gpass) key.rig = shaded; // the G-pass does no lighting
+    key.material = d.features;
+    key.quality = gpass ? Quality::Exact : settings.quality; // the G-buffer is the exact surface
+    key.approximations = approx::forTier(settings.approximations, key.quality);
+    if (key.approximations & approx::kB2) { // B2: an integer shininess becomes a chain of products
+        const Material& m = d.material >= 0 ? model->materials[size_t(d.material)] : Material();
+        const double n = m.shininess >= 0.0f ? double(m.shininess) : rig.shading.shininess;
+        if (n >= 1.0 && n <= kMaxShininessInt && n == std::floor(n)) key.shininessInt = std::uint16_t(n);
+    }
+    key.output = output;
+    key.clustered = clustered;
+    return key;
+}
+
+bool MeshPass::drawMeshes(const FrameContext& frame, PassScene& scene,
+                          const std::vector<std::pair<FeatureKey, const GpuDraw*>>& order, bool clustered,
+                          bool blended) {
+    const RenderSettings& settings = *frame.settings;
+    const Rig& rig = *scene.rig;
+    const Model* model = scene.model->model();
     const glm::dmat4 modelView = frame.view * glm::translate(glm::dmat4(1.0), model->origin);
     const glm::mat4 mv(modelView), proj(frame.projection);
     const glm::mat3 normalMatrix(glm::transpose(glm::inverse(glm::dmat3(modelView))));
-    const RigFeatures rigUses = rigFeatures(rig);
-    // Fast lights the vertices, each with every light: clusters (per fragment) do not apply.
-    const bool clustered = !gpass && frame.clustered;
     const bool useProxies = settings.interactive && scene.mutableModel->updateProxies(this);
-    const RigFeatures shaded = settings.forceAllFeatures ? allRigFeatures(rigUses) : rigUses;
-
-    // Group the draws by program so each variant is bound once per frame.
-    std::vector<std::pair<FeatureKey, const GpuDraw*>> order;
-    order.reserve(scene.model->draws().size());
-    for (const GpuDraw& d : scene.model->draws()) {
-        FeatureKey key;
-        if (!gpass) key.rig = shaded; // the G-pass does no lighting
-        key.material = d.features;
-        key.quality = gpass ? Quality::Exact : settings.quality; // the G-buffer is the exact surface
-        key.approximations = approx::forTier(settings.approximations, key.quality);
-        if (key.approximations & approx::kB2) { // B2: an integer shininess becomes a chain of products
-            const Material& m = d.material >= 0 ? model->materials[size_t(d.material)] : Material();
-            const double n = m.shininess >= 0.0f ? double(m.shininess) : rig.shading.shininess;
-            if (n >= 1.0 && n <= kMaxShininessInt && n == std::floor(n)) key.shininessInt = std::uint16_t(n);
-        }
-        key.output = output;
-        key.clustered = clustered;
-        order.emplace_back(key, &d);
-    }
-    std::stable_sort(order.begin(), order.end(),
-                     [](const auto& a, const auto& b) { return a.first.bits() < b.first.bits(); });
 
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
+    // Blended surfaces: depth-tested against the opaque ones, not written; premultiplied "over".
+    glDepthMask(blended ? GL_FALSE : GL_TRUE);
+    if (blended) {
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    } else {
+        glDisable(GL_BLEND);
+    }
     glFrontFace(GL_CCW);
     glCullFace(GL_BACK);
     scene.lights->bind(this, clustered);
@@ -115,6 +140,15 @@ bool GeometryPass::run(const FrameContext& frame, PassScene& scene) {
         glUniform3fv(p->emissive, 1, glm::value_ptr(m.emissive));
         glUniform3fv(p->specular, 1, glm::value_ptr(m.specular));
         glUniform1f(p->shininess, m.shininess >= 0.0f ? m.shininess : float(rig.shading.shininess));
+        if (p->normalScale >= 0) glUniform1f(p->normalScale, m.normalScale);
+        if (p->alphaCutoff >= 0) glUniform1f(p->alphaCutoff, m.alphaCutoff);
+        const TextureTransform* transforms[] = {&m.baseColorTransform, &m.normalTransform,
+                                                &m.emissiveTransform, &m.metallicRoughnessTransform,
+                                                &m.occlusionTransform};
+        for (size_t i = 0; i < p->textureTransforms.size(); ++i)
+            if (p->textureTransforms[i] >= 0)
+                glUniformMatrix3fv(p->textureTransforms[i], 1, GL_FALSE,
+                                   glm::value_ptr(textureTransformMatrix(*transforms[i])));
         const GLuint textures[kMaterialTextureUnits] = {d->baseColorTexture, d->normalTexture,
                                                         d->emissiveTexture};
         const GLuint sampler = key.quality == Quality::Fast ? scene.fastSampler : 0;
@@ -140,6 +174,7 @@ bool GeometryPass::run(const FrameContext& frame, PassScene& scene) {
     for (int i = 0; i < kMaterialTextureUnits; ++i)
         glBindSampler(GLuint(TextureUnit::BaseColor) + GLuint(i), 0);
     glDisable(GL_CULL_FACE);
+    glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LESS);
     glActiveTexture(GL_TEXTURE0);

@@ -5,6 +5,8 @@
 //   geometry (G-buffer)  pass_geometry.cpp    lights                        G-buffer, scene depth
 //   geometry (shaded)    pass_geometry.cpp    lights, clusters              scene colour, scene depth
 //   deferred lighting    pass_lighting.cpp    G-buffer, scene depth, ...    scene colour
+//   blend                pass_blend.cpp       lights, clusters, scene       scene colour (alphaMode BLEND)
+//                                             colour and depth
 //   resolve              pass_resolve.cpp     scene colour, scene depth     resolved (single-sample)
 //   present              pass_resolve.cpp     scene colour                  output (display path)
 //   tone map             pass_tonemap.cpp     resolved                      output (HDR path)
@@ -12,12 +14,31 @@
 #pragma once
 
 #include "renderpass.h"
+#include "shadergen.h"
+
+#include <utility>
+#include <vector>
 
 namespace lr::render {
 
+struct GpuDraw;
+
+// What the passes that draw the model's meshes share (pass_geometry.cpp): the program key of a draw and
+// the drawing of a list of draws in order, each with its material's uniforms and textures.
+class MeshPass : public RenderPass {
+  protected:
+    using DrawOrder = std::vector<std::pair<FeatureKey, const GpuDraw*>>;
+    FeatureKey meshKey(const FrameContext& frame, const PassScene& scene, const GpuDraw& d,
+                       ShaderOutput output, bool clustered, const RigFeatures& shaded) const;
+    // blended: depth test without depth writes, premultiplied "over" (GL_ONE, GL_ONE_MINUS_SRC_ALPHA).
+    bool drawMeshes(const FrameContext& frame, PassScene& scene, const DrawOrder& order, bool clustered,
+                    bool blended);
+};
+
 // Draws the model: its surfaces into the G-buffer (deferred path, renderGBuffer) or shaded into the scene
-// target (forward and clustered forward; display colours or radiance by the colour path).
-class GeometryPass final : public RenderPass {
+// target (forward and clustered forward; display colours or radiance by the colour path). Meshes whose
+// material is alphaMode BLEND are left to the blend pass.
+class GeometryPass final : public MeshPass {
   public:
     enum class Output { GBuffer, Shaded };
     explicit GeometryPass(Output output) : m_output(output) {}
@@ -37,6 +58,21 @@ class DeferredLightingPass final : public RenderPass {
     const char* name() const override { return "deferred lighting"; }
     PassResources reads() const override {
         return resource::Lights | resource::Clusters | resource::GBuffer | resource::SceneDepth;
+    }
+    PassResources writes() const override { return resource::SceneColor; }
+    bool run(const FrameContext& frame, PassScene& scene) override;
+};
+
+// Meshes whose material is alphaMode BLEND, after all opaque geometry (forward or deferred): shaded
+// forward, sorted back to front by the view depth of their bounds' centre each frame, depth-tested
+// against the opaque surfaces without writing depth, composited "over" the scene colour (premultiplied;
+// display colours or radiance by the colour path). Never in the G-buffer. In the plan when the model has
+// blended meshes (PlanKey::blend).
+class BlendPass final : public MeshPass {
+  public:
+    const char* name() const override { return "blend"; }
+    PassResources reads() const override {
+        return resource::Lights | resource::Clusters | resource::SceneColor | resource::SceneDepth;
     }
     PassResources writes() const override { return resource::SceneColor; }
     bool run(const FrameContext& frame, PassScene& scene) override;

@@ -116,6 +116,10 @@ MeshProgram* ProgramCache::meshProgram(const FeatureKey& key, QString* error) {
     mp->lightCount = p->uniformLocation("uLightCount");
     mp->exposureScale = p->uniformLocation("uExposureScale");
     mp->toneMap = p->uniformLocation("uToneMap");
+    mp->normalScale = p->uniformLocation("uNormalScale");
+    mp->alphaCutoff = p->uniformLocation("uAlphaCutoff");
+    for (size_t i = 0; i < mp->textureTransforms.size(); ++i)
+        mp->textureTransforms[i] = p->uniformLocation(kTextureTransformUniforms[i]);
     bindSamplers(p);
     mp->program = std::move(program);
     return m_mesh.emplace(key, std::move(mp)).first->second.get();

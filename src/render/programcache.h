@@ -47,7 +47,17 @@ struct MeshProgram {
     int baseColor = -1, emissive = -1, specular = -1, shininess = -1, ambient = -1, distanceScale = -1;
     int lightCount = -1;
     int exposureScale = -1, toneMap = -1; // display output only
+    int normalScale = -1, alphaCutoff = -1;
+    // KHR_texture_transform's mat3 per texture role (LR_TEXTURE_TRANSFORM), in TextureRole's order.
+    std::array<int, 5> textureTransforms{-1, -1, -1, -1, -1};
 };
+
+// The texture roles of a glTF material, each with its own KHR_texture_transform (Material's *Transform).
+enum class TextureRole { BaseColor, Normal, Emissive, MetalRough, Occlusion };
+// The mat3 uniform of each role in mesh.frag (uBaseColorTransform, ...).
+inline constexpr const char* kTextureTransformUniforms[] = {"uBaseColorTransform", "uNormalTransform",
+                                                            "uEmissiveTransform", "uMetalRoughTransform",
+                                                            "uOcclusionTransform"};
 
 class ProgramCache {
   public:

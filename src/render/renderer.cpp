@@ -256,7 +256,10 @@ bool Renderer::render(const ViewCamera& camera, QSize size, const RenderSettings
     m_timer->begin(this, &m_stats.lastGpuMs);
     glClearDepth(1.0);
     glDepthMask(GL_TRUE);
-    m_plan->select({frame.deferred, hdr, frame.samples > 1, frame.overlays});
+    const auto& draws = m_model->draws();
+    const bool blend = std::any_of(draws.begin(), draws.end(),
+                                   [](const render::GpuDraw& d) { return d.features.alphaBlend; });
+    m_plan->select({frame.deferred, hdr, frame.samples > 1, frame.overlays, blend});
     m_stats.renderPlanBuilds = m_plan->builds();
     PassScene scene = passScene();
     const bool ok = m_plan->run(frame, scene) || fail(scene.error);

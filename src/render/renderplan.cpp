@@ -20,15 +20,15 @@ RenderPlan::RenderPlan() = default;
 RenderPlan::~RenderPlan() = default;
 
 bool RenderPlan::initialize() {
-    for (RenderPass* p : std::initializer_list<RenderPass*>{&m_gbuffer, &m_shaded, &m_lighting, &m_resolve,
-                                                            &m_present, &m_toneMap, &m_overlay})
+    for (RenderPass* p : std::initializer_list<RenderPass*>{&m_gbuffer, &m_shaded, &m_lighting, &m_blend,
+                                                            &m_resolve, &m_present, &m_toneMap, &m_overlay})
         if (!p->initialize()) return false;
     return true;
 }
 
 void RenderPlan::release() {
-    for (RenderPass* p : std::initializer_list<RenderPass*>{&m_gbuffer, &m_shaded, &m_lighting, &m_resolve,
-                                                            &m_present, &m_toneMap, &m_overlay})
+    for (RenderPass* p : std::initializer_list<RenderPass*>{&m_gbuffer, &m_shaded, &m_lighting, &m_blend,
+                                                            &m_resolve, &m_present, &m_toneMap, &m_overlay})
         p->release();
     m_passes.clear();
     m_hasKey = false;
@@ -47,6 +47,8 @@ const std::vector<RenderPass*>& RenderPlan::select(const PlanKey& key) {
     } else {
         m_passes.push_back(&m_shaded);
     }
+    // Blended meshes after all opaque ones, shaded forward whatever the path.
+    if (key.blend) m_passes.push_back(&m_blend);
     // An environment pass (sky behind the model) goes here: after the surfaces, depth-tested against the
     // scene depth, before the resolve.
     if (key.msaa && (key.hdr || key.overlays)) m_passes.push_back(&m_resolve);

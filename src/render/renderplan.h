@@ -1,6 +1,6 @@
 // The chain of render passes for a kind of frame (f3d's idea): rebuilt only when the PlanKey changes
-// (shading path, colour path, MSAA, overlays), not every frame. Every pass's reads must be written by an
-// earlier pass or be inputs (the light set's Lights and Clusters); check() says which are not.
+// (shading path, colour path, MSAA, overlays, blended meshes), not every frame. Every pass's reads must be
+// written by an earlier pass or be inputs (the light set's Lights and Clusters); check() says which are not.
 #pragma once
 
 #include "passes.h"
@@ -16,6 +16,7 @@ struct PlanKey {
     bool hdr = false;
     bool msaa = false; // the scene target is multisampled
     bool overlays = false;
+    bool blend = false; // the model has alphaMode BLEND meshes (the blend pass)
     bool operator==(const PlanKey&) const = default;
 };
 
@@ -40,6 +41,7 @@ class RenderPlan {
     GeometryPass m_gbuffer{GeometryPass::Output::GBuffer};
     GeometryPass m_shaded{GeometryPass::Output::Shaded};
     DeferredLightingPass m_lighting;
+    BlendPass m_blend;
     ResolvePass m_resolve;
     PresentPass m_present;
     ToneMapPass m_toneMap;

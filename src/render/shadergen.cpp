@@ -1,6 +1,7 @@
 #include "shadergen.h"
 
 #include <QStringList>
+#include <cmath>
 
 namespace lr::render {
 
@@ -77,6 +78,9 @@ std::uint64_t FeatureKey::bits() const {
     put(material.emissiveTexture, 1);
     put(material.vertexColors, 1);
     put(material.doubleSided, 1);
+    put(material.textureTransform, 1);
+    put(material.alphaMask, 1);
+    put(material.alphaBlend, 1);
     put(unsigned(quality), keybits::kQuality);
     put(unsigned(output), keybits::kOutput);
     put(deferredLighting, 1);
@@ -102,6 +106,9 @@ QString FeatureKey::describe() const {
     if (!tex.isEmpty()) parts << QStringLiteral("tex:") + tex.join(QLatin1Char(','));
     if (material.vertexColors) parts << QStringLiteral("vertex-colors");
     if (material.doubleSided) parts << QStringLiteral("double-sided");
+    if (material.textureTransform) parts << QStringLiteral("texture-transform");
+    if (material.alphaMask) parts << QStringLiteral("alpha:mask");
+    if (material.alphaBlend) parts << QStringLiteral("alpha:blend");
     parts << QStringLiteral("quality:") + toString(quality);
     if (output == ShaderOutput::GBuffer) parts << QStringLiteral("gbuffer");
     if (clustered) parts << QStringLiteral("clustered");
@@ -148,7 +155,25 @@ MaterialFeatures materialFeatures(const Model& model, const Mesh& mesh) {
     f.normalMap = valid(m.normalTexture);
     f.emissiveTexture = valid(m.emissiveTexture);
     f.doubleSided = m.doubleSided;
+    // A transform counts only where its texture is used; identity transforms compile nothing.
+    const std::pair<int, const TextureTransform*> roles[] = {
+        {m.baseColorTexture, &m.baseColorTransform},
+        {m.normalTexture, &m.normalTransform},
+        {m.emissiveTexture, &m.emissiveTransform},
+        {m.metallicRoughnessTexture, &m.metallicRoughnessTransform},
+        {m.occlusionTexture, &m.occlusionTransform}};
+    for (const auto& [texture, transform] : roles)
+        if (valid(texture) && !transform->isIdentity()) f.textureTransform = true;
+    f.alphaMask = m.alphaMode == AlphaMode::Mask;
+    f.alphaBlend = m.alphaMode == AlphaMode::Blend;
     return f;
+}
+
+glm::mat3 textureTransformMatrix(const TextureTransform& t) {
+    const float c = std::cos(t.rotation), s = std::sin(t.rotation);
+    // Columns: T · R · S with R = [c s; −s c] (rows), S = diag(scale), T = translate(offset).
+    return glm::mat3(glm::vec3(c * t.scale.x, -s * t.scale.x, 0.0f),
+                     glm::vec3(s * t.scale.y, c * t.scale.y, 0.0f), glm::vec3(t.offset.x, t.offset.y, 1.0f));
 }
 
 QByteArray basicPrelude() {
@@ -175,6 +200,9 @@ QByteArray shaderPrelude(const FeatureKey& key) {
     if (key.material.emissiveTexture) out += "#define LR_EMISSIVE_TEXTURE 1\n";
     if (key.material.vertexColors) out += "#define LR_VERTEX_COLOR 1\n";
     if (key.material.doubleSided) out += "#define LR_DOUBLE_SIDED 1\n";
+    if (key.material.textureTransform) out += "#define LR_TEXTURE_TRANSFORM 1\n";
+    if (key.material.alphaMask) out += "#define LR_ALPHA_MASK 1\n";
+    if (key.material.alphaBlend) out += "#define LR_ALPHA_BLEND 1\n";
     out += "#define LR_QUALITY_" + macroName(EnumNames<Quality>::names[size_t(key.quality)]) + " 1\n";
     if (key.deferredLighting) out += "#define LR_DEFERRED_LIGHTING 1\n";
     if (key.clustered) out += "#define LR_CLUSTERED 1\n";

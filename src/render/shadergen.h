@@ -12,6 +12,7 @@
 #include <QString>
 #include <cstddef>
 #include <cstdint>
+#include <glm/mat3x3.hpp>
 
 namespace lr::render {
 
@@ -39,6 +40,12 @@ struct MaterialFeatures {
     bool emissiveTexture = false;
     bool vertexColors = false;
     bool doubleSided = false;
+    // glTF's rest of the material (docs/lighting-models.md, Materials): a used texture with a
+    // non-identity KHR_texture_transform; alphaMode MASK (discard under the cutoff); BLEND (drawn by the
+    // blend pass, after all opaque geometry, its alpha written for "over" blending).
+    bool textureTransform = false;
+    bool alphaMask = false;
+    bool alphaBlend = false;
     bool operator==(const MaterialFeatures&) const = default;
 };
 
@@ -95,6 +102,10 @@ RigFeatures rigFeatures(const Rig& rig);
 RigFeatures allRigFeatures(const RigFeatures& rig);
 // Texture indices out of range count as absent.
 MaterialFeatures materialFeatures(const Model& model, const Mesh& mesh);
+// KHR_texture_transform as mesh.frag's lrUv applies it: uv' = T · R · S · uv (the extension's order:
+// scale, then rotation counter-clockwise in UV space with v down the image, i.e. u' = cos·u + sin·v,
+// v' = −sin·u + cos·v, then offset), column-major for glUniformMatrix3fv.
+glm::mat3 textureTransformMatrix(const TextureTransform& t);
 
 // Texels (RGBA32F) per light in the light buffer; the layout is documented in shaders/lighting.glsl.
 constexpr int kLightTexels = 8;
