@@ -252,7 +252,8 @@ void TestModelShared::fbxShininessIsConvertedNotAssimpsRoughness() {
     const double alpha = std::sqrt(2.0 / (double(mat.shininess) + 2.0));
     QVERIFY2(std::abs(double(mat.roughness) - std::sqrt(alpha)) < 1e-6,
              qPrintable(QString::number(mat.roughness)));
-    QVERIFY(std::abs(mat.roughness - (1.0f - std::sqrt(mat.shininess) / 10.0f)) > 0.1f);
+    QVERIFY(std::abs(mat.roughness - (1.0f - std::sqrt(mat.shininess) / 10.0f)) >
+            0.01f); // 0.639 vs 0.684 at n = 10
     QVERIFY(!r.model->hasPbrMaterials());
 }
 
