@@ -30,17 +30,16 @@ QByteArray gltfJson(QFile& file) {
 
 } // namespace
 
-std::vector<GltfMaterialExtras> readGltfMaterialExtras(const QString& path) {
+GltfMaterialExtrasByName readGltfMaterialExtras(const QString& path) {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) return {};
     const QByteArray json = gltfJson(file);
     if (!json.contains(kEmissiveStrength)) return {}; // the common case costs one search
     const QJsonDocument doc = QJsonDocument::fromJson(json);
-    std::vector<GltfMaterialExtras> out;
+    GltfMaterialExtrasByName out;
     for (const QJsonValue& v : doc.object().value(QLatin1String("materials")).toArray()) {
         const QJsonObject mat = v.toObject();
         GltfMaterialExtras e;
-        e.name = mat.value(QLatin1String("name")).toString();
         const QJsonArray factor = mat.value(QLatin1String("emissiveFactor")).toArray();
         if (factor.size() == 3)
             for (int i = 0; i < 3; ++i)
@@ -51,7 +50,7 @@ std::vector<GltfMaterialExtras> readGltfMaterialExtras(const QString& path) {
                                         .toObject()
                                         .value(QLatin1String("emissiveStrength"));
         e.emissiveStrength = strength.isDouble() ? strength.toDouble() : 1.0;
-        out.push_back(std::move(e));
+        out.insert(mat.value(QLatin1String("name")).toString(), e);
     }
     return out;
 }

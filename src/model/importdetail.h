@@ -5,6 +5,7 @@
 #include "modelfolder.h"
 
 #include <QByteArrayView>
+#include <QHash>
 #include <QStringList>
 #include <assimp/matrix4x4.h>
 #include <functional>
@@ -38,14 +39,14 @@ void convertMaterials(const aiScene* scene, const ModelFolder& folder, qint64 ma
                       MaterialSource source, Model& model);
 
 // gltfmaterials.cpp: what Assimp 5.2.5 does not read of a glTF material, per entry of its "materials"
-// array: KHR_materials_emissive_strength. Read from the file's JSON (a .gltf, or a GLB's JSON chunk) only
-// when the file names that extension; empty otherwise or when the JSON does not parse.
+// array, by material name: KHR_materials_emissive_strength. Read from the file's JSON (a .gltf, or a GLB's
+// JSON chunk) only when the file names that extension; empty otherwise or when the JSON does not parse.
 struct GltfMaterialExtras {
-    QString name;
     glm::vec3 emissiveFactor{0.0f}; // to tell materials of one name apart
     double emissiveStrength = 1.0;
 };
-std::vector<GltfMaterialExtras> readGltfMaterialExtras(const QString& path);
+using GltfMaterialExtrasByName = QMultiHash<QString, GltfMaterialExtras>;
+GltfMaterialExtrasByName readGltfMaterialExtras(const QString& path);
 
 // materials_pbr.cpp: what one material's conversion needs to know and where its warnings go.
 struct MaterialContext {
@@ -53,7 +54,7 @@ struct MaterialContext {
     QString label; // "material \"paint\"" or "material 3"
     MaterialSource source = MaterialSource::Other;
     QStringList* warnings = nullptr;
-    std::vector<GltfMaterialExtras> gltfExtras;
+    GltfMaterialExtrasByName gltfExtras;
     void warn(const QString& what) const { *warnings << QStringLiteral("%1: %2: %3").arg(file, label, what); }
 };
 // Metallic, roughness, occlusion strength, normal scale, alpha mode and cutoff, the emissive strength, and

@@ -48,14 +48,24 @@ AlphaMode alphaModeOf(const aiMaterial* am, const MaterialContext& ctx) {
 // materials in the order meshes reference them, not as the file does, so the material is found by its
 // name and emissive factor; when those match several materials of different strengths, none is used.
 double emissiveStrength(const Material& m, const glm::vec3& emissiveFactor, const MaterialContext& ctx) {
+    if (emissiveFactor == glm::vec3(0.0f)) return 1.0; // nothing to scale
+    // Bounded work per material: a file of many materials of one name would otherwise cost quadratic time.
+    constexpr int kMaxSameName = 256;
     std::optional<double> found;
     bool ambiguous = false;
-    for (const GltfMaterialExtras& e : ctx.gltfExtras) {
+    int seen = 0;
+    for (auto it = ctx.gltfExtras.constFind(m.name); it != ctx.gltfExtras.cend() && it.key() == m.name;
+         ++it) {
+        if (++seen > kMaxSameName) {
+            ctx.warn(QStringLiteral("more than %1 materials share this name; KHR_materials_emissive_strength "
+                                    "not looked up (using 1)")
+                         .arg(kMaxSameName));
+            return 1.0;
+        }
+        const GltfMaterialExtras& e = it.value();
         // (Assimp's JSON reader may round a factor differently in the last bit.)
         const glm::vec3 d = glm::abs(e.emissiveFactor - emissiveFactor);
-        if (e.name != m.name ||
-            std::max({d.x, d.y, d.z}) > 1e-6f * std::max(1.0f, glm::length(emissiveFactor)))
-            continue;
+        if (std::max({d.x, d.y, d.z}) > 1e-6f * std::max(1.0f, glm::length(emissiveFactor))) continue;
         if (found && *found != e.emissiveStrength) ambiguous = true;
         found = e.emissiveStrength;
     }

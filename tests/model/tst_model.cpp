@@ -139,6 +139,7 @@ class TestModel : public QObject {
     void gltfHierarchyLightsCameraNormalMap();
     void gltfMetalRoughMaterials();
     void gltfOutOfRangeValuesAreClampedWithWarnings();
+    void gltfEmissiveStrengthFindsItsMaterial();
     void textureTransformInvertsAssimpsConversion();
     void objShininessConvertsToRoughness();
     void bundledSuzanneFromResources();
@@ -477,6 +478,56 @@ void TestModel::gltfOutOfRangeValuesAreClampedWithWarnings() {
                  qPrintable(QStringLiteral("%1 in [%2]").arg(QLatin1String(field), m->warnings.join(u"; "))));
     // The values in range warn about nothing.
     QVERIFY(warningsWith(*m, {QStringLiteral("\"metalRough\"")}).isEmpty());
+}
+
+// Assimp numbers materials in the order meshes use them, so KHR_materials_emissive_strength (read from the
+// JSON) is matched by name and emissive factor: same name, other factor -> its own strength; same name and
+// factor with different strengths -> 1 and a warning. pbr.gltf's five primitives get five new materials.
+void TestModel::gltfEmissiveStrengthFindsItsMaterial() {
+    QJsonObject gltf = readJson(dataFile(QStringLiteral("pbr.gltf")));
+    const auto material = [](const char* name, QJsonArray factor, double strength) {
+        QJsonObject m{{QStringLiteral("emissiveFactor"), factor},
+                      {QStringLiteral("extensions"),
+                       QJsonObject{{QStringLiteral("KHR_materials_emissive_strength"),
+                                    QJsonObject{{QStringLiteral("emissiveStrength"), strength}}}}}};
+        if (name) m.insert(QStringLiteral("name"), QLatin1String(name));
+        return m;
+    };
+    // Used in reverse order, so Assimp's numbering differs from the file's.
+    gltf[QStringLiteral("materials")] =
+        QJsonArray{material("glow", {1.0, 0.0, 0.0}, 5.0), material("glow", {0.0, 1.0, 0.0}, 7.0),
+                   material("lamp", {1.0, 1.0, 1.0}, 2.0), material("lamp", {1.0, 1.0, 1.0}, 3.0),
+                   material(nullptr, {0.0, 0.0, 0.5}, 6.0)};
+    QJsonArray meshes = gltf[QStringLiteral("meshes")].toArray();
+    QJsonObject mesh = meshes[0].toObject();
+    QJsonArray primitives = mesh[QStringLiteral("primitives")].toArray();
+    for (int i = 0; i < primitives.size(); ++i) {
+        QJsonObject p = primitives[i].toObject();
+        p[QStringLiteral("material")] = int(primitives.size()) - 1 - i;
+        primitives[i] = p;
+    }
+    mesh[QStringLiteral("primitives")] = primitives;
+    meshes[0] = mesh;
+    gltf[QStringLiteral("meshes")] = meshes;
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("strength.gltf"));
+    QVERIFY(writeFile(path, QJsonDocument(gltf).toJson()));
+    const auto m = mustLoad(path);
+    QVERIFY(m);
+    const auto emissive = [&](const glm::vec3& factor) {
+        for (const Material& mat : m->materials)
+            for (float s : {1.0f, 2.0f, 3.0f, 5.0f, 6.0f, 7.0f})
+                if (glm::length(mat.emissive - factor * s) < 1e-6f) return s;
+        return 0.0f;
+    };
+    QCOMPARE(emissive({1.0f, 0.0f, 0.0f}), 5.0f);
+    QCOMPARE(emissive({0.0f, 1.0f, 0.0f}), 7.0f);
+    QCOMPARE(emissive({0.0f, 0.0f, 0.5f}), 6.0f);
+    QCOMPARE(emissive({1.0f, 1.0f, 1.0f}), 1.0f);
+    QCOMPARE(warningsWith(*m, {QStringLiteral("strength.gltf: material \"lamp\""),
+                               QStringLiteral("different KHR_materials_emissive_strength")})
+                 .size(),
+             2);
 }
 
 // Assimp 5.2.5 turns KHR_texture_transform into an aiUVTransform (glTF2Importer.cpp); the importer inverts
