@@ -140,6 +140,7 @@ class TestModel : public QObject {
     void gltfMetalRoughMaterials();
     void gltfOutOfRangeValuesAreClampedWithWarnings();
     void gltfEmissiveStrengthFindsItsMaterial();
+    void undecodableTexturesNameTheirRole();
     void textureTransformInvertsAssimpsConversion();
     void objShininessConvertsToRoughness();
     void bundledSuzanneFromResources();
@@ -528,6 +529,32 @@ void TestModel::gltfEmissiveStrengthFindsItsMaterial() {
                                QStringLiteral("different KHR_materials_emissive_strength")})
                  .size(),
              2);
+}
+
+// pbr.gltf with its metallic-roughness (image 1) and occlusion (image 2) images broken: not used, and the
+// warnings say which role lost its texture.
+void TestModel::undecodableTexturesNameTheirRole() {
+    QJsonObject gltf = readJson(dataFile(QStringLiteral("pbr.gltf")));
+    QJsonArray images = gltf[QStringLiteral("images")].toArray();
+    for (int i : {1, 2})
+        images[i] = QJsonObject{{QStringLiteral("uri"), QStringLiteral("data:image/png;base64,AAAA")}};
+    gltf[QStringLiteral("images")] = images;
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("broken.gltf"));
+    QVERIFY(writeFile(path, QJsonDocument(gltf).toJson()));
+    const auto m = mustLoad(path);
+    QVERIFY(m);
+    QCOMPARE(test::modelProblems(*m), QString());
+    const Material* mr = materialNamed(*m, QStringLiteral("metalRough"));
+    QVERIFY(mr);
+    QCOMPARE(mr->metallicRoughnessTexture, -1);
+    QCOMPARE(mr->occlusionTexture, -1);
+    QVERIFY(mr->normalTexture >= 0);
+    for (const char* role : {"metallic-roughness texture", "occlusion texture"})
+        QVERIFY2(warningsWith(*m, {QStringLiteral("broken.gltf: "), QLatin1String(role),
+                                   QStringLiteral("could not decode")})
+                         .size() == 1,
+                 qPrintable(m->warnings.join(u"; ")));
 }
 
 // Assimp 5.2.5 turns KHR_texture_transform into an aiUVTransform (glTF2Importer.cpp); the importer inverts
