@@ -316,12 +316,14 @@ Material convert(const aiMaterial* am, TextureLoader& textures, const MaterialCo
     int twoSided = 0;
     if (am->Get(AI_MATKEY_TWOSIDED, twoSided) == AI_SUCCESS) m.doubleSided = twoSided != 0;
 
-    // glTF's packed metallicRoughness texture (Assimp 5.2.5 also lists it as METALNESS and
-    // DIFFUSE_ROUGHNESS); other formats' separate single-channel maps do not fit the packed layout.
-    m.metallicRoughnessTexture = loadRole(am, {aiTextureType_UNKNOWN}, "metallic-roughness", textures, ctx,
-                                          &m.metallicRoughnessTransform);
-    if (m.metallicRoughnessTexture < 0 && (am->GetTextureCount(aiTextureType_METALNESS) ||
-                                           am->GetTextureCount(aiTextureType_DIFFUSE_ROUGHNESS)))
+    // glTF's packed metallicRoughness texture is UNKNOWN (Assimp 5.2.5 also lists it as METALNESS and
+    // DIFFUSE_ROUGHNESS); other importers put textures they do not understand there. Other formats'
+    // separate single-channel metallic and roughness maps do not fit the packed layout.
+    if (ctx.source == MaterialSource::Gltf)
+        m.metallicRoughnessTexture = loadRole(am, {aiTextureType_UNKNOWN}, "metallic-roughness", textures,
+                                              ctx, &m.metallicRoughnessTransform);
+    else if (am->GetTextureCount(aiTextureType_METALNESS) ||
+             am->GetTextureCount(aiTextureType_DIFFUSE_ROUGHNESS))
         ctx.warn(QStringLiteral("separate metallic and roughness maps are not supported (not used)"));
     // glTF's occlusion arrives as LIGHTMAP; AMBIENT_OCCLUSION is where FBX and others put theirs.
     m.occlusionTexture = loadRole(am,

@@ -589,7 +589,7 @@ void TestModel::textureTransformInvertsAssimpsConversion() {
 }
 
 // tests/data/model/shiny.mtl: a Blinn-Phong material (Ns) converted to metal-rough, one with MTL's PBR keys
-// (Pr, Pm) taken as they are, and one without an exponent.
+// (Pr, Pm) taken as they are, one without an exponent, and one with separate roughness/metallic maps.
 void TestModel::objShininessConvertsToRoughness() {
     const auto m = mustLoad(dataFile(QStringLiteral("shiny.obj")));
     QVERIFY(m);
@@ -613,7 +613,15 @@ void TestModel::objShininessConvertsToRoughness() {
     QCOMPARE(matte->roughness, 1.0f);
     QVERIFY(matte->alphaMode == AlphaMode::Opaque);
     QVERIFY(m->hasPbrMaterials());
-    QVERIFY(m->warnings.isEmpty());
+    // Separate map_Pr / map_Pm maps: the factor is used, the maps are not (one warning).
+    const Material* separate = materialNamed(*m, QStringLiteral("separateMaps"));
+    QVERIFY(separate);
+    QVERIFY(separate->pbr);
+    QCOMPARE(separate->roughness, 0.5f);
+    QCOMPARE(separate->metallicRoughnessTexture, -1);
+    QCOMPARE(m->warnings,
+             QStringList{QStringLiteral("shiny.obj: material \"separateMaps\": separate metallic and "
+                                        "roughness maps are not supported (not used)")});
 }
 
 void TestModel::bundledSuzanneFromResources() {

@@ -205,7 +205,8 @@ gltf = {
 }
 text("pbr.gltf", json.dumps(gltf, indent=1) + "\n")
 
-# OBJ materials for the specular/shininess -> metal-rough conversion, and MTL's PBR keys (Pr, Pm).
+# OBJ materials for the specular/shininess -> metal-rough conversion, MTL's PBR keys (Pr, Pm), and separate
+# roughness/metallic maps (map_Pr, map_Pm), which the packed metallic-roughness texture cannot hold.
 text("shiny.mtl", """# CC0, LightRig test data: Blinn-Phong and PBR MTL materials
 newmtl glossy
 Kd 0.5 0.5 0.5
@@ -217,8 +218,13 @@ Pr 0.3
 Pm 0.8
 newmtl matte
 Kd 0.2 0.8 0.2
+newmtl separateMaps
+Kd 0.5 0.5 0.5
+Pr 0.5
+map_Pr checker.png
+map_Pm checker.png
 """)
-text("shiny.obj", """# CC0, LightRig test data: three triangles, one per material
+text("shiny.obj", """# CC0, LightRig test data: four triangles, one per material
 mtllib shiny.mtl
 v 0 0 0
 v 1 0 0
@@ -229,5 +235,7 @@ f 1//1 2//1 3//1
 usemtl authored
 f 1//1 2//1 3//1
 usemtl matte
+f 1//1 2//1 3//1
+usemtl separateMaps
 f 1//1 2//1 3//1
 """)
