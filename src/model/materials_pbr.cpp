@@ -126,6 +126,10 @@ void readPhysicalValues(const aiMaterial* am, const MaterialContext& ctx, Materi
     // Blender does"); only Maya's PBR properties (which set the metallic factor too) are authored values.
     const bool authoredRoughness = hasRoughness && (ctx.source != MaterialSource::Fbx || hasMetallic);
     m.pbr = hasMetallic || authoredRoughness;
+    float glossiness = 0.0f;
+    if (ctx.source == MaterialSource::Gltf && am->Get(AI_MATKEY_GLOSSINESS_FACTOR, glossiness) == AI_SUCCESS)
+        ctx.warn(QStringLiteral("KHR_materials_pbrSpecularGlossiness is not supported; using the material's "
+                                "metallic-roughness values, as viewers without that extension do"));
     if (m.pbr) {
         m.metallic = hasMetallic ? checked(metallic, 0.0f, 1.0f, 1.0f, "metallicFactor", ctx) : 0.0f;
         m.roughness = authoredRoughness ? checked(roughness, 0.0f, 1.0f, 1.0f, "roughnessFactor", ctx) : 1.0f;

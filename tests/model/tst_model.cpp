@@ -141,6 +141,7 @@ class TestModel : public QObject {
     void gltfOutOfRangeValuesAreClampedWithWarnings();
     void gltfEmissiveStrengthFindsItsMaterial();
     void undecodableTexturesNameTheirRole();
+    void specularGlossinessWarns();
     void textureTransformInvertsAssimpsConversion();
     void objShininessConvertsToRoughness();
     void bundledSuzanneFromResources();
@@ -555,6 +556,35 @@ void TestModel::undecodableTexturesNameTheirRole() {
                                    QStringLiteral("could not decode")})
                          .size() == 1,
                  qPrintable(m->warnings.join(u"; ")));
+}
+
+// KHR_materials_pbrSpecularGlossiness (archived by Khronos): the metal-rough values are used, with a warning.
+void TestModel::specularGlossinessWarns() {
+    QJsonObject gltf = readJson(dataFile(QStringLiteral("pbr.gltf")));
+    QJsonArray used = gltf[QStringLiteral("extensionsUsed")].toArray();
+    used.append(QStringLiteral("KHR_materials_pbrSpecularGlossiness"));
+    gltf[QStringLiteral("extensionsUsed")] = used;
+    QJsonArray materials = gltf[QStringLiteral("materials")].toArray();
+    QJsonObject blend = materials[1].toObject();
+    blend[QStringLiteral("extensions")] =
+        QJsonObject{{QStringLiteral("KHR_materials_pbrSpecularGlossiness"),
+                     QJsonObject{{QStringLiteral("diffuseFactor"), QJsonArray{0.5, 0.5, 0.5, 1.0}},
+                                 {QStringLiteral("glossinessFactor"), 0.8}}}};
+    materials[1] = blend;
+    gltf[QStringLiteral("materials")] = materials;
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("specgloss.gltf"));
+    QVERIFY(writeFile(path, QJsonDocument(gltf).toJson()));
+    const auto m = mustLoad(path);
+    QVERIFY(m);
+    const Material* mat = materialNamed(*m, QStringLiteral("blend"));
+    QVERIFY(mat);
+    QVERIFY(mat->pbr);
+    QCOMPARE(mat->baseColor.a, 0.4f); // the metal-rough baseColorFactor
+    QCOMPARE(warningsWith(*m, {QStringLiteral("specgloss.gltf: material \"blend\""),
+                               QStringLiteral("KHR_materials_pbrSpecularGlossiness is not supported")})
+                 .size(),
+             1);
 }
 
 // Assimp 5.2.5 turns KHR_texture_transform into an aiUVTransform (glTF2Importer.cpp); the importer inverts
