@@ -5,12 +5,18 @@
 #include "modelfolder.h"
 
 #include <QByteArrayView>
+#include <QHash>
+#include <QStringList>
 #include <assimp/matrix4x4.h>
 #include <functional>
 #include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+#include <vector>
 
+struct aiMaterial;
 struct aiNode;
 struct aiScene;
+struct aiUVTransform;
 
 namespace lr::detail {
 
@@ -24,8 +30,40 @@ glm::dmat4 worldTransform(const aiNode* node);
 bool convertMeshes(const aiScene* scene, const QString& displayName, Model& model,
                    const std::function<bool(double)>& keepGoing);
 
+// Which importer's conventions a scene's materials follow (modelloader.cpp decides from the suffix).
+enum class MaterialSource { Gltf, Fbx, Other };
+MaterialSource materialSource(const QString& path);
+
 // materials.cpp: model.materials (one per aiMaterial, never empty) and the textures they use.
-void convertMaterials(const aiScene* scene, const ModelFolder& folder, qint64 maxDataUriBytes, Model& model);
+void convertMaterials(const aiScene* scene, const ModelFolder& folder, qint64 maxDataUriBytes,
+                      MaterialSource source, Model& model);
+
+// gltfmaterials.cpp: what Assimp 5.2.5 does not read of a glTF material, per entry of its "materials"
+// array, by material name: KHR_materials_emissive_strength. Read from the file's JSON (a .gltf, or a GLB's
+// JSON chunk) only when the file names that extension; empty otherwise or when the JSON does not parse.
+struct GltfMaterialExtras {
+    glm::vec3 emissiveFactor{0.0f}; // to tell materials of one name apart
+    double emissiveStrength = 1.0;
+};
+using GltfMaterialExtrasByName = QMultiHash<QString, GltfMaterialExtras>;
+GltfMaterialExtrasByName readGltfMaterialExtras(const QString& path);
+
+// materials_pbr.cpp: what one material's conversion needs to know and where its warnings go.
+struct MaterialContext {
+    QString file;  // display name, for warnings
+    QString label; // "material \"paint\"" or "material 3"
+    MaterialSource source = MaterialSource::Other;
+    QStringList* warnings = nullptr;
+    GltfMaterialExtrasByName gltfExtras;
+    void warn(const QString& what) const { *warnings << QStringLiteral("%1: %2: %3").arg(file, label, what); }
+};
+// Metallic, roughness, occlusion strength, normal scale, alpha mode and cutoff, the emissive strength, and
+// whether they came from the file (Material::pbr) or from specular/shininess; sanitised with warnings.
+void readPhysicalValues(const aiMaterial* am, const MaterialContext& ctx, Material& m);
+// KHR_texture_transform's offset/rotation/scale from the aiUVTransform Assimp 5.2.5's glTF importer made of
+// them (the inverse of its conversion); a non-finite transform is the identity, with a warning.
+TextureTransform textureTransformFromAssimp(const aiUVTransform& t, const QString& role,
+                                            const MaterialContext& ctx);
 
 // lights.cpp: model.lights and model.cameras. `gltf`: the scene came from Assimp's glTF importers.
 void convertLightsAndCameras(const aiScene* scene, bool gltf, const QString& displayName, Model& model);

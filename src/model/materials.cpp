@@ -1,5 +1,7 @@
 // Assimp materials -> Material, and the textures they use decoded into RGBA8888 QImages: embedded
-// ("*N" or by file name, compressed or raw aiTexel), data URIs, and files beside the model.
+// ("*N" or by file name, compressed or raw aiTexel), data URIs, and files beside the model. The
+// physically based values (metal-rough factors, occlusion, alpha mode, texture transforms, or their
+// conversion from specular/shininess) are read in materials_pbr.cpp.
 #include "importdetail.h"
 
 #include <QByteArray>
@@ -10,6 +12,7 @@
 #include <QThread>
 #include <QThreadPool>
 #include <QUrl>
+#include <assimp/GltfMaterial.h>
 #include <assimp/material.h>
 #include <assimp/scene.h>
 #include <assimp/texture.h>
@@ -90,7 +93,8 @@ class TextureLoader {
             m_model.textures.push_back({job.name, std::move(job.image)});
         }
         for (Material& m : m_model.materials)
-            for (int* t : {&m.baseColorTexture, &m.normalTexture, &m.emissiveTexture})
+            for (int* t : {&m.baseColorTexture, &m.normalTexture, &m.emissiveTexture,
+                           &m.metallicRoughnessTexture, &m.occlusionTexture})
                 *t = *t >= 0 && *t < int(remap.size()) ? remap[size_t(*t)] : -1;
     }
 
@@ -240,10 +244,37 @@ class TextureLoader {
     std::vector<Job> m_jobs;
 };
 
-Material convert(const aiMaterial* am, TextureLoader& textures) {
+// Loads the material's first texture of the first of `types` it has, for one role: -1 with a warning when
+// it reads a UV set other than 0 (meshes carry only TEXCOORD_0); *transform gets its UV transform.
+int loadRole(const aiMaterial* am, std::initializer_list<aiTextureType> types, const char* role,
+             TextureLoader& textures, const MaterialContext& ctx, TextureTransform* transform) {
+    for (aiTextureType type : types) {
+        if (am->GetTextureCount(type) == 0) continue;
+        int uvSet = 0;
+        if (am->Get(AI_MATKEY_UVWSRC(type, 0), uvSet) == AI_SUCCESS && uvSet != 0) {
+            ctx.warn(QStringLiteral("%1 texture reads UV set %2; only UV set 0 is supported (not used)")
+                         .arg(QLatin1String(role))
+                         .arg(uvSet));
+            return -1;
+        }
+        const int index = textures.load(am, type, role);
+        if (index < 0) continue;
+        aiUVTransform uv;
+        if (am->Get(_AI_MATKEY_UVTRANSFORM_BASE, int(type), 0, uv) == AI_SUCCESS)
+            *transform = textureTransformFromAssimp(uv, QLatin1String(role), ctx);
+        return index;
+    }
+    return -1;
+}
+
+Material convert(const aiMaterial* am, TextureLoader& textures, const MaterialContext& baseCtx,
+                 std::size_t index) {
     Material m;
     aiString name;
     if (am->Get(AI_MATKEY_NAME, name) == AI_SUCCESS) m.name = QString::fromUtf8(name.C_Str());
+    MaterialContext ctx = baseCtx;
+    ctx.label = m.name.isEmpty() ? QStringLiteral("material %1").arg(index)
+                                 : QStringLiteral("material \"%1\"").arg(m.name);
 
     aiColor4D c;
     if (am->Get(AI_MATKEY_BASE_COLOR, c) == AI_SUCCESS || am->Get(AI_MATKEY_COLOR_DIFFUSE, c) == AI_SUCCESS) {
@@ -256,10 +287,9 @@ Material convert(const aiMaterial* am, TextureLoader& textures) {
     for (int i = 0; i < 3; ++i)
         m.baseColor[i] = std::max(finiteOr(m.baseColor[i], 1.0f), 0.0f);
     m.baseColor.a = std::clamp(finiteOr(m.baseColor.a, 1.0f), 0.0f, 1.0f);
-    m.baseColorTexture = textures.load(am, aiTextureType_BASE_COLOR, "base colour");
-    if (m.baseColorTexture < 0) m.baseColorTexture = textures.load(am, aiTextureType_DIFFUSE, "diffuse");
-
-    m.normalTexture = textures.load(am, aiTextureType_NORMALS, "normal");
+    m.baseColorTexture = loadRole(am, {aiTextureType_BASE_COLOR, aiTextureType_DIFFUSE}, "base colour",
+                                  textures, ctx, &m.baseColorTransform);
+    m.normalTexture = loadRole(am, {aiTextureType_NORMALS}, "normal", textures, ctx, &m.normalTransform);
 
     aiColor3D e(0.0f, 0.0f, 0.0f);
     if (am->Get(AI_MATKEY_COLOR_EMISSIVE, e) == AI_SUCCESS) {
@@ -268,9 +298,8 @@ Material convert(const aiMaterial* am, TextureLoader& textures) {
         for (int i = 0; i < 3; ++i)
             m.emissive[i] = std::max(finiteOr(e[unsigned(i)] * strength, 0.0f), 0.0f);
     }
-    m.emissiveTexture = textures.load(am, aiTextureType_EMISSIVE, "emissive");
-    if (m.emissiveTexture < 0)
-        m.emissiveTexture = textures.load(am, aiTextureType_EMISSION_COLOR, "emissive");
+    m.emissiveTexture = loadRole(am, {aiTextureType_EMISSIVE, aiTextureType_EMISSION_COLOR}, "emissive",
+                                 textures, ctx, &m.emissiveTransform);
 
     aiColor3D s(1.0f, 1.0f, 1.0f);
     if (am->Get(AI_MATKEY_COLOR_SPECULAR, s) == AI_SUCCESS) {
@@ -286,15 +315,35 @@ Material convert(const aiMaterial* am, TextureLoader& textures) {
 
     int twoSided = 0;
     if (am->Get(AI_MATKEY_TWOSIDED, twoSided) == AI_SUCCESS) m.doubleSided = twoSided != 0;
+
+    // glTF's packed metallicRoughness texture is UNKNOWN (Assimp 5.2.5 also lists it as METALNESS and
+    // DIFFUSE_ROUGHNESS); other importers put textures they do not understand there. Other formats'
+    // separate single-channel metallic and roughness maps do not fit the packed layout.
+    if (ctx.source == MaterialSource::Gltf)
+        m.metallicRoughnessTexture = loadRole(am, {aiTextureType_UNKNOWN}, "metallic-roughness", textures,
+                                              ctx, &m.metallicRoughnessTransform);
+    else if (am->GetTextureCount(aiTextureType_METALNESS) ||
+             am->GetTextureCount(aiTextureType_DIFFUSE_ROUGHNESS))
+        ctx.warn(QStringLiteral("separate metallic and roughness maps are not supported (not used)"));
+    // glTF's occlusion arrives as LIGHTMAP; AMBIENT_OCCLUSION is where FBX and others put theirs.
+    m.occlusionTexture = loadRole(am,
+                                  ctx.source == MaterialSource::Gltf
+                                      ? std::initializer_list<aiTextureType>{aiTextureType_LIGHTMAP}
+                                      : std::initializer_list<aiTextureType>{aiTextureType_AMBIENT_OCCLUSION},
+                                  "occlusion", textures, ctx, &m.occlusionTransform);
+    readPhysicalValues(am, ctx, m);
     return m;
 }
 
 } // namespace
 
-void convertMaterials(const aiScene* scene, const ModelFolder& folder, qint64 maxDataUriBytes, Model& model) {
+void convertMaterials(const aiScene* scene, const ModelFolder& folder, qint64 maxDataUriBytes,
+                      MaterialSource source, Model& model) {
     TextureLoader textures(scene, folder, maxDataUriBytes, model);
+    MaterialContext ctx{folder.displayName(), {}, source, &model.warnings, {}};
+    if (source == MaterialSource::Gltf) ctx.gltfExtras = readGltfMaterialExtras(folder.modelFile());
     for (unsigned i = 0; i < scene->mNumMaterials && scene->mMaterials; ++i)
-        model.materials.push_back(scene->mMaterials[i] ? convert(scene->mMaterials[i], textures)
+        model.materials.push_back(scene->mMaterials[i] ? convert(scene->mMaterials[i], textures, ctx, i)
                                                        : Material{});
     textures.finish();
     bool needDefault = model.materials.empty();

@@ -33,6 +33,9 @@ struct Texture {
 };
 
 enum class AlphaMode { Opaque, Mask, Blend }; // glTF alphaMode
+template <> struct EnumNames<AlphaMode> {     // glTF's names: toString, enumCount, the codec's range check
+    static constexpr std::array names{"OPAQUE", "MASK", "BLEND"};
+};
 
 // KHR_texture_transform of one texture reference: uv' = offset + R(rotation) · (scale ⊙ uv), in the
 // glTF convention (u right, v down the image), and the UV set it reads (0 only today; others warn).

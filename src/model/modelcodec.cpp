@@ -127,6 +127,20 @@ void writeBody(Writer& w, const Model& m) {
         w.pod(mat.specular);
         w.pod(mat.shininess);
         w.u8(mat.doubleSided);
+        w.u8(mat.pbr);
+        w.pod(mat.metallic);
+        w.pod(mat.roughness);
+        w.pod(qint32(mat.metallicRoughnessTexture));
+        w.pod(qint32(mat.occlusionTexture));
+        w.pod(mat.occlusionStrength);
+        w.pod(mat.normalScale);
+        w.enumeration(mat.alphaMode);
+        w.pod(mat.alphaCutoff);
+        for (const TextureTransform* t : textureTransforms(mat)) {
+            w.pod(t->offset);
+            w.pod(t->rotation);
+            w.pod(t->scale);
+        }
     }
     w.count(m.textures.size());
     for (const Texture& t : m.textures) {
@@ -159,6 +173,7 @@ void writeBody(Writer& w, const Model& m) {
     w.string(m.lights.name);
     w.enumeration(m.lights.space);
     w.pod(m.lights.ambient);
+    w.enumeration(m.lights.shading.model);
     w.enumeration(m.lights.shading.specular);
     w.enumeration(m.lights.shading.viewer);
     w.pod(m.lights.shading.shininess);

@@ -22,13 +22,14 @@
 #include <QByteArrayView>
 #include <QImage>
 #include <QString>
+#include <array>
 #include <functional>
 #include <memory>
 
 namespace lr {
 
 inline constexpr char kModelCodecMagic[8] = {'L', 'R', 'M', 'O', 'D', 'E', 'L', '\0'};
-inline constexpr quint32 kModelCodecVersion = 3;
+inline constexpr quint32 kModelCodecVersion = 4; // 4: PBR material fields, rig shading model
 inline constexpr quint32 kModelCodecByteOrderMark = 0x01020304u;
 inline constexpr int kModelCodecHeaderSize = 32; // the body size is its last 8 bytes
 // Texture pixels start this far apart from the start of the encoding (zero padding before them), so that a
@@ -44,6 +45,22 @@ struct ModelCodecLimits {
 
 // Receives the encoding in pieces; returns false to stop.
 using ModelSink = std::function<bool(const char* data, std::size_t size)>;
+
+// A material's texture transforms in the order the codec writes them (base colour, normal, emissive,
+// metallic-roughness, occlusion).
+inline std::array<const TextureTransform*, 5> textureTransforms(const Material& m) {
+    return {&m.baseColorTransform, &m.normalTransform, &m.emissiveTransform, &m.metallicRoughnessTransform,
+            &m.occlusionTransform};
+}
+inline std::array<TextureTransform*, 5> textureTransforms(Material& m) {
+    return {&m.baseColorTransform, &m.normalTransform, &m.emissiveTransform, &m.metallicRoughnessTransform,
+            &m.occlusionTransform};
+}
+// A material's texture references (indices into Model::textures, -1: none).
+inline std::array<int, 5> textureReferences(const Material& m) {
+    return {m.baseColorTexture, m.normalTexture, m.emissiveTexture, m.metallicRoughnessTexture,
+            m.occlusionTexture};
+}
 
 // The encoded model (header + body) in one array. Textures are converted to RGBA8888 when they are not.
 QByteArray encodeModel(const Model& model);

@@ -15,7 +15,8 @@ namespace {
 
 // The fewest bytes each part takes (empty strings and arrays): counts are checked against them.
 constexpr std::size_t kMinMeshBytes = 4 + 8 + 8 + 4 + 1 + 1;
-constexpr std::size_t kMinMaterialBytes = 4 + 16 + 3 * 4 + 12 + 12 + 4 + 1;
+constexpr std::size_t kMinMaterialBytes =
+    4 + 16 + 3 * 4 + 12 + 12 + 4 + 1 + 1 + 2 * 4 + 2 * 4 + 2 * 4 + 1 + 4 + 5 * 20;
 constexpr std::size_t kMinTextureBytes = 4 + 4 + 4 + 4;
 constexpr std::size_t kMinCameraBytes = 4 + 3 * 24 + 4 * 8;
 constexpr std::size_t kMinLightBytes =
@@ -259,6 +260,28 @@ bool readModel(Reader& r, Model& m) {
             return false;
         if (doubleSided > 1) return r.fail(where + QStringLiteral(" double-sided is not 0 or 1"));
         mat.doubleSided = doubleSided == 1;
+        if (!r.flag(mat.pbr, where + QStringLiteral(" pbr")) ||
+            !r.number(mat.metallic, where + QStringLiteral(" metallic")) ||
+            !r.number(mat.roughness, where + QStringLiteral(" roughness")) ||
+            !r.pod(mat.metallicRoughnessTexture, where + QStringLiteral(" metallic-roughness texture")) ||
+            !r.pod(mat.occlusionTexture, where + QStringLiteral(" occlusion texture")) ||
+            !r.number(mat.occlusionStrength, where + QStringLiteral(" occlusion strength")) ||
+            !r.number(mat.normalScale, where + QStringLiteral(" normal scale")) ||
+            !r.enumeration(mat.alphaMode, where + QStringLiteral(" alpha mode")) ||
+            !r.number(mat.alphaCutoff, where + QStringLiteral(" alpha cutoff")))
+            return false;
+        for (TextureTransform* t : textureTransforms(mat))
+            if (!r.number(t->offset, where + QStringLiteral(" texture offset")) ||
+                !r.number(t->rotation, where + QStringLiteral(" texture rotation")) ||
+                !r.number(t->scale, where + QStringLiteral(" texture scale")))
+                return false;
+        // The importer clamps these (materials_pbr.cpp); the renderer may rely on it.
+        for (auto [value, name] : {std::pair{mat.metallic, "metallic"}, std::pair{mat.roughness, "roughness"},
+                                   std::pair{mat.occlusionStrength, "occlusion strength"},
+                                   std::pair{mat.alphaCutoff, "alpha cutoff"}})
+            if (!(value >= 0.0f && value <= 1.0f))
+                return r.fail(
+                    QStringLiteral("%1 %2 %3 is outside [0, 1]").arg(where, QLatin1String(name)).arg(value));
     }
 
     if (!r.count(n, kMinTextureBytes, QStringLiteral("textures"))) return false;
@@ -290,6 +313,7 @@ bool readModel(Reader& r, Model& m) {
     if (!r.string(rig.name, QStringLiteral("rig name")) ||
         !r.enumeration(rig.space, QStringLiteral("rig space")) ||
         !r.number(rig.ambient, QStringLiteral("rig ambient")) ||
+        !r.enumeration(rig.shading.model, QStringLiteral("rig shading model")) ||
         !r.enumeration(rig.shading.specular, QStringLiteral("rig specular model")) ||
         !r.enumeration(rig.shading.viewer, QStringLiteral("rig viewer model")) ||
         !r.number(rig.shading.shininess, QStringLiteral("rig shininess")) ||
@@ -328,7 +352,7 @@ bool readModel(Reader& r, Model& m) {
                               .arg(m.materials.size()));
     for (std::size_t i = 0; i < m.materials.size(); ++i) {
         const Material& mat = m.materials[i];
-        for (int t : {mat.baseColorTexture, mat.normalTexture, mat.emissiveTexture})
+        for (int t : textureReferences(mat))
             if (t < -1 || (t >= 0 && std::size_t(t) >= m.textures.size()) ||
                 (t >= 0 && m.textures[std::size_t(t)].image.isNull()))
                 return r.fail(QStringLiteral("material %1: texture %2 out of range or empty (%3 textures)")

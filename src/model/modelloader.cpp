@@ -129,7 +129,7 @@ ModelLoadResult import(const QString& path, const ModelLoadOptions& options) {
             reason += QStringLiteral(" (%1)").arg(model->warnings.join(QStringLiteral("; ")));
         return failure(path, reason);
     }
-    detail::convertMaterials(scene, folder, options.maxDataUriBytes, *model);
+    detail::convertMaterials(scene, folder, options.maxDataUriBytes, detail::materialSource(path), *model);
     detail::convertLightsAndCameras(scene, gltf, name, *model);
     if (!progress.report(1.0)) return failure(path, QStringLiteral("cancelled"), true);
     model->loadMs = double(timer.nsecsElapsed()) / 1e6;

@@ -46,8 +46,19 @@ inline QString modelProblems(const Model& m) {
                            m.textures[size_t(t)].image.format() == QImage::Format_RGBA8888);
     };
     for (const Material& mat : m.materials) {
-        if (!texOk(mat.baseColorTexture) || !texOk(mat.normalTexture) || !texOk(mat.emissiveTexture))
+        if (!texOk(mat.baseColorTexture) || !texOk(mat.normalTexture) || !texOk(mat.emissiveTexture) ||
+            !texOk(mat.metallicRoughnessTexture) || !texOk(mat.occlusionTexture))
             return QStringLiteral("bad texture reference in material %1").arg(mat.name);
+        for (float f : {mat.metallic, mat.roughness, mat.occlusionStrength, mat.alphaCutoff})
+            if (!(f >= 0.0f && f <= 1.0f))
+                return QStringLiteral("material factor outside [0, 1] in %1").arg(mat.name);
+        if (!finite3(mat.emissive) || !std::isfinite(mat.normalScale))
+            return QStringLiteral("non-finite emissive or normal scale in %1").arg(mat.name);
+        for (const TextureTransform& t : {mat.baseColorTransform, mat.normalTransform, mat.emissiveTransform,
+                                          mat.metallicRoughnessTransform, mat.occlusionTransform})
+            if (!std::isfinite(t.offset.x) || !std::isfinite(t.offset.y) || !std::isfinite(t.rotation) ||
+                !std::isfinite(t.scale.x) || !std::isfinite(t.scale.y))
+                return QStringLiteral("non-finite texture transform in %1").arg(mat.name);
         for (int i = 0; i < 4; ++i)
             if (!std::isfinite(mat.baseColor[i]) || mat.baseColor[i] < 0.0f)
                 return QStringLiteral("bad base colour");

@@ -6,11 +6,13 @@
 
 #include <QDirIterator>
 #include <QFile>
+#include <QImage>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
 #include <QQuaternion>
+#include <QSet>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QtEndian>
@@ -74,6 +76,9 @@ class TestModelShared : public QObject {
     void benchHelmetLightsAndCamera();
     void everyFileLoadsOrFailsNamingIt();
     void plyCommentsInDataAreRefusedNotCrashed();
+    void damagedHelmetMetalRoughMaterial_data();
+    void damagedHelmetMetalRoughMaterial();
+    void fbxShininessIsConvertedNotAssimpsRoughness();
 };
 
 void TestModelShared::benchHelmetLightsAndCamera_data() {
@@ -148,6 +153,108 @@ void TestModelShared::benchHelmetLightsAndCamera() {
     QVERIFY(std::abs(cam.yfovDegrees - persp[QStringLiteral("yfov")].toDouble() * 180.0 / std::numbers::pi) <
             1e-4);
     QVERIFY(std::abs(cam.aspect - persp[QStringLiteral("aspectRatio")].toDouble()) < 1e-6);
+}
+
+// The sizes of a GLB's images by glTF texture index, decoded here from the binary chunk.
+static std::vector<QSize> glbTextureSizes(const QString& path) {
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly)) return {};
+    const QByteArray bytes = f.readAll();
+    if (bytes.size() < 20) return {};
+    const quint32 jsonLength = qFromLittleEndian<quint32>(bytes.constData() + 12);
+    const QJsonObject json = QJsonDocument::fromJson(bytes.mid(20, qsizetype(jsonLength))).object();
+    const qsizetype binStart = 20 + qsizetype(jsonLength) + 8;
+    std::vector<QSize> out;
+    for (const QJsonValue& t : json[QStringLiteral("textures")].toArray()) {
+        const QJsonObject image =
+            json[QStringLiteral("images")][t[QStringLiteral("source")].toInt()].toObject();
+        const QJsonObject view =
+            json[QStringLiteral("bufferViews")][image[QStringLiteral("bufferView")].toInt()].toObject();
+        const QByteArray data = bytes.mid(binStart + view[QStringLiteral("byteOffset")].toInt(0),
+                                          view[QStringLiteral("byteLength")].toInt());
+        out.push_back(QImage::fromData(data).size());
+    }
+    return out;
+}
+
+void TestModelShared::damagedHelmetMetalRoughMaterial_data() {
+    QTest::addColumn<QString>("file");
+    QTest::newRow("Khronos sample") << "gltf/khronos/DamagedHelmet/glTF-Binary/DamagedHelmet.glb";
+    QTest::newRow("bench 8pt") << "bench/helmet_8pt.glb";
+}
+
+// DamagedHelmet: metallic and roughness factors 1 (glTF's defaults, the texture carries the values), a
+// metallic-roughness, occlusion, emissive, normal and base colour texture; each decodes at the size of the
+// image the file holds for that role.
+void TestModelShared::damagedHelmetMetalRoughMaterial() {
+    QFETCH(QString, file);
+    const QString path = kShared + QLatin1Char('/') + file;
+    if (!QFileInfo::exists(path)) QSKIP(qPrintable(QStringLiteral("%1 is absent").arg(path)));
+    const QJsonObject json = glbJson(path);
+    const std::vector<QSize> sizes = glbTextureSizes(path);
+    const QJsonObject jm = json[QStringLiteral("materials")][0].toObject();
+    const QJsonObject pbr = jm[QStringLiteral("pbrMetallicRoughness")].toObject();
+    const ModelLoadResult r = loadModel(path);
+    QVERIFY2(r.ok(), qPrintable(r.error));
+    const Model& m = *r.model;
+    QCOMPARE(test::modelProblems(m), QString());
+    QVERIFY(m.hasPbrMaterials());
+    const Material& mat = m.materials[size_t(m.meshes.front().material)];
+    QCOMPARE(mat.name, jm[QStringLiteral("name")].toString());
+    QVERIFY(mat.pbr);
+    QCOMPARE(mat.metallic, float(pbr[QStringLiteral("metallicFactor")].toDouble(1.0)));
+    QCOMPARE(mat.roughness, float(pbr[QStringLiteral("roughnessFactor")].toDouble(1.0)));
+    QCOMPARE(mat.metallic, 1.0f);
+    QCOMPARE(mat.roughness, 1.0f);
+    QVERIFY(mat.alphaMode == AlphaMode::Opaque);
+    QCOMPARE(mat.occlusionStrength, 1.0f);
+    QCOMPARE(mat.normalScale, 1.0f);
+    QCOMPARE(mat.emissive, glm::vec3(1.0f));
+    const struct {
+        const char* role;
+        int texture;
+        QJsonValue info;
+    } roles[] = {
+        {"base colour", mat.baseColorTexture, pbr[QStringLiteral("baseColorTexture")]},
+        {"metallic-roughness", mat.metallicRoughnessTexture, pbr[QStringLiteral("metallicRoughnessTexture")]},
+        {"occlusion", mat.occlusionTexture, jm[QStringLiteral("occlusionTexture")]},
+        {"emissive", mat.emissiveTexture, jm[QStringLiteral("emissiveTexture")]},
+        {"normal", mat.normalTexture, jm[QStringLiteral("normalTexture")]}};
+    for (const auto& role : roles) {
+        QVERIFY2(role.texture >= 0, role.role);
+        const int source = role.info[QStringLiteral("index")].toInt(-1);
+        QVERIFY2(source >= 0 && size_t(source) < sizes.size(), role.role);
+        QVERIFY2(!sizes[size_t(source)].isEmpty(), role.role);
+        QCOMPARE(m.textures[size_t(role.texture)].image.size(), sizes[size_t(source)]);
+        QCOMPARE(m.textures[size_t(role.texture)].image.format(), QImage::Format_RGBA8888);
+    }
+    // Five roles, five distinct images.
+    QSet<int> distinct;
+    for (const auto& role : roles)
+        distinct.insert(role.texture);
+    QCOMPARE(distinct.size(), 5);
+    for (const QString& w : m.warnings)
+        QVERIFY2(!w.contains(QLatin1String("material")) && !w.contains(QLatin1String("texture")),
+                 qPrintable(w));
+}
+
+// Assimp's FBX importer adds a roughness derived from the shininess exponent (1 - sqrt(n) / 10); LightRig
+// converts the exponent itself (docs/lighting-models.md) and marks the material as converted.
+void TestModelShared::fbxShininessIsConvertedNotAssimpsRoughness() {
+    const QString path = kShared + QStringLiteral("/fbx/assimp-tests/phong_cube.fbx");
+    if (!QFileInfo::exists(path)) QSKIP(qPrintable(QStringLiteral("%1 is absent").arg(path)));
+    const ModelLoadResult r = loadModel(path);
+    QVERIFY2(r.ok(), qPrintable(r.error));
+    const Material& mat = r.model->materials[size_t(r.model->meshes.front().material)];
+    QVERIFY(mat.shininess > 0.0f);
+    QVERIFY(!mat.pbr);
+    QCOMPARE(mat.metallic, 0.0f);
+    const double alpha = std::sqrt(2.0 / (double(mat.shininess) + 2.0));
+    QVERIFY2(std::abs(double(mat.roughness) - std::sqrt(alpha)) < 1e-6,
+             qPrintable(QString::number(mat.roughness)));
+    QVERIFY(std::abs(mat.roughness - (1.0f - std::sqrt(mat.shininess) / 10.0f)) >
+            0.01f); // 0.639 vs 0.684 at n = 10
+    QVERIFY(!r.model->hasPbrMaterials());
 }
 
 void TestModelShared::everyFileLoadsOrFailsNamingIt() {

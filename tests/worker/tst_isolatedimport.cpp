@@ -93,7 +93,8 @@ void TestIsolatedImport::goodModelsEqualDirectImport_data() {
     QTest::addColumn<QString>("path");
     QTest::addColumn<bool>("sharedMemory");
     QStringList paths;
-    for (const char* f : {"quad.obj", "colors.ply", "scene.gltf", "tetra.stl"})
+    // pbr.gltf and shiny.obj: every physically based Material field and the import warnings of issue 13.
+    for (const char* f : {"quad.obj", "colors.ply", "scene.gltf", "tetra.stl", "pbr.gltf", "shiny.obj"})
         paths << kData + QLatin1Char('/') + QLatin1String(f);
     paths << QStringLiteral(":/resources/models/suzanne/Suzanne.gltf"); // the bundled model, a resource
     for (const QString& path : paths)
@@ -114,6 +115,14 @@ void TestIsolatedImport::goodModelsEqualDirectImport() {
     QVERIFY2(problem.isEmpty(), qPrintable(problem));
     const QString difference = compareWithDirect(path, isolated);
     QVERIFY2(difference.isEmpty(), qPrintable(difference));
+    if (path.endsWith(QLatin1String("pbr.gltf"))) { // the comparison above covered non-default values
+        QVERIFY(isolated.model->hasPbrMaterials());
+        QVERIFY(std::any_of(isolated.model->materials.begin(), isolated.model->materials.end(),
+                            [](const Material& m) {
+                                return m.occlusionTexture >= 0 && m.metallicRoughnessTexture >= 0 &&
+                                       !m.occlusionTransform.isIdentity();
+                            }));
+    }
 }
 
 void TestIsolatedImport::loaderErrorsPassThrough() {

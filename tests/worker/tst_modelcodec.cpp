@@ -11,6 +11,7 @@
 #include <QTest>
 #include <cstdlib>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <memory>
 
@@ -48,6 +49,7 @@ class TestModelCodec : public QObject {
     Q_OBJECT
   private slots:
     void roundTripsEveryField();
+    void roundTripsEachMaterialField();
     void roundTripsEmptyAndBuiltInModels();
     void roundTripsManyEmptyParts();
     void streamsTheSameBytes();
@@ -83,6 +85,64 @@ void TestModelCodec::roundTripsEveryField() {
     QVERIFY(decoded->lights.lights[0].temperature.has_value());
     QVERIFY(!decoded->lights.lights[1].temperature.has_value());
     QVERIFY(decoded->lights.lights[1].ambient.has_value());
+}
+
+// Each Material field on its own, away from its default: a field the codec forgets comes back as its default
+// and the materials differ (Material's operator== compares every field).
+void TestModelCodec::roundTripsEachMaterialField() {
+    const std::vector<std::pair<const char*, std::function<void(Material&)>>> changes = {
+        {"name", [](Material& m) { m.name = QStringLiteral("m"); }},
+        {"baseColor",
+         [](Material& m) {
+             m.baseColor = {0.1f, 0.2f, 0.3f, 0.4f};
+         }},
+        {"baseColorTexture", [](Material& m) { m.baseColorTexture = 0; }},
+        {"normalTexture", [](Material& m) { m.normalTexture = 0; }},
+        {"emissiveTexture", [](Material& m) { m.emissiveTexture = 0; }},
+        {"emissive",
+         [](Material& m) {
+             m.emissive = {4.0f, 2.0f, 1.0f};
+         }},
+        {"specular",
+         [](Material& m) {
+             m.specular = {0.5f, 0.5f, 0.25f};
+         }},
+        {"shininess", [](Material& m) { m.shininess = 12.0f; }},
+        {"doubleSided", [](Material& m) { m.doubleSided = true; }},
+        {"pbr", [](Material& m) { m.pbr = true; }},
+        {"metallic", [](Material& m) { m.metallic = 0.5f; }},
+        {"roughness", [](Material& m) { m.roughness = 0.25f; }},
+        {"metallicRoughnessTexture", [](Material& m) { m.metallicRoughnessTexture = 0; }},
+        {"occlusionTexture", [](Material& m) { m.occlusionTexture = 0; }},
+        {"occlusionStrength", [](Material& m) { m.occlusionStrength = 0.5f; }},
+        {"normalScale", [](Material& m) { m.normalScale = 2.0f; }},
+        {"alphaMode", [](Material& m) { m.alphaMode = AlphaMode::Blend; }},
+        {"alphaCutoff", [](Material& m) { m.alphaCutoff = 0.75f; }},
+        {"baseColorTransform",
+         [](Material& m) {
+             m.baseColorTransform.offset = {0.5f, 0.25f};
+         }},
+        {"normalTransform", [](Material& m) { m.normalTransform.rotation = 1.0f; }},
+        {"emissiveTransform",
+         [](Material& m) {
+             m.emissiveTransform.scale = {2.0f, 3.0f};
+         }},
+        {"metallicRoughnessTransform", [](Material& m) { m.metallicRoughnessTransform.offset.y = -1.0f; }},
+        {"occlusionTransform", [](Material& m) { m.occlusionTransform.scale.x = 0.5f; }},
+    };
+    for (const auto& [field, change] : changes) {
+        Model m = oneTriangle();
+        m.textures.push_back({QStringLiteral("t.png"), test::patternImage(2, 2, QImage::Format_RGBA8888, 5)});
+        change(m.materials[0]);
+        QVERIFY2(!(m.materials[0] == Material()), field);
+        QString error;
+        const std::shared_ptr<Model> decoded = decodeModel(encodeModel(m), &error);
+        QVERIFY2(decoded, qPrintable(QStringLiteral("%1: %2").arg(QLatin1String(field), error)));
+        QVERIFY2(decoded->materials[0] == m.materials[0], field);
+    }
+    // Every field of Material is listed above: its size changes when a field is added (then list it).
+    static_assert(sizeof(Material) == sizeof(QString) + 92 + 5 * sizeof(TextureTransform),
+                  "a Material field was added: add it to the codec and to this test");
 }
 
 void TestModelCodec::roundTripsEmptyAndBuiltInModels() {
@@ -239,6 +299,18 @@ void TestModelCodec::rejectsInconsistentModels_data() {
     QTest::newRow("NaN light") << 7 << QStringLiteral("light 0 intensity is not finite");
     QTest::newRow("Inf camera") << 8 << QStringLiteral("camera 0 znear is not finite");
     QTest::newRow("negative material") << 9 << QStringLiteral("material -1 out of range");
+    QTest::newRow("metal-rough texture out of range")
+        << 10 << QStringLiteral("material 0: texture 0 out of range or empty");
+    QTest::newRow("occlusion texture out of range")
+        << 11 << QStringLiteral("material 0: texture 5 out of range or empty");
+    QTest::newRow("roughness above 1") << 12 << QStringLiteral("material 0 roughness 1.5 is outside [0, 1]");
+    QTest::newRow("NaN alpha cutoff") << 13 << QStringLiteral("material 0 alpha cutoff is not finite");
+    QTest::newRow("Inf texture rotation")
+        << 14 << QStringLiteral("material 0 texture rotation is not finite");
+    QTest::newRow("alpha mode out of range")
+        << 15 << QStringLiteral("material 0 alpha mode out of range (7)");
+    QTest::newRow("negative metallic") << 16 << QStringLiteral("material 0 metallic -0.25 is outside [0, 1]");
+    QTest::newRow("shading model out of range") << 17 << QStringLiteral("rig shading model out of range (2)");
 }
 
 void TestModelCodec::rejectsInconsistentModels() {
@@ -279,6 +351,30 @@ void TestModelCodec::rejectsInconsistentModels() {
         break;
     case 9:
         m.meshes[0].material = -1;
+        break;
+    case 10:
+        m.materials[0].metallicRoughnessTexture = 0;
+        break;
+    case 11:
+        m.materials[0].occlusionTexture = 5;
+        break;
+    case 12:
+        m.materials[0].roughness = 1.5f;
+        break;
+    case 13:
+        m.materials[0].alphaCutoff = nan;
+        break;
+    case 14:
+        m.materials[0].occlusionTransform.rotation = inf;
+        break;
+    case 15:
+        m.materials[0].alphaMode = AlphaMode(7);
+        break;
+    case 16:
+        m.materials[0].metallic = -0.25f;
+        break;
+    case 17:
+        m.lights.shading.model = ShadingModel(2);
         break;
     }
     const QString error = decodeError(encodeModel(m));

@@ -78,9 +78,24 @@ inline Model fullModel() {
     m0.specular = {0.4f, 0.5f, 0.6f};
     m0.shininess = 64.0f;
     m0.doubleSided = true;
+    m0.pbr = true;
+    m0.metallic = 0.75f;
+    m0.roughness = 0.125f;
+    m0.metallicRoughnessTexture = 1;
+    m0.occlusionTexture = 0;
+    m0.occlusionStrength = 0.625f;
+    m0.normalScale = -1.5f;
+    m0.alphaMode = AlphaMode::Mask;
+    m0.alphaCutoff = 0.25f;
+    m0.baseColorTransform = {{0.25f, 0.5f}, 0.3f, {2.0f, 3.0f}};
+    m0.normalTransform = {{-0.5f, 0.0f}, 0.0f, {1.0f, -1.0f}};
+    m0.emissiveTransform = {{0.0f, 0.125f}, -1.2f, {1.0f, 1.0f}};
+    m0.metallicRoughnessTransform = {{0.0f, 0.0f}, 3.0f, {0.5f, 0.5f}};
+    m0.occlusionTransform = {{7.0f, -7.0f}, 0.0f, {4.0f, 4.0f}};
     Material m1;
     m1.name = QStringLiteral("glass");
     m1.emissiveTexture = 0;
+    m1.alphaMode = AlphaMode::Blend;
     m.materials = {m0, m1};
     QImage srgb = patternImage(5, 3, QImage::Format_RGBA8888, 1);
     srgb.setColorSpace(QColorSpace::SRgb);
@@ -102,7 +117,7 @@ inline Model fullModel() {
     m.lights.name = QStringLiteral("file lights");
     m.lights.space = RigSpace::Model;
     m.lights.ambient = {0.01, 0.02, 0.03};
-    m.lights.shading = {ShadingModel::Classic, SpecularModel::BlinnPhong, ViewerModel::Infinite, 7.0};
+    m.lights.shading = {ShadingModel::Pbr, SpecularModel::BlinnPhong, ViewerModel::Infinite, 7.0};
     for (int i = 0; i < 7; ++i)
         m.lights.lights.push_back(lightVariant(i));
     m.bounds = {{-1.0, -2.0, -3.0}, {4.0, 5.0, 6.0}};
@@ -132,11 +147,21 @@ inline QString decodedModelUnsafe(const Model& m) {
                 if (!std::isfinite(f[k])) return QStringLiteral("non-finite vertex");
         }
     }
-    for (const Material& mat : m.materials)
-        for (int t : {mat.baseColorTexture, mat.normalTexture, mat.emissiveTexture})
+    for (const Material& mat : m.materials) {
+        for (int t : {mat.baseColorTexture, mat.normalTexture, mat.emissiveTexture,
+                      mat.metallicRoughnessTexture, mat.occlusionTexture})
             if (t != -1 &&
                 (t < 0 || std::size_t(t) >= m.textures.size() || m.textures[std::size_t(t)].image.isNull()))
                 return QStringLiteral("texture reference out of range");
+        for (float f : {mat.metallic, mat.roughness, mat.occlusionStrength, mat.alphaCutoff})
+            if (!(f >= 0.0f && f <= 1.0f)) return QStringLiteral("material factor outside [0, 1]");
+        for (const TextureTransform& t : {mat.baseColorTransform, mat.normalTransform, mat.emissiveTransform,
+                                          mat.metallicRoughnessTransform, mat.occlusionTransform})
+            for (float f : {t.offset.x, t.offset.y, t.rotation, t.scale.x, t.scale.y})
+                if (!std::isfinite(f)) return QStringLiteral("non-finite texture transform");
+        if (int(mat.alphaMode) < 0 || int(mat.alphaMode) >= enumCount<AlphaMode>())
+            return QStringLiteral("alpha mode out of range");
+    }
     for (const Texture& t : m.textures)
         if (!t.image.isNull() && t.image.format() != QImage::Format_RGBA8888)
             return QStringLiteral("texture format");

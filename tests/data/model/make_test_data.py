@@ -6,15 +6,18 @@ import base64, json, os, struct, zlib
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 
-def png(path, rows):
+def png_bytes(rows):
     """rows: list of rows of (r, g, b, a) tuples, top row first."""
     h, w = len(rows), len(rows[0])
     raw = b"".join(b"\0" + bytes(c for px in row for c in px) for row in rows)
     def chunk(kind, data):
         return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
     data = b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 6, 0, 0, 0))
-    data += chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b"")
-    open(os.path.join(HERE, path), "wb").write(data)
+    return data + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b"")
+
+
+def png(path, rows):
+    open(os.path.join(HERE, path), "wb").write(png_bytes(rows))
 
 
 def text(path, s):
@@ -137,3 +140,102 @@ gltf = {
         {"bufferView": 4, "componentType": 5123, "count": 6, "type": "SCALAR"}],
 }
 text("scene.gltf", json.dumps(gltf, indent=1) + "\n")
+
+# glTF metal-rough materials (issue 13): one square with two UV sets, one primitive per material, each
+# material referenced in order (Assimp numbers materials in the order primitives reference them).
+# Textures are data URIs of distinct sizes, so a test can tell the roles apart by size.
+def data_uri(rows):
+    return "data:image/png;base64," + base64.b64encode(png_bytes(rows)).decode()
+
+uv1 = [(0.5, 0.5)] * 4
+blob = b"".join(struct.pack("<3f", *p) for p in pos) + b"".join(struct.pack("<3f", *n) for n in nrm)
+blob += b"".join(struct.pack("<2f", *t) for t in uv) + b"".join(struct.pack("<2f", *t) for t in uv1)
+blob += struct.pack("<6H", *idx) + b"\0\0"
+views = [(0, 48), (48, 48), (96, 32), (128, 32), (160, 12)]
+BC, MR, OC, NM, EM = range(5)
+images = [
+    [[(255, 0, 0, 255), (0, 255, 0, 255)], [(0, 0, 255, 255), (255, 255, 255, 255)]],  # base colour 2x2
+    [[(0, 64, 192, 255), (0, 128, 0, 255), (0, 255, 255, 255)]],                          # metal-rough 3x1
+    [[(200, 0, 0, 255)], [(100, 0, 0, 255)], [(50, 0, 0, 255)]],                          # occlusion 1x3
+    [[(128, 128, 255, 255)]],                                                             # normal 1x1
+    [[(255, 255, 0, 255), (0, 255, 255, 255)], [(0, 0, 0, 255)] * 2, [(9, 9, 9, 255)] * 2],  # emissive 2x3
+]
+def xf(**k):
+    return {"KHR_texture_transform": k}
+materials = [
+    {"name": "metalRough", "doubleSided": True, "alphaMode": "MASK", "alphaCutoff": 0.3,
+     "pbrMetallicRoughness": {"baseColorFactor": [0.9, 0.8, 0.7, 1.0], "metallicFactor": 0.25,
+                              "roughnessFactor": 0.75,
+                              "metallicRoughnessTexture": {"index": MR, "extensions": xf(offset=[0.5, 0.0])}},
+     "normalTexture": {"index": NM, "scale": 0.5},
+     "occlusionTexture": {"index": OC, "strength": 0.6, "extensions": xf(scale=[4.0, 4.0])}},
+    {"name": "blend", "alphaMode": "BLEND", "pbrMetallicRoughness": {"baseColorFactor": [1.0, 0.5, 0.25, 0.4]}},
+    {"name": "transformed", "emissiveFactor": [1.0, 0.5, 0.25],
+     "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 4.0}},
+     "pbrMetallicRoughness": {"baseColorTexture": {"index": BC, "extensions": xf(
+         offset=[0.25, 0.5], rotation=0.3, scale=[2.0, 3.0])}},
+     "emissiveTexture": {"index": EM, "extensions": xf(rotation=-1.2, offset=[-0.125, 0.75])}},
+    {"name": "secondUv", "occlusionTexture": {"index": OC, "texCoord": 1},
+     "pbrMetallicRoughness": {"baseColorTexture": {"index": BC}}},
+    {"name": "outOfRange", "alphaMode": "MASK", "alphaCutoff": -1.0, "emissiveFactor": [1.0, 1.0, 1.0],
+     "pbrMetallicRoughness": {"metallicFactor": -0.5, "roughnessFactor": 2.5},
+     "occlusionTexture": {"index": OC, "strength": 3.0}},
+]
+gltf = {
+    "asset": {"version": "2.0", "generator": "LightRig make_test_data.py", "copyright": "CC0"},
+    "extensionsUsed": ["KHR_texture_transform", "KHR_materials_emissive_strength"],
+    "scene": 0,
+    "scenes": [{"nodes": [0]}],
+    "nodes": [{"name": "squares", "mesh": 0}],
+    "meshes": [{"name": "square", "primitives": [
+        {"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2, "TEXCOORD_1": 3}, "indices": 4,
+         "material": i} for i in range(len(materials))]}],
+    "materials": materials,
+    "textures": [{"source": i} for i in range(len(images))],
+    "images": [{"uri": data_uri(rows)} for rows in images],
+    "buffers": [{"byteLength": len(blob),
+                 "uri": "data:application/octet-stream;base64," + base64.b64encode(blob).decode()}],
+    "bufferViews": [{"buffer": 0, "byteOffset": o, "byteLength": l} for o, l in views],
+    "accessors": [
+        {"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [-0.5, -0.5, 0], "max": [0.5, 0.5, 0]},
+        {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC3"},
+        {"bufferView": 2, "componentType": 5126, "count": 4, "type": "VEC2"},
+        {"bufferView": 3, "componentType": 5126, "count": 4, "type": "VEC2"},
+        {"bufferView": 4, "componentType": 5123, "count": 6, "type": "SCALAR"}],
+}
+text("pbr.gltf", json.dumps(gltf, indent=1) + "\n")
+
+# OBJ materials for the specular/shininess -> metal-rough conversion, MTL's PBR keys (Pr, Pm), and separate
+# roughness/metallic maps (map_Pr, map_Pm), which the packed metallic-roughness texture cannot hold.
+text("shiny.mtl", """# CC0, LightRig test data: Blinn-Phong and PBR MTL materials
+newmtl glossy
+Kd 0.5 0.5 0.5
+Ks 0.5 0.5 0.5
+Ns 98
+newmtl authored
+Kd 0.8 0.2 0.2
+Pr 0.3
+Pm 0.8
+newmtl matte
+Kd 0.2 0.8 0.2
+newmtl separateMaps
+Kd 0.5 0.5 0.5
+Pr 0.5
+map_Pr checker.png
+map_Pm checker.png
+""")
+text("shiny.obj", """# CC0, LightRig test data: four triangles, one per material
+mtllib shiny.mtl
+v 0 0 0
+v 1 0 0
+v 0 1 0
+vn 0 0 1
+usemtl glossy
+f 1//1 2//1 3//1
+usemtl authored
+f 1//1 2//1 3//1
+usemtl matte
+f 1//1 2//1 3//1
+usemtl separateMaps
+f 1//1 2//1 3//1
+""")
