@@ -29,6 +29,7 @@
 #include <QComboBox>
 #include <QDialog>
 #include <QFile>
+#include <QMenu>
 #include <QPlainTextEdit>
 #include <QSettings>
 #include <QSignalSpy>
@@ -203,6 +204,12 @@ class TestNewUser : public QObject {
         QVERIFY(button->isVisible());
         QVERIFY2(button->text().contains(QLatin1String("3")), qPrintable(button->text()));
         ModelDock* dock = m_window->modelDock();
+        // In the default layout a tab beside Presets and History, and listed in the Window menu.
+        QVERIFY(m_window->tabifiedDockWidgets(m_window->historyDock()).contains(dock));
+        bool inMenu = false;
+        for (QObject* o : dock->toggleViewAction()->associatedObjects())
+            inMenu = inMenu || qobject_cast<QMenu*>(o) != nullptr;
+        QVERIFY(inMenu);
         m_window->presetsDock()->raise(); // the Model dock is a tab behind Presets
         QTest::mouseClick(button, Qt::LeftButton);
         QVERIFY(dock->isVisible());
