@@ -1,5 +1,6 @@
 #include "documentfiles.h"
 
+#include "core/defaultrig.h"
 #include "core/rigjson.h"
 #include "editor/document.h"
 #include "errordialog.h"
@@ -233,6 +234,14 @@ void DocumentFiles::modelImported(const std::shared_ptr<Load>& load, const Model
     }
     m_loading.reset();
     if (result.ok()) {
+        const auto& model = *result.model;
+        if (rigFollowsModel()) {
+            const DefaultRigChoice chosen =
+                chooseDefaultRig(model.hasPbrMaterials(), model.lights, load->path);
+            if (!(chosen.rig == m_doc->rig())) m_doc->newRig(chosen.rig);
+            m_automaticRig = m_doc->rig();
+            note += tr("; lit by %1, %2 shading").arg(chosen.source, toString(chosen.rig.shading.model));
+        }
         m_scene->setModel(result.model, load->path);
         if (!load->path.startsWith(QLatin1String(":/"))) m_recent->add(load->path);
         rememberFolder(FileKind::Model, load->path);
@@ -267,6 +276,15 @@ void DocumentFiles::cancelModelLoad() {
     m_loading.reset();
     emit statusMessage(tr("Model loading cancelled"));
     emit modelLoadFinished();
+}
+
+void DocumentFiles::markRigAutomatic() {
+    m_automaticRig = m_doc->rig();
+}
+
+bool DocumentFiles::rigFollowsModel() const {
+    return m_automaticRig && m_doc->filePath().isEmpty() && !m_doc->isModified() &&
+           m_doc->undoStack()->count() == 0 && m_doc->rig() == *m_automaticRig;
 }
 
 bool DocumentFiles::importLightsFromModel() {

@@ -11,7 +11,10 @@
 #include <functional>
 #include <memory>
 
+#include "core/rig.h"
 #include "model/modelloader.h"
+
+#include <optional>
 
 class QWidget;
 
@@ -61,6 +64,11 @@ class DocumentFiles : public QObject {
     bool isLoadingModel() const { return m_loading != nullptr; }
     void cancelModelLoad();
     bool importLightsFromModel();
+    // The rig now open was chosen automatically (the startup default): while it stays untouched (untitled,
+    // no undo step, unchanged), a model that finishes loading replaces it with core/defaultrig.h's choice
+    // for that model (its own lights and physically based shading for a PBR model, and so on).
+    void markRigAutomatic();
+    bool rigFollowsModel() const;
     // A dropped or recent file: rig files (.json) open as rigs, anything else as a model.
     bool openFile(const QString& path);
     static bool isRigFile(const QString& path);
@@ -85,6 +93,7 @@ class DocumentFiles : public QObject {
     std::shared_ptr<Load> m_loading;
     QFutureWatcher<ModelLoadResult>* m_watcher = nullptr;
     FileKind m_askingKind = FileKind::Rig; // which kind askOpenPath's default dialog is asked for
+    std::optional<Rig> m_automaticRig;     // markRigAutomatic()'s rig, while it may follow the model
 };
 
 } // namespace lr

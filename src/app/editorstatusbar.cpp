@@ -1,16 +1,9 @@
 #include "editorstatusbar.h"
 
-#include <QApplication>
-#include <QClipboard>
-#include <QDialog>
-#include <QDialogButtonBox>
 #include <QLabel>
-#include <QPlainTextEdit>
 #include <QProgressBar>
-#include <QPushButton>
 #include <QStyle>
 #include <QToolButton>
-#include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
 
@@ -33,7 +26,7 @@ EditorStatusBar::EditorStatusBar(QWidget* parent)
     m_warnings->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
     m_warnings->setIcon(style()->standardIcon(QStyle::SP_MessageBoxWarning));
     m_warnings->hide();
-    connect(m_warnings, &QToolButton::clicked, this, &EditorStatusBar::showModelWarnings);
+    connect(m_warnings, &QToolButton::clicked, this, &EditorStatusBar::warningsRequested);
     addPermanentWidget(m_warnings);
     addPermanentWidget(m_progress);
     addPermanentWidget(m_cancel);
@@ -70,49 +63,12 @@ void EditorStatusBar::setLoadProgress(double fraction) {
 }
 
 void EditorStatusBar::setModelWarnings(const QString& fileName, const QStringList& warnings) {
-    m_warningsFile = fileName;
-    m_warningsList = warnings;
     m_warnings->setText(tr("%n import warning(s)", nullptr, int(warnings.size())));
-    m_warnings->setToolTip(warnings.isEmpty()
-                               ? QString()
-                               : tr("%1 was imported with warnings; click to read them").arg(fileName));
+    m_warnings->setToolTip(
+        warnings.isEmpty()
+            ? QString()
+            : tr("%1 was imported with warnings; click to read them in the Model dock").arg(fileName));
     m_warnings->setVisible(!warnings.isEmpty());
-    if (m_warningsText) {
-        m_warningsText->setPlainText(warnings.join(QLatin1Char('\n')));
-        m_warningsDialog->setWindowTitle(tr("Import warnings: %1").arg(fileName));
-        if (warnings.isEmpty()) m_warningsDialog->hide();
-    }
-}
-
-QDialog* EditorStatusBar::showModelWarnings() {
-    if (!m_warningsDialog) {
-        m_warningsDialog = new QDialog(window());
-        m_warningsDialog->setObjectName(QStringLiteral("importWarningsDialog"));
-        auto* layout = new QVBoxLayout(m_warningsDialog);
-        auto* intro =
-            new QLabel(tr("Everything the importer reported for this model (missing or refused "
-                          "textures, dropped geometry, ...). The model loaded; these parts may look "
-                          "different from the file's intent."),
-                       m_warningsDialog);
-        intro->setWordWrap(true);
-        m_warningsText = new QPlainTextEdit(m_warningsDialog);
-        m_warningsText->setReadOnly(true);
-        m_warningsText->setLineWrapMode(QPlainTextEdit::WidgetWidth);
-        auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, m_warningsDialog);
-        QPushButton* copy = buttons->addButton(tr("Copy"), QDialogButtonBox::ActionRole);
-        connect(copy, &QPushButton::clicked, this,
-                [this] { QApplication::clipboard()->setText(m_warningsList.join(QLatin1Char('\n'))); });
-        connect(buttons, &QDialogButtonBox::rejected, m_warningsDialog, &QDialog::hide);
-        layout->addWidget(intro);
-        layout->addWidget(m_warningsText, 1);
-        layout->addWidget(buttons);
-        m_warningsDialog->resize(640, 320);
-    }
-    m_warningsText->setPlainText(m_warningsList.join(QLatin1Char('\n')));
-    m_warningsDialog->setWindowTitle(tr("Import warnings: %1").arg(m_warningsFile));
-    m_warningsDialog->show();
-    m_warningsDialog->raise();
-    return m_warningsDialog;
 }
 
 void EditorStatusBar::hideLoading() {

@@ -1,13 +1,12 @@
 // The main window's status bar: messages, the viewport's frame time (GPU ms from timer queries, CPU ms as a
 // fallback), the progress of a background model load with a Cancel button, and the open model's import
-// warnings: a "⚠ N import warnings" button that stays until the next model and opens the full list.
+// warnings: a "⚠ N import warnings" button that stays until the next model and asks for the full list
+// (warningsRequested: the main window opens the Model dock on its Warnings branch).
 #pragma once
 
 #include <QStatusBar>
 
-class QDialog;
 class QLabel;
-class QPlainTextEdit;
 class QProgressBar;
 class QToolButton;
 
@@ -27,11 +26,10 @@ class EditorStatusBar : public QStatusBar {
     // The model's warnings (model/model.h Model::warnings); none hides the button.
     void setModelWarnings(const QString& fileName, const QStringList& warnings);
     QToolButton* warningsButton() const { return m_warnings; }
-    // The list of warnings, non-modal (created on first use; the button opens it).
-    QDialog* showModelWarnings();
 
   signals:
     void cancelLoadRequested();
+    void warningsRequested(); // the warnings button was clicked
 
   private:
     QLabel* m_rig;
@@ -39,10 +37,6 @@ class EditorStatusBar : public QStatusBar {
     QProgressBar* m_progress;
     QToolButton* m_cancel;
     QToolButton* m_warnings;
-    QDialog* m_warningsDialog = nullptr;
-    QPlainTextEdit* m_warningsText = nullptr;
-    QString m_warningsFile;
-    QStringList m_warningsList;
 };
 
 } // namespace lr

@@ -7,6 +7,7 @@
 #include "editoractions.h"
 #include "editorstatusbar.h"
 #include "lightsdock.h"
+#include "modeldock.h"
 #include "presetsdock.h"
 #include "presetstore.h"
 #include "propertiesdock.h"
@@ -76,6 +77,8 @@ void MainWindow::createDocks() {
     auto* history = new QUndoView(m_doc->undoStack(), m_historyDock);
     history->setEmptyLabel(tr("<opened>"));
     m_historyDock->setWidget(history);
+    m_modelDock = new ModelDock(this); // the model's meshes, materials, textures and warnings
+    m_modelDock->setScene(m_scene);
 
     // The default layout, usable at the default 1280×800 (issue 12: a left column left the light table 250 px
     // wide, its Solo, Colour, Intensity and Falloff columns behind a scrollbar, and Render settings' form
@@ -87,6 +90,7 @@ void MainWindow::createDocks() {
     addDockWidget(Qt::BottomDockWidgetArea, m_lightsDock);
     addDockWidget(Qt::BottomDockWidgetArea, m_presetsDock);
     tabifyDockWidget(m_presetsDock, m_historyDock);
+    tabifyDockWidget(m_historyDock, m_modelDock); // wide at the bottom: warnings read in full
     addDockWidget(Qt::RightDockWidgetArea, m_propertiesDock);
     tabifyDockWidget(m_propertiesDock, m_renderDock);
     addQualityDock(this); // the Quality panel (qualitydock.h), a tab beside Render settings
@@ -113,6 +117,7 @@ void MainWindow::connectStatus() {
     connect(m_scene, &Scene::modelChanged, this, [this] {
         m_status->setModelWarnings(QFileInfo(m_scene->path()).fileName(), m_scene->model()->warnings);
     });
+    connect(m_status, &EditorStatusBar::warningsRequested, m_modelDock, &ModelDock::showWarnings);
     auto summary = [this] {
         const int n = m_doc->lightCount();
         int on = 0;
@@ -142,7 +147,9 @@ void MainWindow::openInitial(const EditorOptions& options) {
     if (rig.isEmpty() && options.modelPath.isEmpty() && options.restoreSession)
         rig = SessionSettings::lastRig();
     m_doc->newRig(defaultRig());
-    if (!rig.isEmpty()) m_files->openRig(rig); // on failure the default rig stays and the error is shown
+    // Without a rig, the model chooses one when it has loaded (core/defaultrig.h: physically based for a
+    // model with PBR materials, with its own lights when it has some).
+    if (rig.isEmpty() || !m_files->openRig(rig)) m_files->markRigAutomatic();
     if (model != bundledModelPath()) {
         // A model that cannot be loaded leaves an empty scene: fall back to the bundled model then.
         connect(

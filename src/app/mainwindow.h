@@ -1,5 +1,5 @@
 // The editor's main window: a central Viewport and the docks (Lights, Properties, Render settings, Presets,
-// History). It wires the parts together and little else: menus and actions live in EditorActions, file
+// History, Model). It wires the parts together and little else: menus and actions live in EditorActions, file
 // handling in DocumentFiles, persistence in SessionSettings/ViewSettings/RecentFiles.
 #pragma once
 
@@ -14,6 +14,7 @@ class DocumentFiles;
 class EditorActions;
 class EditorStatusBar;
 class LightsDock;
+class ModelDock;
 class PresetStore;
 class PresetsDock;
 class PropertiesDock;
@@ -42,6 +43,7 @@ class MainWindow : public QMainWindow {
     RenderSettingsDock* renderSettingsDock() const { return m_renderDock; }
     PresetsDock* presetsDock() const { return m_presetsDock; }
     QDockWidget* historyDock() const { return m_historyDock; }
+    ModelDock* modelDock() const { return m_modelDock; }
     EditorActions* actions() const { return m_actions; }
     EditorStatusBar* editorStatusBar() const { return m_status; }
 
@@ -74,6 +76,7 @@ class MainWindow : public QMainWindow {
     RenderSettingsDock* m_renderDock = nullptr;
     PresetsDock* m_presetsDock = nullptr;
     QDockWidget* m_historyDock = nullptr;
+    ModelDock* m_modelDock = nullptr;
     EditorActions* m_actions = nullptr;
     bool m_restoreSession = true;
 };

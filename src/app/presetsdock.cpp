@@ -19,6 +19,12 @@ namespace lr {
 namespace {
 constexpr int kEntryRole = Qt::UserRole + 1; // index into the store's list when the dock was filled
 
+QString shadingBadge(const std::optional<ShadingModel>& shading) {
+    return !shading                        ? QStringLiteral("?")
+           : *shading == ShadingModel::Pbr ? QObject::tr("PBR")
+                                           : QObject::tr("Classic");
+}
+
 QIcon placeholderIcon(const QString& name) {
     QPixmap pm(PresetsDock::kThumbnailSize, PresetsDock::kThumbnailSize);
     pm.fill(QColor(40, 42, 48));
@@ -118,9 +124,17 @@ void PresetsDock::reload() {
                      : m_rendered.contains(e.path) ? m_rendered.value(e.path)
                                                    : placeholderIcon(e.name);
         if (e.thumbnail.isEmpty() && !m_rendered.contains(e.path)) m_pending.append(e.path);
-        auto* item = new QListWidgetItem(icon, e.name, m_list);
+        // The shading as a badge under the name (issue 13): "PBR" or "Classic".
+        auto* item = new QListWidgetItem(icon, e.name + QLatin1Char('\n') + shadingBadge(e.shading), m_list);
         item->setData(kEntryRole, QVariantList{e.name, e.path, e.thumbnail, e.builtin});
-        item->setToolTip(e.builtin ? tr("%1 (built-in)").arg(e.name) : QDir::toNativeSeparators(e.path));
+        item->setData(kShadingRole, e.shading ? toString(*e.shading) : QString());
+        item->setToolTip((e.builtin ? tr("%1 (built-in)").arg(e.name) : QDir::toNativeSeparators(e.path)) +
+                         QLatin1Char('\n') +
+                         (!e.shading ? tr("The preset cannot be read.")
+                          : *e.shading == ShadingModel::Pbr
+                              ? tr("Physically based shading (glTF BRDF, lights "
+                                   "in candela and lux)")
+                              : tr("Classic shading (Phong / Blinn-Phong)")));
     }
     if (!m_pending.isEmpty() && m_renderThumbnail) m_thumbnailTimer.start();
 }
@@ -190,7 +204,8 @@ void PresetsDock::rebuildMenu(QMenu* menu) {
             menu->addSection(tr("My presets"));
             userSection = true;
         }
-        connect(menu->addAction(e.name), &QAction::triggered, this, [this, e] { applyPreset(e); });
+        connect(menu->addAction(e.name + QStringLiteral("  (%1)").arg(shadingBadge(e.shading))),
+                &QAction::triggered, this, [this, e] { applyPreset(e); });
     }
     menu->addSeparator();
     connect(menu->addAction(tr("Save rig as preset…")), &QAction::triggered, this,

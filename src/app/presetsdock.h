@@ -1,5 +1,6 @@
 // The Presets dock and menu: built-in and user presets with thumbnails. Applying one replaces the rig as
 // one undo step; "Save rig as preset" stores the current rig with a thumbnail rendered by LightRig itself.
+// Each preset shows its shading (a "PBR" or "Classic" badge under its name, kShadingRole).
 #pragma once
 
 #include "presetstore.h"
@@ -25,6 +26,9 @@ class PresetsDock : public QDockWidget {
     // Renders a rig on the current model for a thumbnail (null image when it cannot).
     using ThumbnailRenderer = std::function<QImage(const Rig& rig, const QSize& size)>;
     static constexpr int kThumbnailSize = 96;
+    // An item's data in this role: its preset's shading ("classic", "pbr"; "" when unreadable), which the
+    // item also shows as a "PBR" / "Classic" badge under its name.
+    static constexpr int kShadingRole = Qt::UserRole + 2;
 
     PresetsDock(Document* document, PresetStore* store, QWidget* parent = nullptr);
     // Also renders the thumbnails of presets that have none (built-ins), a few per event-loop pass.

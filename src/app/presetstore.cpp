@@ -27,6 +27,8 @@ QList<PresetEntry> PresetStore::presets() const {
         out.append(
             {f.completeBaseName(), f.absoluteFilePath(), QFileInfo::exists(png) ? png : QString(), false});
     }
+    for (PresetEntry& e : out)
+        if (const RigReadResult r = read(e); r.ok()) e.shading = r.rig->shading.model;
     return out;
 }
 

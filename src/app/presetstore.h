@@ -7,6 +7,7 @@
 #include <QImage>
 #include <QList>
 #include <QObject>
+#include <optional>
 
 namespace lr {
 
@@ -15,6 +16,8 @@ struct PresetEntry {
     QString path;      // rig file (":/resources/presets/NAME.json" for built-ins)
     QString thumbnail; // PNG path, empty when none
     bool builtin = false;
+    std::optional<ShadingModel>
+        shading; // the preset's shading (issue 13: shown as a badge); unset: unreadable
 };
 
 class PresetStore : public QObject {

@@ -69,6 +69,12 @@ RenderSettingsDock::RenderSettingsDock(Document* document, ViewSettings* setting
     connect(m_settings, &ViewSettings::changed, this, &RenderSettingsDock::loadView);
 
     // Rig shading: undoable document edits.
+    connect(m_ui->shadingModel, &QComboBox::activated, this, [this](int i) {
+        if (ShadingModel(i) != m_doc->rig().shading.model)
+            setRigValue(int(RigProperty::ShadingModel), toString(ShadingModel(i)), false);
+    });
+    for (QWidget* w : classicOnlyWidgets())
+        m_classicToolTips.append(w->toolTip());
     connect(m_ui->specularModel, &QComboBox::activated, this, [this](int i) {
         setRigValue(int(RigProperty::SpecularModel), toString(SpecularModel(i)), false);
     });
@@ -139,10 +145,29 @@ void RenderSettingsDock::loadRig() {
         m_ui->rigName->setText(rig.name);
     }
     m_ui->rigSpace->setCurrentIndex(int(rig.space));
+    m_ui->shadingModel->setCurrentIndex(int(rig.shading.model));
+    // Under physically based shading the classic-only values are kept (switching back restores them) but
+    // mean nothing: disabled, and the tooltip says why.
+    const bool classic = rig.shading.model == ShadingModel::Classic;
+    const QList<QWidget*> classicOnly = classicOnlyWidgets();
+    for (qsizetype i = 0; i < classicOnly.size(); ++i) {
+        classicOnly[i]->setEnabled(classic);
+        classicOnly[i]->setToolTip(classic ? m_classicToolTips.value(i) : classicOnlyToolTip());
+    }
     m_ui->specularModel->setCurrentIndex(int(rig.shading.specular));
     m_ui->viewerModel->setCurrentIndex(int(rig.shading.viewer));
     m_ui->shininess->setValueQuietly(rig.shading.shininess);
     m_ui->ambient->setColor(rig.ambient);
+}
+
+QList<QWidget*> RenderSettingsDock::classicOnlyWidgets() const {
+    return {m_ui->specularModel, m_ui->viewerModel, m_ui->shininess,
+            m_ui->specularLabel, m_ui->viewerLabel, m_ui->shininessLabel};
+}
+
+QString RenderSettingsDock::classicOnlyToolTip() {
+    return tr("Classic shading only: physically based shading uses each material's metallic and roughness "
+              "(the glTF BRDF) and always the local viewer. Switch Shading to Classic to use it.");
 }
 
 void RenderSettingsDock::setRigValue(int property, const QVariant& value, bool continuous) {

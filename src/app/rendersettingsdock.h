@@ -1,13 +1,16 @@
 // The Render settings dock (form ui/rendersettings.ui): view settings (exposure, tone mapping, quality,
-// background, grid, gizmos; ViewSettings, kept in QSettings) and the rig's shading values (specular model,
-// viewer, shininess, ambient; undoable Document edits) and the rig's space (world or model; switching
-// converts the lights so they stay where they are, one undo step), and the model's up axis (scene.h, per
-// file).
+// background, grid, gizmos; ViewSettings, kept in QSettings) and the rig's shading values (shading classic or
+// physically based, specular model, viewer, shininess, ambient; undoable Document edits; the classic-only
+// ones disabled, with a tooltip saying why, under physically based shading) and the rig's space (world or
+// model; switching converts the lights so they stay where they are, one undo step), and the model's up axis
+// (scene.h, per file).
 #pragma once
 
 #include "core/prepare.h"
 
 #include <QDockWidget>
+#include <QList>
+#include <QStringList>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -29,6 +32,10 @@ class RenderSettingsDock : public QDockWidget {
     ~RenderSettingsDock() override;
 
     Ui::RenderSettingsForm* form() const { return m_ui.get(); }
+    // The controls that mean something only under classic shading (disabled under Pbr) and their tooltip
+    // then.
+    QList<QWidget*> classicOnlyWidgets() const;
+    static QString classicOnlyToolTip();
     // The model's bounding sphere, for the Space switch (editor/changerigspace.h converts the lights
     // through it). Unset: the unit sphere.
     void setSceneFrameProvider(std::function<SceneFrame()> frame) { m_frame = std::move(frame); }
@@ -47,6 +54,7 @@ class RenderSettingsDock : public QDockWidget {
     std::optional<int> m_editToken;
     std::function<SceneFrame()> m_frame;
     Scene* m_scene = nullptr;
+    QStringList m_classicToolTips; // classicOnlyWidgets()' own tooltips, restored under classic shading
 };
 
 } // namespace lr

@@ -14,7 +14,8 @@ class SessionSettings {
   public:
     // Bump when the dock set changes so an old layout is not restored onto new docks.
     // 2: the default layout of issue 12 (table at the bottom, Properties the whole right column).
-    static constexpr int kStateVersion = 2;
+    // 3: issue 13's Model dock, a tab beside Presets and History.
+    static constexpr int kStateVersion = 3;
 
     static void saveWindow(const QMainWindow* window);
     static bool restoreWindow(QMainWindow* window); // false when nothing was stored

@@ -25,10 +25,9 @@ namespace lr::cli {
 namespace {
 
 const char* kUsage =
-    "lightrig bench [MODEL...] [--rig RIG] [--camera-index N | --view NAME] [--lights "
-    "N,...] [--light-type T,...] "
-    "[--size WxH] [--frames N] [--msaa N] [--interactive] [--quality LIST] [--approximations LIST] [--json "
-    "OUT.json] [--chart OUT.png] [--scaling-chart OUT.png]";
+    "lightrig bench [MODEL...] [--rig RIG] [--camera-index N | --view NAME] [--lights N,...] "
+    "[--light-type T,...] [--size WxH] [--shading classic|pbr] [--frames N] [--msaa N] [--interactive] "
+    "[--quality LIST] [--approximations LIST] [--json OUT.json] [--chart OUT.png] [--scaling-chart OUT.png]";
 
 const char* kBundledModel = ":/resources/models/suzanne/Suzanne.gltf";
 
@@ -241,8 +240,11 @@ int runBench(const QStringList& args) {
                 p.type = type;
                 p.count = n;
                 p.range = range;
+                // The procedural lights shaded as the model's default rig would be (or as --shading says).
+                Rig rig = proceduralRig(p);
+                rig.shading.model = loaded.rig.shading.model;
                 scenes.push_back({QStringLiteral("%1 · %2").arg(base, proceduralRigName(p)), loaded.model,
-                                  loadMs, proceduralRig(p), loaded.camera});
+                                  loadMs, std::move(rig), loaded.camera});
             }
         }
     }

@@ -1,5 +1,6 @@
 #include "sceneoptions.h"
 
+#include "core/defaultrig.h"
 #include "core/lighting.h"
 #include "core/rigjson.h"
 #include "model/isolatedimport.h"
@@ -32,10 +33,15 @@ SceneOptionSet::SceneOptionSet()
                QStringLiteral("EV")),
       toneMap(QStringLiteral("tonemap"),
               QStringLiteral("Tone map: %1 (default clamp).").arg(allowedNames<ToneMap>()),
-              QStringLiteral("OP")) {}
+              QStringLiteral("OP")),
+      shading(QStringLiteral("shading"),
+              QStringLiteral("Shading: %1 (default: the rig's; without --rig, pbr for a model with "
+                             "physically based materials, else classic).")
+                  .arg(allowedNames<ShadingModel>()),
+              QStringLiteral("MODEL")) {}
 
 void SceneOptionSet::addTo(QCommandLineParser& parser) const {
-    parser.addOptions({rig, cameraIndex, view, size, quality, exposure, toneMap});
+    parser.addOptions({rig, cameraIndex, view, size, quality, exposure, toneMap, shading});
 }
 
 std::optional<QSize> parseSize(const QString& text, int maxSide) {
@@ -108,6 +114,13 @@ std::optional<SceneOptions> SceneOptionSet::read(const QCommandLineParser& p, QS
                            .arg(allowedNames<ToneMap>(), p.value(toneMap)));
         o.toneMap = *t;
     }
+    if (p.isSet(shading)) {
+        const auto m = fromString<ShadingModel>(p.value(shading));
+        if (!m)
+            return bad(QStringLiteral("--shading must be %1, got '%2'")
+                           .arg(allowedNames<ShadingModel>(), p.value(shading)));
+        o.shading = *m;
+    }
     return o;
 }
 
@@ -128,15 +141,15 @@ bool loadScene(const QString& modelPath, const SceneOptions& options, LoadedScen
                 *error += QStringLiteral(" (and %1 more errors)").arg(r.errors.size() - 1);
             return false;
         }
-        scene->rig = *r.rig;
+        scene->rig = options.shading ? withShading(*r.rig, *options.shading) : *r.rig;
         scene->rigSource = options.rigPath;
-    } else if (!model.lights.lights.empty()) {
-        scene->rig = model.lights;
-        scene->rigSource = QStringLiteral("the model's lights");
     } else {
-        scene->rig = defaultRig();
-        scene->rigSource = QStringLiteral("the default rig");
+        DefaultRigChoice chosen =
+            chooseDefaultRig(model.hasPbrMaterials(), model.lights, modelPath, options.shading);
+        scene->rig = std::move(chosen.rig);
+        scene->rigSource = chosen.source;
     }
+    scene->rigSource += QStringLiteral(", %1 shading").arg(toString(scene->rig.shading.model));
     const double aspect = double(options.size.width()) / double(options.size.height());
     const auto fromFile = [&](int index) {
         const Camera& c = model.cameras[size_t(index)];

@@ -1,6 +1,9 @@
 // The scene options shared by `lightrig render` and `lightrig bench`: which model, rig, camera, size,
 // quality, exposure and tone map; and loading the scene they describe (model, rig, camera).
-//   --rig RIG.json        without it: the model's own lights when it has some, else the default rig
+//   --rig RIG.json        without it: core/defaultrig.h's rule (physically based materials: PBR shading with
+//                         the model's own lights, else the PBR default rig; otherwise classic shading with
+//                         the model's own lights, else the default rig)
+//   --shading classic|pbr overrides the shading of whichever rig is used
 //   --camera-index N | --view NAME   default: the model's camera 0, else "three-quarter" framing all
 //   --size WxH (1280x720) --quality Q --exposure EV --tonemap clamp|reinhard|aces
 #pragma once
@@ -29,10 +32,11 @@ struct SceneOptions {
     std::vector<Quality> qualities{Quality::Exact}; // --quality A,B,... where a list is allowed (bench)
     double exposureEV = 0.0;
     ToneMap toneMap = ToneMap::Clamp;
+    std::optional<ShadingModel> shading; // --shading; unset: the rig's own (or the default rule's)
 };
 
 struct SceneOptionSet {
-    QCommandLineOption rig, cameraIndex, view, size, quality, exposure, toneMap;
+    QCommandLineOption rig, cameraIndex, view, size, quality, exposure, toneMap, shading;
     SceneOptionSet();
     void addTo(QCommandLineParser& parser) const;
     // The parsed values, or a usage error message (exit 2). qualityList: --quality takes a comma list.
@@ -43,7 +47,9 @@ struct SceneOptionSet {
 struct LoadedScene {
     std::shared_ptr<Model> model;
     Rig rig;
-    QString rigSource; // "RIG.json", "the model's lights" or "the default rig"
+    // "RIG.json", "the model's lights", "the default rig" or "the physically based default rig", and the
+    // shading: "the model's lights, pbr shading"
+    QString rigSource;
     ViewCamera camera;
     QString cameraSource; // "camera 0 of the model", "view three-quarter"
 };

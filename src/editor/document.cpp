@@ -2,9 +2,11 @@
 
 #include "core/rigjson.h"
 #include "editor/commands.h"
+#include "editor/placement.h"
 
 #include <QFileInfo>
 #include <algorithm>
+#include <glm/geometric.hpp>
 
 namespace lr {
 
@@ -154,7 +156,8 @@ QString Document::uniqueLightName(const QString& base, const QSet<QString>& take
 }
 
 bool Document::addLight(LightType type, QString* error) {
-    const Light light = makeLight(type, uniqueLightName(lightTypeLabel(type)));
+    Light light = makeLight(type, uniqueLightName(lightTypeLabel(type)));
+    if (m_rig.shading.model == ShadingModel::Pbr) makePhysicallyBased(light, glm::length(light.position));
     return addLights(-1, {light}, tr("Add %1 light").arg(toString(type)), error);
 }
 

@@ -97,7 +97,8 @@ class Document : public QObject {
     bool setLightValues(const QList<int>& rows, LightProperty property, const QVariantList& values,
                         QString* error = nullptr);
     bool setRigValue(RigProperty property, const QVariant& value, QString* error = nullptr);
-    // Appends makeLight(type, a unique name like "Spot 2") and selects it.
+    // Appends makeLight(type, a unique name like "Spot 2") and selects it (made physically based, as
+    // placement.h's makePhysicallyBased, in a physically based rig).
     bool addLight(LightType type, QString* error = nullptr);
     // Inserts lights at row (-1: append) as one step and selects them.
     bool addLights(int row, const std::vector<Light>& lights, const QString& text, QString* error = nullptr);

@@ -562,6 +562,8 @@ QString rigPropertyName(RigProperty p) {
         return QStringLiteral("viewer model");
     case RigProperty::Shininess:
         return QStringLiteral("shininess");
+    case RigProperty::ShadingModel:
+        return QStringLiteral("shading model");
     case RigProperty::Any:
         break;
     }
@@ -592,6 +594,8 @@ QVariant rigValue(const Rig& r, RigProperty p) {
         return QVariant::fromValue(r.shading.viewer);
     case RigProperty::Shininess:
         return r.shading.shininess;
+    case RigProperty::ShadingModel:
+        return QVariant::fromValue(r.shading.model);
     case RigProperty::Any:
         break;
     }
@@ -643,6 +647,8 @@ QString validateRigValue(RigProperty p, const QVariant& v) {
         return checkEnum<ViewerModel>(rigPropertyName(p), v);
     case RigProperty::Shininess:
         return checkRange(rigPropertyName(p), toDouble(v), 0.0, kMaxShininess, true);
+    case RigProperty::ShadingModel:
+        return checkEnum<ShadingModel>(rigPropertyName(p), v);
     case RigProperty::Any:
         break;
     }
@@ -698,6 +704,9 @@ void applyRigValue(Rig& r, RigProperty p, const QVariant& v) {
         break;
     case RigProperty::Shininess:
         r.shading.shininess = toDouble(v).value_or(r.shading.shininess);
+        break;
+    case RigProperty::ShadingModel:
+        if (auto s = toEnum<ShadingModel>(v)) r.shading.model = *s;
         break;
     case RigProperty::Any:
         break;

@@ -65,7 +65,9 @@ enum class LightProperty {
 };
 constexpr int kLightPropertyCount = int(LightProperty::Any);
 
-enum class RigProperty { Name, Space, Ambient, SpecularModel, ViewerModel, Shininess, Any };
+// ShadingModel: classic or physically based (core/rig.h Shading::model); the classic-only values (specular
+// model, viewer, shininess) stay editable but mean nothing under Pbr.
+enum class RigProperty { Name, Space, Ambient, SpecularModel, ViewerModel, Shininess, ShadingModel, Any };
 constexpr int kRigPropertyCount = int(RigProperty::Any);
 
 // Limits the editor enforces: the rig format's own (core/rigjson.h), so a saved rig always loads again.

@@ -1,9 +1,11 @@
 #include "editor/placement.h"
 
 #include "core/lighting.h"
+#include "core/rigjson.h"
 #include "editor/document.h"
 
 #include <QCoreApplication>
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -40,7 +42,25 @@ Light placeNewLight(const Rig& rig, LightType type, const QString& name, const P
     if (l.usesFalloff() && l.falloff.hasRange())
         l.falloff.range = kPlacementRange * radius * distanceScale(rig, f);
     if (type == LightType::Spot || type == LightType::Directional) l.direction = -out; // towards the centre
+    if (rig.shading.model == ShadingModel::Pbr)
+        makePhysicallyBased(l, kPlacementDistance * radius * distanceScale(rig, f));
     return l;
+}
+
+void makePhysicallyBased(Light& l, double distance) {
+    if (l.type == LightType::Rim) return; // a rim light adds its classic term under PBR too
+    l.diffuse = DiffuseModel::Lambert;
+    if (l.type == LightType::Directional) {
+        l.intensity = kPbrPlacementIlluminance;
+        return;
+    }
+    const double d = std::isfinite(distance) && distance > 0.0 ? distance : 1.0;
+    l.intensity = std::min(kPbrPlacementIlluminance * d * d, kMaxRigIntensity);
+    l.falloff.model = FalloffModel::InverseSquare; // the range window keeps the placement's range
+    if (l.usesCone()) {
+        l.cone.model = ConeModel::Smooth;
+        l.cone.exponent = 2.0;
+    }
 }
 
 bool addPlacedLight(Document* doc, LightType type, const PlacementView& view, QString* error) {

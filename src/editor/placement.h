@@ -26,6 +26,16 @@ struct PlacementView {
     glm::dvec3 up{0.0, 1.0, 0.0};           // the camera's up
 };
 
+// Under physically based shading (rig.shading.model == Pbr) a new light is KHR_lights_punctual-like: an
+// inverse-square falloff with the range window, a smooth cone of exponent 2 for spots, Lambert, and an
+// intensity in candela (point, spot: kPbrPlacementIlluminance × distance², the distance from the model's
+// centre in the rig's units) or lux (directional: kPbrPlacementIlluminance), so that a light placed as
+// below lights a mid-grey model at about the level a classic default light does (docs/rig-format.md).
+// Candela past the format's limit (kMaxRigIntensity: a world-space rig around a model over ~200 units
+// across) are clamped to it: the light stays valid, the model is lit less.
+constexpr double kPbrPlacementIlluminance = 2.0; // lux at the model's centre
+void makePhysicallyBased(Light& light, double distance);
+
 // makeLight(type, name) moved, aimed and scaled for the model. `index` picks the spot around the viewer's
 // side (0, 1, 2, ...: the number of lights already in the rig gives successive lights different places).
 Light placeNewLight(const Rig& rig, LightType type, const QString& name, const PlacementView& view,

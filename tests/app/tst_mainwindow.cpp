@@ -17,6 +17,7 @@
 #include "app/scene.h"
 #include "app/screenshotdialog.h"
 #include "app/viewport.h"
+#include "core/defaultrig.h"
 #include "core/rigjson.h"
 #include "editor/document.h"
 #include "model/isolatedimport.h"
@@ -494,6 +495,45 @@ class TestMainWindow : public QObject {
         QCOMPARE(second.scene()->path(), MainWindow::bundledModelPath());
         QCOMPARE(second.size(), QSize(1111, 777));
         QVERIFY(second.propertiesDock()->isHidden());
+    }
+
+    // Issue 13: opened without a rig, the editor lets the model choose (core/defaultrig.h, as `render`
+    // does): the bundled Suzanne keeps the classic default; a model with lights gets them, shaded physically
+    // based exactly when its imported materials are; once the user edits the rig, it is theirs and the next
+    // model keeps it.
+    void modelOpenedWithoutARig_choosesItsDefaultRig() {
+        MainWindow w;
+        w.files()->askTexturesOutsideFolder = [](const QString&, const QStringList&) { return false; };
+        QSignalSpy first(w.files(), &DocumentFiles::modelLoadFinished);
+        EditorOptions options;
+        options.restoreSession = false;
+        w.openInitial(options);
+        QVERIFY(first.count() > 0 || first.wait(60000));
+        QCOMPARE(w.scene()->path(), MainWindow::bundledModelPath());
+        QVERIFY(w.document()->rig() == defaultRig());
+        QVERIFY(w.files()->rigFollowsModel());
+
+        const QString path = QStringLiteral(LIGHTRIG_TEST_DATA "/model/scene.gltf");
+        QSignalSpy loaded(w.files(), &DocumentFiles::modelLoaded);
+        QVERIFY(w.files()->openModel(path));
+        QVERIFY(loaded.wait(60000));
+        const lr::ModelLoadResult imported = importModelIsolated(path);
+        QVERIFY2(imported.ok(), qPrintable(imported.error));
+        const Model& model = *imported.model;
+        QVERIFY(!model.lights.lights.empty());
+        const Rig& rig = w.document()->rig();
+        QVERIFY(rig.lights == model.lights.lights);
+        QCOMPARE(int(rig.shading.model), int(defaultShadingFor(model.hasPbrMaterials(), path)));
+        QCOMPARE(w.document()->undoStack()->count(), 0);
+        QVERIFY(!w.document()->isModified());
+
+        QVERIFY(w.document()->setRigValue(RigProperty::Name, QStringLiteral("mine")));
+        const Rig mine = w.document()->rig();
+        QVERIFY(!w.files()->rigFollowsModel());
+        QSignalSpy again(w.files(), &DocumentFiles::modelLoaded);
+        QVERIFY(w.files()->openModel(QStringLiteral(LIGHTRIG_TEST_DATA "/model/quad.obj")));
+        QVERIFY(again.wait(60000));
+        QVERIFY(w.document()->rig() == mine);
     }
 };
 

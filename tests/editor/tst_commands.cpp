@@ -311,6 +311,7 @@ class TestCommands : public QObject {
                                   << QVariant::fromValue(SpecularModel::BlinnPhong);
         QTest::newRow("viewer") << RigProperty::ViewerModel << QVariant(QStringLiteral("infinite"));
         QTest::newRow("shininess") << RigProperty::Shininess << QVariant(64.0);
+        QTest::newRow("shading model") << RigProperty::ShadingModel << QVariant(QStringLiteral("pbr"));
     }
 
     void changeRigValue() {
@@ -331,6 +332,8 @@ class TestCommands : public QObject {
         QVERIFY(!doc.setRigValue(RigProperty::Ambient, QVariant::fromValue(glm::dvec3(std::nan(""), 0, 0)),
                                  &error));
         QVERIFY(!doc.setRigValue(RigProperty::Space, QStringLiteral("galaxy"), &error));
+        QVERIFY(!doc.setRigValue(RigProperty::ShadingModel, QStringLiteral("phong"), &error));
+        QVERIFY2(error.contains(QLatin1String("shading model")), qPrintable(error));
         QCOMPARE(bytes(doc), before);
         QCOMPARE(doc.undoStack()->count(), 0);
         {

@@ -1,13 +1,16 @@
 // Issue 12 item 3: new lights are placed relative to the model (any size) and a rig switches between model
 // and world space as one undo step without its lights moving in the scene.
 #include "core/prepare.h"
+#include "core/rigjson.h"
 #include "editor/changerigspace.h"
+#include "editor/lightproperty.h"
 #include "editor/placement.h"
 #include "rigfixture.h"
 
 #include <QSignalSpy>
 #include <QTest>
 #include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
 using namespace lr;
 
@@ -97,6 +100,93 @@ class TestPlacement : public QObject {
         }
         const Light d = placeNewLight(rig, LightType::Directional, QStringLiteral("D"), view, 0);
         QVERIFY(glm::dot(d.direction, view.towardViewer) < 0.0); // travels from the viewer's side
+    }
+
+    // Issue 13: in a physically based rig a new light is KHR_lights_punctual-like (inverse-square with the
+    // range window, smooth cone of exponent 2, Lambert) with an intensity in candela / lux that lights the
+    // nearest point of the model visibly, neither black nor blown out — in world space on a big model and in
+    // model space alike. In a classic rig nothing changes.
+    void newLightsInAPbrRig_areKhrLikeAndLightTheModel_data() {
+        QTest::addColumn<int>("space");
+        QTest::addColumn<int>("type");
+        for (RigSpace space : {RigSpace::World, RigSpace::Model})
+            for (LightType type : {LightType::Point, LightType::Spot, LightType::Directional})
+                QTest::newRow(qPrintable(lr::toString(space) + QLatin1Char(' ') + lr::toString(type)))
+                    << int(space) << int(type);
+    }
+
+    void newLightsInAPbrRig_areKhrLikeAndLightTheModel() {
+        QFETCH(int, space);
+        QFETCH(int, type);
+        // A model of radius 50 (world units): candela stay within the format's limit in either space.
+        const SceneFrame model{kBigModel.center, 50.0};
+        PlacementView placement = bigView();
+        placement.frame = model;
+        Rig rig;
+        rig.space = RigSpace(space);
+        rig.shading.model = ShadingModel::Pbr;
+        const Light l = placeNewLight(rig, LightType(type), QStringLiteral("L"), placement, 0);
+        Rig classicRig = rig;
+        classicRig.shading.model = ShadingModel::Classic;
+        const Light classic = placeNewLight(classicRig, LightType(type), QStringLiteral("L"), placement, 0);
+        QCOMPARE(l.position, classic.position);
+        QCOMPARE(l.direction, classic.direction);
+        QVERIFY(!(l == classic));
+        QVERIFY(l.diffuse == DiffuseModel::Lambert);
+        if (l.usesFalloff()) {
+            QVERIFY(l.falloff.model == FalloffModel::InverseSquare);
+            QCOMPARE(l.falloff.range, classic.falloff.range);
+            const double d = kPlacementDistance * model.radius * distanceScale(rig, model);
+            QVERIFY(std::abs(l.intensity - kPbrPlacementIlluminance * d * d) <= 1e-9 * l.intensity);
+        } else {
+            QCOMPARE(l.intensity, kPbrPlacementIlluminance);
+        }
+        if (l.usesCone()) {
+            QVERIFY(l.cone.model == ConeModel::Smooth);
+            QCOMPARE(l.cone.exponent, 2.0);
+        }
+        QVERIFY(validateLight(l).isEmpty());
+
+        // The model's surface nearest the light, facing it, seen from the viewer's side: a mid-grey rough
+        // dielectric there is lit to a visible, unclipped level.
+        rig.lights = {l};
+        const glm::dvec3 toLight = l.usesPosition()
+                                       ? glm::normalize(rigToWorld(rig, model, l.position) - model.center)
+                                       : -l.direction;
+        const glm::dvec3 eye = model.center + placement.towardViewer * (4.0 * model.radius);
+        const glm::dmat4 view = glm::lookAt(eye, model.center, glm::dvec3(0, 1, 0));
+        const auto lights = prepareLights(rig, model, view);
+        QCOMPARE(lights.size(), size_t(1));
+        lighting::Surface<double> s;
+        s.position = glm::dvec3(view * glm::dvec4(model.center + toLight * model.radius, 1.0));
+        s.normal = glm::normalize(glm::dvec3(view * glm::dvec4(toLight, 0.0)));
+        s.albedo = glm::dvec3(0.5);
+        s.roughness = 0.8;
+        const glm::dvec3 c = lighting::shadeSurface<double>(s, lights, prepareSettings(rig, model));
+        QVERIFY2(c.g > 0.1 && c.g < 1.0, qPrintable(QString::number(c.g)));
+
+        // A model so large (world units) that the candela needed pass the format's limit: clamped to it,
+        // still a valid light.
+        Rig world;
+        world.shading.model = ShadingModel::Pbr;
+        const Light far = placeNewLight(world, LightType::Point, QStringLiteral("F"), bigView(), 0);
+        QCOMPARE(far.intensity, kMaxRigIntensity);
+        QVERIFY(validateLight(far).isEmpty());
+    }
+
+    void addLightInAPbrDocument_isKhrLike() {
+        Document doc;
+        Rig rig;
+        rig.shading.model = ShadingModel::Pbr;
+        doc.newRig(rig);
+        QVERIFY(doc.addLight(LightType::Spot));
+        const Light& l = doc.light(0);
+        QVERIFY(l.falloff.model == FalloffModel::InverseSquare);
+        QCOMPARE(l.cone.exponent, 2.0);
+        QCOMPARE(l.intensity, kPbrPlacementIlluminance * glm::dot(l.position, l.position));
+        doc.newRig(Rig{});
+        QVERIFY(doc.addLight(LightType::Spot));
+        QVERIFY(doc.light(0) == makeLight(LightType::Spot, doc.light(0).name)); // classic: as before
     }
 
     void successiveLightsDoNotStack() {

@@ -40,8 +40,9 @@ class TestBenchCli : public QObject {
     void help() {
         const Run r = lightrig({QStringLiteral("--help")});
         QVERIFY2(r.code == 0, qPrintable(show(r)));
-        for (const char* option : {"--lights", "--quality", "--json", "--chart", "--frames", "--msaa",
-                                   "--rig", "--camera-index", "--view", "--size", "--exposure", "--tonemap"})
+        for (const char* option :
+             {"--lights", "--quality", "--json", "--chart", "--frames", "--msaa", "--rig", "--camera-index",
+              "--view", "--size", "--exposure", "--tonemap", "--shading"})
             QVERIFY2(r.out.contains(QLatin1String(option)), option);
     }
 
@@ -61,6 +62,7 @@ class TestBenchCli : public QObject {
         QTest::addRow("bad size") << QStringList{"--size", "12"};
         QTest::addRow("bad approximation") << QStringList{"--approximations", "b1,b9"};
         QTest::addRow("unknown option") << QStringList{"--fastest"};
+        QTest::addRow("bad shading") << QStringList{"--shading", "phong"}; // issue 13
     }
 
     void usageErrors() {
@@ -68,6 +70,9 @@ class TestBenchCli : public QObject {
         const Run r = lightrig(args);
         QVERIFY2(r.code == 2, qPrintable(show(r)));
         QVERIFY2(r.err.contains(QStringLiteral("Usage: lightrig bench")), qPrintable(show(r)));
+        if (args.first() == QLatin1String("--shading"))
+            QVERIFY2(r.err.contains(QStringLiteral("--shading must be \"classic\" or \"pbr\", got 'phong'")),
+                     qPrintable(show(r)));
     }
 
     void badInputsWriteNothing() {
@@ -143,6 +148,18 @@ class TestBenchCli : public QObject {
             }
         QVERIFY2(blue > 50 && green > 50,
                  qPrintable(QStringLiteral("%1 blue, %2 green").arg(blue).arg(green)));
+    }
+
+    // Issue 13: --shading pbr benches the model's lights physically based (the fast tier, 2 frames).
+    void modelShadedPhysicallyBased() {
+        if (!haveDisplay()) QSKIP("needs an X display with OpenGL: run under xvfb-run -a");
+        const Run r =
+            lightrig({QStringLiteral(LIGHTRIG_TEST_DATA "/model/scene.gltf"), QStringLiteral("--shading"),
+                      QStringLiteral("pbr"), QStringLiteral("--quality"), QStringLiteral("fast"),
+                      QStringLiteral("--size"), QStringLiteral("48x32"), QStringLiteral("--frames"),
+                      QStringLiteral("2"), QStringLiteral("--no-uber"), QStringLiteral("--no-errors")});
+        QVERIFY2(r.code == 0, qPrintable(show(r)));
+        QVERIFY(r.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts).size() == 3);
     }
 
     void modelWithItsRigAndOneTier() {

@@ -2,7 +2,9 @@
 // 1 (bad model, rig, camera or path: one line on stderr, nothing written), 2 (usage); PNG and JPEG by
 // extension; and image baselines of real models (tests/data/render/baselines, compared per pixel;
 // a missing baseline is written and the test fails so that it gets reviewed and committed).
+#include "core/defaultrig.h"
 #include "glfixture.h"
+#include "model/isolatedimport.h"
 #include "support/cli.h"
 
 #include <QDir>
@@ -274,6 +276,57 @@ class TestRenderCli : public QObject {
         const QImage t(path(QStringLiteral("clear.png")));
         QCOMPARE(qAlpha(t.pixel(0, 0)), 0);
         QCOMPARE(qAlpha(t.pixel(80, 45)), 255);
+    }
+
+    // Issue 13: --shading classic|pbr, a usage error for anything else (naming the option).
+    void shadingOption() {
+        const Run bad = lightrig({suzanne(), QStringLiteral("--shading"), QStringLiteral("phong"),
+                                  QStringLiteral("-o"), path(QStringLiteral("never.png"))});
+        QVERIFY2(bad.code == 2, qPrintable(bad.show()));
+        QVERIFY2(bad.err.contains(QLatin1String("--shading must be \"classic\" or \"pbr\", got 'phong'")),
+                 qPrintable(bad.show()));
+        QVERIFY(!QFile::exists(path(QStringLiteral("never.png"))));
+        LR_REQUIRE_DISPLAY();
+        const QStringList small{QStringLiteral("--size"), QStringLiteral("64x48"), QStringLiteral("-o"),
+                                path(QStringLiteral("shading.png"))};
+        Run r = lightrig(QStringList{suzanne()} + small);
+        QVERIFY2(r.code == 0 && r.out.contains(QLatin1String("(the default rig, classic shading)")),
+                 qPrintable(r.show()));
+        r = lightrig(QStringList{suzanne(), QStringLiteral("--shading"), QStringLiteral("pbr")} + small);
+        QVERIFY2(r.code == 0 &&
+                     r.out.contains(QLatin1String("(the physically based default rig, pbr shading)")),
+                 qPrintable(r.show()));
+        const QString rig = QStringLiteral(LIGHTRIG_SOURCE_DIR "/resources/presets/three-point.json");
+        r = lightrig(QStringList{suzanne(), QStringLiteral("--rig"), rig, QStringLiteral("--shading"),
+                                 QStringLiteral("pbr")} +
+                     small);
+        QVERIFY2(r.code == 0 && r.out.contains(QStringLiteral("(%1, pbr shading)").arg(rig)),
+                 qPrintable(r.show()));
+    }
+
+    // Issue 13: without --rig, a model's default rig follows core/defaultrig.h — its own lights, shaded
+    // physically based exactly when its imported materials are (the test imports it to know).
+    void defaultRigFollowsTheMaterials_data() {
+        QTest::addColumn<QString>("model");
+        QTest::newRow("scene.gltf") << QStringLiteral(LIGHTRIG_TEST_DATA "/model/scene.gltf");
+        QTest::newRow("helmet_8pt") << shared("bench/helmet_8pt.glb");
+    }
+
+    void defaultRigFollowsTheMaterials() {
+        QFETCH(QString, model);
+        if (!QFile::exists(model)) QSKIP("../shared/models is not here (third-party test models)");
+        LR_REQUIRE_DISPLAY();
+        lr::setImportWorkerExecutable(QStringLiteral(LIGHTRIG_EXECUTABLE));
+        const lr::ModelLoadResult imported = lr::importModelIsolated(model);
+        QVERIFY2(imported.ok(), qPrintable(imported.error));
+        QVERIFY(!imported.model->lights.lights.empty());
+        const QString expected =
+            lr::toString(lr::defaultShadingFor(imported.model->hasPbrMaterials(), model));
+        const Run r = lightrig({model, QStringLiteral("--size"), QStringLiteral("64x48"),
+                                QStringLiteral("-o"), path(QStringLiteral("own-lights.png"))});
+        QVERIFY2(r.code == 0 &&
+                     r.out.contains(QStringLiteral("(the model's lights, %1 shading)").arg(expected)),
+                 qPrintable(r.show() + QStringLiteral("\nexpected %1 shading").arg(expected)));
     }
 
     void baselineSuzanne() {
