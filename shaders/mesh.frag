@@ -7,7 +7,8 @@
 //     (deferred.frag) and for the CPU double-precision reference.
 in vec3 vPosition;
 in vec3 vNormal;
-#if defined(LR_BASE_COLOR_TEXTURE) || defined(LR_NORMAL_MAP) || defined(LR_EMISSIVE_TEXTURE)
+#if defined(LR_BASE_COLOR_TEXTURE) || defined(LR_NORMAL_MAP) || defined(LR_EMISSIVE_TEXTURE) || \
+    defined(LR_METAL_ROUGH_TEXTURE) || defined(LR_OCCLUSION_TEXTURE)
 in vec2 vUv;
 #endif
 #ifdef LR_NORMAL_MAP
@@ -20,6 +21,10 @@ in vec4 vColor;
 in vec3 vLitDiffuse;  // per-vertex lighting (mesh.vert), interpolated
 in vec3 vLitSpecular;
 in vec3 vLitAdded;
+#ifdef LR_PBR
+in vec3 vLitFresnel;  // B of the PBR split (lighting.glsl shadeVertexPbr); vLitSpecular is A,
+in vec3 vLitAmbient;  // vLitDiffuse E
+#endif
 #endif
 
 uniform vec4 uBaseColor;  // linear
@@ -36,6 +41,16 @@ uniform sampler2D uNormalTex;
 #endif
 #ifdef LR_EMISSIVE_TEXTURE
 uniform sampler2D uEmissiveTex;  // sRGB
+#endif
+#ifdef LR_PBR
+uniform float uMetallic, uRoughness;  // glTF factors
+#ifdef LR_METAL_ROUGH_TEXTURE
+uniform sampler2D uMetalRoughTex;  // linear: G = roughness, B = metallic
+#endif
+#ifdef LR_OCCLUSION_TEXTURE
+uniform sampler2D uOcclusionTex;  // linear: R = occlusion
+uniform float uOcclusionStrength;
+#endif
 #endif
 
 #ifdef LR_OUTPUT_GBUFFER
@@ -83,6 +98,20 @@ Surface surfaceHere() {
     s.emissive *= texture(uEmissiveTex, vUv).rgb;
 #endif
     s.shininess = uShininess;
+#ifdef LR_PBR
+    // glTF metal-rough: factor × texel (the base colour's UVs); occlusion = 1 + strength·(R − 1).
+    s.metallic = uMetallic;
+    s.roughness = uRoughness;
+#ifdef LR_METAL_ROUGH_TEXTURE
+    vec4 metalRough = texture(uMetalRoughTex, vUv);
+    s.metallic *= metalRough.b;
+    s.roughness *= metalRough.g;
+#endif
+    s.occlusion = 1.0;
+#ifdef LR_OCCLUSION_TEXTURE
+    s.occlusion = 1.0 + uOcclusionStrength * (texture(uOcclusionTex, vUv).r - 1.0);
+#endif
+#endif
     return s;
 }
 
@@ -99,7 +128,9 @@ void main() {
     ShadeSettings st;
     st.ambient = uAmbient;
     st.distanceScale = uDistanceScale;
-#if defined(LR_QUALITY_FAST)
+#if defined(LR_QUALITY_FAST) && defined(LR_PBR)
+    vec3 radiance = shadePixelPbr(s, st, vLitSpecular, vLitFresnel, vLitDiffuse, vLitAmbient, vLitAdded);
+#elif defined(LR_QUALITY_FAST)
     vec3 radiance = s.albedo * vLitDiffuse + s.specular * vLitSpecular + vLitAdded + s.emissive;
 #elif defined(LR_CLUSTERED)
     vec3 radiance = shadeSurfaceClustered(s, st, gl_FragCoord.xy);

@@ -116,6 +116,9 @@ MeshProgram* ProgramCache::meshProgram(const FeatureKey& key, QString* error) {
     mp->lightCount = p->uniformLocation("uLightCount");
     mp->exposureScale = p->uniformLocation("uExposureScale");
     mp->toneMap = p->uniformLocation("uToneMap");
+    mp->metallic = p->uniformLocation("uMetallic");
+    mp->roughness = p->uniformLocation("uRoughness");
+    mp->occlusionStrength = p->uniformLocation("uOcclusionStrength");
     bindSamplers(p);
     mp->program = std::move(program);
     return m_mesh.emplace(key, std::move(mp)).first->second.get();
