@@ -161,6 +161,33 @@ class TestQualityReference : public QObject {
                  qPrintable(fast.summary()));
     }
 
+    // F1-PBR's split (lighting.glsl shadeVertexPbr / shadePixelPbr) is exact algebra: where the lights'
+    // D·Vis and Schlick weight are the same at every vertex — directional lights on a plane seen from
+    // far away through a narrow lens (V varies by < 0.002 rad) — fast must equal exact, with F0, c_diff,
+    // occlusion, the light's and the scene's ambient, rim and emissive applied per pixel.
+    void pbrFastSplitExactWhereLightingIsConstant() {
+        auto model = gridPlane(2.0, 8);
+        Material& m = model->materials[0];
+        m.pbr = true, m.metallic = 0.5f, m.roughness = 0.7f, m.emissive = {0.02f, 0.01f, 0.0f};
+        Light half = directional({0.5, -0.2, -1.0}, DiffuseModel::HalfLambert);
+        half.ambient = glm::dvec3(0.2, 0.1, 0.05);
+        Rig rig = pbrRig(
+            {directional({-0.3, -0.4, -1.0}, DiffuseModel::Lambert), half, rim({1.0, -0.5, -0.3}, 2.0)},
+            glm::dvec3(0.1, 0.1, 0.12));
+        ViewCamera far;
+        far.eye = {0.0, 0.0, 1000.0};
+        far.target = {0.0, 0.0, 0.0};
+        far.yfovDeg = 0.25;
+        const TierFrame exact = renderTier(m_gl, model, rig, far, kSize, Quality::Exact, 1e-4);
+        const TierFrame fast = renderTier(m_gl, model, rig, far, kSize, Quality::Fast, 1e-3);
+        qInfo().noquote() << "exact:" << exact.summary() << "\nfast: " << fast.summary();
+        QVERIFY2(exact.error.isEmpty() && fast.error.isEmpty(), qPrintable(exact.error + fast.error));
+        QVERIFY2(fast.linear.failures == 0 && fast.levels.maxLevels <= 1, qPrintable(fast.summary()));
+        QVERIFY2(fast.levels.pixels == exact.levels.pixels && fast.levels.pixels > 1000,
+                 qPrintable(fast.summary()));
+        QVERIFY2(fast.linear.maxReference > 0.05, "the plane should be lit");
+    }
+
     // A known difference: the frame rendered at +0.5 EV against the reference at 0 EV.
     void detectsAKnownDifference() {
         const Rig rig = mixedRig();

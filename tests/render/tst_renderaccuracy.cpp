@@ -24,6 +24,10 @@ namespace {
 constexpr double kTolerance = 1e-4;
 const QSize kSize(96, 72);
 
+const char* tierNameOf(Quality q) {
+    return EnumNames<Quality>::names[size_t(q)];
+}
+
 bool near(double got, double expected, double tol) {
     if (std::abs(got - expected) <= tol) return true;
     qWarning("got %.9g, expected %.9g +- %.3g", got, expected, tol);
@@ -157,6 +161,24 @@ class TestRenderAccuracy : public QObject {
         QVERIFY(near(got.x, 0.5, 1e-6));
         QVERIFY(near(got.y, 0.8 * 128 / 255.0, 1e-3));
         QVERIFY(near(got.z, 1.0 + 0.5 * (0.2 - 1.0), 1e-3));
+        // Shaded with the textures in every tier (the fast tier reads the roughness in the vertex stage):
+        // finite everywhere, and the exact tier equal to the double reference of its G-buffer.
+        const Rig lit = pbrRigCases()[3].make();
+        m_gl.setRig(lit);
+        for (Quality q : {Quality::Exact, Quality::Balanced, Quality::Fast}) {
+            RenderSettings s = floatSettings();
+            s.quality = q;
+            FloatImage radiance;
+            QVERIFY2(m_gl.renderRadiance(cam, QSize(24, 24), s, &radiance, &error), qPrintable(error));
+            QVERIFY2(m_gl.renderGBuffer(cam, QSize(24, 24), s, &g, &error), qPrintable(error));
+            const Comparison c = compareWithReference(radiance, g, lit, m_gl.renderer().sceneFrame(),
+                                                      m_gl.renderer().effectiveCamera(cam).view(),
+                                                      q == Quality::Exact ? kTolerance : 1.0);
+            qInfo().noquote() << tierNameOf(q) << c.summary();
+            QVERIFY2(c.nonFinite == 0 && c.covered > 0 && c.maxReference > 0.0, qPrintable(c.summary()));
+            if (q == Quality::Exact) QVERIFY2(c.failures == 0, qPrintable(c.summary()));
+        }
+        m_gl.setRig(pbrRigCases()[0].make());
         // Without the textures: the factors, and occlusion 1.
         m.metallicRoughnessTexture = m.occlusionTexture = -1;
         QVERIFY(m_gl.setModel(model, &error));
