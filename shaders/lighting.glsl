@@ -13,14 +13,17 @@
 //   LR_SPECULAR, LR_VIEWER: the rig's models; LR_HAS_LIGHT_AMBIENT: some light has an ambient colour;
 //   LR_LIGHT_TEXELS: RGBA32F texels per light in the light buffer (layout in loadLight below);
 //   LR_QUALITY_EXACT / LR_QUALITY_BALANCED / LR_QUALITY_FAST: the quality tier (docs/quality.md);
-//   LR_SHININESS_INT + powShininessInt(): balanced tier, the material's shininess is this integer.
+//   LR_SHININESS_INT + powShininessInt(): balanced tier, the material's shininess is this integer;
+//   LR_PBR: the rig is physically based (the glTF BRDF block, lightArrival, shadeLightPbr); with it
+//   LR_METAL_ROUGH_TEXTURE / LR_OCCLUSION_TEXTURE (mesh.frag) and the BRDF's approximations LR_B5, LR_B6.
 // Code for absent features is not compiled, so a scene pays only for what it uses.
 //
 // Quality tiers change how the formulas are evaluated, never what they are. Exact: the functions below
 // as written. Balanced: lrPow/lrAcos/powSpecular swap safePow, safeAcos and the specular power for the
 // cheaper evaluations of the "balanced tier" block, and shadeLight() rejects lights outside their range
 // or cone before normalising (B1-B4 in docs/quality.md). Fast: shadeVertex() at the vertices (Gouraud),
-// interpolated, the albedo and ks applied per pixel.
+// interpolated, the albedo and ks applied per pixel; under LR_PBR shadeVertexPbr() sums the split
+// A, B, E at the vertices and shadePixelPbr() applies F0 and c_diff per pixel (docs/quality.md, F1-PBR).
 
 const float kMinDenominator = 1e-4;  // floor of d^2 and of the inverse-polynomial denominator
 const float kMinConeWidth = 1e-7;    // narrowest smooth-cone width treated as a smooth edge

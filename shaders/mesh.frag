@@ -1,4 +1,5 @@
-// Mesh fragment stage: builds the Surface (material, textures, normal map, double-sided flip), then
+// Mesh fragment stage: builds the Surface (material, textures, normal map, double-sided flip; under LR_PBR
+// also metallic, roughness and occlusion from the glTF factors and textures), then
 //   LR_OUTPUT_DISPLAY: shades it with every uploaded light and applies exposure, tone map and sRGB
 //     encoding right here (exactly what tonemap.frag does to a float target, without the extra pass);
 //   LR_OUTPUT_RADIANCE: writes the linear HDR radiance (alpha = coverage) for the tone-map pass;
