@@ -376,8 +376,11 @@ struct Surface {
     vec3 specular;  // material specular colour (ks)
     vec3 emissive;
     float shininess;  // classic
-    // Physically based (LR_PBR): albedo is the base colour; occlusion scales ambient light only.
+#ifdef LR_PBR
+    // Physically based: albedo is the base colour; occlusion scales ambient light only. Declared only under
+    // LR_PBR, so a classic program's text is exactly what it was.
     float metallic, roughness, occlusion;
+#endif
 };
 
 struct ShadeSettings {
