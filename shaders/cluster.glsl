@@ -25,15 +25,23 @@ int clusterIndexAt(vec2 fragCoord, float depth) {
 }
 
 // shadeSurface() over the global lights and this fragment's cluster only.
+// Under LR_PBR the same sum with shadeLightPbr() and the physically based scene ambient.
 vec3 shadeSurfaceClustered(Surface s, ShadeSettings st, vec2 fragCoord) {
     vec3 V = viewVector(st, s.position);
+#ifdef LR_PBR
+    PbrSurface p = pbrSurface(s);
+    vec3 sum = pbrSceneAmbient(s, st, p);
+#define lrShadeClustered(l) shadeLightPbr(l, s, st, V, p.cDiff, p.f0, p.alpha)
+#else
     vec3 sum = st.ambient * s.albedo;
+#define lrShadeClustered(l) shadeLight(l, s, st, V)
+#endif
 #if defined(LR_HAS_SURFACE_LIGHTS) || defined(LR_HAS_LIGHT_RIM)
     for (int i = 0; i < uGlobalLightCount; ++i)
-        sum += shadeLight(loadLight(int(texelFetch(uClusterIndices, i).r)), s, st, V);
+        sum += lrShadeClustered(loadLight(int(texelFetch(uClusterIndices, i).r)));
     uvec2 range = texelFetch(uClusterRanges, clusterIndexAt(fragCoord, -s.position.z)).rg;
     for (uint k = 0u; k < range.y; ++k)
-        sum += shadeLight(loadLight(int(texelFetch(uClusterIndices, int(range.x + k)).r)), s, st, V);
+        sum += lrShadeClustered(loadLight(int(texelFetch(uClusterIndices, int(range.x + k)).r)));
 #endif
     return sum + s.emissive;
 }

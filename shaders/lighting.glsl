@@ -13,14 +13,17 @@
 //   LR_SPECULAR, LR_VIEWER: the rig's models; LR_HAS_LIGHT_AMBIENT: some light has an ambient colour;
 //   LR_LIGHT_TEXELS: RGBA32F texels per light in the light buffer (layout in loadLight below);
 //   LR_QUALITY_EXACT / LR_QUALITY_BALANCED / LR_QUALITY_FAST: the quality tier (docs/quality.md);
-//   LR_SHININESS_INT + powShininessInt(): balanced tier, the material's shininess is this integer.
+//   LR_SHININESS_INT + powShininessInt(): balanced tier, the material's shininess is this integer;
+//   LR_PBR: the rig is physically based (the glTF BRDF block, lightArrival, shadeLightPbr); with it
+//   LR_METAL_ROUGH_TEXTURE / LR_OCCLUSION_TEXTURE (mesh.frag) and the BRDF's approximations LR_B5, LR_B6.
 // Code for absent features is not compiled, so a scene pays only for what it uses.
 //
 // Quality tiers change how the formulas are evaluated, never what they are. Exact: the functions below
 // as written. Balanced: lrPow/lrAcos/powSpecular swap safePow, safeAcos and the specular power for the
 // cheaper evaluations of the "balanced tier" block, and shadeLight() rejects lights outside their range
 // or cone before normalising (B1-B4 in docs/quality.md). Fast: shadeVertex() at the vertices (Gouraud),
-// interpolated, the albedo and ks applied per pixel.
+// interpolated, the albedo and ks applied per pixel; under LR_PBR shadeVertexPbr() sums the split
+// A, B, E at the vertices and shadePixelPbr() applies F0 and c_diff per pixel (docs/quality.md, F1-PBR).
 
 const float kMinDenominator = 1e-4;  // floor of d^2 and of the inverse-polynomial denominator
 const float kMinConeWidth = 1e-7;    // narrowest smooth-cone width treated as a smooth edge
@@ -187,6 +190,91 @@ float rimTerm(vec3 direction, vec3 N, vec3 V, float exponent) {
     return lrPow(p1 * p2, exponent);
 }
 
+#ifdef LR_PBR
+// ---- physically based BRDF (glTF 2.0 Appendix B): lighting.h's PBR block ----
+// Balanced-tier approximations, each a variant bit measured in docs/quality.md: LR_B5 Schlick's power as
+// a spherical Gaussian (three.js), LR_B6 Filament's fast visibility.
+
+const float kPi = 3.14159265358979;
+const float kInvPi = 0.318309886183791;  // float(1 / kPi), as T(1.0 / kPi) in shade.h
+const float kMinRoughness = 0.0525;
+const float kMinNDotV = 1e-5;
+const float kDielectricF0 = 0.04;
+
+// α = max(roughness, kMinRoughness)²; roughness above 1 or NaN -> 1.
+float pbrAlpha(float roughness) {
+    float r = roughness > kMinRoughness ? (roughness < 1.0 ? roughness : 1.0)
+                                        : (roughness <= kMinRoughness ? kMinRoughness : 1.0);
+    return r * r;
+}
+
+// D(h) = α² / (π ((N·H)² (α² - 1) + 1)²) for N·H > 0, the bracket as (N·H)² α² + |N×H|² (Lagrange).
+float ggxDistribution(vec3 N, vec3 H, float alpha) {
+    float nDotH = dot(N, H);
+    if (!(nDotH > 0.0)) return 0.0;
+    vec3 c = cross(N, H);
+    float a2 = alpha * alpha;
+    float k = nDotH * nDotH * a2 + dot(c, c);
+    return a2 / (kPi * k * k);
+}
+
+// Height-correlated Smith visibility; LR_B6: Filament's 0.5 / mix(2 N·L N·V, N·L + N·V, α).
+float smithVisibility(float nDotL, float nDotV, float alpha) {
+#ifdef LR_B6
+    float denom = mix(2.0 * nDotL * nDotV, nDotL + nDotV, alpha);
+    return denom > 0.0 ? 0.5 / denom : 0.0;
+#else
+    float a2 = alpha * alpha;
+    float gv = nDotL * sqrt(nDotV * nDotV * (1.0 - a2) + a2);
+    float gl = nDotV * sqrt(nDotL * nDotL * (1.0 - a2) + a2);
+    float denom = gv + gl;
+    return denom > 0.0 ? 0.5 / denom : 0.0;
+#endif
+}
+
+// The Schlick weight (1 - |V·H|)^5; LR_B5: exp2((-5.55473 x - 6.98316) x), x = |V·H| (three.js F_Schlick).
+float schlickWeight(float vDotH) {
+    float x = saturate(abs(vDotH));
+#ifdef LR_B5
+    return exp2((-5.55473 * x - 6.98316) * x);
+#else
+    float m = 1.0 - x;
+    float m2 = m * m;
+    return m2 * m2 * m;
+#endif
+}
+
+vec3 fresnelSchlick(vec3 f0, float vDotH) { return f0 + (vec3(1.0) - f0) * schlickWeight(vDotH); }
+
+vec3 pbrBaseColor(vec3 b) { return vec3(positive(b.r), positive(b.g), positive(b.b)); }
+vec3 pbrDiffuseColor(vec3 baseColor, float metallic) { return pbrBaseColor(baseColor) * (1.0 - saturate(metallic)); }
+vec3 pbrF0(vec3 baseColor, float metallic) {
+    float m = saturate(metallic);
+    return vec3(kDielectricF0) * (1.0 - m) + pbrBaseColor(baseColor) * m;
+}
+
+struct PbrLobes {
+    vec3 diffuse;
+    vec3 specular;
+};
+
+// One light's two lobes per unit of light: diffuse = (1 - F) c_diff / π · cosTerm, specular = F D V · N·L.
+PbrLobes pbrLobes(vec3 N, vec3 L, vec3 V, vec3 cDiff, vec3 f0, float alpha, float cosTerm) {
+    PbrLobes o;
+    vec3 H = safeNormalize(L + V, N);  // L = -V: H = N
+    vec3 F = fresnelSchlick(f0, dot(V, H));
+    o.diffuse = (vec3(1.0) - F) * cDiff * (cosTerm * kInvPi);
+    o.specular = vec3(0.0);
+    float nDotL = dot(N, L);
+    if (!(nDotL > 0.0)) return o;  // no specular from behind (a wrapped diffuse may still light it)
+    float nDotV = abs(dot(N, V));
+    if (!(nDotV > kMinNDotV)) nDotV = kMinNDotV;
+    float nl = nDotL < 1.0 ? nDotL : 1.0;
+    o.specular = F * (ggxDistribution(N, H, alpha) * smithVisibility(nl, nDotV, alpha) * nl);
+    return o;
+}
+#endif  // LR_PBR
+
 // ---- tone mapping and output encoding ----
 
 float toneMap(int op, float x) {
@@ -287,7 +375,12 @@ struct Surface {
     vec3 albedo;
     vec3 specular;  // material specular colour (ks)
     vec3 emissive;
-    float shininess;
+    float shininess;  // classic
+#ifdef LR_PBR
+    // Physically based: albedo is the base colour; occlusion scales ambient light only. Declared only under
+    // LR_PBR, so a classic program's text is exactly what it was.
+    float metallic, roughness, occlusion;
+#endif
 };
 
 struct ShadeSettings {
@@ -491,14 +584,113 @@ vec3 shadeLight(ShadeLight l, Surface s, ShadeSettings st, vec3 V) {
 #endif
 }
 
+#ifdef LR_PBR
+// The direction to a light and its attenuation (falloff × cone; 1 for a directional light) at the surface;
+// false when the light adds nothing there (shade.h lightArrival). The classic shadeLight() above inlines
+// the same steps and is left as it is, so classic programs compile exactly the text they did.
+bool lightArrival(ShadeLight l, Surface s, ShadeSettings st, out vec3 L, out float attenuation) {
+    vec3 N = s.normal;
+    L = -l.direction;
+    attenuation = 1.0;
+#ifdef LR_HAS_POSITIONAL
+    if (lightTypeOf(l) != LR_LIGHT_DIRECTIONAL) {
+        vec3 toLight = l.position - s.position;
+#ifdef LR_B3
+        float d2 = dot(toLight, toLight);
+        if (l.range > 1e-18 && lightIsBounded(l) && d2 * (st.distanceScale * st.distanceScale) >= l.range * l.range)
+            return false;
+#endif
+#ifdef LR_B4
+        float t2 = dot(toLight, toLight);
+        float inv = inversesqrt(t2);
+        bool inRange = t2 > 1e-30 && t2 < 1e30;
+        L = inRange ? toLight * inv : N;
+        float d = (inRange ? t2 * inv : (!(t2 <= 1.0) ? kFloatMax : 0.0)) * st.distanceScale;
+        if (!(abs(d) <= kFloatMax)) d = kFloatMax;
+#else
+        L = safeNormalize(toLight, N);  // a light on the surface shines along the normal
+        float d = dot(toLight, L) * st.distanceScale;
+        if (!(abs(d) <= kFloatMax)) d = kFloatMax;
+#endif
+#ifdef LR_HAS_LIGHT_SPOT
+        float cosTheta = dot(-L, l.direction);
+#ifdef LR_B3
+        if (lightTypeOf(l) == LR_LIGHT_SPOT && cosTheta < l.cosOuter) return false;
+#endif
+#endif
+        attenuation = evalFalloff(l, d);
+#ifdef LR_HAS_LIGHT_SPOT
+        if (lightTypeOf(l) == LR_LIGHT_SPOT) attenuation *= evalCone(l, cosTheta);
+#endif
+        return attenuation > 0.0;
+    }
+#endif
+    return true;
+}
+
+// Radiance one light adds under physically based shading (shade.h shadeLightPbr):
+//   attenuation · (colour·intensity · diffuse lobe + Sc·intensity · specular lobe + Ac·intensity · c_diff/π);
+// a rim light adds its classic term.
+vec3 shadeLightPbr(ShadeLight l, Surface s, ShadeSettings st, vec3 V, vec3 cDiff, vec3 f0, float alpha) {
+    vec3 N = s.normal;
+#ifdef LR_HAS_LIGHT_RIM
+    if (lightTypeOf(l) == LR_LIGHT_RIM) return l.color * rimTerm(l.direction, N, V, l.rimExponent);
+#endif
+#ifdef LR_HAS_SURFACE_LIGHTS
+    vec3 L;
+    float attenuation;
+    if (!lightArrival(l, s, st, L, attenuation)) return vec3(0.0);
+    float nDotL = dot(N, L);
+    float cosTerm = diffuseOf(l) == LR_DIFFUSE_LAMBERT ? diffuseLambert(nDotL) : diffuseHalfLambert(nDotL);
+    PbrLobes f = pbrLobes(N, L, V, cDiff, f0, alpha, cosTerm);
+#ifdef LR_HAS_LIGHT_AMBIENT
+    return attenuation * (l.color * f.diffuse + l.specular * f.specular +
+                          l.ambient * cDiff * (saturate(s.occlusion) * kInvPi));
+#else
+    return attenuation * (l.color * f.diffuse + l.specular * f.specular);
+#endif
+#else
+    return vec3(0.0);
+#endif
+}
+
+// What shadeSurface() computes once per surface under PBR, before the lights.
+struct PbrSurface {
+    vec3 cDiff, f0;
+    float alpha;
+};
+
+PbrSurface pbrSurface(Surface s) {
+    PbrSurface p;
+    p.cDiff = pbrDiffuseColor(s.albedo, s.metallic);
+    p.f0 = pbrF0(s.albedo, s.metallic);
+    p.alpha = pbrAlpha(s.roughness);
+    return p;
+}
+
+// The scene ambient: an irradiance (as three.js's AmbientLight) on the diffuse lobe, times the occlusion.
+vec3 pbrSceneAmbient(Surface s, ShadeSettings st, PbrSurface p) {
+    return st.ambient * p.cDiff * (saturate(s.occlusion) * kInvPi);
+}
+#endif  // LR_PBR
+
 // Scene ambient + every light + emissive.
 vec3 shadeSurface(Surface s, ShadeSettings st) {
     vec3 V = viewVector(st, s.position);
+#ifdef LR_PBR
+    PbrSurface p = pbrSurface(s);
+    vec3 sum = pbrSceneAmbient(s, st, p);
+#if defined(LR_HAS_SURFACE_LIGHTS) || defined(LR_HAS_LIGHT_RIM)
+    for (int i = 0; i < uLightCount; ++i) sum += shadeLightPbr(loadLight(i), s, st, V, p.cDiff, p.f0, p.alpha);
+#endif
+    return sum + s.emissive;
+#else
     vec3 sum = st.ambient * s.albedo;
 #if defined(LR_HAS_SURFACE_LIGHTS) || defined(LR_HAS_LIGHT_RIM)
     for (int i = 0; i < uLightCount; ++i) sum += shadeLight(loadLight(i), s, st, V);
 #endif
     return sum + s.emissive;
+#endif
 }
 
 #ifdef LR_QUALITY_FAST
@@ -564,6 +756,80 @@ VertexLight shadeVertex(vec3 P, vec3 N, float shininess, ShadeSettings st) {
 #endif
     return o;
 }
+
+#ifdef LR_PBR
+// F1 for physically based shading: the lights summed at the vertices in a split that keeps the material
+// per pixel. With w = (1 - V·H)^5 (Schlick's weight, F = F0 (1 - w) + w) and per light
+// a = attenuation·Sc·D·V·N·L (the specular lobe without F), the exact sums are
+//   specular = Σ a·F = F0·(A - B) + B,         A = Σ a, B = Σ a·w
+//   diffuse  = Σ attenuation·colour·(1 - F)·c_diff·cosTerm/π = c_diff·(1 - F0)·E,   E = Σ attenuation·colour·cosTerm·(1 - w)/π
+// ((1 - F) = (1 - F0)(1 - w)), so F0 and c_diff (base colour, metallic: textured) apply per pixel exactly;
+// what is per vertex is D·V and w, evaluated with the vertex normal (no normal map), the vertex's viewer
+// and the roughness there (the factor × the metal-rough texture's coarse level), then interpolated.
+struct VertexLightPbr {
+    vec3 specular;  // A
+    vec3 fresnel;   // B
+    vec3 diffuse;   // E
+    vec3 ambient;   // Σ attenuation·Ac/π: × c_diff·occlusion per pixel
+    vec3 added;     // rim lights
+};
+
+void shadeLightSplitPbr(ShadeLight l, Surface s, ShadeSettings st, vec3 V, float alpha, inout VertexLightPbr o) {
+    vec3 N = s.normal;
+#ifdef LR_HAS_LIGHT_RIM
+    if (lightTypeOf(l) == LR_LIGHT_RIM) {
+        o.added += l.color * rimTerm(l.direction, N, V, l.rimExponent);
+        return;
+    }
+#endif
+#ifdef LR_HAS_SURFACE_LIGHTS
+    vec3 L;
+    float attenuation;
+    if (!lightArrival(l, s, st, L, attenuation)) return;
+    float nDotL = dot(N, L);
+    float cosTerm = diffuseOf(l) == LR_DIFFUSE_LAMBERT ? diffuseLambert(nDotL) : diffuseHalfLambert(nDotL);
+    vec3 H = safeNormalize(L + V, N);
+    float w = schlickWeight(dot(V, H));
+    o.diffuse += attenuation * l.color * (cosTerm * kInvPi * (1.0 - w));
+#ifdef LR_HAS_LIGHT_AMBIENT
+    o.ambient += attenuation * l.ambient * kInvPi;
+#endif
+    if (!(nDotL > 0.0)) return;
+    float nDotV = abs(dot(N, V));
+    if (!(nDotV > kMinNDotV)) nDotV = kMinNDotV;
+    float nl = nDotL < 1.0 ? nDotL : 1.0;
+    vec3 a = attenuation * l.specular * (ggxDistribution(N, H, alpha) * smithVisibility(nl, nDotV, alpha) * nl);
+    o.specular += a;
+    o.fresnel += a * w;
+#endif
+}
+
+VertexLightPbr shadeVertexPbr(vec3 P, vec3 N, float roughness, ShadeSettings st) {
+    VertexLightPbr o;
+    o.specular = vec3(0.0);
+    o.fresnel = vec3(0.0);
+    o.diffuse = vec3(0.0);
+    o.ambient = vec3(0.0);
+    o.added = vec3(0.0);
+    Surface s;
+    s.position = P;
+    s.normal = N;
+    vec3 V = viewVector(st, P);
+    float alpha = pbrAlpha(roughness);
+#if defined(LR_HAS_SURFACE_LIGHTS) || defined(LR_HAS_LIGHT_RIM)
+    for (int i = 0; i < uLightCount; ++i) shadeLightSplitPbr(loadLight(i), s, st, V, alpha, o);
+#endif
+    return o;
+}
+
+// The pixel's radiance from the interpolated sums and its own material (shadeSurface's terms).
+vec3 shadePixelPbr(Surface s, ShadeSettings st, vec3 A, vec3 B, vec3 E, vec3 ambient, vec3 added) {
+    PbrSurface p = pbrSurface(s);
+    float occlusion = saturate(s.occlusion);
+    return pbrSceneAmbient(s, st, p) + p.cDiff * (vec3(1.0) - p.f0) * E + p.f0 * (A - B) + B +
+           p.cDiff * (ambient * occlusion) + added + s.emissive;
+}
+#endif  // LR_PBR
 #endif  // LR_QUALITY_FAST
 
 #endif  // LR_SHADING

@@ -1,5 +1,6 @@
 // Mesh fragment stage: builds the Surface (material, textures through their KHR_texture_transform, normal
-// map with its scale, double-sided flip; alpha MASK discards under the cutoff), then
+// map with its scale, double-sided flip; alpha MASK discards under the cutoff; under LR_PBR also metallic,
+// roughness and occlusion from the glTF factors and textures), then
 //   LR_OUTPUT_DISPLAY: shades it with every uploaded light and applies exposure, tone map and sRGB
 //     encoding right here (exactly what tonemap.frag does to a float target, without the extra pass);
 //   LR_OUTPUT_RADIANCE: writes the linear HDR radiance (alpha = coverage) for the tone-map pass;
@@ -8,7 +9,8 @@
 //     (deferred.frag) and for the CPU double-precision reference.
 in vec3 vPosition;
 in vec3 vNormal;
-#if defined(LR_BASE_COLOR_TEXTURE) || defined(LR_NORMAL_MAP) || defined(LR_EMISSIVE_TEXTURE)
+#if defined(LR_BASE_COLOR_TEXTURE) || defined(LR_NORMAL_MAP) || defined(LR_EMISSIVE_TEXTURE) || \
+    defined(LR_METAL_ROUGH_TEXTURE) || defined(LR_OCCLUSION_TEXTURE)
 in vec2 vUv;
 // A texture role's UV: KHR_texture_transform's T·R·S (a mat3 per role, ProgramCache's uniforms, set from
 // Material's TextureTransform), or the vertex UV as it is when no used texture has a transform.
@@ -33,6 +35,10 @@ in vec4 vColor;
 in vec3 vLitDiffuse;  // per-vertex lighting (mesh.vert), interpolated
 in vec3 vLitSpecular;
 in vec3 vLitAdded;
+#ifdef LR_PBR
+in vec3 vLitFresnel;  // B of the PBR split (lighting.glsl shadeVertexPbr); vLitSpecular is A,
+in vec3 vLitAmbient;  // vLitDiffuse E
+#endif
 #endif
 
 uniform vec4 uBaseColor;  // linear
@@ -56,6 +62,16 @@ float lrAlpha = 1.0;  // the base alpha, for "over" blending (pass_blend.cpp)
 #endif
 #ifdef LR_EMISSIVE_TEXTURE
 uniform sampler2D uEmissiveTex;  // sRGB
+#endif
+#ifdef LR_PBR
+uniform float uMetallic, uRoughness;  // glTF factors
+#ifdef LR_METAL_ROUGH_TEXTURE
+uniform sampler2D uMetalRoughTex;  // linear: G = roughness, B = metallic
+#endif
+#ifdef LR_OCCLUSION_TEXTURE
+uniform sampler2D uOcclusionTex;  // linear: R = occlusion
+uniform float uOcclusionStrength;
+#endif
 #endif
 
 #ifdef LR_OUTPUT_GBUFFER
@@ -111,6 +127,20 @@ Surface surfaceHere() {
     s.emissive *= texture(uEmissiveTex, lrUv(uEmissiveTransform)).rgb;
 #endif
     s.shininess = uShininess;
+#ifdef LR_PBR
+    // glTF metal-rough: factor × texel (each through its own transform); occlusion = 1 + strength·(R − 1).
+    s.metallic = uMetallic;
+    s.roughness = uRoughness;
+#ifdef LR_METAL_ROUGH_TEXTURE
+    vec4 metalRough = texture(uMetalRoughTex, lrUv(uMetalRoughTransform));
+    s.metallic *= metalRough.b;
+    s.roughness *= metalRough.g;
+#endif
+    s.occlusion = 1.0;
+#ifdef LR_OCCLUSION_TEXTURE
+    s.occlusion = 1.0 + uOcclusionStrength * (texture(uOcclusionTex, lrUv(uOcclusionTransform)).r - 1.0);
+#endif
+#endif
     return s;
 }
 
@@ -127,7 +157,9 @@ void main() {
     ShadeSettings st;
     st.ambient = uAmbient;
     st.distanceScale = uDistanceScale;
-#if defined(LR_QUALITY_FAST)
+#if defined(LR_QUALITY_FAST) && defined(LR_PBR)
+    vec3 radiance = shadePixelPbr(s, st, vLitSpecular, vLitFresnel, vLitDiffuse, vLitAmbient, vLitAdded);
+#elif defined(LR_QUALITY_FAST)
     vec3 radiance = s.albedo * vLitDiffuse + s.specular * vLitSpecular + vLitAdded + s.emissive;
 #elif defined(LR_CLUSTERED)
     vec3 radiance = shadeSurfaceClustered(s, st, gl_FragCoord.xy);

@@ -13,7 +13,8 @@ uniform mat4 uProjection;
 
 out vec3 vPosition;  // view space
 out vec3 vNormal;    // view space, not normalised
-#if defined(LR_BASE_COLOR_TEXTURE) || defined(LR_NORMAL_MAP) || defined(LR_EMISSIVE_TEXTURE)
+#if defined(LR_BASE_COLOR_TEXTURE) || defined(LR_NORMAL_MAP) || defined(LR_EMISSIVE_TEXTURE) || \
+    defined(LR_METAL_ROUGH_TEXTURE) || defined(LR_OCCLUSION_TEXTURE)
 out vec2 vUv;
 #endif
 #ifdef LR_NORMAL_MAP
@@ -30,13 +31,23 @@ uniform float uShininess;
 out vec3 vLitDiffuse;   // multiplies the albedo
 out vec3 vLitSpecular;  // multiplies ks
 out vec3 vLitAdded;     // rim lights
+#ifdef LR_PBR
+// PBR: vLitSpecular = A, vLitDiffuse = E of lighting.glsl's split (shadeVertexPbr), and these two.
+uniform float uRoughness;
+#ifdef LR_METAL_ROUGH_TEXTURE
+uniform sampler2D uMetalRoughTex;
+#endif
+out vec3 vLitFresnel;
+out vec3 vLitAmbient;
+#endif
 #endif
 
 void main() {
     vec4 p = uModelView * vec4(aPosition, 1.0);
     vPosition = p.xyz;
     vNormal = uNormalMatrix * aNormal;
-#if defined(LR_BASE_COLOR_TEXTURE) || defined(LR_NORMAL_MAP) || defined(LR_EMISSIVE_TEXTURE)
+#if defined(LR_BASE_COLOR_TEXTURE) || defined(LR_NORMAL_MAP) || defined(LR_EMISSIVE_TEXTURE) || \
+    defined(LR_METAL_ROUGH_TEXTURE) || defined(LR_OCCLUSION_TEXTURE)
     vUv = aUv;
 #endif
 #ifdef LR_NORMAL_MAP
@@ -53,10 +64,26 @@ void main() {
     ShadeSettings st;
     st.ambient = uAmbient;
     st.distanceScale = uDistanceScale;
+#ifdef LR_PBR
+    float roughness = uRoughness;
+#ifdef LR_METAL_ROUGH_TEXTURE
+    // The roughness around the vertex: the mip level about 128 texels across (a vertex spans many texels
+    // of a full-resolution map; level 0 would alias).
+    float lod = max(0.0, log2(float(max(textureSize(uMetalRoughTex, 0).x, textureSize(uMetalRoughTex, 0).y))) - 7.0);
+    roughness *= textureLod(uMetalRoughTex, aUv, lod).g;
+#endif
+    VertexLightPbr lit = shadeVertexPbr(p.xyz, n, roughness, st);
+    vLitSpecular = lit.specular;
+    vLitFresnel = lit.fresnel;
+    vLitDiffuse = lit.diffuse;
+    vLitAmbient = lit.ambient;
+    vLitAdded = lit.added;
+#else
     VertexLight lit = shadeVertex(p.xyz, n, uShininess, st);
     vLitDiffuse = lit.diffuse;
     vLitSpecular = lit.specular;
     vLitAdded = lit.added;
+#endif
 #endif
     gl_Position = uProjection * p;
 }

@@ -124,8 +124,8 @@ int runBench(const QStringList& args) {
     const QCommandLineOption approximations(
         QStringLiteral("approximations"),
         QStringLiteral("The balanced and fast tiers' approximations to compile in, for measuring each "
-                       "(docs/quality.md): a comma-separated list of b1, b2, b3, b4, f2, or none (default "
-                       "b1,b2,b4, what the tiers ship with)."),
+                       "(docs/quality.md): a comma-separated list of b1, b2, b3, b4, f2, b5, b6 (b5, b6: "
+                       "physically based rigs only), or none (default b1,b2,b4, what the tiers ship with)."),
         QStringLiteral("LIST"));
     const SceneOptionSet scene;
     parser.addOption(help);

@@ -184,7 +184,7 @@ inline constexpr double kDielectricF0 = 0.04;
 // α = max(roughness, kMinRoughness)²; roughness above 1 or NaN -> 1.
 template <typename T> T pbrAlpha(T roughness) {
     const T r = roughness > T(kMinRoughness) ? (roughness < T(1) ? roughness : T(1))
-                                             : (roughness > T(1) ? T(1) : T(kMinRoughness));
+                                             : (roughness <= T(kMinRoughness) ? T(kMinRoughness) : T(1));
     return r * r;
 }
 

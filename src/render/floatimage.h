@@ -2,6 +2,8 @@
 // shaded surfaces. Row 0 is the TOP row (image order, like QImage). No GL here.
 #pragma once
 
+#include "core/types.h"
+
 #include <glm/vec4.hpp>
 #include <vector>
 
@@ -23,6 +25,10 @@ struct GBuffer {
     FloatImage albedo;   // linear rgb, w = alpha
     FloatImage specular; // ks rgb, w = shininess
     FloatImage emissive; // linear rgb
+    // Physically based G-buffers (shading == Pbr; gbuffer.h): metallic, roughness, occlusion, w = 1.
+    // Empty for classic ones, whose specular and shininess are above.
+    ShadingModel shading = ShadingModel::Classic;
+    FloatImage material;
 };
 
 } // namespace lr

@@ -41,6 +41,8 @@ void GpuModel::uploadTextures(QOpenGLFunctions_3_3_Core* gl) {
         if (d.features.baseColorTexture) keys.emplace_back(m.baseColorTexture, true);
         if (d.features.normalMap) keys.emplace_back(m.normalTexture, false);
         if (d.features.emissiveTexture) keys.emplace_back(m.emissiveTexture, true);
+        if (d.features.metalRoughTexture) keys.emplace_back(m.metallicRoughnessTexture, false);
+        if (d.features.occlusionTexture) keys.emplace_back(m.occlusionTexture, false);
     }
     std::sort(keys.begin(), keys.end());
     keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
@@ -57,6 +59,9 @@ void GpuModel::uploadTextures(QOpenGLFunctions_3_3_Core* gl) {
         if (d.features.baseColorTexture) d.baseColorTexture = textureName(m.baseColorTexture, true);
         if (d.features.normalMap) d.normalTexture = textureName(m.normalTexture, false);
         if (d.features.emissiveTexture) d.emissiveTexture = textureName(m.emissiveTexture, true);
+        if (d.features.metalRoughTexture)
+            d.metalRoughTexture = textureName(m.metallicRoughnessTexture, false);
+        if (d.features.occlusionTexture) d.occlusionTexture = textureName(m.occlusionTexture, false);
     }
 }
 

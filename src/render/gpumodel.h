@@ -1,6 +1,6 @@
 // A Model uploaded to GL: one vertex array per mesh, textures (sRGB for base colour and emissive, linear
-// for normal maps) with mipmap chains built on worker threads (mipchain.h). Needs the current context of
-// the owning Renderer.
+// for normal maps and the metal-rough and occlusion maps) with mipmap chains built on worker threads
+// (mipchain.h). Needs the current context of the owning Renderer.
 #pragma once
 
 #include "lod.h"
@@ -23,6 +23,7 @@ struct GpuDraw {
     int material = -1; // valid index into Model::materials, or -1 for the default material
     MaterialFeatures features;
     GLuint baseColorTexture = 0, normalTexture = 0, emissiveTexture = 0;
+    GLuint metalRoughTexture = 0, occlusionTexture = 0; // linear (physically based shading)
     GLuint lodVao = 0, lodIbo = 0; // the interaction proxy (lod.h) over the same vertices; 0: none
     GLsizei lodIndexCount = 0;
     glm::vec3 center{0.0f}; // of the mesh's bounds, relative to Model::origin: the blend pass sorts by it

@@ -77,11 +77,15 @@ FeatureKey MeshPass::meshKey(const FrameContext& frame, const PassScene& scene, 
     const Model* model = scene.model->model();
     const bool gpass = output == ShaderOutput::GBuffer;
     FeatureKey key;
-    if (!gpass) key.rig = shaded; // the G-pass does no lighting
+    if (!gpass) key.rig = shaded;     // the G-pass does no lighting,
+    key.rig.shading = shaded.shading; // but writes the physically based fields under PBR
     key.material = d.features;
+    if (shaded.shading != ShadingModel::Pbr) // classic programs never sample the PBR textures
+        key.material.metalRoughTexture = key.material.occlusionTexture = false;
     key.quality = gpass ? Quality::Exact : settings.quality; // the G-buffer is the exact surface
     key.approximations = approx::forTier(settings.approximations, key.quality);
-    if (key.approximations & approx::kB2) { // B2: an integer shininess becomes a chain of products
+    // B2: an integer shininess becomes a chain of products (classic: PBR has no shininess)
+    if ((key.approximations & approx::kB2) && shaded.shading == ShadingModel::Classic) {
         const Material& m = d.material >= 0 ? model->materials[size_t(d.material)] : Material();
         const double n = m.shininess >= 0.0f ? double(m.shininess) : rig.shading.shininess;
         if (n >= 1.0 && n <= kMaxShininessInt && n == std::floor(n)) key.shininessInt = std::uint16_t(n);
@@ -149,6 +153,9 @@ bool MeshPass::drawMeshes(const FrameContext& frame, PassScene& scene,
             if (p->textureTransforms[i] >= 0)
                 glUniformMatrix3fv(p->textureTransforms[i], 1, GL_FALSE,
                                    glm::value_ptr(textureTransformMatrix(*transforms[i])));
+        if (p->metallic >= 0) glUniform1f(p->metallic, m.metallic);
+        if (p->roughness >= 0) glUniform1f(p->roughness, m.roughness);
+        if (p->occlusionStrength >= 0) glUniform1f(p->occlusionStrength, m.occlusionStrength);
         const GLuint textures[kMaterialTextureUnits] = {d->baseColorTexture, d->normalTexture,
                                                         d->emissiveTexture};
         const GLuint sampler = key.quality == Quality::Fast ? scene.fastSampler : 0;
@@ -158,6 +165,15 @@ bool MeshPass::drawMeshes(const FrameContext& frame, PassScene& scene,
             glActiveTexture(GL_TEXTURE0 + unit);
             glBindTexture(GL_TEXTURE_2D, textures[i]);
             glBindSampler(unit, sampler);
+        }
+        const std::pair<TextureUnit, GLuint> pbrTextures[] = {
+            {TextureUnit::MetalRough, key.material.metalRoughTexture ? d->metalRoughTexture : 0},
+            {TextureUnit::Occlusion, key.material.occlusionTexture ? d->occlusionTexture : 0}};
+        for (const auto& [unit, texture] : pbrTextures) {
+            if (!texture) continue;
+            glActiveTexture(textureUnit(unit));
+            glBindTexture(GL_TEXTURE_2D, texture);
+            glBindSampler(GLuint(unit), sampler);
         }
         if (settings.cullBackFaces && !d->features.doubleSided)
             glEnable(GL_CULL_FACE);
@@ -173,6 +189,8 @@ bool MeshPass::drawMeshes(const FrameContext& frame, PassScene& scene,
     glBindVertexArray(0);
     for (int i = 0; i < kMaterialTextureUnits; ++i)
         glBindSampler(GLuint(TextureUnit::BaseColor) + GLuint(i), 0);
+    glBindSampler(GLuint(TextureUnit::MetalRough), 0);
+    glBindSampler(GLuint(TextureUnit::Occlusion), 0);
     glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);

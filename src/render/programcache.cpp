@@ -120,6 +120,9 @@ MeshProgram* ProgramCache::meshProgram(const FeatureKey& key, QString* error) {
     mp->alphaCutoff = p->uniformLocation("uAlphaCutoff");
     for (size_t i = 0; i < mp->textureTransforms.size(); ++i)
         mp->textureTransforms[i] = p->uniformLocation(kTextureTransformUniforms[i]);
+    mp->metallic = p->uniformLocation("uMetallic");
+    mp->roughness = p->uniformLocation("uRoughness");
+    mp->occlusionStrength = p->uniformLocation("uOcclusionStrength");
     bindSamplers(p);
     mp->program = std::move(program);
     return m_mesh.emplace(key, std::move(mp)).first->second.get();

@@ -46,7 +46,8 @@ struct MeshProgram {
     int modelView = -1, normalMatrix = -1, projection = -1;
     int baseColor = -1, emissive = -1, specular = -1, shininess = -1, ambient = -1, distanceScale = -1;
     int lightCount = -1;
-    int exposureScale = -1, toneMap = -1; // display output only
+    int exposureScale = -1, toneMap = -1;                      // display output only
+    int metallic = -1, roughness = -1, occlusionStrength = -1; // LR_PBR only
     int normalScale = -1, alphaCutoff = -1;
     // KHR_texture_transform's mat3 per texture role (LR_TEXTURE_TRANSFORM), in TextureRole's order.
     std::array<int, 5> textureTransforms{-1, -1, -1, -1, -1};

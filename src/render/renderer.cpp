@@ -302,7 +302,7 @@ bool Renderer::renderGBuffer(const ViewCamera& camera, QSize size, const RenderS
                                   &g[i]) ||
               fail(QStringLiteral("reading back a float target failed"))) &&
              ok;
-    decodeGBufferImages(g, readDepth(this, m_targets->gbufferFbo, target), out);
+    decodeGBufferImages(g, readDepth(this, m_targets->gbufferFbo, target), frame.shade.model, out);
     m_stats.shaderVariantsCompiled = m_programs->compiledCount();
     m_stats.shaderVariantsCached = m_programs->cachedCount();
     return ok;

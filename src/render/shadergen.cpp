@@ -81,6 +81,9 @@ std::uint64_t FeatureKey::bits() const {
     put(material.textureTransform, 1);
     put(material.alphaMask, 1);
     put(material.alphaBlend, 1);
+    put(material.metalRoughTexture, 1);
+    put(material.occlusionTexture, 1);
+    put(unsigned(rig.shading), keybits::kShading);
     put(unsigned(quality), keybits::kQuality);
     put(unsigned(output), keybits::kOutput);
     put(deferredLighting, 1);
@@ -99,10 +102,13 @@ QString FeatureKey::describe() const {
     parts << QStringLiteral("specular:") + toString(rig.specular)
           << QStringLiteral("viewer:") + toString(rig.viewer);
     if (rig.lightAmbient) parts << QStringLiteral("light-ambient");
+    if (rig.shading == ShadingModel::Pbr) parts << QStringLiteral("shading:pbr");
     QStringList tex;
     if (material.baseColorTexture) tex << QStringLiteral("base");
     if (material.normalMap) tex << QStringLiteral("normal");
     if (material.emissiveTexture) tex << QStringLiteral("emissive");
+    if (material.metalRoughTexture) tex << QStringLiteral("metal-rough");
+    if (material.occlusionTexture) tex << QStringLiteral("occlusion");
     if (!tex.isEmpty()) parts << QStringLiteral("tex:") + tex.join(QLatin1Char(','));
     if (material.vertexColors) parts << QStringLiteral("vertex-colors");
     if (material.doubleSided) parts << QStringLiteral("double-sided");
@@ -128,8 +134,11 @@ RigFeatures allRigFeatures(const RigFeatures& rig) {
 
 RigFeatures rigFeatures(const Rig& rig) {
     RigFeatures f;
-    f.specular = rig.shading.specular;
-    f.viewer = rig.shading.viewer;
+    f.shading = rig.shading.model;
+    // Under PBR neither the specular nor the viewer model applies (prepareSettings: always the local
+    // viewer): one value each, so they never split PBR variants.
+    f.specular = f.shading == ShadingModel::Pbr ? SpecularModel::Phong : rig.shading.specular;
+    f.viewer = f.shading == ShadingModel::Pbr ? ViewerModel::Local : rig.shading.viewer;
     for (const Light& l : rig.lights) {
         if (!l.enabled) continue;
         f.lightTypes |= bit(l.type);
@@ -154,6 +163,8 @@ MaterialFeatures materialFeatures(const Model& model, const Mesh& mesh) {
     f.baseColorTexture = valid(m.baseColorTexture);
     f.normalMap = valid(m.normalTexture);
     f.emissiveTexture = valid(m.emissiveTexture);
+    f.metalRoughTexture = valid(m.metallicRoughnessTexture);
+    f.occlusionTexture = valid(m.occlusionTexture);
     f.doubleSided = m.doubleSided;
     // A transform counts only where its texture is used; identity transforms compile nothing.
     const std::pair<int, const TextureTransform*> roles[] = {
@@ -195,6 +206,9 @@ QByteArray shaderPrelude(const FeatureKey& key) {
     out += "#define LR_VIEWER LR_VIEWER_" + macroName(EnumNames<ViewerModel>::names[size_t(key.rig.viewer)]) +
            '\n';
     if (key.rig.lightAmbient) out += "#define LR_HAS_LIGHT_AMBIENT 1\n";
+    // Physically based shading and its textures: only in PBR programs, so classic preludes are unchanged.
+    const bool pbr = key.rig.shading == ShadingModel::Pbr;
+    if (pbr) out += "#define LR_PBR 1\n";
     if (key.material.baseColorTexture) out += "#define LR_BASE_COLOR_TEXTURE 1\n";
     if (key.material.normalMap) out += "#define LR_NORMAL_MAP 1\n";
     if (key.material.emissiveTexture) out += "#define LR_EMISSIVE_TEXTURE 1\n";
@@ -203,6 +217,8 @@ QByteArray shaderPrelude(const FeatureKey& key) {
     if (key.material.textureTransform) out += "#define LR_TEXTURE_TRANSFORM 1\n";
     if (key.material.alphaMask) out += "#define LR_ALPHA_MASK 1\n";
     if (key.material.alphaBlend) out += "#define LR_ALPHA_BLEND 1\n";
+    if (pbr && key.material.metalRoughTexture) out += "#define LR_METAL_ROUGH_TEXTURE 1\n";
+    if (pbr && key.material.occlusionTexture) out += "#define LR_OCCLUSION_TEXTURE 1\n";
     out += "#define LR_QUALITY_" + macroName(EnumNames<Quality>::names[size_t(key.quality)]) + " 1\n";
     if (key.deferredLighting) out += "#define LR_DEFERRED_LIGHTING 1\n";
     if (key.clustered) out += "#define LR_CLUSTERED 1\n";
@@ -215,6 +231,9 @@ QByteArray shaderPrelude(const FeatureKey& key) {
                                                             {approx::kF2, "LR_FAST_INFINITE_VIEWER"}};
     for (const auto& [bit, name] : defines)
         if (approximations & bit) out += "#define " + QByteArray(name) + " 1\n";
+    // The BRDF's own approximations exist only in PBR programs (a classic balanced prelude stays as it was).
+    if (pbr && (approximations & approx::kB5)) out += "#define LR_B5 1\n";
+    if (pbr && (approximations & approx::kB6)) out += "#define LR_B6 1\n";
     if (key.quality == Quality::Balanced && key.shininessInt > 0 && key.shininessInt <= kMaxShininessInt &&
         (approximations & approx::kB2)) {
         // x^n by repeated squaring, unrolled here so the shader is a plain chain of products.
@@ -243,8 +262,8 @@ QByteArray shaderPrelude(const FeatureKey& key) {
 namespace approx {
 
 namespace {
-constexpr std::pair<std::uint8_t, const char*> kNames[] = {
-    {kB1, "b1"}, {kB2, "b2"}, {kB3, "b3"}, {kB4, "b4"}, {kF2, "f2"}};
+constexpr std::pair<std::uint8_t, const char*> kNames[] = {{kB1, "b1"}, {kB2, "b2"}, {kB3, "b3"}, {kB4, "b4"},
+                                                           {kF2, "f2"}, {kB5, "b5"}, {kB6, "b6"}};
 static_assert(std::size(kNames) == kCount);
 } // namespace
 
@@ -270,7 +289,7 @@ bool parseApproximations(const QString& text, std::uint8_t* out, QString* error)
             if (!found) {
                 if (error)
                     *error = QStringLiteral("unknown approximation '%1' (expected a comma-separated list of "
-                                            "b1, b2, b3, b4, f2, or none)")
+                                            "b1, b2, b3, b4, b5, b6, f2, or none)")
                                  .arg(word.trimmed());
                 return false;
             }

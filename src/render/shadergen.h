@@ -31,6 +31,8 @@ struct RigFeatures {
     SpecularModel specular = SpecularModel::Phong;
     ViewerModel viewer = ViewerModel::Local;
     bool lightAmbient = false; // some surface light has an ambient colour
+    // Physically based (LR_PBR): the glTF BRDF; specular is then Phong and viewer Local (neither applies).
+    ShadingModel shading = ShadingModel::Classic;
     bool operator==(const RigFeatures&) const = default;
 };
 
@@ -46,6 +48,10 @@ struct MaterialFeatures {
     bool textureTransform = false;
     bool alphaMask = false;
     bool alphaBlend = false;
+    // glTF metal-rough textures, sampled under physically based shading only (the geometry pass clears
+    // them for classic rigs, so a classic program never sees them).
+    bool metalRoughTexture = false;
+    bool occlusionTexture = false;
     bool operator==(const MaterialFeatures&) const = default;
 };
 
@@ -82,18 +88,20 @@ constexpr int kMaxShininessInt = 256;
 // outgrows its field fails to compile here instead of silently aliasing two shader variants.
 namespace keybits {
 constexpr int kFalloffs = 5, kCones = 3, kDiffuses = 2, kSpecular = 1, kViewer = 1, kQuality = 2, kOutput = 2,
-              kShininessInt = 9;
+              kShininessInt = 9, kShading = 1;
 } // namespace keybits
 static_assert(enumCount<FalloffModel>() <= keybits::kFalloffs, "widen FeatureKey::bits()'s falloff field");
 static_assert(enumCount<ConeModel>() <= keybits::kCones, "widen FeatureKey::bits()'s cone field");
 static_assert(enumCount<DiffuseModel>() <= keybits::kDiffuses, "widen FeatureKey::bits()'s diffuse field");
 static_assert(enumCount<SpecularModel>() <= (1 << keybits::kSpecular));
 static_assert(enumCount<ViewerModel>() <= (1 << keybits::kViewer));
+static_assert(enumCount<ShadingModel>() <= (1 << keybits::kShading),
+              "widen FeatureKey::bits()'s shading field");
 static_assert(enumCount<Quality>() <= (1 << keybits::kQuality));
 static_assert(int(ShaderOutput::GBuffer) < (1 << keybits::kOutput));
 static_assert(kMaxShininessInt < (1 << keybits::kShininessInt));
 namespace keybits {
-constexpr int kApproximations = 5;
+constexpr int kApproximations = 7;
 }
 static_assert(approx::kCount <= keybits::kApproximations, "widen FeatureKey::bits()'s approximation field");
 

@@ -17,6 +17,8 @@ enum class TextureUnit : GLuint {
     ClusterIndices = 9,
     SceneColor = 10, // the tone-map pass's input (resolved radiance)
     SceneDepth = 11, // the overlay pass's occlusion test (resolved depth)
+    MetalRough = 12, // physically based material textures (mesh.frag, LR_PBR; GpuDraw's PBR textures)
+    Occlusion = 13,
 };
 
 constexpr int kMaterialTextureUnits = 3; // BaseColor, Normal, Emissive
@@ -44,10 +46,12 @@ inline constexpr SamplerBinding kSamplerBindings[] = {
     {"uClusterIndices", TextureUnit::ClusterIndices},
     {"uHdr", TextureUnit::SceneColor},
     {"uSceneDepth", TextureUnit::SceneDepth},
+    {"uMetalRoughTex", TextureUnit::MetalRough},
+    {"uOcclusionTex", TextureUnit::Occlusion},
 };
 
 // GL 3.3 guarantees 16 texture image units per fragment stage.
-static_assert(GLuint(TextureUnit::SceneDepth) < 16);
+static_assert(GLuint(TextureUnit::Occlusion) < 16);
 static_assert(GLuint(TextureUnit::GBuffer0) + 4 <= GLuint(TextureUnit::ClusterRanges));
 
 } // namespace lr::render

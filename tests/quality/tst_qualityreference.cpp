@@ -23,6 +23,10 @@ using namespace lr::test;
 namespace {
 
 const QSize kSize(120, 90);
+// B5 + B6 (balanced, physically based): relative per-channel tolerance in linear radiance and the mean
+// 8-bit levels above exact's, set from their measured error (docs/quality.md).
+constexpr double kPbrBalancedTolerance = 0.05;
+constexpr double kPbrBalancedMeanLevels = 0.5;
 
 Rig mixedRig() {
     for (const RigCase& c : rigCases())
@@ -81,6 +85,52 @@ class TestQualityReference : public QObject {
         QVERIFY2(fast.levels.meanLevels >= exact.levels.meanLevels, qPrintable(fast.summary()));
     }
 
+    // Physically based shading (issue 13): every tier against the same double reference, on the spheres
+    // of metallic 0/1 × roughness 0/0.4/1. Balanced with B5 (Schlick as a spherical Gaussian) and B6
+    // (Filament's visibility) on as well as with the shipped set; fast is the per-vertex split of
+    // lighting.glsl (shadeVertexPbr), bounded as the classic fast tier is.
+    void pbrTiersAgainstReference_data() {
+        QTest::addColumn<int>("rigIndex");
+        const auto cases = pbrRigCases();
+        for (int i = 0; i < int(cases.size()); ++i)
+            QTest::addRow("%s", cases[size_t(i)].name) << i;
+    }
+
+    void pbrTiersAgainstReference() {
+        QFETCH(int, rigIndex);
+        const Rig rig = pbrRigCases()[size_t(rigIndex)].make();
+        const auto model = pbrSpheresScene();
+        const ViewCamera cam = pbrSpheresCamera();
+        RenderSettings brdf;
+        brdf.approximations = render::approx::kDefault | render::approx::kB5 | render::approx::kB6;
+        const TierFrame exact = renderTier(m_gl, model, rig, cam, kSize, Quality::Exact, 1e-4);
+        const TierFrame balanced = renderTier(m_gl, model, rig, cam, kSize, Quality::Balanced, 2e-3);
+        const TierFrame approximated =
+            renderTier(m_gl, model, rig, cam, kSize, Quality::Balanced, kPbrBalancedTolerance, brdf);
+        const TierFrame fast = renderTier(m_gl, model, rig, cam, kSize, Quality::Fast, 1.0);
+        qInfo().noquote() << "exact:      " << exact.summary();
+        qInfo().noquote() << "balanced:   " << balanced.summary();
+        qInfo().noquote() << "b5+b6:      " << approximated.summary();
+        qInfo().noquote() << "fast:       " << fast.summary();
+        for (const TierFrame* f : {&exact, &balanced, &approximated, &fast}) {
+            QVERIFY2(f->error.isEmpty(), qPrintable(f->error));
+            QCOMPARE(f->levels.nonFinite, 0);
+            QVERIFY2(f->levels.pixels > kSize.width() * kSize.height() / 8, qPrintable(f->summary()));
+        }
+        QVERIFY2(exact.linear.failures == 0 && exact.linear.skipped <= exact.linear.covered / 50,
+                 qPrintable(exact.summary()));
+        QVERIFY2(exact.levels.shareOver1() <= 0.001, qPrintable(exact.summary()));
+        QVERIFY2(balanced.linear.failures == 0, qPrintable(balanced.summary()));
+        QVERIFY2(balanced.levels.meanLevels <= exact.levels.meanLevels + 0.1 &&
+                     balanced.levels.shareOver1() <= 0.01,
+                 qPrintable(balanced.summary()));
+        QVERIFY2(approximated.linear.failures == 0, qPrintable(approximated.summary()));
+        QVERIFY2(approximated.levels.meanLevels <= exact.levels.meanLevels + kPbrBalancedMeanLevels,
+                 qPrintable(approximated.summary()));
+        QVERIFY2(fast.levels.meanLevels <= 64.0, qPrintable(fast.summary()));
+        QVERIFY2(fast.levels.meanLevels >= exact.levels.meanLevels, qPrintable(fast.summary()));
+    }
+
     // Gouraud shading is measurably worse than per-pixel on a curved, specular scene.
     void fastIsAnApproximation() {
         const TierFrame exact =
@@ -109,6 +159,33 @@ class TestQualityReference : public QObject {
         QVERIFY2(fast.levels.maxLevels <= 1 && fast.linear.failures == 0, qPrintable(fast.summary()));
         QVERIFY2(fast.levels.pixels == exact.levels.pixels && fast.levels.pixels > 1000,
                  qPrintable(fast.summary()));
+    }
+
+    // F1-PBR's split (lighting.glsl shadeVertexPbr / shadePixelPbr) is exact algebra: where the lights'
+    // D·Vis and Schlick weight are the same at every vertex — directional lights on a plane seen from
+    // far away through a narrow lens (V varies by < 0.002 rad) — fast must equal exact, with F0, c_diff,
+    // occlusion, the light's and the scene's ambient, rim and emissive applied per pixel.
+    void pbrFastSplitExactWhereLightingIsConstant() {
+        auto model = gridPlane(2.0, 8);
+        Material& m = model->materials[0];
+        m.pbr = true, m.metallic = 0.5f, m.roughness = 0.7f, m.emissive = {0.02f, 0.01f, 0.0f};
+        Light half = directional({0.5, -0.2, -1.0}, DiffuseModel::HalfLambert);
+        half.ambient = glm::dvec3(0.2, 0.1, 0.05);
+        Rig rig = pbrRig(
+            {directional({-0.3, -0.4, -1.0}, DiffuseModel::Lambert), half, rim({1.0, -0.5, -0.3}, 2.0)},
+            glm::dvec3(0.1, 0.1, 0.12));
+        ViewCamera far;
+        far.eye = {0.0, 0.0, 1000.0};
+        far.target = {0.0, 0.0, 0.0};
+        far.yfovDeg = 0.25;
+        const TierFrame exact = renderTier(m_gl, model, rig, far, kSize, Quality::Exact, 1e-4);
+        const TierFrame fast = renderTier(m_gl, model, rig, far, kSize, Quality::Fast, 1e-3);
+        qInfo().noquote() << "exact:" << exact.summary() << "\nfast: " << fast.summary();
+        QVERIFY2(exact.error.isEmpty() && fast.error.isEmpty(), qPrintable(exact.error + fast.error));
+        QVERIFY2(fast.linear.failures == 0 && fast.levels.maxLevels <= 1, qPrintable(fast.summary()));
+        QVERIFY2(fast.levels.pixels == exact.levels.pixels && fast.levels.pixels > 1000,
+                 qPrintable(fast.summary()));
+        QVERIFY2(fast.linear.maxReference > 0.05, "the plane should be lit");
     }
 
     // A known difference: the frame rendered at +0.5 EV against the reference at 0 EV.

@@ -240,4 +240,96 @@ inline std::vector<RigCase> rigCases() {
     };
 }
 
+// Physically based (issue 13): six spheres in one model, metallic 0 (top row) and 1 (bottom row) by
+// roughness 0 (floored to kMinRoughness), 0.4 and 1, each its own material; occlusion strength 1.
+inline std::shared_ptr<Model> pbrSpheresScene() {
+    auto m = std::make_shared<Model>();
+    m->origin = glm::dvec3(0.0);
+    m->bounds.min = glm::dvec3(-1.5, -1.0, -0.5);
+    m->bounds.max = glm::dvec3(1.5, 1.0, 0.5);
+    const float roughness[] = {0.0f, 0.4f, 1.0f};
+    for (int row = 0; row < 2; ++row) {
+        for (int col = 0; col < 3; ++col) {
+            const glm::dvec3 c(-1.0 + col, row == 0 ? 0.5 : -0.5, 0.0);
+            Model one = makeSphere(0.45, 64, 32, c);
+            Mesh mesh = one.meshes.front();
+            for (Vertex& v : mesh.vertices)
+                v.position += glm::vec3(one.origin - m->origin);
+            Material mat;
+            mat.name = QStringLiteral("m%1r%2").arg(row).arg(col);
+            mat.pbr = true;
+            mat.baseColor =
+                row == 0 ? glm::vec4(0.8f, 0.3f, 0.2f, 1.0f) : glm::vec4(0.95f, 0.75f, 0.35f, 1.0f);
+            mat.metallic = float(row);
+            mat.roughness = roughness[col];
+            mesh.material = int(m->materials.size());
+            m->materials.push_back(mat);
+            m->meshes.push_back(std::move(mesh));
+        }
+    }
+    return m;
+}
+
+inline ViewCamera pbrSpheresCamera() {
+    ViewCamera c;
+    c.eye = {0.0, 0.3, 4.0};
+    c.target = {0.0, 0.0, 0.0};
+    c.yfovDeg = 45.0;
+    return c;
+}
+
+// Lights as glTF imports them (KHR_lights_punctual): inverse square with the range window, smooth cone of
+// exponent 2, candela / lux.
+inline Light gltfPoint(glm::dvec3 p, double candela, double range) {
+    Light l = point(p, FalloffModel::InverseSquare, range);
+    l.intensity = candela;
+    return l;
+}
+
+inline Light gltfSpot(glm::dvec3 p, glm::dvec3 target, double candela) {
+    Light l = spot(p, target, ConeModel::Smooth, 10.0, 35.0, 2.0);
+    l.falloff.model = FalloffModel::InverseSquare;
+    l.falloff.range = -1.0;
+    l.intensity = candela;
+    return l;
+}
+
+inline Rig pbrRig(std::vector<Light> lights, glm::dvec3 ambient = glm::dvec3(0.0)) {
+    Rig r = rigOf(std::move(lights));
+    r.shading.model = ShadingModel::Pbr;
+    r.ambient = ambient;
+    return r;
+}
+
+// One physically based rig per light type, and one mixing them with a rim, a half-Lambert light, a light
+// with an ambient colour and the scene ambient.
+inline std::vector<RigCase> pbrRigCases() {
+    return {
+        {"pbr-point",
+         [] {
+             return pbrRig({gltfPoint({1.0, 1.5, 2.5}, 12.0, 12.0)});
+         }},
+        {"pbr-spot",
+         [] {
+             return pbrRig({gltfSpot({-0.5, 2.0, 3.0}, {0.0, 0.0, 0.0}, 20.0)});
+         }},
+        {"pbr-directional",
+         [] {
+             Light sun = directional({-0.4, -0.5, -1.0}, DiffuseModel::Lambert);
+             sun.intensity = 2.5; // lux
+             return pbrRig({sun});
+         }},
+        {"pbr-mixed",
+         [] {
+             Light half = directional({0.6, -0.2, -1.0}, DiffuseModel::HalfLambert);
+             Light amb = gltfPoint({-1.5, -1.0, 2.0}, 6.0, -1.0);
+             amb.ambient = glm::dvec3(0.2, 0.1, 0.05);
+             return pbrRig({gltfPoint({1.0, 1.5, 2.5}, 12.0, 12.0),
+                            gltfSpot({-0.5, 2.0, 3.0}, {0, 0, 0}, 20.0), half, amb,
+                            rim({1.0, -0.5, -0.3}, 2.0)},
+                           glm::dvec3(0.3, 0.3, 0.35));
+         }},
+    };
+}
+
 } // namespace lr::test

@@ -13,6 +13,7 @@
 #include "core/lighting.h"
 #include "render/offscreen.h"
 
+#include <QSet>
 #include <QTest>
 #include <glm/trigonometric.hpp>
 
@@ -22,6 +23,16 @@ using namespace lr::test;
 namespace {
 constexpr double kTolerance = 1e-4;
 const QSize kSize(96, 72);
+
+const char* tierNameOf(Quality q) {
+    return EnumNames<Quality>::names[size_t(q)];
+}
+
+bool near(double got, double expected, double tol) {
+    if (std::abs(got - expected) <= tol) return true;
+    qWarning("got %.9g, expected %.9g +- %.3g", got, expected, tol);
+    return false;
+}
 
 RenderSettings floatSettings() {
     RenderSettings s;
@@ -79,6 +90,109 @@ class TestRenderAccuracy : public QObject {
         QVERIFY2(c.covered > kSize.width() * kSize.height() / 4, qPrintable(c.summary()));
         QVERIFY2(c.skipped <= c.covered / 50, qPrintable(c.summary()));
         QVERIFY2(c.maxReference > 0.0 || rig.lights.empty(), "the scene should be lit");
+    }
+
+    // Physically based shading (issue 13): spheres of metallic 0/1 × roughness 0/0.4/1 under each light
+    // type, forward, deferred (deferred.frag) and clustered (cluster.glsl), against the double reference.
+    void pbrMatchesDoubleReference_data() {
+        QTest::addColumn<int>("rigIndex");
+        QTest::addColumn<int>("path");
+        const auto cases = pbrRigCases();
+        for (int i = 0; i < int(cases.size()); ++i) {
+            QTest::addRow("forward/%s", cases[size_t(i)].name) << i << 0;
+            QTest::addRow("deferred/%s", cases[size_t(i)].name) << i << 1;
+            QTest::addRow("clustered/%s", cases[size_t(i)].name) << i << 2;
+        }
+    }
+
+    void pbrMatchesDoubleReference() {
+        QFETCH(int, rigIndex);
+        QFETCH(int, path);
+        const Rig rig = pbrRigCases()[size_t(rigIndex)].make();
+        RenderSettings s = floatSettings();
+        s.shadingPath = path == 1 ? ShadingPath::Deferred : ShadingPath::Forward;
+        s.clusteredShading = path == 2 ? 1 : 0;
+        QString error;
+        QVERIFY(m_gl.setModel(pbrSpheresScene(), &error));
+        m_gl.setRig(rig);
+        FloatImage radiance;
+        GBuffer g;
+        QVERIFY2(m_gl.renderRadiance(pbrSpheresCamera(), kSize, s, &radiance, &error), qPrintable(error));
+        QCOMPARE(m_gl.renderer().stats().deferred, path == 1); // the path the case names was taken
+        QCOMPARE(m_gl.renderer().stats().clustered, path == 2);
+        QVERIFY2(m_gl.renderGBuffer(pbrSpheresCamera(), kSize, s, &g, &error), qPrintable(error));
+        QVERIFY(g.shading == ShadingModel::Pbr);
+        const ViewCamera cam = m_gl.renderer().effectiveCamera(pbrSpheresCamera());
+        const Comparison c =
+            compareWithReference(radiance, g, rig, m_gl.renderer().sceneFrame(), cam.view(), kTolerance);
+        qInfo().noquote() << c.summary();
+        QVERIFY2(c.failures == 0 && c.nonFinite == 0, qPrintable(c.summary()));
+        QVERIFY2(c.covered > kSize.width() * kSize.height() / 8, qPrintable(c.summary()));
+        QVERIFY2(c.skipped <= c.covered / 50, qPrintable(c.summary()));
+        QVERIFY2(c.maxReference > 0.0, "the scene should be lit");
+        // The G-buffer carries each sphere's factors: both metallic values and the three roughnesses.
+        QSet<int> metallic, roughness;
+        for (const glm::vec4& m : g.material.pixels)
+            if (m.w > 0.5f) metallic.insert(qRound(m.x * 10)), roughness.insert(qRound(m.y * 10));
+        QCOMPARE(metallic, (QSet<int>{0, 10}));
+        QCOMPARE(roughness, (QSet<int>{0, 4, 10}));
+    }
+
+    // The physically based material inputs (mesh.frag surfaceHere): metallic = factor × B, roughness =
+    // factor × G of the metal-rough texture (linear), occlusion = 1 + strength·(R − 1); none: 1.
+    void pbrMaterialInputs() {
+        QString error;
+        auto model = planeScene();
+        QImage mr(8, 8, QImage::Format_RGBA8888);
+        mr.fill(QColor(0, 128, 255)); // linear: G = 128/255 roughness, B = 1 metal
+        QImage ao(8, 8, QImage::Format_RGBA8888);
+        ao.fill(QColor(51, 0, 0)); // R = 0.2
+        model->textures.push_back({QStringLiteral("*0"), mr});
+        model->textures.push_back({QStringLiteral("*1"), ao});
+        Material& m = model->materials[0];
+        m.pbr = true, m.metallic = 0.5f, m.roughness = 0.8f, m.metallicRoughnessTexture = 0;
+        m.occlusionTexture = 1, m.occlusionStrength = 0.5f;
+        QVERIFY(m_gl.setModel(model, &error));
+        m_gl.setRig(pbrRigCases()[0].make());
+        ViewCamera cam;
+        cam.eye = {0, 0, 3};
+        GBuffer g;
+        QVERIFY2(m_gl.renderGBuffer(cam, QSize(16, 16), floatSettings(), &g, &error), qPrintable(error));
+        const glm::vec4 got = g.material.at(8, 8);
+        QVERIFY(near(got.x, 0.5, 1e-6));
+        QVERIFY(near(got.y, 0.8 * 128 / 255.0, 1e-3));
+        QVERIFY(near(got.z, 1.0 + 0.5 * (0.2 - 1.0), 1e-3));
+        // Shaded with the textures in every tier (the fast tier reads the roughness in the vertex stage):
+        // finite everywhere, and the exact tier equal to the double reference of its G-buffer.
+        const Rig lit = pbrRigCases()[3].make();
+        m_gl.setRig(lit);
+        for (Quality q : {Quality::Exact, Quality::Balanced, Quality::Fast}) {
+            RenderSettings s = floatSettings();
+            s.quality = q;
+            FloatImage radiance;
+            QVERIFY2(m_gl.renderRadiance(cam, QSize(24, 24), s, &radiance, &error), qPrintable(error));
+            QVERIFY2(m_gl.renderGBuffer(cam, QSize(24, 24), s, &g, &error), qPrintable(error));
+            const Comparison c = compareWithReference(radiance, g, lit, m_gl.renderer().sceneFrame(),
+                                                      m_gl.renderer().effectiveCamera(cam).view(),
+                                                      q == Quality::Exact ? kTolerance : 1.0);
+            qInfo().noquote() << tierNameOf(q) << c.summary();
+            QVERIFY2(c.nonFinite == 0 && c.covered > 0 && c.maxReference > 0.0, qPrintable(c.summary()));
+            if (q == Quality::Exact) QVERIFY2(c.failures == 0, qPrintable(c.summary()));
+        }
+        m_gl.setRig(pbrRigCases()[0].make());
+        // Without the textures: the factors, and occlusion 1.
+        m.metallicRoughnessTexture = m.occlusionTexture = -1;
+        QVERIFY(m_gl.setModel(model, &error));
+        QVERIFY2(m_gl.renderGBuffer(cam, QSize(16, 16), floatSettings(), &g, &error), qPrintable(error));
+        QVERIFY(near(g.material.at(8, 8).x, 0.5, 0));
+        QVERIFY(near(g.material.at(8, 8).y, 0.8, 1e-7));
+        QVERIFY(near(g.material.at(8, 8).z, 1.0, 0));
+        // A classic rig neither samples nor stores them.
+        m_gl.setRig(rigCases()[0].make());
+        QVERIFY2(m_gl.renderGBuffer(cam, QSize(16, 16), floatSettings(), &g, &error), qPrintable(error));
+        QVERIFY(g.shading == ShadingModel::Classic);
+        QVERIFY(g.material.isNull());
+        QCOMPARE(g.specular.at(8, 8).w, 24.0f);
     }
 
     // Exposure, tone map and sRGB encoding of the output pass against lighting::toneMap/linearToSrgb.

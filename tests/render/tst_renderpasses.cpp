@@ -134,18 +134,87 @@ class TestRenderPasses : public QObject {
         QCOMPARE(d.specular, s.specular);
         QCOMPARE(d.emissive, s.emissive);
         QCOMPARE(d.shininess, s.shininess);
-        // Every channel of every target holds exactly one field.
-        int used[kGBufferTargets][4] = {};
-        for (const GBufferSlot& slot : kGBufferLayout)
-            for (int c = 0; c < slot.width; ++c)
-                ++used[slot.target][slot.channel + c];
-        for (const auto& target : used)
-            for (int n : target)
-                QCOMPARE(n, 1);
-        // The GLSL twin is generated from the same table.
+        // Classic: every channel of every target holds exactly one field. Physically based: at most one
+        // (ks and shininess have no meaning there; metallic, roughness and occlusion take ks's channels).
+        for (ShadingModel model : {ShadingModel::Classic, ShadingModel::Pbr}) {
+            int used[kGBufferTargets][4] = {};
+            for (const GBufferSlot& slot : kGBufferLayout)
+                if (usedUnder(slot, model))
+                    for (int c = 0; c < slot.width; ++c)
+                        ++used[slot.target][slot.channel + c];
+            for (const auto& target : used)
+                for (int n : target)
+                    QVERIFY(model == ShadingModel::Classic ? n == 1 : n <= 1);
+        }
+        lighting::Surface<float> p = s;
+        p.metallic = 0.25f, p.roughness = 0.625f, p.occlusion = 0.5f;
+        const lighting::Surface<float> pd =
+            decodeGBuffer(encodeGBuffer(p, ShadingModel::Pbr), ShadingModel::Pbr);
+        QCOMPARE(pd.position, p.position);
+        QCOMPARE(pd.normal, p.normal);
+        QCOMPARE(pd.albedo, p.albedo);
+        QCOMPARE(pd.emissive, p.emissive);
+        QCOMPARE(pd.metallic, p.metallic);
+        QCOMPARE(pd.roughness, p.roughness);
+        QCOMPARE(pd.occlusion, p.occlusion);
+        // The classic encoding is the one it always was: the PBR fields do not reach it.
+        QCOMPARE(encodeGBuffer(p), encodeGBuffer(s));
+        // The GLSL twin is generated from the same table; the rows of one model are inside its #if.
         const QByteArray glsl = gbufferGlsl();
-        for (const GBufferSlot& slot : kGBufferLayout)
-            QVERIFY2(glsl.contains(QByteArray("s.") + slot.member), slot.member);
+        for (const GBufferSlot& slot : kGBufferLayout) {
+            const QByteArray line = QByteArray("s.") + slot.member;
+            QVERIFY2(glsl.contains(line), slot.member);
+            if (slot.use == GBufferUse::Pbr)
+                QVERIFY(glsl.contains("#ifdef LR_PBR\n    g" + QByteArray::number(slot.target)));
+        }
+    }
+
+    // Physically based shading is a key bit (LR_PBR) that classic keys never carry: a classic prelude
+    // has no PBR define, no PBR texture or approximation define even when the material has those textures
+    // or the set names B5/B6; the PBR key differs by the LR_PBR line and what hangs on it.
+    void pbrIsAKeyBitClassicNeverSees() {
+        Rig rig = rigOf({point({0, 0, 1}, FalloffModel::InverseSquare)});
+        rig.shading.specular = SpecularModel::BlinnPhong;
+        rig.shading.viewer = ViewerModel::Infinite;
+        FeatureKey classic;
+        classic.rig = rigFeatures(rig);
+        classic.quality = Quality::Balanced;
+        classic.approximations = approx::forTier(approx::kBalancedMask, Quality::Balanced);
+        FeatureKey classicTextured = classic;
+        classicTextured.material.metalRoughTexture = classicTextured.material.occlusionTexture = true;
+        const QByteArray prelude = shaderPrelude(classic);
+        for (const char* define :
+             {"LR_PBR", "LR_B5", "LR_B6", "LR_METAL_ROUGH_TEXTURE", "LR_OCCLUSION_TEXTURE"}) {
+            QVERIFY2(!prelude.contains(define), define);
+            QVERIFY2(!shaderPrelude(classicTextured).contains(define), define);
+        }
+        QVERIFY(!classic.describe().contains(QLatin1String("pbr")));
+
+        rig.shading.model = ShadingModel::Pbr;
+        FeatureKey pbr = classic;
+        pbr.rig = rigFeatures(rig);
+        QVERIFY(pbr.rig.shading == ShadingModel::Pbr);
+        // Neither the specular nor the viewer model splits PBR variants; PBR always uses the local viewer.
+        QVERIFY(pbr.rig.specular == SpecularModel::Phong);
+        QVERIFY(pbr.rig.viewer == ViewerModel::Local);
+        QVERIFY(pbr.bits() != classic.bits());
+        QVERIFY(pbr.describe().contains(QLatin1String("shading:pbr")));
+        pbr.material.metalRoughTexture = pbr.material.occlusionTexture = true;
+        const QByteArray p = shaderPrelude(pbr);
+        for (const char* define : {"#define LR_PBR 1", "#define LR_B5 1", "#define LR_B6 1",
+                                   "#define LR_METAL_ROUGH_TEXTURE 1", "#define LR_OCCLUSION_TEXTURE 1"})
+            QVERIFY2(p.contains(define), define);
+        // The texture bits are key bits of their own.
+        FeatureKey untextured = pbr;
+        untextured.material = {};
+        QVERIFY(untextured.bits() != pbr.bits());
+
+        // The names of the BRDF's approximations parse.
+        std::uint8_t set = 0;
+        QString error;
+        QVERIFY(approx::parseApproximations(QStringLiteral("b5,B6"), &set, &error));
+        QCOMPARE(int(set), int(approx::kB5 | approx::kB6));
+        QCOMPARE(approx::approximationNames(set), QStringLiteral("b5,b6"));
     }
 
     void colourModuleIsTheOneDisplayTransform() {
