@@ -136,6 +136,13 @@ Surface surfaceHere() {
     s.metallic *= metalRough.b;
     s.roughness *= metalRough.g;
 #endif
+    // Geometric roughness (specular anti-aliasing, as three.js and Filament): the screen-space change of the
+    // interpolated (not normal-mapped) normal widens the lobe where a pixel spans a range of normals, so a
+    // highlight narrower than a pixel neither flickers nor vanishes. The G-buffer stores the result: the
+    // deferred pass and the double reference shade the same roughness.
+    vec3 unperturbed = safeNormalize(vNormal, vec3(0.0, 0.0, 1.0));
+    vec3 geometric = max(abs(dFdx(unperturbed)), abs(dFdy(unperturbed)));
+    s.roughness = min(s.roughness + max(max(geometric.x, geometric.y), geometric.z), 1.0);
     s.occlusion = 1.0;
 #ifdef LR_OCCLUSION_TEXTURE
     s.occlusion = 1.0 + uOcclusionStrength * (texture(uOcclusionTex, lrUv(uOcclusionTransform)).r - 1.0);
