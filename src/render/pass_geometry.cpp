@@ -82,6 +82,9 @@ FeatureKey MeshPass::meshKey(const FrameContext& frame, const PassScene& scene, 
     key.material = d.features;
     if (shaded.shading != ShadingModel::Pbr) // classic programs never sample the PBR textures
         key.material.metalRoughTexture = key.material.occlusionTexture = false;
+    // Occlusion scales ambient light only (glTF): without any (no scene ambient, no light's ambient colour)
+    // it changes nothing, so the texture is not read (the G-buffer then holds occlusion 1).
+    if (rig.ambient == glm::dvec3(0.0) && !shaded.lightAmbient) key.material.occlusionTexture = false;
     key.quality = gpass ? Quality::Exact : settings.quality; // the G-buffer is the exact surface
     key.approximations = approx::forTier(settings.approximations, key.quality);
     // B2: an integer shininess becomes a chain of products (classic: PBR has no shininess)

@@ -161,7 +161,7 @@ class TestRenderAccuracy : public QObject {
         m.pbr = true, m.metallic = 0.5f, m.roughness = 0.8f, m.metallicRoughnessTexture = 0;
         m.occlusionTexture = 1, m.occlusionStrength = 0.5f;
         QVERIFY(m_gl.setModel(model, &error));
-        m_gl.setRig(pbrRigCases()[0].make());
+        m_gl.setRig(pbrRigCases()[3].make()); // with ambient light: the occlusion texture is read
         ViewCamera cam;
         cam.eye = {0, 0, 3};
         GBuffer g;
@@ -170,6 +170,11 @@ class TestRenderAccuracy : public QObject {
         QVERIFY(near(got.x, 0.5, 1e-6));
         QVERIFY(near(got.y, 0.8 * 128 / 255.0, 1e-3));
         QVERIFY(near(got.z, 1.0 + 0.5 * (0.2 - 1.0), 1e-3));
+        // Without ambient light occlusion changes nothing, so it is not read: the G-buffer holds 1.
+        m_gl.setRig(pbrRigCases()[0].make());
+        QVERIFY2(m_gl.renderGBuffer(cam, QSize(16, 16), floatSettings(), &g, &error), qPrintable(error));
+        QVERIFY(near(g.material.at(8, 8).y, 0.8 * 128 / 255.0, 1e-3));
+        QCOMPARE(g.material.at(8, 8).z, 1.0f);
         // Shaded with the textures in every tier (the fast tier reads the roughness in the vertex stage):
         // finite everywhere, and the exact tier equal to the double reference of its G-buffer.
         const Rig lit = pbrRigCases()[3].make();
