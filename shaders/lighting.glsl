@@ -261,7 +261,10 @@ struct PbrLobes {
 // One light's two lobes per unit of light: diffuse = (1 - F) c_diff / π · cosTerm, specular = F D V · N·L.
 PbrLobes pbrLobes(vec3 N, vec3 L, vec3 V, vec3 cDiff, vec3 f0, float alpha, float cosTerm) {
     PbrLobes o;
-    vec3 H = safeNormalize(L + V, N);  // L = -V: H = N
+    // H from two unit vectors (lighting.h): |L + V| <= 2, the plain quotient; L = -V (or a NaN): H = N.
+    vec3 h = L + V;
+    float hh = dot(h, h);
+    vec3 H = hh > 1e-12 ? h / sqrt(hh) : N;
     vec3 F = fresnelSchlick(f0, dot(V, H));
     o.diffuse = (vec3(1.0) - F) * cDiff * (cosTerm * kInvPi);
     o.specular = vec3(0.0);

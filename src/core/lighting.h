@@ -241,7 +241,12 @@ template <typename T>
 PbrLobes<T> pbrLobes(Vec3<T> N, Vec3<T> L, Vec3<T> V, const Vec3<T>& cDiff, const Vec3<T>& f0, T alpha,
                      T cosTerm) {
     PbrLobes<T> o;
-    const Vec3<T> H = safeNormalize(L + V, N); // L = -V: H = N
+    // H from two unit vectors: |L + V| <= 2, so the plain quotient cannot overflow, and the scale-invariant
+    // safeNormalize (which lightArrival needs for L, from positions of any magnitude) would only cost time
+    // here. L = -V (or a NaN): H = N.
+    const Vec3<T> h = L + V;
+    const T hh = glm::dot(h, h);
+    const Vec3<T> H = hh > T(1e-12) ? h / std::sqrt(hh) : N;
     const Vec3<T> F = fresnelSchlick(f0, glm::dot(V, H));
     o.diffuse = (Vec3<T>(1) - F) * cDiff * (cosTerm * T(1.0 / kPi));
     const T nDotL = glm::dot(N, L);
