@@ -96,6 +96,9 @@ Surface surfaceHere() {
 #else
     vec3 n = safeNormalize(vNormal, vec3(0.0, 0.0, 1.0));
 #endif
+#ifdef LR_PBR
+    vec3 unperturbed = n;  // the interpolated normal, before the normal map and the flip: see below
+#endif
 #if defined(LR_NORMAL_MAP) && !defined(LR_QUALITY_FAST)
     vec3 t = safeNormalize(vTangent.xyz - n * dot(n, vTangent.xyz), vec3(0.0));
     vec3 b = cross(n, t) * (vTangent.w < 0.0 ? -1.0 : 1.0);
@@ -140,7 +143,6 @@ Surface surfaceHere() {
     // interpolated (not normal-mapped) normal widens the lobe where a pixel spans a range of normals, so a
     // highlight narrower than a pixel neither flickers nor vanishes. The G-buffer stores the result: the
     // deferred pass and the double reference shade the same roughness.
-    vec3 unperturbed = safeNormalize(vNormal, vec3(0.0, 0.0, 1.0));
     vec3 geometric = max(abs(dFdx(unperturbed)), abs(dFdy(unperturbed)));
     s.roughness = min(s.roughness + max(max(geometric.x, geometric.y), geometric.z), 1.0);
     s.occlusion = 1.0;
