@@ -8,6 +8,7 @@
 #include <QImage>
 #include <QString>
 #include <QStringList>
+#include <array>
 #include <cstdint>
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
@@ -74,6 +75,25 @@ struct Material {
         occlusionTransform;
     bool operator==(const Material&) const = default;
 };
+
+// A material's five texture roles, in one order wherever they are listed (the worker codec, the renderer's
+// TextureRole and transform uniforms, its feature bits): base colour, normal, emissive,
+// metallic-roughness, occlusion.
+constexpr int kTextureRoles = 5;
+// The texture references (indices into Model::textures, -1: none), by role.
+inline std::array<int, kTextureRoles> textureReferences(const Material& m) {
+    return {m.baseColorTexture, m.normalTexture, m.emissiveTexture, m.metallicRoughnessTexture,
+            m.occlusionTexture};
+}
+// The KHR_texture_transforms, by role.
+inline std::array<const TextureTransform*, kTextureRoles> textureTransforms(const Material& m) {
+    return {&m.baseColorTransform, &m.normalTransform, &m.emissiveTransform, &m.metallicRoughnessTransform,
+            &m.occlusionTransform};
+}
+inline std::array<TextureTransform*, kTextureRoles> textureTransforms(Material& m) {
+    return {&m.baseColorTransform, &m.normalTransform, &m.emissiveTransform, &m.metallicRoughnessTransform,
+            &m.occlusionTransform};
+}
 
 struct Mesh {
     QString name;

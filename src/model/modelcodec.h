@@ -46,22 +46,6 @@ struct ModelCodecLimits {
 // Receives the encoding in pieces; returns false to stop.
 using ModelSink = std::function<bool(const char* data, std::size_t size)>;
 
-// A material's texture transforms in the order the codec writes them (base colour, normal, emissive,
-// metallic-roughness, occlusion).
-inline std::array<const TextureTransform*, 5> textureTransforms(const Material& m) {
-    return {&m.baseColorTransform, &m.normalTransform, &m.emissiveTransform, &m.metallicRoughnessTransform,
-            &m.occlusionTransform};
-}
-inline std::array<TextureTransform*, 5> textureTransforms(Material& m) {
-    return {&m.baseColorTransform, &m.normalTransform, &m.emissiveTransform, &m.metallicRoughnessTransform,
-            &m.occlusionTransform};
-}
-// A material's texture references (indices into Model::textures, -1: none).
-inline std::array<int, 5> textureReferences(const Material& m) {
-    return {m.baseColorTexture, m.normalTexture, m.emissiveTexture, m.metallicRoughnessTexture,
-            m.occlusionTexture};
-}
-
 // The encoded model (header + body) in one array. Textures are converted to RGBA8888 when they are not.
 QByteArray encodeModel(const Model& model);
 // The same bytes, streamed: large arrays reach the sink straight from the model, without a copy.

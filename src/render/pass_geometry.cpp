@@ -149,9 +149,7 @@ bool MeshPass::drawMeshes(const FrameContext& frame, PassScene& scene,
         glUniform1f(p->shininess, m.shininess >= 0.0f ? m.shininess : float(rig.shading.shininess));
         if (p->normalScale >= 0) glUniform1f(p->normalScale, m.normalScale);
         if (p->alphaCutoff >= 0) glUniform1f(p->alphaCutoff, m.alphaCutoff);
-        const TextureTransform* transforms[] = {&m.baseColorTransform, &m.normalTransform,
-                                                &m.emissiveTransform, &m.metallicRoughnessTransform,
-                                                &m.occlusionTransform};
+        const auto transforms = textureTransforms(m);
         for (size_t i = 0; i < p->textureTransforms.size(); ++i)
             if (p->textureTransforms[i] >= 0)
                 glUniformMatrix3fv(p->textureTransforms[i], 1, GL_FALSE,

@@ -50,15 +50,18 @@ struct MeshProgram {
     int metallic = -1, roughness = -1, occlusionStrength = -1; // LR_PBR only
     int normalScale = -1, alphaCutoff = -1;
     // KHR_texture_transform's mat3 per texture role (LR_TEXTURE_TRANSFORM), in TextureRole's order.
-    std::array<int, 5> textureTransforms{-1, -1, -1, -1, -1};
+    std::array<int, kTextureRoles> textureTransforms{-1, -1, -1, -1, -1};
 };
 
-// The texture roles of a glTF material, each with its own KHR_texture_transform (Material's *Transform).
+// The texture roles of a glTF material, each with its own KHR_texture_transform, in model.h's role order
+// (textureTransforms(), textureReferences()).
 enum class TextureRole { BaseColor, Normal, Emissive, MetalRough, Occlusion };
 // The mat3 uniform of each role in mesh.frag (uBaseColorTransform, ...).
 inline constexpr const char* kTextureTransformUniforms[] = {"uBaseColorTransform", "uNormalTransform",
                                                             "uEmissiveTransform", "uMetalRoughTransform",
                                                             "uOcclusionTransform"};
+static_assert(std::size(kTextureTransformUniforms) == kTextureRoles,
+              "one transform uniform per texture role");
 
 class ProgramCache {
   public:

@@ -167,14 +167,10 @@ MaterialFeatures materialFeatures(const Model& model, const Mesh& mesh) {
     f.occlusionTexture = valid(m.occlusionTexture);
     f.doubleSided = m.doubleSided;
     // A transform counts only where its texture is used; identity transforms compile nothing.
-    const std::pair<int, const TextureTransform*> roles[] = {
-        {m.baseColorTexture, &m.baseColorTransform},
-        {m.normalTexture, &m.normalTransform},
-        {m.emissiveTexture, &m.emissiveTransform},
-        {m.metallicRoughnessTexture, &m.metallicRoughnessTransform},
-        {m.occlusionTexture, &m.occlusionTransform}};
-    for (const auto& [texture, transform] : roles)
-        if (valid(texture) && !transform->isIdentity()) f.textureTransform = true;
+    const auto textures = textureReferences(m);
+    const auto transforms = textureTransforms(m);
+    for (int i = 0; i < kTextureRoles; ++i)
+        if (valid(textures[size_t(i)]) && !transforms[size_t(i)]->isIdentity()) f.textureTransform = true;
     f.alphaMask = m.alphaMode == AlphaMode::Mask;
     f.alphaBlend = m.alphaMode == AlphaMode::Blend;
     return f;
