@@ -13,17 +13,11 @@ namespace {
 
 constexpr char kEmissiveStrength[] = "KHR_materials_emissive_strength";
 
-quint32 u32(const char* p) {
-    return quint32(uchar(p[0])) | quint32(uchar(p[1])) << 8 | quint32(uchar(p[2])) << 16 |
-           quint32(uchar(p[3])) << 24;
-}
-
 // The JSON text of a .gltf, or of a GLB's JSON chunk (read alone: the binary chunk can be large).
 QByteArray gltfJson(QFile& file) {
     const QByteArray header = file.peek(20);
     if (!header.startsWith("glTF")) return file.readAll();
-    if (header.size() < 20 || u32(header.constData() + 16) != 0x4E4F534Au) return {}; // "JSON"
-    const qint64 length = std::min<qint64>(u32(header.constData() + 12), file.size() - 20);
+    const qint64 length = glbJsonLength(header, file.size());
     if (length <= 0 || !file.seek(20)) return {};
     return file.read(length);
 }

@@ -80,5 +80,11 @@ qint64 coincidentVertexPairs(const aiScene* scene);
 QString preflight(const QString& path, qint64 maxDataUriBytes);
 // The length of the longest "data:" URI in glTF JSON or a GLB's JSON chunk.
 qint64 largestDataUri(QByteArrayView bytes);
+// The little-endian u32 at `at` of a GLB header or chunk (the caller checked that 4 bytes are there).
+quint32 glbU32(QByteArrayView bytes, qsizetype at);
+// A GLB's JSON chunk starts at byte 20; its length as `header` (the file's first bytes, "glTF"...)
+// declares it, clamped to a file of `fileSize` bytes; -1 when the header is short or the first chunk
+// is not JSON.
+qint64 glbJsonLength(QByteArrayView header, qint64 fileSize);
 
 } // namespace lr::detail

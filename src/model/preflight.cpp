@@ -199,18 +199,13 @@ QString checkColladaIndices(QByteArrayView text) {
     return {};
 }
 
-quint32 u32At(QByteArrayView bytes, qsizetype at) {
-    return quint32(uchar(bytes[at])) | quint32(uchar(bytes[at + 1])) << 8 |
-           quint32(uchar(bytes[at + 2])) << 16 | quint32(uchar(bytes[at + 3])) << 24;
-}
-
 // A binary glTF's header and chunk lengths against the bytes present: Assimp allocates what they claim
 // (an 80-byte file whose JSON chunk claimed 4 GB cost 4.2 GB and a minute).
 QString checkGlb(QByteArrayView bytes) {
     const qint64 size = bytes.size();
     if (size < 12)
         return QStringLiteral("the file is %1 bytes, shorter than a GLB header (12 bytes)").arg(size);
-    const quint32 version = u32At(bytes, 4), length = u32At(bytes, 8);
+    const quint32 version = glbU32(bytes, 4), length = glbU32(bytes, 8);
     if (version != 1 && version != 2)
         return QStringLiteral("the GLB header has version %1; glTF binary files are version 1 or 2")
             .arg(version);
@@ -220,7 +215,7 @@ QString checkGlb(QByteArrayView bytes) {
             .arg(length)
             .arg(size);
     if (version == 1) { // glTF 1.0 binary: content length and format, then the content
-        if (size < 20 || u32At(bytes, 12) > quint32(length) - std::min<quint32>(length, 20))
+        if (size < 20 || glbU32(bytes, 12) > quint32(length) - std::min<quint32>(length, 20))
             return QStringLiteral("the GLB content length exceeds the file's %1 bytes").arg(length);
         return {};
     }
@@ -230,7 +225,7 @@ QString checkGlb(QByteArrayView bytes) {
             return QStringLiteral("GLB chunk %1 is cut off after %2 bytes of its header")
                 .arg(index)
                 .arg(length - at);
-        const quint32 chunk = u32At(bytes, at);
+        const quint32 chunk = glbU32(bytes, at);
         if (qint64(chunk) > length - at - 8)
             return QStringLiteral("GLB chunk %1 declares %2 bytes, but only %3 follow in the file")
                 .arg(index)
@@ -244,14 +239,21 @@ QString checkGlb(QByteArrayView bytes) {
 
 } // namespace
 
+quint32 glbU32(QByteArrayView bytes, qsizetype at) {
+    return quint32(uchar(bytes[at])) | quint32(uchar(bytes[at + 1])) << 8 |
+           quint32(uchar(bytes[at + 2])) << 16 | quint32(uchar(bytes[at + 3])) << 24;
+}
+
+qint64 glbJsonLength(QByteArrayView header, qint64 fileSize) {
+    // 12-byte header, then the first chunk: length, type ("JSON" = 0x4E4F534A), data.
+    if (header.size() < 20 || glbU32(header, 16) != 0x4E4F534Au) return -1;
+    return std::max<qint64>(0, std::min<qint64>(glbU32(header, 12), fileSize - 20));
+}
+
 qint64 largestDataUri(QByteArrayView bytes) {
-    if (bytes.startsWith("glTF")) { // GLB: 12-byte header, then the JSON chunk (length, "JSON", data)
+    if (bytes.startsWith("glTF")) {
         if (bytes.size() < 20) return -1;
-        const auto u32 = [&](qsizetype at) {
-            return quint32(uchar(bytes[at])) | quint32(uchar(bytes[at + 1])) << 8 |
-                   quint32(uchar(bytes[at + 2])) << 16 | quint32(uchar(bytes[at + 3])) << 24;
-        };
-        bytes = bytes.sliced(20, std::min<qint64>(u32(12), bytes.size() - 20));
+        bytes = bytes.sliced(20, std::max<qint64>(0, glbJsonLength(bytes, bytes.size())));
     }
     qint64 largest = 0;
     for (qsizetype at = bytes.indexOf("\"data:"); at >= 0; at = bytes.indexOf("\"data:", at + 1)) {
