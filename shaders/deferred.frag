@@ -10,7 +10,6 @@ uniform vec3 uAmbient;
 uniform float uDistanceScale;
 #ifdef LR_OUTPUT_DISPLAY
 uniform float uExposureScale;
-uniform int uToneMap;
 #endif
 
 out vec4 oColor;
@@ -28,7 +27,7 @@ void main() {
     vec3 radiance = shadeSurface(s, st);
 #endif
 #ifdef LR_OUTPUT_DISPLAY
-    oColor = vec4(displayEncode(radiance, uExposureScale, uToneMap), 1.0);
+    oColor = vec4(displayEncode(radiance, uExposureScale, LR_TONE_MAP), 1.0);
 #else
     oColor = vec4(radiance, 1.0);
 #endif

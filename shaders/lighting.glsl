@@ -59,16 +59,15 @@ float safeAcos(float c) {
     return x < 0.0 ? 3.14159265358979 - r : r;
 }
 
-// v / |v|, scale-invariant (works for denormal and huge components); zero, NaN or Inf -> fallback.
-// After the division by the largest magnitude m one component is exactly ±1, so dot(v, v) is in [1, 3]
-// unless a component is NaN (which max() may skip): the second test catches that.
+// v / |v| at any magnitude (denormal to huge components); zero, NaN or Inf -> fallback. lighting.h's
+// safeNormalize divides by the largest component first; here v is scaled by a power of two (exact) when
+// |v|² would leave the normal floats, then normalised with one inversesqrt: the same to rounding, at two
+// divisions' cost instead of seven, and written with selects (llvmpipe runs both sides of a branch).
 vec3 safeNormalize(vec3 v, vec3 fallback) {
-    float m = max(max(abs(v.x), abs(v.y)), abs(v.z));
-    if (!(m > 0.0) || !(m <= kFloatMax)) return fallback;
-    v /= m;
-    float s = dot(v, v);
-    if (!(s >= 1.0)) return fallback;
-    return v / sqrt(s);
+    float t2 = dot(v, v);
+    vec3 w = v * (t2 > 1e30 ? 7.888609052210118e-31 : (t2 < 1e-30 ? 1.2676506002282294e30 : 1.0));  // 2^∓100
+    float w2 = dot(w, w);
+    return w2 > 0.0 && w2 <= kFloatMax ? w * inversesqrt(w2) : fallback;
 }
 
 // The balanced tier's approximations LR_B1 ... LR_B4 are defined by the generator (shadergen.cpp): B1, B2
@@ -116,12 +115,13 @@ float falloffRangePower(float d, float range, float exponent) {
     return lrPow(saturate(t), exponent);
 }
 
+// Written with selects rather than early returns (here and in the PBR path below): llvmpipe evaluates
+// both sides of a branch under a mask anyway, and a return inside an inlined function becomes a flag that
+// guards everything after it. The values are those of the branching form for every input, NaN included.
 float rangeWindow(float d, float range) {
-    if (range < 0.0) return 1.0;
-    if (!(d < range)) return 0.0;
     float r = d / range, r2 = r * r;
     float w = saturate(1.0 - r2 * r2);
-    return w * w;
+    return range < 0.0 ? 1.0 : (d < range ? w * w : 0.0);
 }
 
 float falloffInversePolynomial(float d, float constant, float linear, float quadratic, float range) {
@@ -140,10 +140,9 @@ float falloffRangeQuadratic(float d, float range) {
 
 float falloffInverseSquare(float d, float range) {
     float w = rangeWindow(d, range);
-    if (!(w > 0.0)) return 0.0;
     float d2 = d * d;
-    if (!(d2 > kMinDenominator)) d2 = kMinDenominator;
-    return w / d2;
+    d2 = d2 > kMinDenominator ? d2 : kMinDenominator;
+    return w > 0.0 ? w / d2 : 0.0;
 }
 
 // ---- spot cone s(cos(theta)), cos(theta) = dot(-L, spotDirection) ----
@@ -211,11 +210,10 @@ float pbrAlpha(float roughness) {
 // D(h) = α² / (π ((N·H)² (α² - 1) + 1)²) for N·H > 0, the bracket as (N·H)² α² + |N×H|² (Lagrange).
 float ggxDistribution(vec3 N, vec3 H, float alpha) {
     float nDotH = dot(N, H);
-    if (!(nDotH > 0.0)) return 0.0;
     vec3 c = cross(N, H);
     float a2 = alpha * alpha;
     float k = nDotH * nDotH * a2 + dot(c, c);
-    return a2 / (kPi * k * k);
+    return nDotH > 0.0 ? a2 / (kPi * k * k) : 0.0;
 }
 
 // Height-correlated Smith visibility; LR_B6: Filament's 0.5 / mix(2 N·L N·V, N·L + N·V, α).
@@ -261,19 +259,20 @@ struct PbrLobes {
 // One light's two lobes per unit of light: diffuse = (1 - F) c_diff / π · cosTerm, specular = F D V · N·L.
 PbrLobes pbrLobes(vec3 N, vec3 L, vec3 V, vec3 cDiff, vec3 f0, float alpha, float cosTerm) {
     PbrLobes o;
-    // H from two unit vectors (lighting.h): |L + V| <= 2, the plain quotient; L = -V (or a NaN): H = N.
+    // H from two unit vectors (lighting.h): |L + V| <= 2 cannot overflow, so one inversesqrt (lighting.h
+    // divides by the square root: the same to rounding); L = -V (or a NaN): H = N.
     vec3 h = L + V;
     float hh = dot(h, h);
-    vec3 H = hh > 1e-12 ? h / sqrt(hh) : N;
+    vec3 H = hh > 1e-12 ? h * inversesqrt(hh) : N;
     vec3 F = fresnelSchlick(f0, dot(V, H));
     o.diffuse = (vec3(1.0) - F) * cDiff * (cosTerm * kInvPi);
-    o.specular = vec3(0.0);
     float nDotL = dot(N, L);
-    if (!(nDotL > 0.0)) return o;  // no specular from behind (a wrapped diffuse may still light it)
     float nDotV = abs(dot(N, V));
-    if (!(nDotV > kMinNDotV)) nDotV = kMinNDotV;
+    nDotV = nDotV > kMinNDotV ? nDotV : kMinNDotV;
     float nl = nDotL < 1.0 ? nDotL : 1.0;
-    o.specular = F * (ggxDistribution(N, H, alpha) * smithVisibility(nl, nDotV, alpha) * nl);
+    float specular = ggxDistribution(N, H, alpha) * smithVisibility(nl, nDotV, alpha) * nl;
+    // no specular from behind (a wrapped diffuse may still light it)
+    o.specular = nDotL > 0.0 ? F * specular : vec3(0.0);
     return o;
 }
 #endif  // LR_PBR
@@ -348,6 +347,8 @@ float srgbToLinear(float x) {
 
 // Exposure (scale = 2^EV), tone map and sRGB encoding of linear radiance, per channel: what every output
 // path applies (the display paths per fragment, tonemap.frag after a float target).
+// `op` is a compile-time constant where it is called (LR_TONE_MAP, FeatureKey::toneMap), so only that
+// operator's code is compiled: llvmpipe would run every operator's branch for every pixel.
 vec3 displayEncode(vec3 radiance, float exposureScale, int op) {
     vec3 m = toneMapRgb(op, radiance * exposureScale);
     return vec3(linearToSrgb(m.r), linearToSrgb(m.g), linearToSrgb(m.b));
@@ -590,7 +591,9 @@ vec3 shadeLight(ShadeLight l, Surface s, ShadeSettings st, vec3 V) {
 #ifdef LR_PBR
 // The direction to a light and its attenuation (falloff × cone; 1 for a directional light) at the surface;
 // false when the light adds nothing there (shade.h lightArrival). The classic shadeLight() above inlines
-// the same steps and is left as it is, so classic programs compile exactly the text they did.
+// the same steps, except that its exact tier normalises with safeNormalize at any distance (classic keys
+// carry no LR_FAR_LIGHTS bit); folding it into this function is left for when the classic path gets the
+// bit too.
 bool lightArrival(ShadeLight l, Surface s, ShadeSettings st, out vec3 L, out float attenuation) {
     vec3 N = s.normal;
     L = -l.direction;
@@ -603,18 +606,23 @@ bool lightArrival(ShadeLight l, Surface s, ShadeSettings st, out vec3 L, out flo
         if (l.range > 1e-18 && lightIsBounded(l) && d2 * (st.distanceScale * st.distanceScale) >= l.range * l.range)
             return false;
 #endif
-#ifdef LR_B4
+#ifndef LR_FAR_LIGHTS
+        // L and d from one inversesqrt (the classic B4, here in every tier). Exact where 1e-15 < |toLight|
+        // < 1e15: the renderer compiles this only when no positional light can be 1e15 from a visible
+        // surface (LightSet::update bounds it), and below 1e-15 the light is on the surface (float positions
+        // of a visible surface, beyond the near plane, cannot differ by less unless they are equal): L = N,
+        // d = 0, as safeNormalize.
         float t2 = dot(toLight, toLight);
         float inv = inversesqrt(t2);
         bool inRange = t2 > 1e-30 && t2 < 1e30;
         L = inRange ? toLight * inv : N;
         float d = (inRange ? t2 * inv : (!(t2 <= 1.0) ? kFloatMax : 0.0)) * st.distanceScale;
-        if (!(abs(d) <= kFloatMax)) d = kFloatMax;
 #else
+        // LR_FAR_LIGHTS: rescaled first, exact at any distance.
         L = safeNormalize(toLight, N);  // a light on the surface shines along the normal
         float d = dot(toLight, L) * st.distanceScale;
-        if (!(abs(d) <= kFloatMax)) d = kFloatMax;
 #endif
+        d = abs(d) <= kFloatMax ? d : kFloatMax;
 #ifdef LR_HAS_LIGHT_SPOT
         float cosTheta = dot(-L, l.direction);
 #ifdef LR_B3
@@ -642,16 +650,17 @@ vec3 shadeLightPbr(ShadeLight l, Surface s, ShadeSettings st, vec3 V, vec3 cDiff
 #ifdef LR_HAS_SURFACE_LIGHTS
     vec3 L;
     float attenuation;
-    if (!lightArrival(l, s, st, L, attenuation)) return vec3(0.0);
+    bool arrives = lightArrival(l, s, st, L, attenuation);
     float nDotL = dot(N, L);
     float cosTerm = diffuseOf(l) == LR_DIFFUSE_LAMBERT ? diffuseLambert(nDotL) : diffuseHalfLambert(nDotL);
     PbrLobes f = pbrLobes(N, L, V, cDiff, f0, alpha, cosTerm);
 #ifdef LR_HAS_LIGHT_AMBIENT
-    return attenuation * (l.color * f.diffuse + l.specular * f.specular +
-                          l.ambient * cDiff * (saturate(s.occlusion) * kInvPi));
+    vec3 radiance = attenuation * (l.color * f.diffuse + l.specular * f.specular +
+                                   l.ambient * cDiff * (saturate(s.occlusion) * kInvPi));
 #else
-    return attenuation * (l.color * f.diffuse + l.specular * f.specular);
+    vec3 radiance = attenuation * (l.color * f.diffuse + l.specular * f.specular);
 #endif
+    return arrives ? radiance : vec3(0.0);
 #else
     return vec3(0.0);
 #endif

@@ -81,7 +81,6 @@ layout(location = 2) out vec4 oGBuffer2;
 layout(location = 3) out vec4 oGBuffer3;
 #elif defined(LR_OUTPUT_DISPLAY)
 uniform float uExposureScale;  // 2^EV
-uniform int uToneMap;
 layout(location = 0) out vec4 oColor;  // sRGB-encoded display colour, alpha 1 (BLEND: premultiplied)
 #else
 layout(location = 0) out vec4 oColor;  // linear radiance, alpha 1 (coverage after the MSAA resolve;
@@ -176,7 +175,7 @@ void main() {
     vec3 radiance = shadeSurface(s, st);
 #endif
 #ifdef LR_OUTPUT_DISPLAY
-    vec3 colour = displayEncode(radiance, uExposureScale, uToneMap);
+    vec3 colour = displayEncode(radiance, uExposureScale, LR_TONE_MAP);
 #else
     vec3 colour = radiance;
 #endif

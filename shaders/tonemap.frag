@@ -3,14 +3,13 @@
 // lighting::toneMap and lighting::linearToSrgb.
 uniform sampler2D uHdr;
 uniform float uExposureScale;  // 2^EV
-uniform int uToneMap;
 uniform vec3 uBackground;  // linear
 uniform bool uTransparent;
 
 out vec4 oColor;
 
 vec3 mapped(vec3 radiance) {  // displayEncode() without the encoding: composited before it
-    return toneMapRgb(uToneMap, radiance * uExposureScale);
+    return toneMapRgb(LR_TONE_MAP, radiance * uExposureScale);
 }
 
 vec3 encode(vec3 c) { return vec3(linearToSrgb(c.r), linearToSrgb(c.g), linearToSrgb(c.b)); }

@@ -37,6 +37,7 @@ struct FrameContext {
     bool fast = false;                     // Quality::Fast: per vertex, no MSAA, forward only
     bool deferred = false;                 // G-pass + deferred lighting
     bool clustered = false;                // the lights were binned for this frame
+    bool farLights = false;                // LightSet::farLights(): PBR programs rescale L (LR_FAR_LIGHTS)
     bool overlays = false;                 // gizmos or grid
     int samples = 0;                       // of the scene target (> 1: MSAA)
     bool gbufferReadBack = false;          // renderGBuffer: clear the G-buffer's colour too

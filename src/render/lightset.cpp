@@ -44,9 +44,14 @@ void LightSet::update(QOpenGLFunctions_3_3_Core* gl, const SceneFrame& frame, co
     const double scale = prepareSettings(m_rig, frame).distanceScale;
     m_bounds.clear();
     m_boundedLights = 0;
+    m_farLights = false;
+    // The farthest a visible surface can be from the eye: the model's bounding sphere in view space.
+    const double surfaceReach = glm::length(glm::dvec3(view * glm::dvec4(frame.center, 1.0))) + frame.radius;
     for (const Light& l : m_rig.lights) {
         if (!lightReaches(m_rig, frame, l, frame.center, frame.radius)) continue;
         const lighting::ShadeLight<double> prepared = prepareLight(m_rig, frame, view, l);
+        if (l.usesPosition() && !(glm::length(prepared.position) + surfaceReach < kFarLightDistance))
+            m_farLights = true;
         m_bounds.push_back(lightBounds(prepared, scale));
         m_boundedLights += m_bounds.back().bounded ? 1 : 0;
         const LightTexels t = packLight(castLight<float>(prepared));

@@ -19,6 +19,10 @@ namespace lr::render {
 
 struct MeshProgram;
 
+// Where lighting.glsl's single-inversesqrt light direction stops being exact is |toLight| = 1e15; a
+// decade of margin covers the float rounding of the view-space positions.
+inline constexpr double kFarLightDistance = 1e14;
+
 class LightSet {
   public:
     void initialize(QOpenGLFunctions_3_3_Core* gl);
@@ -33,6 +37,10 @@ class LightSet {
     void update(QOpenGLFunctions_3_3_Core* gl, const SceneFrame& frame, const glm::dmat4& view,
                 RenderStats* stats);
     int count() const { return m_count; }
+    // Whether an uploaded point or spot light may be kFarLightDistance or more from the model's bounding
+    // sphere in view space (or its bound is not finite): physically based programs then rescale the
+    // direction to the light before normalising it (LR_FAR_LIGHTS, shaders/lighting.glsl lightArrival).
+    bool farLights() const { return m_farLights; }
 
     // Bins the uploaded lights for this projection and target; false when clustering is off for this
     // frame (settings, too few bounded lights, or a projection without a usable near plane).
@@ -50,6 +58,7 @@ class LightSet {
     bool m_dirty = true;
     glm::dmat4 m_uploadedView{0.0};
     int m_count = 0;
+    bool m_farLights = false;
     GLuint m_buffer = 0, m_texture = 0;
     std::vector<float> m_packed;       // what the buffer holds, to upload only what changed
     int m_capacity = 0;                // lights the buffer holds

@@ -55,8 +55,7 @@ bool GeometryPass::run(const FrameContext& frame, PassScene& scene) {
     if (!model || scene.model->draws().empty()) return true;
     // Fast lights the vertices, each with every light: clusters (per fragment) do not apply.
     const bool clustered = !gpass && frame.clustered;
-    const RigFeatures rigUses = rigFeatures(rig);
-    const RigFeatures shaded = settings.forceAllFeatures ? allRigFeatures(rigUses) : rigUses;
+    const RigFeatures shaded = frameRigFeatures(rig, frame.farLights, settings.forceAllFeatures);
 
     // Group the draws by program so each variant is bound once per frame. Blended (alphaMode BLEND)
     // meshes are the blend pass's (pass_blend.cpp): after all opaque geometry, never in the G-buffer.
@@ -94,6 +93,7 @@ FeatureKey MeshPass::meshKey(const FrameContext& frame, const PassScene& scene, 
         if (n >= 1.0 && n <= kMaxShininessInt && n == std::floor(n)) key.shininessInt = std::uint16_t(n);
     }
     key.output = output;
+    if (output == ShaderOutput::Display) key.toneMap = frame.toneMap;
     key.clustered = clustered;
     return key;
 }
@@ -140,7 +140,6 @@ bool MeshPass::drawMeshes(const FrameContext& frame, PassScene& scene,
             glUniformMatrix4fv(p->projection, 1, GL_FALSE, glm::value_ptr(proj));
             scene.lights->setUniforms(this, *p, frame.shade, clustered);
             if (p->exposureScale >= 0) glUniform1f(p->exposureScale, frame.exposureScale);
-            if (p->toneMap >= 0) glUniform1i(p->toneMap, int(frame.toneMap));
         }
         const Material& m = d->material >= 0 ? model->materials[size_t(d->material)] : defaultMaterial;
         glUniform4fv(p->baseColor, 1, glm::value_ptr(m.baseColor));

@@ -48,10 +48,11 @@ bool DeferredLightingPass::run(const FrameContext& frame, PassScene& scene) {
     if (!model) return true;
     const RenderSettings& settings = *frame.settings;
     FeatureKey key;
-    key.rig = settings.forceAllFeatures ? allRigFeatures(rigFeatures(*scene.rig)) : rigFeatures(*scene.rig);
+    key.rig = frameRigFeatures(*scene.rig, frame.farLights, settings.forceAllFeatures);
     key.quality = settings.quality; // never Fast: the fast tier is always forward
     key.approximations = approx::forTier(settings.approximations, key.quality);
     key.output = frame.colourPath == ColourPath::Hdr ? ShaderOutput::Radiance : ShaderOutput::Display;
+    if (key.output == ShaderOutput::Display) key.toneMap = frame.toneMap;
     key.deferredLighting = true;
     key.clustered = frame.clustered;
     QString error;
@@ -60,7 +61,6 @@ bool DeferredLightingPass::run(const FrameContext& frame, PassScene& scene) {
     p->program->bind();
     scene.lights->setUniforms(this, *p, frame.shade, key.clustered);
     if (p->exposureScale >= 0) glUniform1f(p->exposureScale, frame.exposureScale);
-    if (p->toneMap >= 0) glUniform1i(p->toneMap, int(frame.toneMap));
     scene.lights->bind(this, key.clustered);
     for (int i = 0; i < kGBufferTargets; ++i) {
         glActiveTexture(textureUnit(TextureUnit::GBuffer0, i));

@@ -8,7 +8,8 @@ namespace lr::render {
 
 bool ToneMapPass::run(const FrameContext& frame, PassScene& scene) {
     QString error;
-    QOpenGLShaderProgram* p = scene.programs->fixedProgram(kToneMapShader, &error);
+    QOpenGLShaderProgram* p =
+        scene.programs->fixedProgram(kToneMapShader, &error, toneMapDefine(frame.toneMap));
     if (!p) return fail(scene, error);
     glBindFramebuffer(GL_FRAMEBUFFER, frame.outputFbo);
     glViewport(0, 0, frame.targetSize.width(), frame.targetSize.height());
@@ -17,7 +18,6 @@ bool ToneMapPass::run(const FrameContext& frame, PassScene& scene) {
     glDisable(GL_FRAMEBUFFER_SRGB);
     p->bind();
     p->setUniformValue("uExposureScale", frame.exposureScale);
-    p->setUniformValue("uToneMap", int(frame.toneMap));
     p->setUniformValue("uBackground", frame.backgroundLinear.r, frame.backgroundLinear.g,
                        frame.backgroundLinear.b);
     p->setUniformValue("uTransparent", frame.transparent);

@@ -115,7 +115,6 @@ MeshProgram* ProgramCache::meshProgram(const FeatureKey& key, QString* error) {
     mp->distanceScale = p->uniformLocation("uDistanceScale");
     mp->lightCount = p->uniformLocation("uLightCount");
     mp->exposureScale = p->uniformLocation("uExposureScale");
-    mp->toneMap = p->uniformLocation("uToneMap");
     mp->normalScale = p->uniformLocation("uNormalScale");
     mp->alphaCutoff = p->uniformLocation("uAlphaCutoff");
     for (size_t i = 0; i < mp->textureTransforms.size(); ++i)
@@ -128,10 +127,11 @@ MeshProgram* ProgramCache::meshProgram(const FeatureKey& key, QString* error) {
     return m_mesh.emplace(key, std::move(mp)).first->second.get();
 }
 
-QOpenGLShaderProgram* ProgramCache::fixedProgram(const ShaderConfig& config, QString* error) {
-    const QString id = QLatin1String(config.name);
+QOpenGLShaderProgram* ProgramCache::fixedProgram(const ShaderConfig& config, QString* error,
+                                                 const QByteArray& defines) {
+    const QString id = QLatin1String(config.name) + QString::fromLatin1(defines);
     if (auto it = m_fixed.constFind(id); it != m_fixed.constEnd()) return it->get();
-    auto program = build(basicPrelude(), config, id, error);
+    auto program = build(basicPrelude() + defines, config, QLatin1String(config.name), error);
     if (!program) return nullptr;
     QOpenGLShaderProgram* p = program.get();
     bindSamplers(p);

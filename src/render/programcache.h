@@ -46,7 +46,7 @@ struct MeshProgram {
     int modelView = -1, normalMatrix = -1, projection = -1;
     int baseColor = -1, emissive = -1, specular = -1, shininess = -1, ambient = -1, distanceScale = -1;
     int lightCount = -1;
-    int exposureScale = -1, toneMap = -1;                      // display output only
+    int exposureScale = -1;                                    // display output only
     int metallic = -1, roughness = -1, occlusionStrength = -1; // LR_PBR only
     int normalScale = -1, alphaCutoff = -1;
     // KHR_texture_transform's mat3 per texture role (LR_TEXTURE_TRANSFORM), in TextureRole's order.
@@ -68,8 +68,10 @@ class ProgramCache {
     // The program for `key`, compiled on first request; nullptr when it failed (error says why; a failed
     // key is not retried until clear()).
     MeshProgram* meshProgram(const FeatureKey& key, QString* error);
-    // A fixed pass (kToneMapShader, kOverlayShader), with the basic prelude; compiled once.
-    QOpenGLShaderProgram* fixedProgram(const ShaderConfig& config, QString* error);
+    // A fixed pass (kToneMapShader, kOverlayShader), with the basic prelude and `defines` after it;
+    // compiled once per distinct `defines`.
+    QOpenGLShaderProgram* fixedProgram(const ShaderConfig& config, QString* error,
+                                       const QByteArray& defines = {});
 
     int compiledCount() const { return m_compiled; } // variants compiled since construction
     int cachedCount() const { return int(m_mesh.size()); }

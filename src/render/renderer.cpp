@@ -97,7 +97,9 @@ bool Renderer::initialize(QString* error) {
         releaseResources();
         return bail(QStringLiteral("cannot resolve the OpenGL 3.3 core functions for the render passes"));
     }
-    if (!m_programs->fixedProgram(kToneMapShader, &message) ||
+    // Compiled now so that a broken shader fails here, not at the first frame (the default tone map's
+    // variant; others compile when a frame asks for them).
+    if (!m_programs->fixedProgram(kToneMapShader, &message, toneMapDefine(RenderSettings().toneMap)) ||
         !m_programs->fixedProgram(kOverlayShader, &message)) {
         releaseResources();
         return bail(message);
@@ -244,6 +246,7 @@ bool Renderer::render(const ViewCamera& camera, QSize size, const RenderSettings
     const GLenum colorFormat = !hdr ? GL_RGBA8 : settings.hdrFloat32 ? GL_RGBA32F : GL_RGBA16F;
     if (!ensureTargets(frame.targetSize, wantDeferred ? 0 : samples, colorFormat)) return false;
     frame.deferred = wantDeferred && m_model->model() != nullptr;
+    frame.farLights = m_lights->farLights();
     frame.samples = m_targets->samples;
     QString error;
     if (frame.deferred && !m_targets->createGBuffer(this, &error)) return fail(error);

@@ -84,12 +84,14 @@ std::uint64_t FeatureKey::bits() const {
     put(material.metalRoughTexture, 1);
     put(material.occlusionTexture, 1);
     put(unsigned(rig.shading), keybits::kShading);
+    put(rig.farLights, 1);
     put(unsigned(quality), keybits::kQuality);
     put(unsigned(output), keybits::kOutput);
     put(deferredLighting, 1);
     put(clustered, 1);
     put(shininessInt, keybits::kShininessInt);
     put(approximations, keybits::kApproximations);
+    put(unsigned(toneMap), keybits::kToneMap);
     return b;
 }
 
@@ -103,6 +105,7 @@ QString FeatureKey::describe() const {
           << QStringLiteral("viewer:") + toString(rig.viewer);
     if (rig.lightAmbient) parts << QStringLiteral("light-ambient");
     if (rig.shading == ShadingModel::Pbr) parts << QStringLiteral("shading:pbr");
+    if (rig.farLights) parts << QStringLiteral("far-lights");
     QStringList tex;
     if (material.baseColorTexture) tex << QStringLiteral("base");
     if (material.normalMap) tex << QStringLiteral("normal");
@@ -119,6 +122,7 @@ QString FeatureKey::describe() const {
     if (output == ShaderOutput::GBuffer) parts << QStringLiteral("gbuffer");
     if (clustered) parts << QStringLiteral("clustered");
     if (shininessInt) parts << QStringLiteral("shininess:%1").arg(shininessInt);
+    if (output == ShaderOutput::Display) parts << QStringLiteral("tone-map:") + toString(toneMap);
     return parts.join(QLatin1Char(' '));
 }
 
@@ -129,7 +133,18 @@ RigFeatures allRigFeatures(const RigFeatures& rig) {
     f.cones = std::uint8_t((1u << enumCount<ConeModel>()) - 1);
     f.diffuses = std::uint8_t((1u << enumCount<DiffuseModel>()) - 1);
     f.lightAmbient = true;
+    f.farLights = f.shading == ShadingModel::Pbr;
     return f;
+}
+
+QByteArray toneMapDefine(ToneMap toneMap) {
+    return "#define LR_TONE_MAP LR_TONEMAP_" + macroName(EnumNames<ToneMap>::names[size_t(toneMap)]) + '\n';
+}
+
+RigFeatures frameRigFeatures(const Rig& rig, bool farLights, bool allFeatures) {
+    RigFeatures f = rigFeatures(rig);
+    f.farLights = farLights && f.shading == ShadingModel::Pbr;
+    return allFeatures ? allRigFeatures(f) : f;
 }
 
 RigFeatures rigFeatures(const Rig& rig) {
@@ -205,6 +220,7 @@ QByteArray shaderPrelude(const FeatureKey& key) {
     // Physically based shading and its textures: only in PBR programs, so classic preludes are unchanged.
     const bool pbr = key.rig.shading == ShadingModel::Pbr;
     if (pbr) out += "#define LR_PBR 1\n";
+    if (pbr && key.rig.farLights) out += "#define LR_FAR_LIGHTS 1\n";
     if (key.material.baseColorTexture) out += "#define LR_BASE_COLOR_TEXTURE 1\n";
     if (key.material.normalMap) out += "#define LR_NORMAL_MAP 1\n";
     if (key.material.emissiveTexture) out += "#define LR_EMISSIVE_TEXTURE 1\n";
@@ -244,6 +260,7 @@ QByteArray shaderPrelude(const FeatureKey& key) {
     switch (key.output) {
     case ShaderOutput::Display:
         out += "#define LR_OUTPUT_DISPLAY 1\n";
+        out += toneMapDefine(key.toneMap);
         break;
     case ShaderOutput::Radiance:
         out += "#define LR_OUTPUT_RADIANCE 1\n";

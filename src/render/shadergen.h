@@ -33,6 +33,11 @@ struct RigFeatures {
     bool lightAmbient = false; // some surface light has an ambient colour
     // Physically based (LR_PBR): the glTF BRDF; specular is then Phong and viewer Local (neither applies).
     ShadingModel shading = ShadingModel::Classic;
+    // Physically based only: some positional light may be 1e15 or more from a visible surface (view space),
+    // so L is rescaled before it is normalised (LR_FAR_LIGHTS). Not a property of the rig alone: the
+    // renderer sets it per frame from the light set's bound (LightSet::farLights()); rigFeatures() leaves
+    // it false.
+    bool farLights = false;
     bool operator==(const RigFeatures&) const = default;
 };
 
@@ -72,6 +77,10 @@ struct FeatureKey {
     // The tier's approximations compiled in (named bits, approx:: below; docs/quality.md). Only the bits of
     // the key's own tier are kept (approx::forTier), so exact variants never multiply.
     std::uint8_t approximations = 0;
+    // The tone map a display-output program applies, compiled in as a constant (LR_TONE_MAP): selected at
+    // run time, every operator's code ran for every pixel (llvmpipe evaluates all sides of a branch),
+    // a fifth of the helmet's frame. Other outputs leave it Clamp so that it never splits their variants.
+    ToneMap toneMap = ToneMap::Clamp;
 
     std::uint64_t bits() const; // a unique packing, for hashing and ordering
     QString describe() const;   // "point+spot falloff:range-power cone:smooth ... tex:base,normal"
@@ -88,7 +97,7 @@ constexpr int kMaxShininessInt = 256;
 // outgrows its field fails to compile here instead of silently aliasing two shader variants.
 namespace keybits {
 constexpr int kFalloffs = 5, kCones = 3, kDiffuses = 2, kSpecular = 1, kViewer = 1, kQuality = 2, kOutput = 2,
-              kShininessInt = 9, kShading = 1;
+              kShininessInt = 9, kShading = 1, kToneMap = 3;
 } // namespace keybits
 static_assert(enumCount<FalloffModel>() <= keybits::kFalloffs, "widen FeatureKey::bits()'s falloff field");
 static_assert(enumCount<ConeModel>() <= keybits::kCones, "widen FeatureKey::bits()'s cone field");
@@ -98,6 +107,7 @@ static_assert(enumCount<ViewerModel>() <= (1 << keybits::kViewer));
 static_assert(enumCount<ShadingModel>() <= (1 << keybits::kShading),
               "widen FeatureKey::bits()'s shading field");
 static_assert(enumCount<Quality>() <= (1 << keybits::kQuality));
+static_assert(enumCount<ToneMap>() <= (1 << keybits::kToneMap), "widen FeatureKey::bits()'s tone-map field");
 static_assert(int(ShaderOutput::GBuffer) < (1 << keybits::kOutput));
 static_assert(kMaxShininessInt < (1 << keybits::kShininessInt));
 namespace keybits {
@@ -108,6 +118,12 @@ static_assert(approx::kCount <= keybits::kApproximations, "widen FeatureKey::bit
 RigFeatures rigFeatures(const Rig& rig);
 // Every light type and model present (the über-shader); the rig-wide specular and viewer models stay.
 RigFeatures allRigFeatures(const RigFeatures& rig);
+// The features a frame shades the rig with: rigFeatures() and the frame's far-lights bound, or all of
+// them (allRigFeatures) for the über-shader. Every lit pass builds its keys from this.
+RigFeatures frameRigFeatures(const Rig& rig, bool farLights, bool allFeatures);
+// "#define LR_TONE_MAP LR_TONEMAP_ACES\n": the operator mesh.frag, deferred.frag and tonemap.frag pass to
+// displayEncode()/toneMapRgb() as a compile-time constant.
+QByteArray toneMapDefine(ToneMap toneMap);
 // Texture indices out of range count as absent.
 MaterialFeatures materialFeatures(const Model& model, const Mesh& mesh);
 // KHR_texture_transform as mesh.frag's lrUv applies it: uv' = T · R · S · uv (the extension's order:

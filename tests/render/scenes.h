@@ -329,6 +329,14 @@ inline std::vector<RigCase> pbrRigCases() {
                             rim({1.0, -0.5, -0.3}, 2.0)},
                            glm::dvec3(0.3, 0.3, 0.35));
          }},
+        // A light 1e16 away whose falloff does not fade with distance (None): its direction must come out
+        // right, so the renderer compiles the rescaled normalisation (LR_FAR_LIGHTS) for this frame.
+        {"pbr-far-light",
+         [] {
+             Light far = point({4e15, 6e15, 7e15}, FalloffModel::None);
+             far.intensity = 1.5;
+             return pbrRig({far, gltfPoint({1.0, 1.5, 2.5}, 12.0, 12.0)});
+         }},
     };
 }
 

@@ -208,23 +208,29 @@ class TestRenderAccuracy : public QObject {
         QCOMPARE(g.specular.at(8, 8).w, 24.0f);
     }
 
-    // Exposure, tone map and sRGB encoding of the output pass against lighting::toneMap/linearToSrgb.
+    // Exposure, tone map and sRGB encoding of the output against lighting::toneMap/linearToSrgb, on each
+    // path that applies them: per fragment forward (mesh.frag) and deferred (deferred.frag), and the
+    // HDR path's full-screen pass (tonemap.frag). Each compiles the tone map in as a constant
+    // (FeatureKey::toneMap, LR_TONE_MAP), so every operator is a program of its own on every path.
     void toneMappedOutput_data() {
         QTest::addColumn<int>("toneMap");
         QTest::addColumn<double>("ev");
-        QTest::newRow("clamp 0") << int(ToneMap::Clamp) << 0.0;
-        QTest::newRow("clamp +1.5") << int(ToneMap::Clamp) << 1.5;
-        QTest::newRow("reinhard +2") << int(ToneMap::Reinhard) << 2.0;
-        QTest::newRow("aces -0.5") << int(ToneMap::Aces) << -0.5;
-        QTest::newRow("neutral 0") << int(ToneMap::Neutral) << 0.0;
-        QTest::newRow("neutral +2") << int(ToneMap::Neutral) << 2.0;
-        QTest::newRow("agx 0") << int(ToneMap::Agx) << 0.0;
-        QTest::newRow("agx +3") << int(ToneMap::Agx) << 3.0;
+        QTest::addColumn<int>("path");
+        const std::pair<int, double> ops[] = {{int(ToneMap::Clamp), 0.0},    {int(ToneMap::Clamp), 1.5},
+                                              {int(ToneMap::Reinhard), 2.0}, {int(ToneMap::Aces), -0.5},
+                                              {int(ToneMap::Neutral), 0.0},  {int(ToneMap::Neutral), 2.0},
+                                              {int(ToneMap::Agx), 0.0},      {int(ToneMap::Agx), 3.0}};
+        const char* paths[] = {"forward", "deferred", "hdr"};
+        for (int path = 0; path < 3; ++path)
+            for (const auto& [op, ev] : ops)
+                QTest::addRow("%s %s %+.1f", paths[path], qPrintable(toString(ToneMap(op))), ev)
+                    << op << ev << path;
     }
 
     void toneMappedOutput() {
         QFETCH(int, toneMap);
         QFETCH(double, ev);
+        QFETCH(int, path);
         QString error;
         QVERIFY(m_gl.setModel(sphereScene(), &error));
         const Rig rig = rigCases()[size_t(rigCases().size() - 1)].make(); // mixed: a wide range of values
@@ -235,8 +241,12 @@ class TestRenderAccuracy : public QObject {
         s.background = QColor(10, 20, 30);
         FloatImage radiance;
         QVERIFY2(m_gl.renderRadiance(sphereCamera(), kSize, s, &radiance, &error), qPrintable(error));
-        const QImage image = m_gl.renderImage(sphereCamera(), kSize, s, 1, &error);
+        RenderSettings display = s;
+        display.shadingPath = path == 1 ? ShadingPath::Deferred : ShadingPath::Forward;
+        display.hdrTarget = path == 2;
+        const QImage image = m_gl.renderImage(sphereCamera(), kSize, display, 1, &error);
         QVERIFY2(!image.isNull(), qPrintable(error));
+        QCOMPARE(m_gl.renderer().stats().deferred, path == 1);
         int worst = 0;
         for (int y = 0; y < kSize.height(); ++y) {
             for (int x = 0; x < kSize.width(); ++x) {

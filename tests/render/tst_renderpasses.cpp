@@ -204,6 +204,13 @@ class TestRenderPasses : public QObject {
         for (const char* define : {"#define LR_PBR 1", "#define LR_B5 1", "#define LR_B6 1",
                                    "#define LR_METAL_ROUGH_TEXTURE 1", "#define LR_OCCLUSION_TEXTURE 1"})
             QVERIFY2(p.contains(define), define);
+        // Far lights (LightSet::farLights) are a PBR key bit; a classic key never carries it.
+        QVERIFY(!p.contains("LR_FAR_LIGHTS"));
+        FeatureKey far = pbr;
+        far.rig = frameRigFeatures(rig, true, false);
+        QVERIFY(far.bits() != pbr.bits());
+        QVERIFY(shaderPrelude(far).contains("#define LR_FAR_LIGHTS 1"));
+        QVERIFY(!frameRigFeatures(rigOf({point({0, 0, 1}, FalloffModel::None)}), true, false).farLights);
         // The texture bits are key bits of their own.
         FeatureKey untextured = pbr;
         untextured.material = {};
@@ -215,6 +222,22 @@ class TestRenderPasses : public QObject {
         QVERIFY(approx::parseApproximations(QStringLiteral("b5,B6"), &set, &error));
         QCOMPARE(int(set), int(approx::kB5 | approx::kB6));
         QCOMPARE(approx::approximationNames(set), QStringLiteral("b5,b6"));
+    }
+
+    // The tone map is compiled into display-output programs (one operator's code, not all five behind a
+    // run-time switch) and splits only them: radiance and G-buffer keys ignore it.
+    void toneMapIsADisplayKeyBit() {
+        FeatureKey display;
+        display.rig = rigFeatures(rigOf({point({0, 0, 1}, FalloffModel::InverseSquare)}));
+        FeatureKey agx = display;
+        agx.toneMap = ToneMap::Agx;
+        QVERIFY(agx.bits() != display.bits());
+        QVERIFY(shaderPrelude(display).contains("#define LR_TONE_MAP LR_TONEMAP_CLAMP\n"));
+        QVERIFY(shaderPrelude(agx).contains("#define LR_TONE_MAP LR_TONEMAP_AGX\n"));
+        QVERIFY(agx.describe().contains(QLatin1String("tone-map:agx")));
+        FeatureKey radiance = display;
+        radiance.output = ShaderOutput::Radiance;
+        QVERIFY(!shaderPrelude(radiance).contains("LR_TONE_MAP"));
     }
 
     void colourModuleIsTheOneDisplayTransform() {
