@@ -1,0 +1,62 @@
+#!/bin/bash
+# Speed against three.js, like for like (issue 13, docs/performance.md): for each scene in turn, three.js
+# r187 (../shared/peers/three/run.sh), then `lightrig bench` (exact, balanced, fast; --msaa 0, 60 frames),
+# then three.js again, so every LightRig figure is bracketed by two three.js runs taken within a minute:
+# wall-time medians on a shared VM drift by ±20 % over minutes, a bracketed ratio much less.
+# Usage: scripts/perf/versus_three.sh [ROUNDS] [SCENE.glb...]   (default: 1 round of
+#        ../shared/models/bench/helmet_{1pt,8pt,64pt,8spot}.glb). Needs a dev build and xvfb-run; run it on
+#        an otherwise idle machine. Prints a Markdown table: three.js A / B, LightRig's tiers, the ratios
+#        exact/three.js and fast/three.js (against the mean of A and B, and the range against each), the
+#        first frames, and the fast tier's PSNR against the double-precision reference. Each run starts after
+#        COOLDOWN seconds (default 20) of rest: the run after Chromium exits was otherwise up to 15 % slower.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/../.." && pwd)
+build=${LIGHTRIG_BUILD:-$root/build/dev}
+three=$root/../shared/peers/three/run.sh
+[ -x "$three" ] || { echo "versus_three.sh: $three not found (needs ../shared)" >&2; exit 1; }
+rounds=${1:-1}
+[ $# -gt 0 ] && shift
+scenes=("$@")
+[ ${#scenes[@]} -gt 0 ] || scenes=("$root"/../shared/models/bench/helmet_{1pt,8pt,64pt,8spot}.glb)
+out=$(mktemp -d /tmp/lightrig-versus.XXXXXX)
+rest() { sleep "${COOLDOWN:-20}"; }
+for r in $(seq "$rounds"); do
+    for s in "${scenes[@]}"; do
+        name=$(basename "$s" .glb)
+        rest
+        PEERS_OUT=$out FRAMES=60 "$three" "$s" >"$out/three_${name}_${r}_a.json" 2>>"$out/three.err" || true
+        rest
+        MESA_SHADER_CACHE_DISABLE=true xvfb-run -a "$build/lightrig" bench "$s" --quality exact,balanced,fast \
+            --msaa 0 --frames 60 --no-uber --json "$out/lightrig_${name}_${r}.json" >/dev/null
+        rest
+        PEERS_OUT=$out FRAMES=60 "$three" "$s" >"$out/three_${name}_${r}_b.json" 2>>"$out/three.err" || true
+    done
+done
+python3 - "$out" <<'PY'
+import glob, json, os, statistics, sys
+out = sys.argv[1]
+def three(path):
+    try:
+        return json.loads(open(path).read().strip().splitlines()[-1])
+    except (OSError, ValueError, IndexError):
+        return None
+print("| scene | three.js ms (A / B) | exact | balanced | fast | exact / three.js | fast / three.js "
+      "| three.js first frame (load) | LightRig first draw (upload; import) | fast PSNR |")
+print("|---|---|---|---|---|---|---|---|---|---|")
+for path in sorted(glob.glob(os.path.join(out, "lightrig_*.json"))):
+    key = os.path.basename(path)[len("lightrig_"):-len(".json")]
+    q = {r["quality"]: r for r in json.load(open(path))["results"]}
+    ab = [t for t in (three(os.path.join(out, "three_%s_%s.json" % (key, x))) for x in "ab") if t]
+    if not ab:
+        print("| %s | three.js failed (see %s/three.err) |" % (key, out))
+        continue
+    ms = [t["msPerFrameMedian"] for t in ab]
+    mean = statistics.mean(ms)
+    e, b, f = q["exact"], q["balanced"], q["fast"]
+    print("| %s | %s | %.1f | %.1f | %.1f | **%.2f** (%.2f–%.2f) | **%.2f** | %.2f s (%.2f s) | %.2f s (%.2f s; %.2f s) | %.1f dB |"
+          % (key, " / ".join("%.1f" % m for m in ms), e["ms_median"], b["ms_median"], f["ms_median"],
+             e["ms_median"] / mean, e["ms_median"] / max(ms), e["ms_median"] / min(ms), f["ms_median"] / mean,
+             ab[0]["firstFrameMs"] / 1000, ab[0]["loadMs"] / 1000, e["first_draw_ms"] / 1000,
+             e["upload_ms"] / 1000, e["load_ms"] / 1000, f.get("psnr_db") or 0.0))
+PY
+echo "raw results: $out" >&2
