@@ -27,6 +27,7 @@ struct LightTypeTraits {
     bool usesSurfaceModels; // diffuse, specular, ambient
     bool usesRimExponent;
     bool boundable;        // a falloff range can bound its reach (culling, clustered shading)
+    bool castsShadows;     // Light::shadow applies (a map of its own: perspective, orthographic or cube)
     GizmoShape gizmo;      // its sprite
     bool alwaysShowsRange; // its range sphere is drawn also when it is not selected
     const char* gltfType;  // KHR_lights_punctual "type" (also Assimp's light source), nullptr when none
@@ -47,6 +48,7 @@ inline constexpr std::array<LightTypeTraits, size_t(enumCount<LightType>())> kLi
      .usesSurfaceModels = true,
      .usesRimExponent = false,
      .boundable = true,
+     .castsShadows = true,
      .gizmo = GizmoShape::Disc,
      .alwaysShowsRange = true,
      .gltfType = "point",
@@ -62,6 +64,7 @@ inline constexpr std::array<LightTypeTraits, size_t(enumCount<LightType>())> kLi
      .usesSurfaceModels = true,
      .usesRimExponent = false,
      .boundable = true,
+     .castsShadows = true,
      .gizmo = GizmoShape::RingedDisc,
      .alwaysShowsRange = false,
      .gltfType = "spot",
@@ -77,6 +80,7 @@ inline constexpr std::array<LightTypeTraits, size_t(enumCount<LightType>())> kLi
      .usesSurfaceModels = true,
      .usesRimExponent = false,
      .boundable = false,
+     .castsShadows = true,
      .gizmo = GizmoShape::Sun,
      .alwaysShowsRange = false,
      .gltfType = "directional",
@@ -92,6 +96,7 @@ inline constexpr std::array<LightTypeTraits, size_t(enumCount<LightType>())> kLi
      .usesSurfaceModels = false,
      .usesRimExponent = true,
      .boundable = false,
+     .castsShadows = false,
      .gizmo = GizmoShape::HollowRing,
      .alwaysShowsRange = false,
      .gltfType = nullptr,

@@ -30,6 +30,24 @@ struct Cone {
     bool operator==(const Cone&) const = default;
 };
 
+// A light's shadow (issue 14; docs/rig-format.md "shadow"). Only types whose traits say castsShadows use it.
+// Bias and normal offset are in shadow-map texels (scale-free: a texel's footprint at the receiver), the
+// softness comes from the emitter's physical size: 0 is a hard shadow in every tier.
+struct Shadow {
+    bool enabled = false;
+    int resolution =
+        1024;          // map texels per side (per cube face for a point light): 256 ... 4096, a power of 2
+    double bias = 1.0; // depth bias, texels along the light's direction: 0 ... 16
+    double normalOffset = 1.0; // the receiver moved along its normal, texels: 0 ... 16
+    double size = 0.0;         // point and spot: the emitter's diameter in rig units (>= 0)
+    double angle = 0.0;        // directional: the emitter's angular diameter in degrees, 0 ... 10 (sun 0.53)
+    bool operator==(const Shadow&) const = default;
+};
+
+// At most this many lights cast shadows at once (one map each; a point light's six faces count as one
+// light): the rig reader refuses more, the editor says so instead of enabling another.
+inline constexpr int kMaxShadowCasters = 16;
+
 struct Light {
     QString name;
     LightType type = LightType::Point;
@@ -46,6 +64,7 @@ struct Light {
     glm::dvec3 specular{1.0};                     // factor f is stored as (f, f, f)
     std::optional<glm::dvec3> ambient;            // usesSurfaceModels()
     double rimExponent = 1.3;                     // usesRimExponent()
+    Shadow shadow;                                // castsShadows()
 
     // What its type uses (lighttypes.h).
     bool usesPosition() const { return traitsOf(type).usesPosition; }
@@ -54,6 +73,9 @@ struct Light {
     bool usesCone() const { return traitsOf(type).usesCone; }
     bool usesSurfaceModels() const { return traitsOf(type).usesSurfaceModels; } // diffuse, specular, ambient
     bool usesRimExponent() const { return traitsOf(type).usesRimExponent; }
+    bool castsShadows() const { return traitsOf(type).castsShadows; }
+    // Whether this light casts a shadow now: enabled, of a type that can, with its shadow on.
+    bool hasShadow() const { return enabled && castsShadows() && shadow.enabled; }
     // The colour actually emitted: color tinted by temperature (if any), linear RGB.
     glm::dvec3 effectiveColor() const;
     bool operator==(const Light&) const = default;
@@ -68,11 +90,21 @@ struct Shading {
     bool operator==(const Shading&) const = default;
 };
 
+// The ground plane under the model (issue 14): horizontal (normal +Y in the rig's world), at the model's
+// lowest point, as wide as kGroundExtent model radii around the model's centre.
+struct Ground {
+    GroundMode mode = GroundMode::Off;
+    glm::dvec3 color{0.8}; // linear albedo of a visible ground (a catcher shows only its shadows)
+    bool operator==(const Ground&) const = default;
+};
+inline constexpr double kGroundExtent = 10.0;
+
 struct Rig {
     QString name;
     RigSpace space = RigSpace::World;
     glm::dvec3 ambient{0.0};
     Shading shading;
+    Ground ground;
     std::vector<Light> lights;
     bool operator==(const Rig&) const = default;
 };

@@ -19,6 +19,9 @@ enum class ToneMap { Clamp, Reinhard, Aces, Neutral, Agx };
 // Classic: the design documents' diffuse/specular models. Pbr: the glTF 2.0 metal-rough BRDF (Appendix B)
 // with KHR_lights_punctual units (docs/lighting-models.md, "Physically based shading").
 enum class ShadingModel { Classic, Pbr };
+// The rig's optional ground plane under the model (issue 14): none, a visible grey plane, or a shadow
+// catcher (invisible except for the shadows it receives; in a transparent image they are its alpha).
+enum class GroundMode { Off, Visible, Catcher };
 
 template <typename E> struct EnumNames; // specialised below: static constexpr std::array names
 
@@ -33,6 +36,7 @@ LR_ENUM_NAMES(ViewerModel, "local", "infinite")
 LR_ENUM_NAMES(RigSpace, "world", "model")
 LR_ENUM_NAMES(ToneMap, "clamp", "reinhard", "aces", "neutral", "agx")
 LR_ENUM_NAMES(ShadingModel, "classic", "pbr")
+LR_ENUM_NAMES(GroundMode, "off", "visible", "catcher")
 #undef LR_ENUM_NAMES
 
 template <typename E>

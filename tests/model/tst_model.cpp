@@ -2,6 +2,7 @@
 // Suzanne resource, files built here (degenerate geometry, paths leaving the folder), and the analytic
 // sphere and plane. Expected values come from the files' own data, not from the loader.
 #include "core/rigjson.h"
+#include "model/ground.h"
 #include "model/importdetail.h"
 #include "model/modelloader.h"
 #include "modelchecks.h"
@@ -131,6 +132,26 @@ QStringList warningsWith(const Model& m, const QStringList& words) {
 class TestModel : public QObject {
     Q_OBJECT
   private slots:
+    // The ground lies under the model's lowest point, centred on it, kGroundExtent radii wide, facing up.
+    void groundPlaneUnderTheModel() {
+        Bounds b;
+        b.min = {-1.0, -2.0, 3.0};
+        b.max = {3.0, 4.0, 5.0};
+        const GroundPlane g = groundPlane(b);
+        QCOMPARE(g.height, -2.0);
+        const double half = 0.5 * kGroundExtent * b.radius();
+        glm::dvec3 sum(0.0);
+        for (const glm::dvec3& c : g.corners) {
+            QCOMPARE(c.y, -2.0);
+            QCOMPARE(std::max(std::abs(c.x - 1.0), std::abs(c.z - 4.0)), half);
+            sum += c;
+        }
+        QVERIFY(glm::length(sum / 4.0 - glm::dvec3(1.0, -2.0, 4.0)) < 1e-12);
+        const glm::dvec3 n = glm::cross(g.corners[1] - g.corners[0], g.corners[3] - g.corners[0]);
+        QVERIFY(glm::dot(n, g.normal) > 0.0); // counter-clockwise seen from above
+        QCOMPARE(g.normal, glm::dvec3(0.0, 1.0, 0.0));
+    }
+
     void sphereIsExact();
     void planeFacesPlusZ();
     void objWithMaterialAndTexture();
