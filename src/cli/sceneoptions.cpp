@@ -38,10 +38,15 @@ SceneOptionSet::SceneOptionSet()
               QStringLiteral("Shading: %1 (default: the rig's; without --rig, pbr for a model with "
                              "physically based materials, else classic).")
                   .arg(allowedNames<ShadingModel>()),
-              QStringLiteral("MODEL")) {}
+              QStringLiteral("MODEL")),
+      ground(QStringLiteral("ground"),
+             QStringLiteral("Ground plane under the model: %1 (default: the rig's). catcher: invisible but "
+                            "for the shadows it receives (kept in the alpha of a --transparent image).")
+                 .arg(allowedNames<GroundMode>()),
+             QStringLiteral("MODE")) {}
 
 void SceneOptionSet::addTo(QCommandLineParser& parser) const {
-    parser.addOptions({rig, cameraIndex, view, size, quality, exposure, toneMap, shading});
+    parser.addOptions({rig, cameraIndex, view, size, quality, exposure, toneMap, shading, ground});
 }
 
 std::optional<QSize> parseSize(const QString& text, int maxSide) {
@@ -121,6 +126,13 @@ std::optional<SceneOptions> SceneOptionSet::read(const QCommandLineParser& p, QS
                            .arg(allowedNames<ShadingModel>(), p.value(shading)));
         o.shading = *m;
     }
+    if (p.isSet(ground)) {
+        const auto g = fromString<GroundMode>(p.value(ground));
+        if (!g)
+            return bad(QStringLiteral("--ground must be %1, got '%2'")
+                           .arg(allowedNames<GroundMode>(), p.value(ground)));
+        o.ground = *g;
+    }
     return o;
 }
 
@@ -149,7 +161,10 @@ bool loadScene(const QString& modelPath, const SceneOptions& options, LoadedScen
         scene->rig = std::move(chosen.rig);
         scene->rigSource = chosen.source;
     }
+    if (options.ground) scene->rig.ground.mode = *options.ground;
     scene->rigSource += QStringLiteral(", %1 shading").arg(toString(scene->rig.shading.model));
+    if (scene->rig.ground.mode != GroundMode::Off)
+        scene->rigSource += QStringLiteral(", %1 ground").arg(toString(scene->rig.ground.mode));
     const double aspect = double(options.size.width()) / double(options.size.height());
     const auto fromFile = [&](int index) {
         const Camera& c = model.cameras[size_t(index)];

@@ -4,6 +4,7 @@
 //                         the model's own lights, else the PBR default rig; otherwise classic shading with
 //                         the model's own lights, else the default rig)
 //   --shading classic|pbr overrides the shading of whichever rig is used
+//   --ground off|visible|catcher   overrides the ground of whichever rig is used (issue 14)
 //   --camera-index N | --view NAME   default: the model's camera 0, else "three-quarter" framing all
 //   --size WxH (1280x720) --quality Q --exposure EV --tonemap clamp|reinhard|aces
 #pragma once
@@ -33,10 +34,11 @@ struct SceneOptions {
     double exposureEV = 0.0;
     ToneMap toneMap = ToneMap::Clamp;
     std::optional<ShadingModel> shading; // --shading; unset: the rig's own (or the default rule's)
+    std::optional<GroundMode> ground;    // --ground; unset: the rig's own
 };
 
 struct SceneOptionSet {
-    QCommandLineOption rig, cameraIndex, view, size, quality, exposure, toneMap, shading;
+    QCommandLineOption rig, cameraIndex, view, size, quality, exposure, toneMap, shading, ground;
     SceneOptionSet();
     void addTo(QCommandLineParser& parser) const;
     // The parsed values, or a usage error message (exit 2). qualityList: --quality takes a comma list.
@@ -48,7 +50,8 @@ struct LoadedScene {
     std::shared_ptr<Model> model;
     Rig rig;
     // "RIG.json", "the model's lights", "the default rig" or "the physically based default rig", and the
-    // shading: "the model's lights, pbr shading"
+    // shading: "the model's lights, pbr shading", and the ground when there is one: "RIG.json, classic
+    // shading, catcher ground"
     QString rigSource;
     ViewCamera camera;
     QString cameraSource; // "camera 0 of the model", "view three-quarter"

@@ -304,6 +304,37 @@ class TestRenderCli : public QObject {
                  qPrintable(r.show()));
     }
 
+    // Issue 14: --ground off|visible|catcher overrides the rig's ground, a usage error naming the option for
+    // anything else; the summary names a ground that is there.
+    void groundOption() {
+        const Run bad = lightrig({suzanne(), QStringLiteral("--ground"), QStringLiteral("shadow"),
+                                  QStringLiteral("-o"), path(QStringLiteral("never.png"))});
+        QVERIFY2(bad.code == 2, qPrintable(bad.show()));
+        QVERIFY2(bad.err.contains(
+                     QLatin1String("--ground must be \"off\", \"visible\" or \"catcher\", got 'shadow'")),
+                 qPrintable(bad.show()));
+        QVERIFY(!QFile::exists(path(QStringLiteral("never.png"))));
+        LR_REQUIRE_DISPLAY();
+        const QStringList small{QStringLiteral("--size"), QStringLiteral("64x48"), QStringLiteral("-o"),
+                                path(QStringLiteral("ground.png"))};
+        Run r =
+            lightrig(QStringList{suzanne(), QStringLiteral("--ground"), QStringLiteral("catcher")} + small);
+        QVERIFY2(r.code == 0 &&
+                     r.out.contains(QLatin1String("(the default rig, classic shading, catcher ground)")),
+                 qPrintable(r.show()));
+        // The product preset has a catcher of its own; --ground off takes it away.
+        const QString sweep = QStringLiteral(LIGHTRIG_SOURCE_DIR "/resources/presets/pbr-white-sweep.json");
+        r = lightrig(QStringList{suzanne(), QStringLiteral("--rig"), sweep} + small);
+        QVERIFY2(r.code == 0 &&
+                     r.out.contains(QStringLiteral("(%1, pbr shading, catcher ground)").arg(sweep)),
+                 qPrintable(r.show()));
+        r = lightrig(QStringList{suzanne(), QStringLiteral("--rig"), sweep, QStringLiteral("--ground"),
+                                 QStringLiteral("off")} +
+                     small);
+        QVERIFY2(r.code == 0 && r.out.contains(QStringLiteral("(%1, pbr shading)").arg(sweep)),
+                 qPrintable(r.show()));
+    }
+
     // Issue 13: without --rig, a model's default rig follows core/defaultrig.h — its own lights, shaded
     // physically based exactly when its imported materials are (the test imports it to know).
     void defaultRigFollowsTheMaterials_data() {
