@@ -11,6 +11,7 @@
 
 #include <QColorDialog>
 #include <QPainter>
+#include <QScrollArea>
 #include <QSignalBlocker>
 #include <cmath>
 
@@ -36,9 +37,15 @@ RenderSettingsDock::RenderSettingsDock(Document* document, ViewSettings* setting
     : QDockWidget(tr("Render settings"), parent), m_ui(std::make_unique<Ui::RenderSettingsForm>()),
       m_doc(document), m_settings(settings) {
     setObjectName(QStringLiteral("RenderSettingsDock"));
-    auto* body = new QWidget(this);
+    auto* body = new QWidget;
     m_ui->setupUi(body);
-    setWidget(body);
+    // Scrolled like the Properties dock it shares a tab with, so its boxes (Ground made it taller) never set
+    // a minimum height on the main window.
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(body);
+    setWidget(scroll);
     fillCombo<ToneMap>(m_ui->toneMap);
     fillCombo<Quality>(m_ui->quality);
     fillCombo<SpecularModel>(m_ui->specularModel);

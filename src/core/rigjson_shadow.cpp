@@ -18,11 +18,12 @@ std::optional<Shadow> readShadow(Checker& c, const Value& v, const QString& path
         else
             ok = false;
     };
-    if (const Value* e = o.take("enabled"))
+    if (const Value* e = o.take("enabled")) {
         keep(c.boolean(*e, o.path("enabled")), s.enabled);
-    else
-        c.error(o.path("enabled"), QStringLiteral("missing; a shadow says \"enabled\": true or false")),
-            ok = false;
+    } else {
+        c.error(o.path("enabled"), QStringLiteral("missing; a shadow says \"enabled\": true or false"));
+        ok = false;
+    }
 
     if (const Value* r = o.take("resolution")) {
         if (r->isNumber() && r->finite && isShadowResolution(r->number)) {
