@@ -332,6 +332,19 @@ class TestPropertiesDock : public QObject {
         doc.undoStack()->undo();
         QVERIFY(!on->isChecked());
         QVERIFY(!dock.field(LightProperty::ShadowBias)->isVisibleTo(&dock));
+
+        // A 17th caster is refused with the limit; the box shows the stored state again.
+        for (int i = 0; i < kMaxShadowCasters; ++i)
+            QVERIFY(doc.addLight(LightType::Spot));
+        QList<int> spots;
+        for (int i = 1; i <= kMaxShadowCasters; ++i)
+            spots << i;
+        QVERIFY(doc.setLightValue(spots, LightProperty::ShadowEnabled, true));
+        doc.setSelectedRows({0}, 0);
+        on->click();
+        QVERIFY(!doc.light(0).shadow.enabled);
+        QVERIFY(!on->isChecked());
+        QVERIFY2(dock.message().contains(QLatin1String("at most 16")), qPrintable(dock.message()));
     }
 
     void invalidInput_isRefusedWithAReason() {
