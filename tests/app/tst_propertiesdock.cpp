@@ -8,6 +8,7 @@
 #include "editor/document.h"
 
 #include <QCheckBox>
+#include <QComboBox>
 #include <QLineEdit>
 #include <QSet>
 #include <QSignalSpy>
@@ -312,20 +313,35 @@ class TestPropertiesDock : public QObject {
         QVERIFY(
             !dock.field(LightProperty::ShadowSize)->isVisibleTo(&dock)); // a size is for positioned lights
 
-        auto* resolution = qobject_cast<NumberEdit*>(dock.field(LightProperty::ShadowResolution));
+        // The resolution offers exactly the format's values (a spin box would step to 1025).
+        auto* resolution = qobject_cast<QComboBox*>(dock.field(LightProperty::ShadowResolution));
         QVERIFY(resolution);
-        resolution->setFocus();
-        resolution->selectAll();
-        QTest::keyClicks(resolution, "3000");
-        QTest::keyClick(resolution, Qt::Key_Return);
-        QCOMPARE(doc.light(0).shadow.resolution, 1024);
-        QVERIFY2(dock.message().contains(QLatin1String("power of two")), qPrintable(dock.message()));
-        QCOMPARE(resolution->value(), 1024.0); // the stored value shown again
-        resolution->selectAll();
-        QTest::keyClicks(resolution, "2048");
-        QTest::keyClick(resolution, Qt::Key_Return);
+        QStringList offered;
+        for (int i = 0; i < resolution->count(); ++i) {
+            offered << resolution->itemText(i);
+            QVERIFY(validateLightValue(LightProperty::ShadowResolution, resolution->itemData(i)).isEmpty());
+        }
+        QCOMPARE(offered,
+                 (QStringList{"256 texels", "512 texels", "1024 texels", "2048 texels", "4096 texels"}));
+        QCOMPARE(resolution->currentText(), QStringLiteral("1024 texels"));
+        resolution->setCurrentIndex(3);
+        emit resolution->activated(3);
         QCOMPARE(doc.light(0).shadow.resolution, 2048);
         QCOMPARE(doc.undoStack()->count(), steps + 2);
+        doc.undoStack()->undo();
+        QCOMPARE(resolution->currentText(), QStringLiteral("1024 texels")); // follows the document
+        doc.undoStack()->redo();
+        QCOMPARE(resolution->currentText(), QStringLiteral("2048 texels"));
+        // A bias out of the format's range is refused in place.
+        auto* bias = qobject_cast<NumberEdit*>(dock.field(LightProperty::ShadowBias));
+        QVERIFY(bias);
+        QSignalSpy rejected(bias, &NumberEdit::rejected);
+        bias->setFocus();
+        bias->selectAll();
+        QTest::keyClicks(bias, "17");
+        QTest::keyClick(bias, Qt::Key_Return);
+        QVERIFY(rejected.count() > 0);
+        QCOMPARE(doc.light(0).shadow.bias, 1.0);
 
         // Undo the switch: the details hide again, the dock following the document.
         doc.undoStack()->undo();
