@@ -83,10 +83,15 @@ LightsDock::LightsDock(Document* document, QWidget* parent)
         m_view->setDragEnabled(section < 0);
     });
     header->setSectionResizeMode(QHeaderView::Interactive);
-    header->resizeSection(LightTableModel::NameColumn, 120);
-    for (int c : {int(LightTableModel::OnColumn), int(LightTableModel::SoloColumn)})
+    header->resizeSection(LightTableModel::NameColumn, 112);
+    for (int c : {int(LightTableModel::OnColumn), int(LightTableModel::SoloColumn),
+                  int(LightTableModel::ShadowColumn)})
         header->setSectionResizeMode(c, QHeaderView::ResizeToContents);
     header->resizeSection(LightTableModel::ColorColumn, 48);
+    // Numbers are short: narrower than the default section, so that every column (Shadow last) fits the
+    // dock at the default window size.
+    header->resizeSection(LightTableModel::IntensityColumn, 64);
+    header->resizeSection(LightTableModel::FalloffColumn, 64);
 
     m_message = new QLabel(body);
     m_message->setObjectName(QStringLiteral("LightsMessage"));

@@ -18,6 +18,7 @@
 #include <QScrollArea>
 #include <QSignalBlocker>
 #include <QVBoxLayout>
+#include <algorithm>
 
 namespace lr {
 
@@ -155,6 +156,13 @@ PropertiesDock::Field PropertiesDock::createField(const LightPropertyInfo& row) 
                 [this, p](int axis, double value) { applyComponent(p, axis, value); });
         connect(f.vector, &Vec3Edit::editFinished, this, &PropertiesDock::finishGesture);
         connect(f.vector, &Vec3Edit::rejected, this, &PropertiesDock::showMessage);
+        break;
+    case PropertyEditor::PowerOfTwo:
+        f.widget = f.combo = new QComboBox(m_panel);
+        for (double v = std::max(1.0, row.min); v <= row.max; v *= 2.0)
+            f.combo->addItem(QString::number(v) + QString::fromUtf8(row.suffix ? row.suffix : ""), v);
+        connect(f.combo, &QComboBox::activated, this,
+                [this, p, c = f.combo](int i) { apply(p, c->itemData(i), false); });
         break;
     case PropertyEditor::FactorOrColor:
         f.combo = new QComboBox(m_panel);
@@ -322,6 +330,9 @@ void PropertiesDock::loadValue(const LightPropertyInfo& row, const Field& f, con
         break;
     case PropertyEditor::CheckBox:
         setCheck(f.check, value.toBool());
+        break;
+    case PropertyEditor::PowerOfTwo:
+        setCombo(f.combo, f.combo->findData(value.toDouble()));
         break;
     case PropertyEditor::ColorButton:
         f.color->setColor(value.value<glm::dvec3>());

@@ -11,6 +11,7 @@ const PropertyField kFieldEditors[] = {
     {LightProperty::Intensity, PropertyEditor::LogSlider, 0.0, 1e-3},
     {LightProperty::Temperature, PropertyEditor::OptionalNumber, 6500.0},
     {LightProperty::FalloffRange, PropertyEditor::OptionalNumber, 10.0},
+    {LightProperty::ShadowResolution, PropertyEditor::PowerOfTwo}, // a spin box would step to 1025
 };
 
 PropertyEditor defaultEditor(LightValueKind kind) {

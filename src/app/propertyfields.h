@@ -22,6 +22,7 @@ enum class PropertyEditor {
     OptionalColor,  // a "has a value" QCheckBox beside a ColorButton (OptionalColor)
     Vector,         // Vec3Edit (Vector)
     FactorOrColor,  // a factor/colour QComboBox beside a NumberEdit and a ColorButton (FactorOrColor)
+    PowerOfTwo,     // QComboBox of the powers of two within the row's limits (a shadow map's resolution)
 };
 
 struct PropertyField {

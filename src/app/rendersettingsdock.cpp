@@ -11,6 +11,7 @@
 
 #include <QColorDialog>
 #include <QPainter>
+#include <QScrollArea>
 #include <QSignalBlocker>
 #include <cmath>
 
@@ -36,9 +37,15 @@ RenderSettingsDock::RenderSettingsDock(Document* document, ViewSettings* setting
     : QDockWidget(tr("Render settings"), parent), m_ui(std::make_unique<Ui::RenderSettingsForm>()),
       m_doc(document), m_settings(settings) {
     setObjectName(QStringLiteral("RenderSettingsDock"));
-    auto* body = new QWidget(this);
+    auto* body = new QWidget;
     m_ui->setupUi(body);
-    setWidget(body);
+    // Scrolled like the Properties dock it shares a tab with, so its boxes (Ground made it taller) never set
+    // a minimum height on the main window.
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(body);
+    setWidget(scroll);
     fillCombo<ToneMap>(m_ui->toneMap);
     fillCombo<Quality>(m_ui->quality);
     fillCombo<SpecularModel>(m_ui->specularModel);
@@ -86,6 +93,16 @@ RenderSettingsDock::RenderSettingsDock(Document* document, ViewSettings* setting
     connect(m_ui->shininess, &NumberEdit::rejected, m_ui->message, &QLabel::setText);
     connect(m_ui->ambient, &ColorButton::colorPicked, this, [this](const glm::dvec3& c) {
         setRigValue(int(RigProperty::Ambient), QVariant::fromValue(c), false);
+    });
+    // The ground (issue 14): the combo's items are GroundMode's, in order.
+    static_assert(enumCount<GroundMode>() == 3, "ui/rendersettings.ui's groundMode lists one item per mode");
+    connect(m_ui->groundMode, &QComboBox::activated, this, [this](int i) {
+        if (GroundMode(i) != m_doc->rig().ground.mode)
+            setRigValue(int(RigProperty::GroundMode), toString(GroundMode(i)), false);
+    });
+    connect(m_ui->groundColor, &ColorButton::colorPicked, this, [this](const glm::dvec3& c) {
+        // The button keeps HDR scale; an albedo is at most 1 (a brighter pick is refused with the reason).
+        setRigValue(int(RigProperty::GroundColor), QVariant::fromValue(c), false);
     });
     connect(m_ui->rigName, &QLineEdit::editingFinished, this, [this] {
         if (m_ui->rigName->text() != m_doc->rig().name)
@@ -158,6 +175,12 @@ void RenderSettingsDock::loadRig() {
     m_ui->viewerModel->setCurrentIndex(int(rig.shading.viewer));
     m_ui->shininess->setValueQuietly(rig.shading.shininess);
     m_ui->ambient->setColor(rig.ambient);
+    m_ui->groundMode->setCurrentIndex(int(rig.ground.mode));
+    m_ui->groundColor->setColor(rig.ground.color);
+    // A catcher shows only shadows: its colour means nothing then, nor with no ground.
+    const bool visible = rig.ground.mode == GroundMode::Visible;
+    m_ui->groundColor->setEnabled(visible);
+    m_ui->groundColorLabel->setEnabled(visible);
 }
 
 QList<QWidget*> RenderSettingsDock::classicOnlyWidgets() const {

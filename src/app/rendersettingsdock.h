@@ -2,8 +2,9 @@
 // background, grid, gizmos; ViewSettings, kept in QSettings) and the rig's shading values (shading classic or
 // physically based, specular model, viewer, shininess, ambient; undoable Document edits; the classic-only
 // ones disabled, with a tooltip saying why, under physically based shading) and the rig's space (world or
-// model; switching converts the lights so they stay where they are, one undo step), and the model's up axis
-// (scene.h, per file).
+// model; switching converts the lights so they stay where they are, one undo step), the rig's ground (off,
+// visible or a shadow catcher, and its colour; each change one undo step), and the model's up axis (scene.h,
+// per file).
 #pragma once
 
 #include "core/prepare.h"

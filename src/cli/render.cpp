@@ -1,6 +1,6 @@
 // `lightrig render MODEL [--rig RIG.json] -o OUT.png [--size WxH] [--camera-index N | --view NAME]
 //  [--quality Q] [--supersample N] [--transparent] [--exposure EV] [--tonemap clamp|reinhard|aces]
-//  [--shading classic|pbr]`
+//  [--shading classic|pbr] [--ground off|visible|catcher] [--shadows on|off]`
 // renders one image with the same Renderer as the viewport (OffscreenRenderer) and writes it atomically.
 // Exit status: 0 written; 1 bad model, rig, camera or path, or no OpenGL (one line on stderr, nothing
 // written); 2 usage error. Hidden: --frames N times N more frames (glFinish each) and prints the median,
@@ -29,7 +29,7 @@ namespace {
 const char* kUsage =
     "lightrig render MODEL [--rig RIG.json] -o OUT.png [--size WxH] [--camera-index N | --view NAME] "
     "[--quality Q] [--supersample N] [--transparent] [--exposure EV] [--tonemap clamp|reinhard|aces] "
-    "[--shading classic|pbr]";
+    "[--shading classic|pbr] [--ground off|visible|catcher] [--shadows on|off]";
 
 // The image format for the output's suffix, or empty.
 QByteArray formatFor(const QString& path) {

@@ -38,10 +38,21 @@ SceneOptionSet::SceneOptionSet()
               QStringLiteral("Shading: %1 (default: the rig's; without --rig, pbr for a model with "
                              "physically based materials, else classic).")
                   .arg(allowedNames<ShadingModel>()),
-              QStringLiteral("MODEL")) {}
+              QStringLiteral("MODEL")),
+      ground(QStringLiteral("ground"),
+             QStringLiteral("Ground plane under the model: %1 (default: the rig's). catcher: invisible but "
+                            "for the shadows it receives (kept in the alpha of a --transparent image).")
+                 .arg(allowedNames<GroundMode>()),
+             QStringLiteral("MODE")),
+      shadows(
+          QStringLiteral("shadows"),
+          QStringLiteral("on: every point, spot and directional light casts its shadow (at most %1); off: "
+                         "none. Default: as the rig says.")
+              .arg(kMaxShadowCasters),
+          QStringLiteral("on|off")) {}
 
 void SceneOptionSet::addTo(QCommandLineParser& parser) const {
-    parser.addOptions({rig, cameraIndex, view, size, quality, exposure, toneMap, shading});
+    parser.addOptions({rig, cameraIndex, view, size, quality, exposure, toneMap, shading, ground, shadows});
 }
 
 std::optional<QSize> parseSize(const QString& text, int maxSide) {
@@ -121,7 +132,46 @@ std::optional<SceneOptions> SceneOptionSet::read(const QCommandLineParser& p, QS
                            .arg(allowedNames<ShadingModel>(), p.value(shading)));
         o.shading = *m;
     }
+    if (p.isSet(ground)) {
+        const auto g = fromString<GroundMode>(p.value(ground));
+        if (!g)
+            return bad(QStringLiteral("--ground must be %1, got '%2'")
+                           .arg(allowedNames<GroundMode>(), p.value(ground)));
+        o.ground = *g;
+    }
+    if (p.isSet(shadows)) {
+        const QString v = p.value(shadows);
+        if (v != QLatin1String("on") && v != QLatin1String("off"))
+            return bad(QStringLiteral("--shadows must be \"on\" or \"off\", got '%1'").arg(v));
+        o.shadows = v == QLatin1String("on");
+    }
     return o;
+}
+
+bool applyShadowsOption(Rig& rig, bool on, QString* error) {
+    int casters = 0;
+    for (const Light& l : rig.lights)
+        casters += on && l.castsShadows();
+    if (casters > kMaxShadowCasters) {
+        *error =
+            QStringLiteral("--shadows on: %1 lights of the rig can cast shadows; at most %2 can (one shadow "
+                           "map each): use a rig that switches on the shadows of the lights that matter")
+                .arg(casters)
+                .arg(kMaxShadowCasters);
+        return false;
+    }
+    for (Light& l : rig.lights)
+        if (l.castsShadows()) l.shadow.enabled = on;
+    return true;
+}
+
+QString shadowSummary(const Rig& rig) {
+    int casters = 0;
+    for (const Light& l : rig.lights)
+        casters += l.hasShadow();
+    if (casters == 0) return {};
+    return casters == 1 ? QStringLiteral(", shadows from 1 light")
+                        : QStringLiteral(", shadows from %1 lights").arg(casters);
 }
 
 bool loadScene(const QString& modelPath, const SceneOptions& options, LoadedScene* scene, QString* error) {
@@ -149,7 +199,12 @@ bool loadScene(const QString& modelPath, const SceneOptions& options, LoadedScen
         scene->rig = std::move(chosen.rig);
         scene->rigSource = chosen.source;
     }
+    if (options.ground) scene->rig.ground.mode = *options.ground;
+    if (options.shadows && !applyShadowsOption(scene->rig, *options.shadows, error)) return false;
     scene->rigSource += QStringLiteral(", %1 shading").arg(toString(scene->rig.shading.model));
+    if (scene->rig.ground.mode != GroundMode::Off)
+        scene->rigSource += QStringLiteral(", %1 ground").arg(toString(scene->rig.ground.mode));
+    scene->rigSource += shadowSummary(scene->rig);
     const double aspect = double(options.size.width()) / double(options.size.height());
     const auto fromFile = [&](int index) {
         const Camera& c = model.cameras[size_t(index)];

@@ -4,6 +4,8 @@
 //                         the model's own lights, else the PBR default rig; otherwise classic shading with
 //                         the model's own lights, else the default rig)
 //   --shading classic|pbr overrides the shading of whichever rig is used
+//   --ground off|visible|catcher   overrides the ground of whichever rig is used (issue 14)
+//   --shadows on|off      every light that can cast casts its shadow (at most kMaxShadowCasters), or none
 //   --camera-index N | --view NAME   default: the model's camera 0, else "three-quarter" framing all
 //   --size WxH (1280x720) --quality Q --exposure EV --tonemap clamp|reinhard|aces
 #pragma once
@@ -33,10 +35,12 @@ struct SceneOptions {
     double exposureEV = 0.0;
     ToneMap toneMap = ToneMap::Clamp;
     std::optional<ShadingModel> shading; // --shading; unset: the rig's own (or the default rule's)
+    std::optional<GroundMode> ground;    // --ground; unset: the rig's own
+    std::optional<bool> shadows;         // --shadows on|off; unset: the rig's own
 };
 
 struct SceneOptionSet {
-    QCommandLineOption rig, cameraIndex, view, size, quality, exposure, toneMap, shading;
+    QCommandLineOption rig, cameraIndex, view, size, quality, exposure, toneMap, shading, ground, shadows;
     SceneOptionSet();
     void addTo(QCommandLineParser& parser) const;
     // The parsed values, or a usage error message (exit 2). qualityList: --quality takes a comma list.
@@ -48,11 +52,19 @@ struct LoadedScene {
     std::shared_ptr<Model> model;
     Rig rig;
     // "RIG.json", "the model's lights", "the default rig" or "the physically based default rig", and the
-    // shading: "the model's lights, pbr shading"
+    // shading: "the model's lights, pbr shading", the ground when there is one and the shadows when some
+    // light casts: "RIG.json, classic shading, catcher ground, shadows from 2 lights"
     QString rigSource;
     ViewCamera camera;
     QString cameraSource; // "camera 0 of the model", "view three-quarter"
 };
+
+// --shadows on|off applied to a rig: on switches on the shadow of every light whose type casts one (its
+// other shadow values kept), off switches every shadow off. False with the reason when on would make more
+// than kMaxShadowCasters casters (the rig is left as it was).
+bool applyShadowsOption(Rig& rig, bool on, QString* error);
+// ", shadows from N lights" when some light casts, else empty: for the summary lines.
+QString shadowSummary(const Rig& rig);
 
 // Loads the model and the rig and picks the camera. False with a one-line reason (exit 1) on failure.
 bool loadScene(const QString& modelPath, const SceneOptions& options, LoadedScene* scene, QString* error);

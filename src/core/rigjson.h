@@ -20,6 +20,27 @@ constexpr int kMaxRigNameLength = 256;   // rig and light names, in characters (
 constexpr double kMaxRigIntensity = 1e6; // intensity, colour components, specular, ambient
 constexpr double kMaxRigLength = 1e12;   // |position components|, ranges, inverse-polynomial terms
 constexpr double kMaxRigExponent = 1e4;  // falloff, cone and rim exponents, shininess
+// A light's "shadow" and the rig's "ground" (docs/rig-format.md; lr::Shadow, lr::Ground in rig.h).
+constexpr int kMinShadowResolution = 256; // texels per side, a power of two
+constexpr int kMaxShadowResolution = 4096;
+constexpr double kMaxShadowBias = 16.0;  // bias and normal offset, shadow-map texels, >= 0
+constexpr double kMaxShadowAngle = 10.0; // a directional light's angular diameter, degrees, >= 0
+
+// Whether v is a shadow-map resolution the format allows: a power of two from 256 to 4096.
+constexpr bool isShadowResolution(double v) {
+    for (int r = kMinShadowResolution; r <= kMaxShadowResolution; r *= 2)
+        if (v == r) return true;
+    return false;
+}
+// The lights that hold a shadow map: a type that casts shadows with its shadow switched on, whether the
+// light itself is on or off (switching a light on never runs into kMaxShadowCasters). At most
+// kMaxShadowCasters in a rig file and in the editor.
+inline int shadowCasterCount(const std::vector<Light>& lights) {
+    int n = 0;
+    for (const Light& l : lights)
+        n += l.castsShadows() && l.shadow.enabled;
+    return n;
+}
 
 struct RigReadResult {
     std::optional<Rig> rig; // set only when errors is empty

@@ -122,6 +122,10 @@ std::optional<glm::dvec3> Checker::color(const Value& v, const QString& path) {
                 QStringLiteral("an RGB colour [r, g, b] (linear, >= 0)"));
 }
 
+std::optional<glm::dvec3> Checker::albedo(const Value& v, const QString& path) {
+    return vec3(v, path, nonNegative(1.0), QStringLiteral("an RGB albedo [r, g, b] (linear, 0 ... 1)"));
+}
+
 std::optional<glm::dvec3> Checker::point(const Value& v, const QString& path) {
     return vec3(v, path, {-kMaxRigLength, true, kMaxRigLength, true}, QStringLiteral("a point [x, y, z]"));
 }

@@ -49,6 +49,7 @@ class Checker {
     std::optional<bool> boolean(const json::Value& v, const QString& path);
     std::optional<QString> name(const json::Value& v, const QString& path);
     std::optional<glm::dvec3> color(const json::Value& v, const QString& path);
+    std::optional<glm::dvec3> albedo(const json::Value& v, const QString& path);    // components 0 ... 1
     std::optional<glm::dvec3> point(const json::Value& v, const QString& path);     // |x| <= kMaxRigLength
     std::optional<glm::dvec3> direction(const json::Value& v, const QString& path); // non-zero, normalised
     bool isObject(const json::Value& v, const QString& path);
@@ -97,6 +98,11 @@ class ObjectView {
 // rigjson_models.cpp: a light's "falloff" and "cone" objects; nullopt when invalid (errors reported).
 std::optional<Falloff> readFalloff(Checker& c, const json::Value& v, const QString& path);
 std::optional<Cone> readCone(Checker& c, const json::Value& v, const QString& path);
+// rigjson_shadow.cpp: a light's "shadow" (type: the light's, nullopt when unknown: every key allowed) and the
+// rig's "ground"; nullopt when invalid (errors reported).
+std::optional<Shadow> readShadow(Checker& c, const json::Value& v, const QString& path,
+                                 std::optional<LightType> type);
+std::optional<Ground> readGround(Checker& c, const json::Value& v, const QString& path);
 // Errors for keys of "falloff" or "cone" written on the light itself or in the other object. `light`
 // describes the light ("a point light") when `o` is the light object, with whether its type has a
 // falloff and a cone, so that the message can say "a directional light has no range".

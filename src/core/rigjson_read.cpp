@@ -12,6 +12,8 @@ using rigjson::Checker;
 using rigjson::ObjectView;
 using rigjson::readCone;
 using rigjson::readFalloff;
+using rigjson::readGround;
+using rigjson::readShadow;
 using rigjson::rejectMisplaced;
 
 namespace {
@@ -112,6 +114,16 @@ std::optional<Light> readLight(Checker& c, const Value& v, const QString& path) 
         o.reject("exponent", QStringLiteral("only %1 lights have an exponent; a falloff or cone exponent "
                                             "belongs in \"falloff\" or \"cone\"")
                                  .arg(lightTypesWith(&LightTypeTraits::usesRimExponent)));
+    if (is(&Light::castsShadows)) {
+        if (const Value* s = o.take("shadow"))
+            if (const auto shadow = readShadow(c, *s, o.path("shadow"), type)) l.shadow = *shadow;
+    } else {
+        o.reject("shadow",
+                 QStringLiteral("%1 casts no shadow: it brightens the edges that face away from the "
+                                "viewer and comes from no place that anything could block (only "
+                                "%2 lights cast shadows)")
+                     .arg(a, lightTypesWith(&LightTypeTraits::castsShadows)));
+    }
     rejectMisplaced(o, false, false, a, is(&Light::usesFalloff), is(&Light::usesCone));
     o.finish();
     return type ? std::optional(l) : std::nullopt;
@@ -219,6 +231,8 @@ RigReadResult readRigJson(const QByteArray& data, const QString& displayName) {
              [&](const Value& x, const QString& p) { return c.enumValue<RigSpace>(x, p); });
     top.read("ambient", rig.ambient, [&](const Value& x, const QString& p) { return c.color(x, p); });
     if (const Value* s = top.take("shading")) readShading(c, *s, QStringLiteral("shading"), rig.shading);
+    if (const Value* g = top.take("ground"))
+        if (const auto ground = readGround(c, *g, QStringLiteral("ground"))) rig.ground = *ground;
     if (const Value* lights = top.take("lights")) {
         if (lights->kind != Value::Kind::Array) {
             c.expected(*lights, QStringLiteral("lights"), QStringLiteral("an array of lights [...]"));
@@ -231,6 +245,14 @@ RigReadResult readRigJson(const QByteArray& data, const QString& displayName) {
                 if (auto l = readLight(c, lights->items[i],
                                        json::appendIndex(QStringLiteral("lights"), qsizetype(i))))
                     rig.lights.push_back(std::move(*l));
+            if (const int casters = shadowCasterCount(rig.lights); casters > kMaxShadowCasters)
+                c.error(QStringLiteral("lights"),
+                        QStringLiteral(
+                            "%1 lights have \"shadow\": {\"enabled\": true}; at most %2 lights can cast "
+                            "shadows (one shadow map each): switch off the shadow of %3 of them")
+                            .arg(casters)
+                            .arg(kMaxShadowCasters)
+                            .arg(casters - kMaxShadowCasters));
         }
     } else {
         c.error(QStringLiteral("lights"),

@@ -4,6 +4,7 @@
 #include "rigjson.h"
 #include "rigjson_json.h"
 
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -77,6 +78,23 @@ QByteArray cone(const Cone& c) {
     return inlineObject(fields);
 }
 
+// A light's shadow is written when any value its type uses differs from lr::Shadow's defaults, and then in
+// full (as falloff and cone are), so existing files without shadows stay byte-identical.
+std::optional<QByteArray> shadow(const Light& l) {
+    const Shadow& s = l.shadow;
+    const Shadow d;
+    const bool positioned = l.usesPosition();
+    const bool isDefault = s.enabled == d.enabled && s.resolution == d.resolution && s.bias == d.bias &&
+                           s.normalOffset == d.normalOffset &&
+                           (positioned ? s.size == d.size : s.angle == d.angle);
+    if (!l.castsShadows() || isDefault) return std::nullopt;
+    return inlineObject({{"enabled", s.enabled ? "true" : "false"},
+                         {"resolution", QByteArray::number(s.resolution)},
+                         {"bias", num(s.bias)},
+                         {"normalOffset", num(s.normalOffset)},
+                         positioned ? std::pair{"size", num(s.size)} : std::pair{"angle", num(s.angle)}});
+}
+
 QByteArray light(const Light& l) {
     Fields f{{"name", str(l.name)},
              {"type", name(l.type)},
@@ -97,6 +115,7 @@ QByteArray light(const Light& l) {
         if (l.ambient) f.push_back({"ambient", vec(*l.ambient)});
     }
     if (l.usesRimExponent()) f.push_back({"exponent", num(l.rimExponent)});
+    if (const auto s = shadow(l)) f.push_back({"shadow", *s});
     return blockObject(f, "    ");
 }
 
@@ -118,13 +137,14 @@ QByteArray writeRigJson(const Rig& rig) {
                                : Fields{{"specular", name(rig.shading.specular)},
                                         {"viewer", name(rig.shading.viewer)},
                                         {"shininess", num(rig.shading.shininess)}};
-    const Fields top{{"format", "\"lightrig\""},
-                     {"version", QByteArray::number(kRigFormatVersion)},
-                     {"name", str(rig.name)},
-                     {"space", name(rig.space)},
-                     {"ambient", vec(rig.ambient)},
-                     {"shading", inlineObject(shading)},
-                     {"lights", lights}};
+    Fields top{{"format", "\"lightrig\""},    {"version", QByteArray::number(kRigFormatVersion)},
+               {"name", str(rig.name)},       {"space", name(rig.space)},
+               {"ambient", vec(rig.ambient)}, {"shading", inlineObject(shading)}};
+    // The ground only when not the default (off, grey), in full.
+    if (rig.ground != Ground{})
+        top.push_back(
+            {"ground", inlineObject({{"mode", name(rig.ground.mode)}, {"color", vec(rig.ground.color)}})});
+    top.push_back({"lights", lights});
     return blockObject(top, "") + '\n';
 }
 

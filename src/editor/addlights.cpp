@@ -18,6 +18,11 @@ std::unique_ptr<AddLights> AddLights::create(Document* doc, int row, std::vector
             QCoreApplication::translate("lr::AddLights", "a rig holds at most %1 lights").arg(kMaxRigLights));
     for (const Light& l : lights)
         if (const QString e = validateLight(l); !e.isEmpty()) return fail(e);
+    // Copies of shadow casters (duplicate, paste) count against kMaxShadowCasters like any other.
+    if (const int added = shadowCasterCount(lights); added > 0)
+        if (const QString e = checkShadowCasterCount(shadowCasterCount(doc->rig().lights) + added);
+            !e.isEmpty())
+            return fail(e);
     if (row < 0 || row > doc->lightCount()) row = doc->lightCount();
     return std::unique_ptr<AddLights>(new AddLights(doc, row, std::move(lights), text));
 }

@@ -1,5 +1,7 @@
 #include "editor/changelightvalue.h"
 
+#include "core/rigjson.h"
+
 #include <QCoreApplication>
 #include <algorithm>
 
@@ -83,6 +85,17 @@ std::unique_ptr<ChangeLightValue> ChangeLightValue::create(Document* doc, const 
         }
     }
     if (!changes) return fail(QString()); // nothing to do: no step, and not an error
+    // At most kMaxShadowCasters shadows switched on (enabling one, or a type change that makes a kept shadow
+    // count again): refused with the limit, never silently. Edits that add no caster always pass.
+    int casters = 0, castersAfter = 0;
+    for (size_t i = 0; i < before.size(); ++i) {
+        casters += before[i].castsShadows() && before[i].shadow.enabled;
+        castersAfter += after[i].castsShadows() && after[i].shadow.enabled;
+    }
+    if (castersAfter > casters) {
+        const int total = shadowCasterCount(doc->rig().lights) - casters + castersAfter;
+        if (const QString e = checkShadowCasterCount(total); !e.isEmpty()) return fail(e);
+    }
     return std::unique_ptr<ChangeLightValue>(new ChangeLightValue(doc, std::move(kept), property,
                                                                   std::move(before), std::move(after),
                                                                   values.value(order.front().second)));

@@ -24,6 +24,7 @@ std::optional<Rig> convertRigSpace(const Rig& rig, RigSpace space, const SceneFr
     for (Light& l : out.lights) {
         if (!l.usesPosition()) continue;
         l.position = worldToRig(out, f, rigToWorld(rig, f, l.position));
+        l.shadow.size *= k; // the emitter's diameter is a distance too (an angle needs nothing)
         Falloff& fo = l.falloff;
         if (fo.hasRange()) fo.range *= k;
         if (fo.model == FalloffModel::InverseSquare) l.intensity *= k * k; // 1/d² in the new units

@@ -16,6 +16,7 @@ Rig settingsWith(const Rig& rig, RigProperty property, const QVariant& value) {
     r.space = rig.space;
     r.ambient = rig.ambient;
     r.shading = rig.shading;
+    r.ground = rig.ground;
     applyRigValue(r, property, value);
     return r;
 }

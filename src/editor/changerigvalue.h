@@ -1,4 +1,5 @@
-// Rig-wide values (name, space, ambient, shading) as undo steps; merges within a continuous-edit session.
+// Rig-wide values (name, space, ambient, shading, ground) as undo steps; merges within a continuous-edit
+// session.
 #pragma once
 
 #include "editor/changelightvalue.h" // CommandId

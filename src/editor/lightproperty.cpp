@@ -172,6 +172,27 @@ bool hasRangeModel(const Light& l) {
     return l.falloff.model != FalloffModel::None;
 }
 
+bool shadowOn(const Light& l) {
+    return l.shadow.enabled;
+}
+
+QString checkShadowResolution(const LightPropertyInfo& row, const QVariant& v) {
+    const std::optional<double> d = toDouble(v);
+    if (d && isShadowResolution(*d)) return {};
+    return QStringLiteral("%1 must be a power of two between %2 and %3%4")
+        .arg(row.displayName())
+        .arg(kMinShadowResolution)
+        .arg(kMaxShadowResolution)
+        .arg(d ? QStringLiteral(", got %1").arg(num(*d)) : QString());
+}
+
+QString undoSwitchShadow(const QString& lights, const QVariant& on) {
+    return on.toBool()
+               ? QCoreApplication::translate("lr::ChangeLightValue", "Switch on the shadow of %1").arg(lights)
+               : QCoreApplication::translate("lr::ChangeLightValue", "Switch off the shadow of %1")
+                     .arg(lights);
+}
+
 using P = LightProperty;
 using K = LightValueKind;
 using T = LightTypeTraits;
@@ -477,7 +498,97 @@ const LightPropertyInfo kLightProperties[] = {
      .usedBy = &T::usesRimExponent,
      .get = [](const Light& l) { return QVariant(l.rimExponent); },
      .set = [](Light& l, const QVariant& v) { l.rimExponent = number(v, l.rimExponent); }},
+    // The shadow (issue 14; docs/rig-format.md "shadow"): its details are shown while it is switched on.
+    {.id = P::ShadowEnabled,
+     .name = QT_TRANSLATE_NOOP("lr::LightProperty", "shadow"),
+     .label = QT_TRANSLATE_NOOP("lr::LightProperty", "Shado&w"),
+     .tableLabel = QT_TRANSLATE_NOOP("lr::LightProperty", "Shadow"),
+     .key = "shadowEnabled",
+     .jsonField = "shadow.enabled",
+     .kind = K::Bool,
+     .usedBy = &T::castsShadows,
+     .check = checkBool,
+     .get = [](const Light& l) { return QVariant(l.shadow.enabled); },
+     .set = [](Light& l, const QVariant& v) { l.shadow.enabled = v.toBool(); },
+     .undoText = undoSwitchShadow},
+    {.id = P::ShadowResolution,
+     .name = QT_TRANSLATE_NOOP("lr::LightProperty", "shadow resolution"),
+     .label = QT_TRANSLATE_NOOP("lr::LightProperty", "Shadow resolution"),
+     .key = "shadowResolution",
+     .jsonField = "shadow.resolution",
+     .kind = K::Number,
+     .min = kMinShadowResolution,
+     .max = kMaxShadowResolution,
+     .unit = "texels per side",
+     .suffix = " texels",
+     .usedBy = &T::castsShadows,
+     .shown = shadowOn,
+     .check = checkShadowResolution,
+     .get = [](const Light& l) { return QVariant(l.shadow.resolution); },
+     .set = [](Light& l, const QVariant& v) { l.shadow.resolution = int(number(v, l.shadow.resolution)); },
+     .shownWith = P::ShadowEnabled}, // the Shadow column's tooltip names it
+    {.id = P::ShadowBias,
+     .name = QT_TRANSLATE_NOOP("lr::LightProperty", "shadow bias"),
+     .label = QT_TRANSLATE_NOOP("lr::LightProperty", "Shadow bias"),
+     .key = "shadowBias",
+     .jsonField = "shadow.bias",
+     .kind = K::Number,
+     .min = 0.0,
+     .max = kMaxShadowBias,
+     .unit = "texels",
+     .usedBy = &T::castsShadows,
+     .shown = shadowOn,
+     .get = [](const Light& l) { return QVariant(l.shadow.bias); },
+     .set = [](Light& l, const QVariant& v) { l.shadow.bias = number(v, l.shadow.bias); }},
+    {.id = P::ShadowNormalOffset,
+     .name = QT_TRANSLATE_NOOP("lr::LightProperty", "shadow normal offset"),
+     .label = QT_TRANSLATE_NOOP("lr::LightProperty", "Normal offset"),
+     .key = "shadowNormalOffset",
+     .jsonField = "shadow.normalOffset",
+     .kind = K::Number,
+     .min = 0.0,
+     .max = kMaxShadowBias,
+     .unit = "texels",
+     .usedBy = &T::castsShadows,
+     .shown = shadowOn,
+     .get = [](const Light& l) { return QVariant(l.shadow.normalOffset); },
+     .set = [](Light& l, const QVariant& v) { l.shadow.normalOffset = number(v, l.shadow.normalOffset); }},
+    {.id = P::ShadowSize,
+     .name = QT_TRANSLATE_NOOP("lr::LightProperty", "emitter size"),
+     .label = QT_TRANSLATE_NOOP("lr::LightProperty", "Emitter si&ze"),
+     .key = "shadowSize",
+     .jsonField = "shadow.size",
+     .kind = K::Number,
+     .min = 0.0,
+     .max = kMaxShadowSize,
+     .unit = "diameter in the rig's units",
+     .usedBy = &T::usesPosition, // every type with a position casts shadows (static_assert below)
+     .shown = shadowOn,
+     .get = [](const Light& l) { return QVariant(l.shadow.size); },
+     .set = [](Light& l, const QVariant& v) { l.shadow.size = number(v, l.shadow.size); }},
+    {.id = P::ShadowAngle,
+     .name = QT_TRANSLATE_NOOP("lr::LightProperty", "emitter angle"),
+     .label = QT_TRANSLATE_NOOP("lr::LightProperty", "Emitter an&gle"),
+     .key = "shadowAngle",
+     .jsonField = "shadow.angle",
+     .kind = K::Number,
+     .min = 0.0,
+     .max = kMaxShadowAngle,
+     .unit = "degrees",
+     .suffix = "°",
+     .usedBy = &T::castsShadows,
+     .unless = &T::usesPosition, // lights at infinity: directional
+     .shown = shadowOn,
+     .get = [](const Light& l) { return QVariant(l.shadow.angle); },
+     .set = [](Light& l, const QVariant& v) { l.shadow.angle = number(v, l.shadow.angle); }},
 };
+static_assert(
+    [] {
+        for (const LightTypeTraits& t : kLightTypeTraits)
+            if (t.usesPosition && !t.castsShadows) return false;
+        return true;
+    }(),
+    "the emitter size row applies to the types with a position: they must all cast shadows");
 static_assert(std::size(kLightProperties) == size_t(kLightPropertyCount), "one row per LightProperty");
 
 // Row index by id (the table is in display order, not enum order).
@@ -527,7 +638,8 @@ QString LightPropertyInfo::displayLabel() const {
 }
 
 bool LightPropertyInfo::applies(const Light& light) const {
-    return !usedBy || traitsOf(light.type).*usedBy;
+    const LightTypeTraits& t = traitsOf(light.type);
+    return (!usedBy || t.*usedBy) && (!unless || !(t.*unless));
 }
 
 bool LightPropertyInfo::isShown(const Light& light) const {
@@ -564,6 +676,10 @@ QString rigPropertyName(RigProperty p) {
         return QStringLiteral("shininess");
     case RigProperty::ShadingModel:
         return QStringLiteral("shading model");
+    case RigProperty::GroundMode:
+        return QStringLiteral("ground");
+    case RigProperty::GroundColor:
+        return QStringLiteral("ground colour");
     case RigProperty::Any:
         break;
     }
@@ -596,6 +712,10 @@ QVariant rigValue(const Rig& r, RigProperty p) {
         return r.shading.shininess;
     case RigProperty::ShadingModel:
         return QVariant::fromValue(r.shading.model);
+    case RigProperty::GroundMode:
+        return QVariant::fromValue(r.ground.mode);
+    case RigProperty::GroundColor:
+        return QVariant::fromValue(r.ground.color);
     case RigProperty::Any:
         break;
     }
@@ -649,6 +769,10 @@ QString validateRigValue(RigProperty p, const QVariant& v) {
         return checkRange(rigPropertyName(p), toDouble(v), 0.0, kMaxShininess, true);
     case RigProperty::ShadingModel:
         return checkEnum<ShadingModel>(rigPropertyName(p), v);
+    case RigProperty::GroundMode:
+        return checkEnum<GroundMode>(rigPropertyName(p), v);
+    case RigProperty::GroundColor: // an albedo: what share of the light the ground reflects
+        return checkVec3(rigPropertyName(p), toVec3(v, true), 0.0, 1.0);
     case RigProperty::Any:
         break;
     }
@@ -667,11 +791,20 @@ QString validateLight(const Light& l) {
     return {};
 }
 
+QString checkShadowCasterCount(int casters) {
+    if (casters <= kMaxShadowCasters) return {};
+    return QStringLiteral("%1 lights would cast shadows; at most %2 can (one shadow map each): switch off "
+                          "another light's shadow first")
+        .arg(casters)
+        .arg(kMaxShadowCasters);
+}
+
 QString validateRig(const Rig& r) {
     if (r.lights.size() > size_t(kMaxRigLights))
         return QStringLiteral("a rig holds at most %1 lights, got %2")
             .arg(kMaxRigLights)
             .arg(r.lights.size());
+    if (QString e = checkShadowCasterCount(shadowCasterCount(r.lights)); !e.isEmpty()) return e;
     for (int i = 0; i < kRigPropertyCount; ++i)
         if (QString e = validateRigValue(RigProperty(i), rigValue(r, RigProperty(i))); !e.isEmpty()) return e;
     for (const Light& l : r.lights)
@@ -707,6 +840,12 @@ void applyRigValue(Rig& r, RigProperty p, const QVariant& v) {
         break;
     case RigProperty::ShadingModel:
         if (auto s = toEnum<ShadingModel>(v)) r.shading.model = *s;
+        break;
+    case RigProperty::GroundMode:
+        if (auto m = toEnum<GroundMode>(v)) r.ground.mode = *m;
+        break;
+    case RigProperty::GroundColor:
+        if (auto c = toVec3(v, true)) r.ground.color = *c;
         break;
     case RigProperty::Any:
         break;

@@ -20,8 +20,12 @@
 //   Specular             double factor f (stored as (f,f,f)), or glm::dvec3 colour (specularIsColor)
 //   FalloffModel, ConeModel, Diffuse   the enum (or int index, or file name)
 //   FalloffRange         double > 0, or an invalid QVariant for "no range" (inverse-polynomial,
-//   inverse-square) everything else      double
-// Enums from types.h, RigSpace/SpecularModel/ViewerModel likewise for rig values. (Qt 6 needs no
+//   inverse-square)
+//   ShadowEnabled        bool
+//   ShadowResolution     int (also a whole double), a power of two 256 ... 4096
+//   everything else      double
+// Enums from types.h, RigSpace/SpecularModel/ViewerModel/GroundMode likewise for rig values (GroundColor:
+// glm::dvec3 linear albedo, components 0 ... 1). (Qt 6 needs no
 // Q_DECLARE_METATYPE for glm::dvec3 in a QVariant; declaring it here would clash with earlier implicit uses.)
 #pragma once
 
@@ -61,13 +65,31 @@ enum class LightProperty {
     Specular,
     Ambient,
     RimExponent,
-    Any // not a property: "several or all values of the light changed" (in RigChange only)
+    ShadowEnabled, // shadow.enabled ... shadow.angle: types whose traits say castsShadows
+    ShadowResolution,
+    ShadowBias,
+    ShadowNormalOffset,
+    ShadowSize,  // point and spot: the emitter's diameter in rig units
+    ShadowAngle, // directional: the emitter's angular diameter in degrees
+    Any          // not a property: "several or all values of the light changed" (in RigChange only)
 };
 constexpr int kLightPropertyCount = int(LightProperty::Any);
 
 // ShadingModel: classic or physically based (core/rig.h Shading::model); the classic-only values (specular
 // model, viewer, shininess) stay editable but mean nothing under Pbr.
-enum class RigProperty { Name, Space, Ambient, SpecularModel, ViewerModel, Shininess, ShadingModel, Any };
+// GroundMode and GroundColor: the rig's ground plane (core/rig.h Ground; issue 14).
+enum class RigProperty {
+    Name,
+    Space,
+    Ambient,
+    SpecularModel,
+    ViewerModel,
+    Shininess,
+    ShadingModel,
+    GroundMode,
+    GroundColor,
+    Any
+};
 constexpr int kRigPropertyCount = int(RigProperty::Any);
 
 // Limits the editor enforces: the rig format's own (core/rigjson.h), so a saved rig always loads again.
@@ -80,6 +102,7 @@ constexpr double kMaxExponent = kMaxRigExponent; // falloff, cone and rim expone
 constexpr double kMaxPolynomialCoefficient = kMaxRigLength;
 constexpr double kMaxShininess = kMaxRigExponent; // > 0
 constexpr double kMaxConeAngle = 90.0;            // degrees, half-angle; > 0
+constexpr double kMaxShadowSize = kMaxRigLength;  // a point or spot light's emitter diameter; >= 0
 
 // How a property's value is held and edited (the Properties dock picks a default editor widget per kind).
 enum class LightValueKind {
@@ -110,6 +133,9 @@ struct LightPropertyInfo {
     // The light types that use it (a LightTypeTraits flag); nullptr: every type. Commands skip lights
     // where a property does not apply.
     bool LightTypeTraits::*usedBy = nullptr;
+    // ... except the types that have this trait too (a directional light's shadow angle: castsShadows
+    // unless usesPosition); nullptr: no exception.
+    bool LightTypeTraits::*unless = nullptr;
     // Shown by the dock only when this also holds (the light's models use it); nullptr: whenever it applies.
     bool (*shown)(const Light&) = nullptr;
     // Its own context-free check; nullptr: the check of its kind and limits.
@@ -155,7 +181,10 @@ QString validateLightValue(LightProperty property, const QVariant& value);
 // models that allow it, at least one positive inverse-polynomial coefficient).
 QString validateLightValue(const Light& light, LightProperty property, const QVariant& value);
 QString validateRigValue(RigProperty property, const QVariant& value);
-// Every value of a light / a rig (used for rigs that come from elsewhere: presets, model imports).
+// "N lights would cast shadows; at most 16 can ...": empty when `casters` is within kMaxShadowCasters.
+QString checkShadowCasterCount(int casters);
+// Every value of a light / a rig (used for rigs that come from elsewhere: presets, model imports); a rig
+// also within kMaxShadowCasters.
 QString validateLight(const Light& light);
 QString validateRig(const Rig& rig);
 

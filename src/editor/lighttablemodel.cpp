@@ -17,7 +17,7 @@ QString formatNumber(double v) {
 // The light property each column shows, in column order (Any: the Solo column, which is view state).
 constexpr LightProperty kColumnProperty[LightTableModel::ColumnCount] = {
     LightProperty::Name,  LightProperty::Type,      LightProperty::Enabled,      LightProperty::Any,
-    LightProperty::Color, LightProperty::Intensity, LightProperty::FalloffRange,
+    LightProperty::Color, LightProperty::Intensity, LightProperty::FalloffRange, LightProperty::ShadowEnabled,
 };
 
 const LightPropertyInfo* columnRow(int column) {
@@ -73,7 +73,8 @@ QVariant LightTableModel::data(const QModelIndex& index, int role) const {
         return row ? QVariant(int(row->id)) : QVariant();
     case Qt::CheckStateRole:
         if (col == SoloColumn) return m_doc->isSoloed(index.row()) ? Qt::Checked : Qt::Unchecked;
-        if (row && row->kind == K::Bool) return value.toBool() ? Qt::Checked : Qt::Unchecked;
+        // No checkbox where the property does not apply (a rim light's shadow).
+        if (row && row->kind == K::Bool && cell) return value.toBool() ? Qt::Checked : Qt::Unchecked;
         return {};
     case Qt::DecorationRole:
         if (row && row->kind == K::Color) return displayColor(l.effectiveColor());
@@ -126,6 +127,10 @@ QVariant LightTableModel::data(const QModelIndex& index, int role) const {
             return tr("Falloff: %1").arg(toString(l.falloff.model));
         case SoloColumn:
             return tr("Solo: while any light is soloed, only soloed lights render (not saved)");
+        case ShadowColumn:
+            if (!l.castsShadows()) return tr("%1 lights cast no shadow").arg(lightTypeLabel(l.type));
+            return l.shadow.enabled ? tr("Casts a shadow (%1 × %1 texels)").arg(l.shadow.resolution)
+                                    : tr("Casts no shadow");
         default:
             return {};
         }
@@ -147,6 +152,8 @@ QVariant LightTableModel::headerData(int section, Qt::Orientation orientation, i
     }
     if (role == Qt::ToolTipRole && section == FalloffColumn)
         return tr("The distance falloff's range (— when none)");
+    if (role == Qt::ToolTipRole && section == ShadowColumn)
+        return tr("Whether the light casts a shadow (at most %1 lights)").arg(kMaxShadowCasters);
     return {};
 }
 
@@ -154,9 +161,10 @@ Qt::ItemFlags LightTableModel::flags(const QModelIndex& index) const {
     if (!index.isValid()) return Qt::ItemIsDropEnabled;
     Qt::ItemFlags f = Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemIsDragEnabled;
     const LightPropertyInfo* row = columnRow(index.column());
-    if (index.column() == SoloColumn || (row && row->kind == LightValueKind::Bool))
+    const bool cell = m_doc && hasCell(row, m_doc->light(index.row()));
+    if (index.column() == SoloColumn || (row && row->kind == LightValueKind::Bool && cell))
         f |= Qt::ItemIsUserCheckable;
-    else if (m_doc && hasCell(row, m_doc->light(index.row())))
+    else if (cell && !(row && row->kind == LightValueKind::Bool))
         f |= Qt::ItemIsEditable;
     return f;
 }

@@ -1,5 +1,6 @@
-// The light table: one row per light of a Document, columns name, type, on, solo, colour, intensity and the
-// main falloff parameter (the range; "—" when the light has none). Every column but solo shows one light
+// The light table: one row per light of a Document, columns name, type, on, solo, colour, intensity, the
+// main falloff parameter (the range; "—" when the light has none) and shadow (a checkbox; none for types
+// that cast no shadow). Every column but solo shows one light
 // property (propertyOf) and reads its header, text, editability and edits from the property's row in the
 // light-property table (editor/lightproperty.h); solo is view state. Editing goes through the document's
 // commands (setData -> one undo step), never into the rig directly. Follows the document's structural changes
@@ -25,6 +26,7 @@ class LightTableModel : public QAbstractTableModel {
         ColorColumn,
         IntensityColumn,
         FalloffColumn,
+        ShadowColumn,
         ColumnCount
     };
     enum Role {
@@ -47,7 +49,8 @@ class LightTableModel : public QAbstractTableModel {
     QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
     Qt::ItemFlags flags(const QModelIndex& index) const override;
     // EditRole (Name, Type, Color [glm::dvec3 linear or QColor sRGB], Intensity, Falloff range) or
-    // CheckStateRole (On: an undo step; Solo: transient). Invalid values are refused: returns false and emits
+    // CheckStateRole (On, Shadow: an undo step; Solo: transient). Switching on a shadow beyond
+    // kMaxShadowCasters is refused with the limit. Invalid values are refused: returns false and emits
     // editRefused(reason).
     bool setData(const QModelIndex& index, const QVariant& value, int role = Qt::EditRole) override;
     // The same edit applied to several rows as ONE undo step (the view calls this when several rows are

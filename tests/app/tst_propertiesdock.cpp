@@ -7,6 +7,8 @@
 #include "app/vec3edit.h"
 #include "editor/document.h"
 
+#include <QCheckBox>
+#include <QComboBox>
 #include <QLineEdit>
 #include <QSet>
 #include <QSignalSpy>
@@ -19,7 +21,7 @@ namespace {
 
 // The rule of the rig format (issue: "only the fields a light's type and models use"), written out here
 // independently of the dock's own propertyShown().
-QSet<QString> expectedFields(LightType type, FalloffModel falloff, ConeModel cone) {
+QSet<QString> expectedFields(LightType type, FalloffModel falloff, ConeModel cone, bool shadowOn = false) {
     QSet<QString> f{"name", "type", "enabled", "color", "temperature", "intensity"};
     const bool positioned = type == LightType::Point || type == LightType::Spot;
     if (positioned) {
@@ -60,6 +62,13 @@ QSet<QString> expectedFields(LightType type, FalloffModel falloff, ConeModel con
         f += "rimExponent";
     else
         f += {"diffuse", "specular", "ambient"};
+    // Issue 14: every type but rim casts; the shadow's details only while it is on, with the emitter's
+    // extent as a size (positioned lights) or an angle (directional).
+    if (type != LightType::Rim) f += "shadowEnabled";
+    if (type != LightType::Rim && shadowOn) {
+        f += {"shadowResolution", "shadowBias", "shadowNormalOffset"};
+        f += positioned ? "shadowSize" : "shadowAngle";
+    }
     return f;
 }
 
@@ -84,7 +93,13 @@ const QStringList kAllFields{"name",
                              "diffuse",
                              "specular",
                              "ambient",
-                             "rimExponent"};
+                             "rimExponent",
+                             "shadowEnabled",
+                             "shadowResolution",
+                             "shadowBias",
+                             "shadowNormalOffset",
+                             "shadowSize",
+                             "shadowAngle"};
 
 QSet<QString> visibleFields(PropertiesDock& dock) {
     QSet<QString> out;
@@ -147,6 +162,18 @@ class TestPropertiesDock : public QObject {
                              qPrintable(QStringLiteral("%1/%2/%3: shown [%4], expected [%5]")
                                             .arg(toString(type), toString(FalloffModel(fm)),
                                                  toString(ConeModel(cm)), describe(got), describe(want))));
+                    if (l.castsShadows()) { // the same light with its shadow on, then off again
+                        QVERIFY2(doc.setLightValue({row}, LightProperty::ShadowEnabled, true, &error),
+                                 qPrintable(error));
+                        const QSet<QString> on = visibleFields(dock);
+                        const QSet<QString> wantOn =
+                            expectedFields(l.type, l.falloff.model, l.cone.model, true);
+                        QVERIFY2(on == wantOn,
+                                 qPrintable(QStringLiteral("%1 with its shadow: shown [%2], "
+                                                           "expected [%3]")
+                                                .arg(toString(type), describe(on), describe(wantOn))));
+                        QVERIFY(doc.setLightValue({row}, LightProperty::ShadowEnabled, false));
+                    }
                     ++combinations;
                 }
             }
@@ -263,6 +290,77 @@ class TestPropertiesDock : public QObject {
         QCOMPARE(doc.undoStack()->count(), before + 1);
         doc.undoStack()->undo();
         QCOMPARE(doc.light(0).cone.outer, start);
+    }
+
+    // Issue 14: the shadow rows come from the property table by themselves: the checkbox shows the details,
+    // a resolution that is not a power of two is refused with the rule, a valid one is one undo step.
+    void shadowFields_showWhenOn() {
+        Document doc;
+        PropertiesDock dock(&doc);
+        dock.show();
+        QVERIFY(doc.addLight(LightType::Directional));
+        doc.setSelectedRows({0}, 0);
+        auto* on = qobject_cast<QCheckBox*>(dock.field(LightProperty::ShadowEnabled));
+        QVERIFY(on && on->isVisibleTo(&dock) && !on->isChecked());
+        QVERIFY(!dock.field(LightProperty::ShadowResolution)->isVisibleTo(&dock));
+        const int steps = doc.undoStack()->count();
+        on->click();
+        QVERIFY(doc.light(0).shadow.enabled);
+        QCOMPARE(doc.undoStack()->count(), steps + 1);
+        for (LightProperty p : {LightProperty::ShadowResolution, LightProperty::ShadowBias,
+                                LightProperty::ShadowNormalOffset, LightProperty::ShadowAngle})
+            QVERIFY2(dock.field(p)->isVisibleTo(&dock), qPrintable(propertyFieldName(p)));
+        QVERIFY(
+            !dock.field(LightProperty::ShadowSize)->isVisibleTo(&dock)); // a size is for positioned lights
+
+        // The resolution offers exactly the format's values (a spin box would step to 1025).
+        auto* resolution = qobject_cast<QComboBox*>(dock.field(LightProperty::ShadowResolution));
+        QVERIFY(resolution);
+        QStringList offered;
+        for (int i = 0; i < resolution->count(); ++i) {
+            offered << resolution->itemText(i);
+            QVERIFY(validateLightValue(LightProperty::ShadowResolution, resolution->itemData(i)).isEmpty());
+        }
+        QCOMPARE(offered,
+                 (QStringList{"256 texels", "512 texels", "1024 texels", "2048 texels", "4096 texels"}));
+        QCOMPARE(resolution->currentText(), QStringLiteral("1024 texels"));
+        resolution->setCurrentIndex(3);
+        emit resolution->activated(3);
+        QCOMPARE(doc.light(0).shadow.resolution, 2048);
+        QCOMPARE(doc.undoStack()->count(), steps + 2);
+        doc.undoStack()->undo();
+        QCOMPARE(resolution->currentText(), QStringLiteral("1024 texels")); // follows the document
+        doc.undoStack()->redo();
+        QCOMPARE(resolution->currentText(), QStringLiteral("2048 texels"));
+        // A bias out of the format's range is refused in place.
+        auto* bias = qobject_cast<NumberEdit*>(dock.field(LightProperty::ShadowBias));
+        QVERIFY(bias);
+        QSignalSpy rejected(bias, &NumberEdit::rejected);
+        bias->setFocus();
+        bias->selectAll();
+        QTest::keyClicks(bias, "17");
+        QTest::keyClick(bias, Qt::Key_Return);
+        QVERIFY(rejected.count() > 0);
+        QCOMPARE(doc.light(0).shadow.bias, 1.0);
+
+        // Undo the switch: the details hide again, the dock following the document.
+        doc.undoStack()->undo();
+        doc.undoStack()->undo();
+        QVERIFY(!on->isChecked());
+        QVERIFY(!dock.field(LightProperty::ShadowBias)->isVisibleTo(&dock));
+
+        // A 17th caster is refused with the limit; the box shows the stored state again.
+        for (int i = 0; i < kMaxShadowCasters; ++i)
+            QVERIFY(doc.addLight(LightType::Spot));
+        QList<int> spots;
+        for (int i = 1; i <= kMaxShadowCasters; ++i)
+            spots << i;
+        QVERIFY(doc.setLightValue(spots, LightProperty::ShadowEnabled, true));
+        doc.setSelectedRows({0}, 0);
+        on->click();
+        QVERIFY(!doc.light(0).shadow.enabled);
+        QVERIFY(!on->isChecked());
+        QVERIFY2(dock.message().contains(QLatin1String("at most 16")), qPrintable(dock.message()));
     }
 
     void invalidInput_isRefusedWithAReason() {

@@ -156,6 +156,36 @@ class TestLightsDock : public QObject {
         QVERIFY(m_doc->light(4).enabled);
     }
 
+    // Issue 14: the Shadow column's checkbox spreads to the selection as one step (the rim light, which has
+    // no checkbox, skipped), and a refused 17th caster shows the limit in the dock's message line.
+    void shadowCheckbox() {
+        QAbstractItemModel* proxy = m_dock->proxyModel();
+        QCOMPARE(proxy->headerData(LightTableModel::ShadowColumn, Qt::Horizontal).toString(),
+                 QStringLiteral("Shadow"));
+        QVERIFY(!(proxy->flags(cell(3, LightTableModel::ShadowColumn)) & Qt::ItemIsUserCheckable));
+        m_doc->setSelectedRows({0, 1, 2, 3}, 0);
+        QVERIFY(proxy->setData(cell(1, LightTableModel::ShadowColumn), Qt::Checked, Qt::CheckStateRole));
+        for (int r : {0, 1, 2})
+            QVERIFY(m_doc->light(r).shadow.enabled);
+        QVERIFY(!m_doc->light(3).shadow.enabled && !m_doc->light(4).shadow.enabled);
+        QCOMPARE(m_doc->undoStack()->count(), 1);
+
+        Rig full = lrtest::pointRig(kMaxShadowCasters + 1);
+        for (int i = 0; i < kMaxShadowCasters; ++i)
+            full.lights[size_t(i)].shadow.enabled = true;
+        m_doc->newRig(full);
+        QSignalSpy refused(m_dock, &LightsDock::editRefused);
+        m_doc->setSelectedRows({kMaxShadowCasters}, kMaxShadowCasters);
+        QVERIFY(!proxy->setData(cell(kMaxShadowCasters, LightTableModel::ShadowColumn), Qt::Checked,
+                                Qt::CheckStateRole));
+        QCOMPARE(refused.count(), 1);
+        auto* message = m_dock->findChild<QLabel*>(QStringLiteral("LightsMessage"));
+        QVERIFY(message->isVisibleTo(m_dock));
+        QVERIFY2(message->text().contains(QLatin1String("at most 16")), qPrintable(message->text()));
+        QVERIFY(!m_doc->light(kMaxShadowCasters).shadow.enabled);
+        QCOMPARE(m_doc->undoStack()->count(), 0);
+    }
+
     // Issue 12: changing the type of several lights must be deliberate, so the table's type combo changes the
     // row it was opened on; the Properties dock changes every selected light.
     void typeComboEditsOnlyItsRow() {

@@ -3,6 +3,7 @@
 // extension; and image baselines of real models (tests/data/render/baselines, compared per pixel;
 // a missing baseline is written and the test fails so that it gets reviewed and committed).
 #include "core/defaultrig.h"
+#include "core/rigjson.h"
 #include "glfixture.h"
 #include "model/isolatedimport.h"
 #include "support/cli.h"
@@ -13,6 +14,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <sys/stat.h>
+#include <tuple>
 
 namespace {
 
@@ -301,6 +303,69 @@ class TestRenderCli : public QObject {
                                  QStringLiteral("pbr")} +
                      small);
         QVERIFY2(r.code == 0 && r.out.contains(QStringLiteral("(%1, pbr shading)").arg(rig)),
+                 qPrintable(r.show()));
+    }
+
+    // Issue 14: --ground off|visible|catcher overrides the rig's ground and --shadows on|off its shadows, a
+    // usage error naming the option for anything else; the summary names a ground that is there and the
+    // shadows cast.
+    void groundAndShadowOptions() {
+        for (const auto& [option, value, message] :
+             {std::tuple{"--ground", "shadow",
+                         "--ground must be \"off\", \"visible\" or \"catcher\", got 'shadow'"},
+              std::tuple{"--shadows", "soft", "--shadows must be \"on\" or \"off\", got 'soft'"}}) {
+            const Run bad = lightrig({suzanne(), QString::fromLatin1(option), QString::fromLatin1(value),
+                                      QStringLiteral("-o"), path(QStringLiteral("never.png"))});
+            QVERIFY2(bad.code == 2, qPrintable(bad.show()));
+            QVERIFY2(bad.err.contains(QLatin1String(message)), qPrintable(bad.show()));
+            QVERIFY(!QFile::exists(path(QStringLiteral("never.png"))));
+        }
+        // More casters than maps: the work fails (exit 1) with the limit, nothing written.
+        lr::Rig many;
+        for (int i = 0; i <= lr::kMaxShadowCasters; ++i)
+            many.lights.push_back(lr::makeLight(lr::LightType::Spot, QStringLiteral("S%1").arg(i)));
+        const QString manyPath = path(QStringLiteral("many.json"));
+        QString error;
+        QVERIFY2(lr::saveRigFile(many, manyPath, &error), qPrintable(error));
+        const Run tooMany =
+            lightrig({suzanne(), QStringLiteral("--rig"), manyPath, QStringLiteral("--shadows"),
+                      QStringLiteral("on"), QStringLiteral("-o"), path(QStringLiteral("never.png"))});
+        QVERIFY2(tooMany.code == 1, qPrintable(tooMany.show()));
+        QVERIFY2(tooMany.err.contains(QLatin1String("17 lights of the rig can cast shadows; at most 16")),
+                 qPrintable(tooMany.show()));
+        QVERIFY(!QFile::exists(path(QStringLiteral("never.png"))));
+
+        LR_REQUIRE_DISPLAY();
+        const QStringList small{QStringLiteral("--size"), QStringLiteral("64x48"), QStringLiteral("-o"),
+                                path(QStringLiteral("ground.png"))};
+        Run r =
+            lightrig(QStringList{suzanne(), QStringLiteral("--ground"), QStringLiteral("catcher")} + small);
+        QVERIFY2(r.code == 0 &&
+                     r.out.contains(QLatin1String("(the default rig, classic shading, catcher ground)")),
+                 qPrintable(r.show()));
+        // The product preset has a catcher and two casters of its own; the options take them away.
+        const QString sweep = QStringLiteral(LIGHTRIG_SOURCE_DIR "/resources/presets/pbr-white-sweep.json");
+        r = lightrig(QStringList{suzanne(), QStringLiteral("--rig"), sweep} + small);
+        QVERIFY2(r.code == 0 &&
+                     r.out.contains(QStringLiteral("(%1, pbr shading, catcher ground, shadows from 2 "
+                                                   "lights)")
+                                        .arg(sweep)),
+                 qPrintable(r.show()));
+        r = lightrig(QStringList{suzanne(), QStringLiteral("--rig"), sweep, QStringLiteral("--ground"),
+                                 QStringLiteral("off"), QStringLiteral("--shadows"), QStringLiteral("off")} +
+                     small);
+        QVERIFY2(r.code == 0 && r.out.contains(QStringLiteral("(%1, pbr shading)").arg(sweep)),
+                 qPrintable(r.show()));
+        // --shadows on: every light of the default rig that can cast.
+        int casters = 0;
+        for (const lr::Light& l : lr::defaultRig().lights)
+            casters += l.castsShadows();
+        QVERIFY(casters > 1);
+        r = lightrig(QStringList{suzanne(), QStringLiteral("--shadows"), QStringLiteral("on")} + small);
+        QVERIFY2(r.code == 0 &&
+                     r.out.contains(QStringLiteral("(the default rig, classic shading, shadows from %1 "
+                                                   "lights)")
+                                        .arg(casters)),
                  qPrintable(r.show()));
     }
 

@@ -113,6 +113,7 @@ class TestRigPresets : public QObject {
     void pbrPresetsAreKhrLike();
     void pbrDefaultRigIsThePbrThreePoint();
     void defaultRigRule();
+    void shadowPresets();
 };
 
 void TestRigPresets::names() {
@@ -388,6 +389,44 @@ void TestRigPresets::defaultRigRule() {
     c = chooseDefaultRig(true, own, glb, ShadingModel::Classic);
     LR_COMPARE(c.rig, own);
     LR_COMPARE(withShading(defaultRig(), ShadingModel::Pbr).shading.model, ShadingModel::Pbr);
+}
+
+// Issue 14: the presets named after a shadow pattern cast their key's shadow (soft, but well under the
+// model's size, so the nose's shadow keeps its shape), the product shot has a shadow catcher and a soft
+// contact shadow from above; the others cast nothing and have no ground, so their images do not change.
+void TestRigPresets::shadowPresets() {
+    const auto casters = [](const Rig& rig) {
+        QStringList names;
+        for (const Light& l : rig.lights)
+            if (l.hasShadow()) names << l.name;
+        return names;
+    };
+    for (const char* n : {"rembrandt", "butterfly"}) {
+        const Rig rig = preset(QString::fromLatin1(n));
+        QCOMPARE(casters(rig), QStringList{QStringLiteral("Key")});
+        const Light& key = rig.lights[0];
+        QVERIFY2(key.type == LightType::Spot && key.shadow.size > 0.0 && key.shadow.size < 0.5, n);
+        LR_COMPARE(rig.ground.mode, GroundMode::Off);
+    }
+    const Rig sweep = preset(QStringLiteral("pbr-white-sweep"));
+    LR_COMPARE(sweep.ground.mode, GroundMode::Catcher);
+    QCOMPARE(casters(sweep), (QStringList{QStringLiteral("Key"), QStringLiteral("Top")}));
+    for (const Light& l : sweep.lights) {
+        if (!l.hasShadow()) continue;
+        // Soft: a directional key of a few degrees, a top light as wide as the model (radius 1).
+        if (l.type == LightType::Directional)
+            QVERIFY(l.shadow.angle > 1.0 && l.shadow.angle <= kMaxShadowAngle);
+        else
+            QVERIFY(l.shadow.size >= 1.0);
+        QVERIFY(l.position.y > 0.0 || l.direction.y < 0.0); // from above: a shadow on the ground
+    }
+    for (const QString& n : kExpected) {
+        if (n == QLatin1String("rembrandt") || n == QLatin1String("butterfly") ||
+            n == QLatin1String("pbr-white-sweep"))
+            continue;
+        const Rig rig = preset(n);
+        QVERIFY2(casters(rig).isEmpty() && rig.ground == Ground{}, qPrintable(n));
+    }
 }
 
 QTEST_GUILESS_MAIN(TestRigPresets)

@@ -211,6 +211,62 @@ void TestRigRules::rules_data() {
         "lights[0].cone.range: belongs in \"falloff\"");
     row("second light", rigJson(kPoint + ", " + with(kSpot, R"("intensity": -3)")),
         "lights[1].intensity: must be a finite number from 0");
+    // Shadow (issue 14).
+    row("shadow not object", rigJson(with(kSpot, R"("shadow": true)")),
+        "lights[0].shadow: must be an object");
+    row("shadow enabled missing", rigJson(with(kSpot, R"("shadow": {"resolution": 512})")),
+        "lights[0].shadow.enabled: missing");
+    row("shadow enabled string", rigJson(with(kPoint, R"("shadow": {"enabled": "yes"})")),
+        "lights[0].shadow.enabled: must be true or false");
+    row("shadow resolution 3000", rigJson(with(kSpot, R"("shadow": {"enabled": true, "resolution": 3000})")),
+        "lights[0].shadow.resolution: 3000 is not a power of two between 256 and 4096");
+    row("shadow resolution 128", rigJson(with(kSpot, R"("shadow": {"enabled": true, "resolution": 128})")),
+        "lights[0].shadow.resolution: 128 is not a power of two between 256 and 4096");
+    row("shadow resolution 8192",
+        rigJson(with(kDirectional, R"("shadow": {"enabled": true, "resolution": 8192})")),
+        "lights[0].shadow.resolution: 8192 is not a power of two between 256 and 4096");
+    row("shadow resolution 1024.5",
+        rigJson(with(kPoint, R"("shadow": {"enabled": false, "resolution": 1024.5})")),
+        "lights[0].shadow.resolution: 1024.5 is not a power of two");
+    row("shadow resolution string",
+        rigJson(with(kSpot, R"("shadow": {"enabled": true, "resolution": "1k"})")),
+        "lights[0].shadow.resolution: must be a power of two between 256 and 4096, got the string");
+    row("shadow bias negative", rigJson(with(kSpot, R"("shadow": {"enabled": true, "bias": -1})")),
+        "lights[0].shadow.bias: must be a finite number from 0 to 16, got -1");
+    row("shadow normalOffset 17", rigJson(with(kPoint, R"("shadow": {"enabled": true, "normalOffset": 17})")),
+        "lights[0].shadow.normalOffset: must be a finite number from 0 to 16, got 17");
+    row("shadow size negative", rigJson(with(kPoint, R"("shadow": {"enabled": true, "size": -0.5})")),
+        "lights[0].shadow.size: must be a finite number from 0 to 1e12, got -0.5");
+    row("shadow size NaN-like", rigJson(with(kSpot, R"("shadow": {"enabled": true, "size": 1e999})")),
+        "lights[0].shadow.size: must be a finite number from 0 to 1e12, got 1e999");
+    row("shadow angle 11", rigJson(with(kDirectional, R"("shadow": {"enabled": true, "angle": 11})")),
+        "lights[0].shadow.angle: must be a finite number from 0 to 10, got 11");
+    row("shadow angle on spot", rigJson(with(kSpot, R"("shadow": {"enabled": true, "angle": 1})")),
+        "lights[0].shadow.angle: a spot light's shadow has no angle: its softness is \"size\"");
+    row("shadow size on directional",
+        rigJson(with(kDirectional, R"("shadow": {"enabled": true, "size": 1})")),
+        "lights[0].shadow.size: a directional light's shadow has no size: its softness is \"angle\"");
+    row("shadow on rim", rigJson(with(kRim, R"("shadow": {"enabled": true})")),
+        "lights[0].shadow: a rim light casts no shadow: it brightens the edges that face away from the "
+        "viewer");
+    row("shadow off on rim", rigJson(with(kRim, R"("shadow": {"enabled": false})")),
+        "lights[0].shadow: a rim light casts no shadow");
+    QByteArray casters;
+    for (int i = 0; i <= kMaxShadowCasters; ++i) // 17, some of them switched off: they count too
+        casters += (i ? ", " : "") + with(i % 2 ? kSpot : kDirectional,
+                                          i % 3 ? R"("shadow": {"enabled": true})"
+                                                : R"("enabled": false, "shadow": {"enabled": true})");
+    row("17 shadow casters", rigJson(casters),
+        "lights: 17 lights have \"shadow\": {\"enabled\": true}; at most 16 lights can cast shadows");
+    // Ground (issue 14).
+    row("ground not object", rigJson({}, R"("ground": "catcher",)"), "ground: must be an object");
+    row("ground mode missing", rigJson({}, R"("ground": {"color": [1, 1, 1]},)"), "ground.mode: missing");
+    row("ground mode unknown", rigJson({}, R"("ground": {"mode": "shadow"},)"),
+        "ground.mode: must be \"off\", \"visible\" or \"catcher\", got the string \"shadow\"");
+    row("ground colour above 1", rigJson({}, R"("ground": {"mode": "visible", "color": [1, 1.5, 1]},)"),
+        "ground.color[1]: must be a finite number from 0 to 1, got 1.5");
+    row("ground colour 2 components", rigJson({}, R"("ground": {"mode": "visible", "color": [1, 1]},)"),
+        "ground.color: must be an RGB albedo");
 }
 
 // Each row breaks exactly one rule: exactly one error, naming the path; no rig comes back.

@@ -32,7 +32,8 @@ class RigGenerator {
             r.shading.viewer = pick<ViewerModel>();
             r.shading.shininess = positive(kMaxRigExponent);
         }
-        const int n = int(m_rng.bounded(8));
+        if (chance(0.4)) r.ground = {pick<GroundMode>(), {albedo(), albedo(), albedo()}};
+        const int n = int(m_rng.bounded(8)); // fewer than kMaxShadowCasters, whatever casts
         for (int i = 0; i < n; ++i)
             r.lights.push_back(light());
         return r;
@@ -64,6 +65,7 @@ class RigGenerator {
         return v > 0.0 ? v : 0.5;
     }
     double signedLength() { return (chance(0.5) ? -1.0 : 1.0) * value(kMaxRigLength); }
+    double albedo() { return std::min(1.0, value(1.0)); } // value() may round past its max
     glm::dvec3 color() { return {value(kMaxRigIntensity), value(2.0), value(1.0)}; }
     glm::dvec3 unit() {
         glm::dvec3 v;
@@ -135,6 +137,17 @@ class RigGenerator {
             if (chance(0.3)) l.ambient = color();
         }
         if (l.type == LightType::Rim) l.rimExponent = positive(kMaxRigExponent);
+        if (l.castsShadows() && chance(0.5)) {
+            Shadow& s = l.shadow;
+            s.enabled = chance(0.7);
+            s.resolution = kMinShadowResolution << m_rng.bounded(5); // 256 ... 4096
+            s.bias = std::min(kMaxShadowBias, value(kMaxShadowBias));
+            s.normalOffset = std::min(kMaxShadowBias, value(kMaxShadowBias));
+            if (l.usesPosition())
+                s.size = value(kMaxRigLength);
+            else
+                s.angle = std::min(kMaxShadowAngle, value(kMaxShadowAngle));
+        }
         return l;
     }
 
@@ -157,6 +170,7 @@ class TestRigWrite : public QObject {
     void loadSaveIsByteIdentical();
     void numbersAreShortestAndExact();
     void onlyUsedFieldsAreWritten();
+    void shadowAndGroundOnlyWhenSet();
     void saveAndReload();
     void saveRefusesInvalidRig();
     void nonFiniteValuesAreNotSaved();
@@ -181,8 +195,8 @@ void TestRigWrite::randomRigsRoundTrip() {
 
 void TestRigWrite::loadSaveIsByteIdentical_data() {
     QTest::addColumn<QString>("file");
-    for (const char* f :
-         {"good/issue-example.json", "good/minimal.json", "good/all-fields.json", "good/utf8-bom.json"})
+    for (const char* f : {"good/issue-example.json", "good/minimal.json", "good/all-fields.json",
+                          "good/utf8-bom.json", "good/shadows.json"})
         QTest::newRow(f) << dataPath(QString::fromLatin1(f));
 }
 
@@ -244,6 +258,53 @@ void TestRigWrite::onlyUsedFieldsAreWritten() {
     LR_VERIFY_OK(r);
     LR_COMPARE(r.rig->lights[0].falloff, point.falloff);
     QCOMPARE(r.rig->lights[1].direction, rim.direction);
+}
+
+// Issue 14: "shadow" and "ground" are written only when they differ from the defaults (so files from before
+// shadows keep their bytes), then in full on one line; a shadow only where the type casts one, with the
+// softness key of its type.
+void TestRigWrite::shadowAndGroundOnlyWhenSet() {
+    Light spot = makeLight(LightType::Spot, QStringLiteral("s"));
+    Light sun = makeLight(LightType::Directional, QStringLiteral("d"));
+    Light rim = makeLight(LightType::Rim, QStringLiteral("r"));
+    Rig rig;
+    rig.lights = {spot, sun, rim};
+    QByteArray text = writeRigJson(rig);
+    QVERIFY2(!text.contains("shadow") && !text.contains("ground"), text.constData());
+
+    rig.lights[0].shadow.enabled = true;
+    rig.lights[0].shadow.size = 0.25;
+    rig.lights[1].shadow.angle = 0.53;   // the shadow off, one value set: kept
+    rig.lights[1].shadow.size = 3.0;     // not a directional light's: neither written nor compared
+    rig.lights[2].shadow.enabled = true; // a rim light casts none: not written
+    rig.ground = {GroundMode::Catcher, glm::dvec3(0.5)};
+    text = writeRigJson(rig);
+    QVERIFY2(text.contains("      \"shadow\": {\"enabled\": true, \"resolution\": 1024, \"bias\": 1, "
+                           "\"normalOffset\": 1, \"size\": 0.25}\n    },"),
+             text.constData());
+    QVERIFY2(text.contains("      \"shadow\": {\"enabled\": false, \"resolution\": 1024, \"bias\": 1, "
+                           "\"normalOffset\": 1, \"angle\": 0.53}\n    },"),
+             text.constData());
+    QCOMPARE(text.count("\"shadow\""), 2);
+    QVERIFY2(text.contains("  \"shading\": {\"specular\": \"phong\", \"viewer\": \"local\", \"shininess\": "
+                           "32},\n  \"ground\": {\"mode\": \"catcher\", \"color\": [0.5, 0.5, 0.5]},\n  "
+                           "\"lights\": ["),
+             text.constData());
+    const RigReadResult r = readRigJson(text, QStringLiteral("s.json"));
+    LR_VERIFY_OK(r);
+    QVERIFY(r.rig->lights[0].shadow == rig.lights[0].shadow);
+    QCOMPARE(r.rig->lights[1].shadow.angle, 0.53);
+    QCOMPARE(r.rig->lights[1].shadow.size, 0.0);
+    QVERIFY(!r.rig->lights[2].shadow.enabled);
+    QVERIFY(r.rig->ground == rig.ground);
+    QCOMPARE(writeRigJson(*r.rig), text);
+
+    // Only the colour differs: the ground is written (mode off), and reads back the same.
+    Rig grey;
+    grey.ground.color = glm::dvec3(0.25, 0.5, 1.0);
+    text = writeRigJson(grey);
+    QVERIFY2(text.contains("\"ground\": {\"mode\": \"off\", \"color\": [0.25, 0.5, 1]}"), text.constData());
+    QVERIFY(readRigJson(text, QStringLiteral("g.json")).rig->ground == grey.ground);
 }
 
 void TestRigWrite::saveAndReload() {

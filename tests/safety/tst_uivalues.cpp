@@ -49,6 +49,8 @@ Rig everyFieldRig() {
     b.temperature = 3000.0;
     Light c = makeLight(LightType::Rim, QStringLiteral("rim"));
     Light d = makeLight(LightType::Directional, QStringLiteral("directional"));
+    a.shadow.enabled = true; // issue 14: the shadow's fields (size on the spot, angle on the directional)
+    d.shadow.enabled = true;
     rig.lights = {a, b, c, d};
     return rig;
 }

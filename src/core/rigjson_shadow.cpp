@@ -1,0 +1,102 @@
+// A light's "shadow" object and the rig's "ground" object (docs/rig-format.md, issue 14): which keys each
+// has, their defaults and ranges.
+#include "rigjson_check.h"
+
+namespace lr::rigjson {
+
+using json::Value;
+
+std::optional<Shadow> readShadow(Checker& c, const Value& v, const QString& path,
+                                 std::optional<LightType> type) {
+    if (!c.isObject(v, path)) return std::nullopt;
+    ObjectView o(c, v, path);
+    Shadow s;
+    bool ok = true;
+    const auto keep = [&](auto result, auto& out) {
+        if (result)
+            out = *result;
+        else
+            ok = false;
+    };
+    if (const Value* e = o.take("enabled")) {
+        keep(c.boolean(*e, o.path("enabled")), s.enabled);
+    } else {
+        c.error(o.path("enabled"), QStringLiteral("missing; a shadow says \"enabled\": true or false"));
+        ok = false;
+    }
+
+    if (const Value* r = o.take("resolution")) {
+        if (r->isNumber() && r->finite && isShadowResolution(r->number)) {
+            s.resolution = int(r->number);
+        } else {
+            ok = false;
+            const QString range = QStringLiteral("a power of two between %1 and %2")
+                                      .arg(kMinShadowResolution)
+                                      .arg(kMaxShadowResolution);
+            if (r->isNumber())
+                c.error(o.path("resolution"), QStringLiteral("%1 is not %2").arg(c.describe(*r), range));
+            else
+                c.expected(*r, o.path("resolution"), range);
+        }
+    }
+    const auto texels = [&](const char* key, double& out) {
+        if (const Value* x = o.take(key)) keep(c.number(*x, o.path(key), nonNegative(kMaxShadowBias)), out);
+    };
+    texels("bias", s.bias);
+    texels("normalOffset", s.normalOffset);
+
+    // The emitter's extent: a diameter for lights at a position, an angular diameter for lights at infinity.
+    const bool positioned = !type || traitsOf(*type).usesPosition;
+    const bool atInfinity = !type || !traitsOf(*type).usesPosition;
+    const QString light = type ? QStringLiteral("a %1 light's shadow").arg(toString(*type)) : QString();
+    if (positioned) {
+        if (const Value* x = o.take("size"))
+            keep(c.number(*x, o.path("size"), nonNegative(kMaxRigLength)), s.size);
+    } else {
+        o.reject("size",
+                 QStringLiteral("%1 has no size: its softness is \"angle\", the emitter's angular diameter "
+                                "in degrees (only %2 lights have a size)")
+                     .arg(light, lightTypesWith(&LightTypeTraits::usesPosition)));
+    }
+    if (atInfinity) {
+        if (const Value* x = o.take("angle"))
+            keep(c.number(*x, o.path("angle"), nonNegative(kMaxShadowAngle)), s.angle);
+    } else {
+        o.reject("angle",
+                 QStringLiteral("%1 has no angle: its softness is \"size\", the emitter's diameter in "
+                                "the rig's units (only directional lights have an angle)")
+                     .arg(light));
+    }
+    o.finish();
+    if (!ok) return std::nullopt;
+    return s;
+}
+
+std::optional<Ground> readGround(Checker& c, const Value& v, const QString& path) {
+    if (!c.isObject(v, path)) return std::nullopt;
+    ObjectView o(c, v, path);
+    Ground g;
+    bool ok = true;
+    if (const Value* m = o.take("mode")) {
+        const auto mode = c.enumValue<GroundMode>(*m, o.path("mode"));
+        if (mode)
+            g.mode = *mode;
+        else
+            ok = false;
+    } else {
+        c.error(o.path("mode"), QStringLiteral("missing; one of %1").arg(allowedNames<GroundMode>()));
+        ok = false;
+    }
+    if (const Value* col = o.take("color")) {
+        const auto albedo = c.albedo(*col, o.path("color"));
+        if (albedo)
+            g.color = *albedo;
+        else
+            ok = false;
+    }
+    o.finish();
+    if (!ok) return std::nullopt;
+    return g;
+}
+
+} // namespace lr::rigjson
