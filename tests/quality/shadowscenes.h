@@ -18,9 +18,9 @@ class ShadowSceneBuilder {
         indices().clear();
     }
 
-    // A quad of corners a, b, c, d (one winding; the tracer is double-sided).
+    // A quad of corners a, b, c, d; its normal by the right-hand rule (the tracer is double-sided).
     ShadowSceneBuilder& quad(glm::dvec3 a, glm::dvec3 b, glm::dvec3 c, glm::dvec3 d) {
-        const std::uint32_t base = add({a, b, c, d});
+        const std::uint32_t base = add({a, b, c, d}, glm::normalize(glm::cross(b - a, c - a)));
         indices().insert(indices().end(), {base, base + 1, base + 2, base, base + 2, base + 3});
         return *this;
     }
@@ -47,7 +47,7 @@ class ShadowSceneBuilder {
         const Model s = makeSphere(radius, segments, rings, center);
         const auto base = std::uint32_t(vertices().size());
         for (const Vertex& v : s.meshes.front().vertices)
-            add({s.origin + glm::dvec3(v.position)});
+            add({s.origin + glm::dvec3(v.position)}, glm::dvec3(v.normal));
         for (std::uint32_t i : s.meshes.front().indices)
             indices().push_back(base + i);
         return *this;
@@ -57,7 +57,7 @@ class ShadowSceneBuilder {
   private:
     std::vector<Vertex>& vertices() { return m_model.meshes.front().vertices; }
     std::vector<std::uint32_t>& indices() { return m_model.meshes.front().indices; }
-    std::uint32_t add(std::initializer_list<glm::dvec3> points) {
+    std::uint32_t add(std::initializer_list<glm::dvec3> points, glm::dvec3 normal) {
         const auto base = std::uint32_t(vertices().size());
         for (const glm::dvec3& p : points) {
             if (vertices().empty()) m_model.bounds.min = m_model.bounds.max = p;
@@ -65,6 +65,7 @@ class ShadowSceneBuilder {
             m_model.bounds.max = glm::max(m_model.bounds.max, p);
             Vertex v;
             v.position = glm::vec3(p - m_model.origin);
+            v.normal = glm::vec3(normal);
             vertices().push_back(v);
         }
         return base;
