@@ -153,6 +153,23 @@ class TestShadowBench : public QObject {
         qInfo().noquote() << benchTable(report);
         for (const BenchResult& r : report.results)
             QVERIFY(r.hasShadowErrors && r.shadow.compared + r.shadow.band > 0);
+        if (const QString out = qEnvironmentVariable("LIGHTRIG_SHADOW_BENCH_OUT"); !out.isEmpty()) {
+            report.results[0].reference.save(out + QStringLiteral("/reference.png"));
+            report.results[0].image.save(out + QStringLiteral("/exact.png"));
+            benchDifferenceImage(report.results[0].image, report.results[0].reference)
+                .save(out + QStringLiteral("/difference.png"));
+        }
+        // The same reference without shadows, for what tracing costs.
+        for (Light& l : scene.rig.lights)
+            l.shadow.enabled = false;
+        BenchOptions once = quickOptions(size);
+        once.tiers = {Quality::Exact};
+        once.frames = 1;
+        BenchReport plain;
+        QVERIFY2(runQualityBench({scene}, once, &plain, &error) == BenchStatus::Ok, qPrintable(error));
+        qInfo().noquote()
+            << QStringLiteral("the same reference without shadows: %1 ms").arg(plain.referenceMs, 0, 'f', 0);
+        QVERIFY(!benchHasShadows(plain));
     }
 };
 
