@@ -13,6 +13,7 @@
 #include <QTest>
 #include <functional>
 #include <glm/gtc/matrix_transform.hpp>
+#include <vector>
 
 using namespace lr;
 using namespace lr::test;
@@ -36,6 +37,23 @@ ReferenceImage syntheticReference(int w, int h, const std::function<std::uint8_t
             r.srgb.setPixel(x, y, qRgba(level, level, level, 255));
         }
     return r;
+}
+
+// A one-row G-buffer of points on the ground y = 0 (world x, z), seen through `view`.
+GBuffer groundRow(const glm::dmat4& view, const std::vector<double>& xs, const std::vector<double>& zs = {}) {
+    GBuffer g;
+    for (FloatImage* f : {&g.position, &g.normal, &g.albedo, &g.specular, &g.emissive}) {
+        f->width = int(xs.size()), f->height = 1;
+        f->pixels.assign(xs.size(), glm::vec4(0.0f));
+    }
+    for (size_t i = 0; i < xs.size(); ++i) {
+        const glm::dvec4 p(xs[i], 0.0, i < zs.size() ? zs[i] : 0.0, 1.0);
+        g.position.pixels[i] = glm::vec4(glm::vec3(view * p), 1.0f);
+        g.normal.pixels[i] = glm::vec4(glm::vec3(view * glm::dvec4(0.0, 1.0, 0.0, 0.0)), 1.0f);
+        g.albedo.pixels[i] = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
+        g.specular.pixels[i] = glm::vec4(0.0f, 0.0f, 0.0f, 16.0f);
+    }
+    return g;
 }
 
 QImage shifted(const QImage& image, const std::function<int(int x, int level)>& f) {
@@ -160,17 +178,7 @@ class TestShadowMeasure : public QObject {
         const glm::dmat4 view = glm::lookAt(glm::dvec3(0, 3, 6), glm::dvec3(0.0), glm::dvec3(0, 1, 0));
         const std::vector<double> xs{-3.0, -2.0, -1.4, -1.0, -0.7, 1.0, 2.0};
         const std::vector<bool> inShadow{false, false, true, true, true, false, false};
-        GBuffer g;
-        for (FloatImage* f : {&g.position, &g.normal, &g.albedo, &g.specular, &g.emissive}) {
-            f->width = int(xs.size()), f->height = 1;
-            f->pixels.assign(xs.size(), glm::vec4(0.0f));
-        }
-        for (size_t i = 0; i < xs.size(); ++i) {
-            g.position.pixels[i] = glm::vec4(glm::vec3(view * glm::dvec4(xs[i], 0.0, 0.0, 1.0)), 1.0f);
-            g.normal.pixels[i] = glm::vec4(glm::vec3(view * glm::dvec4(0.0, 1.0, 0.0, 0.0)), 1.0f);
-            g.albedo.pixels[i] = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
-            g.specular.pixels[i] = glm::vec4(0.0f, 0.0f, 0.0f, 16.0f);
-        }
+        const GBuffer g = groundRow(view, xs);
         QString error;
         const auto scene = makeReferenceScene(model, rig, SceneFrame{}, view, RenderSettings(), &error);
         QVERIFY2(scene, qPrintable(error));
@@ -201,6 +209,49 @@ class TestShadowMeasure : public QObject {
         const ReferenceImage p = computeReference(g, *plain);
         QVERIFY(p.casters == 0 && p.visibility.empty() && p.shadowClass.empty());
         QVERIFY(p.radiance[3].x > r.radiance[3].x);
+    }
+
+    // Spots of 179° and 0.1° (full angles) behind and beside a unit cube on the ground: where the cone
+    // reaches a point its shadow is traced (0 behind the cube, 1 in front), elsewhere nothing is traced and
+    // the light adds nothing either; every value finite.
+    void extremeSpotCones_data() {
+        QTest::addColumn<double>("outer");
+        QTest::addColumn<double>("aimX");
+        QTest::addColumn<std::vector<int>>("expected"); // visibility code per point; -1: not traced (255)
+        // Points: behind the cube (-0.7, 0, 0), between the spot and the cube (1, 0, 0), beside (-1, 0, 2).
+        QTest::newRow("179° down") << 89.5 << 2.0 << std::vector<int>{0, 255, 255};
+        QTest::newRow("0.1° behind") << 0.05 << -0.7 << std::vector<int>{0, -1, -1};
+        QTest::newRow("0.1° in front") << 0.05 << 1.0 << std::vector<int>{-1, 255, -1};
+    }
+    void extremeSpotCones() {
+        QFETCH(double, outer);
+        QFETCH(double, aimX);
+        QFETCH(std::vector<int>, expected);
+        const Model model = ShadowSceneBuilder().box({-0.5, 0.0, -0.5}, {0.5, 1.0, 0.5}).build();
+        Rig rig;
+        rig.ground.mode = GroundMode::Visible;
+        Light spot = makeLight(LightType::Spot, QStringLiteral("spot"));
+        spot.position = {2.0, 1.5, 0.0};
+        spot.direction = glm::normalize(outer > 45.0 ? glm::dvec3(0.0, -1.0, 0.0)
+                                                     : glm::dvec3(aimX, 0.0, 0.0) - spot.position);
+        spot.cone = {ConeModel::Smooth, 0.8 * outer, outer, 1.0};
+        spot.falloff = {};
+        spot.shadow.enabled = true;
+        spot.shadow.size = 0.1;
+        rig.lights = {spot};
+        const glm::dmat4 view = glm::lookAt(glm::dvec3(0, 3, 6), glm::dvec3(0.0), glm::dvec3(0, 1, 0));
+        const GBuffer g = groundRow(view, {-0.7, 1.0, -1.0}, {0.0, 0.0, 2.0});
+        QString error;
+        const auto scene = makeReferenceScene(model, rig, SceneFrame{}, view, RenderSettings(), &error);
+        QVERIFY2(scene, qPrintable(error));
+        const ReferenceImage r = computeReference(g, *scene);
+        for (size_t i = 0; i < expected.size(); ++i) {
+            const glm::dvec3 c = r.radiance[i];
+            QVERIFY(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z));
+            QCOMPARE(int(r.visibility[i]), expected[i] < 0 ? 255 : expected[i]);
+            if (expected[i] < 0) QCOMPARE(c.x, 0.0); // outside the cone: no light, nothing traced
+            if (expected[i] == 255) QVERIFY(c.x > 0.0);
+        }
     }
 };
 
