@@ -147,11 +147,13 @@ void ReferenceJob::tracePixel(const lighting::Surface<double>& s, size_t pixel, 
     int k = 0;
     for (size_t l = 0; l < sc.lights.size(); ++l) {
         if (!sc.emitters[l].casts) continue;
-        glm::dvec3 L;
-        double attenuation = 0.0;
-        // Where the light adds nothing (outside its cone or range) nothing is traced: visibility 1.
+        // Where the light's direct terms add nothing (outside its cone or range, facing away from it
+        // without a wrapped diffuse) visibility cannot matter: nothing is traced, it is 1.
+        const std::span<const lighting::ShadeLight<double>> one(&sc.lights[l], 1);
+        constexpr double kLit[] = {1.0}, kUnlit[] = {0.0};
         double v = 1.0;
-        if (lighting::lightArrival(sc.lights[l], s, sc.settings, &L, &attenuation))
+        if (lighting::shadeSurface<double>(s, one, sc.settings, kLit) !=
+            lighting::shadeSurface<double>(s, one, sc.settings, kUnlit))
             v = sc.tracer->visibility(p, n, sc.emitters[l], std::uint32_t(pixel * 977u + size_t(k) * 7919u));
         visibility[l] = v;
         m_out.visibility[pixel * size_t(m_out.casters) + size_t(k)] = visibilityCode(v);

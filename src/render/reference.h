@@ -57,7 +57,8 @@ struct ReferenceImage {
     std::vector<std::uint8_t> covered; // 1 where the G-buffer has a surface
     // Shadows, when the scene had casters (casters > 0):
     //   visibility  per pixel, per caster (pixel · casters + k, casters in rig order): 0 exactly unlit,
-    //               255 exactly lit, 1..254 partly (visibility · 255 rounded, kept off 0 and 255)
+    //               255 exactly lit, 1..254 partly (visibility · 255 rounded, kept off 0 and 255); 255
+    //               also where the caster's direct terms add nothing (not traced: it cannot matter)
     //   shadowClass per covered pixel: 0 not compared (the casters' direct light changes the 8-bit image
     //               by at most kShadowThresholdLevels there), 1 compared, 2 penumbra band (markShadowBand)
     int casters = 0;
