@@ -31,6 +31,7 @@ namespace lr {
 namespace {
 constexpr QSize kMinChartSize(360, 230);
 constexpr int kDifferenceGain = 16;
+constexpr int kShadowColumns = 9; // the first of the shadow measure's columns (columnNames)
 } // namespace
 
 QualityDock::QualityDock(QWidget* parent) : QDockWidget(tr("Quality"), parent) {
@@ -80,6 +81,7 @@ QualityDock::QualityDock(QWidget* parent) : QDockWidget(tr("Quality"), parent) {
         auto* header = new QTableWidgetItem(names[c]);
         header->setToolTip(tips[c]);
         m_table->setHorizontalHeaderItem(c, header);
+        m_table->setColumnHidden(c, c >= kShadowColumns); // until a report with shadow casters
     }
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
@@ -254,7 +256,9 @@ QStringList QualityDock::columnNames() {
             tr("Average error"),
             tr("Pixels visibly off"),
             tr("Similarity"),
-            tr("Broken pixels")};
+            tr("Broken pixels"),
+            tr("Shadow pixels off"),
+            tr("Shadow error")};
 }
 
 QStringList QualityDock::columnToolTips() {
@@ -276,6 +280,12 @@ QStringList QualityDock::columnToolTips() {
            "dB "
            "a difference is hard to see; ∞ means identical."),
         tr("Pixels whose lighting computed to NaN or infinity; should be 0."),
+        tr("Shown when some light casts a shadow. Share of the model's pixels, outside the soft edges of "
+           "the shadows, that are more than %1 colour levels off the reference whose shadows are traced "
+           "with rays: shadows where there are none, or none where there are.")
+            .arg(kShadowThresholdLevels),
+        tr("Shown when some light casts a shadow. The average difference from the ray-traced reference, "
+           "in 8-bit colour levels, over the same pixels."),
     };
 }
 
@@ -298,6 +308,9 @@ void QualityDock::showReport() {
                 ? (std::isfinite(e.psnrDb) ? tr("%1 dB").arg(number(e.psnrDb, 1)) : QStringLiteral("∞"))
                 : none,
             r.hasErrors ? QString::number(e.nonFinite) : none,
+            r.hasShadowErrors ? QStringLiteral("%1%").arg(number(100.0 * r.shadow.shareDiffering(), 2))
+                              : none,
+            r.hasShadowErrors ? number(r.shadow.meanLevels, 3) : none,
         };
         for (int c = 0; c < cells.size(); ++c) {
             auto* item = new QTableWidgetItem(cells[c]);
@@ -318,6 +331,9 @@ void QualityDock::showReport() {
                      r.gpuMsMedian >= 0.0 ? tr("; GPU time %1 ms").arg(number(r.gpuMsMedian, 2))
                                           : QString()));
     }
+    const bool shadows = benchHasShadows(m_report); // the shadow columns only for rigs with casters
+    for (int c = kShadowColumns; c < m_table->columnCount(); ++c)
+        m_table->setColumnHidden(c, !shadows);
     m_table->resizeColumnsToContents();
     m_differenceRow = -1; // a new report: the cached difference image is stale
     m_chartImage = benchChart(m_report);

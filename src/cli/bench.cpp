@@ -71,7 +71,10 @@ int runBench(const QStringList& args) {
         "frame, shader variants, and the error of the 8-bit output against a double-precision reference.\n"
         "Without MODEL: the standard suite (the bundled Suzanne with 1, 8, 64 and 256 procedural lights of "
         "each "
-        "type). Needs OpenGL 3.3: run it with a display, e.g. under xvfb-run -a.\n"
+        "type). With lights that cast shadows, the reference traces their visibility and two more columns "
+        "give each tier's shadow error: the share of pixels off the traced shadow outside the penumbra band "
+        "(shadow off) and their mean error (shadow err; docs/quality.md).\n"
+        "Needs OpenGL 3.3: run it with a display, e.g. under xvfb-run -a.\n"
         "Exit status: 0 measured, 1 bad model, rig or output path, 2 usage error."));
     parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
     const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},

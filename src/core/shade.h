@@ -100,10 +100,12 @@ bool lightArrival(const ShadeLight<T>& l, const Surface<T>& s, const ShadeSettin
     return *attenuation > T(0);
 }
 
-// Radiance one light adds at the surface (linear, HDR), classic models.
+// Radiance one light adds at the surface (linear, HDR), classic models. `visibility` (the fraction of
+// the emitter the surface sees, 0..1; the traced reference's shadows, reference.h) scales the direct
+// terms, never the light's ambient; at 1 the result is bit for bit what it was without it.
 template <typename T>
-Vec3<T> shadeLight(const ShadeLight<T>& l, const Surface<T>& s, const ShadeSettings<T>& st,
-                   const Vec3<T>& V) {
+Vec3<T> shadeLight(const ShadeLight<T>& l, const Surface<T>& s, const ShadeSettings<T>& st, const Vec3<T>& V,
+                   T visibility = T(1)) {
     const Vec3<T>& N = s.normal;
     if (l.type == LightType::Rim) return l.color * rimTerm(l.direction, N, V, l.rimExponent);
     Vec3<T> L;
@@ -115,16 +117,19 @@ Vec3<T> shadeLight(const ShadeLight<T>& l, const Surface<T>& s, const ShadeSetti
     if (nDotL > T(0))
         S = st.specular == SpecularModel::Phong ? specularPhong(N, L, V, s.shininess)
                                                 : specularBlinnPhong(N, L, V, s.shininess);
-    return attenuation * (l.color * s.albedo * D + l.specular * s.specular * S + l.ambient * s.albedo);
+    return attenuation *
+           (visibility * (l.color * s.albedo * D + l.specular * s.specular * S) + l.ambient * s.albedo);
 }
 
 // Radiance one light adds at the surface under physically based shading (docs/lighting-models.md):
 //   attenuation · (colour·intensity · diffuse lobe + Sc·intensity · specular lobe + Ac·intensity · c_diff/π);
 // the falloff, cone and diffuse models are the light's own (glTF lights: inverse-square with the range
-// window, smooth cone of exponent 2, Lambert). A rim light adds its classic term.
+// window, smooth cone of exponent 2, Lambert). A rim light adds its classic term. `visibility` as in
+// shadeLight.
 template <typename T>
 Vec3<T> shadeLightPbr(const ShadeLight<T>& l, const Surface<T>& s, const ShadeSettings<T>& st,
-                      const Vec3<T>& V, const Vec3<T>& cDiff, const Vec3<T>& f0, T alpha) {
+                      const Vec3<T>& V, const Vec3<T>& cDiff, const Vec3<T>& f0, T alpha,
+                      T visibility = T(1)) {
     const Vec3<T>& N = s.normal;
     if (l.type == LightType::Rim) return l.color * rimTerm(l.direction, N, V, l.rimExponent);
     Vec3<T> L;
@@ -133,13 +138,16 @@ Vec3<T> shadeLightPbr(const ShadeLight<T>& l, const Surface<T>& s, const ShadeSe
     const T nDotL = glm::dot(N, L);
     const T cosTerm = l.diffuse == DiffuseModel::Lambert ? diffuseLambert(nDotL) : diffuseHalfLambert(nDotL);
     const PbrLobes<T> f = pbrLobes(N, L, V, cDiff, f0, alpha, cosTerm);
-    return attenuation * (l.color * f.diffuse + l.specular * f.specular +
+    return attenuation * (visibility * (l.color * f.diffuse + l.specular * f.specular) +
                           l.ambient * cDiff * (saturate(s.occlusion) * T(1.0 / kPi)));
 }
 
-// Scene ambient + every light + emissive.
+// Scene ambient + every light + emissive. `visibility`: empty (every light unshadowed) or one value per
+// light, in the order of `lights` (shadeLight's visibility).
 template <typename T>
-Vec3<T> shadeSurface(const Surface<T>& s, std::span<const ShadeLight<T>> lights, const ShadeSettings<T>& st) {
+Vec3<T> shadeSurface(const Surface<T>& s, std::span<const ShadeLight<T>> lights, const ShadeSettings<T>& st,
+                     std::span<const T> visibility = {}) {
+    const auto visible = [&](size_t i) { return i < visibility.size() ? visibility[i] : T(1); };
     const Vec3<T> V = viewVector(st, s.position);
     if (st.model == ShadingModel::Pbr) {
         // The scene ambient is an irradiance (lux, as three.js's AmbientLight) on the diffuse lobe,
@@ -148,13 +156,13 @@ Vec3<T> shadeSurface(const Surface<T>& s, std::span<const ShadeLight<T>> lights,
         const Vec3<T> f0 = pbrF0(s.albedo, s.metallic);
         const T alpha = pbrAlpha(s.roughness);
         Vec3<T> sum = st.ambient * cDiff * (saturate(s.occlusion) * T(1.0 / kPi));
-        for (const ShadeLight<T>& l : lights)
-            sum += shadeLightPbr(l, s, st, V, cDiff, f0, alpha);
+        for (size_t i = 0; i < lights.size(); ++i)
+            sum += shadeLightPbr(lights[i], s, st, V, cDiff, f0, alpha, visible(i));
         return sum + s.emissive;
     }
     Vec3<T> sum = st.ambient * s.albedo;
-    for (const ShadeLight<T>& l : lights)
-        sum += shadeLight(l, s, st, V);
+    for (size_t i = 0; i < lights.size(); ++i)
+        sum += shadeLight(lights[i], s, st, V, visible(i));
     return sum + s.emissive;
 }
 

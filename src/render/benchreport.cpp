@@ -35,16 +35,23 @@ QColor tierColor(const BenchResult& r) {
 
 } // namespace
 
-QStringList benchTableHeaders() {
-    return {QStringLiteral("scene"),     QStringLiteral("lights"),   QStringLiteral("tier"),
-            QStringLiteral("ms med"),    QStringLiteral("min"),      QStringLiteral("max"),
-            QStringLiteral("cpu ms"),    QStringLiteral("gpu ms"),   QStringLiteral("×exact"),
-            QStringLiteral("cpu×"),      QStringLiteral("first ms"), QStringLiteral("variants"),
-            QStringLiteral("triangles"), QStringLiteral("max err"),  QStringLiteral("mean err"),
-            QStringLiteral("PSNR dB"),   QStringLiteral(">1 lvl"),   QStringLiteral("NaN/Inf")};
+QStringList benchTableHeaders(bool shadows) {
+    QStringList h{QStringLiteral("scene"),     QStringLiteral("lights"),   QStringLiteral("tier"),
+                  QStringLiteral("ms med"),    QStringLiteral("min"),      QStringLiteral("max"),
+                  QStringLiteral("cpu ms"),    QStringLiteral("gpu ms"),   QStringLiteral("×exact"),
+                  QStringLiteral("cpu×"),      QStringLiteral("first ms"), QStringLiteral("variants"),
+                  QStringLiteral("triangles"), QStringLiteral("max err"),  QStringLiteral("mean err"),
+                  QStringLiteral("PSNR dB"),   QStringLiteral(">1 lvl"),   QStringLiteral("NaN/Inf")};
+    if (shadows) h << QStringLiteral("shadow off") << QStringLiteral("shadow err");
+    return h;
 }
 
-QStringList benchTableRow(const BenchResult& r) {
+bool benchHasShadows(const BenchReport& report) {
+    return std::any_of(report.results.begin(), report.results.end(),
+                       [](const BenchResult& r) { return r.hasShadowErrors; });
+}
+
+QStringList benchTableRow(const BenchResult& r, bool shadows) {
     const QString none = QStringLiteral("–");
     QStringList row{r.scene,
                     QStringLiteral("%1/%2").arg(r.lightsUploaded).arg(r.lightsInRig),
@@ -67,13 +74,19 @@ QStringList benchTableRow(const BenchResult& r) {
     } else {
         row << none << none << none << none << none;
     }
+    if (shadows && r.hasShadowErrors)
+        row << QStringLiteral("%1%").arg(num(100.0 * r.shadow.shareDiffering(), 2))
+            << num(r.shadow.meanLevels, 3);
+    else if (shadows)
+        row << none << none;
     return row;
 }
 
 QString benchTable(const BenchReport& report) {
-    QList<QStringList> rows{benchTableHeaders()};
+    const bool shadows = benchHasShadows(report);
+    QList<QStringList> rows{benchTableHeaders(shadows)};
     for (const BenchResult& r : report.results)
-        rows << benchTableRow(r);
+        rows << benchTableRow(r, shadows);
     const int columns = int(rows.first().size());
     std::vector<int> width(size_t(columns), 0);
     for (const QStringList& row : rows)
@@ -157,6 +170,12 @@ QJsonObject benchJson(const BenchReport& report) {
                  r.hasErrors ? QJsonValue(double(e.nonFinite)) : QJsonValue());
         o.insert(QStringLiteral("compared_pixels"),
                  r.hasErrors ? QJsonValue(double(e.pixels)) : QJsonValue());
+        if (r.hasShadowErrors) {
+            o.insert(QStringLiteral("shadow_differing_share"), r.shadow.shareDiffering());
+            o.insert(QStringLiteral("shadow_mean_error_levels"), r.shadow.meanLevels);
+            o.insert(QStringLiteral("shadow_compared_pixels"), double(r.shadow.compared));
+            o.insert(QStringLiteral("shadow_band_pixels"), double(r.shadow.band));
+        }
         results.append(o);
     }
     QJsonArray uber;
@@ -175,7 +194,7 @@ QJsonObject benchJson(const BenchReport& report) {
     for (Quality q : report.options.tiers)
         tiers.append(toString(q));
     const BenchOptions& op = report.options;
-    return QJsonObject{
+    QJsonObject doc{
         {QStringLiteral("tool"), QStringLiteral("lightrig bench")},
         {QStringLiteral("gl"), report.glDescription},
         {QStringLiteral("load_average"), report.loadAverage},
@@ -191,6 +210,14 @@ QJsonObject benchJson(const BenchReport& report) {
         {QStringLiteral("reference_ms"), round3(report.referenceMs)},
         {QStringLiteral("results"), results},
         {QStringLiteral("uber_shader"), uber}};
+    if (benchHasShadows(report))
+        doc.insert(QStringLiteral("shadow_measure"),
+                   QJsonObject{{QStringLiteral("threshold_levels"), kShadowThresholdLevels},
+                               {QStringLiteral("band_radius_pixels"), kShadowBandRadius},
+                               {QStringLiteral("rays"), kShadowSamples},
+                               {QStringLiteral("probe_rays"), kShadowProbeSamples},
+                               {QStringLiteral("ray_epsilon_model_radii"), kShadowRayEpsilon}});
+    return doc;
 }
 
 QImage benchChart(const BenchReport& report, QSize size) {

@@ -12,8 +12,10 @@
 namespace lr {
 
 // Column headers and one row of cells per result, as the table shows them (the Quality panel's model).
-QStringList benchTableHeaders();
-QStringList benchTableRow(const BenchResult& r);
+// `shadows` adds the shadow measure's two columns (benchHasShadows: only rigs with casters have them).
+QStringList benchTableHeaders(bool shadows = false);
+QStringList benchTableRow(const BenchResult& r, bool shadows = false);
+bool benchHasShadows(const BenchReport& report);
 
 // The aligned text table, one line per result, followed by the über-shader comparison when present.
 QString benchTable(const BenchReport& report);
@@ -21,7 +23,9 @@ QString benchTable(const BenchReport& report);
 // {"tool", "gl", "options", "results": [...], "uber_shader": [...]}. Per result the keys scene, lights,
 // quality, width, height, ms_median, ms_min, ms_max, first_frame_ms, max_error_levels, mean_error_levels,
 // psnr_db, nonfinite_pixels and more (docs/quality.md lists them). psnr_db is null for an image identical
-// to the reference (infinite PSNR); error keys are null when errors were not measured.
+// to the reference (infinite PSNR); error keys are null when errors were not measured. Results with the
+// shadow measure also carry shadow_differing_share, shadow_mean_error_levels, shadow_compared_pixels and
+// shadow_band_pixels.
 QJsonObject benchJson(const BenchReport& report);
 
 // The über-shader comparison per scene: specialised exact run against the über-shader run.

@@ -57,7 +57,10 @@ bool computeSceneReference(const BenchScene& scene, const BenchOptions& o, Progr
     GBuffer g;
     if (!gl.renderGBuffer(scene.camera, o.size, settings, &g, error)) return false;
     const glm::dmat4 view = gl.renderer().effectiveCamera(scene.camera).view();
-    ReferenceJob job(std::move(g), makeReferenceScene(scene.rig, gl.renderer().sceneFrame(), view, settings));
+    std::optional<ReferenceScene> referenceScene =
+        makeReferenceScene(*scene.model, scene.rig, gl.renderer().sceneFrame(), view, settings, error);
+    if (!referenceScene) return false;
+    ReferenceJob job(std::move(g), std::move(*referenceScene));
     QFuture<void> future = job.start();
     const QString what = QStringLiteral("%1: double-precision reference").arg(scene.name);
     while (!future.isFinished()) {
@@ -70,6 +73,7 @@ bool computeSceneReference(const BenchScene& scene, const BenchOptions& o, Progr
         }
         QThread::msleep(progress.fn ? 15 : 2);
     }
+    job.finish();
     *out = job.result();
     return true;
 }
@@ -142,6 +146,8 @@ bool measure(const BenchScene& scene, const BenchOptions& o, Quality q, bool ube
         FloatImage radiance;
         if (!gl.renderRadiance(scene.camera, o.size, single, &radiance, error)) return false;
         r->errors = compareWithReference(image, *reference);
+        r->hasShadowErrors = reference->casters > 0;
+        if (r->hasShadowErrors) r->shadow = compareShadows(image, *reference);
         if (o.keepImages) {
             r->image = image.convertToFormat(QImage::Format_RGBA8888);
             r->reference = reference->srgb;

@@ -10,7 +10,9 @@
 // - timings use the tier's own settings (MSAA 4 for exact and balanced, none for fast);
 // - errors are measured on a single-sample render of the tier (MSAA only changes silhouette pixels, which
 //   the single-sample G-buffer reference cannot represent), over the pixels the model covers;
-// - NaN/Inf pixels are counted in the tier's float radiance (RGBA32F) read back from the same view.
+// - NaN/Inf pixels are counted in the tier's float radiance (RGBA32F) read back from the same view;
+// - with shadow casters in the rig, the same single-sample image also gets the shadow measure
+//   (compareShadows: share of pixels off the traced visibility outside the penumbra band, mean error).
 //
 // Runs on the calling (GUI) thread; the reference evaluation uses the global thread pool meanwhile.
 #pragma once
@@ -21,6 +23,7 @@
 #include "model/model.h"
 #include "render/approximations.h"
 #include "render/camera.h"
+#include "render/reference.h"
 
 #include <QImage>
 #include <QSize>
@@ -77,7 +80,10 @@ struct BenchResult {
     double firstDrawMs = 0.0; // upload + compile + draw + glFinish in a fresh context
     double uploadMs = 0.0;    // of which the model upload (buffers, textures and their mipmaps)
     bool hasErrors = false;
-    ErrorFigures errors;     // against the double reference (nonFinite from the float radiance)
+    ErrorFigures errors; // against the double reference (nonFinite from the float radiance)
+    // With errors, when the rig has shadow casters: the shadow measure (reference.h, compareShadows).
+    bool hasShadowErrors = false;
+    ShadowFigures shadow;
     double speedUp = 0.0;    // exact's ms_median / this ms_median for the same scene (0: no exact run)
     double cpuSpeedUp = 0.0; // the same ratio of cpu_ms_median (steadier on a shared machine)
     // BenchOptions::keepImages: the single-sample 8-bit image the errors were measured on, and the

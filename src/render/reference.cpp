@@ -7,12 +7,38 @@
 #include <QtConcurrent/QtConcurrentMap>
 #include <algorithm>
 #include <cmath>
+#include <glm/matrix.hpp>
 #include <numeric>
 
 namespace lr {
 
-ReferenceScene makeReferenceScene(const Rig& rig, const SceneFrame& frame, const glm::dmat4& view,
-                                  const RenderSettings& settings) {
+namespace {
+
+// A caster's visibility as stored in ReferenceImage::visibility: 0 and 255 only when exact.
+std::uint8_t visibilityCode(double v) {
+    if (!(v > 0.0)) return 0;
+    if (v >= 1.0) return 255;
+    return std::uint8_t(std::clamp(std::lround(v * 255.0), 1L, 254L));
+}
+
+int largestChannelDifference(const glm::dvec3& a, const glm::dvec3& b, double exposureEV, ToneMap op) {
+    const glm::dvec3 ea = encodeSrgb(a, exposureEV, op), eb = encodeSrgb(b, exposureEV, op);
+    int d = 0;
+    for (int c = 0; c < 3; ++c)
+        d = std::max(d, std::abs(int(toLevel(ea[c])) - int(toLevel(eb[c]))));
+    return d;
+}
+
+} // namespace
+
+int ReferenceScene::casters() const {
+    return int(
+        std::count_if(emitters.begin(), emitters.end(), [](const ShadowEmitter& e) { return e.casts; }));
+}
+
+std::optional<ReferenceScene> makeReferenceScene(const Model& model, const Rig& rig, const SceneFrame& frame,
+                                                 const glm::dmat4& view, const RenderSettings& settings,
+                                                 QString* error) {
     ReferenceScene s;
     s.lights = prepareLights(rig, frame, view);
     s.settings = prepareSettings(rig, frame);
@@ -20,6 +46,17 @@ ReferenceScene makeReferenceScene(const Rig& rig, const SceneFrame& frame, const
     s.toneMap = settings.toneMap;
     const QColor bg = settings.background.toRgb();
     s.background = colour::srgbToLinear(glm::dvec3(bg.redF(), bg.greenF(), bg.blueF()));
+    for (const Light& l : rig.lights) // the lights prepareLights() kept, in its order
+        if (l.enabled) s.emitters.push_back(shadowEmitter(rig, frame, l));
+    s.viewToWorld = glm::inverse(view);
+    if (s.casters() > 0) {
+        auto tracer = std::make_shared<const ShadowTracer>(model, rig.ground.mode != GroundMode::Off);
+        if (!tracer->ok()) {
+            if (error) *error = tracer->error();
+            return std::nullopt;
+        }
+        s.tracer = std::move(tracer);
+    }
     return s;
 }
 
@@ -39,12 +76,26 @@ ReferenceJob::ReferenceJob(GBuffer gbuffer, ReferenceScene scene)
     m_out.radiance.assign(size_t(w) * size_t(h), glm::dvec3(0.0));
     m_out.covered.assign(size_t(w) * size_t(h), 0);
     m_out.srgb = QImage(w, h, QImage::Format_RGBA8888);
+    // Traced only with a tracer and one emitter per light (makeReferenceScene's pairing).
+    m_out.casters =
+        m_scene.tracer && m_scene.emitters.size() == m_scene.lights.size() ? m_scene.casters() : 0;
+    if (m_out.casters > 0) {
+        m_out.visibility.assign(size_t(w) * size_t(h) * size_t(m_out.casters), 255);
+        m_out.shadowClass.assign(size_t(w) * size_t(h), 0);
+    }
     m_rowIndices.resize(size_t(h));
     std::iota(m_rowIndices.begin(), m_rowIndices.end(), 0);
 }
 
 QFuture<void> ReferenceJob::start() {
+    m_finished = false;
     return QtConcurrent::map(m_rowIndices, [this](int y) { evaluateRow(y); });
+}
+
+void ReferenceJob::finish() {
+    if (m_finished) return;
+    markShadowBand(&m_out);
+    m_finished = true;
 }
 
 void ReferenceJob::evaluateRow(int y) {
@@ -52,6 +103,11 @@ void ReferenceJob::evaluateRow(int y) {
     const GBuffer& g = m_gbuffer;
     const ReferenceScene& sc = m_scene;
     const glm::dvec3 bg = encodeSrgb(sc.background, 0.0, ToneMap::Clamp);
+    const int casters = m_out.casters;
+    std::vector<double> visibility(sc.lights.size(), 1.0), dark(sc.lights.size(), 1.0);
+    for (size_t k = 0; k < sc.lights.size(); ++k)
+        if (casters > 0 && sc.emitters[k].casts) dark[k] = 0.0;
+    const glm::dvec3 eye(sc.viewToWorld[3]);
     std::uint8_t* row = m_out.srgb.scanLine(y);
     for (int x = 0; x < m_out.width; ++x) {
         const size_t i = size_t(y) * size_t(m_out.width) + size_t(x);
@@ -63,7 +119,16 @@ void ReferenceJob::evaluateRow(int y) {
             continue;
         }
         const lighting::Surface<double> s = render::surfaceAt(g, x, y);
-        const V radiance = lighting::shadeSurface<double>(s, sc.lights, sc.settings);
+        if (casters > 0) tracePixel(s, i, eye, visibility);
+        const V radiance = lighting::shadeSurface<double>(s, sc.lights, sc.settings, visibility);
+        if (casters > 0) {
+            // Whether the casters' direct light shows here at all: the image with all of it and with none.
+            const V lit = lighting::shadeSurface<double>(s, sc.lights, sc.settings);
+            const V unlit = lighting::shadeSurface<double>(s, sc.lights, sc.settings, dark);
+            m_out.shadowClass[i] =
+                largestChannelDifference(lit, unlit, sc.exposureEV, sc.toneMap) > kShadowThresholdLevels ? 1
+                                                                                                         : 0;
+        }
         m_out.radiance[i] = radiance;
         m_out.covered[i] = 1;
         const V encoded = encodeSrgb(radiance, sc.exposureEV, sc.toneMap);
@@ -72,10 +137,98 @@ void ReferenceJob::evaluateRow(int y) {
     }
 }
 
+void ReferenceJob::tracePixel(const lighting::Surface<double>& s, size_t pixel, const glm::dvec3& eye,
+                              std::vector<double>& visibility) {
+    const ReferenceScene& sc = m_scene;
+    const glm::dvec3 p(sc.viewToWorld * glm::dvec4(s.position, 1.0));
+    const glm::dvec3 shadingNormal =
+        lighting::safeNormalize(glm::dvec3(sc.viewToWorld * glm::dvec4(s.normal, 0.0)), glm::dvec3(0, 1, 0));
+    const glm::dvec3 n = sc.tracer->geometricNormal(eye, p, shadingNormal);
+    int k = 0;
+    for (size_t l = 0; l < sc.lights.size(); ++l) {
+        if (!sc.emitters[l].casts) continue;
+        // Where the light's direct terms add nothing (outside its cone or range, facing away from it
+        // without a wrapped diffuse) visibility cannot matter: nothing is traced, it is 1.
+        const std::span<const lighting::ShadeLight<double>> one(&sc.lights[l], 1);
+        constexpr double kLit[] = {1.0}, kUnlit[] = {0.0};
+        double v = 1.0;
+        if (lighting::shadeSurface<double>(s, one, sc.settings, kLit) !=
+            lighting::shadeSurface<double>(s, one, sc.settings, kUnlit))
+            v = sc.tracer->visibility(p, n, sc.emitters[l], std::uint32_t(pixel * 977u + size_t(k) * 7919u));
+        visibility[l] = v;
+        m_out.visibility[pixel * size_t(m_out.casters) + size_t(k)] = visibilityCode(v);
+        ++k;
+    }
+}
+
 ReferenceImage computeReference(const GBuffer& gbuffer, const ReferenceScene& scene) {
     ReferenceJob job(gbuffer, scene);
     job.start().waitForFinished();
+    job.finish();
     return job.result();
+}
+
+void markShadowBand(ReferenceImage* r) {
+    const int w = r->width, h = r->height, nc = r->casters;
+    if (nc <= 0 || r->isNull()) return;
+    const size_t n = size_t(w) * size_t(h);
+    // Per caster: the smallest and largest code of the covered pixels within the band radius (separable:
+    // rows, then columns of the row results).
+    std::vector<std::uint8_t> rowLo(n), rowHi(n);
+    constexpr int R = kShadowBandRadius;
+    for (int k = 0; k < nc; ++k) {
+        const auto code = [&](size_t i) { return r->visibility[i * size_t(nc) + size_t(k)]; };
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                std::uint8_t lo = 255, hi = 0;
+                for (int xx = std::max(0, x - R); xx <= std::min(w - 1, x + R); ++xx) {
+                    const size_t j = size_t(y) * size_t(w) + size_t(xx);
+                    if (!r->covered[j]) continue;
+                    lo = std::min(lo, code(j)), hi = std::max(hi, code(j));
+                }
+                rowLo[size_t(y) * size_t(w) + size_t(x)] = lo, rowHi[size_t(y) * size_t(w) + size_t(x)] = hi;
+            }
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const size_t i = size_t(y) * size_t(w) + size_t(x);
+                if (!r->covered[i]) continue;
+                std::uint8_t lo = 255, hi = 0;
+                for (int yy = std::max(0, y - R); yy <= std::min(h - 1, y + R); ++yy) {
+                    const size_t j = size_t(yy) * size_t(w) + size_t(x);
+                    lo = std::min(lo, rowLo[j]), hi = std::max(hi, rowHi[j]);
+                }
+                const std::uint8_t v = code(i);
+                if ((v > 0 && v < 255) || lo < hi) r->shadowClass[i] = 2;
+            }
+    }
+}
+
+ShadowFigures compareShadows(const QImage& frame, const ReferenceImage& reference) {
+    ShadowFigures f;
+    if (reference.casters <= 0 || reference.isNull() ||
+        frame.size() != QSize(reference.width, reference.height))
+        return f;
+    const QImage a =
+        frame.format() == QImage::Format_RGBA8888 ? frame : frame.convertToFormat(QImage::Format_RGBA8888);
+    const std::uint8_t* pa = a.constBits();
+    const std::uint8_t* pb = reference.srgb.constBits();
+    double sum = 0.0;
+    const size_t n = size_t(reference.width) * size_t(reference.height);
+    for (size_t i = 0; i < n; ++i) {
+        if (!reference.covered[i]) continue;
+        if (reference.shadowClass[i] == 2) ++f.band;
+        if (reference.shadowClass[i] != 1) continue;
+        int largest = 0;
+        for (int c = 0; c < 3; ++c) {
+            const int d = std::abs(int(pa[4 * i + size_t(c)]) - int(pb[4 * i + size_t(c)]));
+            sum += d;
+            largest = std::max(largest, d);
+        }
+        ++f.compared;
+        if (largest > kShadowThresholdLevels) ++f.differing;
+    }
+    f.meanLevels = f.compared > 0 ? sum / (3.0 * double(f.compared)) : 0.0;
+    return f;
 }
 
 ErrorFigures compareWithReference(const QImage& frame, const ReferenceImage& reference) {

@@ -5,11 +5,17 @@
 // (imagecompare.h); docs/quality.md describes the method.
 //
 // The per-pixel evaluation runs on a thread pool (QtConcurrent, one task per row) and can be cancelled.
+//
+// Shadows (issue 14): when the rig has lights with hasShadow(), each such light's direct contribution
+// (not its ambient) is multiplied by its traced visibility (referencetrace.h): shadow rays against the
+// model's triangles and the ground's. The reference keeps each caster's visibility per pixel, and the
+// shadow error measure (compareShadows) compares a tier's image with it outside the penumbra band.
 #pragma once
 
 #include "core/imagecompare.h"
 #include "core/prepare.h"
 #include "floatimage.h"
+#include "referencetrace.h"
 #include "renderer.h"
 
 #include <QFuture>
@@ -17,6 +23,7 @@
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace lr {
@@ -28,19 +35,56 @@ struct ReferenceScene {
     double exposureEV = 0.0;
     ToneMap toneMap = ToneMap::Clamp;
     glm::dvec3 background{0.0}; // linear; uncovered pixels
+    // Shadows: one emitter per entry of `lights` (casts = false for lights without a shadow) and the
+    // tracer, null when no light casts. viewToWorld maps the G-buffer's view-space positions to world.
+    std::vector<ShadowEmitter> emitters;
+    std::shared_ptr<const ShadowTracer> tracer;
+    glm::dmat4 viewToWorld{1.0};
+    int casters() const;
 };
 
-// The reference scene of `rig` seen through `view` (the renderer's effective camera view matrix).
-ReferenceScene makeReferenceScene(const Rig& rig, const SceneFrame& frame, const glm::dmat4& view,
-                                  const RenderSettings& settings);
+// The reference scene of `rig` on `model` seen through `view` (the renderer's effective camera view
+// matrix). With shadow casters in the rig it builds the tracer's scene (the model's triangles, and the
+// ground's when rig.ground.mode != Off); null, with *error set, when Embree fails.
+std::optional<ReferenceScene> makeReferenceScene(const Model& model, const Rig& rig, const SceneFrame& frame,
+                                                 const glm::dmat4& view, const RenderSettings& settings,
+                                                 QString* error = nullptr);
 
 struct ReferenceImage {
     int width = 0, height = 0;
     std::vector<glm::dvec3> radiance;  // linear HDR before exposure, top row first; 0 where uncovered
     QImage srgb;                       // Format_RGBA8888, alpha 255: what the renderer should output
     std::vector<std::uint8_t> covered; // 1 where the G-buffer has a surface
+    // Shadows, when the scene had casters (casters > 0):
+    //   visibility  per pixel, per caster (pixel · casters + k, casters in rig order): 0 exactly unlit,
+    //               255 exactly lit, 1..254 partly (visibility · 255 rounded, kept off 0 and 255); 255
+    //               also where the caster's direct terms add nothing (not traced: it cannot matter)
+    //   shadowClass per covered pixel: 0 not compared (the casters' direct light changes the 8-bit image
+    //               by at most kShadowThresholdLevels there), 1 compared, 2 penumbra band (markShadowBand)
+    int casters = 0;
+    std::vector<std::uint8_t> visibility;
+    std::vector<std::uint8_t> shadowClass;
     bool isNull() const { return width <= 0 || height <= 0; }
 };
+
+// A pixel outside the penumbra band "differs" when some channel is more than this many 8-bit levels off
+// the reference; the casters' light "matters" at a pixel when removing it changes some channel by more.
+inline constexpr int kShadowThresholdLevels = 8;
+// The band: pixels where some caster's visibility is partial, or changes within this many pixels.
+inline constexpr int kShadowBandRadius = 2;
+
+// Sets shadowClass to 2 on the penumbra band. ReferenceJob::finish() and computeReference() call it.
+void markShadowBand(ReferenceImage* reference);
+
+// The shadow error of a tier's 8-bit frame (any format; RGBA8888 compared) against the reference.
+struct ShadowFigures {
+    std::int64_t compared = 0;  // covered pixels outside the band where the casters' light matters
+    std::int64_t differing = 0; // of those, more than kShadowThresholdLevels off in some channel
+    double meanLevels = 0.0;    // mean |a − b| over the compared pixels × 3 channels
+    std::int64_t band = 0;      // covered pixels in the penumbra band (not compared)
+    double shareDiffering() const { return compared > 0 ? double(differing) / double(compared) : 0.0; }
+};
+ShadowFigures compareShadows(const QImage& frame, const ReferenceImage& reference);
 
 // The tone-map pass on one radiance, in double: ×2^EV (EV clamped to ±60), tone map, sRGB, 0..255.
 glm::dvec3 encodeSrgb(const glm::dvec3& radiance, double exposureEV, ToneMap op); // in [0, 1]
@@ -52,16 +96,23 @@ class ReferenceJob {
   public:
     ReferenceJob(GBuffer gbuffer, ReferenceScene scene);
     QFuture<void> start();
+    // After the future finished (not cancelled): completes the shadow band. Idempotent.
+    void finish();
     const ReferenceImage& result() const { return m_out; }
     int rows() const { return m_out.height; }
 
   private:
     void evaluateRow(int y);
+    // Each caster's visibility at one pixel (into `visibility`, indexed like the scene's lights, and the
+    // image's codes).
+    void tracePixel(const lighting::Surface<double>& s, size_t pixel, const glm::dvec3& eye,
+                    std::vector<double>& visibility);
 
     GBuffer m_gbuffer;
     ReferenceScene m_scene;
     ReferenceImage m_out;
     std::vector<int> m_rowIndices;
+    bool m_finished = false;
 };
 
 // Blocking convenience (tests): the whole reference on the thread pool.

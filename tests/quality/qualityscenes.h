@@ -68,7 +68,7 @@ inline TierFrame renderTier(OffscreenRenderer& gl, std::shared_ptr<Model> model,
     TierFrame f;
     settings.msaaSamples = 0;
     settings.quality = quality;
-    if (!gl.setModel(std::move(model), &f.error)) return f;
+    if (!gl.setModel(model, &f.error)) return f;
     gl.setRig(rig);
     FloatImage radiance;
     GBuffer g;
@@ -82,7 +82,9 @@ inline TierFrame renderTier(OffscreenRenderer& gl, std::shared_ptr<Model> model,
     const glm::dmat4 view = gl.renderer().effectiveCamera(camera).view();
     const SceneFrame frame = gl.renderer().sceneFrame();
     f.linear = compareWithReference(radiance, g, rig, frame, view, tolerance);
-    const ReferenceImage reference = computeReference(g, makeReferenceScene(rig, frame, view, settings));
+    const auto scene = makeReferenceScene(*model, rig, frame, view, settings, &f.error);
+    if (!scene) return f;
+    const ReferenceImage reference = computeReference(g, *scene);
     f.levels = lr::compareWithReference(image, reference);
     f.levels.nonFinite = countNonFinite(&radiance.pixels.data()->x, std::int64_t(radiance.pixels.size()), 4);
     return f;

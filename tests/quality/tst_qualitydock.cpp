@@ -116,6 +116,32 @@ class TestQualityDock : public QObject {
         }
     }
 
+    // The shadow measure's two columns show only for a rig with casting lights (issue 14).
+    void shadowColumnsOnlyWithCasters() {
+        for (bool shadows : {false, true}) {
+            QualityDock dock;
+            dock.setFrames(2);
+            dock.setSceneProvider([shadows](QString*) {
+                QualityRequest r = sphereRequest();
+                for (Light& l : r.scene.rig.lights)
+                    l.shadow.enabled = shadows;
+                return std::optional<QualityRequest>(r);
+            });
+            QSignalSpy finished(&dock, &QualityDock::finished);
+            dock.measure();
+            QVERIFY2(finished.count() == 1 && finished.first().at(0).toBool(),
+                     qPrintable(finished.first().at(1).toString()));
+            auto* table = dock.findChild<QTableWidget*>();
+            const QStringList names = QualityDock::columnNames();
+            const int first = int(names.indexOf(QStringLiteral("Shadow pixels off")));
+            QVERIFY(first > 0 && names.indexOf(QStringLiteral("Shadow error")) == first + 1);
+            for (int c : {first, first + 1})
+                QCOMPARE(table->isColumnHidden(c), !shadows);
+            QCOMPARE(table->item(0, first)->text().endsWith(QLatin1Char('%')), shadows);
+            QVERIFY(!table->isColumnHidden(first - 1)); // the columns before stay
+        }
+    }
+
     void differenceImage_blackWhereEqual_brightWhereNot() {
         QImage a(4, 2, QImage::Format_RGBA8888);
         a.fill(QColor(100, 100, 100));

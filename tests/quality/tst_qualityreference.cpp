@@ -192,7 +192,8 @@ class TestQualityReference : public QObject {
     void detectsAKnownDifference() {
         const Rig rig = mixedRig();
         QString error;
-        QVERIFY(m_gl.setModel(sphereScene(), &error));
+        const auto model = sphereScene();
+        QVERIFY(m_gl.setModel(model, &error));
         m_gl.setRig(rig);
         RenderSettings s;
         s.msaaSamples = 0;
@@ -200,8 +201,9 @@ class TestQualityReference : public QObject {
         GBuffer g;
         QVERIFY2(m_gl.renderGBuffer(sphereCamera(), kSize, s, &g, &error), qPrintable(error));
         const glm::dmat4 view = m_gl.renderer().effectiveCamera(sphereCamera()).view();
-        const ReferenceImage ref =
-            computeReference(g, makeReferenceScene(rig, m_gl.renderer().sceneFrame(), view, s));
+        const auto scene = makeReferenceScene(*model, rig, m_gl.renderer().sceneFrame(), view, s, &error);
+        QVERIFY2(scene, qPrintable(error));
+        const ReferenceImage ref = computeReference(g, *scene);
         const QImage same = m_gl.renderImage(sphereCamera(), kSize, s, 1, &error);
         s.exposureEV = 0.5;
         const QImage brighter = m_gl.renderImage(sphereCamera(), kSize, s, 1, &error);

@@ -1,0 +1,239 @@
+#include "referencetrace.h"
+
+#include "core/lighting.h"
+#include "model/ground.h"
+
+#include <algorithm>
+#include <cmath>
+#include <embree3/rtcore.h>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+#include <limits>
+#include <numbers>
+
+namespace lr {
+
+namespace {
+
+RTCDevice device(void* p) {
+    return static_cast<RTCDevice>(p);
+}
+RTCScene scene(void* p) {
+    return static_cast<RTCScene>(p);
+}
+
+// PCG hash (Jarzynski & Olano 2020): a well-mixed 32-bit value from a 32-bit state.
+std::uint32_t pcgHash(std::uint32_t v) {
+    const std::uint32_t state = v * 747796405u + 2891336453u;
+    const std::uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+    return (word >> 22u) ^ word;
+}
+
+double uniform01(std::uint32_t* state) {
+    *state = pcgHash(*state);
+    return double(*state >> 8) * (1.0 / 16777216.0); // [0, 1)
+}
+
+// Shirley and Chiu's concentric map from the unit square to the unit disk: equal-area, so stratified
+// squares become stratified disk areas.
+glm::dvec2 concentricDisk(double u, double v) {
+    const double a = 2.0 * u - 1.0, b = 2.0 * v - 1.0;
+    if (a == 0.0 && b == 0.0) return glm::dvec2(0.0);
+    constexpr double quarterPi = std::numbers::pi / 4.0;
+    const double r = std::abs(a) > std::abs(b) ? a : b;
+    const double phi =
+        std::abs(a) > std::abs(b) ? quarterPi * (b / a) : 2.0 * quarterPi - quarterPi * (a / b);
+    return r * glm::dvec2(std::cos(phi), std::sin(phi));
+}
+
+// Two unit vectors completing unit `w` to an orthonormal basis.
+void basisAround(const glm::dvec3& w, glm::dvec3* t, glm::dvec3* b) {
+    const glm::dvec3 helper = std::abs(w.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+    *t = glm::normalize(glm::cross(helper, w)); // |cross| >= sqrt(1 - 0.81): never normalize(0)
+    *b = glm::cross(w, *t);
+}
+
+} // namespace
+
+ShadowEmitter shadowEmitter(const Rig& rig, const SceneFrame& frame, const Light& light) {
+    ShadowEmitter e;
+    e.casts = light.hasShadow();
+    e.directional = !light.usesPosition();
+    const double toWorld = 1.0 / distanceScale(rig, frame); // rig units -> world units, as positions
+    if (e.directional) {
+        e.toLight = -lighting::safeNormalize(light.direction, glm::dvec3(0.0, -1.0, 0.0));
+        const double angle = std::isfinite(light.shadow.angle) ? std::max(0.0, light.shadow.angle) : 0.0;
+        e.halfAngle = 0.5 * glm::radians(std::min(angle, 180.0));
+    } else {
+        e.position = rigToWorld(rig, frame, light.position);
+        const double size = std::isfinite(light.shadow.size) ? std::max(0.0, light.shadow.size) : 0.0;
+        e.radius = 0.5 * size * toWorld;
+    }
+    return e;
+}
+
+ShadowTracer::ShadowTracer(const Model& model, bool ground) {
+    m_origin = model.bounds.center();
+    m_epsilon = kShadowRayEpsilon * model.bounds.radius();
+    RTCDevice dev = rtcNewDevice(nullptr);
+    if (!dev) {
+        m_error = QStringLiteral("Embree could not start (rtcNewDevice failed)");
+        return;
+    }
+    m_device = dev;
+    std::vector<glm::vec3> vertices;
+    std::vector<std::uint32_t> indices;
+    for (const Mesh& mesh : model.meshes) {
+        const auto base = std::uint32_t(vertices.size());
+        for (const Vertex& v : mesh.vertices)
+            vertices.push_back(glm::vec3(model.origin - m_origin + glm::dvec3(v.position)));
+        for (std::uint32_t i : mesh.indices)
+            indices.push_back(base + i);
+    }
+    if (ground) {
+        const GroundPlane g = groundPlane(model.bounds);
+        const auto base = std::uint32_t(vertices.size());
+        for (const glm::dvec3& c : g.corners)
+            vertices.push_back(glm::vec3(c - m_origin));
+        indices.insert(indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+    }
+    m_triangles = std::int64_t(indices.size() / 3);
+    RTCScene sc = rtcNewScene(dev);
+    rtcSetSceneFlags(sc, RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneBuildQuality(sc, RTC_BUILD_QUALITY_HIGH);
+    if (m_triangles > 0) {
+        RTCGeometry geom = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_TRIANGLE);
+        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
+            geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), vertices.size()));
+        auto* ix = static_cast<std::uint32_t*>(
+            rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                    3 * sizeof(std::uint32_t), size_t(m_triangles)));
+        if (v && ix) {
+            for (size_t i = 0; i < vertices.size(); ++i)
+                std::copy_n(&vertices[i].x, 3, v + 3 * i);
+            std::copy(indices.begin(), indices.end(), ix);
+            rtcCommitGeometry(geom);
+            rtcAttachGeometry(sc, geom);
+        }
+        rtcReleaseGeometry(geom);
+    }
+    rtcCommitScene(sc);
+    if (const RTCError e = rtcGetDeviceError(dev); e != RTC_ERROR_NONE) {
+        m_error = QStringLiteral("Embree could not build the shadow-ray scene (error %1, %2 triangles)")
+                      .arg(int(e))
+                      .arg(m_triangles);
+        rtcReleaseScene(sc);
+        return;
+    }
+    m_scene = sc;
+}
+
+ShadowTracer::~ShadowTracer() {
+    if (m_scene) rtcReleaseScene(scene(m_scene));
+    if (m_device) rtcReleaseDevice(device(m_device));
+}
+
+bool ShadowTracer::occluded(const glm::dvec3& origin, const glm::dvec3& dir, double distance) const {
+    if (!m_scene) return false;
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRay ray{};
+    const glm::vec3 o(origin - m_origin);
+    ray.org_x = o.x, ray.org_y = o.y, ray.org_z = o.z;
+    ray.dir_x = float(dir.x), ray.dir_y = float(dir.y), ray.dir_z = float(dir.z);
+    ray.tnear = 0.0f;
+    ray.tfar = distance < double(std::numeric_limits<float>::max()) ? float(distance)
+                                                                    : std::numeric_limits<float>::infinity();
+    ray.mask = ~0u;
+    rtcOccluded1(scene(m_scene), &context, &ray);
+    return ray.tfar < 0.0f; // Embree sets tfar to -inf on a hit
+}
+
+glm::dvec3 ShadowTracer::geometricNormal(const glm::dvec3& eye, const glm::dvec3& point,
+                                         const glm::dvec3& fallback) const {
+    const glm::dvec3 toPoint = point - eye;
+    const double len = glm::length(toPoint);
+    if (!m_scene || !(len > 0.0) || !std::isfinite(len)) return fallback;
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rh{};
+    const glm::vec3 o(eye - m_origin);
+    const glm::dvec3 d = toPoint / len;
+    rh.ray.org_x = o.x, rh.ray.org_y = o.y, rh.ray.org_z = o.z;
+    rh.ray.dir_x = float(d.x), rh.ray.dir_y = float(d.y), rh.ray.dir_z = float(d.z);
+    const double slack = std::max(1e-3 * len, 10.0 * m_epsilon); // the G-buffer's float position
+    rh.ray.tnear = float(std::max(0.0, len - slack));
+    rh.ray.tfar = float(len + slack);
+    rh.ray.mask = ~0u;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(scene(m_scene), &context, &rh);
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return fallback;
+    glm::dvec3 n(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
+    const double nl = glm::length(n);
+    if (!(nl > 0.0) || !std::isfinite(nl)) return fallback;
+    n /= nl;
+    return glm::dot(n, eye - point) >= 0.0 ? n : -n;
+}
+
+double ShadowTracer::visibility(const glm::dvec3& point, const glm::dvec3& normal, const ShadowEmitter& e,
+                                std::uint32_t seed, int samples) const {
+    if (!e.casts || !m_scene) return 1.0;
+    const glm::dvec3 origin = point + normal * m_epsilon;
+    glm::dvec3 w = e.toLight;
+    if (!e.directional) {
+        const glm::dvec3 toCentre = e.position - origin;
+        const double d = glm::length(toCentre);
+        if (!(d > 0.0) || !std::isfinite(d)) return 1.0; // the light at the point: nothing in between
+        w = toCentre / d;
+    }
+    const bool hard = e.directional ? !(e.halfAngle > 0.0) : !(e.radius > 0.0);
+    glm::dvec3 t, b;
+    basisAround(w, &t, &b);
+    const double oneMinusCos = e.directional ? 1.0 - std::cos(e.halfAngle) : 0.0;
+    // Whether the ray towards the emitter point `disk` (unit disk coordinates) arrives.
+    const auto arrives = [&](glm::dvec2 disk) {
+        if (e.directional) {
+            const double r2 = glm::dot(disk, disk);
+            const double cosT = 1.0 - r2 * oneMinusCos; // equal-area disk -> spherical cap
+            const double sinT = std::sqrt(std::max(0.0, 1.0 - cosT * cosT));
+            const double r = std::sqrt(r2);
+            const glm::dvec3 side = r > 0.0 ? (disk.x * t + disk.y * b) * (sinT / r) : glm::dvec3(0.0);
+            return !occluded(origin, glm::normalize(cosT * w + side),
+                             std::numeric_limits<double>::infinity());
+        }
+        const glm::dvec3 target = e.position + e.radius * (disk.x * t + disk.y * b);
+        const glm::dvec3 toTarget = target - origin;
+        const double len = glm::length(toTarget);
+        if (!(len > 0.0)) return true;
+        return !occluded(origin, toTarget / len, len);
+    };
+    if (hard) return arrives(glm::dvec2(0.0)) ? 1.0 : 0.0;
+    // Jittered strata: n × n squares of the unit square, one uniformly placed sample in each.
+    const auto count = [&](int wanted, std::uint32_t state) {
+        const int n = std::max(1, int(std::lround(std::sqrt(double(std::max(1, wanted))))));
+        int arrived = 0;
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                const double u = (i + uniform01(&state)) / n, v = (j + uniform01(&state)) / n;
+                arrived += arrives(concentricDisk(u, v)) ? 1 : 0;
+            }
+        return std::pair{arrived, n * n};
+    };
+    // The probe: the emitter's rim, where an edge crossing the emitter shows first (a visible or hidden
+    // sliver of the disk always reaches it), and jittered strata inside.
+    std::uint32_t state = pcgHash(seed);
+    const double phase = uniform01(&state);
+    int probeArrived = 0;
+    for (int k = 0; k < kShadowRimSamples; ++k) {
+        const double a = 2.0 * std::numbers::pi * (k + phase) / kShadowRimSamples;
+        probeArrived += arrives(glm::dvec2(std::cos(a), std::sin(a))) ? 1 : 0;
+    }
+    const auto [insideArrived, insideRays] = count(kShadowProbeSamples, state);
+    probeArrived += insideArrived;
+    if (probeArrived == 0) return 0.0;
+    if (probeArrived == insideRays + kShadowRimSamples) return 1.0;
+    const auto [arrived, rays] = count(samples, pcgHash(seed ^ 0x9e3779b9u));
+    return double(arrived) / double(rays);
+}
+
+} // namespace lr
