@@ -26,7 +26,8 @@ namespace {
 
 const char* kUsage =
     "lightrig bench [MODEL...] [--rig RIG] [--camera-index N | --view NAME] [--lights N,...] "
-    "[--light-type T,...] [--size WxH] [--shading classic|pbr] [--frames N] [--msaa N] [--interactive] "
+    "[--light-type T,...] [--size WxH] [--shading classic|pbr] [--ground off|visible|catcher] "
+    "[--shadows on|off] [--frames N] [--msaa N] [--interactive] "
     "[--quality LIST] [--approximations LIST] [--json OUT.json] [--chart OUT.png] [--scaling-chart OUT.png]";
 
 const char* kBundledModel = ":/resources/models/suzanne/Suzanne.gltf";
@@ -243,9 +244,13 @@ int runBench(const QStringList& args) {
                 p.type = type;
                 p.count = n;
                 p.range = range;
-                // The procedural lights shaded as the model's default rig would be (or as --shading says).
+                // The procedural lights shaded as the model's default rig would be (or as --shading says),
+                // over its ground (or --ground's), casting when --shadows on says so.
                 Rig rig = proceduralRig(p);
                 rig.shading.model = loaded.rig.shading.model;
+                rig.ground = loaded.rig.ground;
+                if (sceneOptions->shadows && !applyShadowsOption(rig, *sceneOptions->shadows, &message))
+                    return failed(message);
                 scenes.push_back({QStringLiteral("%1 · %2").arg(base, proceduralRigName(p)), loaded.model,
                                   loadMs, std::move(rig), loaded.camera});
             }

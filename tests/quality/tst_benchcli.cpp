@@ -42,7 +42,7 @@ class TestBenchCli : public QObject {
         QVERIFY2(r.code == 0, qPrintable(show(r)));
         for (const char* option :
              {"--lights", "--quality", "--json", "--chart", "--frames", "--msaa", "--rig", "--camera-index",
-              "--view", "--size", "--exposure", "--tonemap", "--shading"})
+              "--view", "--size", "--exposure", "--tonemap", "--shading", "--ground", "--shadows"})
             QVERIFY2(r.out.contains(QLatin1String(option)), option);
     }
 
@@ -172,6 +172,42 @@ class TestBenchCli : public QObject {
         const QStringList lines = r.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
         QCOMPARE(lines.size(), 3); // heading, column titles, one result
         QVERIFY(lines[2].startsWith(QStringLiteral("scene ")) && lines[2].contains(QStringLiteral(" fast ")));
+    }
+
+    // Issue 14: procedural bench lights take --shadows and --ground like a loaded rig: with shadows on the
+    // results carry the shadow measure (present only when some light casts), without they do not.
+    void proceduralLightsCastWithShadowsOn() {
+        if (!haveDisplay()) QSKIP("needs an X display with OpenGL: run under xvfb-run -a");
+        for (const bool on : {true, false}) {
+            const QString json = m_dir.filePath(QStringLiteral("procedural-%1.json").arg(on));
+            QStringList args{QStringLiteral(LIGHTRIG_TEST_DATA "/model/scene.gltf"),
+                             QStringLiteral("--lights"),
+                             QStringLiteral("2"),
+                             QStringLiteral("--light-type"),
+                             QStringLiteral("spot"),
+                             QStringLiteral("--ground"),
+                             QStringLiteral("visible"),
+                             QStringLiteral("--quality"),
+                             QStringLiteral("exact"),
+                             QStringLiteral("--size"),
+                             QStringLiteral("48x32"),
+                             QStringLiteral("--frames"),
+                             QStringLiteral("1"),
+                             QStringLiteral("--warmup"),
+                             QStringLiteral("0"),
+                             QStringLiteral("--no-uber"),
+                             QStringLiteral("--json"),
+                             json};
+            if (on) args << QStringLiteral("--shadows") << QStringLiteral("on");
+            const Run r = lightrig(args);
+            QVERIFY2(r.code == 0, qPrintable(show(r)));
+            QFile f(json);
+            QVERIFY(f.open(QIODevice::ReadOnly));
+            const QJsonArray results =
+                QJsonDocument::fromJson(f.readAll()).object().value(QStringLiteral("results")).toArray();
+            QCOMPARE(results.size(), 1);
+            QCOMPARE(results[0].toObject().contains(QStringLiteral("shadow_differing_share")), on);
+        }
     }
 
     // Issue 18: a valid rig with a range-power light 1e12 above an 8×8 plane, range 1e12, seen from above
