@@ -274,6 +274,16 @@ bool Renderer::render(const ViewCamera& camera, QSize size, const RenderSettings
     m_stats.lightsInRig = int(rig().lights.size());
     if (!updateGround()) return false;
     m_shadowViews = m_model->model() ? planShadows(rig(), sceneFrame(), bounds()) : std::vector<ShadowView>();
+    if (const auto casting = std::count_if(rig().lights.begin(), rig().lights.end(),
+                                           [](const Light& l) { return l.hasShadow(); });
+        casting > kMaxShadowCasters && !m_warnedCasters) {
+        qCWarning(lcRender).noquote()
+            << QStringLiteral("%1 lights cast shadows; at most %2 can: the first %2 in "
+                              "the rig's order cast, the others light without shadow")
+                   .arg(casting)
+                   .arg(kMaxShadowCasters);
+        m_warnedCasters = true;
+    }
     const Bounds reach = drawnBounds();
     const SceneFrame reachSphere{reach.center(), reach.radius()};
     m_lights->update(this, sceneFrame(), frame.view, &m_stats, &m_shadowViews, &reachSphere);

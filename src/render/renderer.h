@@ -133,9 +133,10 @@ class Renderer : protected QOpenGLFunctions_3_3_Core {
     Ground m_groundUploaded;                    // what m_ground was built for
     int m_groundGeneration = -1;                // ... over which model
     std::vector<render::ShadowView> m_shadowViews;
-    int m_modelGeneration = 0; // every setModel: shadow maps re-render
-    GLuint m_fastSampler = 0;  // the fast tier's texture filtering (F4)
-    GLuint m_emptyVao = 0;     // full-screen triangles
+    int m_modelGeneration = 0;    // every setModel: shadow maps re-render
+    bool m_warnedCasters = false; // more than kMaxShadowCasters casting lights was logged once
+    GLuint m_fastSampler = 0;     // the fast tier's texture filtering (F4)
+    GLuint m_emptyVao = 0;        // full-screen triangles
     int m_maxSamples = 0, m_maxTargetSize = 0;
 };
 

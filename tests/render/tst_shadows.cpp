@@ -419,6 +419,69 @@ class TestShadows : public QObject {
         QCOMPARE(m_gl->renderer().stats().shadowMapBytes, qint64(6) * 1024 * 1024 * 4);
     }
 
+    // The casters beyond kMaxShadowCasters are left out (in rig order); the maps of extreme lights stay
+    // finite: a 179° spot maps only the model's cone, a 0.1° spot its own.
+    void planLimitsAndExtremes() {
+        Rig rig;
+        for (int i = 0; i < kMaxShadowCasters + 4; ++i)
+            rig.lights.push_back(castingSpot({double(i), 4, 0}, {0, 0, 0}, 40, 0.0));
+        Bounds b;
+        b.min = glm::dvec3(-1.0);
+        b.max = glm::dvec3(1.0);
+        const SceneFrame frame{b.center(), b.radius()};
+        const auto views = planShadows(rig, frame, b);
+        QCOMPARE(int(views.size()), kMaxShadowCasters);
+        QCOMPARE(views.back().rigIndex, kMaxShadowCasters - 1);
+        const double sphere = std::tan(std::asin(b.radius() * 1.02 / 4.0));
+        const auto wide = planShadows(rigOf({castingSpot({0, 4, 0}, {0, 0, 0}, 89.5, 0.0)}), frame, b);
+        QVERIFY(std::abs(wide.front().tanHalf - sphere) < 1e-9);
+        const auto narrow = planShadows(rigOf({castingSpot({0, 4, 0}, {0, 0, 0}, 0.1, 0.0)}), frame, b);
+        QVERIFY(std::abs(narrow.front().tanHalf - std::tan(0.1 * M_PI / 180.0)) < 1e-12);
+        Light inside = castingSpot({0, 0, 0}, {0, -1, 0}, 89.5, 0.0);
+        const auto in = planShadows(rigOf({inside}), frame, b);
+        QVERIFY(in.front().tanHalf <= std::tan(85.0 * M_PI / 180.0) + 1e-9);
+        QVERIFY(in.front().znear > 0.0 && in.front().znear < in.front().zfar);
+    }
+
+    // Extreme lights render finite in every tier: a 179° and a 0.1° spot, a directional light parallel to
+    // the ground, a point light inside the model (every ground point is then in its shadow).
+    void extremeLightsStayFinite() {
+        QVERIFY(m_gl->setModel(floatingSphere()));
+        const ViewCamera cam = groundCamera();
+        Light parallel = directional({1.0, 0.0, 0.0}, DiffuseModel::Lambert);
+        parallel.shadow.enabled = true;
+        parallel.shadow.angle = 2.0;
+        Light bulb = makeLight(LightType::Point, QStringLiteral("inside"));
+        bulb.position = {0.0, 1.0, 0.0};
+        bulb.falloff.model = FalloffModel::None;
+        bulb.falloff.range = -1.0;
+        bulb.shadow.enabled = true;
+        bulb.shadow.size = 0.1;
+        const Light lights[] = {castingSpot({0, 4, 0}, {0, 0, 0}, 89.5, 0.3),
+                                castingSpot({0, 4, 0}, {0, 0, 0}, 0.1, 0.3), parallel, bulb};
+        for (const Light& l : lights) {
+            for (Quality q : {Quality::Exact, Quality::Balanced, Quality::Fast}) {
+                const Rig on = withGround({l}, GroundMode::Visible);
+                const FloatImage a = radiance(on, cam, settingsFor(q));
+                int nonFinite = 0;
+                for (const glm::vec4& p : a.pixels)
+                    nonFinite += std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) ? 0 : 1;
+                QVERIFY2(nonFinite == 0, qPrintable(QStringLiteral("%1 %2").arg(l.name, toString(q))));
+                if (l.type == LightType::Point) {
+                    const FloatImage b = radiance(withoutShadows(on), cam, referenceFor(settingsFor(q)));
+                    const double v = visibilityAt(a, b, cam, {1.5, 0.0, 0.5});
+                    QVERIFY2(v >= 0 && v < 0.02,
+                             qPrintable(QStringLiteral("%1: %2").arg(toString(q)).arg(v)));
+                }
+                if (l.type == LightType::Spot && l.cone.outer > 80) {
+                    const FloatImage b = radiance(withoutShadows(on), cam, referenceFor(settingsFor(q)));
+                    QVERIFY(visibilityAt(a, b, cam, {0.0, 0.0, 0.0}) < 0.02);
+                    QVERIFY(std::abs(visibilityAt(a, b, cam, {2.0, 0.0, 0.0}) - 1.0) < litTolerance(q));
+                }
+            }
+        }
+    }
+
     // The shadow catcher in a transparent image: black with alpha only inside the shadow's closed-form
     // disc (plus its edge), alpha 0 on the rest of the invisible ground; over an opaque background the
     // background darkens there.
