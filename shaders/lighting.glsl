@@ -454,7 +454,13 @@ ShadeLight loadLight(int index) {
     l.position = t0.xyz;
     l.range = t0.w;
     l.color = t1.xyz;
+#ifdef LR_SHADOWS
+    int typeAndShadow = int(t1.w);  // type + LR_SHADOW_SLOT_SCALE × (shadow slot + 1)
+    l.type = typeAndShadow % LR_SHADOW_SLOT_SCALE;
+    l.shadow = typeAndShadow / LR_SHADOW_SLOT_SCALE;
+#else
     l.type = int(t1.w);
+#endif
     l.specular = t2.xyz;
     l.falloff = int(t2.w);
     l.direction = t3.xyz;
@@ -470,9 +476,6 @@ ShadeLight loadLight(int index) {
     l.outer = t6.z;
     l.coneExponent = t6.w;
     l.rimExponent = t7.x;
-#ifdef LR_SHADOWS
-    l.shadow = int(t7.y);
-#endif
     return l;
 }
 

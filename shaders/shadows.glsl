@@ -1,9 +1,10 @@
 // Shadows (docs/lighting-models.md "Shadows"; src/render/shadowmaps.h builds the maps and the records).
 // Compiled only into programs whose rig has a casting light (LR_SHADOWS); otherwise this file is empty and
 // a program's text is what it was before shadows. After lighting.glsl, which calls lrShadow() (declared
-// there) on the direct terms of every light whose texel 7.y names a shadow slot.
+// there) on the direct terms of every light that has a shadow slot.
 //
-// Each caster has LR_SHADOW_TEXELS texels after the uLightCount lights in uLights (lightset.cpp):
+// Each caster has LR_SHADOW_TEXELS vec4s in uShadowRecords (lightset.cpp; uniforms, as a texelFetch costs
+// a software rasteriser much more), and its light's type texel says its slot (lighting.glsl loadLight):
 //   0-3: the view -> light matrix (columns): light clip space (perspective, orthographic), or the
 //        light-centred, world-aligned frame (cube: the face is chosen here)
 //   4: layer, kind (0 perspective, 1 orthographic, 2 cube), near, far
@@ -16,6 +17,7 @@
 uniform sampler2DArrayShadow uShadowMaps;  // compare LEQUAL, bilinear: each tap is a 2×2 PCF
 uniform sampler2DArray uShadowDepths;      // the same array, raw depths (PCSS's blocker search)
 uniform int uShadowCount;
+uniform vec4 uShadowRecords[LR_MAX_SHADOW_CASTERS * LR_SHADOW_TEXELS];
 
 bool lrShadowsOn = true;  // the shadow catcher switches them off to measure the unshadowed light
 
@@ -31,13 +33,12 @@ struct ShadowRecord {
 };
 
 ShadowRecord loadShadow(int slot) {
-    int base = uLightCount * LR_LIGHT_TEXELS + slot * LR_SHADOW_TEXELS;
+    int base = slot * LR_SHADOW_TEXELS;
     ShadowRecord r;
-    r.m = mat4(texelFetch(uLights, base), texelFetch(uLights, base + 1), texelFetch(uLights, base + 2),
-               texelFetch(uLights, base + 3));
-    vec4 a = texelFetch(uLights, base + 4);
-    vec4 b = texelFetch(uLights, base + 5);
-    vec4 c = texelFetch(uLights, base + 6);
+    r.m = mat4(uShadowRecords[base], uShadowRecords[base + 1], uShadowRecords[base + 2], uShadowRecords[base + 3]);
+    vec4 a = uShadowRecords[base + 4];
+    vec4 b = uShadowRecords[base + 5];
+    vec4 c = uShadowRecords[base + 6];
     r.layer = a.x;
     r.kind = int(a.y);
     r.znear = a.z;
@@ -204,7 +205,7 @@ vec3 shadeCastingLights(Surface s, ShadeSettings st) {
     PbrSurface p = pbrSurface(s);
 #endif
     for (int k = 0; k < uShadowCount; ++k) {
-        int index = int(texelFetch(uLights, uLightCount * LR_LIGHT_TEXELS + k * LR_SHADOW_TEXELS + 6).x);
+        int index = int(uShadowRecords[k * LR_SHADOW_TEXELS + 6].x);
         if (index < 0) continue;
 #ifdef LR_PBR
         sum += shadeLightPbr(loadLight(index), s, st, V, p.cDiff, p.f0, p.alpha);

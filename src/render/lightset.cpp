@@ -43,7 +43,7 @@ void LightSet::update(QOpenGLFunctions_3_3_Core* gl, const SceneFrame& frame, co
     const std::vector<ShadowView>& casters = shadows ? *shadows : none;
     const SceneFrame sphere = reach ? *reach : frame;
     std::vector<float> data;
-    data.reserve(m_rig.lights.size() * 4 * kLightTexels + casters.size() * 4 * kShadowTexels);
+    data.reserve(m_rig.lights.size() * 4 * kLightTexels);
     std::vector<int> uploadedAs(m_rig.lights.size(), -1);
     int count = 0;
     const double scale = prepareSettings(m_rig, frame).distanceScale;
@@ -63,15 +63,17 @@ void LightSet::update(QOpenGLFunctions_3_3_Core* gl, const SceneFrame& frame, co
         m_boundedLights += m_bounds.back().bounded ? 1 : 0;
         LightTexels t = packLight(castLight<float>(prepared));
         for (size_t k = 0; k < casters.size(); ++k)
-            if (casters[k].rigIndex == int(i)) t[7 * 4 + 1] = float(k + 1); // its shadow slot + 1
+            if (casters[k].rigIndex == int(i))
+                t[1 * 4 + 3] += float(kShadowSlotScale * (k + 1)); // type + slot
         data.insert(data.end(), t.begin(), t.end());
         uploadedAs[i] = count;
         ++count;
     }
-    // The casters' records after the lights (shaders/shadows.glsl loadShadow), in slot order.
+    // The casters' records, in slot order: uniforms (shaders/shadows.glsl loadShadow), set per program.
+    m_shadowRecords.clear();
     for (const ShadowView& v : casters) {
         const auto t = packShadow(v, view, uploadedAs[size_t(v.rigIndex)]);
-        data.insert(data.end(), t.begin(), t.end());
+        m_shadowRecords.insert(m_shadowRecords.end(), t.begin(), t.end());
     }
     m_shadowCount = int(casters.size());
     const int texels = int(data.size() / 4);
@@ -146,6 +148,8 @@ void LightSet::setUniforms(QOpenGLFunctions_3_3_Core* gl, const MeshProgram& p,
     gl->glUniform1f(p.distanceScale, float(shade.distanceScale));
     gl->glUniform1i(p.lightCount, m_count);
     if (p.shadowCount >= 0) gl->glUniform1i(p.shadowCount, m_shadowCount);
+    if (p.shadowRecords >= 0 && m_shadowCount > 0)
+        gl->glUniform4fv(p.shadowRecords, GLsizei(m_shadowRecords.size() / 4), m_shadowRecords.data());
     if (!clustered) return;
     const GLuint id = p.program->programId();
     gl->glUniform1i(gl->glGetUniformLocation(id, "uGlobalLightCount"), m_clusterGlobal);

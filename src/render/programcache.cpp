@@ -115,6 +115,7 @@ MeshProgram* ProgramCache::meshProgram(const FeatureKey& key, QString* error) {
     mp->distanceScale = p->uniformLocation("uDistanceScale");
     mp->lightCount = p->uniformLocation("uLightCount");
     mp->shadowCount = p->uniformLocation("uShadowCount");
+    mp->shadowRecords = p->uniformLocation("uShadowRecords");
     mp->exposureScale = p->uniformLocation("uExposureScale");
     mp->normalScale = p->uniformLocation("uNormalScale");
     mp->alphaCutoff = p->uniformLocation("uAlphaCutoff");

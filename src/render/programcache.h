@@ -49,7 +49,8 @@ struct MeshProgram {
     int modelView = -1, normalMatrix = -1, projection = -1;
     int baseColor = -1, emissive = -1, specular = -1, shininess = -1, ambient = -1, distanceScale = -1;
     int lightCount = -1;
-    int shadowCount = -1;   // LR_SHADOWS: casters in the light buffer after the lights
+    int shadowCount = -1;   // LR_SHADOWS: casters
+    int shadowRecords = -1; // LR_SHADOWS: their records (shadowmaps.h kShadowTexels vec4s each)
     int exposureScale = -1; // display output only
     int metallic = -1, roughness = -1, occlusionStrength = -1; // LR_PBR only
     int normalScale = -1, alphaCutoff = -1;

@@ -238,7 +238,9 @@ QByteArray shaderPrelude(const FeatureKey& key) {
     if (key.material.alphaBlend) out += "#define LR_ALPHA_BLEND 1\n";
     // Shadows (shaders/shadows.glsl) only where some light casts: other preludes are unchanged.
     if (key.rig.shadows)
-        out += "#define LR_SHADOWS 1\n#define LR_SHADOW_TEXELS " + QByteArray::number(kShadowTexels) + '\n';
+        out += "#define LR_SHADOWS 1\n#define LR_SHADOW_TEXELS " + QByteArray::number(kShadowTexels) +
+               "\n#define LR_MAX_SHADOW_CASTERS " + QByteArray::number(kMaxShadowCasters) +
+               "\n#define LR_SHADOW_SLOT_SCALE " + QByteArray::number(kShadowSlotScale) + '\n';
     if (key.material.shadowCatcher) out += "#define LR_SHADOW_CATCHER 1\n";
     if (pbr && key.material.metalRoughTexture) out += "#define LR_METAL_ROUGH_TEXTURE 1\n";
     if (pbr && key.material.occlusionTexture) out += "#define LR_OCCLUSION_TEXTURE 1\n";

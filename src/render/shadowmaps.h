@@ -32,8 +32,13 @@ class GpuModel;
 
 // The array never grows past this: the resolution is halved until it fits (docs: the limits).
 inline constexpr qint64 kMaxShadowBytes = qint64(512) << 20;
-// RGBA32F texels per caster after the lights in the light buffer (layout in shaders/shadows.glsl).
+// vec4s per caster in the uShadowRecords uniform array (layout in shaders/shadows.glsl): uniforms, not
+// texels of the light buffer, because a texelFetch costs a software rasteriser far more per pixel.
 inline constexpr int kShadowTexels = 7;
+// A casting light's slot + 1 rides on its type in the light buffer (texel 1.w = type + this × (slot + 1)),
+// so finding its shadow costs no extra fetch; a light without a shadow packs exactly as before.
+inline constexpr int kShadowSlotScale = 8;
+static_assert(kLightTypeCount <= kShadowSlotScale);
 // The cube faces' half-angle tangent is 1 + this many texels' worth (each side), so a filter kernel near
 // a face's edge still finds depths; the shader projects with the same value (ShadowView::tanHalf).
 inline constexpr double kCubeMarginTexels = 24.0;
@@ -68,7 +73,7 @@ std::vector<ShadowView> planShadows(const Rig& rig, const SceneFrame& frame, con
 // Bytes of the array for these views (0 when none).
 qint64 shadowMapBytes(const std::vector<ShadowView>& views);
 
-// The per-caster texels appended to the light buffer: view -> light matrices for this camera view,
+// The per-caster record (uShadowRecords): view -> light matrices for this camera view,
 // computed in double and rounded once. `lightIndex`: where the light was uploaded (-1: not uploaded).
 std::array<float, 4 * kShadowTexels> packShadow(const ShadowView& v, const glm::dmat4& view, int lightIndex);
 

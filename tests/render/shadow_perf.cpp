@@ -59,7 +59,8 @@ int main(int argc, char** argv) {
     out << args[1].section(QLatin1Char('/'), -1) << ": " << model.triangleCount() << " tris, " << casters
         << " casting lights of " << rig.lights.size() << ", ground, " << size.width() << 'x' << size.height()
         << ", PBR, no MSAA\n";
-    // LR_PERF_TIERS=exact,fast (default: all three); LR_PERF_SHADOWS=FILE: try a variant of shadows.glsl.
+    // LR_PERF_TIERS=exact,fast (default: all three); LR_PERF_SHADOWS=FILE, LR_PERF_LIGHTING=FILE: try a
+    // variant of shadows.glsl or lighting.glsl.
     const QString tiers = qEnvironmentVariable("LR_PERF_TIERS", QStringLiteral("fast,balanced,exact"));
     for (Quality q : {Quality::Fast, Quality::Balanced, Quality::Exact}) {
         if (!tiers.contains(toString(q))) continue;
@@ -92,6 +93,10 @@ int main(int argc, char** argv) {
             return 1;
         }
         const double first = t.nsecsElapsed() * 1e-6;
+        // LR_PERF_SAVE=PREFIX: PREFIX-TIER.png of the first view, to look at
+        if (const QString save = qEnvironmentVariable("LR_PERF_SAVE"); !save.isEmpty())
+            gl.renderImage(cam, size, s, 1, &error)
+                .save(save + QLatin1Char('-') + toString(q) + QStringLiteral(".png"));
         const qint64 bytes = gl.renderer().stats().shadowMapBytes;
         // Process CPU time of a frame (all threads: llvmpipe's included), robust on a shared machine;
         // LR_PERF_WALL=1 for wall-clock time.
