@@ -59,6 +59,23 @@ int main(int argc, char** argv) {
     out << args[1].section(QLatin1Char('/'), -1) << ": " << model.triangleCount() << " tris, " << casters
         << " casting lights of " << rig.lights.size() << ", ground, " << size.width() << 'x' << size.height()
         << ", PBR, no MSAA\n";
+    { // The same first frame without shadows (exact tier, ground on), for comparison.
+        OffscreenRenderer gl;
+        QString error;
+        if (!gl.initialize(&error)) {
+            out << error << '\n';
+            return 1;
+        }
+        QElapsedTimer t;
+        t.start();
+        gl.setModel(loaded.model);
+        gl.setRig(plain);
+        RenderSettings r;
+        r.msaaSamples = 0;
+        gl.renderFrame(start, size, r, &error);
+        out << QStringLiteral("  first frame without shadows (exact): %1 ms\n")
+                   .arg(t.nsecsElapsed() * 1e-6, 0, 'f', 0);
+    }
     // LR_PERF_TIERS=exact,fast (default: all three); LR_PERF_SHADOWS=FILE, LR_PERF_LIGHTING=FILE: try a
     // variant of shadows.glsl or lighting.glsl.
     const QString tiers = qEnvironmentVariable("LR_PERF_TIERS", QStringLiteral("fast,balanced,exact"));
