@@ -81,6 +81,7 @@ struct RenderStats {
     int shadowMapsRendered = 0;
     int shadowLayersRendered = 0;
     qint64 shadowMapBytes = 0;
+    double shadowMapMs = 0.0; // wall time of this frame's map renders, waited for (0: none rendered)
 };
 
 } // namespace lr

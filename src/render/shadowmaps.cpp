@@ -3,6 +3,7 @@
 #include "gpumodel.h"
 #include "textureunits.h"
 
+#include <QElapsedTimer>
 #include <algorithm>
 #include <cmath>
 #include <glm/ext/matrix_clip_space.hpp>
@@ -197,6 +198,7 @@ bool ShadowMaps::update(QOpenGLFunctions_3_3_Core* gl, const std::vector<ShadowV
                         RenderStats* stats, QString* error) {
     stats->shadowMapsRendered = 0;
     stats->shadowLayersRendered = 0;
+    stats->shadowMapMs = 0.0;
     stats->shadowCasters = int(views.size());
     if (views.empty() || !model.model()) {
         if (m_texture) freeArray(gl);
@@ -237,10 +239,12 @@ bool ShadowMaps::update(QOpenGLFunctions_3_3_Core* gl, const std::vector<ShadowV
     const Model* m = model.model();
     const glm::dmat4 toOrigin = glm::translate(glm::dmat4(1.0), m->origin);
     bool bound = false;
+    QElapsedTimer timer;
     for (size_t i = 0; i < views.size(); ++i) {
         const ShadowView& v = views[i];
         if (!newModel && m_rendered[i].resolution > 0 && m_rendered[i].sameMap(v)) continue;
         if (!bound) {
+            timer.start();
             gl->glBindFramebuffer(GL_FRAMEBUFFER, m_fbo);
             gl->glDrawBuffer(GL_NONE);
             gl->glReadBuffer(GL_NONE);
@@ -274,6 +278,10 @@ bool ShadowMaps::update(QOpenGLFunctions_3_3_Core* gl, const std::vector<ShadowV
     }
     m_modelGeneration = modelGeneration;
     if (bound) {
+        // Waited for (only in frames that render maps: the lit passes need them anyway), so the time is
+        // the maps' own.
+        gl->glFinish();
+        stats->shadowMapMs = double(timer.nsecsElapsed()) * 1e-6;
         gl->glBindVertexArray(0);
         gl->glDisable(GL_POLYGON_OFFSET_FILL);
         gl->glUseProgram(0);
