@@ -490,8 +490,9 @@ class TestShadows : public QObject {
         const ViewCamera cam = groundCamera();
         const double radius = sphereShadowRadius(4.0, 1.0, 0.5);
         for (Quality q : {Quality::Exact, Quality::Fast}) {
-            for (ShadingPath path : {ShadingPath::Forward, ShadingPath::Deferred}) {
+            for (ShadingPath path : {ShadingPath::Forward, ShadingPath::Deferred, ShadingPath::Auto}) {
                 RenderSettings s = settingsFor(q, path);
+                s.hdrTarget = path == ShadingPath::Auto; // the tone-map pass composites the catcher's alpha
                 s.transparentBackground = true;
                 QString error;
                 m_gl->setRig(withGround({castingSpot({0, 4, 0}, {0, 0, 0}, 40, 0.0)}, GroundMode::Catcher));
