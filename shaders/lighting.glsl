@@ -15,7 +15,8 @@
 //   LR_QUALITY_EXACT / LR_QUALITY_BALANCED / LR_QUALITY_FAST: the quality tier (docs/quality.md);
 //   LR_SHININESS_INT + powShininessInt(): balanced tier, the material's shininess is this integer;
 //   LR_PBR: the rig is physically based (the glTF BRDF block, lightArrival, shadeLightPbr); with it
-//   LR_METAL_ROUGH_TEXTURE / LR_OCCLUSION_TEXTURE (mesh.frag) and the BRDF's approximations LR_B5, LR_B6.
+//   LR_METAL_ROUGH_TEXTURE / LR_OCCLUSION_TEXTURE (mesh.frag) and the BRDF's approximations LR_B5, LR_B6;
+//   LR_SHADOWS: some light casts (shadows.glsl); LR_SHADOW_CATCHER: the ground's catcher (mesh.frag).
 // Code for absent features is not compiled, so a scene pays only for what it uses.
 //
 // Quality tiers change how the formulas are evaluated, never what they are. Exact: the functions below
@@ -371,6 +372,9 @@ struct ShadeLight {
     float cosInner, cosOuter, outer, coneExponent;  // outer in radians
     int diffuse;
     float rimExponent;
+#ifdef LR_SHADOWS
+    int shadow;  // its shadow slot + 1 (shadows.glsl), 0: it casts none
+#endif
 };
 
 struct Surface {
@@ -391,6 +395,11 @@ struct ShadeSettings {
     vec3 ambient;
     float distanceScale;  // 1 / bounding radius for rigs in model space, else 1
 };
+
+#ifdef LR_SHADOWS
+// The share of the light that reaches the surface, L pointing to the light (shaders/shadows.glsl).
+float lrShadow(ShadeLight l, Surface s, vec3 L);
+#endif
 
 // Compile-time constants where the scene has a single value: the branches on them fold away.
 #ifdef LR_ONLY_LIGHT
@@ -445,7 +454,13 @@ ShadeLight loadLight(int index) {
     l.position = t0.xyz;
     l.range = t0.w;
     l.color = t1.xyz;
+#ifdef LR_SHADOWS
+    int typeAndShadow = int(t1.w);  // type + LR_SHADOW_SLOT_SCALE × (shadow slot + 1)
+    l.type = typeAndShadow % LR_SHADOW_SLOT_SCALE;
+    l.shadow = typeAndShadow / LR_SHADOW_SLOT_SCALE;
+#else
     l.type = int(t1.w);
+#endif
     l.specular = t2.xyz;
     l.falloff = int(t2.w);
     l.direction = t3.xyz;
@@ -578,10 +593,20 @@ vec3 shadeLight(ShadeLight l, Surface s, ShadeSettings st, vec3 V) {
 #else
     if (nDotL > 0.0) S = specularBlinnPhong(N, L, V, s.shininess);
 #endif
+#ifdef LR_SHADOWS
+    // The shadow dims the light's direct terms, not its ambient one.
+    float visibility = lrShadow(l, s, L);
+#ifdef LR_HAS_LIGHT_AMBIENT
+    return attenuation * (visibility * (l.color * s.albedo * D + l.specular * s.specular * S) + l.ambient * s.albedo);
+#else
+    return attenuation * visibility * (l.color * s.albedo * D + l.specular * s.specular * S);
+#endif
+#else
 #ifdef LR_HAS_LIGHT_AMBIENT
     return attenuation * (l.color * s.albedo * D + l.specular * s.specular * S + l.ambient * s.albedo);
 #else
     return attenuation * (l.color * s.albedo * D + l.specular * s.specular * S);
+#endif
 #endif
 #else
     return vec3(0.0);
@@ -654,11 +679,23 @@ vec3 shadeLightPbr(ShadeLight l, Surface s, ShadeSettings st, vec3 V, vec3 cDiff
     float nDotL = dot(N, L);
     float cosTerm = diffuseOf(l) == LR_DIFFUSE_LAMBERT ? diffuseLambert(nDotL) : diffuseHalfLambert(nDotL);
     PbrLobes f = pbrLobes(N, L, V, cDiff, f0, alpha, cosTerm);
+#ifdef LR_SHADOWS
+    // The shadow dims the light's direct lobes, not its ambient term (and is not sampled where the light
+    // adds nothing).
+    float visibility = arrives ? lrShadow(l, s, L) : 0.0;
+#ifdef LR_HAS_LIGHT_AMBIENT
+    vec3 radiance = attenuation * (visibility * (l.color * f.diffuse + l.specular * f.specular) +
+                                   l.ambient * cDiff * (saturate(s.occlusion) * kInvPi));
+#else
+    vec3 radiance = attenuation * visibility * (l.color * f.diffuse + l.specular * f.specular);
+#endif
+#else
 #ifdef LR_HAS_LIGHT_AMBIENT
     vec3 radiance = attenuation * (l.color * f.diffuse + l.specular * f.specular +
                                    l.ambient * cDiff * (saturate(s.occlusion) * kInvPi));
 #else
     vec3 radiance = attenuation * (l.color * f.diffuse + l.specular * f.specular);
+#endif
 #endif
     return arrives ? radiance : vec3(0.0);
 #else
@@ -764,7 +801,15 @@ VertexLight shadeVertex(vec3 P, vec3 N, float shininess, ShadeSettings st) {
     o.added = vec3(0.0);
     vec3 V = viewVector(st, P);
 #if defined(LR_HAS_SURFACE_LIGHTS) || defined(LR_HAS_LIGHT_RIM)
+#ifdef LR_SHADOWS
+    // The casting lights are shaded per pixel (shadows.glsl shadeCastingLights).
+    for (int i = 0; i < uLightCount; ++i) {
+        ShadeLight l = loadLight(i);
+        if (l.shadow == 0) shadeLightSplit(l, P, N, shininess, st, V, o);
+    }
+#else
     for (int i = 0; i < uLightCount; ++i) shadeLightSplit(loadLight(i), P, N, shininess, st, V, o);
+#endif
 #endif
     return o;
 }
@@ -829,7 +874,14 @@ VertexLightPbr shadeVertexPbr(vec3 P, vec3 N, float roughness, ShadeSettings st)
     vec3 V = viewVector(st, P);
     float alpha = pbrAlpha(roughness);
 #if defined(LR_HAS_SURFACE_LIGHTS) || defined(LR_HAS_LIGHT_RIM)
+#ifdef LR_SHADOWS
+    for (int i = 0; i < uLightCount; ++i) {
+        ShadeLight l = loadLight(i);
+        if (l.shadow == 0) shadeLightSplitPbr(l, s, st, V, alpha, o);
+    }
+#else
     for (int i = 0; i < uLightCount; ++i) shadeLightSplitPbr(loadLight(i), s, st, V, alpha, o);
+#endif
 #endif
     return o;
 }

@@ -90,7 +90,7 @@ layout(location = 0) out vec4 oColor;  // linear radiance, alpha 1 (coverage aft
 Surface surfaceHere() {
     Surface s;
     s.position = vPosition;
-#ifdef LR_QUALITY_FAST
+#if defined(LR_QUALITY_FAST) && !defined(LR_SHADOWS)
     vec3 n = vec3(0.0, 0.0, 1.0);  // unused: the fast tier lit the vertices (mesh.vert)
 #else
     vec3 n = safeNormalize(vNormal, vec3(0.0, 0.0, 1.0));
@@ -161,6 +161,23 @@ void main() {
     oGBuffer1 = g1;
     oGBuffer2 = g2;
     oGBuffer3 = g3;
+#elif defined(LR_SHADOW_CATCHER)
+    // The ground as a shadow catcher: only its shadows, as the opacity 1 − (shadowed / unshadowed light),
+    // each light weighted by its unshadowed contribution (luminance; no ambient, no emission), written as
+    // premultiplied black over the scene (pass_catcher.cpp).
+    float opacity = 0.0;
+#ifdef LR_SHADOWS
+    ShadeSettings st;
+    st.ambient = vec3(0.0);
+    st.distanceScale = uDistanceScale;
+    s.emissive = vec3(0.0);
+    const vec3 luminance = vec3(0.2126, 0.7152, 0.0722);
+    float shadowed = dot(shadeSurface(s, st), luminance);
+    lrShadowsOn = false;
+    float unshadowed = dot(shadeSurface(s, st), luminance);
+    opacity = unshadowed > 0.0 ? saturate(1.0 - shadowed / unshadowed) : 0.0;
+#endif
+    oColor = vec4(0.0, 0.0, 0.0, opacity);
 #else
     ShadeSettings st;
     st.ambient = uAmbient;
@@ -173,6 +190,9 @@ void main() {
     vec3 radiance = shadeSurfaceClustered(s, st, gl_FragCoord.xy);
 #else
     vec3 radiance = shadeSurface(s, st);
+#endif
+#if defined(LR_QUALITY_FAST) && defined(LR_SHADOWS)
+    radiance += shadeCastingLights(s, st);
 #endif
 #ifdef LR_OUTPUT_DISPLAY
     vec3 colour = displayEncode(radiance, uExposureScale, LR_TONE_MAP);

@@ -3,6 +3,7 @@
 #include "lightpack.h"
 #include "programcache.h"
 #include "shadergen.h"
+#include "shadowmaps.h"
 #include "textureunits.h"
 
 #include <algorithm>
@@ -36,33 +37,50 @@ void LightSet::setRig(const Rig& rig) {
 }
 
 void LightSet::update(QOpenGLFunctions_3_3_Core* gl, const SceneFrame& frame, const glm::dmat4& view,
-                      RenderStats* stats) {
+                      RenderStats* stats, const std::vector<ShadowView>* shadows, const SceneFrame* reach) {
     if (!m_dirty && view == m_uploadedView) return;
+    static const std::vector<ShadowView> none;
+    const std::vector<ShadowView>& casters = shadows ? *shadows : none;
+    const SceneFrame sphere = reach ? *reach : frame;
     std::vector<float> data;
     data.reserve(m_rig.lights.size() * 4 * kLightTexels);
+    std::vector<int> uploadedAs(m_rig.lights.size(), -1);
     int count = 0;
     const double scale = prepareSettings(m_rig, frame).distanceScale;
     m_bounds.clear();
     m_boundedLights = 0;
     m_farLights = false;
     // The farthest a visible surface can be from the eye: the model's bounding sphere in view space.
-    const double surfaceReach = glm::length(glm::dvec3(view * glm::dvec4(frame.center, 1.0))) + frame.radius;
-    for (const Light& l : m_rig.lights) {
-        if (!lightReaches(m_rig, frame, l, frame.center, frame.radius)) continue;
+    const double surfaceReach =
+        glm::length(glm::dvec3(view * glm::dvec4(sphere.center, 1.0))) + sphere.radius;
+    for (size_t i = 0; i < m_rig.lights.size(); ++i) {
+        const Light& l = m_rig.lights[i];
+        if (!lightReaches(m_rig, frame, l, sphere.center, sphere.radius)) continue;
         const lighting::ShadeLight<double> prepared = prepareLight(m_rig, frame, view, l);
         if (l.usesPosition() && !(glm::length(prepared.position) + surfaceReach < kFarLightDistance))
             m_farLights = true;
         m_bounds.push_back(lightBounds(prepared, scale));
         m_boundedLights += m_bounds.back().bounded ? 1 : 0;
-        const LightTexels t = packLight(castLight<float>(prepared));
+        LightTexels t = packLight(castLight<float>(prepared));
+        for (size_t k = 0; k < casters.size(); ++k)
+            if (casters[k].rigIndex == int(i))
+                t[1 * 4 + 3] += float(kShadowSlotScale * (k + 1)); // type + slot
         data.insert(data.end(), t.begin(), t.end());
+        uploadedAs[i] = count;
         ++count;
     }
+    // The casters' records, in slot order: uniforms (shaders/shadows.glsl loadShadow), set per program.
+    m_shadowRecords.clear();
+    for (const ShadowView& v : casters) {
+        const auto t = packShadow(v, view, uploadedAs[size_t(v.rigIndex)]);
+        m_shadowRecords.insert(m_shadowRecords.end(), t.begin(), t.end());
+    }
+    m_shadowCount = int(casters.size());
+    const int texels = int(data.size() / 4);
     gl->glBindBuffer(GL_TEXTURE_BUFFER, m_buffer);
-    if (count > m_capacity || m_capacity == 0) {
-        m_capacity = std::max({count, 2 * m_capacity, 16});
-        gl->glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(m_capacity) * kLightTexels * 16, nullptr,
-                         GL_DYNAMIC_DRAW);
+    if (texels > m_capacity || m_capacity == 0) {
+        m_capacity = std::max({texels, 2 * m_capacity, 16 * kLightTexels});
+        gl->glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(m_capacity) * 16, nullptr, GL_DYNAMIC_DRAW);
         gl->glBindTexture(GL_TEXTURE_BUFFER, m_texture);
         gl->glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, m_buffer);
         m_packed.clear(); // the new store holds nothing yet
@@ -129,6 +147,9 @@ void LightSet::setUniforms(QOpenGLFunctions_3_3_Core* gl, const MeshProgram& p,
     gl->glUniform3fv(p.ambient, 1, glm::value_ptr(glm::vec3(shade.ambient)));
     gl->glUniform1f(p.distanceScale, float(shade.distanceScale));
     gl->glUniform1i(p.lightCount, m_count);
+    if (p.shadowCount >= 0) gl->glUniform1i(p.shadowCount, m_shadowCount);
+    if (p.shadowRecords >= 0 && m_shadowCount > 0)
+        gl->glUniform4fv(p.shadowRecords, GLsizei(m_shadowRecords.size() / 4), m_shadowRecords.data());
     if (!clustered) return;
     const GLuint id = p.program->programId();
     gl->glUniform1i(gl->glGetUniformLocation(id, "uGlobalLightCount"), m_clusterGlobal);

@@ -18,6 +18,7 @@
 namespace lr::render {
 
 struct MeshProgram;
+struct ShadowView;
 
 // Where lighting.glsl's single-inversesqrt light direction stops being exact is |toLight| = 1e15; a
 // decade of margin covers the float rounding of the view-space positions.
@@ -34,8 +35,14 @@ class LightSet {
 
     // Prepares and uploads every enabled light that can reach the scene, for `view`, when the rig or the
     // view changed since the last upload. Sets stats->lightsUploaded and lightBytesUploaded.
+    // `shadows` (planShadows for this rig and model): each caster's kShadowTexels vec4s (view -> light
+    // matrices for this view) become the uShadowRecords uniforms, and its light's texel 1.w (the type)
+    // gains kShadowSlotScale × (slot + 1).
+    // `reach`: the sphere lights are culled against (the model's and the ground's; nullptr: `frame`).
     void update(QOpenGLFunctions_3_3_Core* gl, const SceneFrame& frame, const glm::dmat4& view,
-                RenderStats* stats);
+                RenderStats* stats, const std::vector<ShadowView>* shadows = nullptr,
+                const SceneFrame* reach = nullptr);
+    int shadowCount() const { return m_shadowCount; }
     int count() const { return m_count; }
     // Whether an uploaded point or spot light may be kFarLightDistance or more from the model's bounding
     // sphere in view space (or its bound is not finite): physically based programs then rescale the
@@ -60,9 +67,11 @@ class LightSet {
     int m_count = 0;
     bool m_farLights = false;
     GLuint m_buffer = 0, m_texture = 0;
-    std::vector<float> m_packed;       // what the buffer holds, to upload only what changed
-    int m_capacity = 0;                // lights the buffer holds
-    std::vector<LightBounds> m_bounds; // per uploaded light, view space
+    std::vector<float> m_packed;        // what the buffer holds, to upload only what changed
+    int m_capacity = 0;                 // texels the buffer holds
+    int m_shadowCount = 0;              // casters with a record
+    std::vector<float> m_shadowRecords; // kShadowTexels vec4s per caster, for this view
+    std::vector<LightBounds> m_bounds;  // per uploaded light, view space
     int m_boundedLights = 0;
     ClusterBuffers m_clusters;
     glm::vec4 m_clusterUniforms{0.0f}; // tile scale x, y, near, slice scale

@@ -4,6 +4,7 @@
 #include "passes.h"
 #include "programcache.h"
 #include "shadergen.h"
+#include "shadowmaps.h"
 #include "targets.h"
 #include "textureunits.h"
 
@@ -20,8 +21,9 @@ const char* GeometryPass::name() const {
 }
 
 PassResources GeometryPass::reads() const {
-    return m_output == Output::GBuffer ? PassResources(0)
-                                       : PassResources(resource::Lights | resource::Clusters);
+    return m_output == Output::GBuffer
+               ? PassResources(0)
+               : PassResources(resource::Lights | resource::Clusters | resource::ShadowMaps);
 }
 
 PassResources GeometryPass::writes() const {
@@ -66,14 +68,23 @@ bool GeometryPass::run(const FrameContext& frame, PassScene& scene) {
             order.emplace_back(meshKey(frame, scene, d, output, clustered, shaded), &d);
     std::stable_sort(order.begin(), order.end(),
                      [](const auto& a, const auto& b) { return a.first.bits() < b.first.bits(); });
-    return drawMeshes(frame, scene, order, clustered, false);
+    bool ok = drawMeshes(frame, scene, order, clustered, false);
+    // A visible ground is one more opaque surface (in the G-buffer too); a catcher is the catcher pass's.
+    if (scene.ground && scene.groundMode == GroundMode::Visible) {
+        DrawOrder ground;
+        for (const GpuDraw& d : scene.ground->draws())
+            ground.emplace_back(meshKey(frame, scene, d, output, clustered, shaded, scene.ground), &d);
+        ok = drawMeshes(frame, scene, ground, clustered, false, scene.ground) && ok;
+    }
+    return ok;
 }
 
 FeatureKey MeshPass::meshKey(const FrameContext& frame, const PassScene& scene, const GpuDraw& d,
-                             ShaderOutput output, bool clustered, const RigFeatures& shaded) const {
+                             ShaderOutput output, bool clustered, const RigFeatures& shaded,
+                             const GpuModel* source) const {
     const RenderSettings& settings = *frame.settings;
     const Rig& rig = *scene.rig;
-    const Model* model = scene.model->model();
+    const Model* model = (source ? source : scene.model)->model();
     const bool gpass = output == ShaderOutput::GBuffer;
     FeatureKey key;
     if (!gpass) key.rig = shaded;     // the G-pass does no lighting,
@@ -100,14 +111,14 @@ FeatureKey MeshPass::meshKey(const FrameContext& frame, const PassScene& scene, 
 
 bool MeshPass::drawMeshes(const FrameContext& frame, PassScene& scene,
                           const std::vector<std::pair<FeatureKey, const GpuDraw*>>& order, bool clustered,
-                          bool blended) {
+                          bool blended, const GpuModel* source) {
     const RenderSettings& settings = *frame.settings;
     const Rig& rig = *scene.rig;
-    const Model* model = scene.model->model();
+    const Model* model = (source ? source : scene.model)->model();
     const glm::dmat4 modelView = frame.view * glm::translate(glm::dmat4(1.0), model->origin);
     const glm::mat4 mv(modelView), proj(frame.projection);
     const glm::mat3 normalMatrix(glm::transpose(glm::inverse(glm::dmat3(modelView))));
-    const bool useProxies = settings.interactive && scene.mutableModel->updateProxies(this);
+    const bool useProxies = !source && settings.interactive && scene.mutableModel->updateProxies(this);
 
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
@@ -122,6 +133,7 @@ bool MeshPass::drawMeshes(const FrameContext& frame, PassScene& scene,
     glFrontFace(GL_CCW);
     glCullFace(GL_BACK);
     scene.lights->bind(this, clustered);
+    if (scene.shadows) scene.shadows->bind(this);
     bool ok = true;
     MeshProgram* current = nullptr;
     const Material defaultMaterial;
@@ -191,6 +203,7 @@ bool MeshPass::drawMeshes(const FrameContext& frame, PassScene& scene,
         glBindSampler(GLuint(TextureUnit::BaseColor) + GLuint(i), 0);
     glBindSampler(GLuint(TextureUnit::MetalRough), 0);
     glBindSampler(GLuint(TextureUnit::Occlusion), 0);
+    if (scene.shadows) scene.shadows->unbind(this);
     glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);

@@ -4,6 +4,7 @@
 #include "passes.h"
 #include "programcache.h"
 #include "shadergen.h"
+#include "shadowmaps.h"
 #include "targets.h"
 #include "textureunits.h"
 
@@ -62,6 +63,7 @@ bool DeferredLightingPass::run(const FrameContext& frame, PassScene& scene) {
     scene.lights->setUniforms(this, *p, frame.shade, key.clustered);
     if (p->exposureScale >= 0) glUniform1f(p->exposureScale, frame.exposureScale);
     scene.lights->bind(this, key.clustered);
+    if (scene.shadows) scene.shadows->bind(this);
     for (int i = 0; i < kGBufferTargets; ++i) {
         glActiveTexture(textureUnit(TextureUnit::GBuffer0, i));
         glBindTexture(GL_TEXTURE_2D, targets.gbuffer[i]);
@@ -74,7 +76,7 @@ bool DeferredLightingPass::run(const FrameContext& frame, PassScene& scene) {
     glDisable(GL_BLEND);
     // Only the model's screen rectangle: a software rasteriser runs the shader for background blocks too,
     // even where the depth test rejects every pixel.
-    const QRect scissor = screenBounds(model->bounds, frame.projection * frame.view, frame.targetSize);
+    const QRect scissor = screenBounds(scene.drawnBounds, frame.projection * frame.view, frame.targetSize);
     glEnable(GL_SCISSOR_TEST);
     glScissor(scissor.x(), scissor.y(), scissor.width(), scissor.height());
     glBindVertexArray(scene.emptyVao);
@@ -83,6 +85,7 @@ bool DeferredLightingPass::run(const FrameContext& frame, PassScene& scene) {
     glDisable(GL_SCISSOR_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
+    if (scene.shadows) scene.shadows->unbind(this);
     p->program->release();
     return true;
 }

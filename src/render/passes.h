@@ -2,11 +2,15 @@
 // are PassResource bits (renderpass.h).
 //
 //   pass                 file                 reads                         writes
+//   shadow               pass_shadow.cpp      (the rig, the model)          shadow maps (changed ones only)
 //   geometry (G-buffer)  pass_geometry.cpp    lights                        G-buffer, scene depth
 //   geometry (shaded)    pass_geometry.cpp    lights, clusters              scene colour, scene depth
 //   deferred lighting    pass_lighting.cpp    G-buffer, scene depth, ...    scene colour
 //   blend                pass_blend.cpp       lights, clusters, scene       scene colour (alphaMode BLEND)
 //                                             colour and depth
+//   shadow catcher       pass_catcher.cpp     lights, shadow maps, scene    scene colour (the ground's
+//                                             colour and depth              shadows only)
+// Every lit pass also reads the shadow maps.
 //   resolve              pass_resolve.cpp     scene colour, scene depth     resolved (single-sample)
 //   present              pass_resolve.cpp     scene colour                  output (display path)
 //   tone map             pass_tonemap.cpp     resolved                      output (HDR path)
@@ -28,11 +32,24 @@ struct GpuDraw;
 class MeshPass : public RenderPass {
   protected:
     using DrawOrder = std::vector<std::pair<FeatureKey, const GpuDraw*>>;
+    // `source`: the model whose draw `d` is (the scene's, or the ground's).
     FeatureKey meshKey(const FrameContext& frame, const PassScene& scene, const GpuDraw& d,
-                       ShaderOutput output, bool clustered, const RigFeatures& shaded) const;
+                       ShaderOutput output, bool clustered, const RigFeatures& shaded,
+                       const GpuModel* source = nullptr) const;
     // blended: depth test without depth writes, premultiplied "over" (GL_ONE, GL_ONE_MINUS_SRC_ALPHA).
+    // `source`: whose draws these are (nullptr: the scene's model).
     bool drawMeshes(const FrameContext& frame, PassScene& scene, const DrawOrder& order, bool clustered,
-                    bool blended);
+                    bool blended, const GpuModel* source = nullptr);
+};
+
+// Renders the depth maps of the casting lights whose map changed (shadowmaps.h): first in the chain, in
+// the plan when some light casts (PlanKey::shadows).
+class ShadowPass final : public RenderPass {
+  public:
+    const char* name() const override { return "shadow"; }
+    PassResources reads() const override { return 0; }
+    PassResources writes() const override { return resource::ShadowMaps; }
+    bool run(const FrameContext& frame, PassScene& scene) override;
 };
 
 // Draws the model: its surfaces into the G-buffer (deferred path, renderGBuffer) or shaded into the scene
@@ -57,7 +74,8 @@ class DeferredLightingPass final : public RenderPass {
   public:
     const char* name() const override { return "deferred lighting"; }
     PassResources reads() const override {
-        return resource::Lights | resource::Clusters | resource::GBuffer | resource::SceneDepth;
+        return resource::Lights | resource::Clusters | resource::GBuffer | resource::SceneDepth |
+               resource::ShadowMaps;
     }
     PassResources writes() const override { return resource::SceneColor; }
     bool run(const FrameContext& frame, PassScene& scene) override;
@@ -72,7 +90,22 @@ class BlendPass final : public MeshPass {
   public:
     const char* name() const override { return "blend"; }
     PassResources reads() const override {
-        return resource::Lights | resource::Clusters | resource::SceneColor | resource::SceneDepth;
+        return resource::Lights | resource::Clusters | resource::SceneColor | resource::SceneDepth |
+               resource::ShadowMaps;
+    }
+    PassResources writes() const override { return resource::SceneColor; }
+    bool run(const FrameContext& frame, PassScene& scene) override;
+};
+
+// The ground as a shadow catcher (Rig::ground Catcher): invisible except for its shadows. Shaded forward
+// after the opaque surfaces of either path, depth-tested without writing depth, it writes black with
+// alpha = the shadow's opacity (premultiplied "over"): over an opaque background it darkens it, in a
+// transparent image the shadow is the alpha. In the plan when the ground catches (PlanKey::catcher).
+class CatcherPass final : public MeshPass {
+  public:
+    const char* name() const override { return "shadow catcher"; }
+    PassResources reads() const override {
+        return resource::Lights | resource::SceneColor | resource::SceneDepth | resource::ShadowMaps;
     }
     PassResources writes() const override { return resource::SceneColor; }
     bool run(const FrameContext& frame, PassScene& scene) override;

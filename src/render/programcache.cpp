@@ -49,7 +49,7 @@ std::unique_ptr<QOpenGLShaderProgram> ProgramCache::build(const QByteArray& prel
     // Each file gets a #line with its own source-string number, so a log line "2:14(3)" points at line 14
     // of the second file listed in the message.
     QStringList legend;
-    auto assemble = [&](const std::array<const char*, 4>& files, QString* missing) {
+    auto assemble = [&](const std::array<const char*, 5>& files, QString* missing) {
         QByteArray text = prelude;
         for (const char* name : files) {
             if (!name) break;
@@ -114,6 +114,8 @@ MeshProgram* ProgramCache::meshProgram(const FeatureKey& key, QString* error) {
     mp->ambient = p->uniformLocation("uAmbient");
     mp->distanceScale = p->uniformLocation("uDistanceScale");
     mp->lightCount = p->uniformLocation("uLightCount");
+    mp->shadowCount = p->uniformLocation("uShadowCount");
+    mp->shadowRecords = p->uniformLocation("uShadowRecords");
     mp->exposureScale = p->uniformLocation("uExposureScale");
     mp->normalScale = p->uniformLocation("uNormalScale");
     mp->alphaCutoff = p->uniformLocation("uAlphaCutoff");

@@ -18,21 +18,24 @@ namespace lr::render {
 // A named shader configuration (TrenchBroom's idea): which files make each stage.
 struct ShaderConfig {
     const char* name;
-    std::array<const char*, 4> vertex{}; // files under :/shaders/, in order; nullptr ends the list
-    std::array<const char*, 4> fragment{};
+    std::array<const char*, 5> vertex{}; // files under :/shaders/, in order; nullptr ends the list
+    std::array<const char*, 5> fragment{};
 };
 
+// shadows.glsl is empty unless the key casts shadows (LR_SHADOWS).
 inline constexpr ShaderConfig kMeshShader{
-    "mesh", {"mesh.vert"}, {"lighting.glsl", "cluster.glsl", "gbuffer.glsl", "mesh.frag"}};
+    "mesh", {"mesh.vert"}, {"lighting.glsl", "shadows.glsl", "cluster.glsl", "gbuffer.glsl", "mesh.frag"}};
 // The fast tier lights the vertices.
 inline constexpr ShaderConfig kVertexLitMeshShader{
     "mesh, vertex-lit",
-    {"lighting.glsl", "mesh.vert"},
-    {"lighting.glsl", "cluster.glsl", "gbuffer.glsl", "mesh.frag"}};
+    {"lighting.glsl", "shadows.glsl", "mesh.vert"},
+    {"lighting.glsl", "shadows.glsl", "cluster.glsl", "gbuffer.glsl", "mesh.frag"}};
 inline constexpr ShaderConfig kDeferredLightingShader{
     "deferred lighting",
     {"fullscreen.vert"},
-    {"lighting.glsl", "cluster.glsl", "gbuffer.glsl", "deferred.frag"}};
+    {"lighting.glsl", "shadows.glsl", "cluster.glsl", "gbuffer.glsl", "deferred.frag"}};
+// Depth only, into a shadow map (shadowmaps.h): uLightMatrix = the light's clip from model positions.
+inline constexpr ShaderConfig kShadowDepthShader{"shadow depth", {"shadow.vert"}, {"shadow.frag"}};
 inline constexpr ShaderConfig kToneMapShader{
     "tone map", {"fullscreen.vert"}, {"lighting.glsl", "tonemap.frag"}};
 inline constexpr ShaderConfig kOverlayShader{"overlay", {"gizmo.vert"}, {"lighting.glsl", "gizmo.frag"}};
@@ -46,7 +49,9 @@ struct MeshProgram {
     int modelView = -1, normalMatrix = -1, projection = -1;
     int baseColor = -1, emissive = -1, specular = -1, shininess = -1, ambient = -1, distanceScale = -1;
     int lightCount = -1;
-    int exposureScale = -1;                                    // display output only
+    int shadowCount = -1;   // LR_SHADOWS: casters
+    int shadowRecords = -1; // LR_SHADOWS: their records (shadowmaps.h kShadowTexels vec4s each)
+    int exposureScale = -1; // display output only
     int metallic = -1, roughness = -1, occlusionStrength = -1; // LR_PBR only
     int normalScale = -1, alphaCutoff = -1;
     // KHR_texture_transform's mat3 per texture role (LR_TEXTURE_TRANSFORM), in TextureRole's order.

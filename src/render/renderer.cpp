@@ -4,10 +4,12 @@
 #include "framecontext.h"
 #include "gpumodel.h"
 #include "gputimer.h"
+#include "groundmesh.h"
 #include "lightset.h"
 #include "programcache.h"
 #include "readback.h"
 #include "renderplan.h"
+#include "shadowmaps.h"
 #include "targets.h"
 
 #include <QElapsedTimer>
@@ -39,7 +41,8 @@ glm::dmat4 tileProjection(const ViewCamera& cam, QSize size, const QRect& tile) 
 Renderer::Renderer()
     : m_programs(std::make_unique<ProgramCache>()), m_model(std::make_unique<GpuModel>()),
       m_lights(std::make_unique<LightSet>()), m_targets(std::make_unique<Targets>()),
-      m_plan(std::make_unique<RenderPlan>()), m_timer(std::make_unique<GpuTimer>()) {}
+      m_plan(std::make_unique<RenderPlan>()), m_timer(std::make_unique<GpuTimer>()),
+      m_shadows(std::make_unique<ShadowMaps>()), m_ground(std::make_unique<GpuModel>()) {}
 
 Renderer::~Renderer() {
     if (!m_initialized) return;
@@ -81,6 +84,7 @@ bool Renderer::initialize(QString* error) {
     m_maxTargetSize = std::min({maxRenderbuffer, maxTexture, maxViewport[0], maxViewport[1]});
 
     m_lights->initialize(this);
+    m_shadows->initialize(this);
     // F4 (fast tier): bilinear filtering within the nearest mip level instead of trilinear between two,
     // ~20% of DamagedHelmet's frame on llvmpipe (three 2048² textures); its error is measured with the rest.
     glGenSamplers(1, &m_fastSampler);
@@ -115,6 +119,9 @@ void Renderer::releaseResources() {
     m_model->release(this);
     m_targets->release(this);
     m_lights->release(this);
+    m_shadows->release(this);
+    m_ground->release(this);
+    m_groundGeneration = -1;
     m_plan->release();
     m_timer->release(this);
     glDeleteSamplers(1, &m_fastSampler);
@@ -131,6 +138,7 @@ bool Renderer::setModel(std::shared_ptr<const Model> model) {
     m_lights->invalidate();
     if (!m_initialized) return fail(QStringLiteral("setModel before initialize"));
     QString error;
+    ++m_modelGeneration;
     const bool ok = m_model->upload(this, std::move(model), &error);
     m_stats.triangles = m_model->model() ? qint64(m_model->model()->triangleCount()) : 0;
     return ok || fail(error);
@@ -169,9 +177,31 @@ SceneFrame Renderer::sceneFrame() const {
     return {b.center(), b.radius()};
 }
 
+Bounds Renderer::drawnBounds() const {
+    return m_model->model() ? render::drawnBounds(bounds(), rig().ground) : bounds();
+}
+
 ViewCamera Renderer::effectiveCamera(const ViewCamera& camera) const {
-    const SceneFrame f = sceneFrame();
-    return camera.withClipPlanes(f.center, f.radius);
+    const Bounds b = drawnBounds(); // the ground too, when it is drawn
+    return camera.withClipPlanes(b.center(), b.radius());
+}
+
+bool Renderer::updateGround() {
+    const Ground& g = rig().ground;
+    const Model* model = m_model->model();
+    if (!model || g.mode == GroundMode::Off) {
+        if (m_ground->model()) m_ground->release(this);
+        m_groundGeneration = -1;
+        return true;
+    }
+    if (m_ground->model() && m_groundGeneration == m_modelGeneration && m_groundUploaded.color == g.color)
+        return true;
+    QString error;
+    auto mesh = std::make_shared<Model>(groundModel(groundPlane(model->bounds), g));
+    if (!m_ground->upload(this, std::move(mesh), &error)) return fail(error);
+    m_groundUploaded = g;
+    m_groundGeneration = m_modelGeneration;
+    return true;
 }
 
 bool Renderer::ensureTargets(QSize size, int samples, GLenum colorFormat) {
@@ -221,7 +251,13 @@ PassScene Renderer::passScene() {
     s.rig = &rig();
     s.frame = sceneFrame();
     s.bounds = bounds();
+    s.drawnBounds = drawnBounds();
     s.stats = &m_stats;
+    s.shadowViews = &m_shadowViews;
+    s.shadows = m_shadows.get();
+    s.modelGeneration = m_modelGeneration;
+    s.ground = m_ground->model() ? m_ground.get() : nullptr;
+    s.groundMode = rig().ground.mode;
     s.emptyVao = m_emptyVao;
     s.fastSampler = m_fastSampler;
     return s;
@@ -236,7 +272,21 @@ bool Renderer::render(const ViewCamera& camera, QSize size, const RenderSettings
     FrameContext frame = frameContext(camera, size, settings, tile);
     frame.outputFbo = targetFbo;
     m_stats.lightsInRig = int(rig().lights.size());
-    m_lights->update(this, sceneFrame(), frame.view, &m_stats);
+    if (!updateGround()) return false;
+    m_shadowViews = m_model->model() ? planShadows(rig(), sceneFrame(), bounds()) : std::vector<ShadowView>();
+    if (const auto casting = std::count_if(rig().lights.begin(), rig().lights.end(),
+                                           [](const Light& l) { return l.hasShadow(); });
+        casting > kMaxShadowCasters && !m_warnedCasters) {
+        qCWarning(lcRender).noquote()
+            << QStringLiteral("%1 lights cast shadows; at most %2 can: the first %2 in "
+                              "the rig's order cast, the others light without shadow")
+                   .arg(casting)
+                   .arg(kMaxShadowCasters);
+        m_warnedCasters = true;
+    }
+    const Bounds reach = drawnBounds();
+    const SceneFrame reachSphere{reach.center(), reach.radius()};
+    m_lights->update(this, sceneFrame(), frame.view, &m_stats, &m_shadowViews, &reachSphere);
     const int samples = frame.fast ? 0 : settings.msaaSamples;
     const bool wantDeferred =
         !frame.fast && (settings.shadingPath == ShadingPath::Deferred ||
@@ -262,7 +312,11 @@ bool Renderer::render(const ViewCamera& camera, QSize size, const RenderSettings
     const auto& draws = m_model->draws();
     const bool blend = std::any_of(draws.begin(), draws.end(),
                                    [](const render::GpuDraw& d) { return d.features.alphaBlend; });
-    m_plan->select({frame.deferred, hdr, frame.samples > 1, frame.overlays, blend});
+    const bool shadows = !m_shadowViews.empty();
+    const bool catcher = m_ground->model() && rig().ground.mode == GroundMode::Catcher;
+    if (!shadows)
+        m_shadows->update(this, m_shadowViews, *m_model, m_modelGeneration, 0, -1, &m_stats, &error);
+    m_plan->select({frame.deferred, hdr, frame.samples > 1, frame.overlays, blend, shadows, catcher});
     m_stats.renderPlanBuilds = m_plan->builds();
     PassScene scene = passScene();
     const bool ok = m_plan->run(frame, scene) || fail(scene.error);
@@ -294,7 +348,11 @@ bool Renderer::renderGBuffer(const ViewCamera& camera, QSize size, const RenderS
     const GLenum format = m_targets->colorFormat ? m_targets->colorFormat : GLenum(GL_RGBA8);
     if (!ensureTargets(target, 0, format)) return false;
     if (!m_targets->createGBuffer(this, &error)) return fail(error);
-    m_lights->update(this, sceneFrame(), frame.view, &m_stats);
+    if (!updateGround()) return false;
+    m_shadowViews = m_model->model() ? planShadows(rig(), sceneFrame(), bounds()) : std::vector<ShadowView>();
+    const Bounds reach = drawnBounds();
+    const SceneFrame reachSphere{reach.center(), reach.radius()};
+    m_lights->update(this, sceneFrame(), frame.view, &m_stats, &m_shadowViews, &reachSphere);
     glClearDepth(1.0);
     glDepthMask(GL_TRUE);
     PassScene scene = passScene();

@@ -45,6 +45,8 @@ class GpuModel;
 class LightSet;
 class RenderPlan;
 class GpuTimer;
+class ShadowMaps;
+struct ShadowView;
 struct Targets;
 struct FrameContext;
 struct PassScene;
@@ -75,6 +77,9 @@ class Renderer : protected QOpenGLFunctions_3_3_Core {
     // model).
     SceneFrame sceneFrame() const;
     Bounds bounds() const;
+    // The model's bounds grown by the ground (Rig::ground) when it is drawn: the camera's automatic clip
+    // planes enclose this.
+    Bounds drawnBounds() const;
 
     // Renders into targetFbo (0: the default framebuffer), which must be at least `size` (or tile.size()).
     // `tile`, when valid, is the part of a size-pixel image to draw (image coordinates, top-left origin);
@@ -109,6 +114,8 @@ class Renderer : protected QOpenGLFunctions_3_3_Core {
     render::FrameContext frameContext(const ViewCamera& camera, QSize size, const RenderSettings& settings,
                                       const QRect& tile) const;
     render::PassScene passScene();
+    // Per frame: the ground's mesh (rebuilt when the model or the ground changed), the shadow views.
+    bool updateGround();
 
     bool m_initialized = false;
     QOpenGLContext* m_context = nullptr;
@@ -121,8 +128,15 @@ class Renderer : protected QOpenGLFunctions_3_3_Core {
     std::unique_ptr<render::Targets> m_targets;
     std::unique_ptr<render::RenderPlan> m_plan;
     std::unique_ptr<render::GpuTimer> m_timer;
-    GLuint m_fastSampler = 0; // the fast tier's texture filtering (F4)
-    GLuint m_emptyVao = 0;    // full-screen triangles
+    std::unique_ptr<render::ShadowMaps> m_shadows;
+    std::unique_ptr<render::GpuModel> m_ground; // the ground's mesh; empty when the ground is off
+    Ground m_groundUploaded;                    // what m_ground was built for
+    int m_groundGeneration = -1;                // ... over which model
+    std::vector<render::ShadowView> m_shadowViews;
+    int m_modelGeneration = 0;    // every setModel: shadow maps re-render
+    bool m_warnedCasters = false; // more than kMaxShadowCasters casting lights was logged once
+    GLuint m_fastSampler = 0;     // the fast tier's texture filtering (F4)
+    GLuint m_emptyVao = 0;        // full-screen triangles
     int m_maxSamples = 0, m_maxTargetSize = 0;
 };
 

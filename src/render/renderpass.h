@@ -12,6 +12,7 @@
 
 #include <QOpenGLFunctions_3_3_Core>
 #include <QString>
+#include <vector>
 
 namespace lr::render {
 
@@ -25,6 +26,9 @@ enum : unsigned {
     SceneDepth = 1u << 4,
     Resolved = 1u << 5, // single-sample scene colour and depth (MSAA resolved where needed)
     Output = 1u << 6,   // the caller's framebuffer
+    // The casting lights' depth maps (shadowmaps.h), written by the shadow pass when some light casts;
+    // without casters nothing samples them, and the lit passes' read of them is void (RenderPlan::check).
+    ShadowMaps = 1u << 7,
 };
 } // namespace resource
 using PassResources = unsigned;
@@ -33,6 +37,8 @@ QString describeResources(PassResources r); // "scene-color+scene-depth"
 class ProgramCache;
 class GpuModel;
 class LightSet;
+class ShadowMaps;
+struct ShadowView;
 struct Targets;
 
 // What the passes share: the scene and the renderer's GL objects. Filled by Renderer once per frame.
@@ -44,7 +50,15 @@ struct PassScene {
     Targets* targets = nullptr;
     const Rig* rig = nullptr;
     SceneFrame frame;
-    Bounds bounds;
+    Bounds bounds;      // the model's
+    Bounds drawnBounds; // the model's and the ground's (when drawn): the deferred pass's scissor
+    // Shadows: the casting lights' maps this frame (planShadows) and their cache; the ground (a one-mesh
+    // model, nullptr when Rig::ground is off) and how it is drawn.
+    const std::vector<ShadowView>* shadowViews = nullptr;
+    ShadowMaps* shadows = nullptr;
+    int modelGeneration = 0; // changes with every setModel: the maps re-render
+    const GpuModel* ground = nullptr;
+    GroundMode groundMode = GroundMode::Off;
     RenderStats* stats = nullptr;
     GLuint emptyVao = 0;    // for full-screen triangles
     GLuint fastSampler = 0; // the fast tier's texture filtering (F4)

@@ -2,6 +2,7 @@
 
 #include <QLoggingCategory>
 #include <QStringList>
+#include <algorithm>
 
 Q_LOGGING_CATEGORY(lcPlan, "lightrig.render.plan", QtInfoMsg)
 
@@ -9,7 +10,7 @@ namespace lr::render {
 
 QString describeResources(PassResources r) {
     static const char* const names[] = {"lights",      "clusters", "g-buffer", "scene-color",
-                                        "scene-depth", "resolved", "output"};
+                                        "scene-depth", "resolved", "output",   "shadow-maps"};
     QStringList out;
     for (int i = 0; i < int(std::size(names)); ++i)
         if (r & (1u << i)) out << QLatin1String(names[i]);
@@ -20,15 +21,17 @@ RenderPlan::RenderPlan() = default;
 RenderPlan::~RenderPlan() = default;
 
 bool RenderPlan::initialize() {
-    for (RenderPass* p : std::initializer_list<RenderPass*>{&m_gbuffer, &m_shaded, &m_lighting, &m_blend,
-                                                            &m_resolve, &m_present, &m_toneMap, &m_overlay})
+    for (RenderPass* p :
+         std::initializer_list<RenderPass*>{&m_shadow, &m_gbuffer, &m_shaded, &m_lighting, &m_blend,
+                                            &m_catcher, &m_resolve, &m_present, &m_toneMap, &m_overlay})
         if (!p->initialize()) return false;
     return true;
 }
 
 void RenderPlan::release() {
-    for (RenderPass* p : std::initializer_list<RenderPass*>{&m_gbuffer, &m_shaded, &m_lighting, &m_blend,
-                                                            &m_resolve, &m_present, &m_toneMap, &m_overlay})
+    for (RenderPass* p :
+         std::initializer_list<RenderPass*>{&m_shadow, &m_gbuffer, &m_shaded, &m_lighting, &m_blend,
+                                            &m_catcher, &m_resolve, &m_present, &m_toneMap, &m_overlay})
         p->release();
     m_passes.clear();
     m_hasKey = false;
@@ -40,13 +43,16 @@ const std::vector<RenderPass*>& RenderPlan::select(const PlanKey& key) {
     m_hasKey = true;
     ++m_builds;
     m_passes.clear();
-    // A shadow pass goes first (it writes shadow maps the geometry or lighting pass reads).
+    // The shadow pass goes first (it writes shadow maps the geometry or lighting pass reads).
+    if (key.shadows) m_passes.push_back(&m_shadow);
     if (key.deferred) {
         m_passes.push_back(&m_gbuffer);
         m_passes.push_back(&m_lighting);
     } else {
         m_passes.push_back(&m_shaded);
     }
+    // The catcher's shadows over the opaque surfaces and the background, before anything blended.
+    if (key.catcher) m_passes.push_back(&m_catcher);
     // Blended meshes after all opaque ones, shaded forward whatever the path.
     if (key.blend) m_passes.push_back(&m_blend);
     // An environment pass (sky behind the model) goes here: after the surfaces, depth-tested against the
@@ -76,6 +82,10 @@ QString RenderPlan::describe() const {
 
 QString RenderPlan::check(const std::vector<RenderPass*>& passes, bool msaa) {
     PassResources available = resource::Lights | resource::Clusters;
+    // Without a shadow pass no light casts: the lit passes' shaders sample no map (nothing to wait for).
+    if (std::none_of(passes.begin(), passes.end(),
+                     [](const RenderPass* p) { return p->writes() & resource::ShadowMaps; }))
+        available |= resource::ShadowMaps;
     QStringList problems;
     for (const RenderPass* p : passes) {
         if (const PassResources missing = p->reads() & ~available)

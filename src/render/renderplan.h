@@ -1,6 +1,7 @@
 // The chain of render passes for a kind of frame (f3d's idea): rebuilt only when the PlanKey changes
-// (shading path, colour path, MSAA, overlays, blended meshes), not every frame. Every pass's reads must be
-// written by an earlier pass or be inputs (the light set's Lights and Clusters); check() says which are not.
+// (shading path, colour path, MSAA, overlays, blended meshes, shadows, a shadow catcher), not every frame.
+// Every pass's reads must be written by an earlier pass or be inputs (the light set's Lights and Clusters);
+// check() says which are not.
 #pragma once
 
 #include "passes.h"
@@ -16,7 +17,9 @@ struct PlanKey {
     bool hdr = false;
     bool msaa = false; // the scene target is multisampled
     bool overlays = false;
-    bool blend = false; // the model has alphaMode BLEND meshes (the blend pass)
+    bool blend = false;   // the model has alphaMode BLEND meshes (the blend pass)
+    bool shadows = false; // some light casts (the shadow pass)
+    bool catcher = false; // the ground is a shadow catcher (the catcher pass)
     bool operator==(const PlanKey&) const = default;
 };
 
@@ -38,6 +41,8 @@ class RenderPlan {
     GeometryPass& gbufferPass() { return m_gbuffer; }                        // Renderer::renderGBuffer
 
   private:
+    ShadowPass m_shadow;
+    CatcherPass m_catcher;
     GeometryPass m_gbuffer{GeometryPass::Output::GBuffer};
     GeometryPass m_shaded{GeometryPass::Output::Shaded};
     DeferredLightingPass m_lighting;

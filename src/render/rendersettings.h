@@ -75,6 +75,13 @@ struct RenderStats {
     qint64 lightBytesUploaded = 0; // by the last light upload: only the texels that changed
     qint64 trianglesDrawn = 0;     // in the last frame (interaction proxies count their own)
     int renderPlanBuilds = 0; // pass chains built since initialize(): only when the kind of frame changes
+    // Shadows (shadowmaps.h): casting lights this frame, the maps (lights) and layers (a point light's six
+    // faces each) re-rendered by this frame, and the map array's size (0 without casters).
+    int shadowCasters = 0;
+    int shadowMapsRendered = 0;
+    int shadowLayersRendered = 0;
+    qint64 shadowMapBytes = 0;
+    double shadowMapMs = 0.0; // wall time of this frame's map renders, waited for (0: none rendered)
 };
 
 } // namespace lr

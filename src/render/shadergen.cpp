@@ -1,5 +1,7 @@
 #include "shadergen.h"
 
+#include "shadowmaps.h"
+
 #include <QStringList>
 #include <cmath>
 
@@ -92,6 +94,8 @@ std::uint64_t FeatureKey::bits() const {
     put(shininessInt, keybits::kShininessInt);
     put(approximations, keybits::kApproximations);
     put(unsigned(toneMap), keybits::kToneMap);
+    put(rig.shadows, 1);
+    put(material.shadowCatcher, 1);
     return b;
 }
 
@@ -106,6 +110,7 @@ QString FeatureKey::describe() const {
     if (rig.lightAmbient) parts << QStringLiteral("light-ambient");
     if (rig.shading == ShadingModel::Pbr) parts << QStringLiteral("shading:pbr");
     if (rig.farLights) parts << QStringLiteral("far-lights");
+    if (rig.shadows) parts << QStringLiteral("shadows");
     QStringList tex;
     if (material.baseColorTexture) tex << QStringLiteral("base");
     if (material.normalMap) tex << QStringLiteral("normal");
@@ -118,6 +123,7 @@ QString FeatureKey::describe() const {
     if (material.textureTransform) parts << QStringLiteral("texture-transform");
     if (material.alphaMask) parts << QStringLiteral("alpha:mask");
     if (material.alphaBlend) parts << QStringLiteral("alpha:blend");
+    if (material.shadowCatcher) parts << QStringLiteral("shadow-catcher");
     parts << QStringLiteral("quality:") + toString(quality);
     if (output == ShaderOutput::GBuffer) parts << QStringLiteral("gbuffer");
     if (clustered) parts << QStringLiteral("clustered");
@@ -156,6 +162,7 @@ RigFeatures rigFeatures(const Rig& rig) {
     f.viewer = f.shading == ShadingModel::Pbr ? ViewerModel::Local : rig.shading.viewer;
     for (const Light& l : rig.lights) {
         if (!l.enabled) continue;
+        if (l.hasShadow()) f.shadows = true;
         f.lightTypes |= bit(l.type);
         if (l.usesFalloff()) f.falloffs |= bit(l.falloff.model);
         if (l.usesCone()) f.cones |= bit(l.cone.model);
@@ -229,6 +236,12 @@ QByteArray shaderPrelude(const FeatureKey& key) {
     if (key.material.textureTransform) out += "#define LR_TEXTURE_TRANSFORM 1\n";
     if (key.material.alphaMask) out += "#define LR_ALPHA_MASK 1\n";
     if (key.material.alphaBlend) out += "#define LR_ALPHA_BLEND 1\n";
+    // Shadows (shaders/shadows.glsl) only where some light casts: other preludes are unchanged.
+    if (key.rig.shadows)
+        out += "#define LR_SHADOWS 1\n#define LR_SHADOW_TEXELS " + QByteArray::number(kShadowTexels) +
+               "\n#define LR_MAX_SHADOW_CASTERS " + QByteArray::number(kMaxShadowCasters) +
+               "\n#define LR_SHADOW_SLOT_SCALE " + QByteArray::number(kShadowSlotScale) + '\n';
+    if (key.material.shadowCatcher) out += "#define LR_SHADOW_CATCHER 1\n";
     if (pbr && key.material.metalRoughTexture) out += "#define LR_METAL_ROUGH_TEXTURE 1\n";
     if (pbr && key.material.occlusionTexture) out += "#define LR_OCCLUSION_TEXTURE 1\n";
     out += "#define LR_QUALITY_" + macroName(EnumNames<Quality>::names[size_t(key.quality)]) + " 1\n";

@@ -38,6 +38,10 @@ struct RigFeatures {
     // renderer sets it per frame from the light set's bound (LightSet::farLights()); rigFeatures() leaves
     // it false.
     bool farLights = false;
+    // Some light casts a shadow (Light::hasShadow; LR_SHADOWS): the lit programs sample the shadow maps
+    // with the key's quality tier's filter (shaders/shadows.glsl). Without it a program's text is what it
+    // was before shadows existed.
+    bool shadows = false;
     bool operator==(const RigFeatures&) const = default;
 };
 
@@ -57,6 +61,9 @@ struct MaterialFeatures {
     // them for classic rigs, so a classic program never sees them).
     bool metalRoughTexture = false;
     bool occlusionTexture = false;
+    // The ground as a shadow catcher (LR_SHADOW_CATCHER, pass_catcher.cpp): writes only its shadows'
+    // opacity. Set by the catcher pass, never by a model's material.
+    bool shadowCatcher = false;
     bool operator==(const MaterialFeatures&) const = default;
 };
 

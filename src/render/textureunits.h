@@ -19,6 +19,8 @@ enum class TextureUnit : GLuint {
     SceneDepth = 11, // the overlay pass's occlusion test (resolved depth)
     MetalRough = 12, // physically based material textures (mesh.frag, LR_PBR; GpuDraw's PBR textures)
     Occlusion = 13,
+    ShadowMaps = 14,   // the shadow-map array with its compare sampler (shadowmaps.h, shaders/shadows.glsl)
+    ShadowDepths = 15, // the same array with a raw-depth sampler (PCSS's blocker search)
 };
 
 constexpr int kMaterialTextureUnits = 3; // BaseColor, Normal, Emissive
@@ -48,10 +50,12 @@ inline constexpr SamplerBinding kSamplerBindings[] = {
     {"uSceneDepth", TextureUnit::SceneDepth},
     {"uMetalRoughTex", TextureUnit::MetalRough},
     {"uOcclusionTex", TextureUnit::Occlusion},
+    {"uShadowMaps", TextureUnit::ShadowMaps},
+    {"uShadowDepths", TextureUnit::ShadowDepths},
 };
 
 // GL 3.3 guarantees 16 texture image units per fragment stage.
-static_assert(GLuint(TextureUnit::Occlusion) < 16);
+static_assert(GLuint(TextureUnit::ShadowDepths) < 16);
 static_assert(GLuint(TextureUnit::GBuffer0) + 4 <= GLuint(TextureUnit::ClusterRanges));
 
 } // namespace lr::render

@@ -1,0 +1,2 @@
+// Shadow-map depth pass: depth only (the rasteriser writes it; glPolygonOffset adds the slope term).
+void main() {}

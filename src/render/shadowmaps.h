@@ -1,0 +1,103 @@
+// Shadow maps (issue 14; docs/lighting-models.md "Shadows", docs/architecture.md "Shadow maps").
+//
+// planShadows() (no GL) turns the rig's casting lights (Light::hasShadow(), the first kMaxShadowCasters in
+// rig order) into ShadowViews in world space: a spot light gets a perspective map, a directional light an
+// orthographic one, a point light six perspective faces (90°, slightly widened so filters near a face's
+// edge stay on it). Every map is fitted to the model's bounding sphere, never to the view, so orbiting
+// never re-renders one. The ground is not fitted: it casts nothing, and a receiver outside a map's
+// frustum cannot have the model between it and the light (the frustum contains the model's sphere as seen
+// from the light), so it reads the border depth (1: lit).
+//
+// ShadowMaps owns one GL_TEXTURE_2D_ARRAY of GL_DEPTH_COMPONENT32F layers (one per spot or directional
+// light, six per point light), all of one resolution (the largest a caster asks for, halved until the
+// array fits kMaxShadowBytes), and two sampler objects over it: a compare sampler (sampler2DArrayShadow,
+// LEQUAL, bilinear: 2×2 PCF per tap) and a raw one (PCSS's blocker search). A layer re-renders only when
+// its light's map (matrix, resolution, layer) or the model changed: dragging one light re-renders that
+// light's layers, orbiting none. No casters: no texture at all.
+#pragma once
+
+#include "core/prepare.h"
+#include "core/rig.h"
+#include "model/model.h"
+#include "rendersettings.h"
+
+#include <QOpenGLFunctions_3_3_Core>
+#include <array>
+#include <glm/mat4x4.hpp>
+#include <vector>
+
+namespace lr::render {
+
+class GpuModel;
+
+// The array never grows past this: the resolution is halved until it fits (docs: the limits).
+inline constexpr qint64 kMaxShadowBytes = qint64(512) << 20;
+// vec4s per caster in the uShadowRecords uniform array (layout in shaders/shadows.glsl): uniforms, not
+// texels of the light buffer, because a texelFetch costs a software rasteriser far more per pixel.
+inline constexpr int kShadowTexels = 7;
+// A casting light's slot + 1 rides on its type in the light buffer (texel 1.w = type + this × (slot + 1)),
+// so finding its shadow costs no extra fetch; a light without a shadow packs exactly as before.
+inline constexpr int kShadowSlotScale = 8;
+static_assert(kLightTypeCount <= kShadowSlotScale);
+// The cube faces' half-angle tangent is 1 + this many texels' worth (each side), so a filter kernel near
+// a face's edge still finds depths; the shader projects with the same value (ShadowView::tanHalf).
+inline constexpr double kCubeMarginTexels = 24.0;
+
+enum class ShadowKind { Perspective = 0, Orthographic = 1, Cube = 2 };
+
+struct ShadowView {
+    int rigIndex = -1; // the light in Rig::lights
+    ShadowKind kind = ShadowKind::Perspective;
+    int layer = 0;       // first layer in the array (a cube uses six)
+    int resolution = 0;  // texels per side (the array's)
+    glm::dmat4 viewProj; // world -> light clip (perspective, orthographic)
+    glm::dvec3 position; // world: the light (cube), the eye (perspective)
+    double znear = 0.0, zfar = 1.0;
+    double tanHalf = 1.0;   // perspective, cube: tangent of the map's half-angle
+    double halfWidth = 1.0; // orthographic: half the map's width in world units
+    // Sampling (the light's Shadow, scaled to world units): bias and normal offset in texels, the emitter
+    // (perspective and cube: its diameter in world units; orthographic: 2·tan(angle / 2)).
+    double bias = 1.0, normalOffset = 1.0, emitter = 0.0;
+    int layers() const { return kind == ShadowKind::Cube ? 6 : 1; }
+    // World size of one texel: at distance 1 along the axis (perspective, cube), or anywhere (ortho).
+    double texelScale() const;
+    // world -> clip of one layer (face 0..5 of a cube; 0 otherwise).
+    glm::dmat4 faceViewProj(int face) const;
+    // What the map's depths depend on (not bias, offset or emitter: those only change sampling).
+    bool sameMap(const ShadowView& o) const;
+};
+
+// The casting lights' maps for this rig over a model with `bounds` (world). Lights beyond
+// kMaxShadowCasters are left out (the rig reader refuses such rigs; the editor says so).
+std::vector<ShadowView> planShadows(const Rig& rig, const SceneFrame& frame, const Bounds& bounds);
+// Bytes of the array for these views (0 when none).
+qint64 shadowMapBytes(const std::vector<ShadowView>& views);
+
+// The per-caster record (uShadowRecords): view -> light matrices for this camera view,
+// computed in double and rounded once. `lightIndex`: where the light was uploaded (-1: not uploaded).
+std::array<float, 4 * kShadowTexels> packShadow(const ShadowView& v, const glm::dmat4& view, int lightIndex);
+
+class ShadowMaps {
+  public:
+    bool initialize(QOpenGLFunctions_3_3_Core* gl);
+    void release(QOpenGLFunctions_3_3_Core* gl);
+    // Re-renders the layers whose map changed; `modelGeneration` changes with every new model. False
+    // (with error) when the array could not be made.
+    bool update(QOpenGLFunctions_3_3_Core* gl, const std::vector<ShadowView>& views, const GpuModel& model,
+                int modelGeneration, GLuint depthProgram, int matrixLocation, RenderStats* stats,
+                QString* error);
+    // Binds the array to TextureUnit::ShadowMaps (compare) and ShadowDepths (raw); nothing without maps.
+    void bind(QOpenGLFunctions_3_3_Core* gl) const;
+    void unbind(QOpenGLFunctions_3_3_Core* gl) const;
+    qint64 bytes() const { return m_bytes; }
+
+  private:
+    void freeArray(QOpenGLFunctions_3_3_Core* gl);
+    GLuint m_texture = 0, m_fbo = 0, m_compare = 0, m_raw = 0;
+    int m_resolution = 0, m_layers = 0;
+    qint64 m_bytes = 0;
+    std::vector<ShadowView> m_rendered; // what each view's layers hold
+    int m_modelGeneration = -1;
+};
+
+} // namespace lr::render
