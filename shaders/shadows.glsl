@@ -81,6 +81,7 @@ struct ShadowCoord {
 ShadowCoord shadowCoord(ShadowRecord r, vec3 P) {
     ShadowCoord c;
     c.valid = true;
+#ifdef LR_SHADOW_CUBE  // some caster is a point light (shadergen.h RigFeatures::cubeShadows)
     if (r.kind == 2) {
         vec3 d = (r.m * vec4(P, 1.0)).xyz;
         vec3 a = abs(d);
@@ -92,6 +93,7 @@ ShadowCoord shadowCoord(ShadowRecord r, vec3 P) {
         c.dist = t;
         return c;
     }
+#endif
     vec4 h = r.m * vec4(P, 1.0);
     c.valid = r.kind == 1 || h.w > 0.0;
     vec3 ndc = h.xyz / (r.kind == 1 ? 1.0 : max(h.w, 1e-30));

@@ -95,6 +95,7 @@ std::uint64_t FeatureKey::bits() const {
     put(approximations, keybits::kApproximations);
     put(unsigned(toneMap), keybits::kToneMap);
     put(rig.shadows, 1);
+    put(rig.cubeShadows, 1);
     put(material.shadowCatcher, 1);
     return b;
 }
@@ -110,7 +111,7 @@ QString FeatureKey::describe() const {
     if (rig.lightAmbient) parts << QStringLiteral("light-ambient");
     if (rig.shading == ShadingModel::Pbr) parts << QStringLiteral("shading:pbr");
     if (rig.farLights) parts << QStringLiteral("far-lights");
-    if (rig.shadows) parts << QStringLiteral("shadows");
+    if (rig.shadows) parts << (rig.cubeShadows ? QStringLiteral("shadows:cube") : QStringLiteral("shadows"));
     QStringList tex;
     if (material.baseColorTexture) tex << QStringLiteral("base");
     if (material.normalMap) tex << QStringLiteral("normal");
@@ -140,6 +141,7 @@ RigFeatures allRigFeatures(const RigFeatures& rig) {
     f.diffuses = std::uint8_t((1u << enumCount<DiffuseModel>()) - 1);
     f.lightAmbient = true;
     f.farLights = f.shading == ShadingModel::Pbr;
+    f.cubeShadows = f.shadows;
     return f;
 }
 
@@ -162,7 +164,10 @@ RigFeatures rigFeatures(const Rig& rig) {
     f.viewer = f.shading == ShadingModel::Pbr ? ViewerModel::Local : rig.shading.viewer;
     for (const Light& l : rig.lights) {
         if (!l.enabled) continue;
-        if (l.hasShadow()) f.shadows = true;
+        if (l.hasShadow()) {
+            f.shadows = true;
+            f.cubeShadows |= shadowKindOf(l.type) == ShadowKind::Cube;
+        }
         f.lightTypes |= bit(l.type);
         if (l.usesFalloff()) f.falloffs |= bit(l.falloff.model);
         if (l.usesCone()) f.cones |= bit(l.cone.model);
@@ -241,6 +246,7 @@ QByteArray shaderPrelude(const FeatureKey& key) {
         out += "#define LR_SHADOWS 1\n#define LR_SHADOW_TEXELS " + QByteArray::number(kShadowTexels) +
                "\n#define LR_MAX_SHADOW_CASTERS " + QByteArray::number(kMaxShadowCasters) +
                "\n#define LR_SHADOW_SLOT_SCALE " + QByteArray::number(kShadowSlotScale) + '\n';
+    if (key.rig.shadows && key.rig.cubeShadows) out += "#define LR_SHADOW_CUBE 1\n";
     if (key.material.shadowCatcher) out += "#define LR_SHADOW_CATCHER 1\n";
     if (pbr && key.material.metalRoughTexture) out += "#define LR_METAL_ROUGH_TEXTURE 1\n";
     if (pbr && key.material.occlusionTexture) out += "#define LR_OCCLUSION_TEXTURE 1\n";

@@ -96,9 +96,9 @@ std::vector<ShadowView> planShadows(const Rig& rig, const SceneFrame& frame, con
         v.resolution = res;
         v.bias = std::clamp(l.shadow.bias, 0.0, 16.0);
         v.normalOffset = std::clamp(l.shadow.normalOffset, 0.0, 16.0);
-        if (l.type == LightType::Directional) {
+        v.kind = shadowKindOf(l.type);
+        if (v.kind == ShadowKind::Orthographic) {
             const glm::dvec3 d = lighting::safeNormalize(l.direction, glm::dvec3(0, -1, 0));
-            v.kind = ShadowKind::Orthographic;
             v.position = c - d * (2.0 * r);
             v.znear = r;
             v.zfar = 3.0 * r;
@@ -111,13 +111,11 @@ std::vector<ShadowView> planShadows(const Rig& rig, const SceneFrame& frame, con
             v.emitter = std::max(0.0, l.shadow.size) * toWorld;
             const double dist = glm::length(c - v.position);
             planesAround(dist, r, &v.znear, &v.zfar);
-            if (l.type == LightType::Point) {
-                v.kind = ShadowKind::Cube;
+            if (v.kind == ShadowKind::Cube) {
                 v.tanHalf = 1.0 + 2.0 * kCubeMarginTexels / res;
             } else {
                 // The cone, or only the part of it that can hold the model: the sphere's cone seen from
                 // the light when that is narrower (a 179° spot keeps its texels on the model).
-                v.kind = ShadowKind::Perspective;
                 const double outer = std::clamp(l.cone.outer, 0.01, 89.9) * M_PI / 180.0;
                 const glm::dvec3 axis = lighting::safeNormalize(l.direction, glm::dvec3(0, -1, 0));
                 const bool outside = dist > r;

@@ -44,6 +44,12 @@ static_assert(kLightTypeCount <= kShadowSlotScale);
 inline constexpr double kCubeMarginTexels = 24.0;
 
 enum class ShadowKind { Perspective = 0, Orthographic = 1, Cube = 2 };
+// The map a casting light of this type gets: spot perspective, directional orthographic, point a cube.
+constexpr ShadowKind shadowKindOf(LightType type) {
+    return type == LightType::Directional ? ShadowKind::Orthographic
+           : type == LightType::Point     ? ShadowKind::Cube
+                                          : ShadowKind::Perspective;
+}
 
 struct ShadowView {
     int rigIndex = -1; // the light in Rig::lights

@@ -140,6 +140,14 @@ class TestShadows : public QObject {
         key.rig = rigFeatures(rigOf({castingSpot({0, 4, 0}, {0, 0, 0}, 40, 0.3)}));
         QVERIFY(key.rig.shadows);
         QVERIFY(shaderPrelude(key).contains("#define LR_SHADOWS 1"));
+        // The six-face lookup only where a point light casts: a spot-only rig does not pay for it.
+        QVERIFY(!key.rig.cubeShadows && !shaderPrelude(key).contains("LR_SHADOW_CUBE"));
+        Light pointCaster = castingSpot({0, 4, 0}, {0, 0, 0}, 40, 0.3);
+        pointCaster.type = LightType::Point;
+        FeatureKey cube;
+        cube.rig = rigFeatures(rigOf({castingSpot({0, 4, 0}, {0, 0, 0}, 40, 0.3), pointCaster}));
+        QVERIFY(cube.rig.cubeShadows && cube.bits() != key.bits());
+        QVERIFY(shaderPrelude(cube).contains("#define LR_SHADOW_CUBE 1"));
         for (Quality q : {Quality::Exact, Quality::Balanced, Quality::Fast}) {
             for (ShadingModel m : {ShadingModel::Classic, ShadingModel::Pbr}) {
                 Rig r = withoutShadows(rigOf({castingSpot({0, 4, 0}, {0, 0, 0}, 40, 0.3)}));
