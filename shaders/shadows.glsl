@@ -105,7 +105,7 @@ ShadowCoord shadowCoord(ShadowRecord r, vec3 P) {
 
 float shadowTap(vec3 uvLayer, float ref) { return texture(uShadowMaps, vec4(uvLayer, ref)); }
 
-#if defined(LR_QUALITY_BALANCED) || defined(LR_QUALITY_EXACT)
+#if (defined(LR_QUALITY_BALANCED) || defined(LR_QUALITY_EXACT)) && defined(LR_SHADOW_SOFT)
 const vec2 kPoisson[16] = vec2[16](
     vec2(-0.94201624, -0.39906216), vec2(0.94558609, -0.76890725), vec2(-0.094184101, -0.92938870),
     vec2(0.34495938, 0.29387760), vec2(-0.91588581, 0.45771432), vec2(-0.81544232, -0.87912464),
@@ -189,9 +189,11 @@ float lrShadow(ShadeLight l, Surface s, vec3 L) {
     if (!c.valid) return 1.0;
     float ref = min(c.depth, 1.0);  // beyond the far plane: behind every occluder the map holds
     float texelUv = 1.0 / r.resolution;
-#if defined(LR_QUALITY_EXACT)
+    // Filters only where some caster has an extent (LR_SHADOW_SOFT): llvmpipe would run them for point
+    // emitters too, whose result it then discards.
+#if defined(LR_QUALITY_EXACT) && defined(LR_SHADOW_SOFT)
     if (r.emitter > 0.0) return shadowPcss(r, c, ref, receiverSlope(r, P, side, c, texel), texelUv);
-#elif defined(LR_QUALITY_BALANCED)
+#elif defined(LR_QUALITY_BALANCED) && defined(LR_SHADOW_SOFT)
     if (r.emitter > 0.0) return shadowPcf3x3(c, ref, receiverSlope(r, P, side, c, texel), texelUv);
 #endif
     return shadowTap(c.uvLayer, ref);  // a point emitter, or the fast tier: one bilinear compare tap

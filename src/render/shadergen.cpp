@@ -96,6 +96,7 @@ std::uint64_t FeatureKey::bits() const {
     put(unsigned(toneMap), keybits::kToneMap);
     put(rig.shadows, 1);
     put(rig.cubeShadows, 1);
+    put(rig.softShadows, 1);
     put(material.shadowCatcher, 1);
     return b;
 }
@@ -111,7 +112,9 @@ QString FeatureKey::describe() const {
     if (rig.lightAmbient) parts << QStringLiteral("light-ambient");
     if (rig.shading == ShadingModel::Pbr) parts << QStringLiteral("shading:pbr");
     if (rig.farLights) parts << QStringLiteral("far-lights");
-    if (rig.shadows) parts << (rig.cubeShadows ? QStringLiteral("shadows:cube") : QStringLiteral("shadows"));
+    if (rig.shadows)
+        parts << QStringLiteral("shadows") + (rig.cubeShadows ? QStringLiteral(":cube") : QString()) +
+                     (rig.softShadows ? QStringLiteral(":soft") : QString());
     QStringList tex;
     if (material.baseColorTexture) tex << QStringLiteral("base");
     if (material.normalMap) tex << QStringLiteral("normal");
@@ -142,6 +145,7 @@ RigFeatures allRigFeatures(const RigFeatures& rig) {
     f.lightAmbient = true;
     f.farLights = f.shading == ShadingModel::Pbr;
     f.cubeShadows = f.shadows;
+    f.softShadows = f.shadows;
     return f;
 }
 
@@ -167,6 +171,7 @@ RigFeatures rigFeatures(const Rig& rig) {
         if (l.hasShadow()) {
             f.shadows = true;
             f.cubeShadows |= shadowKindOf(l.type) == ShadowKind::Cube;
+            f.softShadows |= hasSoftShadow(l);
         }
         f.lightTypes |= bit(l.type);
         if (l.usesFalloff()) f.falloffs |= bit(l.falloff.model);
@@ -247,6 +252,7 @@ QByteArray shaderPrelude(const FeatureKey& key) {
                "\n#define LR_MAX_SHADOW_CASTERS " + QByteArray::number(kMaxShadowCasters) +
                "\n#define LR_SHADOW_SLOT_SCALE " + QByteArray::number(kShadowSlotScale) + '\n';
     if (key.rig.shadows && key.rig.cubeShadows) out += "#define LR_SHADOW_CUBE 1\n";
+    if (key.rig.shadows && key.rig.softShadows) out += "#define LR_SHADOW_SOFT 1\n";
     if (key.material.shadowCatcher) out += "#define LR_SHADOW_CATCHER 1\n";
     if (pbr && key.material.metalRoughTexture) out += "#define LR_METAL_ROUGH_TEXTURE 1\n";
     if (pbr && key.material.occlusionTexture) out += "#define LR_OCCLUSION_TEXTURE 1\n";

@@ -50,6 +50,11 @@ constexpr ShadowKind shadowKindOf(LightType type) {
            : type == LightType::Point     ? ShadowKind::Cube
                                           : ShadowKind::Perspective;
 }
+// Whether a casting light's emitter has an extent (a size, or a directional light's angle): only then do
+// the balanced and exact tiers filter (PCF, PCSS); a point emitter is one compared tap in every tier.
+inline bool hasSoftShadow(const Light& l) {
+    return shadowKindOf(l.type) == ShadowKind::Orthographic ? l.shadow.angle > 0.0 : l.shadow.size > 0.0;
+}
 
 struct ShadowView {
     int rigIndex = -1; // the light in Rig::lights

@@ -148,6 +148,11 @@ class TestShadows : public QObject {
         cube.rig = rigFeatures(rigOf({castingSpot({0, 4, 0}, {0, 0, 0}, 40, 0.3), pointCaster}));
         QVERIFY(cube.rig.cubeShadows && cube.bits() != key.bits());
         QVERIFY(shaderPrelude(cube).contains("#define LR_SHADOW_CUBE 1"));
+        // The filters only where some emitter has an extent (this spot's size is 0.3; a size-0 rig has none).
+        QVERIFY(key.rig.softShadows && shaderPrelude(key).contains("#define LR_SHADOW_SOFT 1"));
+        FeatureKey hard;
+        hard.rig = rigFeatures(rigOf({castingSpot({0, 4, 0}, {0, 0, 0}, 40, 0.0)}));
+        QVERIFY(hard.rig.shadows && !hard.rig.softShadows && !shaderPrelude(hard).contains("LR_SHADOW_SOFT"));
         for (Quality q : {Quality::Exact, Quality::Balanced, Quality::Fast}) {
             for (ShadingModel m : {ShadingModel::Classic, ShadingModel::Pbr}) {
                 Rig r = withoutShadows(rigOf({castingSpot({0, 4, 0}, {0, 0, 0}, 40, 0.3)}));
