@@ -42,7 +42,9 @@ bool OverlayPass::run(const FrameContext& frame, PassScene& scene) {
     GizmoOptions options;
     options.nearClip = frame.camera.znear * 0.5;
     options.lights = settings.showGizmos;
-    options.grid = settings.showGrid;
+    // A visible ground lies where the grid would (under the model's bounds): it replaces the grid, which
+    // would otherwise flicker against it in the depth test. A catcher shows nothing of itself: grid kept.
+    options.grid = settings.showGrid && scene.rig->ground.mode != GroundMode::Visible;
     options.selected = settings.selectedLights;
     const GizmoGeometry g = buildGizmos(*scene.rig, scene.frame, scene.bounds, frame.view, options);
     if (g.lines.empty() && g.points.empty()) return true;

@@ -188,6 +188,25 @@ class TestShadows : public QObject {
         QVERIFY(!m_gl->renderer().renderPlan().contains(QLatin1String("shadow")));
     }
 
+    // The grid (an overlay under the model's bounds) gives way to a visible ground at the same height,
+    // which it would z-fight; with the ground off or a catcher it is drawn.
+    void visibleGroundReplacesTheGrid() {
+        QVERIFY(m_gl->setModel(floatingSphere()));
+        const ViewCamera cam = groundCamera();
+        RenderSettings grid = settingsFor(Quality::Exact);
+        grid.showGrid = true;
+        RenderSettings none = grid;
+        none.showGrid = false;
+        QString error;
+        for (GroundMode mode : {GroundMode::Off, GroundMode::Visible, GroundMode::Catcher}) {
+            m_gl->setRig(withGround({castingSpot({0, 4, 0}, {0, 0, 0}, 40, 0.0)}, mode));
+            const QImage with = m_gl->renderImage(cam, kSize, grid, 1, &error);
+            const QImage without = m_gl->renderImage(cam, kSize, none, 1, &error);
+            QVERIFY2(!with.isNull() && !without.isNull(), qPrintable(error));
+            QCOMPARE(with == without, mode == GroundMode::Visible);
+        }
+    }
+
     // A spot straight above a sphere floating over a visible ground: the ground under the sphere is in
     // shadow, a ground point outside the shadow's closed-form radius is lit exactly as without shadows,
     // in every tier, both shading models and the forward, deferred and clustered paths.
