@@ -6,6 +6,7 @@
 #include "editor/document.h"
 
 #include <QStringList>
+#include <QTest>
 
 // QTest's QCOMPARE prints values with toString(); lr::toString<E> (types.h) is an unconstrained template that
 // would make the call ambiguous for every type in namespace lr, so these exact overloads win.
@@ -80,6 +81,23 @@ inline lr::Rig pointRig(int n) {
 
 inline QByteArray bytes(const lr::Document& doc) {
     return lr::writeRigJson(doc.rig());
+}
+
+// Pushes through `push`, then checks: one new undo step; undo gives the exact old bytes; redo the new
+// ones; a second undo/redo cycle too (commands must be repeatable).
+template <typename F> void checkDoUndoRedo(lr::Document& doc, F push) {
+    const QByteArray before = bytes(doc);
+    const int count = doc.undoStack()->count();
+    QVERIFY(push());
+    QCOMPARE(doc.undoStack()->count(), count + 1);
+    const QByteArray after = bytes(doc);
+    QVERIFY2(after != before, "the command changed nothing");
+    for (int cycle = 0; cycle < 2; ++cycle) {
+        doc.undoStack()->undo();
+        QCOMPARE(bytes(doc), before);
+        doc.undoStack()->redo();
+        QCOMPARE(bytes(doc), after);
+    }
 }
 
 inline QStringList names(const lr::Document& doc) {

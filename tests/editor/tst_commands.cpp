@@ -12,6 +12,7 @@
 
 using namespace lr;
 using lrtest::bytes;
+using lrtest::checkDoUndoRedo;
 using lrtest::names;
 
 Q_DECLARE_METATYPE(lr::LightProperty)
@@ -19,23 +20,6 @@ Q_DECLARE_METATYPE(lr::RigProperty)
 
 class TestCommands : public QObject {
     Q_OBJECT
-
-    // Pushes through `push`, then checks: one new undo step; undo gives the exact old bytes; redo the new
-    // ones; a second undo/redo cycle too (commands must be repeatable).
-    template <typename F> void checkDoUndoRedo(Document& doc, F push) {
-        const QByteArray before = bytes(doc);
-        const int count = doc.undoStack()->count();
-        QVERIFY(push());
-        QCOMPARE(doc.undoStack()->count(), count + 1);
-        const QByteArray after = bytes(doc);
-        QVERIFY2(after != before, "the command changed nothing");
-        for (int cycle = 0; cycle < 2; ++cycle) {
-            doc.undoStack()->undo();
-            QCOMPARE(bytes(doc), before);
-            doc.undoStack()->redo();
-            QCOMPARE(bytes(doc), after);
-        }
-    }
 
   private slots:
     void changeLightValue_data() {

@@ -15,6 +15,7 @@
 
 using namespace lr;
 using lrtest::bytes;
+using lrtest::checkDoUndoRedo;
 
 namespace {
 constexpr int kShadow = LightTableModel::ShadowColumn;
@@ -29,22 +30,6 @@ QList<int> firstRows(int n) {
 
 class TestShadowEdits : public QObject {
     Q_OBJECT
-
-    // Pushes through `push`: one new step, undo gives the old bytes and redo the new ones, twice.
-    void checkDoUndoRedo(Document& doc, const std::function<bool()>& push) {
-        const QByteArray before = bytes(doc);
-        const int count = doc.undoStack()->count();
-        QVERIFY(push());
-        QCOMPARE(doc.undoStack()->count(), count + 1);
-        const QByteArray after = bytes(doc);
-        QVERIFY2(after != before, "the command changed nothing");
-        for (int cycle = 0; cycle < 2; ++cycle) {
-            doc.undoStack()->undo();
-            QCOMPARE(bytes(doc), before);
-            doc.undoStack()->redo();
-            QCOMPARE(bytes(doc), after);
-        }
-    }
 
   private slots:
     // Which light types each shadow row applies to, and that the details show only while the shadow is on.
