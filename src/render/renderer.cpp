@@ -204,6 +204,26 @@ bool Renderer::updateGround() {
     return true;
 }
 
+bool Renderer::updateScene(const glm::dmat4& view) {
+    if (!updateGround()) return false;
+    m_shadowViews = m_model->model() ? planShadows(rig(), sceneFrame(), bounds()) : std::vector<ShadowView>();
+    if (const auto casting = std::count_if(rig().lights.begin(), rig().lights.end(),
+                                           [](const Light& l) { return l.hasShadow(); });
+        casting > kMaxShadowCasters && !m_warnedCasters) {
+        qCWarning(lcRender).noquote()
+            << QStringLiteral("%1 lights cast shadows; at most %2 can: the first %2 in "
+                              "the rig's order cast, the others light without shadow")
+                   .arg(casting)
+                   .arg(kMaxShadowCasters);
+        m_warnedCasters = true;
+    }
+    // Lights are culled against everything drawn: the model and its ground.
+    const Bounds reach = drawnBounds();
+    const SceneFrame reachSphere{reach.center(), reach.radius()};
+    m_lights->update(this, sceneFrame(), view, &m_stats, &m_shadowViews, &reachSphere);
+    return true;
+}
+
 bool Renderer::ensureTargets(QSize size, int samples, GLenum colorFormat) {
     const int n = std::min(samples > 1 ? samples : 0, m_maxSamples);
     Targets& t = *m_targets;
@@ -272,21 +292,7 @@ bool Renderer::render(const ViewCamera& camera, QSize size, const RenderSettings
     FrameContext frame = frameContext(camera, size, settings, tile);
     frame.outputFbo = targetFbo;
     m_stats.lightsInRig = int(rig().lights.size());
-    if (!updateGround()) return false;
-    m_shadowViews = m_model->model() ? planShadows(rig(), sceneFrame(), bounds()) : std::vector<ShadowView>();
-    if (const auto casting = std::count_if(rig().lights.begin(), rig().lights.end(),
-                                           [](const Light& l) { return l.hasShadow(); });
-        casting > kMaxShadowCasters && !m_warnedCasters) {
-        qCWarning(lcRender).noquote()
-            << QStringLiteral("%1 lights cast shadows; at most %2 can: the first %2 in "
-                              "the rig's order cast, the others light without shadow")
-                   .arg(casting)
-                   .arg(kMaxShadowCasters);
-        m_warnedCasters = true;
-    }
-    const Bounds reach = drawnBounds();
-    const SceneFrame reachSphere{reach.center(), reach.radius()};
-    m_lights->update(this, sceneFrame(), frame.view, &m_stats, &m_shadowViews, &reachSphere);
+    if (!updateScene(frame.view)) return false;
     const int samples = frame.fast ? 0 : settings.msaaSamples;
     const bool wantDeferred =
         !frame.fast && (settings.shadingPath == ShadingPath::Deferred ||
@@ -348,11 +354,7 @@ bool Renderer::renderGBuffer(const ViewCamera& camera, QSize size, const RenderS
     const GLenum format = m_targets->colorFormat ? m_targets->colorFormat : GLenum(GL_RGBA8);
     if (!ensureTargets(target, 0, format)) return false;
     if (!m_targets->createGBuffer(this, &error)) return fail(error);
-    if (!updateGround()) return false;
-    m_shadowViews = m_model->model() ? planShadows(rig(), sceneFrame(), bounds()) : std::vector<ShadowView>();
-    const Bounds reach = drawnBounds();
-    const SceneFrame reachSphere{reach.center(), reach.radius()};
-    m_lights->update(this, sceneFrame(), frame.view, &m_stats, &m_shadowViews, &reachSphere);
+    if (!updateScene(frame.view)) return false;
     glClearDepth(1.0);
     glDepthMask(GL_TRUE);
     PassScene scene = passScene();

@@ -116,6 +116,9 @@ class Renderer : protected QOpenGLFunctions_3_3_Core {
     render::PassScene passScene();
     // Per frame: the ground's mesh (rebuilt when the model or the ground changed), the shadow views.
     bool updateGround();
+    // Per frame, for render() and renderGBuffer() alike: the ground, the shadow views and the light set
+    // for `view`; false when the ground could not be uploaded (m_lastError says why).
+    bool updateScene(const glm::dmat4& view);
 
     bool m_initialized = false;
     QOpenGLContext* m_context = nullptr;
