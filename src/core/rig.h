@@ -2,6 +2,7 @@
 // angles are stored in degrees as in files (the formulas take radians), directions are unit length.
 #pragma once
 
+#include "environment.h"
 #include "lighttypes.h"
 #include "types.h"
 
@@ -105,6 +106,7 @@ struct Rig {
     glm::dvec3 ambient{0.0};
     Shading shading;
     Ground ground;
+    Environment environment; // issue 15: none by default
     std::vector<Light> lights;
     bool operator==(const Rig&) const = default;
 };

@@ -22,6 +22,12 @@ enum class ShadingModel { Classic, Pbr };
 // The rig's optional ground plane under the model (issue 14): none, a visible grey plane, or a shadow
 // catcher (invisible except for the shadows it receives; in a transparent image they are its alpha).
 enum class GroundMode { Off, Visible, Catcher };
+// The rig's environment lighting (issue 15): none, an equirectangular HDR image (.hdr / .exr), or the
+// built-in procedural studio (a floor/sky gradient and softboxes the rig stores).
+enum class EnvironmentSource { None, Image, Studio };
+// What the environment shows behind the model: itself, itself blurred, or the view's background colour
+// (as without an environment). A transparent image has alpha 0 there in every mode.
+enum class EnvironmentBackground { Visible, Blurred, Color };
 
 template <typename E> struct EnumNames; // specialised below: static constexpr std::array names
 
@@ -37,6 +43,8 @@ LR_ENUM_NAMES(RigSpace, "world", "model")
 LR_ENUM_NAMES(ToneMap, "clamp", "reinhard", "aces", "neutral", "agx")
 LR_ENUM_NAMES(ShadingModel, "classic", "pbr")
 LR_ENUM_NAMES(GroundMode, "off", "visible", "catcher")
+LR_ENUM_NAMES(EnvironmentSource, "none", "image", "studio")
+LR_ENUM_NAMES(EnvironmentBackground, "visible", "blurred", "color")
 #undef LR_ENUM_NAMES
 
 template <typename E>

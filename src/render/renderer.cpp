@@ -160,6 +160,10 @@ const Rig& Renderer::rig() const {
     return m_lights->rig();
 }
 
+void Renderer::setEnvironment(std::shared_ptr<const LoadedEnvironment> environment) {
+    m_environment = std::move(environment);
+}
+
 QString Renderer::renderPlan() const {
     return m_plan->describe();
 }

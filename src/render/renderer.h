@@ -39,6 +39,8 @@ class QOpenGLShaderProgram;
 
 namespace lr {
 
+struct LoadedEnvironment;
+
 namespace render {
 class ProgramCache;
 class GpuModel;
@@ -73,6 +75,11 @@ class Renderer : protected QOpenGLFunctions_3_3_Core {
     const Model* model() const;
     void setRig(const Rig& rig); // cheap: no GL work here; light data is refreshed on the next frame
     const Rig& rig() const;
+    // The rig's environment decoded and prefiltered (environmentloader.h), or nullptr: none. The rig's
+    // Environment says how it is used (intensity, rotation, background); without a loaded environment a
+    // rig's environment adds nothing. Cheap: textures are uploaded on the next frame.
+    void setEnvironment(std::shared_ptr<const LoadedEnvironment> environment);
+    const std::shared_ptr<const LoadedEnvironment>& environment() const { return m_environment; }
     // The frame a `model`-space rig is anchored to: the model's bounding sphere (unit sphere without a
     // model).
     SceneFrame sceneFrame() const;
@@ -136,7 +143,8 @@ class Renderer : protected QOpenGLFunctions_3_3_Core {
     Ground m_groundUploaded;                    // what m_ground was built for
     int m_groundGeneration = -1;                // ... over which model
     std::vector<render::ShadowView> m_shadowViews;
-    int m_modelGeneration = 0;    // every setModel: shadow maps re-render
+    int m_modelGeneration = 0; // every setModel: shadow maps re-render
+    std::shared_ptr<const LoadedEnvironment> m_environment;
     bool m_warnedCasters = false; // more than kMaxShadowCasters casting lights was logged once
     GLuint m_fastSampler = 0;     // the fast tier's texture filtering (F4)
     GLuint m_emptyVao = 0;        // full-screen triangles

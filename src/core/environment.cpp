@@ -1,0 +1,127 @@
+#include "environment.h"
+
+#include <algorithm>
+#include <glm/geometric.hpp>
+
+namespace lr::environment {
+
+glm::dvec3 rotateAboutUp(const glm::dvec3& d, double degrees) {
+    const double a = degrees * (kPi / 180.0);
+    const double c = std::cos(a), s = std::sin(a);
+    return {c * d.x + s * d.z, d.y, -s * d.x + c * d.z};
+}
+
+glm::dvec2 equirectUv(const glm::dvec3& direction, double rotationDegrees) {
+    const glm::dvec3 d = rotationDegrees == 0.0 ? direction : rotateAboutUp(direction, -rotationDegrees);
+    double u = std::atan2(d.z, d.x) / (2.0 * kPi) + 0.5;
+    if (!(u >= 0.0)) u = 0.0; // NaN direction
+    if (u >= 1.0) u -= 1.0;
+    const double v = 0.5 - std::asin(std::clamp(d.y, -1.0, 1.0)) / kPi;
+    return {u, std::isfinite(v) ? v : 0.5};
+}
+
+glm::dvec3 equirectDirection(double u, double v, double rotationDegrees) {
+    const double phi = (u - 0.5) * 2.0 * kPi; // azimuth from +X towards +Z
+    const double lat = (0.5 - v) * kPi;       // latitude, +Y up
+    const glm::dvec3 d{std::cos(lat) * std::cos(phi), std::sin(lat), std::cos(lat) * std::sin(phi)};
+    return rotationDegrees == 0.0 ? d : rotateAboutUp(d, rotationDegrees);
+}
+
+glm::dvec3 texelDirection(int x, int y, int width, int height) {
+    return equirectDirection((x + 0.5) / width, (y + 0.5) / height);
+}
+
+double texelSolidAngle(int y, int width, int height) {
+    const double lat0 = (0.5 - double(y) / height) * kPi, lat1 = (0.5 - double(y + 1) / height) * kPi;
+    return (2.0 * kPi / width) * (std::sin(lat0) - std::sin(lat1));
+}
+
+std::array<double, 9> shBasis9(const glm::dvec3& d) {
+    const double x = d.x, y = d.y, z = d.z;
+    return {0.282095,
+            0.488603 * y,
+            0.488603 * z,
+            0.488603 * x,
+            1.092548 * x * y,
+            1.092548 * y * z,
+            0.315392 * (3.0 * z * z - 1.0),
+            1.092548 * x * z,
+            0.546274 * (x * x - y * y)};
+}
+
+glm::dvec3 softboxDirection(double azimuthDegrees, double elevationDegrees) {
+    const double az = azimuthDegrees * (kPi / 180.0), el = elevationDegrees * (kPi / 180.0);
+    return {std::sin(az) * std::cos(el), std::sin(el), std::cos(az) * std::cos(el)};
+}
+
+namespace {
+
+// A softbox's frame: its centre direction c and the unit right/up vectors of the rectangle it is seen as.
+struct SoftboxFrame {
+    glm::dvec3 c, right, up;
+    double tanHalfW, tanHalfH;
+    glm::dvec3 radiance;
+};
+
+SoftboxFrame frameOf(const Softbox& b) {
+    SoftboxFrame f;
+    f.c = softboxDirection(b.azimuth, b.elevation);
+    // Right is horizontal (perpendicular to +Y and c); straight up or down it is +X.
+    const glm::dvec3 h = glm::cross(glm::dvec3(0, 1, 0), f.c);
+    f.right = glm::length(h) > 1e-9 ? glm::normalize(h) : glm::dvec3(1, 0, 0);
+    f.up = glm::cross(f.c, f.right);
+    const auto halfTan = [](double deg) { return std::tan(std::clamp(deg, 0.0, 170.0) * (kPi / 360.0)); };
+    f.tanHalfW = halfTan(b.width);
+    f.tanHalfH = halfTan(b.height);
+    f.radiance = b.color * std::max(b.intensity, 0.0);
+    return f;
+}
+
+} // namespace
+
+EnvironmentImage renderStudio(const Studio& studio, int width) {
+    EnvironmentImage img;
+    img.width = std::max(width, 2);
+    img.height = std::max(img.width / 2, 1);
+    img.texels.resize(size_t(img.width) * size_t(img.height));
+    std::vector<SoftboxFrame> boxes;
+    for (const Softbox& b : studio.softboxes)
+        boxes.push_back(frameOf(b));
+    // The floor meets the sky over ±1° of elevation (a hard line would alias at every size).
+    const double blend = 1.0 * kPi / 180.0;
+    for (int y = 0; y < img.height; ++y)
+        for (int x = 0; x < img.width; ++x) {
+            const glm::dvec3 d = texelDirection(x, y, img.width, img.height);
+            const double lat = std::asin(std::clamp(d.y, -1.0, 1.0));
+            const double s = std::clamp(lat / (kPi / 2.0), 0.0, 1.0);
+            const glm::dvec3 sky = glm::mix(studio.horizon, studio.zenith, s);
+            const double t = std::clamp((lat + blend) / (2.0 * blend), 0.0, 1.0);
+            glm::dvec3 L = glm::mix(studio.floor, sky, t);
+            for (const SoftboxFrame& f : boxes) {
+                const double z = glm::dot(d, f.c);
+                if (z <= 0.0) continue;
+                if (std::abs(glm::dot(d, f.right)) <= f.tanHalfW * z &&
+                    std::abs(glm::dot(d, f.up)) <= f.tanHalfH * z)
+                    L = f.radiance;
+            }
+            img.at(x, y) = glm::vec3(L);
+        }
+    return img;
+}
+
+void applySpots(EnvironmentImage* image, const std::vector<EnvironmentSpot>& spots) {
+    if (!image || image->isNull() || spots.empty()) return;
+    for (const EnvironmentSpot& spot : spots) {
+        const double len = glm::length(spot.direction);
+        if (!(len > 0.0) || !std::isfinite(len)) continue;
+        const glm::dvec3 axis = spot.direction / len;
+        const double cosAngle = std::cos(std::clamp(spot.angle, 0.0, 180.0) * (kPi / 180.0));
+        const float factor = float(std::clamp(spot.factor, 0.0, 1.0));
+        for (int y = 0; y < image->height; ++y)
+            for (int x = 0; x < image->width; ++x)
+                if (glm::dot(texelDirection(x, y, image->width, image->height), axis) >= cosAngle)
+                    image->at(x, y) *= factor;
+    }
+}
+
+} // namespace lr::environment

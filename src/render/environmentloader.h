@@ -1,0 +1,34 @@
+// The rig's environment made ready for the renderer and the reference (issue 15): an image file decoded
+// in the isolated import worker (untrusted input, like models), a bundled image ("builtin:NAME", trusted,
+// decoded in process) or the procedural studio rendered; the rig's dimmed spots applied; then prefiltered
+// (envprefilter.h). Blocking: the editor calls it on a worker thread (QtConcurrent), the command line
+// directly.
+#pragma once
+
+#include "core/environment.h"
+
+#include <QString>
+#include <QStringList>
+#include <memory>
+
+namespace lr {
+
+struct LoadedEnvironment {
+    Environment spec;       // what it was loaded for (its sameRadiance() part matters)
+    QString source;         // the file as resolved ("/abs/studio.exr", "builtin:studio", "studio")
+    EnvironmentImage image; // the radiance after spots, before rotation and intensity (the reference's)
+    PrefilteredEnvironment prefiltered;
+    QStringList warnings;       // sanitised texels, resampling, ... each naming the file
+    double decodeSeconds = 0.0; // decoding (in the worker) including the round trip
+};
+
+struct EnvironmentLoadResult {
+    std::shared_ptr<const LoadedEnvironment> environment; // null on failure, and for source None
+    QString error; // "could not read rigs/hdr/sky.exr: <reason>" (naming the file)
+};
+
+// `rigFolder`: where a relative Environment::file is resolved (the rig file's folder; the current folder
+// for a rig that was never saved).
+EnvironmentLoadResult loadEnvironment(const Environment& spec, const QString& rigFolder);
+
+} // namespace lr
