@@ -56,7 +56,19 @@ struct EnvironmentSpot {
     bool operator==(const EnvironmentSpot&) const = default;
 };
 
-// The rig's environment.
+// The rig's environment. What it adds at a surface is DEFINED as the limit of one directional light per
+// texel, shining from the texel's direction (rotated), of radiance L (× 2^intensity) and solid angle Ω:
+//   - physically based: a glTF directional light of L·Ω lux (colour L/|L|), the glTF BRDF with Lambert's
+//     cosine, i.e. ∫ L(ω) f(ω, v) (n·ω)⁺ dω;
+//   - classic: a directional light of intensity L·Ω/π with `diffuse` as its diffuse model, the rig's
+//     specular and viewer models, specular colour = its colour, no ambient; i.e.
+//     Lambert       albedo/π · ∫ L(ω) (n·ω)⁺ dω
+//     half-Lambert  albedo/π · ∫ L(ω) ((n·ω)/2 + 1/2)² dω   (the whole sphere: 4/3·albedo in a uniform 1)
+//     Phong         ks/π · ∫_{n·ω>0} L(ω) (r·ω)⁺^shininess dω, r = reflect(−v, n)
+//     Blinn-Phong   ks/π · ∫_{n·ω>0} L(ω) (n·h)⁺^shininess dω, h = normalize(ω + v);
+//   - in both, times the material's occlusion (glTF: occlusion applies to indirect light). No shadowing
+//     by the model (the environment is not occluded by geometry; docs/lighting-models.md).
+// The reference integrates exactly this (in double); the GPU tiers approximate it (prefiltering).
 struct Environment {
     EnvironmentSource source = EnvironmentSource::None;
     // Image: the file as the rig writes it: a path relative to the rig's folder (or absolute), or
