@@ -78,6 +78,7 @@ struct Environment {
     double rotation = 0.0;  // degrees about +Y; any value, written in [0, 360)
     EnvironmentBackground background = EnvironmentBackground::Visible;
     double blur = 0.3; // Blurred: the background's blur as a GGX roughness, 0 ... 1
+    DiffuseModel diffuse = DiffuseModel::Lambert; // classic shading: the diffuse model it is shaded with
     Studio studio;     // Studio: the procedural environment
     std::vector<EnvironmentSpot> spots;
     bool isNone() const { return source == EnvironmentSource::None; }
