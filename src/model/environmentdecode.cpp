@@ -8,6 +8,7 @@
 #include <ImfHeader.h>
 #include <ImfIO.h>
 #include <ImfInputFile.h>
+#include <ImfTileDescription.h>
 #include <QByteArray>
 #include <QFile>
 #include <QFileInfo>
@@ -69,6 +70,25 @@ QString sizeProblem(qint64 w, qint64 h) {
     return {};
 }
 
+int linesPerChunk(Imf::Compression c) {
+    switch (c) {
+    case Imf::NO_COMPRESSION:
+    case Imf::RLE_COMPRESSION:
+    case Imf::ZIPS_COMPRESSION:
+        return 1;
+    case Imf::ZIP_COMPRESSION:
+    case Imf::PXR24_COMPRESSION:
+        return 16;
+    case Imf::PIZ_COMPRESSION:
+    case Imf::B44_COMPRESSION:
+    case Imf::B44A_COMPRESSION:
+    case Imf::DWAA_COMPRESSION:
+        return 32;
+    default: // DWAB and any later one
+        return 256;
+    }
+}
+
 // OpenEXR: the header is checked against the limits and the file size before any pixel is read.
 QString decodeExr(QByteArrayView bytes, EnvironmentImage* image) {
     MemoryStream stream(bytes);
@@ -82,8 +102,13 @@ QString decodeExr(QByteArrayView bytes, EnvironmentImage* image) {
         const Imath::Box2i window = first.dataWindow();
         const qint64 w = qint64(window.max.x) - window.min.x + 1, h = qint64(window.max.y) - window.min.y + 1;
         if (QString why = sizeProblem(w, h); !why.isEmpty()) return why;
-        // Each chunk (at most 256 scanlines, or a tile) has an 8-byte offset: at least h/256 of them.
-        if ((h + 255) / 256 * 8 > bytes.size() - qint64(stream.tellg()))
+        // Each chunk (a tile, or 1 to 256 scanlines by compression) has an 8-byte offset after the header.
+        qint64 chunks = (h + linesPerChunk(first.compression()) - 1) / linesPerChunk(first.compression());
+        if (first.hasTileDescription()) {
+            const Imf::TileDescription& t = first.tileDescription();
+            chunks = (w + t.xSize - 1) / std::max(1u, t.xSize) * ((h + t.ySize - 1) / std::max(1u, t.ySize));
+        }
+        if (chunks * 8 > bytes.size() - qint64(stream.tellg()))
             return QStringLiteral("the header claims %1×%2 texels but the file holds only %3 bytes")
                 .arg(w)
                 .arg(h)
