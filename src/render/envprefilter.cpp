@@ -110,8 +110,14 @@ PrefilteredEnvironment prefilterEnvironment(const EnvironmentImage& image) {
     p.irradiance = envfilter::irradianceMap(source == mips.end() ? mips.back() : *source, kIrradianceWidth);
     for (int k = 1; k < kSpecularLevels; ++k) {
         const double roughness = double(k) / (kSpecularLevels - 1);
-        p.specular.push_back(
-            envfilter::ggxLevel(mips, kSpecularBaseWidth >> k, roughness, envfilter::ggxSamples(roughness)));
+        const int quadrature = envfilter::ggxQuadratureWidth(roughness);
+        const auto coarse = std::find_if(mips.begin(), mips.end(), [quadrature](const EnvironmentImage& m) {
+            return m.width <= quadrature;
+        });
+        p.specular.push_back(quadrature > 0 && coarse != mips.end()
+                                 ? envfilter::ggxLevelQuadrature(*coarse, kSpecularBaseWidth >> k, roughness)
+                                 : envfilter::ggxLevel(mips, kSpecularBaseWidth >> k, roughness,
+                                                       envfilter::ggxSamples(roughness)));
     }
     p.seconds = double(timer.nsecsElapsed()) * 1e-9;
     return p;

@@ -35,6 +35,11 @@ EnvironmentImage irradianceMap(const EnvironmentImage& src, int width);
 // `mips` (pyramid of the level-0 image): `samples` GGX samples per texel (Hammersley).
 EnvironmentImage ggxLevel(const std::vector<EnvironmentImage>& mips, int width, double roughness,
                           int samples);
+// The same by direct quadrature over every texel of `src` (width a power of 2): exact for that source,
+// fast for the wide lobes (each row's weights are computed once and turned along the row).
+EnvironmentImage ggxLevelQuadrature(const EnvironmentImage& src, int width, double roughness);
+// The source width ggxLevelQuadrature is used with at a roughness, or 0 where ggxLevel samples instead.
+int ggxQuadratureWidth(double roughness);
 // How many samples ggxLevel takes at a roughness (the prefilter's choice).
 int ggxSamples(double roughness);
 

@@ -1,8 +1,10 @@
 // The split-sum specular chain (envprefilter_detail.h): the radiance convolved with the GGX lobe, N = V = R,
-// weights D·(n·l) (Karis 2013, "Real Shading in Unreal Engine 4"), by importance sampling the lobe with
-// one fixed Hammersley set per level and filtered importance sampling (Colbert & Křivánek, GPU Gems 3
-// ch. 20): each sample reads the pyramid at the level whose texels cover the sample's share of the lobe's
-// solid angle, Ωs = 1/(N·pdf), so few samples give a smooth, nearly unbiased result.
+// weights D·(n·l) (Karis 2013, "Real Shading in Unreal Engine 4"). Two ways, chosen per roughness
+// (ggxQuadratureWidth): exact quadrature over a 64 × 32 level of the pyramid for the wide lobes, and for
+// the narrow one importance sampling with one fixed Hammersley set and filtered importance sampling
+// (Colbert & Křivánek, GPU Gems 3 ch. 20): each sample reads the pyramid at the level whose texels cover
+// its share of the lobe's solid angle, Ωs = 1/(N·pdf). Both use that the texels of one row differ only by
+// a turn about +Y: the work that depends on latitude is done once a row.
 #include "envprefilter_detail.h"
 
 #include <algorithm>
@@ -43,7 +45,9 @@ std::vector<LobeSample> lobeSamples(double roughness, int count, int baseWidth, 
         const double phi = 2.0 * kPi * xi2;
         const double pdf = ggxD(a2, cos2h) / 4.0; // of l: D (n·h) / (4 v·h), v·h = n·h
         const double omegaS = 1.0 / (count * pdf);
-        const double lod = 0.5 * std::log2(omegaS / omegaP) + 1.0;
+        // No +1 bias (GPU Gems 3 adds one): measured at roughness 0.2 with 48 samples, rms 2.6 % without it,
+        // 4.9 % with it (it blurs).
+        const double lod = 0.5 * std::log2(omegaS / omegaP);
         out.push_back({float(2.0 * cosh * sinh * std::cos(phi)), float(2.0 * cosh * sinh * std::sin(phi)),
                        float(nl), float(lod)});
     }
@@ -51,6 +55,14 @@ std::vector<LobeSample> lobeSamples(double roughness, int count, int baseWidth, 
 }
 
 } // namespace
+
+int ggxQuadratureWidth(double roughness) {
+    // Measured (tst_envprefilter, a 512 × 256 sky with Gaussian lights): quadrature over 64 × 32 is within
+    // 0.2 % rms of the brute force from roughness 0.4 on (0.05 % over 128 × 64, at twice the time), where
+    // 64 filtered samples were off by 2.8 to 8 % rms. At roughness 0.2 the lobe's tails reach across the
+    // hemisphere at a fine resolution, so quadrature would cost billions of terms: sampling stays.
+    return roughness >= 0.3 ? 64 : 0;
+}
 
 int ggxSamples(double roughness) {
     return roughness < 0.3 ? 48 : 64;
@@ -118,6 +130,54 @@ EnvironmentImage ggxLevel(const std::vector<EnvironmentImage>& mips, int width, 
                        tap.weight;
             }
             out.at(x, y) = sum;
+        }
+    });
+    return out;
+}
+
+EnvironmentImage ggxLevelQuadrature(const EnvironmentImage& src, int width, double roughness) {
+    const double a2 = std::pow(roughness, 4.0);
+    EnvironmentImage out;
+    out.width = width;
+    out.height = width / 2;
+    out.texels.assign(size_t(out.width) * size_t(out.height), glm::vec3(0.0f));
+    // Output texel x = phase + phases·m sees the source turned by m·step columns (both widths powers of 2).
+    const int phases = std::max(1, width / src.width), step = std::max(1, src.width / width);
+    const int mask = src.width - 1;
+    struct Weight {
+        int offset; // row × width + column in the source
+        float w;
+    };
+    forEachRow(out.height, [&](int y) {
+        std::vector<Weight> weights;
+        for (int phase = 0; phase < phases; ++phase) {
+            const glm::dvec3 n = environment::texelDirection(phase, y, out.width, out.height);
+            weights.clear();
+            double total = 0.0, peak = 0.0;
+            for (int j = 0; j < src.height; ++j) {
+                const double omega = environment::texelSolidAngle(j, src.width, src.height);
+                for (int i = 0; i < src.width; ++i) {
+                    const double c = glm::dot(n, environment::texelDirection(i, j, src.width, src.height));
+                    if (c <= 0.0) continue;
+                    const double w = omega * ggxD(a2, (1.0 + c) / 2.0) * c;
+                    weights.push_back({j * src.width + i, float(w)});
+                    total += w;
+                    peak = std::max(peak, w);
+                }
+            }
+            // Drop what cannot show (below 1e-7 of the peak), then normalise what is left.
+            std::erase_if(weights, [peak](const Weight& w) { return double(w.w) < 1e-7 * peak; });
+            for (Weight& w : weights)
+                w.w = float(double(w.w) / total);
+            for (int x = phase; x < out.width; x += phases) {
+                const int shift = (x / phases) * step;
+                glm::vec3 sum(0.0f);
+                for (const Weight& w : weights) {
+                    const int row = w.offset & ~mask, column = ((w.offset & mask) + shift) & mask;
+                    sum += src.texels[size_t(row + column)] * w.w;
+                }
+                out.at(x, y) = sum;
+            }
         }
     });
     return out;
