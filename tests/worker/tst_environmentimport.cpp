@@ -44,6 +44,16 @@ class TestEnvironmentImport : public QObject {
         QCOMPARE(viaWorker.image.texels, direct.image.texels);
         QCOMPARE(viaWorker.warnings, direct.warnings);
     }
+    void sharedExrThroughTheWorker() {
+        QString file = QStringLiteral(LIGHTRIG_SHARED_MODELS "/../environments/studio.exr");
+        if (!QFile::exists(file)) file = QStringLiteral("/work/shared/environments/studio.exr");
+        if (!QFile::exists(file))
+            QSKIP("no shared environments (LIGHTRIG_SHARED_MODELS/../environments, /work/shared)");
+        const EnvironmentDecodeResult viaWorker = importEnvironmentIsolated(file);
+        QVERIFY2(viaWorker.ok(), qPrintable(viaWorker.error));
+        QCOMPARE(viaWorker.image.width, 1024);
+        QCOMPARE(viaWorker.image.texels, decodeEnvironmentFile(file).image.texels); // DWAB, bit for bit
+    }
     void workerErrorsNameTheFile() {
         QTemporaryDir dir;
         const QString junk = dir.filePath("junk.exr");
