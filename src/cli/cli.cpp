@@ -9,6 +9,8 @@
 
 namespace lr::cli {
 
+int runPrefilter(const QStringList& args); // prefilter.cpp (issue 15)
+
 namespace {
 bool g_displayAvailable = true;
 struct Subcommand {
@@ -22,6 +24,7 @@ const Subcommand kSubcommands[] = {
     {"render", runRender, true},
     {"bench", runBench, true},
     {"import-worker", runImportWorker, false}, // hidden: model/isolatedimport.h runs it
+    {"prefilter", runPrefilter, false},
 };
 } // namespace
 

@@ -1,10 +1,12 @@
-// `lightrig import-worker` (hidden): imports one model for a parent process (model/isolatedimport.h) so
-// that an importer crash, hang or allocation bomb ends this process, not the editor or `lightrig render`.
+// `lightrig import-worker` (hidden): imports one model (model/isolatedimport.h) or decodes one
+// environment image (model/environmentdecode.h) for a parent process so that an importer crash, hang or
+// allocation bomb ends this process, not the editor or `lightrig render`.
 // Reads the request from stdin and writes frames to stdout (model/importprotocol.h). The parent sets the
 // memory limit (RLIMIT_AS) before this starts; a failed allocation is remembered so that a crash that
 // follows it can be reported as the memory limit rather than as a plain crash.
 #include "cli.h"
 
+#include "model/environmentdecode.h"
 #include "model/importprotocol.h"
 #include "model/modelcodec.h"
 #include "model/modelloader.h"
@@ -18,6 +20,7 @@
 #include <csignal>
 #include <cstring>
 #include <fcntl.h>
+#include <limits>
 #include <mutex>
 #include <new>
 #include <sys/stat.h>
@@ -133,6 +136,21 @@ bool sendShared(int fd, const Model& model) {
     return writeFrame(ip::kShared, reinterpret_cast<const char*>(&size), sizeof size);
 }
 
+// An environment image: the 'V' frame (importprotocol.h) or the decoder's error.
+[[noreturn]] void sendEnvironment(const QString& path) {
+    const EnvironmentDecodeResult result = decodeEnvironmentFile(path);
+    bool sent;
+    if (result.ok()) {
+        const QByteArray reply = encodeEnvironmentReply(result.image, result.warnings);
+        sent = writeFrame(ip::kEnvironment, reply.constData(), std::size_t(reply.size()));
+    } else {
+        QByteArray payload(1, char(g_allocationFailed ? ip::kErrorOutOfMemory : 0));
+        payload += result.error.toUtf8().left(ip::kMaxErrorBytes);
+        sent = writeFrame(ip::kError, payload.constData(), std::size_t(payload.size()));
+    }
+    std::_Exit(sent ? Ok : Failed);
+}
+
 [[noreturn]] void testCrash(const QByteArray& mode, int sharedFd) {
     if (mode == "segv") ::raise(SIGSEGV);
     if (mode == "abort") std::abort();
@@ -158,6 +176,15 @@ bool sendShared(int fd, const Model& model) {
         std::memcpy(header + 1, &length, sizeof length);
         writeAll(header, sizeof header);
         writeAll(encoded.constData(), std::size_t(encoded.size() / 2));
+    }
+    if (mode == "env-nan" || mode == "env-size") { // an environment reply the parent must refuse
+        EnvironmentImage image;
+        image.width = 2;
+        image.height = 1;
+        image.texels = {glm::vec3(1.0f), glm::vec3(std::numeric_limits<float>::quiet_NaN())};
+        QByteArray reply = encodeEnvironmentReply(image, {});
+        if (mode == "env-size") reply.chop(4);
+        writeFrame(ip::kEnvironment, reply.constData(), std::size_t(reply.size()));
     }
     if (mode == "shared-garbage" || mode == "shared-short") {
         const QByteArray junk(4096, '\x5a');
@@ -186,6 +213,8 @@ int runImportWorker(const QStringList&) {
     }
     const int sharedFd = request.value(QStringLiteral("sharedFd")).toInt(-1);
     if (const QByteArray mode = qgetenv(ip::kTestCrashVariable); !mode.isEmpty()) testCrash(mode, sharedFd);
+    if (request.value(QStringLiteral("kind")).toString() == QLatin1String("environment"))
+        sendEnvironment(path);
 
     ModelLoadOptions options;
     options.allowTexturesOutsideFolder =

@@ -3,12 +3,15 @@
 //
 // Request (parent -> worker, stdin, then closed): a JSON object
 //   {"path": "...", "allowTexturesOutsideFolder": false, "maxDataUriBytes": 67108864, "sharedFd": 5}
+// or, for an environment image (model/environmentdecode.h), {"kind": "environment", "path": "..."}.
 // sharedFd (optional): a memfd the parent created and let this worker inherit; the worker writes the
 // encoded model there from offset 0 and answers 'S', or falls back to 'M' when it cannot.
 // Reply (worker -> parent, stdout): frames of  u8 type, u64 payload length (host order), payload:
 //   'P'  progress: one double in [0, 1]
 //   'M'  the model: modelcodec.h's encoding (last frame)
 //   'S'  the model is in the shared memfd of the request: u64 byte count (last frame)
+//   'V'  the environment image (last frame): u32 width, u32 height, u32 n, n bytes of UTF-8 warnings
+//        (one a line), then width × height × 3 floats (RGB, top row first); the parent checks all of it
 //   'E'  failure: u8 flags (kErrorCancelled | kErrorOutOfMemory) + UTF-8 message (last frame)
 //   'O'  (empty) written by the worker's crash handler when an allocation had failed before the crash
 // The worker points its own fd 1 at stderr before importing, so stray library output cannot corrupt
@@ -24,6 +27,8 @@ inline constexpr char kModel = 'M';
 inline constexpr char kError = 'E';
 inline constexpr char kOutOfMemory = 'O';
 inline constexpr char kShared = 'S';
+inline constexpr char kEnvironment = 'V';
+inline constexpr int kEnvironmentHeaderSize = 12;
 inline constexpr int kFrameHeaderSize = 9;
 
 inline constexpr quint8 kErrorCancelled = 1;
@@ -35,7 +40,7 @@ inline constexpr qint64 kMaxErrorBytes = 64 * 1024;
 // The hidden subcommand that runs the worker.
 inline constexpr char kSubcommand[] = "import-worker";
 // Honoured only by the worker, for tests: segv, abort, hang, oom, garbage, truncate, exit,
-// shared-garbage, shared-short.
+// shared-garbage, shared-short, env-nan, env-size.
 inline constexpr char kTestCrashVariable[] = "LIGHTRIG_WORKER_TEST_CRASH";
 
 } // namespace lr::importprotocol

@@ -1,162 +1,24 @@
 #include "isolatedimport.h"
 
 #include "importprotocol.h"
+#include "isolatedworker.h"
 #include "modelcodec.h"
 
-#include <QCoreApplication>
 #include <QElapsedTimer>
-#include <QFileInfo>
-#include <QJsonDocument>
-#include <QJsonObject>
-#include <QMutex>
 #include <QProcess>
 #include <algorithm>
-#include <csignal>
 #include <cstring>
 #include <fcntl.h>
-#include <new>
 #include <sys/mman.h>
-#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 #include <vector>
-#ifdef __linux__
-#include <sys/prctl.h>
-#endif
-
-#if defined(__SANITIZE_ADDRESS__)
-#define LIGHTRIG_ISOLATED_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define LIGHTRIG_ISOLATED_ASAN 1
-#endif
-#endif
 
 namespace lr {
 
 namespace {
 
 namespace ip = importprotocol;
-
-constexpr int kPollMs = 50;
-constexpr double kImportShare = 0.9; // of the progress bar; the rest is receiving the model
-constexpr qsizetype kStderrTail = 8192;
-
-QMutex g_executableMutex;
-QString g_executable;
-
-// Reads the worker's frames as they arrive. Never trusts a length before checking it.
-class FrameReader {
-  public:
-    explicit FrameReader(qint64 maxModelBytes) : m_maxModelBytes(maxModelBytes) {}
-
-    enum class State { Reading, Model, Shared, Error, Malformed };
-    State state() const { return m_state; }
-    bool done() const { return m_state != State::Reading; }
-    double fraction() const {
-        double f = kImportShare * m_childFraction;
-        if (m_inPayload && m_type == ip::kModel && m_length > 0)
-            f = kImportShare + (1.0 - kImportShare) * double(m_payload.size()) / double(m_length);
-        return f;
-    }
-    bool sawOutOfMemory() const { return m_outOfMemory; }
-    bool midFrame() const { return m_inPayload || !m_header.isEmpty(); }
-    const QByteArray& payload() const { return m_payload; }
-    qint64 maxModelBytes() const { return m_maxModelBytes; }
-    const QString& problem() const { return m_problem; }
-
-    void consume(QProcess& p) {
-        while (!done() && p.bytesAvailable() > 0) {
-            if (!m_inPayload) {
-                m_header += p.read(ip::kFrameHeaderSize - m_header.size());
-                if (m_header.size() == ip::kFrameHeaderSize) startFrame();
-            } else {
-                const qint64 want = qint64(m_length) - m_payload.size();
-                const qint64 take = std::min(want, p.bytesAvailable());
-                const qsizetype old = m_payload.size();
-                m_payload.resize(old + qsizetype(take));
-                const qint64 got = p.read(m_payload.data() + old, take);
-                m_payload.resize(old + qsizetype(std::max<qint64>(got, 0)));
-                if (got <= 0) return;
-                if (quint64(m_payload.size()) == m_length) endFrame();
-            }
-        }
-    }
-
-  private:
-    void malformed(const QString& why) {
-        m_state = State::Malformed;
-        m_problem = why;
-    }
-    void startFrame() {
-        m_type = m_header[0];
-        std::memcpy(&m_length, m_header.constData() + 1, sizeof m_length);
-        m_header.clear();
-        bool ok = false;
-        switch (m_type) {
-        case ip::kProgress:
-            ok = m_length == sizeof(double);
-            break;
-        case ip::kOutOfMemory:
-            ok = m_length == 0;
-            break;
-        case ip::kError:
-            ok = m_length >= 1 && m_length <= quint64(1 + ip::kMaxErrorBytes);
-            break;
-        case ip::kModel:
-            ok = m_length >= quint64(kModelCodecHeaderSize) && m_length <= quint64(m_maxModelBytes);
-            break;
-        case ip::kShared:
-            ok = m_length == sizeof(quint64);
-            break;
-        default:
-            return malformed(QStringLiteral("unknown frame type %1").arg(int(quint8(m_type))));
-        }
-        if (!ok)
-            return malformed(QStringLiteral("frame '%1' of %2 bytes").arg(QLatin1Char(m_type)).arg(m_length));
-        m_payload.clear();
-        try {
-            m_payload.reserve(qsizetype(m_length));
-        } catch (const std::bad_alloc&) {
-            return malformed(QStringLiteral("no memory for a reply of %1 bytes").arg(m_length));
-        }
-        m_inPayload = true;
-        if (m_length == 0) endFrame();
-    }
-    void endFrame() {
-        m_inPayload = false;
-        switch (m_type) {
-        case ip::kProgress: {
-            double f;
-            std::memcpy(&f, m_payload.constData(), sizeof f);
-            if (f >= 0.0 && f <= 1.0) m_childFraction = std::max(m_childFraction, f); // NaN fails both
-            break;
-        }
-        case ip::kOutOfMemory:
-            m_outOfMemory = true;
-            break;
-        case ip::kError:
-            m_state = State::Error;
-            break;
-        case ip::kModel:
-            m_state = State::Model;
-            break;
-        case ip::kShared:
-            m_state = State::Shared;
-            break;
-        }
-    }
-
-    qint64 m_maxModelBytes;
-    State m_state = State::Reading;
-    QByteArray m_header, m_payload;
-    char m_type = 0;
-    quint64 m_length = 0;
-    bool m_inPayload = false;
-    double m_childFraction = 0.0;
-    bool m_outOfMemory = false;
-    QString m_problem;
-};
 
 // The worker writes the encoded model into a memfd created here (fewer copies and page faults than the
 // pipe for a large model: ~44 MB for 1M triangles). After the worker has exited, the memfd is sealed
@@ -245,70 +107,7 @@ class SharedReply {
     int m_fd = -1;
 };
 
-QString seconds(int ms) {
-    return QString::number(ms / 1000.0, 'g', 4);
-}
-
-QString lastLine(const QByteArray& text) {
-    const QList<QByteArray> lines = text.trimmed().split('\n');
-    return lines.isEmpty() ? QString() : QString::fromUtf8(lines.last().trimmed()).left(300);
-}
-
-// The worker decodes every texture into fresh buffers (16 MiB for a 2048² RGBA image, several times
-// over); in a virtual machine each 4 KiB page fault is costly. glibc's hugetlb tunable (2.35+) makes
-// malloc ask for transparent huge pages (madvise) on its large mappings: importing DamagedHelmet (five
-// 2048² JPEGs) took 490-610 ms before and 227-352 ms after, four runs each on the 2-core VM. A tunable
-// the user set already is kept.
-QProcessEnvironment workerEnvironment() {
-    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-    const QString tunables = env.value(QStringLiteral("GLIBC_TUNABLES"));
-    if (!tunables.contains(QLatin1String("glibc.malloc.hugetlb")))
-        env.insert(QStringLiteral("GLIBC_TUNABLES"),
-                   tunables.isEmpty() ? QStringLiteral("glibc.malloc.hugetlb=1")
-                                      : tunables + QStringLiteral(":glibc.malloc.hugetlb=1"));
-    return env;
-}
-
-QString describeExit(const QProcess& p, const QByteArray& stderrTail) {
-    if (p.exitStatus() == QProcess::CrashExit) {
-        const int sig = p.exitCode(); // Qt reports the signal number for a crash exit on Unix
-        if (sig == SIGABRT) return QStringLiteral("the importer aborted (signal %1)").arg(sig);
-        if (sig == SIGKILL) return QStringLiteral("the importer was killed (signal %1)").arg(sig);
-        return QStringLiteral("the importer crashed (signal %1)").arg(sig);
-    }
-    QString why = QStringLiteral("the importer exited with code %1 without a result").arg(p.exitCode());
-    if (const QString line = lastLine(stderrTail); !line.isEmpty()) why += QStringLiteral(" (%1)").arg(line);
-    return why;
-}
-
 } // namespace
-
-void setImportWorkerExecutable(const QString& path) {
-    const QMutexLocker lock(&g_executableMutex);
-    g_executable = path;
-}
-
-QString importWorkerExecutable() {
-    {
-        const QMutexLocker lock(&g_executableMutex);
-        if (!g_executable.isEmpty()) return g_executable;
-    }
-    if (const QString fromEnvironment = qEnvironmentVariable("LIGHTRIG_IMPORT_WORKER");
-        !fromEnvironment.isEmpty())
-        return fromEnvironment;
-    // Only lightrig itself has the import-worker subcommand (a test executable, say, does not).
-    if (!QCoreApplication::instance() || QCoreApplication::applicationName() != QLatin1String("lightrig"))
-        return {};
-    return QCoreApplication::applicationFilePath();
-}
-
-QString formatMemoryLimit(qint64 bytes) {
-    constexpr qint64 MiB = 1ll << 20, GiB = 1ll << 30;
-    if (bytes >= GiB && bytes % GiB == 0) return QStringLiteral("%1 GiB").arg(bytes / GiB);
-    if (bytes >= GiB) return QStringLiteral("%1 GiB").arg(double(bytes) / double(GiB), 0, 'f', 1);
-    if (bytes % MiB == 0) return QStringLiteral("%1 MiB").arg(bytes / MiB);
-    return QStringLiteral("%1 bytes").arg(bytes);
-}
 
 ModelLoadResult importModelIsolated(const QString& path, const ModelLoadOptions& options,
                                     const ImportLimits& limits) {
@@ -326,126 +125,38 @@ ModelLoadResult importModelIsolated(const QString& path, const ModelLoadOptions&
         if (limits.cancel && limits.cancel->load()) return false;
         return !options.progress || options.progress(reported);
     };
-    if (!keepGoing(0.0)) return failure(QStringLiteral("cancelled"), true);
-
-    const QString executable = importWorkerExecutable();
-    if (executable.isEmpty())
-        return failure(QStringLiteral("no import worker: this is not lightrig, and neither "
-                                      "setImportWorkerExecutable() nor LIGHTRIG_IMPORT_WORKER names one"));
-
     const SharedReply shared;
-    const int sharedFd = limits.sharedMemory ? shared.fd() : -1;
-    QProcess worker;
-    worker.setProgram(executable);
-    worker.setArguments({QString::fromLatin1(ip::kSubcommand)});
-    worker.setProcessEnvironment(workerEnvironment());
-    const qint64 memory = limits.memoryBytes;
-    worker.setChildProcessModifier([memory, sharedFd] {
-        // Runs in the child between fork and exec: async-signal-safe calls only.
-        if (sharedFd >= 0) ::fcntl(sharedFd, F_SETFD, 0); // this child alone inherits the memfd
-        const rlimit noCore{0, 0};
-        ::setrlimit(RLIMIT_CORE, &noCore);
-#ifndef LIGHTRIG_ISOLATED_ASAN // AddressSanitizer reserves terabytes of address space
-        if (memory > 0) {
-            const rlimit as{rlim_t(memory), rlim_t(memory)};
-            ::setrlimit(RLIMIT_AS, &as);
-        }
-#endif
-#ifdef __linux__
-        ::prctl(PR_SET_PDEATHSIG, SIGKILL); // the worker never outlives this thread
-#endif
-    });
-    worker.start(QIODevice::ReadWrite);
-    if (!worker.waitForStarted(30'000))
-        return failure(QStringLiteral("could not start the import worker %1 (%2)")
-                           .arg(executable, worker.errorString()));
-
     QJsonObject request;
     request.insert(QStringLiteral("path"), path);
     request.insert(QStringLiteral("allowTexturesOutsideFolder"), options.allowTexturesOutsideFolder);
     request.insert(QStringLiteral("maxDataUriBytes"), double(options.maxDataUriBytes));
-    if (sharedFd >= 0) request.insert(QStringLiteral("sharedFd"), sharedFd);
-    worker.write(QJsonDocument(request).toJson(QJsonDocument::Compact));
-    worker.closeWriteChannel();
-
-    FrameReader reader(memory > 0 ? memory : (1ll << 40));
-    QByteArray stderrTail;
-    enum class Stop { None, TimedOut, Cancelled } stop = Stop::None;
-    for (;;) {
-        worker.waitForReadyRead(kPollMs);
-        reader.consume(worker);
-        stderrTail += worker.readAllStandardError();
-        if (stderrTail.size() > kStderrTail) stderrTail = stderrTail.right(kStderrTail);
-        if (reader.done()) break;
-        if (worker.state() == QProcess::NotRunning) {
-            reader.consume(worker); // whatever arrived with the exit
-            break;
-        }
-        if (limits.timeoutMs > 0 && timer.elapsed() > limits.timeoutMs) {
-            stop = Stop::TimedOut;
-            break;
-        }
-        if (!keepGoing(reader.fraction())) {
-            stop = Stop::Cancelled;
-            break;
-        }
-    }
-    if (stop != Stop::None || reader.state() == FrameReader::State::Malformed) {
-        worker.kill();
-        worker.waitForFinished(5'000);
-        if (stop == Stop::Cancelled) return failure(QStringLiteral("cancelled"), true);
-        if (stop == Stop::TimedOut)
-            return failure(
-                QStringLiteral("the importer did not finish within %1 s").arg(seconds(limits.timeoutMs)));
-        return failure(QStringLiteral("the importer sent a malformed reply (%1)").arg(reader.problem()));
-    }
-    // After a complete reply the worker is exiting (freeing a large import's memory can take a while):
-    // decode meanwhile, then reap it (killing it if it lingers).
-    const struct Reaper {
-        QProcess& p;
-        ~Reaper() {
-            if (p.state() != QProcess::NotRunning && !p.waitForFinished(5'000)) {
-                p.kill();
-                p.waitForFinished(5'000);
-            }
-        }
-    } reaper{worker};
-    const QString outOfMemory =
-        QStringLiteral("the importer ran out of its %1 memory limit").arg(formatMemoryLimit(memory));
-
-    if (reader.state() == FrameReader::State::Error) {
-        const QByteArray& p = reader.payload();
-        const auto flags = quint8(p.at(0));
-        if (flags & ip::kErrorOutOfMemory && memory > 0) return failure(outOfMemory);
-        QString message = QString::fromUtf8(p.constData() + 1, p.size() - 1);
-        if (message.isEmpty()) message = failure(QStringLiteral("the importer gave no reason")).error;
+    const qint64 maxBytes = limits.memoryBytes > 0 ? limits.memoryBytes : (1ll << 40);
+    isolated::WorkerOutcome run =
+        isolated::runWorker(request, limits, limits.sharedMemory ? shared.fd() : -1, keepGoing, maxBytes);
+    if (!run.ok()) {
+        if (!run.fromWorker) return failure(run.failure, run.cancelled);
         ModelLoadResult r;
-        r.error = message;
-        r.cancelled = flags & ip::kErrorCancelled;
+        r.error = run.failure;
+        r.cancelled = run.cancelled;
         return r;
     }
-    if (reader.state() == FrameReader::State::Model || reader.state() == FrameReader::State::Shared) {
-        QString why;
-        std::shared_ptr<Model> model;
-        if (reader.state() == FrameReader::State::Model) {
-            model = decodeModel(reader.payload(), &why);
-        } else {
-            quint64 size = 0;
-            std::memcpy(&size, reader.payload().constData(), sizeof size);
-            model = shared.decode(size, reader.maxModelBytes(), &why); // sealed first: the worker may live on
-        }
-        if (!model) return failure(QStringLiteral("the importer sent a malformed reply (%1)").arg(why));
-        if (!keepGoing(1.0)) return failure(QStringLiteral("cancelled"), true);
-        model->loadMs = double(timer.nsecsElapsed()) / 1e6;
-        ModelLoadResult r;
-        r.model = std::move(model);
-        return r;
+    QString why;
+    std::shared_ptr<Model> model;
+    if (run.type == ip::kModel) {
+        model = decodeModel(run.payload, &why);
+    } else if (run.type == ip::kShared) {
+        quint64 size = 0;
+        std::memcpy(&size, run.payload.constData(), sizeof size);
+        model = shared.decode(size, maxBytes, &why); // sealed first: the worker may live on
+    } else {
+        why = QStringLiteral("a reply of type '%1' to a model request").arg(QLatin1Char(run.type));
     }
-    // The worker ended without a complete reply.
-    if (reader.sawOutOfMemory() && memory > 0) return failure(outOfMemory);
-    if (worker.exitStatus() == QProcess::NormalExit && worker.exitCode() == 0 && reader.midFrame())
-        return failure(QStringLiteral("the importer sent a malformed reply (truncated)"));
-    return failure(describeExit(worker, stderrTail));
+    if (!model) return failure(QStringLiteral("the importer sent a malformed reply (%1)").arg(why));
+    if (!keepGoing(1.0)) return failure(QStringLiteral("cancelled"), true);
+    model->loadMs = double(timer.nsecsElapsed()) / 1e6;
+    ModelLoadResult r;
+    r.model = std::move(model);
+    return r;
 }
 
 } // namespace lr

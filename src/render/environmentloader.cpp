@@ -1,14 +1,22 @@
 #include "environmentloader.h"
 
 #include "envprefilter.h"
+#include "model/environmentdecode.h"
 
+#include <QDir>
 #include <QElapsedTimer>
+#include <QFileInfo>
 
 namespace lr {
 
-// PLACEHOLDER (issue 15 integration): the studio only; image decoding lands with the worker's codec.
+QString resolveEnvironmentFile(const QString& file, const QString& rigFolder) {
+    if (file.startsWith(QLatin1String(kBuiltinEnvironmentPrefix)) || file.isEmpty()) return file;
+    if (QFileInfo(file).isAbsolute()) return QDir::cleanPath(file);
+    return QDir::cleanPath(
+        QDir(rigFolder.isEmpty() ? QDir::currentPath() : rigFolder).absoluteFilePath(file));
+}
+
 EnvironmentLoadResult loadEnvironment(const Environment& spec, const QString& rigFolder) {
-    Q_UNUSED(rigFolder);
     EnvironmentLoadResult r;
     if (spec.source == EnvironmentSource::None) return r;
     auto env = std::make_shared<LoadedEnvironment>();
@@ -17,9 +25,28 @@ EnvironmentLoadResult loadEnvironment(const Environment& spec, const QString& ri
         env->source = QStringLiteral("studio");
         env->image = environment::renderStudio(spec.studio);
     } else {
-        r.error =
-            QStringLiteral("could not read %1: image environments are not supported yet").arg(spec.file);
-        return r;
+        const QString& written = spec.file;
+        if (written.isEmpty()) {
+            r.error = QStringLiteral("could not read the environment image: the rig names no file");
+            return r;
+        }
+        const QString prefix = QLatin1String(kBuiltinEnvironmentPrefix);
+        env->source = resolveEnvironmentFile(written, rigFolder);
+        QElapsedTimer timer;
+        timer.start();
+        EnvironmentDecodeResult decoded = written.startsWith(prefix)
+                                              ? decodeBuiltinEnvironment(written.mid(prefix.size()))
+                                              : importEnvironmentIsolated(env->source);
+        env->decodeSeconds = double(timer.nsecsElapsed()) * 1e-9;
+        if (!decoded.ok()) {
+            const QString where =
+                env->source == written ? written : QStringLiteral("%1 (%2)").arg(written, env->source);
+            r.error = QStringLiteral("could not read %1: %2")
+                          .arg(where, decoded.reason.isEmpty() ? decoded.error : decoded.reason);
+            return r;
+        }
+        env->image = std::move(decoded.image);
+        env->warnings = decoded.warnings;
     }
     environment::applySpots(&env->image, spec.spots);
     env->prefiltered = prefilterEnvironment(env->image);

@@ -31,4 +31,8 @@ struct EnvironmentLoadResult {
 // for a rig that was never saved).
 EnvironmentLoadResult loadEnvironment(const Environment& spec, const QString& rigFolder);
 
+// Where Environment::file points: "builtin:NAME" and "" as they are, an absolute path cleaned, a relative
+// one resolved against `rigFolder` (the current folder when empty).
+QString resolveEnvironmentFile(const QString& file, const QString& rigFolder);
+
 } // namespace lr

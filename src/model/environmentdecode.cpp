@@ -1,0 +1,257 @@
+#include "environmentdecode.h"
+
+#include "environmentstb.h"
+
+#include <ImfArray.h>
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfIO.h>
+#include <ImfInputFile.h>
+#include <ImfTileDescription.h>
+#include <QByteArray>
+#include <QFile>
+#include <QFileInfo>
+#include <QRegularExpression>
+#include <cmath>
+#include <cstring>
+#include <exception>
+
+namespace lr {
+
+namespace {
+
+constexpr char kExrMagic[] = {0x76, 0x2f, 0x31, 0x01};
+
+// An OpenEXR input stream over bytes in memory; reading past the end throws (OpenEXR catches nothing
+// of ours: the decoder below turns every exception into an error).
+class MemoryStream : public Imf::IStream {
+  public:
+    explicit MemoryStream(QByteArrayView bytes) : Imf::IStream("memory"), m_bytes(bytes) {}
+    bool isMemoryMapped() const override { return true; }
+    char* readMemoryMapped(int n) override {
+        char* p = const_cast<char*>(m_bytes.data()) + m_pos;
+        advance(n);
+        return p;
+    }
+    bool read(char c[], int n) override {
+        const qsizetype at = m_pos;
+        advance(n);
+        std::memcpy(c, m_bytes.data() + at, size_t(n));
+        return m_pos < m_bytes.size();
+    }
+    uint64_t tellg() override { return uint64_t(m_pos); }
+    void seekg(uint64_t pos) override {
+        if (pos > uint64_t(m_bytes.size())) throw std::runtime_error("seek past the end of the file");
+        m_pos = qsizetype(pos);
+    }
+
+  private:
+    void advance(int n) {
+        if (n < 0 || n > m_bytes.size() - m_pos) throw std::runtime_error("unexpected end of file");
+        m_pos += n;
+    }
+    QByteArrayView m_bytes;
+    qsizetype m_pos = 0;
+};
+
+QString sizeProblem(qint64 w, qint64 h) {
+    if (w <= 0 || h <= 0) return QStringLiteral("its size %1×%2 is empty").arg(w).arg(h);
+    if (w > kMaxEnvironmentSide || h > kMaxEnvironmentSide)
+        return QStringLiteral("%1×%2 texels is larger than the limit of %3 on a side")
+            .arg(w)
+            .arg(h)
+            .arg(kMaxEnvironmentSide);
+    if (w * h > kMaxEnvironmentTexels)
+        return QStringLiteral("%1×%2 texels is more than the limit of %3 Mpx")
+            .arg(w)
+            .arg(h)
+            .arg(kMaxEnvironmentTexels >> 20);
+    return {};
+}
+
+int linesPerChunk(Imf::Compression c) {
+    switch (c) {
+    case Imf::NO_COMPRESSION:
+    case Imf::RLE_COMPRESSION:
+    case Imf::ZIPS_COMPRESSION:
+        return 1;
+    case Imf::ZIP_COMPRESSION:
+    case Imf::PXR24_COMPRESSION:
+        return 16;
+    case Imf::PIZ_COMPRESSION:
+    case Imf::B44_COMPRESSION:
+    case Imf::B44A_COMPRESSION:
+    case Imf::DWAA_COMPRESSION:
+        return 32;
+    default: // DWAB and any later one
+        return 256;
+    }
+}
+
+// OpenEXR: the header is checked against the limits and the file size before any pixel is read.
+QString decodeExr(QByteArrayView bytes, EnvironmentImage* image) {
+    MemoryStream stream(bytes);
+    { // The (first part's) header alone, before InputFile sizes its tables by it.
+        Imf::Header first;
+        int version = 0;
+        if (bytes.size() < 8) throw std::runtime_error("unexpected end of file");
+        std::memcpy(&version, bytes.data() + 4, sizeof version);
+        stream.seekg(8);
+        first.readFrom(stream, version);
+        const Imath::Box2i window = first.dataWindow();
+        const qint64 w = qint64(window.max.x) - window.min.x + 1, h = qint64(window.max.y) - window.min.y + 1;
+        if (QString why = sizeProblem(w, h); !why.isEmpty()) return why;
+        // Each chunk (a tile, or 1 to 256 scanlines by compression) has an 8-byte offset after the header.
+        qint64 chunks = (h + linesPerChunk(first.compression()) - 1) / linesPerChunk(first.compression());
+        if (first.hasTileDescription()) {
+            const Imf::TileDescription& t = first.tileDescription();
+            chunks = (w + t.xSize - 1) / std::max(1u, t.xSize) * ((h + t.ySize - 1) / std::max(1u, t.ySize));
+        }
+        if (chunks * 8 > bytes.size() - qint64(stream.tellg()))
+            return QStringLiteral("the header claims %1×%2 texels but the file holds only %3 bytes")
+                .arg(w)
+                .arg(h)
+                .arg(bytes.size());
+        stream.seekg(0);
+    }
+    Imf::InputFile file(stream, 1);
+    const Imf::Header& header = file.header();
+    const Imath::Box2i window = header.dataWindow();
+    const qint64 w = qint64(window.max.x) - window.min.x + 1, h = qint64(window.max.y) - window.min.y + 1;
+    if (QString why = sizeProblem(w, h); !why.isEmpty()) return why;
+    const Imf::ChannelList& channels = header.channels();
+    const bool rgb = channels.findChannel("R") || channels.findChannel("G") || channels.findChannel("B");
+    const bool grey = !rgb && channels.findChannel("Y");
+    if (!rgb && !grey) return QStringLiteral("it has no R, G, B or Y channel");
+    image->width = int(w);
+    image->height = int(h);
+    image->texels.assign(size_t(w * h), glm::vec3(0.0f));
+    char* base = reinterpret_cast<char*>(image->texels.data());
+    Imf::FrameBuffer fb;
+    const size_t xs = sizeof(glm::vec3), ys = xs * size_t(w);
+    const char* names[3] = {"R", "G", "B"};
+    for (int c = 0; c < 3; ++c)
+        fb.insert(grey ? "Y" : names[c],
+                  Imf::Slice::Make(Imf::FLOAT, base + c * sizeof(float), window, xs, ys));
+    file.setFrameBuffer(fb);
+    file.readPixels(window.min.y, window.max.y);
+    return {};
+}
+
+// Radiance RGBE: the header parsed here (limits, a lower bound on the data size), the pixels by stb.
+QString decodeHdr(QByteArrayView bytes, EnvironmentImage* image) {
+    const qsizetype end = QByteArrayView(bytes).indexOf("\n\n");
+    if (end < 0) return QStringLiteral("its Radiance header does not end");
+    const qsizetype lineEnd = bytes.indexOf('\n', end + 2);
+    const QByteArrayView resolution =
+        lineEnd < 0 ? QByteArrayView() : bytes.sliced(end + 2, lineEnd - end - 2);
+    static const QRegularExpression re(QStringLiteral("^-Y (\\d{1,9}) \\+X (\\d{1,9})$"));
+    const auto m = re.match(QString::fromLatin1(resolution).trimmed());
+    if (!m.hasMatch()) return QStringLiteral("its resolution line is not \"-Y height +X width\"");
+    const qint64 h = m.captured(1).toLongLong(), w = m.captured(2).toLongLong();
+    if (QString why = sizeProblem(w, h); !why.isEmpty()) return why;
+    // Each scanline takes at least 4 bytes a texel flat, or run-length encoded 4 + 4 × 2 per 127 texels.
+    const qint64 minLine = (w < 8 || w >= 32768) ? 4 * w : std::min(4 * w, 4 + 8 * ((w + 126) / 127));
+    if (minLine * h > bytes.size() - lineEnd - 1)
+        return QStringLiteral("the header claims %1×%2 texels but the file holds only %3 bytes")
+            .arg(w)
+            .arg(h)
+            .arg(bytes.size());
+    stb::HdrResult r = stb::decodeHdr(bytes.data(), size_t(bytes.size()));
+    if (!r.error.empty())
+        return QStringLiteral("truncated or corrupt Radiance file (%1)").arg(QString::fromStdString(r.error));
+    if (r.width != w || r.height != h) return QStringLiteral("its size does not match its header");
+    image->width = r.width;
+    image->height = r.height;
+    image->texels.resize(size_t(w * h));
+    std::memcpy(image->texels.data(), r.rgb.data(), r.rgb.size() * sizeof(float));
+    return {};
+}
+
+// Values that are NaN, infinite or negative become 0; returns how many texels had one.
+qint64 sanitise(EnvironmentImage* image) {
+    qint64 bad = 0;
+    for (glm::vec3& t : image->texels) {
+        bool any = false;
+        for (int c = 0; c < 3; ++c)
+            if (!(std::isfinite(t[c]) && t[c] >= 0.0f)) {
+                t[c] = 0.0f;
+                any = true;
+            }
+        bad += any;
+    }
+    return bad;
+}
+
+} // namespace
+
+EnvironmentDecodeResult decodeEnvironment(QByteArrayView bytes, const QString& path) {
+    EnvironmentDecodeResult r;
+    const QString name = QFileInfo(path).fileName().isEmpty() ? path : QFileInfo(path).fileName();
+    try {
+        if (bytes.size() >= 4 && std::memcmp(bytes.data(), kExrMagic, 4) == 0)
+            r.reason = decodeExr(bytes, &r.image);
+        else if (bytes.startsWith("#?RADIANCE") || bytes.startsWith("#?RGBE"))
+            r.reason = decodeHdr(bytes, &r.image);
+        else
+            r.reason = QStringLiteral("not an OpenEXR or Radiance .hdr image (unknown first bytes)");
+    } catch (const std::bad_alloc&) {
+        r.reason = QStringLiteral("out of memory decoding it");
+    } catch (const std::exception& e) {
+        r.reason = QStringLiteral("truncated or corrupt OpenEXR (%1)").arg(QString::fromLocal8Bit(e.what()));
+    } catch (...) {
+        r.reason = QStringLiteral("truncated or corrupt image");
+    }
+    if (!r.reason.isEmpty()) {
+        r.image = {};
+        r.error = QStringLiteral("could not read %1: %2").arg(path, r.reason);
+        return r;
+    }
+    if (const qint64 bad = sanitise(&r.image); bad > 0)
+        r.warnings << QStringLiteral("%1: %2 texels were NaN, infinite or negative and were set to 0")
+                          .arg(name)
+                          .arg(bad);
+    if (r.image.width != 2 * r.image.height)
+        r.warnings << QStringLiteral("%1: %2×%3 is not 2:1; it is stretched over the sphere as an "
+                                     "equirectangular image")
+                          .arg(name)
+                          .arg(r.image.width)
+                          .arg(r.image.height);
+    return r;
+}
+
+EnvironmentDecodeResult decodeEnvironmentFile(const QString& path) {
+    QFile file(path);
+    const auto fail = [&](const QString& reason) {
+        EnvironmentDecodeResult r;
+        r.reason = reason;
+        r.error = QStringLiteral("could not read %1: %2").arg(path, reason);
+        return r;
+    };
+    if (!file.open(QIODevice::ReadOnly)) return fail(file.errorString());
+    if (file.size() > kMaxEnvironmentFileBytes)
+        return fail(QStringLiteral("%1 bytes is larger than the limit of %2 GiB")
+                        .arg(file.size())
+                        .arg(kMaxEnvironmentFileBytes >> 30));
+    const uchar* mapped = file.map(0, file.size());
+    if (mapped) return decodeEnvironment(QByteArrayView(mapped, file.size()), path);
+    const QByteArray bytes = file.readAll();
+    return decodeEnvironment(bytes, path);
+}
+
+QString checkEnvironmentImage(const EnvironmentImage& image) {
+    if (QString why = sizeProblem(image.width, image.height); !why.isEmpty()) return why;
+    if (image.texels.size() != size_t(image.width) * size_t(image.height))
+        return QStringLiteral("%1 texels for %2×%3")
+            .arg(image.texels.size())
+            .arg(image.width)
+            .arg(image.height);
+    for (const glm::vec3& t : image.texels)
+        for (int c = 0; c < 3; ++c)
+            if (!(std::isfinite(t[c]) && t[c] >= 0.0f))
+                return QStringLiteral("a texel value %1 (not finite and >= 0)").arg(double(t[c]));
+    return {};
+}
+
+} // namespace lr
