@@ -1,7 +1,7 @@
 // `lightrig prefilter FILE... [--repeat N]`: the environment benchmark (issue 15). For each file (or
 // builtin:NAME) one JSON line: its size, the decode time (the import worker's round trip, or in process
 // for a bundled one), the prefilter time (median of N runs; envprefilter.h) and its CPU time over all
-// threads (median; what a shared machine's load does not inflate), the thread count, warnings.
+// threads (median; on the shared 2-core VM it still varied 3× with the load), the thread count, warnings.
 #include "cli.h"
 
 #include "model/environmentdecode.h"

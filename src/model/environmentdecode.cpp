@@ -139,6 +139,46 @@ QString decodeExr(QByteArrayView bytes, EnvironmentImage* image) {
     return {};
 }
 
+// Walks the pixel data the way stb_image's decoder will, without decoding: stb_image reads zeros past the
+// end and loops forever on a run of length 0, so both are refused here first.
+QString checkRgbeData(QByteArrayView data, qint64 w, qint64 h) {
+    const QString truncated = QStringLiteral("the file ends before its pixel data does");
+    if (w < 8 || w >= 32768) return 4 * w * h <= data.size() ? QString() : truncated;
+    qsizetype pos = 0;
+    const auto byte = [&](quint8* out) {
+        if (pos >= data.size()) return false;
+        *out = quint8(data[pos++]);
+        return true;
+    };
+    for (qint64 y = 0; y < h; ++y) {
+        const qsizetype lineStart = pos;
+        quint8 c[4];
+        for (quint8& b : c)
+            if (!byte(&b)) return truncated;
+        if (c[0] != 2 || c[1] != 2 || (c[2] & 0x80)) // not run-length encoded: flat from here to the end
+            return lineStart + 4 * w * h <= data.size() ? QString() : truncated;
+        if ((qint64(c[2]) << 8 | c[3]) != w)
+            return QStringLiteral("corrupt run-length data (scanline %1 is not %2 texels wide)")
+                .arg(y)
+                .arg(w);
+        for (int channel = 0; channel < 4; ++channel)
+            for (qint64 x = 0; x < w;) {
+                quint8 count = 0;
+                if (!byte(&count)) return truncated;
+                const bool run = count > 128;
+                const qint64 n = run ? count - 128 : count;
+                if (n == 0 || n > w - x)
+                    return QStringLiteral("corrupt run-length data (a run of %1 in scanline %2)")
+                        .arg(n)
+                        .arg(y);
+                if (pos + (run ? 1 : n) > data.size()) return truncated;
+                pos += run ? 1 : n;
+                x += n;
+            }
+    }
+    return {};
+}
+
 // Radiance RGBE: the header parsed here (limits, a lower bound on the data size), the pixels by stb.
 QString decodeHdr(QByteArrayView bytes, EnvironmentImage* image) {
     const qsizetype end = QByteArrayView(bytes).indexOf("\n\n");
@@ -158,6 +198,7 @@ QString decodeHdr(QByteArrayView bytes, EnvironmentImage* image) {
             .arg(w)
             .arg(h)
             .arg(bytes.size());
+    if (QString why = checkRgbeData(bytes.sliced(lineEnd + 1), w, h); !why.isEmpty()) return why;
     stb::HdrResult r = stb::decodeHdr(bytes.data(), size_t(bytes.size()));
     if (!r.error.empty())
         return QStringLiteral("truncated or corrupt Radiance file (%1)").arg(QString::fromStdString(r.error));

@@ -105,6 +105,20 @@ class TestEnvironmentDecode : public QObject {
             }
         }
     }
+    void truncatedRunLengthData() {
+        // 16 × 2, each channel a literal run of 16 bytes: 72 bytes a scanline, far above the header's
+        // lower bound, so the end of the data is noticed while decoding, not before.
+        QByteArray hdr = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 16\n";
+        for (int y = 0; y < 2; ++y) {
+            hdr += QByteArray("\2\2\0\20", 4);
+            for (int c = 0; c < 4; ++c)
+                hdr += char(16) + QByteArray(16, char(c == 3 ? 129 : 100));
+        }
+        QVERIFY(decodeEnvironment(hdr, "whole.hdr").ok());
+        QCOMPARE(decodeEnvironment(hdr, "whole.hdr").image.at(5, 1), glm::vec3(100.0f / 128.0f));
+        expectError(decodeEnvironment(hdr.chopped(30), "cut.hdr"), "cut.hdr",
+                    "the file ends before its pixel data does");
+    }
     void oversizedHeaders() {
         expectError(decodeEnvironment(withExrSize(readData("tiny.exr"), 100000, 50000), "huge.exr"),
                     "huge.exr", "larger than the limit of 16384");
