@@ -78,7 +78,8 @@ struct Environment {
     double rotation = 0.0;  // degrees about +Y; any value, written in [0, 360)
     EnvironmentBackground background = EnvironmentBackground::Visible;
     double blur = 0.3; // Blurred: the background's blur as a GGX roughness, 0 ... 1
-    Studio studio;     // Studio: the procedural environment
+    DiffuseModel diffuse = DiffuseModel::Lambert; // classic shading: the diffuse model it is shaded with
+    Studio studio;                                // Studio: the procedural environment
     std::vector<EnvironmentSpot> spots;
     bool isNone() const { return source == EnvironmentSource::None; }
     // What the prefiltered form depends on: changing only intensity, rotation, background or blur never
