@@ -242,6 +242,11 @@ bool loadScene(const QString& modelPath, const SceneOptions& options, LoadedScen
     return true;
 }
 
+void showScene(Renderer& renderer, const LoadedScene& scene) {
+    renderer.setRig(scene.rig);
+    renderer.setEnvironment(scene.environment);
+}
+
 bool haveDisplay() {
     return qEnvironmentVariableIsSet("DISPLAY") || qEnvironmentVariableIsSet("WAYLAND_DISPLAY") ||
            qEnvironmentVariableIsSet("QT_QPA_PLATFORM");

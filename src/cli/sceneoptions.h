@@ -18,6 +18,7 @@
 #include "core/rig.h"
 #include "model/model.h"
 #include "render/camera.h"
+#include "render/renderer.h"
 
 #include <QCommandLineOption>
 #include <QCommandLineParser>
@@ -79,6 +80,9 @@ QString shadowSummary(const Rig& rig);
 // Loads the model, the rig and its environment and picks the camera. False with a one-line reason (exit 1) on
 // failure.
 bool loadScene(const QString& modelPath, const SceneOptions& options, LoadedScene* scene, QString* error);
+
+// Gives the renderer the scene's rig and its loaded environment (Renderer::setRig, setEnvironment).
+void showScene(Renderer& renderer, const LoadedScene& scene);
 
 // "WxH" with both sides in 1..maxSide.
 std::optional<QSize> parseSize(const QString& text, int maxSide = 32768);
