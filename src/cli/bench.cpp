@@ -234,6 +234,10 @@ int runBench(const QStringList& args) {
         if (!loadScene(path, *sceneOptions, &loaded, &message)) return failed(message);
         const double loadMs = clock.nsecsElapsed() * 1e-6;
         const QString base = QFileInfo(path).completeBaseName();
+        if (loaded.environment) // issue 15: which environment, and what loading it cost
+            out << QStringLiteral("lightrig bench: %1 (%2), %3\n")
+                       .arg(environmentName(loaded.rig.environment), loaded.environment->source,
+                            environmentTimes(*loaded.environment));
         if (!procedural) {
             scenes.push_back({base, loaded.model, loadMs, loaded.rig, loaded.camera});
             continue;
@@ -245,10 +249,12 @@ int runBench(const QStringList& args) {
                 p.count = n;
                 p.range = range;
                 // The procedural lights shaded as the model's default rig would be (or as --shading says),
-                // over its ground (or --ground's), casting when --shadows on says so.
+                // over its ground (or --ground's) in its environment (or --environment's), casting when
+                // --shadows on says so.
                 Rig rig = proceduralRig(p);
                 rig.shading.model = loaded.rig.shading.model;
                 rig.ground = loaded.rig.ground;
+                rig.environment = loaded.rig.environment;
                 if (sceneOptions->shadows && !applyShadowsOption(rig, *sceneOptions->shadows, &message))
                     return failed(message);
                 scenes.push_back({QStringLiteral("%1 · %2").arg(base, proceduralRigName(p)), loaded.model,

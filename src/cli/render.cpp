@@ -158,7 +158,7 @@ int runRender(const QStringList& args) {
 
     OffscreenRenderer gl;
     if (!gl.initialize(&message) || !gl.setModel(loaded.model, &message)) return failed(message);
-    gl.setRig(loaded.rig);
+    showScene(gl.renderer(), loaded);
     RenderSettings settings;
     settings.exposureEV = options->exposureEV;
     settings.toneMap = options->toneMap;

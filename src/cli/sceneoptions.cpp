@@ -53,6 +53,7 @@ SceneOptionSet::SceneOptionSet()
 
 void SceneOptionSet::addTo(QCommandLineParser& parser) const {
     parser.addOptions({rig, cameraIndex, view, size, quality, exposure, toneMap, shading, ground, shadows});
+    parser.addOptions(environment.options());
 }
 
 std::optional<QSize> parseSize(const QString& text, int maxSide) {
@@ -145,6 +146,9 @@ std::optional<SceneOptions> SceneOptionSet::read(const QCommandLineParser& p, QS
             return bad(QStringLiteral("--shadows must be \"on\" or \"off\", got '%1'").arg(v));
         o.shadows = v == QLatin1String("on");
     }
+    const auto env = environment.read(p, usageError);
+    if (!env) return std::nullopt;
+    o.environment = *env;
     return o;
 }
 
@@ -205,6 +209,12 @@ bool loadScene(const QString& modelPath, const SceneOptions& options, LoadedScen
     if (scene->rig.ground.mode != GroundMode::Off)
         scene->rigSource += QStringLiteral(", %1 ground").arg(toString(scene->rig.ground.mode));
     scene->rigSource += shadowSummary(scene->rig);
+    applyEnvironmentOverrides(scene->rig.environment, options.environment);
+    if (!loadCliEnvironment(scene->rig.environment, environmentFolder(options.rigPath), &scene->environment,
+                            error))
+        return false;
+    if (const QString env = environmentName(scene->rig.environment); !env.isEmpty())
+        scene->rigSource += QStringLiteral(", ") + env;
     const double aspect = double(options.size.width()) / double(options.size.height());
     const auto fromFile = [&](int index) {
         const Camera& c = model.cameras[size_t(index)];
@@ -230,6 +240,11 @@ bool loadScene(const QString& modelPath, const SceneOptions& options, LoadedScen
         scene->cameraSource = QStringLiteral("view ") + name;
     }
     return true;
+}
+
+void showScene(Renderer& renderer, const LoadedScene& scene) {
+    renderer.setRig(scene.rig);
+    renderer.setEnvironment(scene.environment);
 }
 
 bool haveDisplay() {

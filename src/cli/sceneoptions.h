@@ -6,14 +6,19 @@
 //   --shading classic|pbr overrides the shading of whichever rig is used
 //   --ground off|visible|catcher   overrides the ground of whichever rig is used (issue 14)
 //   --shadows on|off      every light that can cast casts its shadow (at most kMaxShadowCasters), or none
+//   --environment FILE|builtin:NAME|studio|none, --environment-intensity EV, --environment-rotation DEG,
+//   --environment-background visible|blurred|color   override the rig's environment (environmentoption.h)
 //   --camera-index N | --view NAME   default: the model's camera 0, else "three-quarter" framing all
 //   --size WxH (1280x720) --quality Q --exposure EV --tonemap clamp|reinhard|aces
 #pragma once
+
+#include "environmentoption.h"
 
 #include "core/quality.h"
 #include "core/rig.h"
 #include "model/model.h"
 #include "render/camera.h"
+#include "render/renderer.h"
 
 #include <QCommandLineOption>
 #include <QCommandLineParser>
@@ -37,10 +42,12 @@ struct SceneOptions {
     std::optional<ShadingModel> shading; // --shading; unset: the rig's own (or the default rule's)
     std::optional<GroundMode> ground;    // --ground; unset: the rig's own
     std::optional<bool> shadows;         // --shadows on|off; unset: the rig's own
+    EnvironmentOverrides environment;    // --environment...; unset: the rig's own
 };
 
 struct SceneOptionSet {
     QCommandLineOption rig, cameraIndex, view, size, quality, exposure, toneMap, shading, ground, shadows;
+    EnvironmentOptionSet environment;
     SceneOptionSet();
     void addTo(QCommandLineParser& parser) const;
     // The parsed values, or a usage error message (exit 2). qualityList: --quality takes a comma list.
@@ -53,8 +60,12 @@ struct LoadedScene {
     Rig rig;
     // "RIG.json", "the model's lights", "the default rig" or "the physically based default rig", and the
     // shading: "the model's lights, pbr shading", the ground when there is one and the shadows when some
-    // light casts: "RIG.json, classic shading, catcher ground, shadows from 2 lights"
+    // light casts, and the environment: "RIG.json, classic shading, catcher ground, shadows from 2 lights,
+    // studio environment"
     QString rigSource;
+    // The rig's environment (after the --environment options) decoded and prefiltered; null for none.
+    // Hand it to the renderer with Renderer::setEnvironment.
+    std::shared_ptr<const LoadedEnvironment> environment;
     ViewCamera camera;
     QString cameraSource; // "camera 0 of the model", "view three-quarter"
 };
@@ -66,8 +77,12 @@ bool applyShadowsOption(Rig& rig, bool on, QString* error);
 // ", shadows from N lights" when some light casts, else empty: for the summary lines.
 QString shadowSummary(const Rig& rig);
 
-// Loads the model and the rig and picks the camera. False with a one-line reason (exit 1) on failure.
+// Loads the model, the rig and its environment and picks the camera. False with a one-line reason (exit 1) on
+// failure.
 bool loadScene(const QString& modelPath, const SceneOptions& options, LoadedScene* scene, QString* error);
+
+// Gives the renderer the scene's rig and its loaded environment (Renderer::setRig, setEnvironment).
+void showScene(Renderer& renderer, const LoadedScene& scene);
 
 // "WxH" with both sides in 1..maxSide.
 std::optional<QSize> parseSize(const QString& text, int maxSide = 32768);

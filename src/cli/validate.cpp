@@ -2,6 +2,7 @@
 // writer (core/rigjson.h) on the command line. Exit codes: 0 all good, 1 a file is invalid (or, for
 // format, not canonical / not writable), 2 usage error.
 #include "cli.h"
+#include "environmentoption.h"
 
 #include "core/rigjson.h"
 
@@ -70,8 +71,11 @@ int runValidate(const QStringList& args) {
     QTextStream out(stdout);
     int rc = Ok;
     for (const QString& file : parser.positionalArguments()) {
-        const RigReadResult r = readRigFile(file);
-        if (r.ok()) {
+        RigReadResult r = readRigFile(file);
+        if (r.ok() && !checkEnvironment(*r.rig, file, &r)) { // issue 15: its file decodes
+            print(out, r.errors);
+            rc = Failed;
+        } else if (r.ok()) {
             out << file << ": ok\n";
         } else {
             print(out, r.errors);

@@ -79,7 +79,7 @@ struct Environment {
     EnvironmentBackground background = EnvironmentBackground::Visible;
     double blur = 0.3; // Blurred: the background's blur as a GGX roughness, 0 ... 1
     DiffuseModel diffuse = DiffuseModel::Lambert; // classic shading: the diffuse model it is shaded with
-    Studio studio;     // Studio: the procedural environment
+    Studio studio;                                // Studio: the procedural environment
     std::vector<EnvironmentSpot> spots;
     bool isNone() const { return source == EnvironmentSource::None; }
     // What the prefiltered form depends on: changing only intensity, rotation, background or blur never

@@ -25,6 +25,17 @@ constexpr int kMinShadowResolution = 256; // texels per side, a power of two
 constexpr int kMaxShadowResolution = 4096;
 constexpr double kMaxShadowBias = 16.0;  // bias and normal offset, shadow-map texels, >= 0
 constexpr double kMaxShadowAngle = 10.0; // a directional light's angular diameter, degrees, >= 0
+// The rig's "environment" (docs/rig-format.md; lr::Environment in environment.h).
+constexpr double kMaxEnvironmentEV = 20.0;        // intensity, EV: -20 ... 20
+constexpr double kMaxSoftboxAngle = 170.0;        // a softbox's width and height, degrees: (0, 170]
+constexpr double kMaxEnvironmentSpotAngle = 90.0; // a dimmed spot's angle, degrees: (0, 90]
+constexpr int kMaxEnvironmentSoftboxes = 32;
+constexpr int kMaxEnvironmentSpots = 64;
+constexpr int kMaxEnvironmentPathLength = 4096; // "file", in characters
+
+// A rotation in degrees as the format writes it: in [0, 360) (-90 -> 270, 720 -> 0); non-finite values are
+// returned as they are (the reader refuses them).
+double normalizedEnvironmentRotation(double degrees);
 
 // Whether v is a shadow-map resolution the format allows: a power of two from 256 to 4096.
 constexpr bool isShadowResolution(double v) {

@@ -103,6 +103,10 @@ std::optional<Cone> readCone(Checker& c, const json::Value& v, const QString& pa
 std::optional<Shadow> readShadow(Checker& c, const json::Value& v, const QString& path,
                                  std::optional<LightType> type);
 std::optional<Ground> readGround(Checker& c, const json::Value& v, const QString& path);
+// rigjson_environment.cpp: the rig's "environment" (nullopt when invalid, errors reported), and its canonical
+// text (nullopt for the default environment, which is not written).
+std::optional<Environment> readEnvironment(Checker& c, const json::Value& v, const QString& path);
+std::optional<QByteArray> writeEnvironment(const Environment& environment);
 // Errors for keys of "falloff" or "cone" written on the light itself or in the other object. `light`
 // describes the light ("a point light") when `o` is the light object, with whether its type has a
 // falloff and a cone, so that the message can say "a directional light has no range".

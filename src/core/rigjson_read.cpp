@@ -233,6 +233,8 @@ RigReadResult readRigJson(const QByteArray& data, const QString& displayName) {
     if (const Value* s = top.take("shading")) readShading(c, *s, QStringLiteral("shading"), rig.shading);
     if (const Value* g = top.take("ground"))
         if (const auto ground = readGround(c, *g, QStringLiteral("ground"))) rig.ground = *ground;
+    if (const Value* e = top.take("environment"))
+        if (auto env = rigjson::readEnvironment(c, *e, QStringLiteral("environment"))) rig.environment = *env;
     if (const Value* lights = top.take("lights")) {
         if (lights->kind != Value::Kind::Array) {
             c.expected(*lights, QStringLiteral("lights"), QStringLiteral("an array of lights [...]"));

@@ -2,6 +2,7 @@
 // only the fields a light's type and models use, shortest round-trip numbers, two-space indentation,
 // one light key per line, small objects and vectors on one line, a final newline.
 #include "rigjson.h"
+#include "rigjson_check.h"
 #include "rigjson_json.h"
 
 #include <optional>
@@ -144,6 +145,8 @@ QByteArray writeRigJson(const Rig& rig) {
     if (rig.ground != Ground{})
         top.push_back(
             {"ground", inlineObject({{"mode", name(rig.ground.mode)}, {"color", vec(rig.ground.color)}})});
+    if (const auto environment = rigjson::writeEnvironment(rig.environment))
+        top.push_back({"environment", *environment});
     top.push_back({"lights", lights});
     return blockObject(top, "") + '\n';
 }

@@ -42,7 +42,9 @@ class TestBenchCli : public QObject {
         QVERIFY2(r.code == 0, qPrintable(show(r)));
         for (const char* option :
              {"--lights", "--quality", "--json", "--chart", "--frames", "--msaa", "--rig", "--camera-index",
-              "--view", "--size", "--exposure", "--tonemap", "--shading", "--ground", "--shadows"})
+              "--view", "--size", "--exposure", "--tonemap", "--shading", "--ground", "--shadows",
+              "--environment", "--environment-intensity", "--environment-rotation",
+              "--environment-background"})
             QVERIFY2(r.out.contains(QLatin1String(option)), option);
     }
 
@@ -63,6 +65,9 @@ class TestBenchCli : public QObject {
         QTest::addRow("bad approximation") << QStringList{"--approximations", "b1,b9"};
         QTest::addRow("unknown option") << QStringList{"--fastest"};
         QTest::addRow("bad shading") << QStringList{"--shading", "phong"}; // issue 13
+        QTest::addRow("bad environment intensity")
+            << QStringList{"--environment-intensity", "99"}; // issue 15
+        QTest::addRow("bad environment background") << QStringList{"--environment-background", "grey"};
     }
 
     void usageErrors() {
@@ -73,6 +78,8 @@ class TestBenchCli : public QObject {
         if (args.first() == QLatin1String("--shading"))
             QVERIFY2(r.err.contains(QStringLiteral("--shading must be \"classic\" or \"pbr\", got 'phong'")),
                      qPrintable(show(r)));
+        if (args.first().startsWith(QLatin1String("--environment")))
+            QVERIFY2(r.err.contains(args.first() + QStringLiteral(" must be ")), qPrintable(show(r)));
     }
 
     void badInputsWriteNothing() {
@@ -85,6 +92,12 @@ class TestBenchCli : public QObject {
             lightrig({QStringLiteral("--json"), m_dir.filePath(QStringLiteral("no/such/dir/out.json"))});
         QVERIFY2(noFolder.code == 1 && noFolder.err.contains(QStringLiteral("does not exist")),
                  qPrintable(show(noFolder)));
+        // Issue 15: an environment that does not load fails the bench, naming the file.
+        const Run sky =
+            lightrig({QStringLiteral(LIGHTRIG_TEST_DATA "/model/scene.gltf"), QStringLiteral("--environment"),
+                      m_dir.filePath(QStringLiteral("no-sky.exr")), QStringLiteral("--json"), json});
+        if (haveDisplay())
+            QVERIFY2(sky.code == 1 && sky.err.contains(QStringLiteral("no-sky.exr")), qPrintable(show(sky)));
         QVERIFY(!QFile::exists(json));
     }
 
@@ -172,6 +185,24 @@ class TestBenchCli : public QObject {
         const QStringList lines = r.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
         QCOMPARE(lines.size(), 3); // heading, column titles, one result
         QVERIFY(lines[2].startsWith(QStringLiteral("scene ")) && lines[2].contains(QStringLiteral(" fast ")));
+    }
+
+    // Issue 15: --environment studio: the bench says which environment it used and what loading it cost
+    // before its table.
+    void environmentIsNamed() {
+        if (!haveDisplay()) QSKIP("needs an X display with OpenGL: run under xvfb-run -a");
+        const Run r =
+            lightrig({QStringLiteral(LIGHTRIG_TEST_DATA "/model/scene.gltf"), QStringLiteral("--environment"),
+                      QStringLiteral("studio"), QStringLiteral("--quality"), QStringLiteral("fast"),
+                      QStringLiteral("--size"), QStringLiteral("48x32"), QStringLiteral("--frames"),
+                      QStringLiteral("2"), QStringLiteral("--no-uber"), QStringLiteral("--no-errors")});
+        QVERIFY2(r.code == 0, qPrintable(show(r)));
+        const QStringList lines = r.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 4); // the environment, heading, column titles, one result
+        QVERIFY2(
+            lines[0].startsWith(QStringLiteral("lightrig bench: studio environment (studio), decoded in ")) &&
+                lines[0].contains(QStringLiteral(" s, prefiltered in ")),
+            qPrintable(show(r)));
     }
 
     // Issue 14: procedural bench lights take --shadows and --ground like a loaded rig: with shadows on the

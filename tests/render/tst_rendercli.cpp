@@ -369,6 +369,67 @@ class TestRenderCli : public QObject {
                  qPrintable(r.show()));
     }
 
+    // Issue 15: --environment and its settings: a usage error naming the option for a bad value; a file that
+    // does not load fails the render naming it (nothing written); the studio renders and is named in the
+    // summary. (What the environment adds to the image is the renderer's: tests/render.)
+    void environmentOptions() {
+        for (const auto& [option, value, message] :
+             {std::tuple{"--environment-intensity", "25",
+                         "--environment-intensity must be a number of EV in -20..20, got '25'"},
+              std::tuple{"--environment-rotation", "north",
+                         "--environment-rotation must be a finite number of degrees, got 'north'"},
+              std::tuple{
+                  "--environment-background", "grey",
+                  "--environment-background must be \"visible\", \"blurred\" or \"color\", got 'grey'"},
+              std::tuple{"--environment", "", "--environment needs a file, builtin:NAME, studio or none"}}) {
+            const Run bad = lightrig({suzanne(), QString::fromLatin1(option), QString::fromLatin1(value),
+                                      QStringLiteral("-o"), path(QStringLiteral("never.png"))});
+            QVERIFY2(bad.code == 2, qPrintable(bad.show()));
+            QVERIFY2(bad.err.contains(QLatin1String(message)), qPrintable(bad.show()));
+            QVERIFY(!QFile::exists(path(QStringLiteral("never.png"))));
+        }
+        LR_REQUIRE_DISPLAY();
+        QFile kept(path(QStringLiteral("kept-env.png")));
+        QVERIFY(kept.open(QIODevice::WriteOnly));
+        kept.write("previous");
+        kept.close();
+        const Run missing =
+            lightrig({suzanne(), QStringLiteral("--environment"), path(QStringLiteral("no-sky.exr")),
+                      QStringLiteral("-o"), path(QStringLiteral("kept-env.png"))});
+        QVERIFY2(missing.code == 1, qPrintable(missing.show()));
+        QVERIFY2(missing.errorLines().size() == 1 &&
+                     missing.errorLines().first().contains(QStringLiteral("no-sky.exr")),
+                 qPrintable(missing.show()));
+        QVERIFY(kept.open(QIODevice::ReadOnly));
+        QCOMPARE(kept.readAll(), QByteArray("previous"));
+
+        const QStringList small{QStringLiteral("--size"), QStringLiteral("64x48"), QStringLiteral("-o"),
+                                path(QStringLiteral("environment.png"))};
+        const Run studio =
+            lightrig(QStringList{suzanne(), QStringLiteral("--environment"), QStringLiteral("studio"),
+                                 QStringLiteral("--environment-intensity"), QStringLiteral("-1"),
+                                 QStringLiteral("--environment-rotation"), QStringLiteral("45"),
+                                 QStringLiteral("--environment-background"), QStringLiteral("blurred")} +
+                     small);
+        QVERIFY2(studio.code == 0 &&
+                     studio.out.contains(QLatin1String("(the default rig, classic shading, studio "
+                                                       "environment)")),
+                 qPrintable(studio.show()));
+        QCOMPARE(QImage(path(QStringLiteral("environment.png"))).size(), QSize(64, 48));
+        // --environment none takes a rig's environment away.
+        const QString preset =
+            QStringLiteral(LIGHTRIG_SOURCE_DIR "/resources/presets/pbr-studio-environment.json");
+        Run r = lightrig(QStringList{suzanne(), QStringLiteral("--rig"), preset} + small);
+        QVERIFY2(r.code == 0 &&
+                     r.out.contains(QStringLiteral("(%1, pbr shading, studio environment)").arg(preset)),
+                 qPrintable(r.show()));
+        r = lightrig(QStringList{suzanne(), QStringLiteral("--rig"), preset, QStringLiteral("--environment"),
+                                 QStringLiteral("none")} +
+                     small);
+        QVERIFY2(r.code == 0 && r.out.contains(QStringLiteral("(%1, pbr shading)").arg(preset)),
+                 qPrintable(r.show()));
+    }
+
     // Issue 13: without --rig, a model's default rig follows core/defaultrig.h — its own lights, shaded
     // physically based exactly when its imported materials are (the test imports it to know).
     void defaultRigFollowsTheMaterials_data() {

@@ -37,6 +37,7 @@ class TestRigCli : public QObject {
     void validateUsage();
     void editorWithoutADisplay();
     void validateEmbeddedPreset();
+    void validateEnvironment();
     void fifoIsRefused();
     void typoIsAUsageError();
     void formatCheck();
@@ -115,6 +116,27 @@ void TestRigCli::validateEmbeddedPreset() {
     const QString path = builtinPresetPath(QStringLiteral("default"));
     const Run r = lightrig({QStringLiteral("validate"), path});
     QVERIFY2(r.code == 0 && r.lines() == QStringList{path + QStringLiteral(": ok")}, qPrintable(show(r)));
+}
+
+// Issue 15: validate also loads a rig's environment: the studio loads; an image file that does not (missing
+// here; beside the rig, where a relative file is looked for) is an error at environment.file naming it.
+void TestRigCli::validateEnvironment() {
+    const QString studio = dataPath(QStringLiteral("good/environment.json"));
+    const QString missing = m_dir.filePath(QStringLiteral("sky.json"));
+    QFile f(missing);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(R"({"format": "lightrig", "version": 1, "environment": {"source": "image", "file": "hdr/sky.exr"},
+        "lights": []})");
+    f.close();
+    const Run r = lightrig({QStringLiteral("validate"), studio, missing});
+    QVERIFY2(r.code == 1, qPrintable(show(r)));
+    QVERIFY2(r.lines().contains(studio + QStringLiteral(": ok")), qPrintable(show(r)));
+    QVERIFY2(!r.lines().contains(missing + QStringLiteral(": ok")), qPrintable(show(r)));
+    bool named = false;
+    for (const QString& line : r.lines())
+        named = named || (line.startsWith(missing + QStringLiteral(": environment.file: ")) &&
+                          line.contains(QStringLiteral("sky.exr")));
+    QVERIFY2(named, qPrintable(show(r)));
 }
 
 // `mkfifo f.json; lightrig validate f.json` blocked forever; now every reader of rig files refuses it.

@@ -8,6 +8,7 @@
 
 #include "core/colour.h"
 #include "core/defaultrig.h"
+#include "core/environment.h"
 #include "core/prepare.h"
 #include "core/shade.h"
 
@@ -21,13 +22,27 @@ using namespace lr::test;
 
 namespace {
 const QStringList kExpected = {
-    QStringLiteral("book-point-spot"), QStringLiteral("butterfly"),     QStringLiteral("d3d-spot"),
-    QStringLiteral("default"),         QStringLiteral("pbr-rim-heavy"), QStringLiteral("pbr-three-point"),
-    QStringLiteral("pbr-white-sweep"), QStringLiteral("rembrandt"),     QStringLiteral("rgb-three"),
-    QStringLiteral("rim-backlight"),   QStringLiteral("silhouette"),    QStringLiteral("three-point"),
+    QStringLiteral("book-point-spot"),
+    QStringLiteral("butterfly"),
+    QStringLiteral("d3d-spot"),
+    QStringLiteral("default"),
+    QStringLiteral("pbr-hdri-studio"),
+    QStringLiteral("pbr-rim-heavy"),
+    QStringLiteral("pbr-studio-environment"),
+    QStringLiteral("pbr-three-point"),
+    QStringLiteral("pbr-white-sweep"),
+    QStringLiteral("rembrandt"),
+    QStringLiteral("rgb-three"),
+    QStringLiteral("rim-backlight"),
+    QStringLiteral("silhouette"),
+    QStringLiteral("three-point"),
 };
-const QStringList kPbr = {QStringLiteral("pbr-rim-heavy"), QStringLiteral("pbr-three-point"),
+const QStringList kPbr = {QStringLiteral("pbr-hdri-studio"), QStringLiteral("pbr-rim-heavy"),
+                          QStringLiteral("pbr-studio-environment"), QStringLiteral("pbr-three-point"),
                           QStringLiteral("pbr-white-sweep")};
+// Issue 15: the presets lit by an environment (and which kind).
+const QStringList kEnvironment = {QStringLiteral("pbr-hdri-studio"),
+                                  QStringLiteral("pbr-studio-environment")};
 
 struct SphereLevels {
     double mean = 0.0;    // mean sRGB luminance level (0..255) over the pixels the sphere covers
@@ -79,6 +94,33 @@ SphereLevels renderSphere(const Rig& rig, const glm::dvec3& baseColor, double me
     return out;
 }
 
+// The rig with its procedural studio environment (if it has one) replaced by what core/environment.h defines
+// it to be: one directional light per texel of a 64×32 rendering of it (spots applied), shining from the
+// texel's direction turned by the rotation, of L·Ω lux (physically based) with L = radiance × 2^EV. An image
+// environment is decoded only by the render layer: it is left out here.
+Rig withStudioAsLights(const Rig& rig) {
+    if (rig.environment.source != EnvironmentSource::Studio) return rig;
+    const Environment& e = rig.environment;
+    EnvironmentImage img = environment::renderStudio(e.studio, 64);
+    environment::applySpots(&img, e.spots);
+    Rig out = rig;
+    out.environment = Environment{};
+    for (int y = 0; y < img.height; ++y)
+        for (int x = 0; x < img.width; ++x) {
+            const glm::dvec3 L = glm::dvec3(img.at(x, y)) * std::exp2(e.intensity);
+            const double peak = std::max({L.r, L.g, L.b});
+            if (!(peak > 0.0)) continue;
+            Light l = makeLight(LightType::Directional, QStringLiteral("texel"));
+            l.direction = -environment::rotateAboutUp(
+                environment::texelDirection(x, y, img.width, img.height), e.rotation);
+            l.color = L / peak;
+            l.intensity = peak * environment::texelSolidAngle(y, img.width, img.height);
+            l.specular = glm::dvec3(1.0);
+            out.lights.push_back(l);
+        }
+    return out;
+}
+
 Rig preset(const QString& name) {
     const RigReadResult r = readBuiltinPreset(name);
     if (!r.ok()) qFatal("%s", qPrintable(describe(r)));
@@ -114,6 +156,7 @@ class TestRigPresets : public QObject {
     void pbrDefaultRigIsThePbrThreePoint();
     void defaultRigRule();
     void shadowPresets();
+    void environmentPresets();
 };
 
 void TestRigPresets::names() {
@@ -139,7 +182,8 @@ void TestRigPresets::everyPreset() {
     LR_VERIFY_OK(r);
     QVERIFY2(r.warnings.isEmpty(), qPrintable(describe(r)));
     QVERIFY(!r.rig->name.isEmpty());
-    QVERIFY(!r.rig->lights.empty());
+    QVERIFY(!r.rig->lights.empty() || !r.rig->environment.isNone()); // something lights the model
+    QCOMPARE(kEnvironment.contains(name), !r.rig->environment.isNone());
     const QByteArray embedded = readAll(builtinPresetPath(name));
     QCOMPARE(writeRigJson(*r.rig), embedded); // canonical: load -> save is byte-identical
     QCOMPARE(
@@ -240,7 +284,7 @@ void TestRigPresets::rimBacklight() {
 
 void TestRigPresets::studioRigsAreInModelSpace() {
     for (const char* n : {"default", "three-point", "rembrandt", "butterfly", "silhouette", "pbr-three-point",
-                          "pbr-white-sweep", "pbr-rim-heavy"})
+                          "pbr-white-sweep", "pbr-rim-heavy", "pbr-studio-environment", "pbr-hdri-studio"})
         QVERIFY2(preset(QString::fromLatin1(n)).space == RigSpace::Model, n);
     for (const char* n : {"book-point-spot", "d3d-spot", "rgb-three"})
         QVERIFY2(preset(QString::fromLatin1(n)).space == RigSpace::World, n);
@@ -303,13 +347,15 @@ void TestRigPresets::pbrPresetsLightASphere_data() {
 
 // Each physically based preset at EV 0 with the clamp tone map: a mid-grey dielectric and a rough metal
 // sphere are neither black nor blown out (mean level in a band, few clipped or black pixels). The same
-// sphere with the lights switched off is black, so the band is the lights' doing.
+// sphere with the lights switched off is black, so the band is the lights' doing. A procedural studio
+// environment counts as its texels' directional lights (withStudioAsLights); an image environment
+// (pbr-hdri-studio's bundled one) cannot be decoded in core, so that preset is measured by its lights alone.
 void TestRigPresets::pbrPresetsLightASphere() {
     QFETCH(QString, name);
     QFETCH(double, baseColor);
     QFETCH(double, metallic);
     QFETCH(double, roughness);
-    const Rig rig = preset(name);
+    const Rig rig = withStudioAsLights(preset(name));
     const SphereLevels lit = renderSphere(rig, glm::dvec3(baseColor), metallic, roughness);
     const QString what = QStringLiteral("mean %1, %2% clipped, %3% black over %4 pixels")
                              .arg(lit.mean, 0, 'f', 1)
@@ -427,6 +473,29 @@ void TestRigPresets::shadowPresets() {
         const Rig rig = preset(n);
         QVERIFY2(casters(rig).isEmpty() && rig.ground == Ground{}, qPrintable(n));
     }
+}
+
+// Issue 15: the procedural studio preset is lit by its environment alone, three softboxes: a key (the
+// brightest, in front to the right and above), a tall narrow fill strip on the other side, and a top light;
+// the HDRI preset uses the bundled studio image and adds a key light.
+void TestRigPresets::environmentPresets() {
+    const Rig studio = preset(QStringLiteral("pbr-studio-environment"));
+    LR_COMPARE(studio.environment.source, EnvironmentSource::Studio);
+    QVERIFY(studio.lights.empty());
+    const std::vector<Softbox>& boxes = studio.environment.studio.softboxes;
+    QCOMPARE(boxes.size(), size_t(3));
+    const Softbox &key = boxes[0], &strip = boxes[1], &top = boxes[2];
+    QVERIFY(key.intensity > strip.intensity && key.intensity > top.intensity);
+    QVERIFY(key.azimuth > 0.0 && key.azimuth < 90.0 && key.elevation > 0.0); // front right, above
+    QVERIFY(strip.azimuth < 0.0 && strip.height >= 3.0 * strip.width);       // the other side, tall
+    QVERIFY(top.elevation >= 60.0);
+    const Rig hdri = preset(QStringLiteral("pbr-hdri-studio"));
+    LR_COMPARE(hdri.environment.source, EnvironmentSource::Image);
+    QCOMPARE(hdri.environment.file, QStringLiteral("builtin:studio"));
+    QCOMPARE(hdri.lights.size(), size_t(1));
+    QCOMPARE(hdri.lights[0].name, QStringLiteral("Key"));
+    for (const Rig* rig : {&studio, &hdri})
+        QCOMPARE(rig->ambient, glm::dvec3(0.0)); // the environment is the ambient light
 }
 
 QTEST_GUILESS_MAIN(TestRigPresets)

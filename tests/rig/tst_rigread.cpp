@@ -26,6 +26,8 @@ class TestRigRead : public QObject {
     void allFields();
     void unknownKeysAreWarnings();
     void utf8BomIsAccepted();
+    void environment();
+    void environmentDefaultsAndWarnings();
     void badFiles_data();
     void badFiles();
     void everyBadFileIsChecked();
@@ -164,6 +166,62 @@ void TestRigRead::unknownKeysAreWarnings() {
     QVERIFY2(hasMessage(r.warnings, file, QStringLiteral("lights[0].falloff-note: unknown key")),
              qPrintable(describe(r)));
     QCOMPARE(r.rig->lights[0].color, glm::dvec3(1.0)); // "colour" is not "color"
+}
+
+// Issue 15: every key of the "environment" block, as good/environment.json gives it.
+void TestRigRead::environment() {
+    const QString file = dataPath(QStringLiteral("good/environment.json"));
+    const RigReadResult r = readRigFile(file);
+    LR_VERIFY_OK(r);
+    QCOMPARE(writeRigJson(*r.rig), readAll(file)); // in canonical form
+    QVERIFY2(r.warnings.isEmpty(), qPrintable(describe(r)));
+    const Environment& e = r.rig->environment;
+    LR_COMPARE(e.source, EnvironmentSource::Studio);
+    QCOMPARE(e.file,
+             QStringLiteral("hdr/sky.exr")); // kept as written, resolved against the rig's folder later
+    QCOMPARE(e.intensity, -1.5);
+    QCOMPARE(e.rotation, 270.0);
+    LR_COMPARE(e.background, EnvironmentBackground::Blurred);
+    QCOMPARE(e.blur, 0.45);
+    LR_COMPARE(e.diffuse, DiffuseModel::HalfLambert);
+    QCOMPARE(e.studio.zenith, glm::dvec3(0.2, 0.22, 0.25));
+    QCOMPARE(e.studio.horizon, glm::dvec3(0.5));
+    QCOMPARE(e.studio.floor, glm::dvec3(0.05));
+    QCOMPARE(e.studio.softboxes.size(), size_t(3));
+    LR_COMPARE(e.studio.softboxes[1], (Softbox{-60, 10, 15, 80, glm::dvec3(1.0), 2}));
+    QCOMPARE(e.spots.size(), size_t(2));
+    LR_COMPARE(e.spots[1], (EnvironmentSpot{{0.6, 0.8, 0.0}, 12.5, 0.25}));
+}
+
+// Absent keys take lr::Environment's defaults; a spot's direction is normalised; unknown keys anywhere in the
+// block are warnings naming their path (as everywhere in the format), and every error is listed.
+void TestRigRead::environmentDefaultsAndWarnings() {
+    RigReadResult r = readRigJson(rigJson({}, R"("environment": {"source": "studio", "hdr": 1, "studio": {
+        "softboxes": [{"azimuth": 90, "glow": 2}]}, "spots": [{"direction": [0, 0, -5], "size": 3}]},)"),
+                                  QStringLiteral("e.json"));
+    LR_VERIFY_OK(r);
+    const Environment& e = r.rig->environment;
+    Environment expected;
+    expected.source = EnvironmentSource::Studio;
+    Softbox box;
+    box.azimuth = 90;
+    expected.studio.softboxes = {box};
+    expected.spots = {EnvironmentSpot{{0, 0, -1}, 5, 0}};
+    LR_COMPARE(e, expected);
+    QCOMPARE(r.warnings.size(), 3);
+    for (const char* w : {"environment.hdr: unknown key", "environment.studio.softboxes[0].glow: unknown key",
+                          "environment.spots[0].size: unknown key"})
+        QVERIFY2(hasMessage(r.warnings, QStringLiteral("e.json"), QLatin1String(w)), qPrintable(describe(r)));
+
+    r = readRigJson(rigJson({}, R"("environment": {"source": "image", "intensity": 30, "studio": {"softboxes":
+        [{"width": -1}]}, "spots": [{"direction": [0, 0, 0]}]},)"),
+                    QStringLiteral("e.json"));
+    QVERIFY(!r.ok());
+    QCOMPARE(r.errors.size(), 4);
+    for (const char* m : {"environment.file: missing", "environment.intensity: must be",
+                          "environment.studio.softboxes[0].width: must be",
+                          "environment.spots[0].direction: must not be the zero vector"})
+        QVERIFY2(hasMessage(r.errors, QStringLiteral("e.json"), QLatin1String(m)), qPrintable(describe(r)));
 }
 
 void TestRigRead::utf8BomIsAccepted() {

@@ -267,6 +267,90 @@ void TestRigRules::rules_data() {
         "ground.color[1]: must be a finite number from 0 to 1, got 1.5");
     row("ground colour 2 components", rigJson({}, R"("ground": {"mode": "visible", "color": [1, 1]},)"),
         "ground.color: must be an RGB albedo");
+    // Environment (issue 15).
+    const auto env = [](const QByteArray& members) {
+        return rigJson({}, "\"environment\": {" + members + "},");
+    };
+    row("environment not object", rigJson({}, R"("environment": "studio",)"),
+        "environment: must be an object");
+    row("environment source missing", env(R"("intensity": 1)"),
+        "environment.source: missing; one of \"none\", \"image\" or \"studio\"");
+    row("environment source unknown", env(R"("source": "hdri")"),
+        "environment.source: must be \"none\", \"image\" or \"studio\", got the string \"hdri\"");
+    row("environment image without file", env(R"("source": "image")"),
+        "environment.file: missing; an image environment needs \"file\"");
+    row("environment file empty", env(R"("source": "image", "file": "")"),
+        "environment.file: must not be empty");
+    row("environment file not a string", env(R"("source": "image", "file": 3)"),
+        "environment.file: must be a file name (a string), got 3");
+    row("environment file NUL", env(R"("source": "image", "file": "a\u0000.exr")"),
+        "environment.file: must not contain a NUL character");
+    row("environment file builtin without name", env(R"("source": "image", "file": "builtin:")"),
+        "environment.file: \"builtin:\" needs the name of a bundled environment");
+    row("environment file too long", env("\"source\": \"image\", \"file\": \"" + QByteArray(4097, 'f') + '"'),
+        "environment.file: must be at most 4096 characters, got 4097");
+    row("environment intensity 21", env(R"("source": "studio", "intensity": 21)"),
+        "environment.intensity: must be a finite number from -20 to 20, got 21");
+    row("environment intensity -20.5", env(R"("source": "studio", "intensity": -20.5)"),
+        "environment.intensity: must be a finite number from -20 to 20, got -20.5");
+    row("environment rotation string", env(R"("source": "studio", "rotation": "90")"),
+        "environment.rotation: must be a finite number, got the string \"90\"");
+    row("environment rotation overflow", env(R"("source": "studio", "rotation": 1e999)"),
+        "environment.rotation: must be a finite number, got 1e999");
+    row("environment background", env(R"("source": "studio", "background": "blur")"),
+        "environment.background: must be \"visible\", \"blurred\" or \"color\", got the string \"blur\"");
+    row("environment blur 1.5", env(R"("source": "studio", "blur": 1.5)"),
+        "environment.blur: must be a finite number from 0 to 1, got 1.5");
+    row("environment diffuse", env(R"("source": "studio", "diffuse": "oren-nayar")"),
+        "environment.diffuse: must be \"lambert\" or \"half-lambert\", got the string \"oren-nayar\"");
+    row("studio not object", env(R"("source": "studio", "studio": [])"),
+        "environment.studio: must be an object");
+    row("studio zenith negative", env(R"("source": "studio", "studio": {"zenith": [1, -1, 1]})"),
+        "environment.studio.zenith[1]: must be a finite number from 0 to 1000000, got -1");
+    row("studio floor 2 components", env(R"("source": "studio", "studio": {"floor": [1, 1]})"),
+        "environment.studio.floor: must be an RGB colour");
+    row("studio softboxes not array", env(R"("source": "studio", "studio": {"softboxes": {}})"),
+        "environment.studio.softboxes: must be an array of softboxes");
+    QByteArray boxes;
+    for (int i = 0; i <= kMaxEnvironmentSoftboxes; ++i)
+        boxes += i ? ", {}" : "{}";
+    row("33 softboxes", env(R"("source": "studio", "studio": {"softboxes": [)" + boxes + "]}"),
+        "environment.studio.softboxes: 33 softboxes; at most 32 are allowed");
+    row("softbox not object", env(R"("source": "studio", "studio": {"softboxes": [{}, 2]})"),
+        "environment.studio.softboxes[1]: must be an object");
+    row("softbox elevation 91", env(R"("source": "studio", "studio": {"softboxes": [{"elevation": 91}]})"),
+        "environment.studio.softboxes[0].elevation: must be a finite number from -90 to 90, got 91");
+    row("softbox azimuth overflow",
+        env(R"("source": "studio", "studio": {"softboxes": [{"azimuth": -1e999}]})"),
+        "environment.studio.softboxes[0].azimuth: must be a finite number, got -1e999");
+    row("softbox width 0", env(R"("source": "studio", "studio": {"softboxes": [{"width": 0}]})"),
+        "environment.studio.softboxes[0].width: must be a finite number > 0 and <= 170, got 0");
+    row("softbox height 171", env(R"("source": "studio", "studio": {"softboxes": [{}, {"height": 171}]})"),
+        "environment.studio.softboxes[1].height: must be a finite number > 0 and <= 170, got 171");
+    row("softbox colour negative",
+        env(R"("source": "studio", "studio": {"softboxes": [{"color": [1, 1, -2]}]})"),
+        "environment.studio.softboxes[0].color[2]: must be a finite number from 0 to 1000000, got -2");
+    row("softbox intensity negative",
+        env(R"("source": "studio", "studio": {"softboxes": [{"intensity": -1}]})"),
+        "environment.studio.softboxes[0].intensity: must be a finite number from 0 to 1000000, got -1");
+    row("spots not array", env(R"("source": "studio", "spots": {"direction": [0, 1, 0]})"),
+        "environment.spots: must be an array of spots");
+    QByteArray spots;
+    for (int i = 0; i <= kMaxEnvironmentSpots; ++i)
+        spots += i ? R"(, {"direction": [0, 1, 0]})" : R"({"direction": [0, 1, 0]})";
+    row("65 spots", env(R"("source": "studio", "spots": [)" + spots + "]"),
+        "environment.spots: 65 spots; at most 64 are allowed");
+    row("spot without direction", env(R"("source": "studio", "spots": [{"angle": 5}])"),
+        "environment.spots[0].direction: missing; a dimmed spot needs a direction");
+    row("spot direction zero", env(R"("source": "studio", "spots": [{"direction": [0, 0, 0]}])"),
+        "environment.spots[0].direction: must not be the zero vector");
+    row("spot angle 0", env(R"("source": "studio", "spots": [{"direction": [0, 1, 0], "angle": 0}])"),
+        "environment.spots[0].angle: must be a finite number > 0 and <= 90, got 0");
+    row("spot angle 91",
+        env(R"("source": "image", "file": "a.exr", "spots": [{"direction": [1, 0, 0]}, {"direction": [0, 1, 0], "angle": 91}])"),
+        "environment.spots[1].angle: must be a finite number > 0 and <= 90, got 91");
+    row("spot factor 1.5", env(R"("source": "none", "spots": [{"direction": [0, 1, 0], "factor": 1.5}])"),
+        "environment.spots[0].factor: must be a finite number from 0 to 1, got 1.5");
 }
 
 // Each row breaks exactly one rule: exactly one error, naming the path; no rig comes back.

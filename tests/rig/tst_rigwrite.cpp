@@ -2,6 +2,8 @@
 // (byte-identical after load -> save), only used fields are written, and saving is atomic.
 #include "rigtest.h"
 
+#include "core/rigjson_json.h"
+
 #include <QRandomGenerator>
 #include <QTemporaryDir>
 #include <csignal>
@@ -33,6 +35,7 @@ class RigGenerator {
             r.shading.shininess = positive(kMaxRigExponent);
         }
         if (chance(0.4)) r.ground = {pick<GroundMode>(), {albedo(), albedo(), albedo()}};
+        if (chance(0.4)) r.environment = environment();
         const int n = int(m_rng.bounded(8)); // fewer than kMaxShadowCasters, whatever casts
         for (int i = 0; i < n; ++i)
             r.lights.push_back(light());
@@ -40,6 +43,38 @@ class RigGenerator {
     }
 
   private:
+    // Any valid environment: rotations already in [0, 360) (the canonical form normalises them).
+    Environment environment() {
+        Environment e;
+        e.source = pick<EnvironmentSource>();
+        if (e.source == EnvironmentSource::Image || chance(0.3))
+            e.file = chance(0.3) ? QStringLiteral("builtin:studio") : QStringLiteral("hdr/") + name() + 'x';
+        e.intensity = (chance(0.5) ? -1.0 : 1.0) * std::min(kMaxEnvironmentEV, value(kMaxEnvironmentEV));
+        e.rotation = std::min(value(360.0), 359.5);
+        e.background = pick<EnvironmentBackground>();
+        e.blur = std::min(1.0, value(1.0));
+        e.diffuse = pick<DiffuseModel>();
+        if (e.source == EnvironmentSource::Studio || chance(0.2)) {
+            e.studio.zenith = color();
+            e.studio.floor = color();
+            const int n = int(m_rng.bounded(kMaxEnvironmentSoftboxes + 1));
+            for (int i = 0; i < n; ++i) {
+                Softbox b;
+                b.azimuth = signedLength();
+                b.elevation = (chance(0.5) ? -1.0 : 1.0) * std::min(90.0, value(90.0));
+                b.width = std::min(kMaxSoftboxAngle, positive(kMaxSoftboxAngle));
+                b.height = std::min(kMaxSoftboxAngle, positive(kMaxSoftboxAngle));
+                b.color = color();
+                b.intensity = value(kMaxRigIntensity);
+                e.studio.softboxes.push_back(b);
+            }
+        }
+        const int spots = chance(0.5) ? int(m_rng.bounded(kMaxEnvironmentSpots + 1)) : 0;
+        for (int i = 0; i < spots; ++i)
+            e.spots.push_back({unit(), std::min(90.0, positive(90.0)), std::min(1.0, value(1.0))});
+        return e;
+    }
+
     template <typename E> E pick() { return E(m_rng.bounded(enumCount<E>())); }
     bool chance(double p) { return m_rng.generateDouble() < p; }
 
@@ -171,6 +206,10 @@ class TestRigWrite : public QObject {
     void numbersAreShortestAndExact();
     void onlyUsedFieldsAreWritten();
     void shadowAndGroundOnlyWhenSet();
+    void environmentOnlyWhenSet();
+    void environmentRotationIsNormalised();
+    void filesWithoutEnvironmentKeepTheirBytes_data();
+    void filesWithoutEnvironmentKeepTheirBytes();
     void saveAndReload();
     void saveRefusesInvalidRig();
     void nonFiniteValuesAreNotSaved();
@@ -196,7 +235,7 @@ void TestRigWrite::randomRigsRoundTrip() {
 void TestRigWrite::loadSaveIsByteIdentical_data() {
     QTest::addColumn<QString>("file");
     for (const char* f : {"good/issue-example.json", "good/minimal.json", "good/all-fields.json",
-                          "good/utf8-bom.json", "good/shadows.json"})
+                          "good/utf8-bom.json", "good/shadows.json", "good/environment.json"})
         QTest::newRow(f) << dataPath(QString::fromLatin1(f));
 }
 
@@ -305,6 +344,100 @@ void TestRigWrite::shadowAndGroundOnlyWhenSet() {
     text = writeRigJson(grey);
     QVERIFY2(text.contains("\"ground\": {\"mode\": \"off\", \"color\": [0.25, 0.5, 1]}"), text.constData());
     QVERIFY(readRigJson(text, QStringLiteral("g.json")).rig->ground == grey.ground);
+}
+
+// Issue 15: "environment" is written only when it is not the default (so every file from before keeps its
+// bytes), after "ground"; then every scalar, the file when there is one, the studio when it is the source
+// (or was edited), the spots when there are some.
+void TestRigWrite::environmentOnlyWhenSet() {
+    Rig rig;
+    rig.lights = {makeLight(LightType::Directional, QStringLiteral("d"))};
+    QVERIFY2(!writeRigJson(rig).contains("environment"), writeRigJson(rig).constData());
+
+    rig.environment.source = EnvironmentSource::Image;
+    rig.environment.file = QStringLiteral("builtin:studio");
+    rig.environment.intensity = 1.5;
+    QByteArray text = writeRigJson(rig);
+    QVERIFY2(
+        text.contains("  \"shading\": {\"specular\": \"phong\", \"viewer\": \"local\", \"shininess\": "
+                      "32},\n  \"environment\": {\n    \"source\": \"image\",\n    \"file\": "
+                      "\"builtin:studio\",\n    \"intensity\": 1.5,\n    \"rotation\": 0,\n    "
+                      "\"background\": \"visible\",\n    \"blur\": 0.3,\n    \"diffuse\": \"lambert\"\n  "
+                      "},\n  \"lights\": ["),
+        text.constData());
+    RigReadResult r = readRigJson(text, QStringLiteral("e.json"));
+    LR_VERIFY_OK(r);
+    QVERIFY(r.rig->environment == rig.environment);
+
+    // The procedural studio: written in full, softboxes and spots one per line.
+    rig.environment.source = EnvironmentSource::Studio;
+    rig.environment.studio.softboxes = {Softbox{}, Softbox{-30, 10, 20, 90, {1, 0.5, 0.25}, 0}};
+    rig.environment.spots = {EnvironmentSpot{{1, 0, 0}, 10, 0.5}};
+    text = writeRigJson(rig);
+    QVERIFY2(
+        text.contains("    \"studio\": {\n      \"zenith\": [0.35, 0.35, 0.35],\n      \"horizon\": "
+                      "[0.6, 0.6, 0.6],\n      \"floor\": [0.12, 0.12, 0.12],\n      \"softboxes\": [\n"
+                      "        {\"azimuth\": 0, \"elevation\": 30, \"width\": 40, \"height\": 30, "
+                      "\"color\": [1, 1, 1], \"intensity\": 4},\n        {\"azimuth\": -30, "
+                      "\"elevation\": 10, \"width\": 20, \"height\": 90, \"color\": [1, 0.5, 0.25], "
+                      "\"intensity\": 0}\n      ]\n    },\n    \"spots\": [\n      {\"direction\": [1, 0, "
+                      "0], \"angle\": 10, \"factor\": 0.5}\n    ]\n  },\n"),
+        text.constData());
+    r = readRigJson(text, QStringLiteral("e.json"));
+    LR_VERIFY_OK(r);
+    QVERIFY(r.rig->environment == rig.environment);
+    QCOMPARE(writeRigJson(*r.rig), text);
+
+    // Switched off, the settings are kept for later (like a shadow that is off); a default studio of an
+    // image environment is not written.
+    Rig off;
+    off.environment.rotation = 90.0;
+    text = writeRigJson(off);
+    QVERIFY2(text.contains("\"source\": \"none\",\n    \"intensity\": 0,\n    \"rotation\": 90,"),
+             text.constData());
+    QVERIFY2(!text.contains("studio") && !text.contains("spots") && !text.contains("file"), text.constData());
+    r = readRigJson(text, QStringLiteral("e.json"));
+    LR_VERIFY_OK(r);
+    QVERIFY(r.rig->environment == off.environment);
+}
+
+// Rotations are any finite number of degrees, read and written in [0, 360).
+void TestRigWrite::environmentRotationIsNormalised() {
+    for (const auto& [given, written] :
+         {std::pair{-90.0, 270.0}, std::pair{720.0, 0.0}, std::pair{359.5, 359.5}, std::pair{-1e-20, 0.0},
+          std::pair{1e300, std::fmod(1e300, 360.0)}, std::pair{-0.0, 0.0}}) {
+        QCOMPARE(normalizedEnvironmentRotation(given), written);
+        Rig rig;
+        rig.environment.source = EnvironmentSource::Studio;
+        rig.environment.rotation = given;
+        const QByteArray text = writeRigJson(rig);
+        QVERIFY2(text.contains("\"rotation\": " + json::formatNumber(written) + ','), text.constData());
+        const QByteArray file = rigJson({}, R"("environment": {"source": "studio", "rotation": )" +
+                                                json::formatNumber(given) + "},");
+        const RigReadResult r = readRigJson(file, QStringLiteral("r.json"));
+        LR_VERIFY_OK(r);
+        QCOMPARE(r.rig->environment.rotation, written);
+        QVERIFY(!std::signbit(r.rig->environment.rotation));
+    }
+}
+
+// Files from before environments (every canonical file of the test data and every preset without one) load
+// and save to exactly their bytes: no "environment" appears.
+void TestRigWrite::filesWithoutEnvironmentKeepTheirBytes_data() {
+    QTest::addColumn<QString>("file");
+    QTest::newRow("good/shadows.json") << dataPath(QStringLiteral("good/shadows.json")); // canonical
+    for (const QString& preset : builtinPresetNames())
+        if (!readAll(builtinPresetPath(preset)).contains("\"environment\""))
+            QTest::newRow(qPrintable(preset)) << builtinPresetPath(preset);
+}
+
+void TestRigWrite::filesWithoutEnvironmentKeepTheirBytes() {
+    QFETCH(QString, file);
+    const QByteArray bytes = readAll(file);
+    const RigReadResult r = readRigJson(bytes, file);
+    LR_VERIFY_OK(r);
+    LR_COMPARE(r.rig->environment, Environment{});
+    QCOMPARE(writeRigJson(*r.rig), bytes);
 }
 
 void TestRigWrite::saveAndReload() {

@@ -1,0 +1,264 @@
+// The rig's "environment" object (docs/rig-format.md "environment", issue 15): which keys it has, their
+// defaults and ranges, and its canonical form.
+#include "rigjson_check.h"
+
+#include <cmath>
+
+namespace lr {
+
+double normalizedEnvironmentRotation(double degrees) {
+    if (!std::isfinite(degrees)) return degrees;
+    double r = std::fmod(degrees, 360.0); // exact
+    if (r < 0.0) r += 360.0;
+    if (r >= 360.0) r = 0.0; // -1e-20 + 360 rounds to 360
+    return r + 0.0;          // -0 -> 0
+}
+
+namespace rigjson {
+
+using json::Value;
+
+namespace {
+
+// "file": a path (relative to the rig's folder, or absolute) or "builtin:NAME"; never empty.
+std::optional<QString> readFile(Checker& c, const Value& v, const QString& path) {
+    if (v.kind != Value::Kind::String) {
+        c.expected(v, path, QStringLiteral("a file name (a string)"));
+        return std::nullopt;
+    }
+    const QString& s = v.string;
+    const QString builtin = QString::fromLatin1(kBuiltinEnvironmentPrefix);
+    if (s.isEmpty())
+        c.error(path,
+                QStringLiteral("must not be empty; an image environment names its file, relative to the "
+                               "rig's folder, absolute, or \"builtin:NAME\""));
+    else if (s.size() > kMaxEnvironmentPathLength)
+        c.error(path, QStringLiteral("must be at most %1 characters, got %2")
+                          .arg(kMaxEnvironmentPathLength)
+                          .arg(s.size()));
+    else if (s.contains(QChar(0)))
+        c.error(path, QStringLiteral("must not contain a NUL character (\\u0000)"));
+    else if (s == builtin)
+        c.error(path, QStringLiteral("\"%1\" needs the name of a bundled environment after it, e.g. "
+                                     "\"%1studio\"")
+                          .arg(builtin));
+    else
+        return s;
+    return std::nullopt;
+}
+
+std::optional<Softbox> readSoftbox(Checker& c, const Value& v, const QString& path) {
+    if (!c.isObject(v, path)) return std::nullopt;
+    ObjectView o(c, v, path);
+    Softbox b;
+    bool ok = true;
+    const auto number = [&](const char* key, double& out, const Interval& in) {
+        if (const Value* x = o.take(key)) {
+            if (const auto n = c.number(*x, o.path(key), in))
+                out = *n;
+            else
+                ok = false;
+        }
+    };
+    number("azimuth", b.azimuth, {});
+    number("elevation", b.elevation, {-90.0, true, 90.0, true});
+    number("width", b.width, positive(kMaxSoftboxAngle));
+    number("height", b.height, positive(kMaxSoftboxAngle));
+    if (const Value* x = o.take("color")) {
+        if (const auto col = c.color(*x, o.path("color")))
+            b.color = *col;
+        else
+            ok = false;
+    }
+    number("intensity", b.intensity, nonNegative(kMaxRigIntensity));
+    o.finish();
+    return ok ? std::optional(b) : std::nullopt;
+}
+
+std::optional<EnvironmentSpot> readSpot(Checker& c, const Value& v, const QString& path) {
+    if (!c.isObject(v, path)) return std::nullopt;
+    ObjectView o(c, v, path);
+    EnvironmentSpot s;
+    bool ok = true;
+    if (const Value* d = o.take("direction")) {
+        if (const auto dir = c.direction(*d, o.path("direction")))
+            s.direction = *dir;
+        else
+            ok = false;
+    } else {
+        c.error(o.path("direction"),
+                QStringLiteral("missing; a dimmed spot needs a direction [x, y, z] (the spot's centre)"));
+        ok = false;
+    }
+    const auto number = [&](const char* key, double& out, const Interval& in) {
+        if (const Value* x = o.take(key)) {
+            if (const auto n = c.number(*x, o.path(key), in))
+                out = *n;
+            else
+                ok = false;
+        }
+    };
+    number("angle", s.angle, positive(kMaxEnvironmentSpotAngle));
+    number("factor", s.factor, nonNegative(1.0));
+    o.finish();
+    return ok ? std::optional(s) : std::nullopt;
+}
+
+// An array of at most `max` objects read by `item`; false when anything in it was invalid.
+template <typename T, typename Item>
+bool readList(Checker& c, const Value& v, const QString& path, int max, const QString& what,
+              std::vector<T>& out, Item&& item) {
+    if (v.kind != Value::Kind::Array) {
+        c.expected(v, path, QStringLiteral("an array of %1 [...]").arg(what));
+        return false;
+    }
+    if (v.items.size() > size_t(max)) {
+        c.error(path, QStringLiteral("%1 %2; at most %3 are allowed").arg(v.items.size()).arg(what).arg(max));
+        return false;
+    }
+    bool ok = true;
+    out.clear();
+    for (size_t i = 0; i < v.items.size(); ++i) {
+        if (auto x = item(c, v.items[i], json::appendIndex(path, qsizetype(i))))
+            out.push_back(std::move(*x));
+        else
+            ok = false;
+    }
+    return ok;
+}
+
+std::optional<Studio> readStudio(Checker& c, const Value& v, const QString& path) {
+    if (!c.isObject(v, path)) return std::nullopt;
+    ObjectView o(c, v, path);
+    Studio s;
+    bool ok = true;
+    for (const auto& [key, out] :
+         {std::pair{"zenith", &s.zenith}, std::pair{"horizon", &s.horizon}, std::pair{"floor", &s.floor}}) {
+        if (const Value* x = o.take(key)) {
+            if (const auto col = c.color(*x, o.path(key)))
+                *out = *col;
+            else
+                ok = false;
+        }
+    }
+    if (const Value* x = o.take("softboxes"))
+        ok = readList(c, *x, o.path("softboxes"), kMaxEnvironmentSoftboxes, QStringLiteral("softboxes"),
+                      s.softboxes, readSoftbox) &&
+             ok;
+    o.finish();
+    return ok ? std::optional(s) : std::nullopt;
+}
+
+// Canonical text: the writer's conventions (rigjson_write.cpp), for the one object that nests blocks.
+QByteArray num(double v) {
+    return json::formatNumber(v);
+}
+QByteArray vec(const glm::dvec3& v) {
+    return '[' + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + ']';
+}
+using Fields = std::vector<std::pair<const char*, QByteArray>>;
+QByteArray inlineObject(const Fields& fields) {
+    QByteArray out = "{";
+    for (size_t i = 0; i < fields.size(); ++i)
+        out += (i ? ", \"" : "\"") + QByteArray(fields[i].first) + "\": " + fields[i].second;
+    return out + '}';
+}
+QByteArray block(const Fields& fields, const QByteArray& indent) {
+    QByteArray out = "{\n";
+    for (size_t i = 0; i < fields.size(); ++i)
+        out += indent + "  \"" + fields[i].first + "\": " + fields[i].second +
+               (i + 1 < fields.size() ? ",\n" : "\n");
+    return out + indent + '}';
+}
+QByteArray list(const std::vector<QByteArray>& items, const QByteArray& indent) {
+    if (items.empty()) return "[]";
+    QByteArray out = "[\n";
+    for (size_t i = 0; i < items.size(); ++i)
+        out += indent + "  " + items[i] + (i + 1 < items.size() ? ",\n" : "\n");
+    return out + indent + ']';
+}
+
+} // namespace
+
+std::optional<Environment> readEnvironment(Checker& c, const Value& v, const QString& path) {
+    if (!c.isObject(v, path)) return std::nullopt;
+    ObjectView o(c, v, path);
+    Environment e;
+    bool ok = true;
+    const auto keep = [&](auto result, auto& out) {
+        if (result)
+            out = *result;
+        else
+            ok = false;
+    };
+    if (const Value* s = o.take("source")) {
+        keep(c.enumValue<EnvironmentSource>(*s, o.path("source")), e.source);
+    } else {
+        c.error(o.path("source"),
+                QStringLiteral("missing; one of %1").arg(allowedNames<EnvironmentSource>()));
+        ok = false;
+    }
+    if (const Value* f = o.take("file")) {
+        keep(readFile(c, *f, o.path("file")), e.file);
+    } else if (e.source == EnvironmentSource::Image) {
+        c.error(o.path("file"),
+                QStringLiteral("missing; an image environment needs \"file\": an .hdr or .exr file relative "
+                               "to the rig's folder, absolute, or \"builtin:NAME\""));
+        ok = false;
+    }
+    const auto number = [&](const char* key, double& out, const Interval& in) {
+        if (const Value* x = o.take(key)) keep(c.number(*x, o.path(key), in), out);
+    };
+    number("intensity", e.intensity, {-kMaxEnvironmentEV, true, kMaxEnvironmentEV, true});
+    number("rotation", e.rotation, {});
+    e.rotation = normalizedEnvironmentRotation(e.rotation);
+    if (const Value* b = o.take("background"))
+        keep(c.enumValue<EnvironmentBackground>(*b, o.path("background")), e.background);
+    number("blur", e.blur, nonNegative(1.0));
+    if (const Value* d = o.take("diffuse")) keep(c.enumValue<DiffuseModel>(*d, o.path("diffuse")), e.diffuse);
+    if (const Value* s = o.take("studio")) keep(readStudio(c, *s, o.path("studio")), e.studio);
+    if (const Value* s = o.take("spots"))
+        ok = readList(c, *s, o.path("spots"), kMaxEnvironmentSpots, QStringLiteral("spots"), e.spots,
+                      readSpot) &&
+             ok;
+    o.finish();
+    if (!ok) return std::nullopt;
+    return e;
+}
+
+std::optional<QByteArray> writeEnvironment(const Environment& e) {
+    if (e == Environment{}) return std::nullopt;
+    Fields f{{"source", json::quote(toString(e.source))}};
+    if (!e.file.isEmpty()) f.push_back({"file", json::quote(e.file)});
+    f.push_back({"intensity", num(e.intensity)});
+    f.push_back({"rotation", num(normalizedEnvironmentRotation(e.rotation))});
+    f.push_back({"background", json::quote(toString(e.background))});
+    f.push_back({"blur", num(e.blur)});
+    f.push_back({"diffuse", json::quote(toString(e.diffuse))});
+    if (e.source == EnvironmentSource::Studio || e.studio != Studio{}) {
+        std::vector<QByteArray> boxes;
+        for (const Softbox& b : e.studio.softboxes)
+            boxes.push_back(inlineObject({{"azimuth", num(b.azimuth)},
+                                          {"elevation", num(b.elevation)},
+                                          {"width", num(b.width)},
+                                          {"height", num(b.height)},
+                                          {"color", vec(b.color)},
+                                          {"intensity", num(b.intensity)}}));
+        f.push_back({"studio", block({{"zenith", vec(e.studio.zenith)},
+                                      {"horizon", vec(e.studio.horizon)},
+                                      {"floor", vec(e.studio.floor)},
+                                      {"softboxes", list(boxes, "      ")}},
+                                     "    ")});
+    }
+    if (!e.spots.empty()) {
+        std::vector<QByteArray> spots;
+        for (const EnvironmentSpot& s : e.spots)
+            spots.push_back(inlineObject(
+                {{"direction", vec(s.direction)}, {"angle", num(s.angle)}, {"factor", num(s.factor)}}));
+        f.push_back({"spots", list(spots, "    ")});
+    }
+    return block(f, "  ");
+}
+
+} // namespace rigjson
+} // namespace lr
