@@ -333,6 +333,42 @@ class TestEnvironmentRender : public QObject {
         QVERIFY(centre(rig, boxDir) < 0.1f);
     }
 
+    // The same on a surface: a mirror sphere (metallic 1, roughness 0) reflects the softbox placed on the
+    // camera's axis at its centre; turned 90°, the highlight leaves the centre for the point whose
+    // reflection vector is the turned direction.
+    void rotationMovesHighlight() {
+        Studio studio;
+        studio.zenith = studio.horizon = studio.floor = glm::dvec3(0.02);
+        Softbox box;
+        box.azimuth = 0.0; // +Z: behind the camera, which looks along −Z
+        box.elevation = 0.0;
+        box.width = box.height = 30.0;
+        box.intensity = 10.0;
+        studio.softboxes = {box};
+        auto mirror = whiteSphere();
+        mirror->materials[0].metallic = 1.0f;
+        mirror->materials[0].roughness = 0.0f;
+        QVERIFY(m_gl->setModel(mirror));
+        m_gl->renderer().setEnvironment(loaded(environment::renderStudio(studio, 256)));
+        Rig rig = environmentRig(ShadingModel::Pbr);
+        const ViewCamera cam = frontCamera();
+        RenderSettings s = settingsFor(Quality::Exact);
+        const glm::dvec3 turned = environment::rotateAboutUp(environment::softboxDirection(0.0, 0.0), 90.0);
+        // The sphere point reflecting `turned` towards the eye: n = normalize(v + d), solved by iteration.
+        glm::dvec3 n(0.0, 0.0, 1.0);
+        for (int i = 0; i < 20; ++i)
+            n = glm::normalize(glm::normalize(cam.eye - n) + turned);
+        const FloatImage before = radiance(rig, cam, s);
+        rig.environment.rotation = 90.0;
+        const FloatImage after = radiance(rig, cam, s);
+        const glm::dvec3 centre(0.0, 0.0, 1.0);
+        QVERIFY2(at(before, centre, cam).g > 3.0f,
+                 qPrintable(QString::number(double(at(before, centre, cam).g))));
+        QVERIFY(at(before, n, cam).g < 0.5f);
+        QVERIFY(at(after, centre, cam).g < 0.5f);
+        QVERIFY2(at(after, n, cam).g > 3.0f, qPrintable(QString::number(double(at(after, n, cam).g))));
+    }
+
     // The background pass: after the opaque surfaces of either path (it reads their depth), before the
     // catcher's shadows and the blended meshes (they go over it, writing no depth); only when asked for.
     void backgroundPassPlace() {
