@@ -333,6 +333,32 @@ class TestEnvironmentRender : public QObject {
         QVERIFY(centre(rig, boxDir) < 0.1f);
     }
 
+    // A tiled render (each tile its own projection) shows the same background as one whole frame.
+    void backgroundAcrossTiles() {
+        Studio studio;
+        Softbox box;
+        box.azimuth = 170.0;
+        box.elevation = 5.0;
+        studio.softboxes = {box};
+        QVERIFY(m_gl->setModel(whiteSphere()));
+        m_gl->renderer().setEnvironment(loaded(environment::renderStudio(studio, 256)));
+        const Rig rig = environmentRig(ShadingModel::Pbr, EnvironmentBackground::Visible);
+        const RenderSettings s = settingsFor(Quality::Balanced);
+        const QImage whole = image(rig, frontCamera(), s);
+        m_gl->setMaxTileSize(48);
+        const QImage tiled = image(rig, frontCamera(), s);
+        m_gl->setMaxTileSize(4096);
+        QCOMPARE(tiled.size(), whole.size());
+        int worst = 0;
+        for (int y = 0; y < whole.height(); ++y)
+            for (int x = 0; x < whole.width(); ++x) {
+                const QColor a = whole.pixelColor(x, y), b = tiled.pixelColor(x, y);
+                worst = std::max({worst, std::abs(a.red() - b.red()), std::abs(a.green() - b.green()),
+                                  std::abs(a.blue() - b.blue())});
+            }
+        QVERIFY2(worst <= 1, qPrintable(QStringLiteral("tiles differ by %1 levels").arg(worst)));
+    }
+
     // The same on a surface: a mirror sphere (metallic 1, roughness 0) reflects the softbox placed on the
     // camera's axis at its centre; turned 90°, the highlight leaves the centre for the point whose
     // reflection vector is the turned direction.
