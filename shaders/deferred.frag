@@ -26,6 +26,9 @@ void main() {
 #else
     vec3 radiance = shadeSurface(s, st);
 #endif
+#ifdef LR_ENVIRONMENT
+    radiance += shadeEnvironment(s, viewVector(st, s.position));  // environment.glsl
+#endif
 #ifdef LR_OUTPUT_DISPLAY
     oColor = vec4(displayEncode(radiance, uExposureScale, LR_TONE_MAP), 1.0);
 #else

@@ -90,7 +90,7 @@ layout(location = 0) out vec4 oColor;  // linear radiance, alpha 1 (coverage aft
 Surface surfaceHere() {
     Surface s;
     s.position = vPosition;
-#if defined(LR_QUALITY_FAST) && !defined(LR_SHADOWS)
+#if defined(LR_QUALITY_FAST) && !defined(LR_SHADOWS) && !defined(LR_ENVIRONMENT)
     vec3 n = vec3(0.0, 0.0, 1.0);  // unused: the fast tier lit the vertices (mesh.vert)
 #else
     vec3 n = safeNormalize(vNormal, vec3(0.0, 0.0, 1.0));
@@ -193,6 +193,9 @@ void main() {
 #endif
 #if defined(LR_QUALITY_FAST) && defined(LR_SHADOWS)
     radiance += shadeCastingLights(s, st);
+#endif
+#ifdef LR_ENVIRONMENT
+    radiance += shadeEnvironment(s, viewVector(st, s.position));  // environment.glsl, per pixel in every tier
 #endif
 #ifdef LR_OUTPUT_DISPLAY
     vec3 colour = displayEncode(radiance, uExposureScale, LR_TONE_MAP);

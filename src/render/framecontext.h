@@ -6,6 +6,7 @@
 
 #include "camera.h"
 #include "core/shade.h"
+#include "environmentgl.h"
 #include "rendersettings.h"
 
 #include <QOpenGLFunctions_3_3_Core>
@@ -42,6 +43,13 @@ struct FrameContext {
     int samples = 0;                       // of the scene target (> 1: MSAA)
     bool gbufferReadBack = false;          // renderGBuffer: clear the G-buffer's colour too
     GLuint outputFbo = 0;                  // the caller's framebuffer
+    // The rig's environment lights the frame (its source is not None and one is loaded and uploaded:
+    // LR_ENVIRONMENT in every lit program); its rotation, intensity and classic diffuse model.
+    bool environment = false;
+    EnvironmentUniforms environmentUniforms;
+    // The background pass's chain level (Visible 0, Blurred blur · 5); < 0: no environment background
+    // (Color, a transparent image, or no environment).
+    float environmentBackgroundLod = -1.0f;
 };
 
 } // namespace lr::render

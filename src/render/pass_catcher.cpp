@@ -10,7 +10,9 @@ bool CatcherPass::run(const FrameContext& frame, PassScene& scene) {
     const RenderSettings& settings = *frame.settings;
     const ShaderOutput output =
         frame.colourPath == ColourPath::Hdr ? ShaderOutput::Radiance : ShaderOutput::Display;
-    const RigFeatures shaded = frameRigFeatures(*scene.rig, frame.farLights, settings.forceAllFeatures);
+    // No environment: the catcher shows the lights' shadows only (the environment casts none).
+    const RigFeatures shaded =
+        frameRigFeatures(*scene.rig, frame.farLights, settings.forceAllFeatures, false);
     DrawOrder order;
     for (const GpuDraw& d : scene.ground->draws()) {
         FeatureKey key = meshKey(frame, scene, d, output, false, shaded, scene.ground);

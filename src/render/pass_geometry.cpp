@@ -1,4 +1,5 @@
 // The geometry pass: the model's draws grouped by shader variant, into the G-buffer or shaded.
+#include "environmentgl.h"
 #include "gpumodel.h"
 #include "lightset.h"
 #include "passes.h"
@@ -57,7 +58,8 @@ bool GeometryPass::run(const FrameContext& frame, PassScene& scene) {
     if (!model || scene.model->draws().empty()) return true;
     // Fast lights the vertices, each with every light: clusters (per fragment) do not apply.
     const bool clustered = !gpass && frame.clustered;
-    const RigFeatures shaded = frameRigFeatures(rig, frame.farLights, settings.forceAllFeatures);
+    const RigFeatures shaded =
+        frameRigFeatures(rig, frame.farLights, settings.forceAllFeatures, frame.environment);
 
     // Group the draws by program so each variant is bound once per frame. Blended (alphaMode BLEND)
     // meshes are the blend pass's (pass_blend.cpp): after all opaque geometry, never in the G-buffer.
@@ -92,9 +94,10 @@ FeatureKey MeshPass::meshKey(const FrameContext& frame, const PassScene& scene, 
     key.material = d.features;
     if (shaded.shading != ShadingModel::Pbr) // classic programs never sample the PBR textures
         key.material.metalRoughTexture = key.material.occlusionTexture = false;
-    // Occlusion scales ambient light only (glTF): without any (no scene ambient, no light's ambient colour)
-    // it changes nothing, so the texture is not read (the G-buffer then holds occlusion 1).
-    if (rig.ambient == glm::dvec3(0.0) && !shaded.lightAmbient) key.material.occlusionTexture = false;
+    // Occlusion scales ambient light only (glTF): without any (no scene ambient, no light's ambient colour,
+    // no environment) it changes nothing, so the texture is not read (the G-buffer then holds occlusion 1).
+    if (rig.ambient == glm::dvec3(0.0) && !shaded.lightAmbient && !shaded.environment)
+        key.material.occlusionTexture = false;
     key.quality = gpass ? Quality::Exact : settings.quality; // the G-buffer is the exact surface
     key.approximations = approx::forTier(settings.approximations, key.quality);
     // B2: an integer shininess becomes a chain of products (classic: PBR has no shininess)
@@ -134,6 +137,8 @@ bool MeshPass::drawMeshes(const FrameContext& frame, PassScene& scene,
     glCullFace(GL_BACK);
     scene.lights->bind(this, clustered);
     if (scene.shadows) scene.shadows->bind(this);
+    const bool environment = frame.environment && scene.environment;
+    if (environment) scene.environment->bind(this);
     bool ok = true;
     MeshProgram* current = nullptr;
     const Material defaultMaterial;
@@ -152,6 +157,8 @@ bool MeshPass::drawMeshes(const FrameContext& frame, PassScene& scene,
             glUniformMatrix4fv(p->projection, 1, GL_FALSE, glm::value_ptr(proj));
             scene.lights->setUniforms(this, *p, frame.shade, clustered);
             if (p->exposureScale >= 0) glUniform1f(p->exposureScale, frame.exposureScale);
+            if (environment && key.rig.environment)
+                scene.environment->setUniforms(this, p->program.get(), frame.environmentUniforms);
         }
         const Material& m = d->material >= 0 ? model->materials[size_t(d->material)] : defaultMaterial;
         glUniform4fv(p->baseColor, 1, glm::value_ptr(m.baseColor));

@@ -1,4 +1,5 @@
 // The deferred lighting pass: the G-buffer's surfaces shaded once per covered pixel.
+#include "environmentgl.h"
 #include "gpumodel.h"
 #include "lightset.h"
 #include "passes.h"
@@ -49,7 +50,8 @@ bool DeferredLightingPass::run(const FrameContext& frame, PassScene& scene) {
     if (!model) return true;
     const RenderSettings& settings = *frame.settings;
     FeatureKey key;
-    key.rig = frameRigFeatures(*scene.rig, frame.farLights, settings.forceAllFeatures);
+    key.rig = frameRigFeatures(*scene.rig, frame.farLights, settings.forceAllFeatures,
+                               frame.environment && scene.environment);
     key.quality = settings.quality; // never Fast: the fast tier is always forward
     key.approximations = approx::forTier(settings.approximations, key.quality);
     key.output = frame.colourPath == ColourPath::Hdr ? ShaderOutput::Radiance : ShaderOutput::Display;
@@ -64,6 +66,10 @@ bool DeferredLightingPass::run(const FrameContext& frame, PassScene& scene) {
     if (p->exposureScale >= 0) glUniform1f(p->exposureScale, frame.exposureScale);
     scene.lights->bind(this, key.clustered);
     if (scene.shadows) scene.shadows->bind(this);
+    if (key.rig.environment) {
+        scene.environment->setUniforms(this, p->program.get(), frame.environmentUniforms);
+        scene.environment->bind(this);
+    }
     for (int i = 0; i < kGBufferTargets; ++i) {
         glActiveTexture(textureUnit(TextureUnit::GBuffer0, i));
         glBindTexture(GL_TEXTURE_2D, targets.gbuffer[i]);

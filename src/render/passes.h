@@ -6,6 +6,8 @@
 //   geometry (G-buffer)  pass_geometry.cpp    lights                        G-buffer, scene depth
 //   geometry (shaded)    pass_geometry.cpp    lights, clusters              scene colour, scene depth
 //   deferred lighting    pass_lighting.cpp    G-buffer, scene depth, ...    scene colour
+//   background           pass_background.cpp  scene depth                   scene colour (the environment
+//                                                                           where no surface is)
 //   blend                pass_blend.cpp       lights, clusters, scene       scene colour (alphaMode BLEND)
 //                                             colour and depth
 //   shadow catcher       pass_catcher.cpp     lights, shadow maps, scene    scene colour (the ground's
@@ -77,6 +79,20 @@ class DeferredLightingPass final : public RenderPass {
         return resource::Lights | resource::Clusters | resource::GBuffer | resource::SceneDepth |
                resource::ShadowMaps;
     }
+    PassResources writes() const override { return resource::SceneColor; }
+    bool run(const FrameContext& frame, PassScene& scene) override;
+};
+
+// The environment behind the model (Environment::background Visible or Blurred, an environment loaded, the
+// image not transparent): a full-screen triangle on the far plane, depth-tested LEQUAL without depth
+// writes, so it covers exactly the pixels no opaque surface was drawn on; display colours or radiance by
+// the colour path, with the frame's exposure and tone map. After the opaque surfaces, before the catcher's
+// shadows and the blended meshes (neither writes depth, both go over it). In the plan when
+// PlanKey::background.
+class BackgroundPass final : public RenderPass {
+  public:
+    const char* name() const override { return "background"; }
+    PassResources reads() const override { return resource::SceneDepth; }
     PassResources writes() const override { return resource::SceneColor; }
     bool run(const FrameContext& frame, PassScene& scene) override;
 };

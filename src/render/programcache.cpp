@@ -39,6 +39,10 @@ QByteArray ProgramCache::source(const QString& name) {
 }
 
 const ShaderConfig& shaderConfig(const FeatureKey& key) {
+    if (key.rig.environment) {
+        if (key.deferredLighting) return kDeferredLightingEnvironmentShader;
+        return key.quality == Quality::Fast ? kVertexLitMeshEnvironmentShader : kMeshEnvironmentShader;
+    }
     if (key.deferredLighting) return kDeferredLightingShader;
     return key.quality == Quality::Fast ? kVertexLitMeshShader : kMeshShader;
 }
@@ -49,7 +53,7 @@ std::unique_ptr<QOpenGLShaderProgram> ProgramCache::build(const QByteArray& prel
     // Each file gets a #line with its own source-string number, so a log line "2:14(3)" points at line 14
     // of the second file listed in the message.
     QStringList legend;
-    auto assemble = [&](const std::array<const char*, 5>& files, QString* missing) {
+    auto assemble = [&](const std::array<const char*, 6>& files, QString* missing) {
         QByteArray text = prelude;
         for (const char* name : files) {
             if (!name) break;

@@ -18,8 +18,8 @@ namespace lr::render {
 // A named shader configuration (TrenchBroom's idea): which files make each stage.
 struct ShaderConfig {
     const char* name;
-    std::array<const char*, 5> vertex{}; // files under :/shaders/, in order; nullptr ends the list
-    std::array<const char*, 5> fragment{};
+    std::array<const char*, 6> vertex{}; // files under :/shaders/, in order; nullptr ends the list
+    std::array<const char*, 6> fragment{};
 };
 
 // shadows.glsl is empty unless the key casts shadows (LR_SHADOWS).
@@ -39,6 +39,23 @@ inline constexpr ShaderConfig kShadowDepthShader{"shadow depth", {"shadow.vert"}
 inline constexpr ShaderConfig kToneMapShader{
     "tone map", {"fullscreen.vert"}, {"lighting.glsl", "tonemap.frag"}};
 inline constexpr ShaderConfig kOverlayShader{"overlay", {"gizmo.vert"}, {"lighting.glsl", "gizmo.frag"}};
+// Environment lighting (LR_ENVIRONMENT, environmentgl.h): the lit configurations with environment.glsl
+// before the stage that shades, chosen only for keys with the bit, so every other program's text is
+// exactly what it was. The background pass (pass_background.cpp) draws the environment behind the model.
+inline constexpr ShaderConfig kMeshEnvironmentShader{
+    "mesh",
+    {"mesh.vert"},
+    {"lighting.glsl", "shadows.glsl", "cluster.glsl", "gbuffer.glsl", "environment.glsl", "mesh.frag"}};
+inline constexpr ShaderConfig kVertexLitMeshEnvironmentShader{
+    "mesh, vertex-lit",
+    {"lighting.glsl", "shadows.glsl", "mesh.vert"},
+    {"lighting.glsl", "shadows.glsl", "cluster.glsl", "gbuffer.glsl", "environment.glsl", "mesh.frag"}};
+inline constexpr ShaderConfig kDeferredLightingEnvironmentShader{
+    "deferred lighting",
+    {"fullscreen.vert"},
+    {"lighting.glsl", "shadows.glsl", "cluster.glsl", "gbuffer.glsl", "environment.glsl", "deferred.frag"}};
+inline constexpr ShaderConfig kBackgroundShader{
+    "environment background", {"fullscreen.vert"}, {"lighting.glsl", "environment.glsl", "background.frag"}};
 
 // The configuration a FeatureKey compiles with.
 const ShaderConfig& shaderConfig(const FeatureKey& key);

@@ -1,6 +1,7 @@
 #include "renderer.h"
 
 #include "core/colour.h"
+#include "environmentgl.h"
 #include "framecontext.h"
 #include "gpumodel.h"
 #include "gputimer.h"
@@ -42,7 +43,8 @@ Renderer::Renderer()
     : m_programs(std::make_unique<ProgramCache>()), m_model(std::make_unique<GpuModel>()),
       m_lights(std::make_unique<LightSet>()), m_targets(std::make_unique<Targets>()),
       m_plan(std::make_unique<RenderPlan>()), m_timer(std::make_unique<GpuTimer>()),
-      m_shadows(std::make_unique<ShadowMaps>()), m_ground(std::make_unique<GpuModel>()) {}
+      m_shadows(std::make_unique<ShadowMaps>()), m_ground(std::make_unique<GpuModel>()),
+      m_environmentGl(std::make_unique<EnvironmentGl>()) {}
 
 Renderer::~Renderer() {
     if (!m_initialized) return;
@@ -85,6 +87,7 @@ bool Renderer::initialize(QString* error) {
 
     m_lights->initialize(this);
     m_shadows->initialize(this);
+    m_environmentGl->initialize(this);
     // F4 (fast tier): bilinear filtering within the nearest mip level instead of trilinear between two,
     // ~20% of DamagedHelmet's frame on llvmpipe (three 2048² textures); its error is measured with the rest.
     glGenSamplers(1, &m_fastSampler);
@@ -120,6 +123,7 @@ void Renderer::releaseResources() {
     m_targets->release(this);
     m_lights->release(this);
     m_shadows->release(this);
+    m_environmentGl->release(this);
     m_ground->release(this);
     m_groundGeneration = -1;
     m_plan->release();
@@ -228,6 +232,26 @@ bool Renderer::updateScene(const glm::dmat4& view) {
     return true;
 }
 
+void Renderer::updateEnvironment(FrameContext* frame) {
+    QString error;
+    if (!m_environmentGl->update(this, m_environment, &error) && !m_warnedEnvironment) {
+        qCWarning(lcRender).noquote() << "environment lighting off:" << error;
+        m_warnedEnvironment = true;
+    }
+    const Environment& spec = rig().environment;
+    frame->environment = m_environment && !spec.isNone() && m_environmentGl->ready();
+    if (!frame->environment) return;
+    frame->environmentUniforms.fromView = environmentFromView(frame->view, spec.rotation);
+    frame->environmentUniforms.scale = float(std::exp2(std::clamp(spec.intensity, -20.0, 20.0)));
+    frame->environmentUniforms.diffuse = environmentDiffuse(rig());
+    if (!frame->transparent && spec.background != EnvironmentBackground::Color)
+        frame->environmentBackgroundLod =
+            spec.background == EnvironmentBackground::Blurred
+                ? float(std::clamp(std::isfinite(spec.blur) ? spec.blur : 0.0, 0.0, 1.0) *
+                        (kSpecularLevels - 1))
+                : 0.0f;
+}
+
 bool Renderer::ensureTargets(QSize size, int samples, GLenum colorFormat) {
     const int n = std::min(samples > 1 ? samples : 0, m_maxSamples);
     Targets& t = *m_targets;
@@ -284,6 +308,7 @@ PassScene Renderer::passScene() {
     s.groundMode = rig().ground.mode;
     s.emptyVao = m_emptyVao;
     s.fastSampler = m_fastSampler;
+    s.environment = m_environmentGl.get();
     return s;
 }
 
@@ -297,6 +322,7 @@ bool Renderer::render(const ViewCamera& camera, QSize size, const RenderSettings
     frame.outputFbo = targetFbo;
     m_stats.lightsInRig = int(rig().lights.size());
     if (!updateScene(frame.view)) return false;
+    updateEnvironment(&frame);
     const int samples = frame.fast ? 0 : settings.msaaSamples;
     const bool wantDeferred =
         !frame.fast && (settings.shadingPath == ShadingPath::Deferred ||
@@ -326,7 +352,8 @@ bool Renderer::render(const ViewCamera& camera, QSize size, const RenderSettings
     const bool catcher = m_ground->model() && rig().ground.mode == GroundMode::Catcher;
     if (!shadows)
         m_shadows->update(this, m_shadowViews, *m_model, m_modelGeneration, 0, -1, &m_stats, &error);
-    m_plan->select({frame.deferred, hdr, frame.samples > 1, frame.overlays, blend, shadows, catcher});
+    m_plan->select({frame.deferred, hdr, frame.samples > 1, frame.overlays, blend, shadows, catcher,
+                    frame.environmentBackgroundLod >= 0.0f});
     m_stats.renderPlanBuilds = m_plan->builds();
     PassScene scene = passScene();
     const bool ok = m_plan->run(frame, scene) || fail(scene.error);
@@ -359,6 +386,7 @@ bool Renderer::renderGBuffer(const ViewCamera& camera, QSize size, const RenderS
     if (!ensureTargets(target, 0, format)) return false;
     if (!m_targets->createGBuffer(this, &error)) return fail(error);
     if (!updateScene(frame.view)) return false;
+    updateEnvironment(&frame); // the occlusion texture is read when an environment lights the model
     glClearDepth(1.0);
     glDepthMask(GL_TRUE);
     PassScene scene = passScene();

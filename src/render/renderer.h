@@ -48,6 +48,7 @@ class LightSet;
 class RenderPlan;
 class GpuTimer;
 class ShadowMaps;
+class EnvironmentGl;
 struct ShadowView;
 struct Targets;
 struct FrameContext;
@@ -126,6 +127,9 @@ class Renderer : protected QOpenGLFunctions_3_3_Core {
     // Per frame, for render() and renderGBuffer() alike: the ground, the shadow views and the light set
     // for `view`; false when the ground could not be uploaded (m_lastError says why).
     bool updateScene(const glm::dmat4& view);
+    // Per frame: uploads Renderer::environment() when it changed and fills the frame's environment fields
+    // (lighting when the rig's source is not None and the textures are ready; the background by its mode).
+    void updateEnvironment(render::FrameContext* frame);
 
     bool m_initialized = false;
     QOpenGLContext* m_context = nullptr;
@@ -145,6 +149,8 @@ class Renderer : protected QOpenGLFunctions_3_3_Core {
     std::vector<render::ShadowView> m_shadowViews;
     int m_modelGeneration = 0; // every setModel: shadow maps re-render
     std::shared_ptr<const LoadedEnvironment> m_environment;
+    std::unique_ptr<render::EnvironmentGl> m_environmentGl; // its textures
+    bool m_warnedEnvironment = false;                       // an upload failure was logged once
     bool m_warnedCasters = false; // more than kMaxShadowCasters casting lights was logged once
     GLuint m_fastSampler = 0;     // the fast tier's texture filtering (F4)
     GLuint m_emptyVao = 0;        // full-screen triangles

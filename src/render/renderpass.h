@@ -35,6 +35,7 @@ using PassResources = unsigned;
 QString describeResources(PassResources r); // "scene-color+scene-depth"
 
 class ProgramCache;
+class EnvironmentGl;
 class GpuModel;
 class LightSet;
 class ShadowMaps;
@@ -62,7 +63,9 @@ struct PassScene {
     RenderStats* stats = nullptr;
     GLuint emptyVao = 0;    // for full-screen triangles
     GLuint fastSampler = 0; // the fast tier's texture filtering (F4)
-    QString error;          // why a pass failed
+    // The environment's textures (environmentgl.h); used when FrameContext::environment.
+    const EnvironmentGl* environment = nullptr;
+    QString error; // why a pass failed
 };
 
 class RenderPass : protected QOpenGLFunctions_3_3_Core {

@@ -21,17 +21,17 @@ RenderPlan::RenderPlan() = default;
 RenderPlan::~RenderPlan() = default;
 
 bool RenderPlan::initialize() {
-    for (RenderPass* p :
-         std::initializer_list<RenderPass*>{&m_shadow, &m_gbuffer, &m_shaded, &m_lighting, &m_blend,
-                                            &m_catcher, &m_resolve, &m_present, &m_toneMap, &m_overlay})
+    for (RenderPass* p : std::initializer_list<RenderPass*>{&m_shadow, &m_gbuffer, &m_shaded, &m_lighting,
+                                                            &m_background, &m_blend, &m_catcher, &m_resolve,
+                                                            &m_present, &m_toneMap, &m_overlay})
         if (!p->initialize()) return false;
     return true;
 }
 
 void RenderPlan::release() {
-    for (RenderPass* p :
-         std::initializer_list<RenderPass*>{&m_shadow, &m_gbuffer, &m_shaded, &m_lighting, &m_blend,
-                                            &m_catcher, &m_resolve, &m_present, &m_toneMap, &m_overlay})
+    for (RenderPass* p : std::initializer_list<RenderPass*>{&m_shadow, &m_gbuffer, &m_shaded, &m_lighting,
+                                                            &m_background, &m_blend, &m_catcher, &m_resolve,
+                                                            &m_present, &m_toneMap, &m_overlay})
         p->release();
     m_passes.clear();
     m_hasKey = false;
@@ -51,12 +51,13 @@ const std::vector<RenderPass*>& RenderPlan::select(const PlanKey& key) {
     } else {
         m_passes.push_back(&m_shaded);
     }
+    // The environment behind the opaque surfaces, where they left the cleared depth; before the catcher's
+    // shadows and the blended meshes, which write no depth and go over it.
+    if (key.background) m_passes.push_back(&m_background);
     // The catcher's shadows over the opaque surfaces and the background, before anything blended.
     if (key.catcher) m_passes.push_back(&m_catcher);
     // Blended meshes after all opaque ones, shaded forward whatever the path.
     if (key.blend) m_passes.push_back(&m_blend);
-    // An environment pass (sky behind the model) goes here: after the surfaces, depth-tested against the
-    // scene depth, before the resolve.
     if (key.msaa && (key.hdr || key.overlays)) m_passes.push_back(&m_resolve);
     m_passes.push_back(key.hdr ? static_cast<RenderPass*>(&m_toneMap) : &m_present);
     if (key.overlays) m_passes.push_back(&m_overlay);

@@ -17,9 +17,10 @@ struct PlanKey {
     bool hdr = false;
     bool msaa = false; // the scene target is multisampled
     bool overlays = false;
-    bool blend = false;   // the model has alphaMode BLEND meshes (the blend pass)
-    bool shadows = false; // some light casts (the shadow pass)
-    bool catcher = false; // the ground is a shadow catcher (the catcher pass)
+    bool blend = false;      // the model has alphaMode BLEND meshes (the blend pass)
+    bool shadows = false;    // some light casts (the shadow pass)
+    bool catcher = false;    // the ground is a shadow catcher (the catcher pass)
+    bool background = false; // the environment is drawn behind the model (the background pass)
     bool operator==(const PlanKey&) const = default;
 };
 
@@ -46,6 +47,7 @@ class RenderPlan {
     GeometryPass m_gbuffer{GeometryPass::Output::GBuffer};
     GeometryPass m_shaded{GeometryPass::Output::Shaded};
     DeferredLightingPass m_lighting;
+    BackgroundPass m_background;
     BlendPass m_blend;
     ResolvePass m_resolve;
     PresentPass m_present;

@@ -98,6 +98,8 @@ std::uint64_t FeatureKey::bits() const {
     put(rig.cubeShadows, 1);
     put(rig.softShadows, 1);
     put(material.shadowCatcher, 1);
+    put(rig.environment, 1);
+    Q_ASSERT(shift <= 64);
     return b;
 }
 
@@ -112,6 +114,7 @@ QString FeatureKey::describe() const {
     if (rig.lightAmbient) parts << QStringLiteral("light-ambient");
     if (rig.shading == ShadingModel::Pbr) parts << QStringLiteral("shading:pbr");
     if (rig.farLights) parts << QStringLiteral("far-lights");
+    if (rig.environment) parts << QStringLiteral("environment");
     if (rig.shadows)
         parts << QStringLiteral("shadows") + (rig.cubeShadows ? QStringLiteral(":cube") : QString()) +
                      (rig.softShadows ? QStringLiteral(":soft") : QString());
@@ -153,9 +156,10 @@ QByteArray toneMapDefine(ToneMap toneMap) {
     return "#define LR_TONE_MAP LR_TONEMAP_" + macroName(EnumNames<ToneMap>::names[size_t(toneMap)]) + '\n';
 }
 
-RigFeatures frameRigFeatures(const Rig& rig, bool farLights, bool allFeatures) {
+RigFeatures frameRigFeatures(const Rig& rig, bool farLights, bool allFeatures, bool environment) {
     RigFeatures f = rigFeatures(rig);
     f.farLights = farLights && f.shading == ShadingModel::Pbr;
+    f.environment = environment;
     return allFeatures ? allRigFeatures(f) : f;
 }
 
@@ -254,6 +258,10 @@ QByteArray shaderPrelude(const FeatureKey& key) {
     if (key.rig.shadows && key.rig.cubeShadows) out += "#define LR_SHADOW_CUBE 1\n";
     if (key.rig.shadows && key.rig.softShadows) out += "#define LR_SHADOW_SOFT 1\n";
     if (key.material.shadowCatcher) out += "#define LR_SHADOW_CATCHER 1\n";
+    // Environment lighting (shaders/environment.glsl) only where the frame has one: other preludes are
+    // unchanged. Never in G-buffer programs (their key carries no rig) or the catcher's.
+    if (key.rig.environment && key.output != ShaderOutput::GBuffer && !key.material.shadowCatcher)
+        out += "#define LR_ENVIRONMENT 1\n";
     if (pbr && key.material.metalRoughTexture) out += "#define LR_METAL_ROUGH_TEXTURE 1\n";
     if (pbr && key.material.occlusionTexture) out += "#define LR_OCCLUSION_TEXTURE 1\n";
     out += "#define LR_QUALITY_" + macroName(EnumNames<Quality>::names[size_t(key.quality)]) + " 1\n";

@@ -50,6 +50,11 @@ struct RigFeatures {
     // PCF and the exact tier's PCSS compiled in. Without it every tier takes one compared tap, as a point
     // emitter does anyway (helmet_ground_8spot, 8 casting spots of size 0: exact 196 -> 91 ms/frame).
     bool softShadows = false;
+    // The rig's environment lights the model (LR_ENVIRONMENT, shaders/environment.glsl): its source is not
+    // None AND an environment is loaded (Renderer::environment()). Like farLights, set per frame by the
+    // renderer (frameRigFeatures); rigFeatures() leaves it false. Without it a program's text is exactly
+    // what it was before environments existed.
+    bool environment = false;
     bool operator==(const RigFeatures&) const = default;
 };
 
@@ -135,7 +140,9 @@ RigFeatures rigFeatures(const Rig& rig);
 RigFeatures allRigFeatures(const RigFeatures& rig);
 // The features a frame shades the rig with: rigFeatures() and the frame's far-lights bound, or all of
 // them (allRigFeatures) for the über-shader. Every lit pass builds its keys from this.
-RigFeatures frameRigFeatures(const Rig& rig, bool farLights, bool allFeatures);
+// `environment`: the frame has an environment to light with (FrameContext::environment); the shadow
+// catcher passes false (it shows shadows only).
+RigFeatures frameRigFeatures(const Rig& rig, bool farLights, bool allFeatures, bool environment = false);
 // "#define LR_TONE_MAP LR_TONEMAP_ACES\n": the operator mesh.frag, deferred.frag and tonemap.frag pass to
 // displayEncode()/toneMapRgb() as a compile-time constant.
 QByteArray toneMapDefine(ToneMap toneMap);

@@ -21,7 +21,15 @@ enum class TextureUnit : GLuint {
     Occlusion = 13,
     ShadowMaps = 14,   // the shadow-map array with its compare sampler (shadowmaps.h, shaders/shadows.glsl)
     ShadowDepths = 15, // the same array with a raw-depth sampler (PCSS's blocker search)
+    // Environment lighting (environmentgl.h, shaders/environment.glsl): beyond the 16 units GL 3.3
+    // guarantees, so EnvironmentGl checks GL_MAX_TEXTURE_IMAGE_UNITS (32 on Mesa, NVIDIA, AMD, Intel) and
+    // lights without the environment, with a warning, where there are fewer than kEnvironmentUnitsNeeded.
+    EnvSpecular = 16,   // the GGX chain, one mip level per roughness step
+    EnvIrradiance = 17, // E(n), equirectangular
+    EnvDfg = 18,        // the split-sum table (core/envbrdf.h)
 };
+
+constexpr int kEnvironmentUnitsNeeded = 19;
 
 constexpr int kMaterialTextureUnits = 3; // BaseColor, Normal, Emissive
 
@@ -52,10 +60,14 @@ inline constexpr SamplerBinding kSamplerBindings[] = {
     {"uOcclusionTex", TextureUnit::Occlusion},
     {"uShadowMaps", TextureUnit::ShadowMaps},
     {"uShadowDepths", TextureUnit::ShadowDepths},
+    {"uEnvSpecular", TextureUnit::EnvSpecular},
+    {"uEnvIrradiance", TextureUnit::EnvIrradiance},
+    {"uEnvDfg", TextureUnit::EnvDfg},
 };
 
-// GL 3.3 guarantees 16 texture image units per fragment stage.
+// GL 3.3 guarantees 16 texture image units per fragment stage: every unit but the environment's.
 static_assert(GLuint(TextureUnit::ShadowDepths) < 16);
+static_assert(GLuint(TextureUnit::EnvDfg) < GLuint(kEnvironmentUnitsNeeded));
 static_assert(GLuint(TextureUnit::GBuffer0) + 4 <= GLuint(TextureUnit::ClusterRanges));
 
 } // namespace lr::render
