@@ -61,16 +61,13 @@ EnvironmentLight lightFromEnvironment(const EnvironmentImage& image, double rota
     const double search = radians(std::clamp(options.searchDegrees, 0.1, 90.0));
     const double cosSearch = std::cos(search);
     int px = -1, py = -1;
-    double peak = -1.0, peakDot = -2.0, sumL = 0.0, sumOmega = 0.0;
+    double peak = -1.0, peakDot = -2.0;
     const auto [sy0, sy1] = capRows(d, search, h);
     for (int y = sy0; y <= sy1; ++y) {
-        const double omega = texelSolidAngle(y, w, h);
         for (int x = 0; x < w; ++x) {
             const double dot = glm::dot(texelDirection(x, y, w, h), d);
             if (dot < cosSearch) continue;
             const double l = luminance(image.at(x, y));
-            sumL += l * omega;
-            sumOmega += omega;
             if (l > peak || (l == peak && dot > peakDot)) { // ties (a uniform softbox): nearest the click
                 peak = l;
                 peakDot = dot;
@@ -84,14 +81,21 @@ EnvironmentLight lightFromEnvironment(const EnvironmentImage& image, double rota
         px = std::clamp(int(uv.x * w), 0, w - 1);
         py = std::clamp(int(uv.y * h), 0, h - 1);
         peak = luminance(image.at(px, py));
-        sumL = peak;
-        sumOmega = 1.0;
     }
-    const double mean = sumL / sumOmega;
+    // The whole environment's mean luminance (by solid angle, 4π): a light stands out from it. (The
+    // neighbourhood's own mean would count a large softbox against itself.)
+    double mean = 0.0;
+    for (int y = 0; y < h; ++y) {
+        double row = 0.0;
+        for (int x = 0; x < w; ++x)
+            row += luminance(image.at(x, y));
+        mean += row * texelSolidAngle(y, w, h);
+    }
+    mean /= 4.0 * kPi;
     if (!(peak > 0.0))
         return nothing(tr("nothing bright here: the environment is black around that direction"));
     if (peak < options.minContrast * mean)
-        return nothing(tr("nothing bright here: the brightest point within %1° is only %2× the surroundings' "
+        return nothing(tr("nothing bright here: the brightest point within %1° is only %2× the environment's "
                           "average (a light needs %3×)")
                            .arg(options.searchDegrees)
                            .arg(peak / mean, 0, 'f', 2)

@@ -9,7 +9,8 @@
 // so the spot's light is their sum: colour = Σ L·Ω over its largest channel, intensity = that channel
 // (÷ π under classic shading), both × 2^EV; direction = minus the luminance-weighted centroid of the
 // region's directions (where it travels). Nothing is found where the brightest texel is not clearly
-// brighter than its surroundings (`minContrast` × the neighbourhood's mean luminance): a uniform sky.
+// brighter than the environment as a whole (`minContrast` × its mean luminance over the sphere): a uniform
+// sky, a floor, a plain gradient.
 #pragma once
 
 #include "environment.h"
@@ -23,7 +24,7 @@ struct EnvironmentLightOptions {
     double searchDegrees = 15.0;  // where the brightest texel is looked for, around the click
     double maxSpotDegrees = 30.0; // the region's cap, around its brightest texel
     double marginDegrees = 2.0;   // added to the region's radius for the dimmed spot
-    double minContrast = 2.0;     // peak / mean luminance of the search neighbourhood
+    double minContrast = 2.0;     // peak / the environment's mean luminance
 };
 
 struct EnvironmentLight {
