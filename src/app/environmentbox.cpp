@@ -95,8 +95,8 @@ EnvironmentBox::EnvironmentBox(Document* document, QWidget* parent)
         return row;
     };
     QWidget* intensityRow =
-        numberRow("environmentIntensity", "environmentIntensitySlider", tr("In&tensity"), -kMaxEnvironmentEv,
-                  kMaxEnvironmentEv, int(-kMaxEnvironmentEv * kEvSteps), int(kMaxEnvironmentEv * kEvSteps),
+        numberRow("environmentIntensity", "environmentIntensitySlider", tr("In&tensity"), -envlimits::kMaxEv,
+                  envlimits::kMaxEv, int(-envlimits::kMaxEv * kEvSteps), int(envlimits::kMaxEv * kEvSteps),
                   &m_intensity, &m_intensitySlider);
     m_intensity->setSuffix(tr(" EV"));
     m_intensity->setToolTip(tr("Radiance × 2^EV: +1 doubles the environment's light"));

@@ -56,8 +56,8 @@ SoftboxEditor::SoftboxEditor(QWidget* parent) : QWidget(parent) {
     };
     m_azimuth = number("softboxAzimuth", tr("Azimuth"), QStringLiteral("°"), -360.0, 360.0, false);
     m_elevation = number("softboxElevation", tr("Elevation"), QStringLiteral("°"), -90.0, 90.0, false);
-    m_width = number("softboxWidth", tr("Width"), QStringLiteral("°"), 0.0, kMaxSoftboxExtent, true);
-    m_height = number("softboxHeight", tr("Height"), QStringLiteral("°"), 0.0, kMaxSoftboxExtent, true);
+    m_width = number("softboxWidth", tr("Width"), QStringLiteral("°"), 0.0, envlimits::kMaxSoftbox, true);
+    m_height = number("softboxHeight", tr("Height"), QStringLiteral("°"), 0.0, envlimits::kMaxSoftbox, true);
     m_color = new ColorButton;
     m_color->setObjectName(QStringLiteral("softboxColor"));
     form->addRow(tr("Colour"), m_color);
@@ -134,7 +134,7 @@ void SoftboxEditor::showCurrent() {
     const int row = currentRow();
     m_fields->setEnabled(row >= 0);
     m_remove->setEnabled(row >= 0);
-    m_add->setEnabled(m_boxes.size() < size_t(kMaxSoftboxes));
+    m_add->setEnabled(m_boxes.size() < size_t(envlimits::kMaxSoftboxes));
     const Softbox b = row >= 0 ? m_boxes[size_t(row)] : Softbox{};
     m_azimuth->setValueQuietly(b.azimuth);
     m_elevation->setValueQuietly(b.elevation);

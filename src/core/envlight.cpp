@@ -151,7 +151,7 @@ EnvironmentLight lightFromEnvironment(const EnvironmentImage& image, double rota
     out.solidAngle = omegaSum;
     out.texels = int(region.size());
     out.spot.direction = towards;
-    out.spot.angle = std::min(180.0, (radius + halfTexel) * (180.0 / kPi) + options.marginDegrees);
+    out.spot.angle = std::min(90.0, (radius + halfTexel) * (180.0 / kPi) + options.marginDegrees);
     out.spot.factor = 0.0;
     return out;
 }

@@ -32,8 +32,8 @@ QString checkSoftbox(const Softbox& b, int index) {
     const QString at = QStringLiteral("environment.studio.softboxes[%1].").arg(index);
     QString e = std::isfinite(b.azimuth) ? QString() : at + QStringLiteral("azimuth must be a finite number");
     if (e.isEmpty()) e = range(at + QStringLiteral("elevation"), b.elevation, -90.0, 90.0);
-    if (e.isEmpty()) e = range(at + QStringLiteral("width"), b.width, 0.0, kMaxSoftboxExtent, true);
-    if (e.isEmpty()) e = range(at + QStringLiteral("height"), b.height, 0.0, kMaxSoftboxExtent, true);
+    if (e.isEmpty()) e = range(at + QStringLiteral("width"), b.width, 0.0, envlimits::kMaxSoftbox, true);
+    if (e.isEmpty()) e = range(at + QStringLiteral("height"), b.height, 0.0, envlimits::kMaxSoftbox, true);
     if (e.isEmpty()) e = colour(at + QStringLiteral("color"), b.color, kMaxRigIntensity);
     if (e.isEmpty()) e = range(at + QStringLiteral("intensity"), b.intensity, 0.0, kMaxRigIntensity);
     return e;
@@ -45,7 +45,7 @@ QString checkSpot(const EnvironmentSpot& s, int index) {
     if (!std::isfinite(d.x) || !std::isfinite(d.y) || !std::isfinite(d.z) ||
         (d.x == 0 && d.y == 0 && d.z == 0))
         return at + QStringLiteral("direction must be a finite, non-zero vector");
-    QString e = range(at + QStringLiteral("angle"), s.angle, 0.0, kMaxEnvironmentSpotAngle, true);
+    QString e = range(at + QStringLiteral("angle"), s.angle, 0.0, envlimits::kMaxSpotAngle, true);
     if (e.isEmpty()) e = range(at + QStringLiteral("factor"), s.factor, 0.0, 1.0);
     return e;
 }
@@ -59,11 +59,11 @@ QString validateEnvironment(const Environment& env) {
             .arg(allowedNames<EnvironmentBackground>());
     if (env.source == EnvironmentSource::Image && env.file.trimmed().isEmpty())
         return QStringLiteral("environment.file must name an image for an image environment");
-    if (env.file.size() > kMaxEnvironmentFileLength)
+    if (env.file.size() > envlimits::kMaxFileLength)
         return QStringLiteral("environment.file must be at most %1 characters")
-            .arg(kMaxEnvironmentFileLength);
-    if (QString e = range(QStringLiteral("environment.intensity"), env.intensity, -kMaxEnvironmentEv,
-                          kMaxEnvironmentEv);
+            .arg(envlimits::kMaxFileLength);
+    if (QString e = range(QStringLiteral("environment.intensity"), env.intensity, -envlimits::kMaxEv,
+                          envlimits::kMaxEv);
         !e.isEmpty())
         return e;
     if (!std::isfinite(env.rotation)) return QStringLiteral("environment.rotation must be a finite number");
@@ -75,12 +75,13 @@ QString validateEnvironment(const Environment& env) {
                 colour(QStringLiteral("environment.studio.") + QLatin1String(name), c, kMaxRigIntensity);
             !e.isEmpty())
             return e;
-    if (st.softboxes.size() > size_t(kMaxSoftboxes))
-        return QStringLiteral("environment.studio.softboxes holds at most %1 softboxes").arg(kMaxSoftboxes);
+    if (st.softboxes.size() > size_t(envlimits::kMaxSoftboxes))
+        return QStringLiteral("environment.studio.softboxes holds at most %1 softboxes")
+            .arg(envlimits::kMaxSoftboxes);
     for (size_t i = 0; i < st.softboxes.size(); ++i)
         if (QString e = checkSoftbox(st.softboxes[i], int(i)); !e.isEmpty()) return e;
-    if (env.spots.size() > size_t(kMaxEnvironmentSpots))
-        return QStringLiteral("environment.spots holds at most %1 spots").arg(kMaxEnvironmentSpots);
+    if (env.spots.size() > size_t(envlimits::kMaxSpots))
+        return QStringLiteral("environment.spots holds at most %1 spots").arg(envlimits::kMaxSpots);
     for (size_t i = 0; i < env.spots.size(); ++i)
         if (QString e = checkSpot(env.spots[i], int(i)); !e.isEmpty()) return e;
     return {};

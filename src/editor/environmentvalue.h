@@ -10,13 +10,18 @@
 
 namespace lr {
 
-// The ranges (core/environment.h documents them on the fields).
-inline constexpr double kMaxEnvironmentEv = 20.0;         // intensity in EV: -20 ... 20
-inline constexpr double kMaxSoftboxExtent = 170.0;        // softbox width and height, degrees: (0, 170]
-inline constexpr double kMaxEnvironmentSpotAngle = 180.0; // a dimmed spot's radius, degrees: (0, 180]
-inline constexpr int kMaxSoftboxes = 64;                  // the studio's softbox list
-inline constexpr int kMaxEnvironmentSpots = 256;          // dimmed spots
-inline constexpr int kMaxEnvironmentFileLength = 4096;    // characters
+// The ranges, the rig format's (docs/rig-format.md "environment"). When the rig JSON's environment block is
+// merged, core/rigjson.h's kMaxEnvironmentEV, kMaxSoftboxAngle, kMaxEnvironmentSpotAngle,
+// kMaxEnvironmentSoftboxes, kMaxEnvironmentSpots and kMaxEnvironmentPathLength are the one table: these
+// then name them (same values).
+namespace envlimits {
+inline constexpr double kMaxEv = 20.0;        // intensity in EV: -20 ... 20
+inline constexpr double kMaxSoftbox = 170.0;  // softbox width and height, degrees: (0, 170]
+inline constexpr double kMaxSpotAngle = 90.0; // a dimmed spot's radius, degrees: (0, 90]
+inline constexpr int kMaxSoftboxes = 32;      // the studio's softbox list
+inline constexpr int kMaxSpots = 64;          // dimmed spots
+inline constexpr int kMaxFileLength = 4096;   // characters
+} // namespace envlimits
 
 // Empty when valid, else the first problem.
 QString validateEnvironment(const Environment& environment);
