@@ -29,6 +29,9 @@ QList<ControlBinding> mouseBindings() {
          QObject::tr("Change its outer angle (in 0.5° steps)")},
         {QObject::tr("Shift+click the model"),
          QObject::tr("Aim the selected spot, directional and rim lights at that point")},
+        {QObject::tr("Ctrl+Alt+click the background"),
+         QObject::tr("Add a directional light from the environment's bright spot there (also Edit › Light "
+                     "from environment, then a click)")},
         {QObject::tr("Esc while dragging a light"), QObject::tr("Cancel the drag (nothing is left to redo)")},
     };
 }

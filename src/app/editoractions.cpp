@@ -3,6 +3,7 @@
 #include "controlshelp.h"
 #include "documentfiles.h"
 #include "editor/document.h"
+#include "environmentlighttool.h"
 #include "errordialog.h"
 #include "lightsdock.h"
 #include "mainwindow.h"
@@ -87,6 +88,9 @@ void EditorActions::createEditMenu() {
     QMenu* lights = menu->addMenu(tr("&Lights"));
     for (QAction* a : m_window->lightsDock()->lightActions())
         lights->addAction(a);
+    menu->addSeparator();
+    m_window->environmentLightTool()->addActions(
+        menu); // issue 15: a light from the environment's bright spot
 }
 
 void EditorActions::createViewMenu() {

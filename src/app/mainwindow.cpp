@@ -6,6 +6,10 @@
 #include "editor/document.h"
 #include "editoractions.h"
 #include "editorstatusbar.h"
+#include "environmentbox.h"
+#include "environmentlighttool.h"
+#include "environmentloading.h"
+#include "errordialog.h"
 #include "lightsdock.h"
 #include "modeldock.h"
 #include "presetsdock.h"
@@ -39,6 +43,8 @@ MainWindow::MainWindow(QWidget* parent)
     setStatusBar(m_status);
     setDockNestingEnabled(true);
     setAcceptDrops(true);
+    m_environment = new EnvironmentLoading(m_doc, m_scene, this);
+    m_environmentLight = new EnvironmentLightTool(m_doc, m_scene, m_viewport, this);
     createDocks();
     m_actions = new EditorActions(this);
     connectStatus();
@@ -67,6 +73,7 @@ void MainWindow::createDocks() {
     m_renderDock = new RenderSettingsDock(m_doc, m_viewSettings, this);
     m_renderDock->setSceneFrameProvider([this] { return m_scene->frame(); }); // for the space switch
     m_renderDock->setScene(m_scene);                                          // the model's up axis
+    m_renderDock->environmentBox()->setLoading(m_environment);
     m_presetsDock = new PresetsDock(m_doc, m_presets, this);
     m_presetsDock->setThumbnailRenderer([this](const Rig& rig, const QSize& size) {
         return m_scene->isEmpty() ? QImage() : m_viewport->renderThumbnail(rig, size);
@@ -109,6 +116,15 @@ void MainWindow::connectStatus() {
     connect(m_viewport, &Viewport::statusMessage, this,
             [this](const QString& t) { m_status->showMessage(t, 8000); });
     connect(m_viewport, &Viewport::frameRendered, m_status, &EditorStatusBar::setFrameTime);
+    connect(m_environmentLight, &EnvironmentLightTool::statusMessage, this,
+            [this](const QString& t) { m_status->showMessage(t, 8000); });
+    // An environment that cannot be loaded: said in the status bar and the error box; the rig stays as it is.
+    connect(m_environment, &EnvironmentLoading::failed, this, [this](const QString& error) {
+        m_status->showMessage(tr("Environment not drawn: %1").arg(error), 8000);
+        showError(this, {tr("Environment"), tr("Could not load the environment; it is not drawn."), {error}});
+    });
+    connect(m_environment, &EnvironmentLoading::warnings, this,
+            [this](const QStringList& w) { m_status->showMessage(w.join(QLatin1String("; ")), 8000); });
     connect(m_files, &DocumentFiles::modelLoadStarted, this,
             [this](const QString& path) { m_status->showLoading(QFileInfo(path).fileName()); });
     connect(m_files, &DocumentFiles::modelLoadProgress, m_status, &EditorStatusBar::setLoadProgress);

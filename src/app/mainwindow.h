@@ -13,6 +13,8 @@ class Document;
 class DocumentFiles;
 class EditorActions;
 class EditorStatusBar;
+class EnvironmentLightTool;
+class EnvironmentLoading;
 class LightsDock;
 class ModelDock;
 class PresetStore;
@@ -46,6 +48,8 @@ class MainWindow : public QMainWindow {
     ModelDock* modelDock() const { return m_modelDock; }
     EditorActions* actions() const { return m_actions; }
     EditorStatusBar* editorStatusBar() const { return m_status; }
+    EnvironmentLoading* environmentLoading() const { return m_environment; }
+    EnvironmentLightTool* environmentLightTool() const { return m_environmentLight; }
 
     // Startup: the model and rig from the command line, else the last session's (when restoring), else the
     // bundled model lit by the default preset. Restores geometry and dock layout when options allow it.
@@ -78,6 +82,8 @@ class MainWindow : public QMainWindow {
     QDockWidget* m_historyDock = nullptr;
     ModelDock* m_modelDock = nullptr;
     EditorActions* m_actions = nullptr;
+    EnvironmentLoading* m_environment = nullptr; // the rig's environment, loaded in the background
+    EnvironmentLightTool* m_environmentLight = nullptr;
     bool m_restoreSession = true;
 };
 

@@ -3,6 +3,7 @@
 #include "colorbutton.h"
 #include "editor/changerigspace.h"
 #include "editor/document.h"
+#include "environmentbox.h"
 #include "modeltooltips.h"
 #include "numberedit.h"
 #include "scene.h"
@@ -39,6 +40,8 @@ RenderSettingsDock::RenderSettingsDock(Document* document, ViewSettings* setting
     setObjectName(QStringLiteral("RenderSettingsDock"));
     auto* body = new QWidget;
     m_ui->setupUi(body);
+    m_environment = new EnvironmentBox(m_doc, body); // below the Ground box
+    m_ui->mainLayout->insertWidget(m_ui->mainLayout->indexOf(m_ui->groundGroup) + 1, m_environment);
     // Scrolled like the Properties dock it shares a tab with, so its boxes (Ground made it taller) never set
     // a minimum height on the main window.
     auto* scroll = new QScrollArea(this);

@@ -23,6 +23,7 @@ class RenderSettingsForm;
 namespace lr {
 
 class Document;
+class EnvironmentBox;
 class Scene;
 class ViewSettings;
 
@@ -42,6 +43,7 @@ class RenderSettingsDock : public QDockWidget {
     void setSceneFrameProvider(std::function<SceneFrame()> frame) { m_frame = std::move(frame); }
     // The scene whose model's up axis the "Model up axis" box shows and sets (disabled without one).
     void setScene(Scene* scene);
+    EnvironmentBox* environmentBox() const { return m_environment; } // issue 15 (environmentbox.h)
 
   private:
     void loadView();
@@ -55,6 +57,7 @@ class RenderSettingsDock : public QDockWidget {
     std::optional<int> m_editToken;
     std::function<SceneFrame()> m_frame;
     Scene* m_scene = nullptr;
+    EnvironmentBox* m_environment;
     QStringList m_classicToolTips; // classicOnlyWidgets()' own tooltips, restored under classic shading
 };
 

@@ -1,5 +1,7 @@
 #include "scene.h"
 
+#include "render/environmentloader.h"
+
 #include <QCryptographicHash>
 #include <QFileInfo>
 #include <QSettings>
@@ -53,6 +55,12 @@ void Scene::setUpAxis(ModelUpAxis axis) {
     }
     m_model = std::make_shared<const Model>(rotateModel(*m_model, r));
     emit modelChanged();
+}
+
+void Scene::setEnvironment(std::shared_ptr<const LoadedEnvironment> environment) {
+    if (environment == m_environment) return;
+    m_environment = std::move(environment);
+    emit environmentChanged();
 }
 
 } // namespace lr

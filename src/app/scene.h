@@ -13,6 +13,8 @@
 
 namespace lr {
 
+struct LoadedEnvironment;
+
 class Scene : public QObject {
     Q_OBJECT
   public:
@@ -31,13 +33,20 @@ class Scene : public QObject {
     void setUpAxis(ModelUpAxis axis);
     static ModelUpAxis rememberedUpAxis(const QString& path);
 
+    // The rig's environment as loaded (environmentloading.h), shared by the viewport and every snapshot so
+    // they render the same; null: none (or not loaded yet, or failed).
+    const std::shared_ptr<const LoadedEnvironment>& environment() const { return m_environment; }
+    void setEnvironment(std::shared_ptr<const LoadedEnvironment> environment);
+
   signals:
     void modelChanged();
+    void environmentChanged();
 
   private:
     std::shared_ptr<const Model> m_model;
     ModelUpAxis m_upAxis = ModelUpAxis::YUp;
     QString m_path;
+    std::shared_ptr<const LoadedEnvironment> m_environment;
 };
 
 } // namespace lr

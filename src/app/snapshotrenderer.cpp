@@ -31,6 +31,9 @@ bool SnapshotRenderer::prepare(QString* error) {
         }
         m_uploaded = m_keepAlive.get();
     }
+    // The viewport's environment (scene.h), so a snapshot shows what the viewport does.
+    if (m_offscreen->renderer().environment() != m_scene->environment())
+        m_offscreen->renderer().setEnvironment(m_scene->environment());
     return true;
 }
 

@@ -50,6 +50,7 @@ Viewport::Viewport(Document* document, Scene* scene, ViewSettings* settings, QWi
     connect(m_doc, &Document::selectionChanged, this, qOverload<>(&QWidget::update));
     connect(m_settings, &ViewSettings::changed, this, qOverload<>(&QWidget::update));
     connect(m_scene, &Scene::modelChanged, this, &Viewport::onModelChanged);
+    connect(m_scene, &Scene::environmentChanged, this, qOverload<>(&QWidget::update));
     m_settle = new QTimer(this);
     m_settle->setSingleShot(true);
     m_settle->setInterval(250);
@@ -148,6 +149,7 @@ void Viewport::paintGL() {
         m_rigDirty = false;
         r.setRig(m_doc->renderRig());
     }
+    if (r.environment() != m_scene->environment()) r.setEnvironment(m_scene->environment());
     const qreal dpr = devicePixelRatioF();
     const QSize size(qMax(1, int(std::lround(width() * dpr))), qMax(1, int(std::lround(height() * dpr))));
     if (!r.render(renderCamera(), size, renderSettings(true), defaultFramebufferObject())) {
@@ -160,6 +162,10 @@ void Viewport::paintGL() {
     const RenderStats& st = r.stats();
     emit frameRendered(st.lastGpuMs, st.lastCpuMs);
     if (m_framesRendered++ == 0) emit firstFrame();
+}
+
+std::shared_ptr<const LoadedEnvironment> Viewport::renderedEnvironment() const {
+    return m_gl ? m_gl->renderer.environment() : nullptr;
 }
 
 void Viewport::onModelChanged() {
@@ -382,6 +388,9 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event) {
             emit statusMessage(tr("Aimed the selected light(s) at the clicked point"));
         else if (!message.isEmpty())
             emit statusMessage(message);
+    } else if (nav == Navigation::Orbit && !m_moved &&
+               (m_pickEnvironment || event->modifiers().testFlags(Qt::ControlModifier | Qt::AltModifier))) {
+        emit environmentClicked(event->position()); // the background (a light would have been a gizmo press)
     } else if (nav == Navigation::Orbit && !m_moved && !(event->modifiers() & Qt::ControlModifier)) {
         m_doc->setSelection({}); // a click on empty space clears the selection
     }

@@ -19,6 +19,7 @@ namespace lr {
 
 class Document;
 class GizmoInteraction;
+struct LoadedEnvironment;
 struct Rig;
 class Scene;
 class SnapshotRenderer;
@@ -48,6 +49,8 @@ class Viewport : public QOpenGLWidget {
     // Orbiting, panning, dollying or dragging a light right now: frames take the interactive settings.
     bool isNavigating() const { return m_navigating; }
     QString lastError() const { return m_error; }
+    // The environment the viewport's renderer draws with (the Scene's, from the last frame on): tests.
+    std::shared_ptr<const LoadedEnvironment> renderedEnvironment() const;
 
     // Offscreen renders of the current model with the current camera (same pixels as the viewport).
     QImage renderThumbnail(const Rig& rig, const QSize& size);
@@ -73,8 +76,11 @@ class Viewport : public QOpenGLWidget {
     void setStandardView(const QString& name);
     void setModelCamera(int index);
     void lookThroughLight(int row);
+    // While on, a plain click on the background emits environmentClicked (Ctrl+Alt+click always does).
+    void setEnvironmentPicking(bool on) { m_pickEnvironment = on; }
 
   signals:
+    void environmentClicked(const QPointF& position); // "Light from environment" (environmentlighttool.h)
     void frameRendered(double gpuMs, double cpuMs);
     void firstFrame();
     void statusMessage(const QString& text);
@@ -116,6 +122,7 @@ class Viewport : public QOpenGLWidget {
     QTimer* m_settle = nullptr;
     void setNavigating(bool on);
     bool m_shiftPress = false;
+    bool m_pickEnvironment = false;
     int m_framesRendered = 0;
     QString m_error;
 };

@@ -9,7 +9,8 @@ QString tr(const char* text) {
     return QCoreApplication::translate("lr::ChangeRigValue", text);
 }
 
-// Rig-wide values only (no lights): cheap to copy, compares values of any QVariant type exactly.
+// Rig-wide values only (no lights; the environment's few softboxes and spots are cheap too): cheap to copy,
+// compares values of any QVariant type exactly.
 Rig settingsWith(const Rig& rig, RigProperty property, const QVariant& value) {
     Rig r;
     r.name = rig.name;
@@ -17,6 +18,7 @@ Rig settingsWith(const Rig& rig, RigProperty property, const QVariant& value) {
     r.ambient = rig.ambient;
     r.shading = rig.shading;
     r.ground = rig.ground;
+    r.environment = rig.environment;
     applyRigValue(r, property, value);
     return r;
 }

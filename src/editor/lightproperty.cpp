@@ -1,6 +1,7 @@
 #include "editor/lightproperty.h"
 
 #include "core/rigjson.h"
+#include "editor/environmentvalue.h"
 
 #include <QCoreApplication>
 #include <QVector3D>
@@ -680,6 +681,8 @@ QString rigPropertyName(RigProperty p) {
         return QStringLiteral("ground");
     case RigProperty::GroundColor:
         return QStringLiteral("ground colour");
+    case RigProperty::Environment:
+        return QStringLiteral("environment");
     case RigProperty::Any:
         break;
     }
@@ -716,6 +719,8 @@ QVariant rigValue(const Rig& r, RigProperty p) {
         return QVariant::fromValue(r.ground.mode);
     case RigProperty::GroundColor:
         return QVariant::fromValue(r.ground.color);
+    case RigProperty::Environment:
+        return QVariant::fromValue(r.environment);
     case RigProperty::Any:
         break;
     }
@@ -773,6 +778,9 @@ QString validateRigValue(RigProperty p, const QVariant& v) {
         return checkEnum<GroundMode>(rigPropertyName(p), v);
     case RigProperty::GroundColor: // an albedo: what share of the light the ground reflects
         return checkVec3(rigPropertyName(p), toVec3(v, true), 0.0, 1.0);
+    case RigProperty::Environment:
+        if (v.metaType() != QMetaType::fromType<Environment>()) return QStringLiteral("not an environment");
+        return validateEnvironment(v.value<Environment>());
     case RigProperty::Any:
         break;
     }
@@ -846,6 +854,9 @@ void applyRigValue(Rig& r, RigProperty p, const QVariant& v) {
         break;
     case RigProperty::GroundColor:
         if (auto c = toVec3(v, true)) r.ground.color = *c;
+        break;
+    case RigProperty::Environment:
+        r.environment = v.value<Environment>();
         break;
     case RigProperty::Any:
         break;

@@ -25,7 +25,7 @@
 //   ShadowResolution     int (also a whole double), a power of two 256 ... 4096
 //   everything else      double
 // Enums from types.h, RigSpace/SpecularModel/ViewerModel/GroundMode likewise for rig values (GroundColor:
-// glm::dvec3 linear albedo, components 0 ... 1). (Qt 6 needs no
+// glm::dvec3 linear albedo, components 0 ... 1; Environment: lr::Environment). (Qt 6 needs no
 // Q_DECLARE_METATYPE for glm::dvec3 in a QVariant; declaring it here would clash with earlier implicit uses.)
 #pragma once
 
@@ -88,6 +88,7 @@ enum class RigProperty {
     ShadingModel,
     GroundMode,
     GroundColor,
+    Environment, // issue 15: the whole lr::Environment (editor/environmentvalue.h checks it)
     Any
 };
 constexpr int kRigPropertyCount = int(RigProperty::Any);

@@ -36,8 +36,8 @@ constexpr int kDfgLutSize = 32;
 // R_y(−rotation)·d, core/environment.h).
 glm::mat3 environmentFromView(const glm::dmat4& view, double rotationDegrees);
 
-// The classic diffuse model the environment is shaded with (core/environment.h's definition names it; the
-// rig has no field for it yet: Lambert).
+// The classic diffuse model the environment is shaded with (Environment::diffuse; core/environment.h's
+// definition).
 DiffuseModel environmentDiffuse(const Rig& rig);
 
 // What a frame's lit programs need beyond the textures.
