@@ -4,6 +4,7 @@
 #include "editor/document.h"
 #include "editor/environmentvalue.h"
 #include "environmentloading.h"
+#include "model/environmentdecode.h"
 #include "numberedit.h"
 #include "softboxeditor.h"
 
@@ -22,8 +23,13 @@
 namespace lr {
 
 QStringList bundledEnvironmentFiles() {
-    // Until the loader lists the environments bundled in resources/ (helper envimage), the two it is to have.
-    return {QStringLiteral("builtin:studio"), QStringLiteral("builtin:courtyard")};
+    // The studio first: what switching to an image environment starts with.
+    QStringList names = builtinEnvironmentNames();
+    if (names.removeOne(QStringLiteral("studio"))) names.prepend(QStringLiteral("studio"));
+    QStringList files;
+    for (const QString& name : names)
+        files << QLatin1String(kBuiltinEnvironmentPrefix) + name;
+    return files;
 }
 
 namespace {

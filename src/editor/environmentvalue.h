@@ -5,22 +5,20 @@
 #pragma once
 
 #include "core/environment.h"
+#include "core/rigjson.h"
 
 #include <QString>
 
 namespace lr {
 
-// The ranges, the rig format's (docs/rig-format.md "environment"). When the rig JSON's environment block is
-// merged, core/rigjson.h's kMaxEnvironmentEV, kMaxSoftboxAngle, kMaxEnvironmentSpotAngle,
-// kMaxEnvironmentSoftboxes, kMaxEnvironmentSpots and kMaxEnvironmentPathLength are the one table: these
-// then name them (same values).
+// The ranges: the rig format's one table (core/rigjson.h, docs/rig-format.md "environment").
 namespace envlimits {
-inline constexpr double kMaxEv = 20.0;        // intensity in EV: -20 ... 20
-inline constexpr double kMaxSoftbox = 170.0;  // softbox width and height, degrees: (0, 170]
-inline constexpr double kMaxSpotAngle = 90.0; // a dimmed spot's radius, degrees: (0, 90]
-inline constexpr int kMaxSoftboxes = 32;      // the studio's softbox list
-inline constexpr int kMaxSpots = 64;          // dimmed spots
-inline constexpr int kMaxFileLength = 4096;   // characters
+inline constexpr double kMaxEv = kMaxEnvironmentEV;
+inline constexpr double kMaxSoftbox = kMaxSoftboxAngle;
+inline constexpr double kMaxSpotAngle = kMaxEnvironmentSpotAngle;
+inline constexpr int kMaxSoftboxes = kMaxEnvironmentSoftboxes;
+inline constexpr int kMaxSpots = kMaxEnvironmentSpots;
+inline constexpr int kMaxFileLength = kMaxEnvironmentPathLength;
 } // namespace envlimits
 
 // Empty when valid, else the first problem.
