@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <queue>
 
 namespace lr::envintegrate {
 
@@ -286,34 +287,34 @@ double EnvironmentField::imagePdf(int texelIndex) const {
 }
 
 V EnvironmentField::irradiance(const V& n, double tolerance, V* boundOut) const {
-    V sum(0.0), bound(0.0);
+    V sum(0.0);
     if (isBlack()) {
-        if (boundOut) *boundOut = bound;
+        if (boundOut) *boundOut = V(0.0);
         return sum;
     }
-    const double perLuminance = std::max(tolerance, 0.0) / m_totalLuminance;
-    std::vector<Item> stack;
-    stack.reserve(256);
-    const int top = int(m_levels.size());
-    const int tw = top > 0 ? m_levelWidth.back() : m_width, th = top > 0 ? m_levelHeight.back() : m_height;
-    for (int iy = 0; iy < th; ++iy)
-        for (int ix = 0; ix < tw; ++ix)
-            stack.push_back({top, ix, iy, 0, {}, V(0.0)});
-    while (!stack.empty()) {
-        const Item it = stack.back();
-        stack.pop_back();
+    // Cells the horizon crosses wait in a max-heap by the luminance of their error half-width; the worst
+    // is split until the half-widths add up to at most `tolerance` (or nothing can be split further).
+    struct Pending {
+        Item item;
+        V estimate, half;
+        double key;
+        bool operator<(const Pending& o) const { return key < o.key; }
+    };
+    std::priority_queue<Pending> heap;
+    std::vector<Pending> final; // straddling sub-cells at the depth limit
+    double open = 0.0;          // Σ luminance(half) over heap and final
+    const auto visit = [&](const Item& it) {
         V flux, axis;
         std::array<V, 3> first;
         double cosBeta, sinBeta;
         if (it.level >= 1) {
-            const Node& nd =
-                m_levels[size_t(it.level - 1)]
-                        [size_t(it.iy) * size_t(m_levelWidth[size_t(it.level - 1)]) + size_t(it.ix)];
-            if (!(nd.luminance > 0.0)) continue;
+            const int lw = m_levelWidth[size_t(it.level - 1)];
+            const Node& nd = m_levels[size_t(it.level - 1)][size_t(it.iy) * size_t(lw) + size_t(it.ix)];
+            if (!(nd.luminance > 0.0)) return;
             flux = nd.flux, first = nd.first, axis = nd.axis, cosBeta = nd.cosBeta, sinBeta = nd.sinBeta;
         } else if (it.level == 0) {
             const V L = texel(it.ix, it.iy);
-            if (!(luminance(L) > 0.0)) continue;
+            if (!(luminance(L) > 0.0)) return;
             const size_t x = size_t(it.ix), y = size_t(it.iy);
             flux = L * m_rowSolidAngle[y];
             const V m(m_rowCc[y] * m_colDSin[x], m_rowSc[y] * (2.0 * kPi / m_width),
@@ -337,40 +338,57 @@ V EnvironmentField::irradiance(const V& n, double tolerance, V* boundOut) const 
         const V nm(glm::dot(n, first[0]), glm::dot(n, first[1]), glm::dot(n, first[2]));
         if (!pastHalf && cosPlus > 0.0) { // wholly above the horizon: (n·ω)⁺ = n·ω, exactly linear
             sum += nm;
-            continue;
+            return;
         }
-        if (!inside && cosMinus < 0.0) continue; // wholly below
+        if (!inside && cosMinus < 0.0) return; // wholly below
+        // Straddling: Σ L (n·ω)⁺ lies between max(0, n·M) and n·M + Φ·max(0, −min n·ω), and below
+        // Φ·max n·ω, with the extremes of n·ω over the cone.
         const double lo = pastHalf ? -1.0 : cosPlus, hi = inside ? 1.0 : cosMinus;
-        V lower = glm::max(nm, V(0.0));
-        V upper = glm::min(nm + flux * std::max(0.0, -lo), flux * std::max(0.0, hi));
-        upper = glm::max(upper, lower);
-        const V half = 0.5 * (upper - lower);
-        const bool canRefine = it.level >= 0 || it.depth < kMaxSubcellDepth;
-        if (!canRefine || luminance(half) <= perLuminance * luminance(flux)) {
-            sum += 0.5 * (upper + lower);
-            bound += half;
-            continue;
-        }
+        const V lower = glm::max(nm, V(0.0));
+        const V upper = glm::max(glm::min(nm + flux * std::max(0.0, -lo), flux * std::max(0.0, hi)), lower);
+        const Pending p{it, 0.5 * (upper + lower), 0.5 * (upper - lower), luminance(0.5 * (upper - lower))};
+        open += p.key;
+        if (it.level < 0 && it.depth >= kMaxSubcellDepth)
+            final.push_back(p);
+        else
+            heap.push(p);
+    };
+    const int top = int(m_levels.size());
+    const int tw = top > 0 ? m_levelWidth.back() : m_width, th = top > 0 ? m_levelHeight.back() : m_height;
+    for (int iy = 0; iy < th; ++iy)
+        for (int ix = 0; ix < tw; ++ix)
+            visit({top, ix, iy, 0, {}, V(0.0)});
+    const double budget = std::max(tolerance, 0.0);
+    while (!heap.empty() && open > budget) {
+        const Pending p = heap.top();
+        heap.pop();
+        open -= p.key;
+        const Item& it = p.item;
         if (it.level >= 2) {
             const int cw = m_levelWidth[size_t(it.level - 2)], ch = m_levelHeight[size_t(it.level - 2)];
             for (int dy = 0; dy < 2; ++dy)
                 for (int dx = 0; dx < 2; ++dx)
                     if (2 * it.ix + dx < cw && 2 * it.iy + dy < ch)
-                        stack.push_back({it.level - 1, 2 * it.ix + dx, 2 * it.iy + dy, 0, {}, V(0.0)});
+                        visit({it.level - 1, 2 * it.ix + dx, 2 * it.iy + dy, 0, {}, V(0.0)});
         } else if (it.level == 1) {
             for (int dy = 0; dy < 2; ++dy)
                 for (int dx = 0; dx < 2; ++dx)
                     if (2 * it.ix + dx < m_width && 2 * it.iy + dy < m_height)
-                        stack.push_back({0, 2 * it.ix + dx, 2 * it.iy + dy, 0, {}, V(0.0)});
+                        visit({0, 2 * it.ix + dx, 2 * it.iy + dy, 0, {}, V(0.0)});
         } else {
             const Cell c = it.level == 0 ? texelCell(it.ix, it.iy, m_width, m_height) : it.cell;
             const V L = it.level == 0 ? texel(it.ix, it.iy) : it.radiance;
             const double lm = 0.5 * (c.latLo + c.latHi), pm = 0.5 * (c.phi0 + c.phi1);
-            for (const Cell& s : {Cell{c.latLo, lm, c.phi0, pm}, Cell{c.latLo, lm, pm, c.phi1},
-                                  Cell{lm, c.latHi, c.phi0, pm}, Cell{lm, c.latHi, pm, c.phi1}})
-                stack.push_back({-1, 0, 0, it.depth + 1, s, L});
+            for (const Cell& sc : {Cell{c.latLo, lm, c.phi0, pm}, Cell{c.latLo, lm, pm, c.phi1},
+                                   Cell{lm, c.latHi, c.phi0, pm}, Cell{lm, c.latHi, pm, c.phi1}})
+                visit({-1, 0, 0, it.depth + 1, sc, L});
         }
     }
+    V bound(0.0);
+    for (; !heap.empty(); heap.pop())
+        sum += heap.top().estimate, bound += heap.top().half;
+    for (const Pending& p : final)
+        sum += p.estimate, bound += p.half;
     if (boundOut) *boundOut = bound;
     return sum;
 }

@@ -45,7 +45,7 @@ struct Convergence {
     int replicates = 16;
     int batch = 4;
     int minBatches = 1, maxBatches = 64;
-    double quadratureLevels = 0.05; // share of the target the diffuse quadrature's hard bound may use
+    double quadratureLevels = 0.1; // share of the target the diffuse quadrature's hard bound may use
 };
 
 struct Estimate {
@@ -73,8 +73,8 @@ class EnvironmentField {
 
     // The radiance (× 2^EV) arriving from a world direction: the texel its cell lies in.
     glm::dvec3 radianceAt(const glm::dvec3& worldDirection) const;
-    // ∫ L(ω) (n·ω)⁺ dω (per channel) for a unit world normal, by the adaptive quadrature; *bound gets its
-    // hard error bound. `tolerance` is the bound aimed at (luminance-weighted, same units as the result).
+    // ∫ L(ω) (n·ω)⁺ dω (per channel) for a unit normal in the image's frame, by the adaptive quadrature;
+    // *bound gets its hard error bound (per channel). `tolerance`: the bound's luminance aimed at.
     glm::dvec3 irradiance(const glm::dvec3& worldNormal, double tolerance, glm::dvec3* bound = nullptr) const;
 
     // The environment's radiance at a surface (view space, as the G-buffer has it); viewToWorld rotates

@@ -124,7 +124,7 @@ class TestEnvIntegrate : public QObject {
             const Estimate e = field.integrate(s, classic(), kIdentity, std::uint64_t(i), tight());
             QVERIFY2(e.samples == 0, "no specular: the diffuse quadrature alone");
             QVERIFY2(within(e.radiance, albedo, e, 0.0), qPrintable(describe(e.radiance, albedo, e)));
-            QVERIFY2(maxOf3(e.bound) < 1e-4, qPrintable(vecStr(e.bound)));
+            QVERIFY2(e.errorLevels <= tight().targetLevels, qPrintable(num(e.errorLevels)));
             // The definition itself (a light per texel centre) agrees to the discretisation's O(Δ²).
             const V sum = environmentRadianceBySum(field, s, classic(), kIdentity);
             QVERIFY2(glm::length(sum - albedo) < 2e-3, qPrintable(vecStr(sum)));
@@ -161,30 +161,33 @@ class TestEnvIntegrate : public QObject {
         V bound;
         const V E = field.irradiance(n, 1e-9, &bound);
         QVERIFY2(std::abs(E.x / kPi - 1.0) <= bound.x / kPi + 1e-12, qPrintable(vecStr(E)));
-        // The whole BRDF: rough white dielectric, several angles, ≤ 1 and > the diffuse lobe alone.
+        // The whole BRDF, head-on, against an independent 2D quadrature of pbrLobes (diffuse + specular):
+        // rough white dielectrics reflect at most 1 and more than the diffuse lobe alone. (At roughness 0.2
+        // the glTF BRDF, whose diffuse (1 − F) uses the light's half-vector, reflects slightly more than 1:
+        // printed, not asserted.)
         for (double rough : {1.0, 0.5, 0.2}) {
+            const double alpha = lighting::pbrAlpha(rough);
+            double total = 0.0;
+            const int nt2 = 6000;
+            for (int i = 0; i < nt2; ++i)
+                for (int j = 0; j < np; ++j) {
+                    const double t = (i + 0.5) * (kPi / 2) / nt2, p = (j + 0.5) * 2 * kPi / np;
+                    const V w(std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t));
+                    const auto lobes = lighting::pbrLobes(n, w, v, V(1.0), V(0.04), alpha, std::cos(t));
+                    total +=
+                        (lobes.diffuse.x + lobes.specular.x) * std::sin(t) * (kPi / 2 / nt2) * (2 * kPi / np);
+                }
             lighting::Surface<double> s = surface(V(0, 0, 1), V(1.0));
             s.metallic = 0.0, s.roughness = rough;
             const Estimate e = field.integrate(s, pbr(), kIdentity, 3, tight());
-            qInfo("roughness %.1f: white dielectric in the furnace reflects %.6f (se %.2g)", rough,
-                  e.radiance.x, e.standardError.x);
-            QVERIFY2(e.radiance.x <= 1.0 + 4.0 * e.standardError.x, qPrintable(num(e.radiance.x)));
-            QVERIFY2(e.radiance.x > diffuseExpected, qPrintable(num(e.radiance.x)));
+            qInfo(
+                "roughness %.1f: white dielectric in the furnace reflects %.6f (se %.2g); 2D quadrature %.6f",
+                rough, e.radiance.x, e.standardError.x, total);
+            QVERIFY2(within(e.radiance, V(total), e, 4.0, 2e-5),
+                     qPrintable(describe(e.radiance, V(total), e)));
+            QVERIFY(total > diffuseExpected);
+            if (rough >= 0.5) QVERIFY2(total <= 1.0, qPrintable(num(total)));
         }
-        // Classic with the same surface gives exactly its albedo (furnaceClassic); PBR head-on, rough 1:
-        // diffuse + specular against an independent 2D quadrature of the whole BRDF.
-        lighting::Surface<double> s = surface(V(0, 0, 1), V(1.0));
-        s.roughness = 1.0;
-        double total = 0.0;
-        for (int i = 0; i < nt; ++i)
-            for (int j = 0; j < np; ++j) {
-                const double t = (i + 0.5) * (kPi / 2) / nt, p = (j + 0.5) * 2 * kPi / np;
-                const V w(std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t));
-                const auto lobes = lighting::pbrLobes(n, w, v, V(1.0), V(0.04), 1.0, std::cos(t));
-                total += (lobes.diffuse.x + lobes.specular.x) * std::sin(t) * (kPi / 2 / nt) * (2 * kPi / np);
-            }
-        const Estimate e = field.integrate(s, pbr(), kIdentity, 11, tight());
-        QVERIFY2(within(e.radiance, V(total), e, 4.0, 1e-6), qPrintable(describe(e.radiance, V(total), e)));
     }
 
     // (2) Radiance 1 above the horizon, 0 below: E(n) = π(1 + n·up)/2, Lambert = albedo(1 + n·up)/2.
