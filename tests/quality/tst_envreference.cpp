@@ -19,7 +19,12 @@ using namespace lr::test;
 
 namespace {
 
-const QSize kSize(96, 72);
+// LIGHTRIG_ENVREF_SIZE=WxH measures the reference at another size (docs/quality.md's figures).
+const QSize kSize = [] {
+    const QStringList wh = qEnvironmentVariable("LIGHTRIG_ENVREF_SIZE").split(QLatin1Char('x'));
+    return wh.size() == 2 && wh[0].toInt() >= 16 && wh[1].toInt() >= 16 ? QSize(wh[0].toInt(), wh[1].toInt())
+                                                                        : QSize(96, 72);
+}();
 
 Environment studioEnvironment() {
     Environment e;
