@@ -168,9 +168,11 @@ EnvironmentField::EnvironmentField(std::shared_ptr<const EnvironmentImage> image
     }
 
     // Whole-sphere moments and the luminance distribution.
-    std::vector<double> weight(size_t(w) * size_t(h), 0.0); // luminance × solid angle
-    double total = 0.0;
+    m_rowCdf.assign(size_t(h), 0.0);
+    m_colCdf.assign(size_t(w) * size_t(h), 0.0);
+    double rows = 0.0;
     for (int y = 0; y < h; ++y) {
+        double row = 0.0;
         for (int x = 0; x < w; ++x) {
             const V L = texel(x, y);
             const Cell c = texelCell(x, y, w, h);
@@ -184,36 +186,24 @@ EnvironmentField::EnvironmentField(std::shared_ptr<const EnvironmentImage> image
                 for (int k = 0; k < 6; ++k)
                     m_second[size_t(ch)][size_t(k)] += L[ch] * q[size_t(k)];
             }
-            weight[size_t(y) * size_t(w) + size_t(x)] = luminance(L) * omega;
-            total += luminance(L) * omega;
+            row += luminance(L);
+            m_colCdf[size_t(y) * size_t(w) + size_t(x)] = row;
         }
+        if (row > 0.0)
+            for (int x = 0; x < w; ++x)
+                m_colCdf[size_t(y) * size_t(w) + size_t(x)] /= row;
+        rows += row * m_rowSolidAngle[size_t(y)];
+        m_rowCdf[size_t(y)] = rows;
     }
-    m_totalLuminance = total;
-    // The luminance distribution as an alias table (Vose): one draw, one or two memory reads per sample.
-    const size_t count = weight.size();
-    m_pdf.assign(count, 0.0);
-    m_aliasProbability.assign(count, 1.0);
-    m_alias.resize(count);
-    std::vector<double> scaled(count);
-    std::vector<std::int32_t> small, large;
-    for (size_t t = 0; t < count; ++t) {
-        m_alias[t] = std::int32_t(t);
-        if (!(total > 0.0)) continue;
-        m_pdf[t] = luminance(texel(int(t % size_t(w)), int(t / size_t(w)))) / total;
-        scaled[t] = weight[t] / total * double(count);
-        (scaled[t] < 1.0 ? small : large).push_back(std::int32_t(t));
-    }
-    while (!small.empty() && !large.empty()) {
-        const std::int32_t sm = small.back(), lg = large.back();
-        small.pop_back();
-        m_aliasProbability[size_t(sm)] = scaled[size_t(sm)];
-        m_alias[size_t(sm)] = lg;
-        scaled[size_t(lg)] += scaled[size_t(sm)] - 1.0;
-        if (scaled[size_t(lg)] < 1.0) {
-            large.pop_back();
-            small.push_back(lg);
-        }
-    }
+    m_totalLuminance = rows;
+    if (rows > 0.0)
+        for (double& r : m_rowCdf)
+            r /= rows;
+    m_pdf.assign(size_t(w) * size_t(h), 0.0);
+    if (rows > 0.0)
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x)
+                m_pdf[size_t(y) * size_t(w) + size_t(x)] = luminance(texel(x, y)) / rows;
 
     // The pyramid, up to about 16 × 8 cells.
     int lw = w, lh = h;
@@ -280,18 +270,21 @@ V EnvironmentField::radianceAt(const V& worldDirection) const {
     return texel(i % m_width, i / m_width);
 }
 
-void EnvironmentField::sampleImage(double u0, double u1, double u2, V* direction, int* texelIndex) const {
-    const double scaled = u0 * double(m_alias.size());
-    const size_t i = std::min(size_t(scaled), m_alias.size() - 1);
-    const int t = scaled - double(i) < m_aliasProbability[i] ? int(i) : int(m_alias[i]);
-    const Cell c = texelCell(t % m_width, t / m_width, m_width, m_height);
+void EnvironmentField::sampleImage(double u0, double u1, double u2, double u3, V* direction,
+                                   int* texelIndex) const {
+    const int y = int(
+        std::min<size_t>(size_t(std::upper_bound(m_rowCdf.begin(), m_rowCdf.end(), u0) - m_rowCdf.begin()),
+                         size_t(m_height - 1)));
+    const auto row = m_colCdf.begin() + std::ptrdiff_t(y) * m_width;
+    const int x = int(std::min<std::ptrdiff_t>(std::upper_bound(row, row + m_width, u1) - row, m_width - 1));
+    const Cell c = texelCell(x, y, m_width, m_height);
     // Uniform in solid angle within the cell: azimuth uniform, sin(latitude) uniform.
-    const double phi = c.phi0 + u1 * (c.phi1 - c.phi0);
+    const double phi = c.phi0 + u2 * (c.phi1 - c.phi0);
     const double s0 = std::sin(c.latLo), s1 = std::sin(c.latHi);
-    const double s = s0 + u2 * (s1 - s0);
+    const double s = s0 + u3 * (s1 - s0);
     const double cl = std::sqrt(std::max(0.0, 1.0 - s * s));
     *direction = V(cl * std::cos(phi), s, cl * std::sin(phi));
-    *texelIndex = t;
+    *texelIndex = y * m_width + x;
 }
 
 double EnvironmentField::imagePdf(int texelIndex) const {
@@ -564,7 +557,7 @@ Estimate EnvironmentField::integrate(const lighting::Surface<double>& s,
                     V y(0.0);
                     V w;
                     int t;
-                    sampleImage(u[0], u[1], u[2], &w, &t);
+                    sampleImage(u[0], u[1], u[2], u[3], &w, &t);
                     double denom = imagePdf(t) + lobePdf(w);
                     if (denom > 0.0) y += integrand(w, texel(t % m_width, t / m_width)) / denom;
                     const V wl = sampleLobe(u[4], u[5]);

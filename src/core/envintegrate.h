@@ -114,12 +114,14 @@ class EnvironmentField {
     // The pyramid: level k (1 ...) has cells of 2^k × 2^k texels; level 0 (texels) is not stored.
     std::vector<std::vector<Node>> m_levels;
     std::vector<int> m_levelWidth, m_levelHeight;
-    // Sampling texels by luminance × solid angle: an alias table, and the density (per steradian) of
-    // each texel's directions.
-    std::vector<double> m_aliasProbability, m_pdf;
-    std::vector<std::int32_t> m_alias;
+    // Luminance × solid angle distribution: per row the cumulative share of the row's texels, and the
+    // cumulative share of the rows (inverted row then column: a mapping from the unit square that keeps
+    // the low-discrepancy points' stratification, which an alias table would scramble); and the density
+    // (per steradian) of each texel's directions.
+    std::vector<double> m_rowCdf, m_colCdf, m_pdf;
 
-    void sampleImage(double u0, double u1, double u2, glm::dvec3* direction, int* texelIndex) const;
+    void sampleImage(double u0, double u1, double u2, double u3, glm::dvec3* direction,
+                     int* texelIndex) const;
     double imagePdf(int texelIndex) const; // per steradian
 };
 
