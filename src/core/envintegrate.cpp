@@ -497,13 +497,17 @@ Estimate EnvironmentField::integrate(const lighting::Surface<double>& s,
         return *vh > 0.0;
     };
     const auto lobePdf = [&](const V& w) {
-        if (!pbr && st.specular == SpecularModel::Phong)
-            return (shininess + 1.0) / (2.0 * kPi) *
-                   lighting::safePow(lighting::saturate(glm::dot(r, w)), shininess);
+        // Only where the sampler goes (safePow(x, 0) is 1 even for x <= 0: a density there would be a bias).
+        if (!pbr && st.specular == SpecularModel::Phong) {
+            const double c = glm::dot(r, w);
+            return c > 0.0 ? (shininess + 1.0) / (2.0 * kPi) * lighting::safePow(std::min(c, 1.0), shininess)
+                           : 0.0;
+        }
         V h;
         double vh;
         if (!halfVector(w, &h, &vh)) return 0.0;
-        const double nh = std::max(glm::dot(n, h), 0.0);
+        const double nh = std::min(glm::dot(n, h), 1.0);
+        if (!(nh > 0.0)) return 0.0;
         const double pdfH = pbr ? lighting::ggxDistribution(n, h, alpha) * nh
                                 : (shininess + 1.0) / (2.0 * kPi) * lighting::safePow(nh, shininess);
         return pdfH / (4.0 * vh);
