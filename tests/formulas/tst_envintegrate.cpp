@@ -297,6 +297,19 @@ class TestEnvIntegrate : public QObject {
         }
     }
 
+    // Shininess 0 on a surface seen obliquely: both lobes are 1 over the whole upper hemisphere, so 2·ks;
+    // the Phong sampler covers only the hemisphere about the reflection, and its density must be 0 behind
+    // it (a density counted where the sampler never goes biases the MIS weights).
+    void shininessZeroOblique() {
+        const EnvironmentField field(uniform(1.0), 0.0, 0.0);
+        const V ks(0.5);
+        const lighting::Surface<double> s = surface(V(0.0, std::sin(1.1), std::cos(1.1)), V(0.0), ks, 0.0);
+        for (SpecularModel sm : {SpecularModel::Phong, SpecularModel::BlinnPhong}) {
+            const Estimate e = field.integrate(s, classic(sm), kIdentity, 4, tight());
+            QVERIFY2(within(e.radiance, 2.0 * ks, e), qPrintable(describe(e.radiance, 2.0 * ks, e)));
+        }
+    }
+
     // (6) The integrator against the definition's limit (the sum over 16 × 16 sub-cells of every texel) on
     // a small random environment with a bright source, every model: within 4 standard errors (+ the
     // quadrature's bound) at all but 2 of 120 pixels and within 6 at every one, and the standard error
