@@ -51,6 +51,11 @@ bool benchHasShadows(const BenchReport& report) {
                        [](const BenchResult& r) { return r.hasShadowErrors; });
 }
 
+bool benchHasEnvironment(const BenchReport& report) {
+    return std::any_of(report.results.begin(), report.results.end(),
+                       [](const BenchResult& r) { return r.hasEnvironment; });
+}
+
 QStringList benchTableRow(const BenchResult& r, bool shadows) {
     const QString none = QStringLiteral("–");
     QStringList row{r.scene,
@@ -114,6 +119,24 @@ QString benchTable(const BenchReport& report) {
                          num(u.specialisedCpuMs, 1), num(u.uberCpuMs, 1), num(100.0 * u.cpuSaving(), 1),
                          num(u.specialisedFirstDrawMs, 0), num(u.uberFirstDrawMs, 0));
     }
+    if (benchHasEnvironment(report)) {
+        out += QStringLiteral(
+            "\nEnvironment integrated in the double-precision reference (the errors above include "
+            "it; its own estimated error per covered pixel, after exposure, tone map and sRGB):\n");
+        QStringList seen;
+        for (const BenchResult& r : report.results) {
+            if (!r.hasEnvironment || seen.contains(r.scene)) continue;
+            seen << r.scene;
+            const EnvironmentConvergence& e = r.environment;
+            out += QStringLiteral(
+                       "  %1: %2, reference %3 s, %4% of %5 pixels above half a level (worst %6, mean %7 "
+                       "levels), %8 sample pairs per pixel\n")
+                       .arg(r.scene, r.environmentSource, num(r.referenceMs / 1000.0, 2),
+                            num(100.0 * e.shareOver(), 2))
+                       .arg(e.pixels)
+                       .arg(num(e.maxErrorLevels, 2), num(e.meanErrorLevels, 3), num(e.meanSamples, 0));
+        }
+    }
     return out;
 }
 
@@ -176,6 +199,14 @@ QJsonObject benchJson(const BenchReport& report) {
             o.insert(QStringLiteral("shadow_compared_pixels"), double(r.shadow.compared));
             o.insert(QStringLiteral("shadow_band_pixels"), double(r.shadow.band));
         }
+        if (r.hasEnvironment) {
+            o.insert(QStringLiteral("environment_source"), r.environmentSource);
+            o.insert(QStringLiteral("environment_reference_ms"), round3(r.referenceMs));
+            o.insert(QStringLiteral("environment_over_half_level_share"), r.environment.shareOver());
+            o.insert(QStringLiteral("environment_max_error_levels"), r.environment.maxErrorLevels);
+            o.insert(QStringLiteral("environment_mean_error_levels"), r.environment.meanErrorLevels);
+            o.insert(QStringLiteral("environment_mean_samples"), r.environment.meanSamples);
+        }
         results.append(o);
     }
     QJsonArray uber;
@@ -217,6 +248,14 @@ QJsonObject benchJson(const BenchReport& report) {
                                {QStringLiteral("rays"), kShadowSamples},
                                {QStringLiteral("probe_rays"), kShadowProbeSamples},
                                {QStringLiteral("ray_epsilon_model_radii"), kShadowRayEpsilon}});
+    if (benchHasEnvironment(report)) {
+        const envintegrate::Convergence c;
+        doc.insert(QStringLiteral("environment_reference"),
+                   QJsonObject{{QStringLiteral("target_levels"), kEnvironmentTargetLevels},
+                               {QStringLiteral("replicates"), c.replicates},
+                               {QStringLiteral("min_sample_pairs"), c.replicates * c.batch * c.minBatches},
+                               {QStringLiteral("max_sample_pairs"), c.replicates * c.batch * c.maxBatches}});
+    }
     return doc;
 }
 

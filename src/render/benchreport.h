@@ -16,8 +16,11 @@ namespace lr {
 QStringList benchTableHeaders(bool shadows = false);
 QStringList benchTableRow(const BenchResult& r, bool shadows = false);
 bool benchHasShadows(const BenchReport& report);
+// Whether some scene's reference integrated an environment (BenchResult::hasEnvironment).
+bool benchHasEnvironment(const BenchReport& report);
 
-// The aligned text table, one line per result, followed by the über-shader comparison when present.
+// The aligned text table, one line per result, followed by the über-shader comparison when present and,
+// when a reference integrated an environment, one line per such scene with its convergence.
 QString benchTable(const BenchReport& report);
 
 // {"tool", "gl", "options", "results": [...], "uber_shader": [...]}. Per result the keys scene, lights,
@@ -25,7 +28,9 @@ QString benchTable(const BenchReport& report);
 // psnr_db, nonfinite_pixels and more (docs/quality.md lists them). psnr_db is null for an image identical
 // to the reference (infinite PSNR); error keys are null when errors were not measured. Results with the
 // shadow measure also carry shadow_differing_share, shadow_mean_error_levels, shadow_compared_pixels and
-// shadow_band_pixels.
+// shadow_band_pixels; results whose reference integrated an environment environment_source,
+// environment_reference_ms, environment_over_half_level_share, environment_max_error_levels,
+// environment_mean_error_levels and environment_mean_samples (and the document environment_reference).
 QJsonObject benchJson(const BenchReport& report);
 
 // The über-shader comparison per scene: specialised exact run against the über-shader run.

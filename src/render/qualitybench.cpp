@@ -53,12 +53,14 @@ bool computeSceneReference(const BenchScene& scene, const BenchOptions& o, Progr
     OffscreenRenderer gl;
     if (!gl.initialize(error) || !gl.setModel(scene.model, error)) return false;
     gl.setRig(scene.rig);
+    gl.renderer().setEnvironment(scene.environment);
     const RenderSettings settings = tierSettings(o, Quality::Exact, false);
     GBuffer g;
     if (!gl.renderGBuffer(scene.camera, o.size, settings, &g, error)) return false;
     const glm::dmat4 view = gl.renderer().effectiveCamera(scene.camera).view();
     std::optional<ReferenceScene> referenceScene =
-        makeReferenceScene(*scene.model, scene.rig, gl.renderer().sceneFrame(), view, settings, error);
+        makeReferenceScene(*scene.model, scene.rig, gl.renderer().sceneFrame(), view, settings, error,
+                           gl.renderer().environment());
     if (!referenceScene) return false;
     ReferenceJob job(std::move(g), std::move(*referenceScene));
     QFuture<void> future = job.start();
@@ -103,6 +105,7 @@ bool measure(const BenchScene& scene, const BenchOptions& o, Quality q, bool ube
     QOpenGLContext::currentContext()->functions()->glFinish();
     r->uploadMs = clock.nsecsElapsed() * 1e-6;
     gl.setRig(scene.rig);
+    gl.renderer().setEnvironment(scene.environment);
     if (!gl.renderFrame(scene.camera, o.size, settings, error)) return false;
     r->firstDrawMs = clock.nsecsElapsed() * 1e-6;
     r->firstFrameMs = r->loadMs + r->firstDrawMs;
@@ -200,12 +203,14 @@ BenchStatus runQualityBench(const std::vector<BenchScene>& scenes, const BenchOp
     };
     for (const BenchScene& scene : scenes) {
         ReferenceImage reference;
+        double referenceMs = 0.0;
         if (options.errors) {
             QElapsedTimer clock;
             clock.start();
             if (!computeSceneReference(scene, options, progress, &reference, &message))
                 return failed(scene.name);
-            report->referenceMs += clock.nsecsElapsed() * 1e-6;
+            referenceMs = clock.nsecsElapsed() * 1e-6;
+            report->referenceMs += referenceMs;
             progress.done += 1.0;
         }
         const size_t first = report->results.size();
@@ -216,6 +221,12 @@ BenchStatus runQualityBench(const std::vector<BenchScene>& scenes, const BenchOp
             if (!measure(scene, options, q, uber, options.errors ? &reference : nullptr, progress, &r,
                          &message, &report->glDescription))
                 return failed(QStringLiteral("%1 (%2)").arg(scene.name, toString(q)));
+            r.referenceMs = referenceMs;
+            if (r.hasErrors && reference.environment) {
+                r.hasEnvironment = true;
+                r.environment = environmentConvergence(reference);
+                r.environmentSource = scene.environment ? scene.environment->source : QString();
+            }
             report->results.push_back(r);
             progress.done += 1.0;
         }

@@ -12,7 +12,10 @@
 //   the single-sample G-buffer reference cannot represent), over the pixels the model covers;
 // - NaN/Inf pixels are counted in the tier's float radiance (RGBA32F) read back from the same view;
 // - with shadow casters in the rig, the same single-sample image also gets the shadow measure
-//   (compareShadows: share of pixels off the traced visibility outside the penumbra band, mean error).
+//   (compareShadows: share of pixels off the traced visibility outside the penumbra band, mean error);
+// - with an environment (BenchScene::environment and the rig's environment block), every renderer shades
+//   with it and the reference integrates it, so each tier's error includes the environment's; the
+//   reference's own convergence (share of pixels whose estimated error exceeds half a level) is reported.
 //
 // Runs on the calling (GUI) thread; the reference evaluation uses the global thread pool meanwhile.
 #pragma once
@@ -40,6 +43,9 @@ struct BenchScene {
     double loadMs = 0.0; // importing the model file (counted in each first frame)
     Rig rig;
     ViewCamera camera;
+    // The rig's environment loaded (environmentloader.h), or null: every renderer of the run shades with
+    // it and the reference integrates it (when rig.environment is not None).
+    std::shared_ptr<const LoadedEnvironment> environment;
 };
 
 struct BenchOptions {
@@ -84,6 +90,12 @@ struct BenchResult {
     // With errors, when the rig has shadow casters: the shadow measure (reference.h, compareShadows).
     bool hasShadowErrors = false;
     ShadowFigures shadow;
+    // With errors, when the reference integrated an environment: its convergence (reference.h), the
+    // environment's source and the scene's reference wall time (the same for every tier of the scene).
+    bool hasEnvironment = false;
+    EnvironmentConvergence environment;
+    QString environmentSource;
+    double referenceMs = 0.0;
     double speedUp = 0.0;    // exact's ms_median / this ms_median for the same scene (0: no exact run)
     double cpuSpeedUp = 0.0; // the same ratio of cpu_ms_median (steadier on a shared machine)
     // BenchOptions::keepImages: the single-sample 8-bit image the errors were measured on, and the

@@ -36,9 +36,10 @@ int ReferenceScene::casters() const {
         std::count_if(emitters.begin(), emitters.end(), [](const ShadowEmitter& e) { return e.casts; }));
 }
 
-std::optional<ReferenceScene> makeReferenceScene(const Model& model, const Rig& rig, const SceneFrame& frame,
-                                                 const glm::dmat4& view, const RenderSettings& settings,
-                                                 QString* error) {
+std::optional<ReferenceScene>
+makeReferenceScene(const Model& model, const Rig& rig, const SceneFrame& frame, const glm::dmat4& view,
+                   const RenderSettings& settings, QString* error,
+                   const std::shared_ptr<const LoadedEnvironment>& environment) {
     ReferenceScene s;
     s.lights = prepareLights(rig, frame, view);
     s.settings = prepareSettings(rig, frame);
@@ -57,7 +58,35 @@ std::optional<ReferenceScene> makeReferenceScene(const Model& model, const Rig& 
         }
         s.tracer = std::move(tracer);
     }
+    if (!rig.environment.isNone() && environment && !environment->image.isNull()) {
+        // The image shared, not copied: the aliasing pointer keeps the loaded environment alive.
+        std::shared_ptr<const EnvironmentImage> image(environment, &environment->image);
+        // The classic diffuse model: Lambert until the rig's environment stores one (environment.h).
+        s.environment = std::make_shared<const envintegrate::EnvironmentField>(
+            std::move(image), rig.environment.intensity, rig.environment.rotation, DiffuseModel::Lambert);
+        s.environmentConvergence.exposureEV = settings.exposureEV;
+        s.environmentConvergence.toneMap = settings.toneMap;
+        s.environmentConvergence.targetLevels = kEnvironmentTargetLevels;
+        s.environmentSource = environment->source;
+    }
     return s;
+}
+
+EnvironmentConvergence environmentConvergence(const ReferenceImage& r) {
+    EnvironmentConvergence c;
+    if (!r.environment) return c;
+    double errors = 0.0, samples = 0.0;
+    for (size_t i = 0; i < r.covered.size(); ++i) {
+        if (!r.covered[i]) continue;
+        ++c.pixels;
+        const double e = r.environmentError[i];
+        errors += e, samples += r.environmentSamples[i];
+        c.maxErrorLevels = std::max(c.maxErrorLevels, e);
+        if (e > kEnvironmentTargetLevels) ++c.over;
+    }
+    if (c.pixels > 0)
+        c.meanErrorLevels = errors / double(c.pixels), c.meanSamples = samples / double(c.pixels);
+    return c;
 }
 
 glm::dvec3 encodeSrgb(const glm::dvec3& radiance, double exposureEV, ToneMap op) {
@@ -82,6 +111,11 @@ ReferenceJob::ReferenceJob(GBuffer gbuffer, ReferenceScene scene)
     if (m_out.casters > 0) {
         m_out.visibility.assign(size_t(w) * size_t(h) * size_t(m_out.casters), 255);
         m_out.shadowClass.assign(size_t(w) * size_t(h), 0);
+    }
+    m_out.environment = m_scene.environment != nullptr;
+    if (m_out.environment) {
+        m_out.environmentError.assign(size_t(w) * size_t(h), 0.0f);
+        m_out.environmentSamples.assign(size_t(w) * size_t(h), 0);
     }
     m_rowIndices.resize(size_t(h));
     std::iota(m_rowIndices.begin(), m_rowIndices.end(), 0);
@@ -108,6 +142,7 @@ void ReferenceJob::evaluateRow(int y) {
     for (size_t k = 0; k < sc.lights.size(); ++k)
         if (casters > 0 && sc.emitters[k].casts) dark[k] = 0.0;
     const glm::dvec3 eye(sc.viewToWorld[3]);
+    const glm::dmat3 toWorld(sc.viewToWorld);
     std::uint8_t* row = m_out.srgb.scanLine(y);
     for (int x = 0; x < m_out.width; ++x) {
         const size_t i = size_t(y) * size_t(m_out.width) + size_t(x);
@@ -120,11 +155,21 @@ void ReferenceJob::evaluateRow(int y) {
         }
         const lighting::Surface<double> s = render::surfaceAt(g, x, y);
         if (casters > 0) tracePixel(s, i, eye, visibility);
-        const V radiance = lighting::shadeSurface<double>(s, sc.lights, sc.settings, visibility);
+        V radiance = lighting::shadeSurface<double>(s, sc.lights, sc.settings, visibility);
+        V environment(0.0);
+        if (sc.environment) {
+            const envintegrate::Estimate e = sc.environment->integrate(
+                s, sc.settings, toWorld, std::uint64_t(i), sc.environmentConvergence, radiance);
+            environment = e.radiance;
+            radiance += environment;
+            m_out.environmentError[i] = float(e.errorLevels);
+            m_out.environmentSamples[i] = e.samples;
+        }
         if (casters > 0) {
-            // Whether the casters' direct light shows here at all: the image with all of it and with none.
-            const V lit = lighting::shadeSurface<double>(s, sc.lights, sc.settings);
-            const V unlit = lighting::shadeSurface<double>(s, sc.lights, sc.settings, dark);
+            // Whether the casters' direct light shows here at all: the image with all of it and with none
+            // (the environment, never shadowed, in both).
+            const V lit = lighting::shadeSurface<double>(s, sc.lights, sc.settings) + environment;
+            const V unlit = lighting::shadeSurface<double>(s, sc.lights, sc.settings, dark) + environment;
             m_out.shadowClass[i] =
                 largestChannelDifference(lit, unlit, sc.exposureEV, sc.toneMap) > kShadowThresholdLevels ? 1
                                                                                                          : 0;

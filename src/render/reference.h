@@ -10,10 +10,17 @@
 // (not its ambient) is multiplied by its traced visibility (referencetrace.h): shadow rays against the
 // model's triangles and the ground's. The reference keeps each caster's visibility per pixel, and the
 // shadow error measure (compareShadows) compares a tier's image with it outside the penumbra band.
+//
+// Environment (issue 15): when the rig has an environment and the renderer a loaded one, each covered
+// pixel also gets what the environment adds, integrated as core/envintegrate.h defines it (no shadowing
+// by the model, × occlusion), with its estimated error per pixel; uncovered pixels keep the background
+// colour (a visible environment background is the GPU's alone and is not compared: covered pixels only).
 #pragma once
 
+#include "core/envintegrate.h"
 #include "core/imagecompare.h"
 #include "core/prepare.h"
+#include "environmentloader.h"
 #include "floatimage.h"
 #include "referencetrace.h"
 #include "renderer.h"
@@ -41,14 +48,22 @@ struct ReferenceScene {
     std::shared_ptr<const ShadowTracer> tracer;
     glm::dmat4 viewToWorld{1.0};
     int casters() const;
+    // Environment: the field integrated at every covered pixel (null: none) and when its integration
+    // stops (exposure and tone map are the frame's: the error is counted in displayed 8-bit levels).
+    std::shared_ptr<const envintegrate::EnvironmentField> environment;
+    envintegrate::Convergence environmentConvergence;
+    QString environmentSource; // LoadedEnvironment::source ("studio", "/abs/sky.exr")
 };
 
 // The reference scene of `rig` on `model` seen through `view` (the renderer's effective camera view
 // matrix). With shadow casters in the rig it builds the tracer's scene (the model's triangles, and the
 // ground's when rig.ground.mode != Off); null, with *error set, when Embree fails.
-std::optional<ReferenceScene> makeReferenceScene(const Model& model, const Rig& rig, const SceneFrame& frame,
-                                                 const glm::dmat4& view, const RenderSettings& settings,
-                                                 QString* error = nullptr);
+// `environment`: what the renderer shades with (Renderer::environment()); integrated when the rig's
+// environment is not None, at the rig's intensity and rotation.
+std::optional<ReferenceScene>
+makeReferenceScene(const Model& model, const Rig& rig, const SceneFrame& frame, const glm::dmat4& view,
+                   const RenderSettings& settings, QString* error = nullptr,
+                   const std::shared_ptr<const LoadedEnvironment>& environment = {});
 
 struct ReferenceImage {
     int width = 0, height = 0;
@@ -64,6 +79,11 @@ struct ReferenceImage {
     int casters = 0;
     std::vector<std::uint8_t> visibility;
     std::vector<std::uint8_t> shadowClass;
+    // Environment, when the scene had one: per pixel the integrator's estimated error (8-bit levels of
+    // the displayed value, Estimate::errorLevels) and the sample pairs it took; 0 where uncovered.
+    bool environment = false;
+    std::vector<float> environmentError;
+    std::vector<std::int32_t> environmentSamples;
     bool isNull() const { return width <= 0 || height <= 0; }
 };
 
@@ -85,6 +105,16 @@ struct ShadowFigures {
     double shareDiffering() const { return compared > 0 ? double(differing) / double(compared) : 0.0; }
 };
 ShadowFigures compareShadows(const QImage& frame, const ReferenceImage& reference);
+
+// How well the reference's environment converged: covered pixels whose estimated error exceeds
+// kEnvironmentTargetLevels (half an 8-bit level), the largest estimate and the mean sample pairs.
+inline constexpr double kEnvironmentTargetLevels = 0.5;
+struct EnvironmentConvergence {
+    std::int64_t pixels = 0, over = 0;
+    double maxErrorLevels = 0.0, meanErrorLevels = 0.0, meanSamples = 0.0;
+    double shareOver() const { return pixels > 0 ? double(over) / double(pixels) : 0.0; }
+};
+EnvironmentConvergence environmentConvergence(const ReferenceImage& reference);
 
 // The tone-map pass on one radiance, in double: ×2^EV (EV clamped to ±60), tone map, sRGB, 0..255.
 glm::dvec3 encodeSrgb(const glm::dvec3& radiance, double exposureEV, ToneMap op); // in [0, 1]
