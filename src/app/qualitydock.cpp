@@ -419,6 +419,7 @@ QualityDock* addQualityDock(MainWindow* window) {
         r.scene.model = scene->model();
         r.scene.loadMs = scene->model()->loadMs;
         r.scene.rig = window->document()->renderRig();
+        r.scene.environment = scene->environment(); // what the viewport shades with (issue 15)
         r.scene.camera = window->viewport()->camera();
         const ViewOptions& view = window->viewSettings()->options();
         r.exposureEV = view.exposure;

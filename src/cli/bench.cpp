@@ -240,6 +240,7 @@ int runBench(const QStringList& args) {
                             environmentTimes(*loaded.environment));
         if (!procedural) {
             scenes.push_back({base, loaded.model, loadMs, loaded.rig, loaded.camera});
+            scenes.back().environment = loaded.environment;
             continue;
         }
         for (LightType type : types) {
@@ -259,6 +260,7 @@ int runBench(const QStringList& args) {
                     return failed(message);
                 scenes.push_back({QStringLiteral("%1 · %2").arg(base, proceduralRigName(p)), loaded.model,
                                   loadMs, std::move(rig), loaded.camera});
+                scenes.back().environment = loaded.environment;
             }
         }
     }

@@ -61,9 +61,8 @@ makeReferenceScene(const Model& model, const Rig& rig, const SceneFrame& frame, 
     if (!rig.environment.isNone() && environment && !environment->image.isNull()) {
         // The image shared, not copied: the aliasing pointer keeps the loaded environment alive.
         std::shared_ptr<const EnvironmentImage> image(environment, &environment->image);
-        // The classic diffuse model: Lambert until the rig's environment stores one (environment.h).
         s.environment = std::make_shared<const envintegrate::EnvironmentField>(
-            std::move(image), rig.environment.intensity, rig.environment.rotation, DiffuseModel::Lambert);
+            std::move(image), rig.environment.intensity, rig.environment.rotation, rig.environment.diffuse);
         s.environmentConvergence.exposureEV = settings.exposureEV;
         s.environmentConvergence.toneMap = settings.toneMap;
         s.environmentConvergence.targetLevels = kEnvironmentTargetLevels;

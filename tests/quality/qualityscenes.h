@@ -82,7 +82,8 @@ inline TierFrame renderTier(OffscreenRenderer& gl, std::shared_ptr<Model> model,
     const glm::dmat4 view = gl.renderer().effectiveCamera(camera).view();
     const SceneFrame frame = gl.renderer().sceneFrame();
     f.linear = compareWithReference(radiance, g, rig, frame, view, tolerance);
-    const auto scene = makeReferenceScene(*model, rig, frame, view, settings, &f.error);
+    const auto scene =
+        makeReferenceScene(*model, rig, frame, view, settings, &f.error, gl.renderer().environment());
     if (!scene) return f;
     const ReferenceImage reference = computeReference(g, *scene);
     f.levels = lr::compareWithReference(image, reference);
