@@ -76,7 +76,17 @@ vec3 shadeEnvironment(Surface s, vec3 V) {
     float nv = nDotV > 1e-4 ? (nDotV < 1.0 ? nDotV : 1.0) : 1e-4;
     vec3 dfg = textureLod(uEnvDfg, vec2(nv, roughness), 0.0).rgb;
     vec3 diffuse = p.cDiff * (vec3(1.0) - p.f0) * (dfg.b * kEnvInvPi) * envIrradiance(N, vec3(1.0), 1.0);
-    vec3 specular = envRadiance(R, roughness * kEnvRoughnessLods) * (p.f0 * dfg.r + dfg.g);
+    // The split sum prefiltered its levels with N = V = R; a rough lobe's energy leans from R towards N.
+    // Its dominant direction (Lagarde & de Rousiers 2014, "Moving Frostbite to PBR", listing 22, α = p.alpha).
+    float smoothness = 1.0 - p.alpha;
+    vec3 Rd = safeNormalize(mix(N, R, smoothness * (sqrt(smoothness) + p.alpha)), R);
+    // Between two levels the lobe's width follows α = roughness², not roughness: blend linearly in α
+    // (level k holds roughness k / kEnvRoughnessLods), so a nearly smooth surface takes little of the next,
+    // far blurrier level.
+    float rl = roughness * kEnvRoughnessLods;
+    float k = floor(rl);
+    float lod = k + (rl * rl - k * k) / (2.0 * k + 1.0);
+    vec3 specular = envRadiance(Rd, lod) * (p.f0 * dfg.r + dfg.g);
     return saturate(s.occlusion) * (diffuse + specular);
 #else
     vec3 diffuse = s.albedo * kEnvInvPi * envIrradiance(N, uEnvBands, uEnvMapWeight);
