@@ -1,5 +1,8 @@
 #include "envbrdf.h"
 
+#include "lighting.h"
+#include "lowdiscrepancy.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -8,27 +11,7 @@ namespace lr::envbrdf {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kMinRoughness = 0.0525; // lighting.h / lighting.glsl
-
-// The Hammersley point i of n: (i/n, radical inverse of i in base 2).
-double radicalInverse(std::uint32_t bits) {
-    bits = (bits << 16u) | (bits >> 16u);
-    bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);
-    bits = ((bits & 0x33333333u) << 2u) | ((bits & 0xCCCCCCCCu) >> 2u);
-    bits = ((bits & 0x0F0F0F0Fu) << 4u) | ((bits & 0xF0F0F0F0u) >> 4u);
-    bits = ((bits & 0x00FF00FFu) << 8u) | ((bits & 0xFF00FF00u) >> 8u);
-    return double(bits) * 2.3283064365386963e-10;
-}
-
-// Height-correlated Smith visibility V = 0.5 / (n·l √(n·v²(1 − α²) + α²) + n·v √(n·l²(1 − α²) + α²)).
-double visibility(double nl, double nv, double a) {
-    const double a2 = a * a;
-    const double gv = nl * std::sqrt(nv * nv * (1.0 - a2) + a2);
-    const double gl = nv * std::sqrt(nl * nl * (1.0 - a2) + a2);
-    const double d = gv + gl;
-    return d > 0.0 ? 0.5 / d : 0.0;
-}
+using lighting::kPi;
 
 double ggx(double nh, double a) {
     if (!(nh > 0.0)) return 0.0;
@@ -44,8 +27,7 @@ double schlickWeight(double vh) {
 } // namespace
 
 double alphaOf(double roughness) {
-    const double r = std::clamp(roughness, kMinRoughness, 1.0);
-    return r * r;
+    return lighting::pbrAlpha(roughness);
 }
 
 Dfg integrate(double nDotV, double roughness, int samples) {
@@ -64,7 +46,7 @@ Dfg integrate(double nDotV, double roughness, int samples) {
     const double t2x = tilted ? -wz : 0.0, t2y = tilted ? 0.0 : wz, t2z = tilted ? wx : 0.0;
     Dfg out;
     for (int i = 0; i < samples; ++i) {
-        const double u1 = (i + 0.5) / samples, u2 = radicalInverse(std::uint32_t(i));
+        const double u1 = (i + 0.5) / samples, u2 = radicalInverse2(std::uint32_t(i));
         const double phi = 2.0 * kPi * u2, r = std::sqrt(u1);
         // GGX visible normals: pdf(l) = G1(v) D(h) / (4 n·v), so f·cos/pdf = 4 V (n·l)(n·v) / G1(v) (the
         // distribution's own variance is gone: converges at grazing angles too, unlike sampling D).
@@ -79,7 +61,7 @@ Dfg integrate(double nDotV, double roughness, int samples) {
             const double vh = vx * hx + vz * hz;
             const double lz = 2.0 * vh * hz - vz; // l = 2(v·h)h − v
             if (lz > 0.0 && vh > 0.0) {
-                const double g = 4.0 * visibility(std::min(lz, 1.0), nv, a) * lz * nv / g1v;
+                const double g = 4.0 * lighting::smithVisibility(std::min(lz, 1.0), nv, a) * lz * nv / g1v;
                 const double w = schlickWeight(vh);
                 out.scale += (1.0 - w) * g;
                 out.bias += w * g;
@@ -117,7 +99,7 @@ Dfg quadrature(double nDotV, double roughness, int steps) {
             const double vh = vx * hx + vz * hz;
             const double w = schlickWeight(vh);
             const double dw = st * dt * dp;
-            const double spec = ggx(hz, a) * visibility(lz, nv, a) * lz * dw;
+            const double spec = ggx(hz, a) * lighting::smithVisibility(lz, nv, a) * lz * dw;
             out.scale += (1.0 - w) * spec;
             out.bias += w * spec;
             out.diffuse += (1.0 - w) * lz * dw / kPi;

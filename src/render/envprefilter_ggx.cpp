@@ -7,6 +7,8 @@
 // a turn about +Y: the work that depends on latitude is done once a row.
 #include "envprefilter_detail.h"
 
+#include "core/lowdiscrepancy.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -23,21 +25,12 @@ struct LobeSample {
     float lod;     // the pyramid level at the equator (+ the latitude term at lookup)
 };
 
-float radicalInverse(std::uint32_t bits) {
-    bits = (bits << 16u) | (bits >> 16u);
-    bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);
-    bits = ((bits & 0x33333333u) << 2u) | ((bits & 0xCCCCCCCCu) >> 2u);
-    bits = ((bits & 0x0F0F0F0Fu) << 4u) | ((bits & 0xF0F0F0F0u) >> 4u);
-    bits = ((bits & 0x00FF00FFu) << 8u) | ((bits & 0xFF00FF00u) >> 8u);
-    return float(bits) * 2.3283064365386963e-10f;
-}
-
 std::vector<LobeSample> lobeSamples(double roughness, int count, int baseWidth, int baseHeight) {
     const double a2 = std::pow(roughness, 4.0);                               // α = r²
     const double omegaP = 2.0 * kPi * kPi / (double(baseWidth) * baseHeight); // a base texel at the equator
     std::vector<LobeSample> out;
     for (int i = 0; i < count; ++i) {
-        const double xi1 = (i + 0.5) / count, xi2 = radicalInverse(std::uint32_t(i));
+        const double xi1 = (i + 0.5) / count, xi2 = radicalInverse2(std::uint32_t(i));
         const double cos2h = (1.0 - xi1) / (1.0 + (a2 - 1.0) * xi1);
         const double cosh = std::sqrt(cos2h), sinh = std::sqrt(std::max(0.0, 1.0 - cos2h));
         const double nl = 2.0 * cos2h - 1.0;
