@@ -29,6 +29,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <glm/mat3x3.hpp>
 #include <memory>
 #include <vector>
@@ -41,17 +42,20 @@ struct Convergence {
     ToneMap toneMap = ToneMap::Clamp;
     double targetLevels = 0.5; // estimated error, 8-bit levels of the largest channel
     // Sample pairs (one from the lobe, one from the image) come from `replicates` independently shifted
-    // low-discrepancy sequences, `batch` points each per batch: 64 pairs a batch, 64 to 4096 in all.
+    // low-discrepancy sequences, `batch` points each per batch: 64 pairs a batch, 64 to 16,384 in all (and
+    // where a narrow lobe takes the window after the first quarter, the rest of the sphere again).
     int replicates = 16;
     int batch = 4;
-    int minBatches = 1, maxBatches = 64;
+    int minBatches = 1, maxBatches = 256;
     double quadratureLevels = 0.1; // share of the target the diffuse quadrature's hard bound may use
 };
 
 struct Estimate {
     glm::dvec3 radiance{0.0};      // what the environment adds (linear, before exposure)
     glm::dvec3 standardError{0.0}; // of the Monte Carlo part (0 when it has none)
-    glm::dvec3 bound{0.0};         // hard bound on the diffuse quadrature's error
+    glm::dvec3 bound{0.0};         // hard bound on the diffuse quadrature's error, plus the lobe window's
+                                   // midpoint-rule error estimate where it was used
+    bool windowed = false;         // the lobe's core was summed texel by texel (EnvironmentField::Window)
     int samples = 0;               // MIS sample pairs taken
     // max over channels of |display(rest + radiance ± (standardError + bound)) − display(rest + radiance)|
     // in 8-bit levels (not rounded): the pixel's estimated error.
@@ -119,6 +123,20 @@ class EnvironmentField {
     // the low-discrepancy points' stratification, which an alias table would scramble); and the density
     // (per steradian) of each texel's directions.
     std::vector<double> m_rowCdf, m_colCdf, m_pdf;
+
+    // The core of a narrow specular lobe, summed texel by texel (envintegrate_window.cpp): where Monte Carlo
+    // alone does not converge — a near-mirror lobe over a softbox's edge, where only the lobe's samples
+    // see the edge and they converge slowly — integrate() sums the texels whose centres lie within the
+    // window's cone (each split into subdivide² cells of equal solid angle, at their centres) and leaves
+    // Monte Carlo only the rest of the sphere.
+    struct Window {
+        glm::dvec3 axis{0.0, 1.0, 0.0};
+        double halfAngle = 0.0;
+        double cosHalfAngle = 1.0;
+    };
+    using Integrand = std::function<glm::dvec3(const glm::dvec3& direction, const glm::dvec3& radiance)>;
+    bool inWindow(const Window& w, int texelIndex) const;
+    glm::dvec3 windowSum(const Window& w, const Integrand& f, int subdivide) const;
 
     void sampleImage(double u0, double u1, double u2, double u3, glm::dvec3* direction,
                      int* texelIndex) const;

@@ -126,7 +126,11 @@ class TestEnvReference : public QObject {
             pbr ? "pbr" : "classic", plainMs, litMs, static_cast<long long>(c.pixels), 100.0 * c.shareOver(),
             c.maxErrorLevels, c.meanErrorLevels, c.meanSamples);
         QVERIFY(c.pixels > kSize.width() * kSize.height() / 8);
-        QVERIFY2(c.shareOver() <= 0.05, qPrintable(QString::number(c.shareOver())));
+        // Converged: at most 0.5 % of pixels above half a level (0 % of either scene on 2026-11-26, the
+        // mirror-like metal 2 % before the lobe window; the rest only where the stopping rule's last step
+        // lands a hair above the target).
+        QVERIFY2(c.shareOver() <= 0.005, qPrintable(QString::number(c.shareOver())));
+        QVERIFY2(c.maxErrorLevels <= 1.0, qPrintable(QString::number(c.maxErrorLevels)));
         int brighter = 0;
         for (size_t i = 0; i < b.radiance.size(); ++i) {
             QCOMPARE(a.covered[i], b.covered[i]);
