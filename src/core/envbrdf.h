@@ -38,4 +38,9 @@ Dfg quadrature(double nDotV, double roughness, int steps = 400);
 // roughness = (j + 1/2)/size (y); each (A, B, W). Sampled with linear filtering at (n·v, roughness).
 std::vector<glm::vec3> dfgLut(int size = 32, int samples = 1024);
 
+// The table the renderer uploads: dfgLut(kDfgTableSize) with its default samples, precomputed in
+// envbrdf_table.cpp (kDfgTableSize² × (A, B, W) floats, row-major); formulas_envbrdf checks it still is.
+constexpr int kDfgTableSize = 32;
+const float* dfgTable();
+
 } // namespace lr::envbrdf

@@ -7,13 +7,15 @@
 
 #include <QOpenGLShaderProgram>
 #include <algorithm>
+#include <glm/gtc/packing.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <vector>
 
 namespace lr::render {
 
 namespace {
 
-// Largest value RGB16F holds (65504) with a margin: above it the texture is RGB32F.
+// Largest value a half float holds (65504) with a margin: above it the texture is RGBA32F.
 constexpr float kHalfMax = 60000.0f;
 
 float maxValue(const EnvironmentImage& image) {
@@ -33,10 +35,25 @@ void setEquirectParameters(QOpenGLFunctions_3_3_Core* gl, int maxLevel) {
     gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE); // the poles do not
 }
 
-void upload(QOpenGLFunctions_3_3_Core* gl, int level, const EnvironmentImage& image, GLenum format) {
+// RGBA half floats packed here (or RGBA floats above half's range), in the layout the driver keeps: Mesa
+// stored GL_RGB16F from GL_FLOAT by converting texel by texel through its generic path, 0.25-0.65 s of the
+// first frame for the chain alone on llvmpipe; a matching format is a copy.
+void upload(QOpenGLFunctions_3_3_Core* gl, int level, const EnvironmentImage& image, bool half) {
     // Row 0 of the image is the top (+Y): uploaded first, it is t = 0, so t = v of core's mapping.
-    gl->glTexImage2D(GL_TEXTURE_2D, level, GLint(format), image.width, image.height, 0, GL_RGB, GL_FLOAT,
-                     image.texels.data());
+    const size_t n = image.texels.size();
+    if (half) {
+        std::vector<glm::uint64> texels(n);
+        for (size_t i = 0; i < n; ++i)
+            texels[i] = glm::packHalf4x16(glm::vec4(image.texels[i], 1.0f));
+        gl->glTexImage2D(GL_TEXTURE_2D, level, GL_RGBA16F, image.width, image.height, 0, GL_RGBA,
+                         GL_HALF_FLOAT, texels.data());
+    } else {
+        std::vector<glm::vec4> texels(n);
+        for (size_t i = 0; i < n; ++i)
+            texels[i] = glm::vec4(image.texels[i], 1.0f);
+        gl->glTexImage2D(GL_TEXTURE_2D, level, GL_RGBA32F, image.width, image.height, 0, GL_RGBA, GL_FLOAT,
+                         texels.data());
+    }
 }
 
 } // namespace
@@ -105,23 +122,23 @@ bool EnvironmentGl::update(QOpenGLFunctions_3_3_Core* gl, const std::shared_ptr<
                 QStringLiteral("the environment %1 has no prefiltered form to shade with").arg(env->source);
         return false;
     }
-    const GLenum format = peak > kHalfMax ? GL_RGB32F : GL_RGB16F;
+    const bool half = !(peak > kHalfMax);
     if (!m_specular) gl->glGenTextures(1, &m_specular);
     if (!m_irradiance) gl->glGenTextures(1, &m_irradiance);
     gl->glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     gl->glBindTexture(GL_TEXTURE_2D, m_specular);
     for (int k = 0; k < levels; ++k)
-        upload(gl, k, p.specular[size_t(k)], format);
+        upload(gl, k, p.specular[size_t(k)], half);
     setEquirectParameters(gl, levels - 1);
     gl->glBindTexture(GL_TEXTURE_2D, m_irradiance);
-    upload(gl, 0, p.irradiance, maxValue(p.irradiance) > kHalfMax ? GL_RGB32F : GL_RGB16F);
+    upload(gl, 0, p.irradiance, !(maxValue(p.irradiance) > kHalfMax));
     setEquirectParameters(gl, 0);
     if (!m_dfg) {
-        const auto lut = envbrdf::dfgLut(kDfgLutSize);
+
         gl->glGenTextures(1, &m_dfg);
         gl->glBindTexture(GL_TEXTURE_2D, m_dfg);
-        gl->glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB16F, kDfgLutSize, kDfgLutSize, 0, GL_RGB, GL_FLOAT,
-                         lut.data());
+        gl->glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB16F, envbrdf::kDfgTableSize, envbrdf::kDfgTableSize, 0,
+                         GL_RGB, GL_FLOAT, envbrdf::dfgTable());
         gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
         gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
         gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);

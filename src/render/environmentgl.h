@@ -6,9 +6,9 @@
 //     roughness k/5), GL_TEXTURE_MAX_LEVEL 5, trilinear, S repeat (azimuth), T clamp (poles); sampled with
 //     textureLod(lod = 5·roughness);
 //   - the irradiance map (64×32, bilinear, S repeat, T clamp);
-//   - the split-sum table (core/envbrdf.h), computed in double and uploaded once (the first environment).
-// RGB16F, or RGB32F for an image with radiance above half float's range (a bright sun). The SH9
-// irradiance, the rotation and the intensity are uniforms: rotating or brightening never re-uploads.
+//   - the split-sum table (core/envbrdf.h dfgTable, precomputed), uploaded once (the first environment).
+// RGBA16F packed on the CPU, or RGBA32F for an image with radiance above half float's range (a bright sun).
+// The SH9 irradiance, the rotation and the intensity are uniforms: rotating or brightening never re-uploads.
 #pragma once
 
 #include "core/environment.h"
@@ -28,8 +28,6 @@ struct Rig;
 } // namespace lr
 
 namespace lr::render {
-
-constexpr int kDfgLutSize = 32;
 
 // The rotation taking a view-space direction to the environment image's own frame: world from view (the
 // inverse of the view's rotation), then R_y(−rotation) (Environment::rotation; the image is looked up at

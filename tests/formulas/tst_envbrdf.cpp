@@ -4,10 +4,38 @@
 // and against an independent brute-force quadrature of the same integrals at a few points.
 #include "core/envbrdf.h"
 
+#include <QFile>
 #include <QTest>
 #include <cmath>
+#include <cstdio>
 
 using namespace lr;
+
+namespace {
+
+// The generated source of src/core/envbrdf_table.cpp: hex floats, so the file holds the floats exactly.
+bool writeTable(const QString& path, const std::vector<glm::vec3>& lut) {
+    QFile f(path);
+    if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate)) return false;
+    QByteArray text =
+        "// The split-sum table the renderer uploads (envbrdf.h dfgTable): dfgLut(kDfgTableSize) with its "
+        "default\n// 1024 samples, precomputed so that no frame waits for it (computing it took 0.2-0.6 s of "
+        "the first frame\n// with an environment). Generated; formulas_envbrdf checks it is still exactly "
+        "what "
+        "dfgLut computes and,\n// with LIGHTRIG_WRITE_DFG_TABLE=PATH, writes this file anew. (A, B, W) per "
+        "texel, row-major.\n#include \"envbrdf.h\"\n\nnamespace lr::envbrdf {\n\nnamespace {\n// "
+        "clang-format off\nconst float kTable[kDfgTableSize * kDfgTableSize * 3] = {\n";
+    char line[160];
+    for (const glm::vec3& t : lut) {
+        std::snprintf(line, sizeof line, "    %af, %af, %af,\n", double(t.x), double(t.y), double(t.z));
+        text += line;
+    }
+    text += "};\n// clang-format on\n} // namespace\n\nconst float* dfgTable() {\n    return kTable;\n}\n\n} "
+            "// namespace lr::envbrdf\n";
+    return f.write(text) == text.size();
+}
+
+} // namespace
 
 class TestEnvBrdf : public QObject {
     Q_OBJECT
@@ -45,6 +73,25 @@ class TestEnvBrdf : public QObject {
         // Fresnel grows towards grazing: B rises and W falls as n·v -> 0 (roughness 0.5).
         QVERIFY(lut[size_t(16 * size)].y > lut[size_t(16 * size + size - 1)].y + 0.05f);
         QVERIFY(lut[size_t(16 * size)].z < lut[size_t(16 * size + size - 1)].z - 0.01f);
+    }
+
+    // The table the renderer uploads is the one dfgLut computes (within float rounding of the same
+    // arithmetic). LIGHTRIG_WRITE_DFG_TABLE=PATH writes src/core/envbrdf_table.cpp anew from dfgLut.
+    void precomputedTableIsCurrent() {
+        const auto lut = envbrdf::dfgLut(envbrdf::kDfgTableSize);
+        const QString path = qEnvironmentVariable("LIGHTRIG_WRITE_DFG_TABLE");
+        if (!path.isEmpty()) QVERIFY2(writeTable(path, lut), qPrintable(path));
+        const float* table = envbrdf::dfgTable();
+        for (size_t i = 0; i < lut.size(); ++i)
+            for (int c = 0; c < 3; ++c)
+                QVERIFY2(
+                    std::abs(table[3 * i + size_t(c)] - lut[i][c]) <= 2e-6f,
+                    qPrintable(QStringLiteral("texel %1 channel %2: table %3, dfgLut %4 (regenerate with "
+                                              "LIGHTRIG_WRITE_DFG_TABLE=src/core/envbrdf_table.cpp)")
+                                   .arg(i)
+                                   .arg(c)
+                                   .arg(double(table[3 * i + size_t(c)]))
+                                   .arg(double(lut[i][c]))));
     }
 
     void matchesQuadrature_data() {
