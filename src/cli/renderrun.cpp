@@ -40,10 +40,11 @@ double median(std::vector<double> v) {
     return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
 }
 
-// The items [begin, end) that share the value of `key` with items[begin].
-template <typename Key> size_t runEnd(const std::vector<RenderItem>& items, size_t begin, Key key) {
+// The end of the items [begin, end) before `limit` that share the value of `key` with items[begin].
+template <typename Key>
+size_t runEnd(const std::vector<RenderItem>& items, size_t begin, size_t limit, Key key) {
     size_t end = begin + 1;
-    while (end < items.size() && key(items[end]) == key(items[begin]))
+    while (end < limit && key(items[end]) == key(items[begin]))
         ++end;
     return end;
 }
@@ -117,7 +118,7 @@ int Runner::run() {
     for (size_t i = 0; i < items.size(); ++i)
         if (!checkOutputPath(items[i].file, &message)) fail(i, i + 1, message);
     for (size_t begin = 0; begin < items.size();) {
-        const size_t end = runEnd(items, begin, [](const RenderItem& item) { return item.model; });
+        const size_t end = runEnd(items, begin, items.size(), [](const RenderItem& item) { return item.model; });
         if (std::any_of(finished.begin() + long(begin), finished.begin() + long(end), [](bool f) { return !f; }))
             renderModel(begin, end);
         begin = end;
@@ -144,7 +145,7 @@ void Runner::renderModel(size_t begin, size_t end) {
     if (!loadSceneModel(modelPath, &base, &message)) return fail(begin, end, message);
     bool warned = false;
     for (size_t rigBegin = begin; rigBegin < end;) {
-        const size_t rigEnd = runEnd(items, rigBegin, [](const RenderItem& item) { return item.rig; });
+        const size_t rigEnd = runEnd(items, rigBegin, end, [](const RenderItem& item) { return item.rig; });
         SceneOptions options = r.options;
         if (items[rigBegin].rig >= 0) options.rigPath = r.rigs.value(items[rigBegin].rig);
         LoadedScene withRig = base;
@@ -153,7 +154,7 @@ void Runner::renderModel(size_t begin, size_t end) {
         } else {
             for (size_t viewBegin = rigBegin; viewBegin < rigEnd;) {
                 const size_t viewEnd =
-                    runEnd(items, viewBegin, [](const RenderItem& item) { return item.view; });
+                    runEnd(items, viewBegin, rigEnd, [](const RenderItem& item) { return item.view; });
                 if (const int v = items[viewBegin].view; v >= 0) {
                     options.cameraIndex = viewCameraIndex(r.options.views.value(v));
                     options.view = options.cameraIndex ? QString() : r.options.views.value(v);

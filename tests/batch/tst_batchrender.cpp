@@ -188,6 +188,8 @@ class TestBatchRender : public QObject {
             QVERIFY(QFile::exists(path(QStringLiteral("one/%1.png").arg(QLatin1String(name)))));
         QVERIFY(rgba(path(QStringLiteral("one/Suzanne-front.png"))) !=
                 rgba(path(QStringLiteral("one/Suzanne-top.png"))));
+        QVERIFY(rgba(path(QStringLiteral("one/Suzanne-front.png"))) != // each model is its own
+                rgba(path(QStringLiteral("one/tetra-front.png"))));
     }
 
     // 12 frames around the model: 12 files, no two images alike, frame 0 the plain render of the view.
