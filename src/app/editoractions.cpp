@@ -71,7 +71,8 @@ void EditorActions::createFileMenu() {
         add(tr("&Import lights from model"), QKeySequence(), [files] { files->importLightsFromModel(); });
     exportScreenshot =
         add(tr("&Export screenshot…"), QKeySequence(tr("Ctrl+E")), [this] { exportScreenshotInteractive(); });
-    exportTurntable = add(tr("Export &turntable…"), QKeySequence(), [this] { exportTurntableInteractive(m_window); });
+    exportTurntable =
+        add(tr("Export &turntable…"), QKeySequence(), [this] { exportTurntableInteractive(m_window); });
     menu->addSeparator();
     quit = add(tr("&Quit"), QKeySequence::Quit, [this] { m_window->close(); });
     quit->setMenuRole(QAction::QuitRole);

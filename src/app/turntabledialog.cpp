@@ -74,8 +74,9 @@ TurntableDialog::TurntableDialog(const QSize& viewportSize, const QString& sugge
     s.beginGroup(QStringLiteral("turntable"));
     TurntableOptions o;
     o.frames = s.value(QStringLiteral("frames"), o.frames).toInt();
-    o.rotate = s.value(QStringLiteral("rotate")).toString() == QLatin1String("lights") ? TurntableRotation::Lights
-                                                                                      : TurntableRotation::Camera;
+    o.rotate = s.value(QStringLiteral("rotate")).toString() == QLatin1String("lights")
+                   ? TurntableRotation::Lights
+                   : TurntableRotation::Camera;
     o.shot.size = s.value(QStringLiteral("size"), o.shot.size).toSize();
     o.shot.supersample = s.value(QStringLiteral("supersample"), o.shot.supersample).toInt();
     o.shot.transparent = s.value(QStringLiteral("transparent"), o.shot.transparent).toBool();

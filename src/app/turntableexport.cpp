@@ -92,16 +92,17 @@ TurntableExportResult exportTurntableWithProgress(QWidget* parent, Viewport* vie
 
 void exportTurntableInteractive(MainWindow* window) {
     const QString rigPath = window->document()->filePath();
-    const QString base = rigPath.isEmpty() ? QDir::home().filePath(QStringLiteral("lightrig_####.png"))
-                                           : QFileInfo(rigPath).dir().filePath(QFileInfo(rigPath).completeBaseName() +
-                                                                               QStringLiteral("_####.png"));
+    const QString base = rigPath.isEmpty()
+                             ? QDir::home().filePath(QStringLiteral("lightrig_####.png"))
+                             : QFileInfo(rigPath).dir().filePath(QFileInfo(rigPath).completeBaseName() +
+                                                                 QStringLiteral("_####.png"));
     Viewport* viewport = window->viewport();
     TurntableDialog dialog(viewport->size() * viewport->devicePixelRatio(), base, window);
     if (dialog.exec() != QDialog::Accepted) return;
     const TurntableOptions o = dialog.options();
     const TurntableExportResult result =
-        exportTurntableWithProgress(window, viewport, window->document()->renderRig(), viewport->renderCamera(),
-                                    window->scene()->frame().center, o);
+        exportTurntableWithProgress(window, viewport, window->document()->renderRig(),
+                                    viewport->renderCamera(), window->scene()->frame().center, o);
     const auto shown = [](const QString& path) { return QDir::toNativeSeparators(path); };
     if (result.cancelled) {
         window->statusBar()->showMessage(

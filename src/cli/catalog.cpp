@@ -41,10 +41,11 @@ QString viewName(const RenderRequest& r, int view) {
 std::optional<std::vector<RenderItem>> planRender(const RenderRequest& r, QString* usageError) {
     const QString pattern = r.outputIsFolder ? defaultPattern(r) : r.output;
     if (r.turntable > 1 && !hasFrameField(pattern)) {
-        *usageError = QStringLiteral("--turntable %1 needs a run of # in the output's file name for the frame "
-                                     "number, e.g. out_####.png; got %2")
-                          .arg(r.turntable)
-                          .arg(r.output);
+        *usageError =
+            QStringLiteral("--turntable %1 needs a run of # in the output's file name for the frame "
+                           "number, e.g. out_####.png; got %2")
+                .arg(r.turntable)
+                .arg(r.output);
         return std::nullopt;
     }
     std::vector<RenderItem> items;

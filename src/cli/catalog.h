@@ -16,7 +16,6 @@
 
 namespace lr::cli {
 
-
 QString modelName(const RenderRequest& request, int model); // {model}
 QString rigName(const RenderRequest& request, int rig);     // {rig}
 QString viewName(const RenderRequest& request, int view);   // {view}

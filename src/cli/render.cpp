@@ -9,8 +9,8 @@
 // several items the others still render); 2 usage error (nothing rendered). Hidden: --frames N times N more
 // frames (glFinish each) and prints the median, --msaa N overrides the samples (default 4; 0 for --quality
 // fast).
-#include "cli.h"
 #include "catalog.h"
+#include "cli.h"
 #include "outputfiles.h"
 #include "renderrun.h"
 #include "sceneoptions.h"
@@ -53,12 +53,13 @@ int runRender(const QStringList& args) {
     parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
     const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},
                                   QStringLiteral("Show this help."));
-    const QCommandLineOption output({QStringLiteral("o"), QStringLiteral("output")},
-                                    QStringLiteral("Output image (.png, .jpg or .jpeg); with several models, rigs "
-                                                   "or views a folder or a pattern with {model}, {rig}, {view} "
-                                                   "(folder: {model}_{rig}_{view}.png); a turntable's frame "
-                                                   "number replaces the last run of # (out_####.png)."),
-                                    QStringLiteral("OUT"));
+    const QCommandLineOption output(
+        {QStringLiteral("o"), QStringLiteral("output")},
+        QStringLiteral("Output image (.png, .jpg or .jpeg); with several models, rigs "
+                       "or views a folder or a pattern with {model}, {rig}, {view} "
+                       "(folder: {model}_{rig}_{view}.png); a turntable's frame "
+                       "number replaces the last run of # (out_####.png)."),
+        QStringLiteral("OUT"));
     const QCommandLineOption supersample(QStringLiteral("supersample"),
                                          QStringLiteral("Render N×N samples per pixel, 1..4 (default 1)."),
                                          QStringLiteral("N"));
@@ -114,8 +115,7 @@ int runRender(const QStringList& args) {
     if (!parser.isSet(output) || parser.value(output).isEmpty())
         return usage(QStringLiteral("-o OUT is required"));
     request.output = parser.value(output);
-    request.outputIsFolder =
-        request.output.endsWith(QLatin1Char('/')) || QFileInfo(request.output).isDir();
+    request.outputIsFolder = request.output.endsWith(QLatin1Char('/')) || QFileInfo(request.output).isDir();
     request.format = request.outputIsFolder ? QByteArray("png") : formatFor(request.output);
     if (request.format.isEmpty())
         return usage(QStringLiteral("the output must end in .png, .jpg or .jpeg: %1").arg(request.output));

@@ -87,7 +87,8 @@ void Runner::fail(size_t begin, size_t end, const QString& reason) {
     bool said = false;
     for (size_t i = begin; i < end; ++i) {
         if (finished[i]) continue;
-        if (!said) err << name << ": " << QString(reason).replace(QLatin1Char('\n'), QLatin1String(" | ")) << '\n';
+        if (!said)
+            err << name << ": " << QString(reason).replace(QLatin1Char('\n'), QLatin1String(" | ")) << '\n';
         said = true;
         done(i, reason);
     }
@@ -118,8 +119,10 @@ int Runner::run() {
     for (size_t i = 0; i < items.size(); ++i)
         if (!checkOutputPath(items[i].file, &message)) fail(i, i + 1, message);
     for (size_t begin = 0; begin < items.size();) {
-        const size_t end = runEnd(items, begin, items.size(), [](const RenderItem& item) { return item.model; });
-        if (std::any_of(finished.begin() + long(begin), finished.begin() + long(end), [](bool f) { return !f; }))
+        const size_t end =
+            runEnd(items, begin, items.size(), [](const RenderItem& item) { return item.model; });
+        if (std::any_of(finished.begin() + long(begin), finished.begin() + long(end),
+                        [](bool f) { return !f; }))
             renderModel(begin, end);
         begin = end;
     }
@@ -218,19 +221,21 @@ bool Runner::checkCoverage(const QString& path, LoadedScene& scene, const Render
         }
         return true;
     }
-    *error = QStringLiteral("nothing of %1 can be drawn: it covers no pixel from any view (its bounds run from "
-                            "[%2, %3, %4] to [%5, %6, %7])")
-                 .arg(path)
-                 .arg(bounds.min.x, 0, 'g', 3)
-                 .arg(bounds.min.y, 0, 'g', 3)
-                 .arg(bounds.min.z, 0, 'g', 3)
-                 .arg(bounds.max.x, 0, 'g', 3)
-                 .arg(bounds.max.y, 0, 'g', 3)
-                 .arg(bounds.max.z, 0, 'g', 3);
+    *error =
+        QStringLiteral("nothing of %1 can be drawn: it covers no pixel from any view (its bounds run from "
+                       "[%2, %3, %4] to [%5, %6, %7])")
+            .arg(path)
+            .arg(bounds.min.x, 0, 'g', 3)
+            .arg(bounds.min.y, 0, 'g', 3)
+            .arg(bounds.min.z, 0, 'g', 3)
+            .arg(bounds.max.x, 0, 'g', 3)
+            .arg(bounds.max.y, 0, 'g', 3)
+            .arg(bounds.max.z, 0, 'g', 3);
     return false;
 }
 
-void Runner::renderView(const QString& modelPath, LoadedScene& scene, size_t begin, size_t end, double loadMs) {
+void Runner::renderView(const QString& modelPath, LoadedScene& scene, size_t begin, size_t end,
+                        double loadMs) {
     QString message;
     if (!ensureGl(scene, &message)) return fail(begin, end, message);
     RenderSettings settings;
@@ -258,15 +263,17 @@ void Runner::renderView(const QString& modelPath, LoadedScene& scene, size_t beg
             continue;
         }
         if (settings.transparentBackground && r.format == "jpeg" && !std::exchange(warnedJpeg, true))
-            err << name << ": warning: JPEG has no alpha channel; the transparent background is written black\n";
+            err << name
+                << ": warning: JPEG has no alpha channel; the transparent background is written black\n";
         if (!writeOutputImage(image, item.file, r.format, &message)) {
             fail(i, i + 1, message);
             continue;
         }
         const RenderStats& stats = gl->renderer().stats();
         if (r.summary != QLatin1String("-"))
-            out << QStringLiteral("wrote %1 (%2x%3): %4 triangles, %5 of %6 lights (%7), %8, first image %9 ms, "
-                                  "load %10 ms\n")
+            out << QStringLiteral(
+                       "wrote %1 (%2x%3): %4 triangles, %5 of %6 lights (%7), %8, first image %9 ms, "
+                       "load %10 ms\n")
                        .arg(item.file)
                        .arg(image.width())
                        .arg(image.height())

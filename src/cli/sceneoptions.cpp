@@ -103,7 +103,8 @@ std::optional<SceneOptions> SceneOptionSet::read(const QCommandLineParser& p, QS
                 if (!o.views.contains(name)) o.views.append(name);
             }
         if (o.views.size() == 1 && !viewCameraIndex(o.views.first())) o.view = o.views.first();
-        if (o.views.size() == 1 && viewCameraIndex(o.views.first())) o.cameraIndex = viewCameraIndex(o.views.first());
+        if (o.views.size() == 1 && viewCameraIndex(o.views.first()))
+            o.cameraIndex = viewCameraIndex(o.views.first());
     } else if (p.isSet(view)) {
         o.view = p.value(view);
         if (!standardViewNames().contains(o.view))

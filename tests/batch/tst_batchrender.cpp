@@ -76,8 +76,8 @@ class TestBatchRender : public QObject {
             << QStringList{m, kModels[1], QStringLiteral("-o"), o}
             << QStringLiteral("several models need -o FOLDER or a pattern with {model}");
         QTest::newRow("two rigs, one file")
-            << QStringList{m, QStringLiteral("--rig"), kRigs[0], QStringLiteral("--rig"), kRigs[1],
-                           QStringLiteral("-o"), o}
+            << QStringList{m,        QStringLiteral("--rig"), kRigs[0], QStringLiteral("--rig"),
+                           kRigs[1], QStringLiteral("-o"),    o}
             << QStringLiteral("would both write");
         QTest::newRow("turntable without #")
             << QStringList{m, QStringLiteral("--turntable"), QStringLiteral("12"), QStringLiteral("-o"), o}
@@ -88,17 +88,22 @@ class TestBatchRender : public QObject {
         QTest::newRow("rotate without turntable")
             << QStringList{m, QStringLiteral("--rotate"), QStringLiteral("lights"), QStringLiteral("-o"), o}
             << QStringLiteral("--rotate needs --turntable N");
-        QTest::newRow("bad rotate") << QStringList{m, QStringLiteral("--turntable"), QStringLiteral("4"),
-                                                   QStringLiteral("--rotate"), QStringLiteral("model"),
-                                                   QStringLiteral("-o"), path(QStringLiteral("t_#.png"))}
+        QTest::newRow("bad rotate") << QStringList{m,
+                                                   QStringLiteral("--turntable"),
+                                                   QStringLiteral("4"),
+                                                   QStringLiteral("--rotate"),
+                                                   QStringLiteral("model"),
+                                                   QStringLiteral("-o"),
+                                                   path(QStringLiteral("t_#.png"))}
                                     << QStringLiteral("--rotate must be \"camera\" or \"lights\"");
         QTest::newRow("bad view in a list")
-            << QStringList{m, QStringLiteral("--view"), QStringLiteral("front,sideways"), QStringLiteral("-o"),
-                           path(QStringLiteral("{view}.png"))}
+            << QStringList{m, QStringLiteral("--view"), QStringLiteral("front,sideways"),
+                           QStringLiteral("-o"), path(QStringLiteral("{view}.png"))}
             << QStringLiteral("got 'sideways'");
         QTest::newRow("same name in two folders")
-            << QStringList{m, source("tests/data/model/hostile/../../../../resources/models/suzanne/"
-                                     "Suzanne.gltf"),
+            << QStringList{m,
+                           source("tests/data/model/hostile/../../../../resources/models/suzanne/"
+                                  "Suzanne.gltf"),
                            QStringLiteral("-o"), m_dir.path() + QLatin1Char('/')}
             << QStringLiteral("would both write");
     }
@@ -122,10 +127,11 @@ class TestBatchRender : public QObject {
         QVERIFY(QDir().mkpath(out));
         QProcess p;
         p.setProgram(parallel);
-        p.setArguments(QStringList{QStringLiteral("-j2"), lrtest::lightrigExecutable(), QStringLiteral("render"),
-                                   QStringLiteral("{1}"), QStringLiteral("--rig"), QStringLiteral("{2}"),
-                                   QStringLiteral("-o"), out, QStringLiteral("--size"), QStringLiteral("96x64"),
-                                   QStringLiteral("--summary"), QStringLiteral("-"), QStringLiteral(":::")} +
+        p.setArguments(QStringList{QStringLiteral("-j2"), lrtest::lightrigExecutable(),
+                                   QStringLiteral("render"), QStringLiteral("{1}"), QStringLiteral("--rig"),
+                                   QStringLiteral("{2}"), QStringLiteral("-o"), out, QStringLiteral("--size"),
+                                   QStringLiteral("96x64"), QStringLiteral("--summary"), QStringLiteral("-"),
+                                   QStringLiteral(":::")} +
                        kModels + QStringList{QStringLiteral(":::")} + kRigs);
         p.start();
         QVERIFY(p.waitForFinished(300000));
@@ -136,7 +142,8 @@ class TestBatchRender : public QObject {
         QCOMPARE(lines.size(), 6);
         QSet<QString> files;
         for (const QJsonObject& line : lines) {
-            QVERIFY2(line.value(QStringLiteral("status")).toString() == QLatin1String("ok"), qPrintable(detail));
+            QVERIFY2(line.value(QStringLiteral("status")).toString() == QLatin1String("ok"),
+                     qPrintable(detail));
             QVERIFY(line.value(QStringLiteral("error")).isNull());
             QVERIFY(line.value(QStringLiteral("seconds")).toDouble(-1) >= 0.0);
             QCOMPARE(line.value(QStringLiteral("view")).toString(), QStringLiteral("default"));
@@ -146,7 +153,8 @@ class TestBatchRender : public QObject {
             for (const QString& rig : kRigNames) {
                 const QString file =
                     QDir::cleanPath(out + QStringLiteral("%1_%2_default.png").arg(model, rig));
-                QVERIFY2(files.contains(file), qPrintable(file + QStringLiteral(" not in the summary\n") + detail));
+                QVERIFY2(files.contains(file),
+                         qPrintable(file + QStringLiteral(" not in the summary\n") + detail));
                 const QString problem = checkPng(file, QSize(96, 64));
                 QVERIFY2(problem.isEmpty(), qPrintable(problem));
             }
@@ -175,7 +183,8 @@ class TestBatchRender : public QObject {
             const QString file = line.value(QStringLiteral("file")).toString();
             if (line.value(QStringLiteral("status")).toString() == QLatin1String("failed")) {
                 ++failed;
-                QVERIFY(line.value(QStringLiteral("error")).toString().contains(QStringLiteral("missing.glb")));
+                QVERIFY(
+                    line.value(QStringLiteral("error")).toString().contains(QStringLiteral("missing.glb")));
                 QVERIFY(!QFile::exists(file));
                 continue;
             }
@@ -207,8 +216,13 @@ class TestBatchRender : public QObject {
         QFETCH(int, frames);
         const QString folder = path(QStringLiteral("turntable-") + rotate);
         QVERIFY(QDir().mkpath(folder));
-        const QStringList common{kModels[0],          QStringLiteral("--rig"), kRigs[0], QStringLiteral("--view"),
-                                 QStringLiteral("three-quarter"), QStringLiteral("--size"), QStringLiteral("96x64")};
+        const QStringList common{kModels[0],
+                                 QStringLiteral("--rig"),
+                                 kRigs[0],
+                                 QStringLiteral("--view"),
+                                 QStringLiteral("three-quarter"),
+                                 QStringLiteral("--size"),
+                                 QStringLiteral("96x64")};
         const Run r = lightrig(common + QStringList{QStringLiteral("--turntable"), QString::number(frames),
                                                     QStringLiteral("--rotate"), rotate, QStringLiteral("-o"),
                                                     folder + QStringLiteral("/tt_###.png")});
@@ -224,8 +238,10 @@ class TestBatchRender : public QObject {
         }
         for (int a = 0; a < frames; ++a)
             for (int b = a + 1; b < frames; ++b)
-                QVERIFY2(images[a] != images[b], qPrintable(QStringLiteral("frames %1 and %2 are alike").arg(a).arg(b)));
-        const Run plain = lightrig(common + QStringList{QStringLiteral("-o"), folder + QStringLiteral("/plain.png")});
+                QVERIFY2(images[a] != images[b],
+                         qPrintable(QStringLiteral("frames %1 and %2 are alike").arg(a).arg(b)));
+        const Run plain =
+            lightrig(common + QStringList{QStringLiteral("-o"), folder + QStringLiteral("/plain.png")});
         QVERIFY2(plain.code == 0, qPrintable(plain.show()));
         QVERIFY(images[0] == rgba(folder + QStringLiteral("/plain.png")));
     }

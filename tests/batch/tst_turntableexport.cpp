@@ -90,7 +90,8 @@ class TestTurntableExport : public QObject {
         QVERIFY(progressMaximum > 0);
         QList<QImage> images;
         for (int k = 0; k < 6; ++k) {
-            const QString file = m_dir.filePath(QStringLiteral("turn%1_%2.png").arg(rotate).arg(k, 2, 10, QLatin1Char('0')));
+            const QString file =
+                m_dir.filePath(QStringLiteral("turn%1_%2.png").arg(rotate).arg(k, 2, 10, QLatin1Char('0')));
             QCOMPARE(r.written.value(k), file);
             QImageReader reader(file);
             QCOMPARE(reader.format(), QByteArray("png"));
@@ -99,7 +100,8 @@ class TestTurntableExport : public QObject {
         }
         for (int a = 0; a < 6; ++a)
             for (int b = a + 1; b < 6; ++b)
-                QVERIFY2(images[a] != images[b], qPrintable(QStringLiteral("frames %1 and %2").arg(a).arg(b)));
+                QVERIFY2(images[a] != images[b],
+                         qPrintable(QStringLiteral("frames %1 and %2").arg(a).arg(b)));
         QString error;
         const QImage plain = viewport()->renderScreenshot(o.shot, &error);
         QVERIFY2(!plain.isNull(), qPrintable(error));
@@ -117,7 +119,8 @@ class TestTurntableExport : public QObject {
         });
         QVERIFY(r.cancelled);
         QVERIFY(r.error.isEmpty());
-        QVERIFY2(r.written.size() >= 2 && r.written.size() < 40, qPrintable(QString::number(r.written.size())));
+        QVERIFY2(r.written.size() >= 2 && r.written.size() < 40,
+                 qPrintable(QString::number(r.written.size())));
         const QStringList files = QDir(m_dir.path()).entryList({QStringLiteral("cancel_*")}, QDir::Files);
         QCOMPARE(files.size(), r.written.size()); // exactly those listed, no temporary file
         for (const QString& file : r.written)
