@@ -2,6 +2,7 @@
 
 #include "catalog.h"
 #include "cli.h"
+#include "coverage.h"
 #include "outputfiles.h"
 
 #include "render/offscreen.h"
@@ -16,23 +17,6 @@
 namespace lr::cli {
 
 namespace {
-
-// Pixels of the model seen through `camera`, from a small render with a transparent background (alpha is
-// 0 where nothing was drawn); -1 when the render failed (*error says why).
-int coveredPixels(OffscreenRenderer& gl, const ViewCamera& camera, QSize size, RenderSettings settings,
-                  QString* error) {
-    settings.transparentBackground = true;
-    const QImage probe =
-        gl.renderImage(camera, size.scaled(64, 64, Qt::KeepAspectRatio).expandedTo(QSize(1, 1)), settings, 1,
-                       error)
-            .convertToFormat(QImage::Format_RGBA8888);
-    if (probe.isNull()) return -1;
-    int covered = 0;
-    for (int y = 0; y < probe.height(); ++y)
-        for (int x = 0; x < probe.width(); ++x)
-            covered += probe.constScanLine(y)[4 * x + 3] > 0 ? 1 : 0;
-    return covered;
-}
 
 double median(std::vector<double> v) {
     if (v.empty()) return 0.0;
@@ -62,12 +46,6 @@ class Runner {
     void renderModel(size_t begin, size_t end);
     void renderView(const QString& modelPath, LoadedScene& scene, size_t begin, size_t end, double loadMs);
     bool ensureGl(const LoadedScene& scene, QString* error);
-    // Never an empty image in silence (a model at scale 1e38, or seen through a broken camera, rendered as
-    // the background alone with exit 0): when the model covers no pixel, a view chosen here (no --view or
-    // --camera-index) moves to the first standard view that shows it, with a warning; a view the user
-    // chose is kept, with a warning; and when no view shows anything, false (nothing written).
-    bool checkCoverage(const QString& modelPath, LoadedScene& scene, const RenderSettings& settings,
-                       QString* error);
     void timeFrames(const ViewCamera& camera, const RenderSettings& settings);
 
     const RenderRequest& r;
@@ -80,6 +58,7 @@ class Runner {
     bool anyFailed = false;
     std::unique_ptr<OffscreenRenderer> gl;
     std::shared_ptr<const Model> uploaded; // the model gl draws
+    QString glError;                       // why gl could not be created
     bool warnedJpeg = false;
 };
 
@@ -183,7 +162,10 @@ void Runner::renderModel(size_t begin, size_t end) {
 bool Runner::ensureGl(const LoadedScene& scene, QString* error) {
     if (!gl) {
         auto offscreen = std::make_unique<OffscreenRenderer>();
-        if (!offscreen->initialize(error)) return false;
+        if (!glError.isEmpty() || !offscreen->initialize(&glError)) { // no OpenGL: once is enough to try
+            *error = glError;
+            return false;
+        }
         gl = std::move(offscreen);
     }
     if (uploaded != scene.model) {
@@ -193,45 +175,6 @@ bool Runner::ensureGl(const LoadedScene& scene, QString* error) {
     }
     showScene(gl->renderer(), scene);
     return true;
-}
-
-bool Runner::checkCoverage(const QString& path, LoadedScene& scene, const RenderSettings& settings,
-                           QString* error) {
-    const int covered = coveredPixels(*gl, scene.camera, r.options.size, settings, error);
-    if (covered < 0) return false;
-    if (covered > 0) return true;
-    const Bounds& bounds = scene.model->bounds;
-    const double aspect = double(r.options.size.width()) / double(r.options.size.height());
-    const bool chosenHere = !r.options.cameraIndex && r.options.view.isEmpty() && r.options.views.isEmpty();
-    for (const QString& view : standardViewNames()) {
-        const std::optional<ViewCamera> camera = standardView(view, bounds, aspect);
-        if (!camera) continue;
-        const int n = coveredPixels(*gl, *camera, r.options.size, settings, error);
-        if (n < 0) return false;
-        if (n == 0) continue;
-        if (chosenHere) {
-            warn(QStringLiteral("%1 covers no pixel from %2; rendered from view %3 instead")
-                     .arg(path, scene.cameraSource, view));
-            scene.camera = *camera;
-            scene.cameraSource = QStringLiteral("view ") + view;
-        } else {
-            warn(QStringLiteral("%1 covers no pixel from %2 (the image shows only the background; it is "
-                                "visible from view %3)")
-                     .arg(path, scene.cameraSource, view));
-        }
-        return true;
-    }
-    *error =
-        QStringLiteral("nothing of %1 can be drawn: it covers no pixel from any view (its bounds run from "
-                       "[%2, %3, %4] to [%5, %6, %7])")
-            .arg(path)
-            .arg(bounds.min.x, 0, 'g', 3)
-            .arg(bounds.min.y, 0, 'g', 3)
-            .arg(bounds.min.z, 0, 'g', 3)
-            .arg(bounds.max.x, 0, 'g', 3)
-            .arg(bounds.max.y, 0, 'g', 3)
-            .arg(bounds.max.z, 0, 'g', 3);
-    return false;
 }
 
 void Runner::renderView(const QString& modelPath, LoadedScene& scene, size_t begin, size_t end,
@@ -244,7 +187,12 @@ void Runner::renderView(const QString& modelPath, LoadedScene& scene, size_t beg
     settings.quality = r.options.quality;
     settings.transparentBackground = r.transparent;
     settings.msaaSamples = r.msaa;
-    if (!checkCoverage(modelPath, scene, settings, &message)) return fail(begin, end, message);
+    const bool viewChosenHere =
+        !r.options.cameraIndex && r.options.view.isEmpty() && r.options.views.isEmpty();
+    if (!showsTheModel(
+            *gl, modelPath, r.options.size, settings, viewChosenHere, &scene,
+            [this](const QString& w) { warn(w); }, &message))
+        return fail(begin, end, message);
     const glm::dvec3 center = scene.model->bounds.center();
     for (size_t i = begin; i < end; ++i) {
         const RenderItem& item = items[i];
