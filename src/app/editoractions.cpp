@@ -13,6 +13,7 @@
 #include "scene.h"
 #include "screenshotdialog.h"
 #include "screenshotexport.h"
+#include "turntableexport.h"
 #include "viewport.h"
 #include "viewsettings.h"
 
@@ -70,6 +71,8 @@ void EditorActions::createFileMenu() {
         add(tr("&Import lights from model"), QKeySequence(), [files] { files->importLightsFromModel(); });
     exportScreenshot =
         add(tr("&Export screenshot…"), QKeySequence(tr("Ctrl+E")), [this] { exportScreenshotInteractive(); });
+    exportTurntable =
+        add(tr("Export &turntable…"), QKeySequence(), [this] { exportTurntableInteractive(m_window); });
     menu->addSeparator();
     quit = add(tr("&Quit"), QKeySequence::Quit, [this] { m_window->close(); });
     quit->setMenuRole(QAction::QuitRole);

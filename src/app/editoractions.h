@@ -23,6 +23,7 @@ class EditorActions : public QObject {
     QAction* saveAs = nullptr;
     QAction* importLights = nullptr;
     QAction* exportScreenshot = nullptr;
+    QAction* exportTurntable = nullptr; // issue 17 (turntableexport.h)
     QAction* quit = nullptr;
     QAction* undo = nullptr;
     QAction* redo = nullptr;

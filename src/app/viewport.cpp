@@ -430,11 +430,16 @@ QImage Viewport::renderThumbnail(const Rig& rig, const QSize& size) {
 
 QImage Viewport::renderScreenshot(const ScreenshotOptions& options, QString* error,
                                   const std::function<bool(int, int)>& progress) {
+    return renderScreenshot(options, m_doc->renderRig(), renderCamera(), error, progress);
+}
+
+QImage Viewport::renderScreenshot(const ScreenshotOptions& options, const Rig& rig, const ViewCamera& camera,
+                                  QString* error, const std::function<bool(int, int)>& progress) {
     RenderSettings s = renderSettings(options.gizmos);
     s.transparentBackground = options.transparent;
     if (!options.gizmos) s.selectedLights.clear();
-    QImage image = m_snapshots->render(m_doc->renderRig(), renderCamera(), options.size, s,
-                                       options.supersample, error, progress, progress ? options.tileSize : 0);
+    QImage image = m_snapshots->render(rig, camera, options.size, s, options.supersample, error, progress,
+                                       progress ? options.tileSize : 0);
     if (image.isNull() && error && error->isEmpty()) *error = tr("rendering failed");
     return image;
 }

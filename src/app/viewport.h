@@ -58,6 +58,9 @@ class Viewport : public QOpenGLWidget {
     // (render/offscreen.h TileProgress; false cancels: a null image, *error "cancelled").
     QImage renderScreenshot(const ScreenshotOptions& options, QString* error,
                             const std::function<bool(int done, int total)>& progress = {});
+    // The same for another rig and camera: a turntable's frames (turntableexport.h).
+    QImage renderScreenshot(const ScreenshotOptions& options, const Rig& rig, const ViewCamera& camera,
+                            QString* error, const std::function<bool(int done, int total)>& progress = {});
     // Renders and writes it at once (screenshotexport.h: atomic): error text, "" on success.
     QString exportScreenshot(const ScreenshotOptions& options);
 

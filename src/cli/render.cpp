@@ -1,34 +1,33 @@
-// `lightrig render MODEL [--rig RIG.json] -o OUT.png [--size WxH] [--camera-index N | --view NAME]
-//  [--quality Q] [--supersample N] [--transparent] [--exposure EV] [--tonemap clamp|reinhard|aces]
-//  [--shading classic|pbr] [--ground off|visible|catcher] [--shadows on|off]`
-// renders one image with the same Renderer as the viewport (OffscreenRenderer) and writes it atomically.
-// Exit status: 0 written; 1 bad model, rig, camera or path, or no OpenGL (one line on stderr, nothing
-// written); 2 usage error. Hidden: --frames N times N more frames (glFinish each) and prints the median,
-// --msaa N overrides the samples (default 4; 0 for --quality fast).
+// `lightrig render MODEL... [--rig RIG.json]... -o OUT.png|PATTERN|FOLDER [--size WxH] [--camera-index N |
+//  --view NAME[,NAME...]] [--turntable N [--rotate camera|lights]] [--summary FILE|-] [--quality Q]
+//  [--supersample N] [--transparent] [--exposure EV] [--tonemap ...] [--shading classic|pbr] [--ground ...]
+//  [--shadows on|off] [--environment ...]`
+// renders images with the same Renderer as the viewport (OffscreenRenderer) and writes each atomically: one
+// model, rig and view into OUT.png as always, or a catalog (several models, rigs, views: catalog.h names the
+// files) and turntables (N frames around the model, render/turntable.h), rendered by renderrun.h.
+// Exit status: 0 written; 1 bad model, rig, camera or path, or no OpenGL (one line on stderr each; with
+// several items the others still render); 2 usage error (nothing rendered). Hidden: --frames N times N more
+// frames (glFinish each) and prints the median, --msaa N overrides the samples (default 4; 0 for --quality
+// fast).
+#include "catalog.h"
 #include "cli.h"
 #include "outputfiles.h"
+#include "renderrun.h"
 #include "sceneoptions.h"
 
-#include "render/camera.h"
-#include "render/offscreen.h"
-
 #include <QCommandLineParser>
-#include <QDir>
-#include <QElapsedTimer>
 #include <QFileInfo>
 #include <QTextStream>
-#include <algorithm>
-#include <ctime>
 #include <optional>
-#include <vector>
 
 namespace lr::cli {
 
 namespace {
 
 const char* kUsage =
-    "lightrig render MODEL [--rig RIG.json] -o OUT.png [--size WxH] [--camera-index N | --view NAME] "
-    "[--quality Q] [--supersample N] [--transparent] [--exposure EV] [--tonemap clamp|reinhard|aces] "
+    "lightrig render MODEL... [--rig RIG.json]... -o OUT.png|PATTERN|FOLDER [--size WxH] [--camera-index N | "
+    "--view NAME[,NAME...]] [--turntable N [--rotate camera|lights]] [--summary FILE|-] [--quality Q] "
+    "[--supersample N] [--transparent] [--exposure EV] [--tonemap clamp|reinhard|aces] "
     "[--shading classic|pbr] [--ground off|visible|catcher] [--shadows on|off]";
 
 // The image format for the output's suffix, or empty.
@@ -39,29 +38,6 @@ QByteArray formatFor(const QString& path) {
     return {};
 }
 
-// Pixels of the model seen through `camera`, from a small render with a transparent background (alpha is
-// 0 where nothing was drawn); -1 when the render failed (*error says why).
-int coveredPixels(OffscreenRenderer& gl, const ViewCamera& camera, QSize size, RenderSettings settings,
-                  QString* error) {
-    settings.transparentBackground = true;
-    const QImage probe =
-        gl.renderImage(camera, size.scaled(64, 64, Qt::KeepAspectRatio).expandedTo(QSize(1, 1)), settings, 1,
-                       error)
-            .convertToFormat(QImage::Format_RGBA8888);
-    if (probe.isNull()) return -1;
-    int covered = 0;
-    for (int y = 0; y < probe.height(); ++y)
-        for (int x = 0; x < probe.width(); ++x)
-            covered += probe.constScanLine(y)[4 * x + 3] > 0 ? 1 : 0;
-    return covered;
-}
-
-double median(std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
-
 } // namespace
 
 int runRender(const QStringList& args) {
@@ -70,14 +46,20 @@ int runRender(const QStringList& args) {
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral(
         "Renders MODEL lit by a rig into a PNG or JPEG image, exactly as the editor's viewport shows "
-        "it.\nExit status: 0 written, 1 bad model, rig, camera or output path (nothing written), "
-        "2 usage error.\nNeeds OpenGL 3.3: run it with a display, e.g. under xvfb-run -a."));
+        "it; several models, rigs and views into one image each, and turntables (docs/batch.md).\nExit "
+        "status: 0 written, 1 bad model, rig, camera or output path (nothing written for it; the other "
+        "images still render), 2 usage error.\nNeeds OpenGL 3.3: run it with a display, e.g. under "
+        "xvfb-run -a."));
     parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
     const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},
                                   QStringLiteral("Show this help."));
-    const QCommandLineOption output({QStringLiteral("o"), QStringLiteral("output")},
-                                    QStringLiteral("Output image (.png, .jpg or .jpeg)."),
-                                    QStringLiteral("OUT"));
+    const QCommandLineOption output(
+        {QStringLiteral("o"), QStringLiteral("output")},
+        QStringLiteral("Output image (.png, .jpg or .jpeg); with several models, rigs "
+                       "or views a folder or a pattern with {model}, {rig}, {view} "
+                       "(folder: {model}_{rig}_{view}.png); a turntable's frame "
+                       "number replaces the last run of # (out_####.png)."),
+        QStringLiteral("OUT"));
     const QCommandLineOption supersample(QStringLiteral("supersample"),
                                          QStringLiteral("Render N×N samples per pixel, 1..4 (default 1)."),
                                          QStringLiteral("N"));
@@ -88,13 +70,32 @@ int runRender(const QStringList& args) {
     frames.setFlags(QCommandLineOption::HiddenFromHelp);
     QCommandLineOption msaa(QStringLiteral("msaa"), QStringLiteral("MSAA samples."), QStringLiteral("N"));
     msaa.setFlags(QCommandLineOption::HiddenFromHelp);
-    const SceneOptionSet scene;
+    const QCommandLineOption turntable(
+        QStringLiteral("turntable"),
+        QStringLiteral("Render N frames around the model, frame k at k·360/N degrees about the up axis."),
+        QStringLiteral("N"));
+    const QCommandLineOption rotate(QStringLiteral("rotate"),
+                                    QStringLiteral("What turns in a turntable: camera (orbits the model's "
+                                                   "centre; default) or lights (the rig turns, the camera "
+                                                   "stays)."),
+                                    QStringLiteral("camera|lights"));
+    const QCommandLineOption summary(QStringLiteral("summary"),
+                                     QStringLiteral("Write one JSON line per image (file, model, rig, view, "
+                                                    "status, seconds, error) to FILE, or to stdout for -."),
+                                     QStringLiteral("FILE|-"));
+    SceneOptionSet scene;
+    scene.rig.setDescription(QStringLiteral("Rig file (.json); repeat it for several rigs. Default: the "
+                                            "model's own lights when it has some, else the default rig."));
+    scene.view.setDescription(scene.view.description() +
+                              QStringLiteral(" A comma list (or repeated) renders each; cameraN is camera N "
+                                             "of the model file."));
     parser.addOption(help);
     parser.addOption(output);
     scene.addTo(parser);
-    parser.addOptions({supersample, transparent, frames, msaa});
+    parser.addOptions({supersample, transparent, frames, msaa, turntable, rotate, summary});
     parser.addPositionalArgument(QStringLiteral("MODEL"),
-                                 QStringLiteral("A model file Assimp reads (glTF, OBJ, FBX, ...)."));
+                                 QStringLiteral("Model files Assimp reads (glTF, OBJ, FBX, ...)."),
+                                 QStringLiteral("MODEL..."));
 
     auto usage = [&](const QString& message) {
         err << name << ": " << message << "\nUsage: " << kUsage << "\nTry '" << name << " --help'.\n";
@@ -107,21 +108,47 @@ int runRender(const QStringList& args) {
         out << text;
         return Ok;
     }
-    const QStringList positional = parser.positionalArguments();
-    if (positional.size() != 1)
-        return usage(positional.isEmpty() ? QStringLiteral("no MODEL given")
-                                          : QStringLiteral("one MODEL only"));
-    if (positional.first().isEmpty()) return usage(QStringLiteral("MODEL is an empty path"));
+    RenderRequest request;
+    request.models = parser.positionalArguments();
+    if (request.models.isEmpty()) return usage(QStringLiteral("no MODEL given"));
+    if (request.models.contains(QString())) return usage(QStringLiteral("MODEL is an empty path"));
     if (!parser.isSet(output) || parser.value(output).isEmpty())
         return usage(QStringLiteral("-o OUT is required"));
-    const QString outPath = parser.value(output);
-    const QByteArray format = formatFor(outPath);
-    if (format.isEmpty())
-        return usage(QStringLiteral("the output must end in .png, .jpg or .jpeg: %1").arg(outPath));
+    request.output = parser.value(output);
+    request.outputIsFolder = request.output.endsWith(QLatin1Char('/')) || QFileInfo(request.output).isDir();
+    request.format = request.outputIsFolder ? QByteArray("png") : formatFor(request.output);
+    if (request.format.isEmpty())
+        return usage(QStringLiteral("the output must end in .png, .jpg or .jpeg: %1").arg(request.output));
     QString message;
-    const std::optional<SceneOptions> options = scene.read(parser, &message);
+    const std::optional<SceneOptions> options = scene.read(parser, &message, false, true);
     if (!options) return usage(message);
-    int ss = 1, frameCount = 0, samples = options->quality == Quality::Fast ? 0 : 4;
+    request.options = *options;
+    for (const QString& rig : parser.values(scene.rig)) {
+        if (rig.isEmpty()) return usage(QStringLiteral("--rig needs a file name"));
+        if (!request.rigs.contains(rig)) request.rigs.append(rig);
+    }
+    int& ss = request.supersample;
+    int& frameCount = request.timedFrames;
+    int& samples = request.msaa;
+    samples = options->quality == Quality::Fast ? 0 : 4;
+    request.transparent = parser.isSet(transparent);
+    request.summary = parser.value(summary);
+    if (parser.isSet(summary) && request.summary.isEmpty())
+        return usage(QStringLiteral("--summary needs a file name or -"));
+    if (parser.isSet(turntable)) {
+        bool ok = false;
+        request.turntable = parser.value(turntable).toInt(&ok);
+        if (!ok || request.turntable < 1 || request.turntable > 100000)
+            return usage(QStringLiteral("--turntable must be a number of frames in 1..100000, got '%1'")
+                             .arg(parser.value(turntable)));
+    }
+    if (parser.isSet(rotate)) {
+        const QString v = parser.value(rotate);
+        if (v != QLatin1String("camera") && v != QLatin1String("lights"))
+            return usage(QStringLiteral("--rotate must be \"camera\" or \"lights\", got '%1'").arg(v));
+        if (!parser.isSet(turntable)) return usage(QStringLiteral("--rotate needs --turntable N"));
+        request.rotate = v == QLatin1String("lights") ? TurntableRotation::Lights : TurntableRotation::Camera;
+    }
     if (parser.isSet(supersample)) {
         bool ok = false;
         ss = parser.value(supersample).toInt(&ok);
@@ -138,115 +165,14 @@ int runRender(const QStringList& args) {
         samples = parser.value(msaa).toInt(&ok);
         if (!ok || samples < 0 || samples > 32) return usage(QStringLiteral("--msaa must be 0..32"));
     }
+    const std::optional<std::vector<RenderItem>> items = planRender(request, &message);
+    if (!items) return usage(message);
 
-    auto failed = [&](const QString& reason) {
-        err << name << ": " << QString(reason).replace(QLatin1Char('\n'), QLatin1String(" | ")) << '\n';
-        return int(Failed);
-    };
-    if (!displayAvailable())
-        return failed(QStringLiteral("lightrig render needs an X display; run it under xvfb-run -a"));
-    if (!checkOutputPath(outPath, &message)) return failed(message);
-
-    QElapsedTimer clock;
-    clock.start();
-    LoadedScene loaded;
-    if (!loadScene(positional.first(), *options, &loaded, &message)) return failed(message);
-    const double loadMs = clock.nsecsElapsed() * 1e-6;
-    auto warn = [&](const QString& warning) { err << name << ": warning: " << warning << '\n'; };
-    for (const QString& w : loaded.model->warnings)
-        warn(w);
-
-    OffscreenRenderer gl;
-    if (!gl.initialize(&message) || !gl.setModel(loaded.model, &message)) return failed(message);
-    showScene(gl.renderer(), loaded);
-    RenderSettings settings;
-    settings.exposureEV = options->exposureEV;
-    settings.toneMap = options->toneMap;
-    settings.quality = options->quality;
-    settings.transparentBackground = parser.isSet(transparent);
-    settings.msaaSamples = samples;
-    // Never an empty image in silence (a model at scale 1e38, or seen through a broken camera, rendered as
-    // the background alone with exit 0): when the model covers no pixel, a view chosen here (no --view or
-    // --camera-index) moves to the first standard view that shows it, with a warning; a view the user
-    // chose is kept, with a warning; and when no view shows anything, nothing is written (exit 1).
-    const int covered = coveredPixels(gl, loaded.camera, options->size, settings, &message);
-    if (covered < 0) return failed(message);
-    if (covered == 0) {
-        const double aspect = double(options->size.width()) / double(options->size.height());
-        std::optional<QString> visibleFrom;
-        for (const QString& view : standardViewNames()) {
-            const std::optional<ViewCamera> camera = standardView(view, loaded.model->bounds, aspect);
-            if (!camera) continue;
-            const int n = coveredPixels(gl, *camera, options->size, settings, &message);
-            if (n < 0) return failed(message);
-            if (n == 0) continue;
-            visibleFrom = view;
-            if (!options->cameraIndex && options->view.isEmpty()) {
-                warn(QStringLiteral("%1 covers no pixel from %2; rendered from view %3 instead")
-                         .arg(positional.first(), loaded.cameraSource, view));
-                loaded.camera = *camera;
-                loaded.cameraSource = QStringLiteral("view ") + view;
-            } else {
-                warn(QStringLiteral("%1 covers no pixel from %2 (the image shows only the background; it is "
-                                    "visible from view %3)")
-                         .arg(positional.first(), loaded.cameraSource, view));
-            }
-            break;
-        }
-        if (!visibleFrom)
-            return failed(QStringLiteral("nothing of %1 can be drawn: it covers no pixel from any view (its "
-                                         "bounds run from [%2, %3, %4] to [%5, %6, %7])")
-                              .arg(positional.first())
-                              .arg(loaded.model->bounds.min.x, 0, 'g', 3)
-                              .arg(loaded.model->bounds.min.y, 0, 'g', 3)
-                              .arg(loaded.model->bounds.min.z, 0, 'g', 3)
-                              .arg(loaded.model->bounds.max.x, 0, 'g', 3)
-                              .arg(loaded.model->bounds.max.y, 0, 'g', 3)
-                              .arg(loaded.model->bounds.max.z, 0, 'g', 3));
+    if (!displayAvailable()) {
+        err << name << ": lightrig render needs an X display; run it under xvfb-run -a\n";
+        return Failed;
     }
-    clock.restart();
-    const QImage image = gl.renderImage(loaded.camera, options->size, settings, ss, &message);
-    const double firstMs = clock.nsecsElapsed() * 1e-6;
-    if (image.isNull()) return failed(message);
-    if (settings.transparentBackground && format == "jpeg")
-        err << name << ": warning: JPEG has no alpha channel; the transparent background is written black\n";
-    if (!writeOutputImage(image, outPath, format, &message)) return failed(message);
-    const RenderStats& stats = gl.renderer().stats();
-    out << QStringLiteral(
-               "wrote %1 (%2x%3): %4 triangles, %5 of %6 lights (%7), %8, first image %9 ms, load %10 ms\n")
-               .arg(outPath)
-               .arg(image.width())
-               .arg(image.height())
-               .arg(stats.triangles)
-               .arg(stats.lightsUploaded)
-               .arg(stats.lightsInRig)
-               .arg(loaded.rigSource, loaded.cameraSource)
-               .arg(firstMs, 0, 'f', 1)
-               .arg(loadMs, 0, 'f', 1);
-    if (frameCount > 0) {
-        const QSize size = options->size;
-        std::vector<double> wall, gpu, cpu;
-        for (int i = 0; i < frameCount; ++i) {
-            clock.restart();
-            const std::clock_t cpu0 = std::clock();
-            if (!gl.renderFrame(loaded.camera, size, settings, &message)) return failed(message);
-            wall.push_back(clock.nsecsElapsed() * 1e-6);
-            cpu.push_back(double(std::clock() - cpu0) * 1000.0 / CLOCKS_PER_SEC);
-            if (gl.renderer().stats().lastGpuMs >= 0) gpu.push_back(gl.renderer().stats().lastGpuMs);
-        }
-        out << QStringLiteral("frames: %1 at %2x%3, msaa %4: median %5 ms, min %6 ms, max %7 ms (glFinish); "
-                              "gpu median %8 ms; process CPU median %9 ms (all threads)\n")
-                   .arg(frameCount)
-                   .arg(size.width())
-                   .arg(size.height())
-                   .arg(samples)
-                   .arg(median(wall), 0, 'f', 2)
-                   .arg(*std::min_element(wall.begin(), wall.end()), 0, 'f', 2)
-                   .arg(*std::max_element(wall.begin(), wall.end()), 0, 'f', 2)
-                   .arg(median(gpu), 0, 'f', 2)
-                   .arg(median(cpu), 0, 'f', 2);
-    }
-    return Ok;
+    return runRenderRequest(request, *items);
 }
 
 } // namespace lr::cli

@@ -65,8 +65,15 @@ std::optional<QSize> parseSize(const QString& text, int maxSide) {
     return QSize(w, h);
 }
 
+std::optional<int> viewCameraIndex(const QString& view) {
+    static const QRegularExpression re(QStringLiteral("^(?:camera)?(\\d{1,6})$"));
+    const QRegularExpressionMatch m = re.match(view);
+    if (!m.hasMatch()) return std::nullopt;
+    return m.captured(1).toInt();
+}
+
 std::optional<SceneOptions> SceneOptionSet::read(const QCommandLineParser& p, QString* usageError,
-                                                 bool qualityList) const {
+                                                 bool qualityList, bool viewList) const {
     SceneOptions o;
     auto bad = [&](const QString& message) {
         *usageError = message;
@@ -84,7 +91,21 @@ std::optional<SceneOptions> SceneOptionSet::read(const QCommandLineParser& p, QS
                            .arg(p.value(cameraIndex)));
         o.cameraIndex = n;
     }
-    if (p.isSet(view)) {
+    if (p.isSet(view) && viewList) {
+        for (const QString& value : p.values(view))
+            for (const QString& part : value.split(QLatin1Char(','))) {
+                const QString v = part.trimmed();
+                if (!standardViewNames().contains(v) && !viewCameraIndex(v))
+                    return bad(QStringLiteral("--view must be one of %1 or cameraN, got '%2'")
+                                   .arg(standardViewNames().join(QStringLiteral(", ")), v));
+                const QString name =
+                    viewCameraIndex(v) ? QStringLiteral("camera%1").arg(*viewCameraIndex(v)) : v;
+                if (!o.views.contains(name)) o.views.append(name);
+            }
+        if (o.views.size() == 1 && !viewCameraIndex(o.views.first())) o.view = o.views.first();
+        if (o.views.size() == 1 && viewCameraIndex(o.views.first()))
+            o.cameraIndex = viewCameraIndex(o.views.first());
+    } else if (p.isSet(view)) {
         o.view = p.value(view);
         if (!standardViewNames().contains(o.view))
             return bad(QStringLiteral("--view must be one of %1, got '%2'")
@@ -179,6 +200,11 @@ QString shadowSummary(const Rig& rig) {
 }
 
 bool loadScene(const QString& modelPath, const SceneOptions& options, LoadedScene* scene, QString* error) {
+    return loadSceneModel(modelPath, scene, error) && loadSceneRig(modelPath, options, scene, error) &&
+           chooseSceneCamera(modelPath, options, scene, error);
+}
+
+bool loadSceneModel(const QString& modelPath, LoadedScene* scene, QString* error) {
     // In `lightrig import-worker`: an importer crash, hang or allocation bomb is a message, not our end.
     ModelLoadResult loaded = importModelIsolated(modelPath);
     if (!loaded.ok()) {
@@ -186,6 +212,10 @@ bool loadScene(const QString& modelPath, const SceneOptions& options, LoadedScen
         return false;
     }
     scene->model = loaded.model;
+    return true;
+}
+
+bool loadSceneRig(const QString& modelPath, const SceneOptions& options, LoadedScene* scene, QString* error) {
     const Model& model = *scene->model;
     if (!options.rigPath.isEmpty()) {
         const RigReadResult r = readRigFile(options.rigPath);
@@ -215,6 +245,12 @@ bool loadScene(const QString& modelPath, const SceneOptions& options, LoadedScen
         return false;
     if (const QString env = environmentName(scene->rig.environment); !env.isEmpty())
         scene->rigSource += QStringLiteral(", ") + env;
+    return true;
+}
+
+bool chooseSceneCamera(const QString& modelPath, const SceneOptions& options, LoadedScene* scene,
+                       QString* error) {
+    const Model& model = *scene->model;
     const double aspect = double(options.size.width()) / double(options.size.height());
     const auto fromFile = [&](int index) {
         const Camera& c = model.cameras[size_t(index)];

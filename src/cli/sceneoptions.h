@@ -34,6 +34,9 @@ struct SceneOptions {
     QString rigPath; // empty: model lights or the default rig
     std::optional<int> cameraIndex;
     QString view; // a standardViewNames() name, or empty
+    // --view as a list (render: several views per call; read with viewList): standard view names and
+    // model cameras "cameraN" (or "N"), in order, without repeats. One entry also sets view or cameraIndex.
+    QStringList views;
     QSize size{1280, 720};
     Quality quality = Quality::Exact;               // the first of `qualities`
     std::vector<Quality> qualities{Quality::Exact}; // --quality A,B,... where a list is allowed (bench)
@@ -50,9 +53,10 @@ struct SceneOptionSet {
     EnvironmentOptionSet environment;
     SceneOptionSet();
     void addTo(QCommandLineParser& parser) const;
-    // The parsed values, or a usage error message (exit 2). qualityList: --quality takes a comma list.
+    // The parsed values, or a usage error message (exit 2). qualityList: --quality takes a comma list;
+    // viewList: --view takes comma lists and may repeat (SceneOptions::views).
     std::optional<SceneOptions> read(const QCommandLineParser& parser, QString* usageError,
-                                     bool qualityList = false) const;
+                                     bool qualityList = false, bool viewList = false) const;
 };
 
 struct LoadedScene {
@@ -80,6 +84,15 @@ QString shadowSummary(const Rig& rig);
 // Loads the model, the rig and its environment and picks the camera. False with a one-line reason (exit 1) on
 // failure.
 bool loadScene(const QString& modelPath, const SceneOptions& options, LoadedScene* scene, QString* error);
+// loadScene's three steps, for `render` with several rigs and views per model (src/cli/catalog.h): the
+// model (scene->model), then the rig and its environment (rigSource, environment), then the camera of
+// options.view / options.cameraIndex (camera, cameraSource). Each false with a one-line reason.
+bool loadSceneModel(const QString& modelPath, LoadedScene* scene, QString* error);
+bool loadSceneRig(const QString& modelPath, const SceneOptions& options, LoadedScene* scene, QString* error);
+bool chooseSceneCamera(const QString& modelPath, const SceneOptions& options, LoadedScene* scene,
+                       QString* error);
+// "cameraN" or "N" -> N; nullopt for anything else (a --view list entry naming a model camera).
+std::optional<int> viewCameraIndex(const QString& view);
 
 // Gives the renderer the scene's rig and its loaded environment (Renderer::setRig, setEnvironment).
 void showScene(Renderer& renderer, const LoadedScene& scene);

@@ -1,0 +1,275 @@
+#include "renderrun.h"
+
+#include "catalog.h"
+#include "cli.h"
+#include "coverage.h"
+#include "outputfiles.h"
+
+#include "render/offscreen.h"
+
+#include <QElapsedTimer>
+#include <QTextStream>
+#include <algorithm>
+#include <ctime>
+#include <memory>
+#include <utility>
+
+namespace lr::cli {
+
+namespace {
+
+double median(std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+// The end of the items [begin, end) before `limit` that share the value of `key` with items[begin].
+template <typename Key>
+size_t runEnd(const std::vector<RenderItem>& items, size_t begin, size_t limit, Key key) {
+    size_t end = begin + 1;
+    while (end < limit && key(items[end]) == key(items[begin]))
+        ++end;
+    return end;
+}
+
+class Runner {
+  public:
+    Runner(const RenderRequest& request, const std::vector<RenderItem>& items) : r(request), items(items) {}
+    int run();
+
+  private:
+    void warn(const QString& warning) { err << name << ": warning: " << warning << '\n'; }
+    // Reports items [begin, end) that are not done yet as failed for `reason` (said once on stderr).
+    void fail(size_t begin, size_t end, const QString& reason);
+    void done(size_t i, const QString& error);
+    void renderModel(size_t begin, size_t end);
+    void renderView(const QString& modelPath, LoadedScene& scene, size_t begin, size_t end, double loadMs);
+    bool ensureGl(const LoadedScene& scene, QString* error);
+    void timeFrames(const ViewCamera& camera, const RenderSettings& settings);
+
+    const RenderRequest& r;
+    const std::vector<RenderItem>& items;
+    const QString name = QStringLiteral("lightrig render");
+    QTextStream err{stderr}, out{stdout};
+    std::vector<bool> finished;
+    std::vector<QByteArray> summary;
+    QElapsedTimer itemClock; // since the last item was reported: an item's seconds include its loading
+    bool anyFailed = false;
+    std::unique_ptr<OffscreenRenderer> gl;
+    std::shared_ptr<const Model> uploaded; // the model gl draws
+    QString glError;                       // why gl could not be created
+    bool warnedJpeg = false;
+};
+
+void Runner::fail(size_t begin, size_t end, const QString& reason) {
+    bool said = false;
+    for (size_t i = begin; i < end; ++i) {
+        if (finished[i]) continue;
+        if (!said)
+            err << name << ": " << QString(reason).replace(QLatin1Char('\n'), QLatin1String(" | ")) << '\n';
+        said = true;
+        done(i, reason);
+    }
+}
+
+void Runner::done(size_t i, const QString& error) {
+    finished[i] = true;
+    anyFailed = anyFailed || !error.isEmpty();
+    const QByteArray line =
+        summaryLine(r, items[i], error.isEmpty(), itemClock.nsecsElapsed() * 1e-9, error) + '\n';
+    itemClock.restart();
+    if (r.summary == QLatin1String("-")) {
+        out << line;
+        out.flush();
+    } else if (!r.summary.isEmpty()) {
+        summary.push_back(line);
+    }
+}
+
+int Runner::run() {
+    QString message;
+    itemClock.start();
+    finished.assign(items.size(), false);
+    if (!r.summary.isEmpty() && r.summary != QLatin1String("-") && !checkOutputPath(r.summary, &message)) {
+        err << name << ": " << message << '\n';
+        return Failed;
+    }
+    for (size_t i = 0; i < items.size(); ++i)
+        if (!checkOutputPath(items[i].file, &message)) fail(i, i + 1, message);
+    for (size_t begin = 0; begin < items.size();) {
+        const size_t end =
+            runEnd(items, begin, items.size(), [](const RenderItem& item) { return item.model; });
+        if (std::any_of(finished.begin() + long(begin), finished.begin() + long(end),
+                        [](bool f) { return !f; }))
+            renderModel(begin, end);
+        begin = end;
+    }
+    if (!r.summary.isEmpty() && r.summary != QLatin1String("-") &&
+        !writeOutputFile(r.summary, summary.empty() ? QByteArray() : [&] {
+            QByteArray all;
+            for (const QByteArray& line : summary)
+                all += line;
+            return all;
+        }(), &message)) {
+        err << name << ": " << message << '\n';
+        return Failed;
+    }
+    return anyFailed ? Failed : Ok;
+}
+
+void Runner::renderModel(size_t begin, size_t end) {
+    QElapsedTimer clock;
+    clock.start();
+    const QString modelPath = r.models.value(items[begin].model);
+    LoadedScene base;
+    QString message;
+    if (!loadSceneModel(modelPath, &base, &message)) return fail(begin, end, message);
+    bool warned = false;
+    for (size_t rigBegin = begin; rigBegin < end;) {
+        const size_t rigEnd = runEnd(items, rigBegin, end, [](const RenderItem& item) { return item.rig; });
+        SceneOptions options = r.options;
+        if (items[rigBegin].rig >= 0) options.rigPath = r.rigs.value(items[rigBegin].rig);
+        LoadedScene withRig = base;
+        if (!loadSceneRig(modelPath, options, &withRig, &message)) {
+            fail(rigBegin, rigEnd, message);
+        } else {
+            for (size_t viewBegin = rigBegin; viewBegin < rigEnd;) {
+                const size_t viewEnd =
+                    runEnd(items, viewBegin, rigEnd, [](const RenderItem& item) { return item.view; });
+                if (const int v = items[viewBegin].view; v >= 0) {
+                    options.cameraIndex = viewCameraIndex(r.options.views.value(v));
+                    options.view = options.cameraIndex ? QString() : r.options.views.value(v);
+                }
+                LoadedScene scene = withRig;
+                if (!chooseSceneCamera(modelPath, options, &scene, &message)) {
+                    fail(viewBegin, viewEnd, message);
+                } else {
+                    if (!warned)
+                        for (const QString& w : scene.model->warnings)
+                            warn(w);
+                    warned = true;
+                    renderView(modelPath, scene, viewBegin, viewEnd, clock.nsecsElapsed() * 1e-6);
+                }
+                clock.restart();
+                viewBegin = viewEnd;
+            }
+        }
+        rigBegin = rigEnd;
+    }
+}
+
+bool Runner::ensureGl(const LoadedScene& scene, QString* error) {
+    if (!gl) {
+        auto offscreen = std::make_unique<OffscreenRenderer>();
+        if (!glError.isEmpty() || !offscreen->initialize(&glError)) { // no OpenGL: once is enough to try
+            *error = glError;
+            return false;
+        }
+        gl = std::move(offscreen);
+    }
+    if (uploaded != scene.model) {
+        uploaded.reset();
+        if (!gl->setModel(scene.model, error)) return false;
+        uploaded = scene.model;
+    }
+    showScene(gl->renderer(), scene);
+    return true;
+}
+
+void Runner::renderView(const QString& modelPath, LoadedScene& scene, size_t begin, size_t end,
+                        double loadMs) {
+    QString message;
+    if (!ensureGl(scene, &message)) return fail(begin, end, message);
+    RenderSettings settings;
+    settings.exposureEV = r.options.exposureEV;
+    settings.toneMap = r.options.toneMap;
+    settings.quality = r.options.quality;
+    settings.transparentBackground = r.transparent;
+    settings.msaaSamples = r.msaa;
+    const bool viewChosenHere =
+        !r.options.cameraIndex && r.options.view.isEmpty() && r.options.views.isEmpty();
+    if (!showsTheModel(
+            *gl, modelPath, r.options.size, settings, viewChosenHere, &scene,
+            [this](const QString& w) { warn(w); }, &message))
+        return fail(begin, end, message);
+    const glm::dvec3 center = scene.model->bounds.center();
+    for (size_t i = begin; i < end; ++i) {
+        const RenderItem& item = items[i];
+        if (finished[i]) continue;
+        const double degrees = turntableDegrees(item.frame, r.turntable);
+        const ViewCamera camera =
+            r.rotate == TurntableRotation::Camera ? orbitCamera(scene.camera, center, degrees) : scene.camera;
+        if (r.rotate == TurntableRotation::Lights && r.turntable > 0)
+            gl->setRig(rotateRigLights(scene.rig, center, degrees));
+        QElapsedTimer clock;
+        clock.start();
+        const QImage image = gl->renderImage(camera, r.options.size, settings, r.supersample, &message);
+        const double firstMs = clock.nsecsElapsed() * 1e-6;
+        if (image.isNull()) {
+            fail(i, i + 1, message);
+            continue;
+        }
+        if (settings.transparentBackground && r.format == "jpeg" && !std::exchange(warnedJpeg, true))
+            err << name
+                << ": warning: JPEG has no alpha channel; the transparent background is written black\n";
+        if (!writeOutputImage(image, item.file, r.format, &message)) {
+            fail(i, i + 1, message);
+            continue;
+        }
+        const RenderStats& stats = gl->renderer().stats();
+        if (r.summary != QLatin1String("-"))
+            out << QStringLiteral(
+                       "wrote %1 (%2x%3): %4 triangles, %5 of %6 lights (%7), %8, first image %9 ms, "
+                       "load %10 ms\n")
+                       .arg(item.file)
+                       .arg(image.width())
+                       .arg(image.height())
+                       .arg(stats.triangles)
+                       .arg(stats.lightsUploaded)
+                       .arg(stats.lightsInRig)
+                       .arg(scene.rigSource, scene.cameraSource)
+                       .arg(firstMs, 0, 'f', 1)
+                       .arg(i == begin ? loadMs : 0.0, 0, 'f', 1);
+        done(i, QString());
+        if (r.timedFrames > 0) timeFrames(camera, settings);
+    }
+}
+
+void Runner::timeFrames(const ViewCamera& camera, const RenderSettings& settings) {
+    const QSize size = r.options.size;
+    std::vector<double> wall, gpu, cpu;
+    QString message;
+    for (int i = 0; i < r.timedFrames; ++i) {
+        QElapsedTimer clock;
+        clock.start();
+        const std::clock_t cpu0 = std::clock();
+        if (!gl->renderFrame(camera, size, settings, &message)) {
+            err << name << ": " << message << '\n';
+            anyFailed = true;
+            return;
+        }
+        wall.push_back(clock.nsecsElapsed() * 1e-6);
+        cpu.push_back(double(std::clock() - cpu0) * 1000.0 / CLOCKS_PER_SEC);
+        if (gl->renderer().stats().lastGpuMs >= 0) gpu.push_back(gl->renderer().stats().lastGpuMs);
+    }
+    out << QStringLiteral("frames: %1 at %2x%3, msaa %4: median %5 ms, min %6 ms, max %7 ms (glFinish); "
+                          "gpu median %8 ms; process CPU median %9 ms (all threads)\n")
+               .arg(r.timedFrames)
+               .arg(size.width())
+               .arg(size.height())
+               .arg(settings.msaaSamples)
+               .arg(median(wall), 0, 'f', 2)
+               .arg(*std::min_element(wall.begin(), wall.end()), 0, 'f', 2)
+               .arg(*std::max_element(wall.begin(), wall.end()), 0, 'f', 2)
+               .arg(median(gpu), 0, 'f', 2)
+               .arg(median(cpu), 0, 'f', 2);
+}
+
+} // namespace
+
+int runRenderRequest(const RenderRequest& request, const std::vector<RenderItem>& items) {
+    return Runner(request, items).run();
+}
+
+} // namespace lr::cli
