@@ -33,6 +33,8 @@ QList<ControlBinding> mouseBindings() {
          QObject::tr("Add a directional light from the environment's bright spot there (also Edit › Light "
                      "from environment, then a click)")},
         {QObject::tr("Esc while dragging a light"), QObject::tr("Cancel the drag (nothing is left to redo)")},
+        {QObject::tr("Left drag the A/B line"),
+         QObject::tr("Move the wipe between A and B (View › Compare A/B)")},
     };
 }
 

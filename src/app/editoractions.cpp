@@ -1,5 +1,6 @@
 #include "editoractions.h"
 
+#include "abcompare.h"
 #include "controlshelp.h"
 #include "documentfiles.h"
 #include "editor/document.h"
@@ -124,6 +125,8 @@ void EditorActions::createViewMenu() {
     lookThroughLight->setToolTip(tr("View the scene from the selected spot light, along its axis"));
     connect(lookThroughLight, &QAction::triggered, viewport,
             [this, viewport] { viewport->lookThroughLight(m_window->document()->currentRow()); });
+    menu->addSeparator();
+    m_window->compare()->addActions(menu); // issue 17: A/B comparison
     menu->addSeparator();
     ViewSettings* settings = m_window->viewSettings();
     showGizmos = menu->addAction(tr("Light &gizmos"));

@@ -1,5 +1,6 @@
 #include "mainwindow.h"
 
+#include "abcompare.h"
 #include "commandline.h"
 #include "core/rigjson.h"
 #include "documentfiles.h"
@@ -45,6 +46,8 @@ MainWindow::MainWindow(QWidget* parent)
     setAcceptDrops(true);
     m_environment = new EnvironmentLoading(m_doc, m_scene, this);
     m_environmentLight = new EnvironmentLightTool(m_doc, m_scene, m_viewport, this);
+    m_compare = new AbCompare(m_doc, m_scene, this, this);
+    m_viewport->setCompare(m_compare);
     createDocks();
     m_actions = new EditorActions(this);
     connectStatus();
@@ -117,6 +120,8 @@ void MainWindow::connectStatus() {
             [this](const QString& t) { m_status->showMessage(t, 8000); });
     connect(m_viewport, &Viewport::frameRendered, m_status, &EditorStatusBar::setFrameTime);
     connect(m_environmentLight, &EnvironmentLightTool::statusMessage, this,
+            [this](const QString& t) { m_status->showMessage(t, 8000); });
+    connect(m_compare, &AbCompare::statusMessage, this,
             [this](const QString& t) { m_status->showMessage(t, 8000); });
     // An environment that cannot be loaded: said in the status bar and the error box; the rig stays as it is.
     connect(m_environment, &EnvironmentLoading::failed, this, [this](const QString& error) {

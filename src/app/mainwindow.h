@@ -9,6 +9,7 @@ class QUndoView;
 
 namespace lr {
 
+class AbCompare;
 class Document;
 class DocumentFiles;
 class EditorActions;
@@ -50,6 +51,7 @@ class MainWindow : public QMainWindow {
     EditorStatusBar* editorStatusBar() const { return m_status; }
     EnvironmentLoading* environmentLoading() const { return m_environment; }
     EnvironmentLightTool* environmentLightTool() const { return m_environmentLight; }
+    AbCompare* compare() const { return m_compare; } // View › Compare A/B (issue 17)
 
     // Startup: the model and rig from the command line, else the last session's (when restoring), else the
     // bundled model lit by the default preset. Restores geometry and dock layout when options allow it.
@@ -84,6 +86,7 @@ class MainWindow : public QMainWindow {
     EditorActions* m_actions = nullptr;
     EnvironmentLoading* m_environment = nullptr; // the rig's environment, loaded in the background
     EnvironmentLightTool* m_environmentLight = nullptr;
+    AbCompare* m_compare = nullptr;
     bool m_restoreSession = true;
 };
 

@@ -1,5 +1,7 @@
 #include "viewport.h"
 
+#include "abcompare.h"
+#include "abcompareframe.h"
 #include "editor/document.h"
 #include "gizmointeraction.h"
 #include "render/renderer.h"
@@ -21,6 +23,7 @@ namespace lr {
 // Everything tied to the widget's GL context, recreated when the context is.
 struct ViewportRenderer {
     Renderer renderer;
+    CompareFrame compare;
     bool ok = false;
 };
 
@@ -88,6 +91,7 @@ void Viewport::releaseGL() {
     if (!m_gl) return;
     if (context()) {
         makeCurrent();
+        m_gl->compare.release();
         m_gl->renderer.releaseResources();
         m_gl.reset();
         doneCurrent();
@@ -152,7 +156,9 @@ void Viewport::paintGL() {
     if (r.environment() != m_scene->environment()) r.setEnvironment(m_scene->environment());
     const qreal dpr = devicePixelRatioF();
     const QSize size(qMax(1, int(std::lround(width() * dpr))), qMax(1, int(std::lround(height() * dpr))));
-    if (!r.render(renderCamera(), size, renderSettings(true), defaultFramebufferObject())) {
+    if (m_compare && m_compare->isActive()
+            ? !paintCompare(size)
+            : !r.render(renderCamera(), size, renderSettings(true), defaultFramebufferObject())) {
         if (m_error != r.lastError()) {
             m_error = r.lastError();
             emit statusMessage(tr("Rendering failed: %1").arg(m_error));
@@ -199,7 +205,8 @@ ViewCamera Viewport::renderCamera() const {
 
 ScreenProjector Viewport::projector() const {
     const ViewCamera c = renderCamera();
-    return ScreenProjector(c.view(), c.projection(aspect()), QSizeF(width(), height()));
+    const QRectF r = documentRect();
+    return ScreenProjector(c.view(), c.projection(r.width() / std::max(1.0, r.height())), r.size());
 }
 
 std::optional<QPointF> Viewport::lightScreenPosition(int row) const {
@@ -322,14 +329,16 @@ void Viewport::lookThroughLight(int row) {
 }
 
 void Viewport::mousePressEvent(QMouseEvent* event) {
-    m_pressPos = m_lastPos = event->position();
+    m_pressPos = m_lastPos = event->position() - documentRect().topLeft();
     m_moved = false;
     m_shiftPress = false;
     if (event->button() == Qt::LeftButton) {
-        if (event->modifiers() & Qt::ShiftModifier) {
+        if (m_compare && m_compare->onWipeHandle(event->position(), QSizeF(size()))) {
+            m_nav = Navigation::Wipe;
+        } else if (event->modifiers() & Qt::ShiftModifier) {
             m_nav = Navigation::Pan; // a Shift+click without motion aims (see release)
             m_shiftPress = true;
-        } else if (m_interaction->press(projector(), event->position(), event->modifiers())) {
+        } else if (m_interaction->press(projector(), m_pressPos, event->modifiers())) {
             m_nav = Navigation::Gizmo;
         } else {
             m_nav = Navigation::Orbit;
@@ -344,7 +353,7 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
 }
 
 void Viewport::mouseMoveEvent(QMouseEvent* event) {
-    const QPointF pos = event->position();
+    const QPointF pos = event->position() - documentRect().topLeft();
     const QPointF delta = pos - m_lastPos;
     m_lastPos = pos;
     if (QLineF(pos, m_pressPos).length() >= GizmoInteraction::kDragThreshold) m_moved = true;
@@ -354,9 +363,13 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
         // Hover feedback: a hand over a light or a selected spot's cone edge.
         const ScreenProjector p = projector();
         const bool over = m_interaction->pickConeEdge(p, pos) >= 0 || m_interaction->pickLight(p, pos) >= 0;
-        setCursor(over ? Qt::PointingHandCursor : Qt::ArrowCursor);
+        const bool wipe = m_compare && m_compare->onWipeHandle(event->position(), QSizeF(size()));
+        setCursor(wipe ? Qt::SplitHCursor : over ? Qt::PointingHandCursor : Qt::ArrowCursor);
         return;
     }
+    case Navigation::Wipe:
+        m_compare->setSplit(event->position().x() / std::max(1, width()));
+        break;
     case Navigation::Gizmo:
         if (m_moved) setNavigating(true);
         m_interaction->move(projector(), pos, event->modifiers());
@@ -379,18 +392,19 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
 
 void Viewport::mouseReleaseEvent(QMouseEvent* event) {
     const Navigation nav = std::exchange(m_nav, Navigation::None);
+    const QPointF pos = event->position() - documentRect().topLeft();
     setNavigating(false);
     if (nav == Navigation::Gizmo) {
         m_interaction->release();
     } else if (nav == Navigation::Pan && m_shiftPress && !m_moved) {
         QString message;
-        if (m_interaction->aimSelectedAt(projector(), event->position(), &message))
+        if (m_interaction->aimSelectedAt(projector(), pos, &message))
             emit statusMessage(tr("Aimed the selected light(s) at the clicked point"));
         else if (!message.isEmpty())
             emit statusMessage(message);
     } else if (nav == Navigation::Orbit && !m_moved &&
                (m_pickEnvironment || event->modifiers().testFlags(Qt::ControlModifier | Qt::AltModifier))) {
-        emit environmentClicked(event->position()); // the background (a light would have been a gizmo press)
+        emit environmentClicked(pos); // the background (a light would have been a gizmo press)
     } else if (nav == Navigation::Orbit && !m_moved && !(event->modifiers() & Qt::ControlModifier)) {
         m_doc->setSelection({}); // a click on empty space clears the selection
     }
@@ -416,6 +430,35 @@ void Viewport::keyPressEvent(QKeyEvent* event) {
         return;
     }
     QOpenGLWidget::keyPressEvent(event);
+}
+
+void Viewport::setCompare(AbCompare* compare) {
+    if (m_compare) disconnect(m_compare, nullptr, this, nullptr);
+    m_compare = compare;
+    if (!m_compare) return update();
+    connect(m_compare, &AbCompare::changed, this, qOverload<>(&QWidget::update));
+    m_compare->attachLabels(this); // "A · the rig", "B · ..." over the two sides
+    update();
+}
+
+QRectF Viewport::documentRect() const {
+    return m_compare ? m_compare->documentRect(QSizeF(size())) : QRectF(rect());
+}
+
+bool Viewport::paintCompare(const QSize& size) {
+    CompareFrame::Side a{&m_gl->renderer.rig(), m_scene->environment(), renderSettings(true)};
+    CompareFrame::Side b{&m_compare->rigB(), m_compare->environmentB(), renderSettings(true)};
+    b.settings.selectedLights.clear(); // the selection is the document's
+    const Rig rigA = *a.rig;           // the renderer's rig changes while B renders
+    a.rig = &rigA;
+    QString error;
+    if (!m_gl->compare.render(m_gl->renderer, *m_compare, a, b, renderCamera(), size, devicePixelRatioF(),
+                              defaultFramebufferObject(), &error)) {
+        if (m_error != error) emit statusMessage(tr("Compare view failed: %1").arg(error));
+        m_error = error; // the normal frame instead
+        return m_gl->renderer.render(renderCamera(), size, renderSettings(true), defaultFramebufferObject());
+    }
+    return true;
 }
 
 QImage Viewport::renderThumbnail(const Rig& rig, const QSize& size) {

@@ -17,6 +17,7 @@
 
 namespace lr {
 
+class AbCompare;
 class Document;
 class GizmoInteraction;
 struct LoadedEnvironment;
@@ -81,6 +82,8 @@ class Viewport : public QOpenGLWidget {
     void lookThroughLight(int row);
     // While on, a plain click on the background emits environmentClicked (Ctrl+Alt+click always does).
     void setEnvironmentPicking(bool on) { m_pickEnvironment = on; }
+    // A/B comparison (abcompare.h): while it is active, frames show A and B and the wipe line drags.
+    void setCompare(AbCompare* compare);
 
   signals:
     void environmentClicked(const QPointF& position); // "Light from environment" (environmentlighttool.h)
@@ -99,12 +102,16 @@ class Viewport : public QOpenGLWidget {
     void keyPressEvent(QKeyEvent* event) override;
 
   private:
-    enum class Navigation { None, Orbit, Pan, Gizmo };
+    enum class Navigation { None, Orbit, Pan, Gizmo, Wipe };
     void releaseGL();
     RenderSettings renderSettings(bool gizmos) const;
     void onModelChanged();
     double aspect() const;
     bool onScreen(int row) const;
+    // Where the document's rig is drawn with the whole camera: the widget, or its half in a side-by-side
+    // comparison; picking and gizmo drags work in it (mouse positions relative to its corner).
+    QRectF documentRect() const;
+    bool paintCompare(const QSize& size); // abcompareframe.h
 
     Document* m_doc;
     Scene* m_scene;
@@ -112,6 +119,7 @@ class Viewport : public QOpenGLWidget {
     std::unique_ptr<ViewportRenderer> m_gl; // everything that needs the GL context
     std::unique_ptr<GizmoInteraction> m_interaction;
     std::unique_ptr<SnapshotRenderer> m_snapshots;
+    AbCompare* m_compare = nullptr;
     ViewCamera m_camera;
     bool m_cameraFramed = false;
     bool m_modelDirty = true;
