@@ -170,16 +170,18 @@ int runCompare(const QStringList& args) {
         if (r.errors.size() > 1) reason += QStringLiteral(" (and %1 more errors)").arg(r.errors.size() - 1);
         return failed(QStringLiteral("rig %1: %2").arg(QLatin1String(labels[i]), reason));
     }
-    // loadScene once per rig: each rig gets the same overrides and its environment resolved against its own
-    // folder; the model and camera of the first serve both.
+    // The model once; then each rig with the same overrides and its environment resolved against its own
+    // folder; the camera (chosen with rig A) serves both.
     LoadedScene loaded[2];
+    if (!loadSceneModel(modelPath, &loaded[0], &message)) return failed(message);
+    loaded[1].model = loaded[0].model;
     for (int i = 0; i < 2; ++i) {
         SceneOptions o = *options;
         o.rigPath = rigPaths[i];
-        if (!loadScene(modelPath, o, &loaded[i], &message))
+        if (!loadSceneRig(modelPath, o, &loaded[i], &message))
             return failed(i == 0 ? message : QStringLiteral("rig B: %1").arg(message));
     }
-    loaded[1].model.reset();
+    if (!chooseSceneCamera(modelPath, *options, &loaded[0], &message)) return failed(message);
     for (const QString& w : loaded[0].model->warnings)
         err << name << ": warning: " << w << '\n';
 
