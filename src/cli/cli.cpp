@@ -10,6 +10,7 @@
 namespace lr::cli {
 
 int runPrefilter(const QStringList& args); // prefilter.cpp (issue 15)
+int runExport(const QStringList& args);    // export.cpp (issue 17)
 
 namespace {
 bool g_displayAvailable = true;
@@ -25,6 +26,7 @@ const Subcommand kSubcommands[] = {
     {"bench", runBench, true},
     {"import-worker", runImportWorker, false}, // hidden: model/isolatedimport.h runs it
     {"prefilter", runPrefilter, false},
+    {"export", runExport, false},
 };
 } // namespace
 

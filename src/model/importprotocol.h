@@ -28,6 +28,7 @@ inline constexpr char kError = 'E';
 inline constexpr char kOutOfMemory = 'O';
 inline constexpr char kShared = 'S';
 inline constexpr char kEnvironment = 'V';
+inline constexpr char kGltf = 'G'; // a GLB Assimp exported (model/gltfexport.h)
 inline constexpr int kEnvironmentHeaderSize = 12;
 inline constexpr int kFrameHeaderSize = 9;
 
