@@ -5,6 +5,7 @@
 #include "editor/document.h"
 #include "environmentlighttool.h"
 #include "errordialog.h"
+#include "gltfexportdialog.h"
 #include "lightsdock.h"
 #include "mainwindow.h"
 #include "presetsdock.h"
@@ -70,6 +71,7 @@ void EditorActions::createFileMenu() {
         add(tr("&Import lights from model"), QKeySequence(), [files] { files->importLightsFromModel(); });
     exportScreenshot =
         add(tr("&Export screenshot…"), QKeySequence(tr("Ctrl+E")), [this] { exportScreenshotInteractive(); });
+    add(tr("Export &glTF…"), QKeySequence(), [this] { exportGltfInteractive(m_window); }); // issue 17
     menu->addSeparator();
     quit = add(tr("&Quit"), QKeySequence::Quit, [this] { m_window->close(); });
     quit->setMenuRole(QAction::QuitRole);
