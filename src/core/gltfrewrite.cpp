@@ -2,8 +2,10 @@
 
 #include "rigjson_json.h"
 
+#include <QDir>
 #include <QJsonDocument>
 #include <QMap>
+#include <QUrl>
 #include <QtEndian>
 #include <cmath>
 
@@ -336,19 +338,40 @@ GltfRewriteResult rewriteGltfJson(const QByteArray& s, const GltfAdditions& add)
             r.notes << QStringLiteral(
                 "extras is not an object: the note (environment, ambient) is not written");
     }
-    if (!add.embedBinAsUri.isEmpty()) {
-        const json::Value& b0 = buffers->items[0];
-        const json::Value* length = b0.find(QStringLiteral("byteLength"));
-        const qsizetype n = length && length->isNumber() && length->number >= 0
-                                ? qsizetype(std::min(length->number, double(add.embedBinAsUri.size())))
-                                : add.embedBinAsUri.size();
-        const QByteArray uri =
-            "\"data:application/octet-stream;base64," + add.embedBinAsUri.left(n).toBase64() + '"';
-        QList<QByteArray> list{editObject(s, b0, {{QStringLiteral("uri"), uri}})};
-        for (size_t i = 1; i < buffers->items.size(); ++i)
-            list << raw(s, buffers->items[i]);
-        rootEdits.insert(QStringLiteral("buffers"), joinArray(list));
+    // Buffers and images: the BIN chunk as a data: URI, file URIs rebased to the output's folder.
+    const bool rebase = !add.sourceFolder.isEmpty() && !add.outputFolder.isEmpty() &&
+                        QDir(add.sourceFolder).absolutePath() != QDir(add.outputFolder).absolutePath();
+    int rebased = 0;
+    for (const QString& key : {QStringLiteral("buffers"), QStringLiteral("images")}) {
+        const json::Value* array = root.find(key);
+        if (!array || array->kind != K::Array) continue;
+        QList<QByteArray> list;
+        bool changed = false;
+        for (size_t i = 0; i < array->items.size(); ++i) {
+            const json::Value& item = array->items[i];
+            const json::Value* uri = item.kind == K::Object ? item.find(QStringLiteral("uri")) : nullptr;
+            std::optional<QByteArray> value;
+            if (key == QLatin1String("buffers") && i == 0 && !add.embedBinAsUri.isEmpty()) {
+                const json::Value* length = item.find(QStringLiteral("byteLength"));
+                const double n = length && length->isNumber() && length->number >= 0 ? length->number : 0.0;
+                const QByteArray data =
+                    add.embedBinAsUri.left(qsizetype(std::min(n, double(add.embedBinAsUri.size()))));
+                value = "\"data:application/octet-stream;base64," + data.toBase64() + '"';
+            } else if (rebase && uri && uri->kind == K::String) {
+                const QString moved = rebaseUri(uri->string, add.sourceFolder, add.outputFolder);
+                if (moved != uri->string) {
+                    value = json::quote(moved);
+                    ++rebased;
+                }
+            }
+            changed = changed || value.has_value();
+            list << (value ? editObject(s, item, {{QStringLiteral("uri"), *value}}) : raw(s, item));
+        }
+        if (changed) rootEdits.insert(key, joinArray(list));
     }
+    if (rebased)
+        r.notes
+            << QStringLiteral("%1 file reference(s) rewritten relative to the output's folder").arg(rebased);
     r.json = editObject(s, root, rootEdits);
     return r;
 }
@@ -376,6 +399,15 @@ QByteArray lightsOnlyGltfJson(const GltfAdditions& add) {
     if (!add.note.isEmpty())
         root.insert(QStringLiteral("extras"), QJsonObject{{QStringLiteral("lightrig"), add.note}});
     return QJsonDocument(root).toJson(QJsonDocument::Compact);
+}
+
+QString rebaseUri(const QString& uri, const QString& sourceFolder, const QString& outputFolder) {
+    const QUrl url(uri);
+    if (uri.startsWith(QLatin1String("data:")) || !url.scheme().isEmpty() || uri.startsWith(QLatin1Char('/')))
+        return uri;
+    const QString file = QDir(sourceFolder).absoluteFilePath(QUrl::fromPercentEncoding(uri.toUtf8()));
+    const QString moved = QDir(outputFolder).relativeFilePath(QDir::cleanPath(file));
+    return QString::fromUtf8(QUrl::toPercentEncoding(moved, "/"));
 }
 
 QStringList externalUris(const QByteArray& json) {

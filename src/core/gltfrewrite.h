@@ -45,6 +45,9 @@ struct GltfAdditions {
     std::optional<GltfCamera> camera;
     QJsonObject note;         // extras.lightrig (skipped when empty)
     QByteArray embedBinAsUri; // non-empty: buffers[0] gets this as a data: URI (GLB in, .gltf out)
+    // Both set and different: relative file URIs of buffers and images are rewritten to name the same files
+    // from the output's folder (an export written elsewhere than its source).
+    QString sourceFolder, outputFolder;
 };
 
 struct GltfRewriteResult {
@@ -60,7 +63,10 @@ GltfRewriteResult rewriteGltfJson(const QByteArray& json, const GltfAdditions& a
 // A glTF of the lights alone (nodes and KHR_lights_punctual, no meshes), to merge into another scene.
 QByteArray lightsOnlyGltfJson(const GltfAdditions& additions);
 
-// The URIs of buffers and images that name files (not data: URIs), for a .gltf written elsewhere.
+// The URIs of buffers and images that name files (not data: URIs).
 QStringList externalUris(const QByteArray& json);
+// A relative file URI as seen from `outputFolder` instead of `sourceFolder` (percent-encoded as glTF wants);
+// data: URIs, URIs with a scheme and absolute paths are returned as they are.
+QString rebaseUri(const QString& uri, const QString& sourceFolder, const QString& outputFolder);
 
 } // namespace lr

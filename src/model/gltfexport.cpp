@@ -27,9 +27,12 @@ bool looksLikeJson(const QByteArray& data) {
     return false;
 }
 
-bool sameFolder(const QString& a, const QString& b) {
-    return QFileInfo(QFileInfo(a).absolutePath()).canonicalFilePath() ==
-           QFileInfo(QFileInfo(b).absolutePath()).canonicalFilePath();
+// The folder a file lies in, symbolic links resolved (a relative path through a link would climb out of
+// the link's target, not its parent).
+QString folderOf(const QString& path) {
+    const QFileInfo folder(QFileInfo(path).absolutePath());
+    const QString canonical = folder.canonicalFilePath();
+    return canonical.isEmpty() ? folder.absoluteFilePath() : canonical;
 }
 
 } // namespace
@@ -93,12 +96,14 @@ GltfExportResult exportGltf(const GltfExportRequest& request) {
                             .arg(kMaxGltfJsonBytes));
         json = source;
     }
-    // Files the JSON names are found beside it: only where the output lies beside the source.
+    // Files the JSON names beside the source stay there: named from the output's folder. A bundled model's
+    // files are inside LightRig, where no file can name them.
     const QStringList files = externalUris(json);
-    if (!files.isEmpty() && !sameFolder(model, request.outputPath))
-        return fail(QStringLiteral("it refers to files beside it (%1); write the export into the same folder")
-                        .arg(files.mid(0, 3).join(QStringLiteral(", ")) +
-                             (files.size() > 3 ? QStringLiteral(", …") : QString())));
+    if (!files.isEmpty() && model.startsWith(QLatin1String(":/")))
+        return fail(QStringLiteral("a bundled model refers to files inside LightRig (%1); open a copy of it")
+                        .arg(files.mid(0, 3).join(QStringLiteral(", "))));
+    add.sourceFolder = folderOf(model);
+    add.outputFolder = folderOf(request.outputPath);
     const GltfRewriteResult rewritten = rewriteGltfJson(json, add);
     if (!rewritten.ok()) return fail(rewritten.error);
     r.notes += rewritten.notes;

@@ -103,6 +103,11 @@ class TestExportCli : public QObject {
         QTest::newRow("lights only glb")
             << QStringList{QStringLiteral("--lights-only")} << path(QStringLiteral("scene.gltf"))
             << path(QStringLiteral("lights.glb"));
+        QVERIFY(QDir(m_dir.path()).mkpath(QStringLiteral("elsewhere/deeper")));
+        QTest::newRow("gltf written elsewhere") << QStringList{} << path(QStringLiteral("Suzanne.gltf"))
+                                                << path(QStringLiteral("elsewhere/deeper/suzanne.gltf"));
+        QTest::newRow("obj written elsewhere") << QStringList{} << path(QStringLiteral("quad.obj"))
+                                               << path(QStringLiteral("elsewhere/quad.glb"));
         const QString helmet = QStringLiteral(LIGHTRIG_SHARED_MODELS "/bench/helmet_8spot.glb");
         if (QFile::exists(helmet))
             QTest::newRow("helmet 8 spots")
@@ -166,9 +171,13 @@ class TestExportCli : public QObject {
                                                QStringLiteral("--camera-index"), QStringLiteral("5"),
                                                QStringLiteral("-o"), out}
                                 << 1;
-        QTest::newRow("elsewhere") << QStringList{path(QStringLiteral("Suzanne.gltf")), QStringLiteral("-o"),
-                                                  QDir::tempPath() + QStringLiteral("/lightrig-never.glb")}
+        QTest::newRow("no folder") << QStringList{path(QStringLiteral("Suzanne.gltf")), QStringLiteral("-o"),
+                                                  path(QStringLiteral("none/never.glb"))}
                                    << 1;
+        QTest::newRow("bundled files")
+            << QStringList{QStringLiteral(":/resources/models/suzanne/Suzanne.gltf"), QStringLiteral("-o"),
+                           out}
+            << 1;
         QTest::newRow("no output") << QStringList{path(QStringLiteral("Suzanne.gltf"))} << 2;
         QTest::newRow("suffix") << QStringList{path(QStringLiteral("Suzanne.gltf")), QStringLiteral("-o"),
                                                path(QStringLiteral("x.obj"))}
@@ -184,7 +193,7 @@ class TestExportCli : public QObject {
         QVERIFY2(run.code == code, qPrintable(run.show()));
         QVERIFY2(!run.errorLines().isEmpty(), qPrintable(run.show()));
         QVERIFY(!QFile::exists(path(QStringLiteral("never.glb"))));
-        QVERIFY(!QFile::exists(QDir::tempPath() + QStringLiteral("/lightrig-never.glb")));
+        QVERIFY(!QFile::exists(path(QStringLiteral("none"))));
     }
 };
 

@@ -155,6 +155,33 @@ class TestGltfRewrite : public QObject {
                  bin().left(5)); // byteLength
     }
 
+    void fileUrisAreRebasedToTheOutputFolder() {
+        QCOMPARE(rebaseUri(QStringLiteral("Suzanne.bin"), QStringLiteral("/a/m"), QStringLiteral("/a/out")),
+                 QStringLiteral("../m/Suzanne.bin"));
+        QCOMPARE(rebaseUri(QStringLiteral("tex/my%20map.png"), QStringLiteral("/a/m"), QStringLiteral("/b")),
+                 QStringLiteral("../a/m/tex/my%20map.png"));
+        for (const char* kept : {"data:image/png;base64,AAAA", "https://example.com/a.png", "/abs/a.png"})
+            QCOMPARE(rebaseUri(QLatin1String(kept), QStringLiteral("/a/m"), QStringLiteral("/b")),
+                     QLatin1String(kept));
+        const QByteArray json =
+            R"({"asset":{"version":"2.0"},"buffers":[{"uri":"a.bin","byteLength":4}],)"
+            R"("images":[{"uri":"data:image/png;base64,AAAA"},{"uri":"t.png", "name":"t"}]})";
+        GltfAdditions a = twoLightsAndCamera();
+        a.sourceFolder = QStringLiteral("/a/m");
+        a.outputFolder = QStringLiteral("/a/out");
+        const GltfRewriteResult r = rewriteGltfJson(json, a);
+        QVERIFY2(r.ok(), qPrintable(r.error));
+        const QJsonObject root = parse(r.json);
+        QCOMPARE(root[QStringLiteral("buffers")][0][QStringLiteral("uri")].toString(),
+                 QStringLiteral("../m/a.bin"));
+        QVERIFY(r.json.contains(R"({"uri":"data:image/png;base64,AAAA"})")); // untouched, byte for byte
+        QCOMPARE(root[QStringLiteral("images")][1][QStringLiteral("uri")].toString(),
+                 QStringLiteral("../m/t.png"));
+        QCOMPARE(root[QStringLiteral("images")][1][QStringLiteral("name")].toString(), QStringLiteral("t"));
+        a.outputFolder = a.sourceFolder; // beside the source: nothing to rebase
+        QVERIFY(rewriteGltfJson(json, a).json.contains(R"([{"uri":"a.bin","byteLength":4}])"));
+    }
+
     void lightsOnlyHasNoMeshes() {
         const QJsonObject root = parse(lightsOnlyGltfJson(twoLightsAndCamera()));
         QCOMPARE(root[QStringLiteral("asset")][QStringLiteral("version")].toString(), QStringLiteral("2.0"));
