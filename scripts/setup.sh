@@ -20,6 +20,22 @@ lightrig_install_packages() {
     DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
 }
 
+# The Khronos glTF validator (npm gltf-validator) for the export tests (tests/export), in a cache folder outside
+# the source tree: LIGHTRIG_GLTF_VALIDATOR (the tests read it too; this default otherwise). It needs node and
+# npm: Debian's nodejs and npm are installed only when no node is there (NodeSource's nodejs brings npm).
+export LIGHTRIG_GLTF_VALIDATOR="${LIGHTRIG_GLTF_VALIDATOR:-${XDG_CACHE_HOME:-$HOME/.cache}/lightrig/gltf-validator}"
+LIGHTRIG_GLTF_VALIDATOR_VERSION=2.0.0-dev.3.10
+
+lightrig_install_gltf_validator() {
+    { command -v node && command -v npm; } >/dev/null || lightrig_install_packages nodejs npm
+    [ -f "$LIGHTRIG_GLTF_VALIDATOR/node_modules/gltf-validator/package.json" ] && return 0
+    echo "lightrig: installing gltf-validator@$LIGHTRIG_GLTF_VALIDATOR_VERSION into $LIGHTRIG_GLTF_VALIDATOR" >&2
+    mkdir -p "$LIGHTRIG_GLTF_VALIDATOR"
+    (cd "$LIGHTRIG_GLTF_VALIDATOR" && npm install --no-audit --no-fund --silent \
+        "gltf-validator@$LIGHTRIG_GLTF_VALIDATOR_VERSION" >&2) ||
+        echo "lightrig: could not install gltf-validator; the export validation test will say so" >&2
+}
+
 lightrig_build() {   # lightrig_build PRESET
     local preset="$1"
     cd "$LIGHTRIG_ROOT"

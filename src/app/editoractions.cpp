@@ -6,6 +6,7 @@
 #include "editor/document.h"
 #include "environmentlighttool.h"
 #include "errordialog.h"
+#include "gltfexportdialog.h"
 #include "lightsdock.h"
 #include "mainwindow.h"
 #include "presetsdock.h"
@@ -74,6 +75,7 @@ void EditorActions::createFileMenu() {
         add(tr("&Export screenshot…"), QKeySequence(tr("Ctrl+E")), [this] { exportScreenshotInteractive(); });
     exportTurntable =
         add(tr("Export &turntable…"), QKeySequence(), [this] { exportTurntableInteractive(m_window); });
+    add(tr("Export &glTF…"), QKeySequence(), [this] { exportGltfInteractive(m_window); }); // issue 17
     menu->addSeparator();
     quit = add(tr("&Quit"), QKeySequence::Quit, [this] { m_window->close(); });
     quit->setMenuRole(QAction::QuitRole);

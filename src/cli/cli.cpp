@@ -11,6 +11,7 @@ namespace lr::cli {
 
 int runPrefilter(const QStringList& args); // prefilter.cpp (issue 15)
 int runCompare(const QStringList& args);   // compare.cpp (issue 17)
+int runExport(const QStringList& args);    // export.cpp (issue 17)
 
 namespace {
 bool g_displayAvailable = true;
@@ -27,6 +28,7 @@ const Subcommand kSubcommands[] = {
     {"import-worker", runImportWorker, false}, // hidden: model/isolatedimport.h runs it
     {"prefilter", runPrefilter, false},
     {"compare", runCompare, true},
+    {"export", runExport, false},
 };
 } // namespace
 

@@ -7,6 +7,7 @@
 #include "cli.h"
 
 #include "model/environmentdecode.h"
+#include "model/gltfexport.h"
 #include "model/importprotocol.h"
 #include "model/modelcodec.h"
 #include "model/modelloader.h"
@@ -151,6 +152,21 @@ bool sendShared(int fd, const Model& model) {
     std::_Exit(sent ? Ok : Failed);
 }
 
+// An Assimp export of a model to GLB (model/gltfexport.h), or the error.
+[[noreturn]] void sendGltf(const QString& path) {
+    QString error;
+    const QByteArray glb = assimpGlb(path, &error);
+    bool sent;
+    if (!glb.isEmpty()) {
+        sent = writeFrame(ip::kGltf, glb.constData(), std::size_t(glb.size()));
+    } else {
+        QByteArray payload(1, char(g_allocationFailed ? ip::kErrorOutOfMemory : 0));
+        payload += error.toUtf8().left(ip::kMaxErrorBytes);
+        sent = writeFrame(ip::kError, payload.constData(), std::size_t(payload.size()));
+    }
+    std::_Exit(sent ? Ok : Failed);
+}
+
 [[noreturn]] void testCrash(const QByteArray& mode, int sharedFd) {
     if (mode == "segv") ::raise(SIGSEGV);
     if (mode == "abort") std::abort();
@@ -215,6 +231,7 @@ int runImportWorker(const QStringList&) {
     if (const QByteArray mode = qgetenv(ip::kTestCrashVariable); !mode.isEmpty()) testCrash(mode, sharedFd);
     if (request.value(QStringLiteral("kind")).toString() == QLatin1String("environment"))
         sendEnvironment(path);
+    if (request.value(QStringLiteral("kind")).toString() == QLatin1String("gltf-export")) sendGltf(path);
 
     ModelLoadOptions options;
     options.allowTexturesOutsideFolder =

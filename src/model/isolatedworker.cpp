@@ -104,6 +104,9 @@ class FrameReader {
         case ip::kEnvironment:
             ok = m_length >= quint64(ip::kEnvironmentHeaderSize) && m_length <= quint64(m_maxReplyBytes);
             break;
+        case ip::kGltf:
+            ok = m_length >= 12 && m_length <= quint64(m_maxReplyBytes);
+            break;
         case ip::kShared:
             ok = m_length == sizeof(quint64);
             break;
@@ -139,6 +142,7 @@ class FrameReader {
         case ip::kModel:
         case ip::kShared:
         case ip::kEnvironment:
+        case ip::kGltf:
             m_state = State::Reply;
             break;
         }

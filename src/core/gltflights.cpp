@@ -1,0 +1,283 @@
+#include "gltflights.h"
+
+#include "rigjson.h"
+
+#include <QJsonDocument>
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+#include <numbers>
+
+namespace lr {
+
+const ExportLossInfo kExportLosses[int(ExportLoss::Count)] = {
+    {ExportLoss::ClassicUnits, "classic-units", "Classic intensities",
+     "classic shading has no physical units: intensity × π read as candela (point, spot) or lux "
+     "(directional), which lights a white Lambert surface as the classic light did"},
+    {ExportLoss::Falloff, "falloff", "Falloff",
+     "glTF's inverse-square falloff (with the light's range window, when it has a range), as bright as the "
+     "original at the model's centre"},
+    {ExportLoss::Cone, "cone", "Spot cone", "glTF's smooth cone (exponent 2) with the same outer angle"},
+    {ExportLoss::HalfLambert, "half-lambert", "Half-Lambert diffuse", "Lambert (N·L)"},
+    {ExportLoss::Specular, "specular", "Specular factor", "the light's colour (factor 1)"},
+    {ExportLoss::LightAmbient, "light-ambient", "Light ambient",
+     "nothing (glTF lights have no ambient term)"},
+    {ExportLoss::Rim, "rim", "Rim light", "nothing (glTF has no rim light)"},
+    {ExportLoss::Area, "area", "Area light", "a point (glTF has no area lights)"},
+    {ExportLoss::Shadow, "shadow", "Shadow", "nothing (KHR_lights_punctual lights carry no shadow settings)"},
+    {ExportLoss::Disabled, "disabled", "Switched-off light", "nothing (glTF lights cannot be switched off)"},
+    {ExportLoss::Ambient, "ambient", "Ambient",
+     "a note in extras.lightrig.ambient (glTF has no ambient light)"},
+    {ExportLoss::Environment, "environment", "Environment",
+     "a note in extras.lightrig.environment (glTF has no environment lighting)"},
+    {ExportLoss::Ground, "ground", "Ground", "a note in extras.lightrig.ground (the plane is not exported)"},
+};
+
+const ExportLossInfo& exportLossInfo(ExportLoss kind) {
+    return kExportLosses[int(kind)];
+}
+
+QString describeLoss(const LossyConversion& loss) {
+    const ExportLossInfo& info = exportLossInfo(loss.kind);
+    return QStringLiteral("%1: %2: %3 → %4")
+        .arg(loss.subject, QString::fromUtf8(info.title).toLower(), loss.detail,
+             QString::fromUtf8(info.written));
+}
+
+namespace {
+
+QJsonArray array3(const glm::dvec3& v) {
+    return {v.x, v.y, v.z};
+}
+
+QString num(double v) {
+    return QString::number(v, 'g', 4);
+}
+
+// The falloff's own text for messages: "range-power (range 8, exponent 2)".
+QString falloffText(const Falloff& f) {
+    QString s = toString(f.model);
+    QStringList keys;
+    if (f.model == FalloffModel::InversePolynomial)
+        keys << QStringLiteral("constant %1, linear %2, quadratic %3")
+                    .arg(num(f.constant), num(f.linear), num(f.quadratic));
+    if (f.hasRange()) keys << QStringLiteral("range %1").arg(num(f.range));
+    if (f.model == FalloffModel::RangePower) keys << QStringLiteral("exponent %1").arg(num(f.exponent));
+    return keys.isEmpty() ? s : s + QStringLiteral(" (") + keys.join(QStringLiteral(", ")) + QLatin1Char(')');
+}
+
+// A non-glTF falloff as inverse-square with the light's range: the intensity that gives the original's
+// attenuation at the reference distance (world units), and that distance.
+void convertFalloff(const Rig& rig, const SceneFrame& frame, const Light& l, const glm::dvec3& worldPos,
+                    double intensity, GltfLight& g, std::vector<LossyConversion>& losses) {
+    const Falloff& f = l.falloff;
+    const double s = distanceScale(rig, frame); // rig units per world unit
+    g.range = f.hasRange() ? f.range / s : -1.0;
+    if (f.model == FalloffModel::InverseSquare) {
+        g.intensity = intensity / (s * s); // 1/d² with d in rig units
+        return;
+    }
+    const double radius = frame.radius > 0.0 && std::isfinite(frame.radius) ? frame.radius : 1.0;
+    double dRef = glm::length(worldPos - frame.center);
+    if (g.range > 0.0) dRef = std::min(dRef, 0.5 * g.range);
+    dRef = std::max(dRef, 0.01 * radius);
+    lighting::ShadeLight<double> sl;
+    sl.falloff = f.model;
+    sl.range = f.range, sl.falloffExponent = f.exponent;
+    sl.constant = f.constant, sl.linear = f.linear, sl.quadratic = f.quadratic;
+    const double a = lighting::evalFalloff(sl, dRef * s);
+    const double w = g.range > 0.0 ? lighting::rangeWindow(dRef, g.range) : 1.0;
+    g.intensity = w > 0.0 ? intensity * a * dRef * dRef / w : 0.0;
+    losses.push_back({ExportLoss::Falloff, l.name,
+                      QStringLiteral("%1 at %2 m from the model's centre").arg(falloffText(f), num(dRef))});
+}
+
+void convertCone(const Light& l, GltfLight& g, std::vector<LossyConversion>& losses) {
+    const Cone& c = l.cone;
+    const double outer = glm::radians(std::clamp(c.outer, 0.0, 90.0));
+    double inner = glm::radians(std::clamp(c.inner, 0.0, c.outer));
+    QString was;
+    switch (c.model) {
+    case ConeModel::Smooth:
+        if (c.exponent != 2.0)
+            was = QStringLiteral("smooth %1°/%2°, exponent %3")
+                      .arg(num(c.inner), num(c.outer), num(c.exponent));
+        break;
+    case ConeModel::AnglePower:
+        inner = 0.0;
+        was = QStringLiteral("angle-power %1°, exponent %2").arg(num(c.outer), num(c.exponent));
+        break;
+    case ConeModel::Hard:
+        inner = outer * 0.99;
+        was = QStringLiteral("hard %1° (a 1% soft edge)").arg(num(c.outer));
+        break;
+    }
+    // glTF needs inner < outer: an edge LightRig draws hard (inner = outer) gets the narrowest soft one.
+    if (!(inner < outer * 0.999)) {
+        inner = outer * 0.999;
+        if (was.isEmpty()) was = QStringLiteral("hard edge at %1° (a 0.1% soft edge)").arg(num(c.outer));
+    }
+    g.innerConeAngle = inner;
+    g.outerConeAngle = outer;
+    if (!was.isEmpty()) losses.push_back({ExportLoss::Cone, l.name, was});
+}
+
+// The rig's settings glTF has no place for, as their rig-file JSON (the note in extras.lightrig).
+QJsonObject noteFor(const Rig& rig, double unit) {
+    const QJsonObject file = QJsonDocument::fromJson(writeRigJson(rig)).object();
+    QJsonObject note{{QStringLiteral("generator"), QStringLiteral("LightRig")},
+                     {QStringLiteral("rig"), rig.name},
+                     {QStringLiteral("shading"), toString(rig.shading.model)},
+                     {QStringLiteral("ambientLux"), array3(rig.ambient * unit)}};
+    for (const char* key : {"environment", "ground"})
+        if (file.contains(QLatin1String(key)))
+            note.insert(QLatin1String(key), file.value(QLatin1String(key)));
+    return note;
+}
+
+} // namespace
+
+glm::dquat lookRotation(const glm::dvec3& forward, const glm::dvec3& up) {
+    const glm::dvec3 f = lighting::safeNormalize(forward, glm::dvec3(0, 0, -1));
+    glm::dvec3 right = glm::cross(f, up);
+    if (!(glm::dot(right, right) > 1e-12))
+        right = glm::cross(f, std::abs(f.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, -1));
+    right = glm::normalize(right);
+    const glm::dvec3 trueUp = glm::cross(right, f);
+    return glm::normalize(glm::quat_cast(glm::dmat3(right, trueUp, -f)));
+}
+
+GltfRigExport convertRigToGltf(const Rig& rig, const SceneFrame& frame, const glm::dmat3& fileFromWorld) {
+    GltfRigExport out;
+    const bool classic = rig.shading.model == ShadingModel::Classic;
+    const double unit = classic ? kClassicToPhysical : 1.0;
+    const QString rigSubject = QStringLiteral("rig");
+    if (classic && !rig.lights.empty())
+        out.losses.push_back({ExportLoss::ClassicUnits, rigSubject, QStringLiteral("shading \"classic\"")});
+    for (const Light& l : rig.lights) {
+        if (l.type == LightType::Rim) {
+            out.losses.push_back(
+                {ExportLoss::Rim, l.name, QStringLiteral("exponent %1").arg(num(l.rimExponent))});
+            continue;
+        }
+        if (!l.enabled) {
+            out.losses.push_back({ExportLoss::Disabled, l.name, QStringLiteral("switched off")});
+            continue;
+        }
+        GltfLight g;
+        g.name = l.name;
+        g.type = QString::fromLatin1(traitsOf(l.type).gltfType);
+        const double intensity = l.intensity * unit;
+        g.intensity = intensity;
+        const glm::dvec3 worldPos = rigToWorld(rig, frame, l.position);
+        if (l.usesPosition()) g.translation = fileFromWorld * worldPos;
+        if (l.usesDirection())
+            g.rotation = lookRotation(fileFromWorld * l.direction, fileFromWorld * glm::dvec3(0, 1, 0));
+        if (l.usesFalloff()) convertFalloff(rig, frame, l, worldPos, intensity, g, out.losses);
+        if (l.usesCone()) convertCone(l, g, out.losses);
+        if (l.diffuse == DiffuseModel::HalfLambert)
+            out.losses.push_back({ExportLoss::HalfLambert, l.name, QStringLiteral("half-lambert")});
+        if (l.specularIsColor || l.specular.x != 1.0)
+            out.losses.push_back({ExportLoss::Specular, l.name,
+                                  l.specularIsColor
+                                      ? QStringLiteral("specular colour [%1, %2, %3]")
+                                            .arg(num(l.specular.x), num(l.specular.y), num(l.specular.z))
+                                      : QStringLiteral("specular %1").arg(num(l.specular.x))});
+        if (l.ambient && *l.ambient != glm::dvec3(0.0))
+            out.losses.push_back({ExportLoss::LightAmbient, l.name,
+                                  QStringLiteral("ambient [%1, %2, %3]")
+                                      .arg(num(l.ambient->x), num(l.ambient->y), num(l.ambient->z))});
+        if (l.hasShadow()) {
+            out.losses.push_back({ExportLoss::Shadow, l.name, QStringLiteral("casts a shadow")});
+            if (l.shadow.size > 0.0 || l.shadow.angle > 0.0)
+                out.losses.push_back({ExportLoss::Area, l.name,
+                                      l.shadow.size > 0.0
+                                          ? QStringLiteral("emitter %1 wide").arg(num(l.shadow.size))
+                                          : QStringLiteral("emitter %1° wide").arg(num(l.shadow.angle))});
+        }
+        const glm::dvec3 c = glm::max(l.effectiveColor(), glm::dvec3(0.0));
+        const double m = std::max({c.x, c.y, c.z});
+        g.color = m > 0.0 ? c / m : glm::dvec3(0.0);
+        g.intensity *= m > 0.0 ? m : 1.0;
+        out.lights.push_back(g);
+    }
+    if (rig.ambient != glm::dvec3(0.0))
+        out.losses.push_back({ExportLoss::Ambient, rigSubject,
+                              QStringLiteral("[%1, %2, %3]%4")
+                                  .arg(num(rig.ambient.x), num(rig.ambient.y), num(rig.ambient.z),
+                                       classic ? QStringLiteral(" (× π as lux)") : QString())});
+    const Environment& env = rig.environment;
+    if (env.source != EnvironmentSource::None) {
+        out.losses.push_back({ExportLoss::Environment, rigSubject,
+                              env.source == EnvironmentSource::Image
+                                  ? QStringLiteral("image %1").arg(env.file)
+                                  : QStringLiteral("procedural studio")});
+        if (env.source == EnvironmentSource::Studio && !env.studio.softboxes.empty())
+            out.losses.push_back({ExportLoss::Area, rigSubject,
+                                  QStringLiteral("%1 studio softboxes (in the environment note)")
+                                      .arg(env.studio.softboxes.size())});
+    }
+    if (rig.ground.mode != GroundMode::Off)
+        out.losses.push_back({ExportLoss::Ground, rigSubject, toString(rig.ground.mode)});
+    out.note = noteFor(rig, unit);
+    return out;
+}
+
+GltfCamera makeGltfCamera(const QString& name, const glm::dvec3& eye, const glm::dvec3& forward,
+                          const glm::dvec3& up, double yfovDegrees, double znear, double zfar,
+                          const glm::dmat3& fileFromWorld) {
+    GltfCamera c;
+    c.name = name;
+    c.translation = fileFromWorld * eye;
+    c.rotation = lookRotation(fileFromWorld * forward, fileFromWorld * up);
+    c.yfov = glm::radians(std::clamp(yfovDegrees, 1.0, 170.0));
+    c.znear = znear > 0.0 ? znear : 0.01;
+    c.zfar = zfar;
+    return c;
+}
+
+QJsonObject GltfLight::lightJson() const {
+    QJsonObject o{{QStringLiteral("name"), name},
+                  {QStringLiteral("type"), type},
+                  {QStringLiteral("color"), array3(color)},
+                  {QStringLiteral("intensity"), intensity}};
+    if (range > 0.0) o.insert(QStringLiteral("range"), range);
+    if (type == QLatin1String("spot"))
+        o.insert(QStringLiteral("spot"), QJsonObject{{QStringLiteral("innerConeAngle"), innerConeAngle},
+                                                     {QStringLiteral("outerConeAngle"), outerConeAngle}});
+    return o;
+}
+
+namespace {
+void setTransform(QJsonObject& node, const glm::dvec3& t, const glm::dquat& q) {
+    if (t != glm::dvec3(0.0)) node.insert(QStringLiteral("translation"), array3(t));
+    if (q != glm::dquat(1.0, 0.0, 0.0, 0.0))
+        node.insert(QStringLiteral("rotation"), QJsonArray{q.x, q.y, q.z, q.w});
+}
+} // namespace
+
+QJsonObject GltfLight::nodeJson(int lightIndex) const {
+    QJsonObject node{
+        {QStringLiteral("name"), name},
+        {QStringLiteral("extensions"), QJsonObject{{QStringLiteral("KHR_lights_punctual"),
+                                                    QJsonObject{{QStringLiteral("light"), lightIndex}}}}}};
+    setTransform(node, translation, rotation);
+    return node;
+}
+
+QJsonObject GltfCamera::cameraJson() const {
+    QJsonObject p{{QStringLiteral("yfov"), yfov}, {QStringLiteral("znear"), znear}};
+    if (zfar > znear) p.insert(QStringLiteral("zfar"), zfar);
+    return {{QStringLiteral("name"), name},
+            {QStringLiteral("type"), QStringLiteral("perspective")},
+            {QStringLiteral("perspective"), p}};
+}
+
+QJsonObject GltfCamera::nodeJson(int cameraIndex) const {
+    QJsonObject node{{QStringLiteral("name"), name}, {QStringLiteral("camera"), cameraIndex}};
+    setTransform(node, translation, rotation);
+    return node;
+}
+
+} // namespace lr

@@ -1,0 +1,137 @@
+// GLB chunks, the lights-only file and file URIs (gltfrewrite.h); the JSON rewrite is gltfrewrite.cpp.
+#include "gltfrewrite.h"
+
+#include <QDir>
+#include <QJsonDocument>
+#include <QUrl>
+#include <QtEndian>
+
+namespace lr {
+
+namespace {
+
+constexpr quint32 kGlbMagic = 0x46546C67; // "glTF"
+constexpr quint32 kChunkJson = 0x4E4F534A;
+constexpr quint32 kChunkBin = 0x004E4942;
+const QString kExt = QStringLiteral("KHR_lights_punctual");
+
+quint32 u32(const QByteArray& d, qsizetype at) {
+    return qFromLittleEndian<quint32>(d.constData() + at);
+}
+
+void putU32(QByteArray& d, quint32 v) {
+    char b[4];
+    qToLittleEndian(v, b);
+    d.append(b, 4);
+}
+
+} // namespace
+
+bool isGlb(const QByteArray& data) {
+    return data.size() >= 4 && u32(data, 0) == kGlbMagic;
+}
+
+std::optional<GlbParts> parseGlb(const QByteArray& d, QString* error) {
+    auto fail = [&](const QString& why) {
+        *error = why;
+        return std::nullopt;
+    };
+    if (d.size() < 20) return fail(QStringLiteral("too short for a GLB (%1 bytes)").arg(d.size()));
+    if (u32(d, 0) != kGlbMagic) return fail(QStringLiteral("not a GLB (no \"glTF\" magic)"));
+    if (u32(d, 4) != 2) return fail(QStringLiteral("GLB version %1; only version 2 is read").arg(u32(d, 4)));
+    if (u32(d, 8) != quint64(d.size()))
+        return fail(
+            QStringLiteral("the header claims %1 bytes but the file has %2").arg(u32(d, 8)).arg(d.size()));
+    const quint64 jsonLength = u32(d, 12);
+    if (u32(d, 16) != kChunkJson) return fail(QStringLiteral("the first chunk is not JSON"));
+    if (20 + jsonLength > quint64(d.size()))
+        return fail(QStringLiteral("the JSON chunk claims %1 bytes but %2 remain")
+                        .arg(jsonLength)
+                        .arg(d.size() - 20));
+    if (qint64(jsonLength) > kMaxGltfJsonBytes)
+        return fail(QStringLiteral("the JSON chunk is %1 bytes; at most %2 are read")
+                        .arg(jsonLength)
+                        .arg(kMaxGltfJsonBytes));
+    GlbParts parts;
+    parts.json = d.mid(20, qsizetype(jsonLength));
+    const qsizetype restAt = 20 + qsizetype(jsonLength);
+    parts.rest = d.mid(restAt);
+    for (qsizetype at = restAt; at < d.size();) {
+        if (d.size() - at < 8) return fail(QStringLiteral("a chunk header at byte %1 is cut off").arg(at));
+        const quint64 length = u32(d, at);
+        if (at + 8 + length > quint64(d.size()))
+            return fail(QStringLiteral("the chunk at byte %1 claims %2 bytes but %3 remain")
+                            .arg(at)
+                            .arg(length)
+                            .arg(d.size() - at - 8));
+        if (u32(d, at + 4) == kChunkJson)
+            return fail(QStringLiteral("a second JSON chunk at byte %1").arg(at));
+        if (u32(d, at + 4) == kChunkBin) {
+            if (at != restAt) return fail(QStringLiteral("the BIN chunk is not the second chunk"));
+            parts.bin = d.mid(at + 8, qsizetype(length));
+            parts.hasBin = true;
+        }
+        at += 8 + qsizetype(length);
+    }
+    return parts;
+}
+
+QByteArray writeGlb(const QByteArray& json, const QByteArray& rest) {
+    QByteArray padded = json;
+    while (padded.size() % 4)
+        padded += ' ';
+    QByteArray out;
+    putU32(out, kGlbMagic);
+    putU32(out, 2);
+    putU32(out, quint32(12 + 8 + padded.size() + rest.size()));
+    putU32(out, quint32(padded.size()));
+    putU32(out, kChunkJson);
+    return out + padded + rest;
+}
+
+QByteArray lightsOnlyGltfJson(const GltfAdditions& add) {
+    QJsonObject root{
+        {QStringLiteral("asset"), QJsonObject{{QStringLiteral("version"), QStringLiteral("2.0")},
+                                              {QStringLiteral("generator"), QStringLiteral("LightRig")}}},
+        {QStringLiteral("scene"), 0}};
+    QJsonArray nodes, lights, sceneNodes;
+    for (size_t i = 0; i < add.lights.size(); ++i) {
+        nodes.append(add.lights[i].nodeJson(int(i)));
+        lights.append(add.lights[i].lightJson());
+        sceneNodes.append(int(i));
+    }
+    QJsonObject scene;
+    if (!nodes.isEmpty()) {
+        scene.insert(QStringLiteral("nodes"), sceneNodes);
+        root.insert(QStringLiteral("nodes"), nodes);
+        root.insert(QStringLiteral("extensionsUsed"), QJsonArray{kExt});
+        root.insert(QStringLiteral("extensions"),
+                    QJsonObject{{kExt, QJsonObject{{QStringLiteral("lights"), lights}}}});
+    }
+    root.insert(QStringLiteral("scenes"), QJsonArray{scene});
+    if (!add.note.isEmpty())
+        root.insert(QStringLiteral("extras"), QJsonObject{{QStringLiteral("lightrig"), add.note}});
+    return QJsonDocument(root).toJson(QJsonDocument::Compact);
+}
+
+QString rebaseUri(const QString& uri, const QString& sourceFolder, const QString& outputFolder) {
+    const QUrl url(uri);
+    if (uri.startsWith(QLatin1String("data:")) || !url.scheme().isEmpty() || uri.startsWith(QLatin1Char('/')))
+        return uri;
+    const QString file = QDir(sourceFolder).absoluteFilePath(QUrl::fromPercentEncoding(uri.toUtf8()));
+    const QString moved = QDir(outputFolder).relativeFilePath(QDir::cleanPath(file));
+    return QString::fromUtf8(QUrl::toPercentEncoding(moved, "/"));
+}
+
+QStringList externalUris(const QByteArray& json) {
+    QStringList out;
+    const QJsonObject root = QJsonDocument::fromJson(json).object();
+    for (const char* key : {"buffers", "images"})
+        for (const QJsonValue& v : root.value(QLatin1String(key)).toArray()) {
+            const QString uri = v.toObject().value(QStringLiteral("uri")).toString();
+            if (!uri.isEmpty() && !uri.startsWith(QLatin1String("data:"))) out << uri;
+        }
+    return out;
+}
+
+} // namespace lr

@@ -1,0 +1,196 @@
+// A rig as KHR_lights_punctual (core/gltflights.h): units, angles, positions and directions in the file's
+// frame, ranges, the falloff rule, and which lossy conversions are listed for which lights.
+#include "core/gltflights.h"
+
+#include <QJsonArray>
+#include <QTest>
+#include <glm/gtc/matrix_transform.hpp>
+#include <numbers>
+
+using namespace lr;
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+Light pointLight(const glm::dvec3& position, double intensity, FalloffModel model, double range) {
+    Light l = makeLight(LightType::Point, QStringLiteral("P"));
+    l.position = position;
+    l.intensity = intensity;
+    l.falloff = {model, range};
+    return l;
+}
+
+Rig pbrRig(std::vector<Light> lights, RigSpace space = RigSpace::World) {
+    Rig rig;
+    rig.shading.model = ShadingModel::Pbr;
+    rig.space = space;
+    rig.lights = std::move(lights);
+    return rig;
+}
+
+int count(const GltfRigExport& e, ExportLoss kind) {
+    return int(std::count_if(e.losses.begin(), e.losses.end(),
+                             [&](const LossyConversion& l) { return l.kind == kind; }));
+}
+
+bool near(const glm::dvec3& a, const glm::dvec3& b, double eps = 1e-9) {
+    return glm::length(a - b) <= eps;
+}
+
+} // namespace
+
+class TestGltfLights : public QObject {
+    Q_OBJECT
+  private slots:
+    void lossTableHasOneRowPerKind() {
+        for (int i = 0; i < int(ExportLoss::Count); ++i) {
+            QCOMPARE(int(kExportLosses[i].kind), i);
+            QVERIFY(kExportLosses[i].key && *kExportLosses[i].key);
+            QVERIFY(kExportLosses[i].title && *kExportLosses[i].written);
+        }
+    }
+
+    void physicalWorldPointIsExact() {
+        Light l = pointLight({1, 2, 3}, 10.0, FalloffModel::InverseSquare, 5.0);
+        l.color = {2.0, 1.0, 0.5};
+        const GltfRigExport e = convertRigToGltf(pbrRig({l}), {});
+        QCOMPARE(e.lights.size(), size_t(1));
+        const GltfLight& g = e.lights[0];
+        QCOMPARE(g.type, QStringLiteral("point"));
+        QVERIFY(near(g.color, {1.0, 0.5, 0.25}));
+        QCOMPARE(g.intensity, 20.0); // the colour's scale moves into the intensity
+        QCOMPARE(g.range, 5.0);
+        QVERIFY(near(g.translation, {1, 2, 3}));
+        QVERIFY(e.losses.empty());
+        const QJsonObject json = g.lightJson();
+        QCOMPARE(json.value(QStringLiteral("intensity")).toDouble(), 20.0);
+        QCOMPARE(json.value(QStringLiteral("range")).toDouble(), 5.0);
+        QVERIFY(!json.contains(QStringLiteral("spot")));
+    }
+
+    void modelSpaceScalesPositionRangeAndCandela() {
+        // Three radii in front of a sphere of radius 2 at (1, 0, 0); 1/d² in radii is R²/d² in metres.
+        const Light l = pointLight({0, 0, 3}, 4.0, FalloffModel::InverseSquare, 8.0);
+        const GltfRigExport e = convertRigToGltf(pbrRig({l}, RigSpace::Model), {{1, 0, 0}, 2.0});
+        const GltfLight& g = e.lights.at(0);
+        QVERIFY(near(g.translation, {1, 0, 6}));
+        QCOMPARE(g.range, 16.0);
+        QCOMPARE(g.intensity, 16.0);
+    }
+
+    void spotAnglesAndDirection() {
+        Light l = makeLight(LightType::Spot, QStringLiteral("S"));
+        l.falloff = {FalloffModel::InverseSquare, -1.0};
+        l.direction = glm::normalize(glm::dvec3(1, -1, 0));
+        l.cone = {ConeModel::Smooth, 20.0, 35.0, 2.0};
+        const GltfRigExport e = convertRigToGltf(pbrRig({l}), {});
+        const GltfLight& g = e.lights.at(0);
+        QCOMPARE(g.type, QStringLiteral("spot"));
+        QVERIFY(std::abs(g.innerConeAngle - 20.0 * kPi / 180.0) < 1e-12);
+        QVERIFY(std::abs(g.outerConeAngle - 35.0 * kPi / 180.0) < 1e-12);
+        QVERIFY(near(g.rotation * glm::dvec3(0, 0, -1), l.direction, 1e-12)); // glTF lights shine along -Z
+        QCOMPARE(g.range, -1.0);
+        QVERIFY(!g.lightJson().contains(QStringLiteral("range")));
+        QVERIFY(e.losses.empty());
+    }
+
+    void classicIntensityTimesPi() {
+        Rig rig;
+        Light sun = makeLight(LightType::Directional, QStringLiteral("Sun"));
+        sun.intensity = 2.0;
+        rig.lights = {sun, sun};
+        const GltfRigExport e = convertRigToGltf(rig, {});
+        QCOMPARE(e.lights.at(0).intensity, 2.0 * kPi);   // lux
+        QCOMPARE(count(e, ExportLoss::ClassicUnits), 1); // once for the rig
+    }
+
+    void otherFalloffMatchesAtTheModelCentre() {
+        // range-power, range 10, exponent 2, 4 m from the centre: glTF's I·window/d² there equals LightRig's.
+        const Light l = pointLight({0, 0, 4}, 3.0, FalloffModel::RangePower, 10.0);
+        const GltfRigExport e = convertRigToGltf(pbrRig({l}), {{0, 0, 0}, 1.0});
+        const GltfLight& g = e.lights.at(0);
+        QCOMPARE(g.range, 10.0);
+        const double r = 0.4, window = (1 - r * r * r * r) * (1 - r * r * r * r);
+        QVERIFY(std::abs(g.intensity * window / 16.0 - 3.0 * 0.36) < 1e-12);
+        QCOMPARE(count(e, ExportLoss::Falloff), 1);
+    }
+
+    void lossesPerLight() {
+        Light rim = makeLight(LightType::Rim, QStringLiteral("Rim"));
+        Light off = pointLight({0, 1, 0}, 1.0, FalloffModel::InverseSquare, -1.0);
+        off.enabled = false;
+        Light soft = pointLight({0, 1, 0}, 1.0, FalloffModel::InverseSquare, -1.0);
+        soft.diffuse = DiffuseModel::HalfLambert;
+        soft.specular = glm::dvec3(0.5);
+        soft.ambient = glm::dvec3(0.1);
+        soft.shadow = {.enabled = true, .size = 0.2};
+        Light hard = makeLight(LightType::Spot, QStringLiteral("Hard"));
+        hard.falloff = {FalloffModel::InverseSquare, -1.0};
+        hard.cone = {ConeModel::Hard, 30.0, 30.0, 1.0};
+        Light power = hard;
+        power.cone = {ConeModel::AnglePower, 20.0, 40.0, 1.0};
+        const GltfRigExport e = convertRigToGltf(pbrRig({rim, off, soft, hard, power}), {});
+        QCOMPARE(e.lights.size(), size_t(3)); // no rim, nothing switched off
+        for (ExportLoss k :
+             {ExportLoss::Rim, ExportLoss::Disabled, ExportLoss::HalfLambert, ExportLoss::Specular,
+              ExportLoss::LightAmbient, ExportLoss::Shadow, ExportLoss::Area})
+            QVERIFY2(count(e, k) == 1, exportLossInfo(k).key);
+        QCOMPARE(count(e, ExportLoss::Cone), 2);
+        QCOMPARE(count(e, ExportLoss::Falloff), 0);
+        const GltfLight& h = e.lights[1];
+        QVERIFY(h.innerConeAngle < h.outerConeAngle); // glTF needs inner < outer
+        QVERIFY(h.innerConeAngle > 0.98 * h.outerConeAngle);
+        QCOMPARE(e.lights[2].innerConeAngle, 0.0);
+        for (const LossyConversion& loss : e.losses)
+            QVERIFY(describeLoss(loss).startsWith(loss.subject + QStringLiteral(": ")));
+    }
+
+    void rigLevelLossesAndNote() {
+        Rig rig = pbrRig({});
+        rig.ambient = glm::dvec3(0.25);
+        rig.environment.source = EnvironmentSource::Studio;
+        rig.environment.studio.softboxes = {Softbox{}, Softbox{}};
+        rig.ground.mode = GroundMode::Catcher;
+        const GltfRigExport e = convertRigToGltf(rig, {});
+        for (ExportLoss k :
+             {ExportLoss::Ambient, ExportLoss::Environment, ExportLoss::Area, ExportLoss::Ground})
+            QVERIFY2(count(e, k) == 1, exportLossInfo(k).key);
+        QCOMPARE(count(e, ExportLoss::ClassicUnits), 0);
+        QCOMPARE(
+            e.note.value(QStringLiteral("environment")).toObject().value(QStringLiteral("source")).toString(),
+            QStringLiteral("studio"));
+        QCOMPARE(e.note.value(QStringLiteral("ambientLux")).toArray().at(0).toDouble(), 0.25);
+        QVERIFY(e.note.contains(QStringLiteral("ground")));
+    }
+
+    void fileFrameUndoesTheEditorsRotation() {
+        // The editor turned a Z-up file Y-up (x, y, z) -> (x, z, -y); the export turns it back.
+        const glm::dmat3 worldFromFile(glm::dvec3(1, 0, 0), glm::dvec3(0, 0, -1), glm::dvec3(0, 1, 0));
+        Light l = makeLight(LightType::Spot, QStringLiteral("S"));
+        l.falloff = {FalloffModel::InverseSquare, -1.0};
+        l.position = worldFromFile * glm::dvec3(1, 2, 3);
+        l.direction = worldFromFile * glm::dvec3(0, 0, -1);
+        const GltfRigExport e = convertRigToGltf(pbrRig({l}), {}, glm::transpose(worldFromFile));
+        QVERIFY(near(e.lights.at(0).translation, {1, 2, 3}, 1e-12));
+        QVERIFY(near(e.lights[0].rotation * glm::dvec3(0, 0, -1), {0, 0, -1}, 1e-12));
+    }
+
+    void cameraLooksAlongItsView() {
+        const GltfCamera front =
+            makeGltfCamera(QStringLiteral("c"), {0, 0, 5}, {0, 0, -1}, {0, 1, 0}, 45.0, 0.1, 100.0);
+        QVERIFY(near(front.rotation * glm::dvec3(0, 0, -1), {0, 0, -1}, 1e-12));
+        QVERIFY(!front.nodeJson(0).contains(QStringLiteral("rotation")));
+        const GltfCamera side =
+            makeGltfCamera(QStringLiteral("c"), {-5, 1, 0}, {1, 0, 0}, {0, 1, 0}, 30.0, 0.1, 0.0);
+        QVERIFY(near(side.rotation * glm::dvec3(0, 0, -1), {1, 0, 0}, 1e-12));
+        QVERIFY(near(side.rotation * glm::dvec3(0, 1, 0), {0, 1, 0}, 1e-12));
+        QVERIFY(std::abs(side.yfov - kPi / 6.0) < 1e-12);
+        const QJsonObject p = side.cameraJson().value(QStringLiteral("perspective")).toObject();
+        QVERIFY(!p.contains(QStringLiteral("zfar"))); // infinite
+        QCOMPARE(p.value(QStringLiteral("znear")).toDouble(), 0.1);
+    }
+};
+
+QTEST_APPLESS_MAIN(TestGltfLights)
+#include "tst_gltflights.moc"
