@@ -9,7 +9,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 if [ -z "${DISPLAY:-}" ] && [ -z "${CATALOG_THROUGHPUT_XVFB:-}" ]; then
-    CATALOG_THROUGHPUT_XVFB=1 exec xvfb-run -a "$0" "$@"
+    CATALOG_THROUGHPUT_XVFB=1 exec xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" "$0" "$@"
 fi
 build=${LIGHTRIG_BUILD:-$root/build/dev}
 lightrig=$build/lightrig
