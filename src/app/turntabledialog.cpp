@@ -1,5 +1,7 @@
 #include "turntabledialog.h"
 
+#include "render/imagefile.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -18,11 +20,9 @@
 namespace lr {
 
 namespace {
+// "PNG" or "JPEG" (the screenshot options' spelling) by the suffix, or empty.
 QByteArray formatOf(const QString& path) {
-    const QString suffix = QFileInfo(path).suffix().toLower();
-    if (suffix == QLatin1String("png")) return "PNG";
-    if (suffix == QLatin1String("jpg") || suffix == QLatin1String("jpeg")) return "JPEG";
-    return {};
+    return writableImageFormatOf(path).toUpper();
 }
 } // namespace
 

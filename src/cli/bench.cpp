@@ -140,17 +140,8 @@ int runBench(const QStringList& args) {
                                  QStringLiteral("Model files (default: the standard suite)."),
                                  QStringLiteral("[MODEL...]"));
 
-    auto usage = [&](const QString& message) {
-        err << name << ": " << message << "\nUsage: " << kUsage << "\nTry '" << name << " --help'.\n";
-        return int(Usage);
-    };
-    if (!parser.parse(args)) return usage(parser.errorText());
-    if (parser.isSet(help)) {
-        QString text = parser.helpText();
-        text.replace(0, text.indexOf(QLatin1Char('\n')), QStringLiteral("Usage: ") + QLatin1String(kUsage));
-        out << text;
-        return Ok;
-    }
+    const CommandUsage usage{name, kUsage, out, err};
+    if (const std::optional<int> done = usage.parse(parser, args, help)) return *done;
     QString message;
     const std::optional<SceneOptions> sceneOptions = scene.read(parser, &message, true);
     if (!sceneOptions) return usage(message);

@@ -2,6 +2,7 @@
 
 #include "sceneoptions.h"
 
+#include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QGuiApplication>
 #include <QTextStream>
@@ -31,6 +32,21 @@ const Subcommand kSubcommands[] = {
     {"export", runExport, false},
 };
 } // namespace
+
+int CommandUsage::operator()(const QString& message) const {
+    err << name << ": " << message << "\nUsage: " << line << "\nTry '" << name << " --help'.\n";
+    return Usage;
+}
+
+std::optional<int> CommandUsage::parse(QCommandLineParser& parser, const QStringList& args,
+                                       const QCommandLineOption& help) const {
+    if (!parser.parse(args)) return (*this)(parser.errorText());
+    if (!parser.isSet(help)) return std::nullopt;
+    QString text = parser.helpText();
+    text.replace(0, text.indexOf(QLatin1Char('\n')), QStringLiteral("Usage: ") + QLatin1String(line));
+    out << text;
+    return Ok;
+}
 
 bool displayAvailable() {
     return g_displayAvailable;

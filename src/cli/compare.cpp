@@ -18,11 +18,11 @@
 
 #include "core/imagecompare.h"
 #include "core/rigjson.h"
+#include "render/imagefile.h"
 #include "render/offscreen.h"
 #include "render/qualitybench.h"
 
 #include <QCommandLineParser>
-#include <QFileInfo>
 #include <QPainter>
 #include <QTextStream>
 #include <cmath>
@@ -36,13 +36,6 @@ const char* kUsage = "lightrig compare MODEL A.json B.json [-o DIFF.png] [--ampl
                      "[--side-by-side OUT.png] [--size WxH] [--camera-index N | --view NAME] [--quality Q] "
                      "[--supersample N] [--exposure EV] [--tonemap OP] [--shading classic|pbr] "
                      "[--ground off|visible|catcher] [--shadows on|off] [--environment ...]";
-
-QByteArray formatFor(const QString& path) {
-    const QString suffix = QFileInfo(path).suffix().toLower();
-    if (suffix == QLatin1String("png")) return "png";
-    if (suffix == QLatin1String("jpg") || suffix == QLatin1String("jpeg")) return "jpeg";
-    return {};
-}
 
 struct Output {
     const QCommandLineOption* option;
@@ -105,17 +98,8 @@ int runCompare(const QStringList& args) {
     parser.addPositionalArgument(QStringLiteral("A.json"), QStringLiteral("The first rig."));
     parser.addPositionalArgument(QStringLiteral("B.json"), QStringLiteral("The second rig."));
 
-    auto usage = [&](const QString& message) {
-        err << name << ": " << message << "\nUsage: " << kUsage << "\nTry '" << name << " --help'.\n";
-        return int(Usage);
-    };
-    if (!parser.parse(args)) return usage(parser.errorText());
-    if (parser.isSet(help)) {
-        QString text = parser.helpText();
-        text.replace(0, text.indexOf(QLatin1Char('\n')), QStringLiteral("Usage: ") + QLatin1String(kUsage));
-        out << text;
-        return Ok;
-    }
+    const CommandUsage usage{name, kUsage, out, err};
+    if (const std::optional<int> done = usage.parse(parser, args, help)) return *done;
     const QStringList positional = parser.positionalArguments();
     if (positional.size() != 3)
         return usage(QStringLiteral("needs MODEL A.json B.json, got %1 argument(s)").arg(positional.size()));
@@ -127,7 +111,7 @@ int runCompare(const QStringList& args) {
     for (const QCommandLineOption* o : {&output, &imageA, &imageB, &sideBySide}) {
         if (!parser.isSet(*o)) continue;
         const QString path = parser.value(*o);
-        const QByteArray format = formatFor(path);
+        const QByteArray format = writableImageFormatOf(path);
         if (format.isEmpty())
             return usage(
                 QStringLiteral("--%1 must end in .png, .jpg or .jpeg: '%2'").arg(o->names().last(), path));

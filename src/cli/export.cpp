@@ -90,17 +90,8 @@ int runExport(const QStringList& args) {
     parser.addOptions({help, output, rig, shading, cameraIndex, view, lightsOnly});
     parser.addPositionalArgument(QStringLiteral("MODEL"),
                                  QStringLiteral("A model file (glTF, GLB, or any Assimp reads)."));
-    auto usage = [&](const QString& message) {
-        err << name << ": " << message << "\nUsage: " << kUsage << "\nTry '" << name << " --help'.\n";
-        return int(Usage);
-    };
-    if (!parser.parse(args)) return usage(parser.errorText());
-    if (parser.isSet(help)) {
-        QString text = parser.helpText();
-        text.replace(0, text.indexOf(QLatin1Char('\n')), QStringLiteral("Usage: ") + QLatin1String(kUsage));
-        out << text;
-        return Ok;
-    }
+    const CommandUsage usage{name, kUsage, out, err};
+    if (const std::optional<int> done = usage.parse(parser, args, help)) return *done;
     const QStringList positional = parser.positionalArguments();
     if (positional.size() != 1 || positional.first().isEmpty())
         return usage(positional.isEmpty() ? QStringLiteral("no MODEL given")

@@ -15,6 +15,8 @@
 #include "renderrun.h"
 #include "sceneoptions.h"
 
+#include "render/imagefile.h"
+
 #include <QCommandLineParser>
 #include <QFileInfo>
 #include <QTextStream>
@@ -29,14 +31,6 @@ const char* kUsage =
     "--view NAME[,NAME...]] [--turntable N [--rotate camera|lights]] [--summary FILE|-] [--quality Q] "
     "[--supersample N] [--transparent] [--exposure EV] [--tonemap clamp|reinhard|aces] "
     "[--shading classic|pbr] [--ground off|visible|catcher] [--shadows on|off]";
-
-// The image format for the output's suffix, or empty.
-QByteArray formatFor(const QString& path) {
-    const QString suffix = QFileInfo(path).suffix().toLower();
-    if (suffix == QLatin1String("png")) return "png";
-    if (suffix == QLatin1String("jpg") || suffix == QLatin1String("jpeg")) return "jpeg";
-    return {};
-}
 
 } // namespace
 
@@ -97,17 +91,8 @@ int runRender(const QStringList& args) {
                                  QStringLiteral("Model files Assimp reads (glTF, OBJ, FBX, ...)."),
                                  QStringLiteral("MODEL..."));
 
-    auto usage = [&](const QString& message) {
-        err << name << ": " << message << "\nUsage: " << kUsage << "\nTry '" << name << " --help'.\n";
-        return int(Usage);
-    };
-    if (!parser.parse(args)) return usage(parser.errorText());
-    if (parser.isSet(help)) {
-        QString text = parser.helpText();
-        text.replace(0, text.indexOf(QLatin1Char('\n')), QStringLiteral("Usage: ") + QLatin1String(kUsage));
-        out << text;
-        return Ok;
-    }
+    const CommandUsage usage{name, kUsage, out, err};
+    if (const std::optional<int> done = usage.parse(parser, args, help)) return *done;
     RenderRequest request;
     request.models = parser.positionalArguments();
     if (request.models.isEmpty()) return usage(QStringLiteral("no MODEL given"));
@@ -116,7 +101,7 @@ int runRender(const QStringList& args) {
         return usage(QStringLiteral("-o OUT is required"));
     request.output = parser.value(output);
     request.outputIsFolder = request.output.endsWith(QLatin1Char('/')) || QFileInfo(request.output).isDir();
-    request.format = request.outputIsFolder ? QByteArray("png") : formatFor(request.output);
+    request.format = request.outputIsFolder ? QByteArray("png") : writableImageFormatOf(request.output);
     if (request.format.isEmpty())
         return usage(QStringLiteral("the output must end in .png, .jpg or .jpeg: %1").arg(request.output));
     QString message;

@@ -14,6 +14,11 @@ QByteArray imageFormatOf(const QString& path) {
     return suffix == "jpg" ? QByteArrayLiteral("jpeg") : suffix;
 }
 
+QByteArray writableImageFormatOf(const QString& path) {
+    const QByteArray f = imageFormatOf(path);
+    return f == "png" || f == "jpeg" ? f : QByteArray();
+}
+
 QByteArray encodeImage(const QImage& image, const QByteArray& format, QString* error) {
     const QByteArray f = format.toLower() == "jpg" ? QByteArrayLiteral("jpeg") : format.toLower();
     if (image.isNull()) {

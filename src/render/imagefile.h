@@ -15,6 +15,9 @@ namespace lr {
 // suffix. Empty bytes and *error set when the image cannot be encoded.
 QByteArray encodeImage(const QImage& image, const QByteArray& format, QString* error);
 QByteArray imageFormatOf(const QString& path); // "png", "jpeg", or the suffix in lower case
+// "png" or "jpeg" when PATH's suffix (.png, .jpg, .jpeg, any case) names a format encodeImage writes; else
+// "".
+QByteArray writableImageFormatOf(const QString& path);
 
 // "" when PATH holds the image; else the reason ("no space left on device", "cancelled"), PATH unchanged.
 // Cancel as writeFileAtomically. Thread-safe.
