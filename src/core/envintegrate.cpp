@@ -615,11 +615,12 @@ Estimate EnvironmentField::integrate(const lighting::Surface<double>& s,
             int points = 0;
             bool converged = false;
             for (int b = 0; b < batches; ++b) {
-                for (int k = 0; k < replicates; ++k)
+                for (int rep = 0; rep < replicates; ++rep)
                     for (int i = points; i < points + perBatch; ++i) {
                         std::array<double, 6> u;
                         for (int j = 0; j < 6; ++j) {
-                            const double x = shift[size_t(k)][size_t(j)] + double(i + 1) * kAlpha[size_t(j)];
+                            const double x =
+                                shift[size_t(rep)][size_t(j)] + double(i + 1) * kAlpha[size_t(j)];
                             u[size_t(j)] = std::min(x - std::floor(x), 0x1.fffffffffffffp-1);
                         }
                         V y(0.0);
@@ -634,7 +635,7 @@ Estimate EnvironmentField::integrate(const lighting::Surface<double>& s,
                         denom = imagePdf(tl) + lobePdf(wl);
                         if (denom > 0.0 && !(window && inWindow(*window, tl)))
                             y += integrand(wl, texel(tl % m_width, tl / m_width)) / denom;
-                        sums[size_t(k)] += y;
+                        sums[size_t(rep)] += y;
                     }
                 points += perBatch;
                 V total(0.0), sq(0.0);

@@ -36,8 +36,8 @@ void setEquirectParameters(QOpenGLFunctions_3_3_Core* gl, int maxLevel) {
 }
 
 // RGBA half floats packed here (or RGBA floats above half's range), in the layout the driver keeps: Mesa
-// stored GL_RGB16F from GL_FLOAT by converting texel by texel through its generic path, 0.25-0.65 s of the
-// first frame for the chain alone on llvmpipe; a matching format is a copy.
+// stored GL_RGB16F from GL_FLOAT by converting texel by texel through its generic path (0.65 s of the first
+// frame for the chain and the irradiance map on llvmpipe at load 6-8); a matching format is a copy.
 void upload(QOpenGLFunctions_3_3_Core* gl, int level, const EnvironmentImage& image, bool half) {
     // Row 0 of the image is the top (+Y): uploaded first, it is t = 0, so t = v of core's mapping.
     const size_t n = image.texels.size();
@@ -134,7 +134,6 @@ bool EnvironmentGl::update(QOpenGLFunctions_3_3_Core* gl, const std::shared_ptr<
     upload(gl, 0, p.irradiance, !(maxValue(p.irradiance) > kHalfMax));
     setEquirectParameters(gl, 0);
     if (!m_dfg) {
-
         gl->glGenTextures(1, &m_dfg);
         gl->glBindTexture(GL_TEXTURE_2D, m_dfg);
         gl->glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB16F, envbrdf::kDfgTableSize, envbrdf::kDfgTableSize, 0,
