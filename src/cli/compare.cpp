@@ -162,6 +162,8 @@ int runCompare(const QStringList& args) {
     for (int i = 0; i < 2; ++i) {
         SceneOptions o = *options;
         o.rigPath = rigPaths[i];
+        if (i == 1)
+            loaded[1].environment = loaded[0].environment; // kept when B's is the same (loadCliEnvironment)
         if (!loadSceneRig(modelPath, o, &loaded[i], &message))
             return failed(i == 0 ? message : QStringLiteral("rig B: %1").arg(message));
     }

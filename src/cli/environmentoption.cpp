@@ -107,6 +107,7 @@ QString environmentFolder(const QString& rigPath) {
 
 bool loadCliEnvironment(const Environment& environment, const QString& rigFolder,
                         std::shared_ptr<const LoadedEnvironment>* loaded, QString* error) {
+    if (*loaded && !environment.isNone() && environmentServes(**loaded, environment, rigFolder)) return true;
     loaded->reset();
     if (environment.isNone()) return true;
     EnvironmentLoadResult r = loadEnvironment(environment, rigFolder);

@@ -43,7 +43,8 @@ void applyEnvironmentOverrides(Environment& environment, const EnvironmentOverri
 QString environmentFolder(const QString& rigPath);
 
 // Decodes and prefilters the environment (render/environmentloader.h). *loaded stays null for source none.
-// False with the loader's reason, which names the file, on failure.
+// False with the loader's reason, which names the file, on failure. An environment *loaded already holds is
+// kept when it serves (environmentServes): render's catalogs load a rig's environment once, not per model.
 bool loadCliEnvironment(const Environment& environment, const QString& rigFolder,
                         std::shared_ptr<const LoadedEnvironment>* loaded, QString* error);
 

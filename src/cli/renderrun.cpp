@@ -11,6 +11,7 @@
 #include <QTextStream>
 #include <algorithm>
 #include <ctime>
+#include <map>
 #include <memory>
 #include <utility>
 
@@ -60,6 +61,9 @@ class Runner {
     std::shared_ptr<const Model> uploaded; // the model gl draws
     QString glError;                       // why gl could not be created
     bool warnedJpeg = false;
+    // Each rig's environment as last loaded (by rig index; -1 the default rig): offered to the next model's
+    // loadSceneRig, which keeps it when it serves, so a catalog decodes and prefilters it once.
+    std::map<int, std::shared_ptr<const LoadedEnvironment>> environments;
 };
 
 void Runner::fail(size_t begin, size_t end, const QString& reason) {
@@ -131,9 +135,12 @@ void Runner::renderModel(size_t begin, size_t end) {
         SceneOptions options = r.options;
         if (items[rigBegin].rig >= 0) options.rigPath = r.rigs.value(items[rigBegin].rig);
         LoadedScene withRig = base;
+        std::shared_ptr<const LoadedEnvironment>& environment = environments[items[rigBegin].rig];
+        withRig.environment = environment;
         if (!loadSceneRig(modelPath, options, &withRig, &message)) {
             fail(rigBegin, rigEnd, message);
         } else {
+            environment = withRig.environment;
             for (size_t viewBegin = rigBegin; viewBegin < rigEnd;) {
                 const size_t viewEnd =
                     runEnd(items, viewBegin, rigEnd, [](const RenderItem& item) { return item.view; });

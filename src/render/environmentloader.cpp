@@ -16,6 +16,11 @@ QString resolveEnvironmentFile(const QString& file, const QString& rigFolder) {
         QDir(rigFolder.isEmpty() ? QDir::currentPath() : rigFolder).absoluteFilePath(file));
 }
 
+bool environmentServes(const LoadedEnvironment& loaded, const Environment& spec, const QString& rigFolder) {
+    return loaded.spec.sameRadiance(spec) && (spec.source != EnvironmentSource::Image ||
+                                              loaded.source == resolveEnvironmentFile(spec.file, rigFolder));
+}
+
 EnvironmentLoadResult loadEnvironment(const Environment& spec, const QString& rigFolder) {
     EnvironmentLoadResult r;
     if (spec.source == EnvironmentSource::None) return r;

@@ -31,6 +31,10 @@ struct EnvironmentLoadResult {
 // for a rig that was never saved).
 EnvironmentLoadResult loadEnvironment(const Environment& spec, const QString& rigFolder);
 
+// Whether `loaded` is what loadEnvironment(spec, rigFolder) would give: the same radiance from the same
+// resolved file (intensity, rotation, background and blur are the renderer's uniforms, never loaded).
+bool environmentServes(const LoadedEnvironment& loaded, const Environment& spec, const QString& rigFolder);
+
 // Where Environment::file points: "builtin:NAME" and "" as they are, an absolute path cleaned, a relative
 // one resolved against `rigFolder` (the current folder when empty).
 QString resolveEnvironmentFile(const QString& file, const QString& rigFolder);

@@ -6,6 +6,7 @@
 #include "core/rigjson.h"
 
 #include <QDir>
+#include <QFile>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -42,6 +43,7 @@ class TestEnvironmentOption : public QObject {
     void folders();
     void sceneCarriesTheEnvironmentToTheRenderer();
     void loadErrorsNameTheFile();
+    void loadedEnvironmentServesAgain();
     void validateChecksTheEnvironment();
 };
 
@@ -201,6 +203,35 @@ void TestEnvironmentOption::loadErrorsNameTheFile() {
         {QStringLiteral("--rig"), rigPath, QStringLiteral("--environment"), QStringLiteral("none")}, &error);
     QVERIFY2(loadScene(suzanne(), *options, &scene, &error), qPrintable(error));
     QVERIFY(!scene.environment);
+}
+
+// An environment loaded already is kept for the same radiance from the same file (intensity and rotation
+// are uniforms), and loaded anew for other radiance, another file, or the same relative name elsewhere.
+void TestEnvironmentOption::loadedEnvironmentServesAgain() {
+    const QString data = QFINDTESTDATA("../data/environment/tiny.hdr");
+    QVERIFY(!data.isEmpty());
+    QTemporaryDir a, b;
+    QVERIFY(QFile::copy(data, a.filePath(QStringLiteral("sky.hdr"))) &&
+            QFile::copy(data, b.filePath(QStringLiteral("sky.hdr"))));
+    Environment e;
+    e.source = EnvironmentSource::Image;
+    e.file = QStringLiteral("sky.hdr");
+    QString error;
+    std::shared_ptr<const LoadedEnvironment> loaded;
+    QVERIFY2(loadCliEnvironment(e, a.path(), &loaded, &error), qPrintable(error));
+    const auto first = loaded;
+    QVERIFY(first);
+    e.intensity = 2.0, e.rotation = 90.0;
+    QVERIFY2(loadCliEnvironment(e, a.path(), &loaded, &error), qPrintable(error));
+    QVERIFY(loaded == first); // served again: no second decode or prefilter
+    QVERIFY2(loadCliEnvironment(e, b.path(), &loaded, &error), qPrintable(error));
+    QVERIFY(loaded && loaded != first); // the same name in another folder is another file
+    const auto second = loaded;
+    e.spots.push_back(EnvironmentSpot{});
+    QVERIFY2(loadCliEnvironment(e, b.path(), &loaded, &error), qPrintable(error));
+    QVERIFY(loaded && loaded != second); // dimmed spots change the radiance
+    e.source = EnvironmentSource::None;
+    QVERIFY(loadCliEnvironment(e, b.path(), &loaded, &error) && !loaded);
 }
 
 // `lightrig validate`'s check: a studio loads; an image that does not is an error at environment.file.
