@@ -1,6 +1,7 @@
 // Gizmo fragments: parts hidden by the model (scene depth) are drawn faint, not dropped, so a light
 // behind the model can still be found and picked. Point sprites draw the light icons:
-// shape 0 point (disc), 1 spot (disc with a ring), 2 directional (sun with rays), 3 rim (hollow ring);
+// shape 0 point (disc), 1 spot (disc with a ring), 2 directional (sun with rays), 3 rim (hollow ring),
+// 4 rect (square), 5 disk (disc in a square frame);
 // +8: selected (white outline). Lines of shape 16 (kGridShape, gizmos.h) are the ground grid: hidden parts
 // are dropped (the model occludes its ground) and the grid fades out with distance from the eye between
 // uGridFade.x and uGridFade.y, as Blender's does.
@@ -29,6 +30,9 @@ void main() {
             inside = r < 0.45 || (r < 0.85 && abs(fract(angle * 8.0 / 6.2831853) - 0.5) > 0.32);
         } else if (shape == 3) {
             inside = r > 0.45 && r < 0.8;
+        } else if (shape == 4 || shape == 5) {
+            float box = max(abs(p.x), abs(p.y));
+            inside = shape == 4 ? box < 0.55 : (r < 0.4 || (box > 0.5 && box < 0.62));
         } else if (shape == 1) {
             inside = r < 0.35 || (r > 0.55 && r < 0.8);
         } else {

@@ -14,7 +14,7 @@
 namespace lr {
 
 // The viewport's point sprite for a light (shaders/gizmo.frag's shape index; +8 when selected).
-enum class GizmoShape { Disc = 0, RingedDisc = 1, Sun = 2, HollowRing = 3 };
+enum class GizmoShape { Disc = 0, RingedDisc = 1, Sun = 2, HollowRing = 3, Square = 4, FramedDisc = 5 };
 
 struct LightTypeTraits {
     LightType type;
@@ -26,8 +26,14 @@ struct LightTypeTraits {
     bool usesCone;
     bool usesSurfaceModels; // diffuse, specular, ambient
     bool usesRimExponent;
-    bool boundable;        // a falloff range can bound its reach (culling, clustered shading)
-    bool castsShadows;     // Light::shadow applies (a map of its own: perspective, orthographic or cube)
+    bool boundable;    // a falloff range can bound its reach (culling, clustered shading)
+    bool castsShadows; // Light::shadow applies (a map of its own: perspective, orthographic or cube)
+    // Area lights (issue 16): it emits from a surface (Light::area: one- or two-sided, its roll about its
+    // direction; a shadow's softness comes from its size, not Shadow::size), a rectangle (width, height)
+    // or a disk (radius).
+    bool isArea;
+    bool usesRectSize;
+    bool usesDiskRadius;
     GizmoShape gizmo;      // its sprite
     bool alwaysShowsRange; // its range sphere is drawn also when it is not selected
     const char* gltfType;  // KHR_lights_punctual "type" (also Assimp's light source), nullptr when none
@@ -49,6 +55,9 @@ inline constexpr std::array<LightTypeTraits, size_t(enumCount<LightType>())> kLi
      .usesRimExponent = false,
      .boundable = true,
      .castsShadows = true,
+     .isArea = false,
+     .usesRectSize = false,
+     .usesDiskRadius = false,
      .gizmo = GizmoShape::Disc,
      .alwaysShowsRange = true,
      .gltfType = "point",
@@ -65,6 +74,9 @@ inline constexpr std::array<LightTypeTraits, size_t(enumCount<LightType>())> kLi
      .usesRimExponent = false,
      .boundable = true,
      .castsShadows = true,
+     .isArea = false,
+     .usesRectSize = false,
+     .usesDiskRadius = false,
      .gizmo = GizmoShape::RingedDisc,
      .alwaysShowsRange = false,
      .gltfType = "spot",
@@ -81,6 +93,9 @@ inline constexpr std::array<LightTypeTraits, size_t(enumCount<LightType>())> kLi
      .usesRimExponent = false,
      .boundable = false,
      .castsShadows = true,
+     .isArea = false,
+     .usesRectSize = false,
+     .usesDiskRadius = false,
      .gizmo = GizmoShape::Sun,
      .alwaysShowsRange = false,
      .gltfType = "directional",
@@ -97,12 +112,53 @@ inline constexpr std::array<LightTypeTraits, size_t(enumCount<LightType>())> kLi
      .usesRimExponent = true,
      .boundable = false,
      .castsShadows = false,
+     .isArea = false,
+     .usesRectSize = false,
+     .usesDiskRadius = false,
      .gizmo = GizmoShape::HollowRing,
      .alwaysShowsRange = false,
      .gltfType = nullptr,
      .defaultDirection = {0, 0, -1},
      .defaultRange = -1.0,
      .benchIntensity = 0.8},
+    {.type = LightType::Rect,
+     .label = "Rect",
+     .usesPosition = true,
+     .usesDirection = true,
+     .usesFalloff = false,
+     .usesCone = false,
+     .usesSurfaceModels = true,
+     .usesRimExponent = false,
+     .boundable = false,
+     .castsShadows = true,
+     .isArea = true,
+     .usesRectSize = true,
+     .usesDiskRadius = false,
+     .gizmo = GizmoShape::Square,
+     .alwaysShowsRange = false,
+     .gltfType = nullptr,
+     .defaultDirection = {0, 0, 0},
+     .defaultRange = -1.0,
+     .benchIntensity = 20.0},
+    {.type = LightType::Disk,
+     .label = "Disk",
+     .usesPosition = true,
+     .usesDirection = true,
+     .usesFalloff = false,
+     .usesCone = false,
+     .usesSurfaceModels = true,
+     .usesRimExponent = false,
+     .boundable = false,
+     .castsShadows = true,
+     .isArea = true,
+     .usesRectSize = false,
+     .usesDiskRadius = true,
+     .gizmo = GizmoShape::FramedDisc,
+     .alwaysShowsRange = false,
+     .gltfType = nullptr,
+     .defaultDirection = {0, 0, 0},
+     .defaultRange = -1.0,
+     .benchIntensity = 25.0},
 }};
 
 constexpr int kLightTypeCount = int(kLightTypeTraits.size());

@@ -43,6 +43,19 @@ bool lightReaches(const Rig& rig, const SceneFrame& frame, const Light& light, c
     return d < worldRange + radius; // the falloff is exactly zero at d >= range
 }
 
+AreaAxes areaAxes(const glm::dvec3& direction, double rollDegrees) {
+    const glm::dvec3 n = lighting::safeNormalize(direction, glm::dvec3(0.0, -1.0, 0.0));
+    const glm::dvec3 c = glm::cross(n, glm::dvec3(0.0, 1.0, 0.0));
+    const double len = glm::length(c);
+    AreaAxes a;
+    a.x = len > 1e-6 ? c / len : glm::dvec3(1.0, 0.0, 0.0);
+    a.y = glm::normalize(glm::cross(a.x, n));
+    a.x = glm::cross(n, a.y); // exactly orthogonal to n when the fallback was used
+    const double r = glm::radians(std::isfinite(rollDegrees) ? rollDegrees : 0.0);
+    const double cr = std::cos(r), sr = std::sin(r);
+    return {cr * a.x - sr * a.y, sr * a.x + cr * a.y}; // right-handed about n
+}
+
 lighting::ShadeLight<double> prepareLight(const Rig& rig, const SceneFrame& frame, const glm::dmat4& view,
                                           const Light& light) {
     lighting::ShadeLight<double> o;
@@ -69,6 +82,16 @@ lighting::ShadeLight<double> prepareLight(const Rig& rig, const SceneFrame& fram
     }
     o.diffuse = light.diffuse;
     o.rimExponent = light.rimExponent;
+    if (light.isArea()) {
+        const AreaAxes a = areaAxes(light.direction, light.area.roll);
+        o.axisX = transformDirection(view, a.x);
+        o.axisY = transformDirection(view, a.y);
+        const double toView = 1.0 / distanceScale(rig, frame); // rig units -> world (= view) units
+        const bool disk = light.type == LightType::Disk;
+        o.halfWidth = 0.5 * std::max(0.0, disk ? 2.0 * light.area.radius : light.area.width) * toView;
+        o.halfHeight = 0.5 * std::max(0.0, disk ? 2.0 * light.area.radius : light.area.height) * toView;
+        o.twoSided = light.area.twoSided;
+    }
     return o;
 }
 

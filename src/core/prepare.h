@@ -27,6 +27,16 @@ double distanceScale(const Rig& rig, const SceneFrame& frame);
 bool lightReaches(const Rig& rig, const SceneFrame& frame, const Light& light, const glm::dvec3& center,
                   double radius);
 
+// An area light's in-plane axes (unit, x × y = -direction) in the rig's (and the world's) orientation:
+// with roll 0, x = direction × world +Y (horizontal) and y = x × direction (up); where the direction is
+// vertical (within 1e-6), x is world +X. `roll` (degrees) turns both right-handedly about the direction
+// (counter-clockwise as seen from the lit side).
+struct AreaAxes {
+    glm::dvec3 x{1.0, 0.0, 0.0};
+    glm::dvec3 y{0.0, 1.0, 0.0};
+};
+AreaAxes areaAxes(const glm::dvec3& direction, double rollDegrees);
+
 // One light in view space (view = world -> view matrix, double precision).
 lighting::ShadeLight<double> prepareLight(const Rig& rig, const SceneFrame& frame, const glm::dmat4& view,
                                           const Light& light);
@@ -56,6 +66,10 @@ template <typename T> lighting::ShadeLight<T> castLight(const lighting::ShadeLig
     o.coneExponent = T(l.coneExponent);
     o.diffuse = l.diffuse;
     o.rimExponent = T(l.rimExponent);
+    o.axisX = lighting::Vec3<T>(l.axisX);
+    o.axisY = lighting::Vec3<T>(l.axisY);
+    o.halfWidth = T(l.halfWidth), o.halfHeight = T(l.halfHeight);
+    o.twoSided = l.twoSided;
     return o;
 }
 

@@ -45,6 +45,22 @@ struct Shadow {
     bool operator==(const Shadow&) const = default;
 };
 
+// An area light's emitter (issue 16; docs/rig-format.md "area"): a rectangle (width × height) or a disk
+// (radius) centred on Light::position, facing Light::direction (the side it emits from; both sides when
+// twoSided), rotated by `roll` degrees about that direction. Its in-plane axes are areaAxes() (prepare.h):
+// with roll 0 the width runs horizontally (perpendicular to world +Y and the direction) and the height
+// runs up. Sizes are in rig units (scaled with the model in a model-space rig). Its intensity is the
+// emitting face's radiance: nits (cd/m²) under physically based shading, as three.js's RectAreaLight;
+// lighting_area.h defines what it adds under either shading.
+struct AreaShape {
+    double width = 1.0;  // rect, >= 0
+    double height = 1.0; // rect, >= 0
+    double radius = 0.5; // disk, >= 0
+    double roll = 0.0;   // degrees, -180 ... 180
+    bool twoSided = false;
+    bool operator==(const AreaShape&) const = default;
+};
+
 // At most this many lights cast shadows at once (one map each; a point light's six faces count as one
 // light): the rig reader refuses more, the editor says so instead of enabling another.
 inline constexpr int kMaxShadowCasters = 16;
@@ -66,6 +82,7 @@ struct Light {
     std::optional<glm::dvec3> ambient;            // usesSurfaceModels()
     double rimExponent = 1.3;                     // usesRimExponent()
     Shadow shadow;                                // castsShadows()
+    AreaShape area;                               // isArea()
 
     // What its type uses (lighttypes.h).
     bool usesPosition() const { return traitsOf(type).usesPosition; }
@@ -75,6 +92,7 @@ struct Light {
     bool usesSurfaceModels() const { return traitsOf(type).usesSurfaceModels; } // diffuse, specular, ambient
     bool usesRimExponent() const { return traitsOf(type).usesRimExponent; }
     bool castsShadows() const { return traitsOf(type).castsShadows; }
+    bool isArea() const { return traitsOf(type).isArea; } // rect, disk: Light::area
     // Whether this light casts a shadow now: enabled, of a type that can, with its shadow on.
     bool hasShadow() const { return enabled && castsShadows() && shadow.enabled; }
     // The colour actually emitted: color tinted by temperature (if any), linear RGB.

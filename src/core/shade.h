@@ -4,47 +4,13 @@
 #pragma once
 
 #include "lighting.h"
+#include "lighting_area.h"
 #include "lighttypes.h"
+#include "shadetypes.h"
 
 #include <span>
 
 namespace lr::lighting {
-
-// One light prepared for evaluation: view-space geometry, intensity and temperature folded into colours,
-// angles as cosines/radians. Built from a Light by prepareLights() (prepare.h).
-template <typename T> struct ShadeLight {
-    LightType type = LightType::Point;
-    Vec3<T> position{0};         // view space (point, spot)
-    Vec3<T> direction{0, 0, -1}; // view space, unit: where the light travels (spot, directional, rim)
-    Vec3<T> color{1};            // effective colour × intensity
-    Vec3<T> specular{1};         // Sc × intensity
-    Vec3<T> ambient{0};          // Ac × intensity
-    FalloffModel falloff = FalloffModel::None;
-    T range = T(-1), falloffExponent = T(2), constant = T(1), linear = T(0), quadratic = T(0);
-    ConeModel cone = ConeModel::Smooth;
-    T cosInner = T(1), cosOuter = T(0), outer = T(1), coneExponent = T(1); // outer in radians
-    DiffuseModel diffuse = DiffuseModel::Lambert;
-    T rimExponent = T(1.3);
-};
-
-template <typename T> struct Surface {
-    Vec3<T> position{0};     // view space
-    Vec3<T> normal{0, 0, 1}; // view space, unit
-    Vec3<T> albedo{1};
-    Vec3<T> specular{1}; // material specular colour (ks)
-    Vec3<T> emissive{0};
-    T shininess = T(32); // classic
-    // Physically based (glTF metal-rough): albedo is the base colour; occlusion scales ambient light only.
-    T metallic = T(0), roughness = T(1), occlusion = T(1);
-};
-
-template <typename T> struct ShadeSettings {
-    ShadingModel model = ShadingModel::Classic;
-    SpecularModel specular = SpecularModel::Phong;
-    ViewerModel viewer = ViewerModel::Local;
-    Vec3<T> ambient{0};
-    T distanceScale = T(1); // 1 / bounding radius for rigs in model space, else 1
-};
 
 template <typename T> T evalFalloff(const ShadeLight<T>& l, T d) {
     switch (l.falloff) {
@@ -108,6 +74,7 @@ Vec3<T> shadeLight(const ShadeLight<T>& l, const Surface<T>& s, const ShadeSetti
                    T visibility = T(1)) {
     const Vec3<T>& N = s.normal;
     if (l.type == LightType::Rim) return l.color * rimTerm(l.direction, N, V, l.rimExponent);
+    if (traitsOf(l.type).isArea) return shadeAreaLight(l, s, st, V, visibility);
     Vec3<T> L;
     T attenuation;
     if (!lightArrival(l, s, st, &L, &attenuation)) return Vec3<T>(0);
@@ -132,6 +99,7 @@ Vec3<T> shadeLightPbr(const ShadeLight<T>& l, const Surface<T>& s, const ShadeSe
                       T visibility = T(1)) {
     const Vec3<T>& N = s.normal;
     if (l.type == LightType::Rim) return l.color * rimTerm(l.direction, N, V, l.rimExponent);
+    if (traitsOf(l.type).isArea) return shadeAreaLightPbr(l, s, st, V, cDiff, f0, alpha, visibility);
     Vec3<T> L;
     T attenuation;
     if (!lightArrival(l, s, st, &L, &attenuation)) return Vec3<T>(0);

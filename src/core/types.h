@@ -8,7 +8,9 @@
 
 namespace lr {
 
-enum class LightType { Point, Spot, Directional, Rim };
+// Rect and Disk are area lights (issue 16): a one- or two-sided emitting rectangle or disk of uniform
+// radiance (rig.h, AreaShape; lighting_area.h defines what they add).
+enum class LightType { Point, Spot, Directional, Rim, Rect, Disk };
 enum class FalloffModel { None, RangePower, InversePolynomial, RangeQuadratic, InverseSquare };
 enum class ConeModel { AnglePower, Smooth, Hard };
 enum class DiffuseModel { Lambert, HalfLambert };
@@ -33,7 +35,7 @@ template <typename E> struct EnumNames; // specialised below: static constexpr s
 
 #define LR_ENUM_NAMES(E, ...)                                                                                \
     template <> struct EnumNames<E> { static constexpr std::array names{__VA_ARGS__}; };
-LR_ENUM_NAMES(LightType, "point", "spot", "directional", "rim")
+LR_ENUM_NAMES(LightType, "point", "spot", "directional", "rim", "rect", "disk")
 LR_ENUM_NAMES(FalloffModel, "none", "range-power", "inverse-polynomial", "range-quadratic", "inverse-square")
 LR_ENUM_NAMES(ConeModel, "angle-power", "smooth", "hard")
 LR_ENUM_NAMES(DiffuseModel, "lambert", "half-lambert")

@@ -23,6 +23,7 @@
 //   inverse-square)
 //   ShadowEnabled        bool
 //   ShadowResolution     int (also a whole double), a power of two 256 ... 4096
+//   AreaTwoSided         bool
 //   everything else      double
 // Enums from types.h, RigSpace/SpecularModel/ViewerModel/GroundMode likewise for rig values (GroundColor:
 // glm::dvec3 linear albedo, components 0 ... 1; Environment: lr::Environment). (Qt 6 needs no
@@ -69,9 +70,14 @@ enum class LightProperty {
     ShadowResolution,
     ShadowBias,
     ShadowNormalOffset,
-    ShadowSize,  // point and spot: the emitter's diameter in rig units
-    ShadowAngle, // directional: the emitter's angular diameter in degrees
-    Any          // not a property: "several or all values of the light changed" (in RigChange only)
+    ShadowSize,   // point and spot: the emitter's diameter in rig units
+    ShadowAngle,  // directional: the emitter's angular diameter in degrees
+    AreaWidth,    // rect (issue 16; core/rig.h AreaShape): rig units, >= 0
+    AreaHeight,   // rect
+    AreaRadius,   // disk
+    AreaRoll,     // rect and disk: degrees about the direction, -180 ... 180
+    AreaTwoSided, // rect and disk: bool
+    Any           // not a property: "several or all values of the light changed" (in RigChange only)
 };
 constexpr int kLightPropertyCount = int(LightProperty::Any);
 
@@ -104,6 +110,7 @@ constexpr double kMaxPolynomialCoefficient = kMaxRigLength;
 constexpr double kMaxShininess = kMaxRigExponent; // > 0
 constexpr double kMaxConeAngle = 90.0;            // degrees, half-angle; > 0
 constexpr double kMaxShadowSize = kMaxRigLength;  // a point or spot light's emitter diameter; >= 0
+constexpr double kMaxAreaSize = kMaxRigLength;    // an area light's width, height, radius; >= 0
 
 // How a property's value is held and edited (the Properties dock picks a default editor widget per kind).
 enum class LightValueKind {

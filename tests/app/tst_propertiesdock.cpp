@@ -24,6 +24,10 @@ namespace {
 QSet<QString> expectedFields(LightType type, FalloffModel falloff, ConeModel cone, bool shadowOn = false) {
     QSet<QString> f{"name", "type", "enabled", "color", "temperature", "intensity"};
     const bool positioned = type == LightType::Point || type == LightType::Spot;
+    const bool area = type == LightType::Rect || type == LightType::Disk; // issue 16
+    if (area) f += {"position", "areaRoll", "areaTwoSided"};
+    if (type == LightType::Rect) f += {"areaWidth", "areaHeight"};
+    if (type == LightType::Disk) f += "areaRadius";
     if (positioned) {
         f += {"position", "falloffModel"};
         switch (falloff) {
@@ -67,7 +71,7 @@ QSet<QString> expectedFields(LightType type, FalloffModel falloff, ConeModel con
     if (type != LightType::Rim) f += "shadowEnabled";
     if (type != LightType::Rim && shadowOn) {
         f += {"shadowResolution", "shadowBias", "shadowNormalOffset"};
-        f += positioned ? "shadowSize" : "shadowAngle";
+        if (!area) f += positioned ? "shadowSize" : "shadowAngle"; // an area light's own size softens
     }
     return f;
 }
@@ -99,7 +103,12 @@ const QStringList kAllFields{"name",
                              "shadowBias",
                              "shadowNormalOffset",
                              "shadowSize",
-                             "shadowAngle"};
+                             "shadowAngle",
+                             "areaWidth",
+                             "areaHeight",
+                             "areaRadius",
+                             "areaRoll",
+                             "areaTwoSided"};
 
 QSet<QString> visibleFields(PropertiesDock& dock) {
     QSet<QString> out;
@@ -178,7 +187,7 @@ class TestPropertiesDock : public QObject {
                 }
             }
         }
-        QCOMPARE(combinations, 5 * 3 + 5 + 1 + 1); // spot, point, directional, rim
+        QCOMPARE(combinations, 5 * 3 + 5 + 1 + 1 + 2); // spot, point, directional, rim, rect and disk
     }
 
     void switchingModels_showsAndHidesFields() {

@@ -61,10 +61,12 @@ class TestLightTypes : public QObject {
     }
 
     void derivedTexts() {
-        QCOMPARE(lightTypesWith(&LightTypeTraits::usesPosition), QStringLiteral("point and spot"));
+        QCOMPARE(lightTypesWith(&LightTypeTraits::usesPosition),
+                 QStringLiteral("point, spot, rect and disk"));
+        QCOMPARE(lightTypesWith(&LightTypeTraits::isArea), QStringLiteral("rect and disk"));
         QCOMPARE(lightTypesWith(&LightTypeTraits::usesCone), QStringLiteral("spot"));
         QCOMPARE(lightTypesWith(&LightTypeTraits::usesDirection),
-                 QStringLiteral("spot, directional and rim"));
+                 QStringLiteral("spot, directional, rim, rect and disk"));
         QCOMPARE(lightTypeLabel(LightType::Directional), QStringLiteral("Directional"));
         QSet<QString> labels;
         QSet<int> shapes;
@@ -94,8 +96,8 @@ class TestLightTypes : public QObject {
         QVERIFY(!r.ok());
         const QString all = r.errors.join(QLatin1Char('\n'));
         QVERIFY2(
-            all.contains(QStringLiteral("a directional light has no position (only point and spot lights "
-                                        "have one)")),
+            all.contains(QStringLiteral("a directional light has no position (only point, spot, rect and "
+                                        "disk lights have one)")),
             qPrintable(all));
         QVERIFY2(all.contains(QStringLiteral("(only spot lights have one)")), qPrintable(all));
         QVERIFY2(all.contains(QStringLiteral("only rim lights have an exponent")), qPrintable(all));

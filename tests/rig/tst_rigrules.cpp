@@ -59,7 +59,7 @@ void TestRigRules::rules_data() {
     // Every light.
     row("type missing", rigJson(R"({"position": [0, 0, 0]})"), "lights[0].type: missing");
     row("type unknown", rigJson(R"({"type": "area"})"),
-        "lights[0].type: must be \"point\", \"spot\", \"directional\" or \"rim\"");
+        "lights[0].type: must be \"point\", \"spot\", \"directional\", \"rim\", \"rect\" or \"disk\"");
     row("light name too long", rigJson(with(kRim, "\"name\": \"" + QByteArray(257, 'y') + '"')),
         "lights[0].name: must be at most 256 characters, got 257");
     row("enabled", rigJson(with(kRim, R"("enabled": "yes")")), "lights[0].enabled: must be true or false");

@@ -51,7 +51,9 @@ Rig everyFieldRig() {
     Light d = makeLight(LightType::Directional, QStringLiteral("directional"));
     a.shadow.enabled = true; // issue 14: the shadow's fields (size on the spot, angle on the directional)
     d.shadow.enabled = true;
-    rig.lights = {a, b, c, d};
+    Light e = makeLight(LightType::Rect, QStringLiteral("rect")); // issue 16: width, height, roll
+    Light f = makeLight(LightType::Disk, QStringLiteral("disk")); // radius
+    rig.lights = {a, b, c, d, e, f};
     return rig;
 }
 
