@@ -20,7 +20,14 @@ QList<ControlBinding> mouseBindings() {
         {QObject::tr("Wheel"), QObject::tr("Dolly towards or away from the target")},
         {QObject::tr("Click a light"), QObject::tr("Select it")},
         {QObject::tr("Ctrl+click a light"), QObject::tr("Add it to the selection, or take it out")},
-        {QObject::tr("Click empty space"), QObject::tr("Clear the selection")},
+        {QObject::tr("Click the background"), QObject::tr("Clear the selection")},
+        {QObject::tr("Click the model with lights selected"),
+         QObject::tr("Place the highlight: move each selected light, keeping its distance, so its mirror "
+                     "reflection lands on that point (spot, rect and disk lights also turn to face it; "
+                     "directional and rim lights only turn)")},
+        {QObject::tr("Click an area light's outline or inside it"), QObject::tr("Select it")},
+        {QObject::tr("Left drag a selected rect or disk light's handle"),
+         QObject::tr("Change its width, height or radius, symmetric about its centre")},
         {QObject::tr("Left drag a light"),
          QObject::tr("Move the selected lights in the view plane (directional and rim lights turn "
                      "around the scene)")},

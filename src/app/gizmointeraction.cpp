@@ -1,10 +1,12 @@
 #include "gizmointeraction.h"
 
+#include "editor/changelightvalues.h"
 #include "render/gizmos.h"
 #include "scene.h"
 #include "undodiscard.h"
 
 #include <cmath>
+#include <limits>
 
 #include <QLineF>
 #include <glm/geometric.hpp>
@@ -45,7 +47,45 @@ int GizmoInteraction::pickLight(const ScreenProjector& projector, const QPointF&
     anchors.reserve(rig.lights.size());
     for (const Light& l : rig.lights)
         anchors.push_back(lightAnchor(rig, frame, l));
-    return pickNearest(projector, anchors, screen, kPickPixels);
+    const int icon = pickNearest(projector, anchors, screen, kPickPixels);
+    return icon >= 0 ? icon : pickAreaLight(projector, screen);
+}
+
+int GizmoInteraction::pickAreaLight(const ScreenProjector& projector, const QPointF& screen) const {
+    const Rig& rig = m_doc->rig();
+    const SceneFrame frame = m_scene->frame();
+    int best = -1;
+    double bestDepth = std::numeric_limits<double>::infinity();
+    for (size_t i = 0; i < rig.lights.size(); ++i) {
+        const Light& l = rig.lights[i];
+        if (!l.isArea()) continue;
+        if (!hitsPolygon(projector, render::areaOutline(rig, frame, l, 32), screen, kPickPixels)) continue;
+        const double depth = projector.depth(lightAnchor(rig, frame, l));
+        if (depth < bestDepth) {
+            best = int(i);
+            bestDepth = depth;
+        }
+    }
+    return best;
+}
+
+GizmoInteraction::SizeHandle GizmoInteraction::pickSizeHandle(const ScreenProjector& projector,
+                                                              const QPointF& screen) const {
+    const QList<int> rows = m_doc->selectedRows();
+    if (rows.size() != 1 || !m_doc->light(rows[0]).isArea()) return {};
+    SizeHandle best;
+    double bestDist = kPickPixels;
+    for (const render::AreaHandle& h :
+         render::areaHandles(m_doc->rig(), m_scene->frame(), m_doc->light(rows[0]))) {
+        const auto p = projector.project(h.position);
+        if (!p) continue;
+        const double d = QLineF(*p, screen).length();
+        if (d <= bestDist) {
+            best = {rows[0], h};
+            bestDist = d;
+        }
+    }
+    return best;
 }
 
 int GizmoInteraction::pickConeEdge(const ScreenProjector& projector, const QPointF& screen) const {
@@ -71,6 +111,13 @@ bool GizmoInteraction::press(const ScreenProjector& projector, const QPointF& sc
                              Qt::KeyboardModifiers modifiers) {
     reset();
     m_pressPos = screen;
+    if (const SizeHandle h = pickSizeHandle(projector, screen); h.row >= 0) {
+        m_drag = Drag::AreaSize;
+        m_rows = {h.row};
+        m_handle = h.handle;
+        m_areaCentre = lightAnchor(m_doc->rig(), m_scene->frame(), m_doc->light(h.row));
+        return true;
+    }
     const int cone = pickConeEdge(projector, screen);
     const int row = cone >= 0 ? -1 : pickLight(projector, screen);
     if (cone < 0 && row < 0) return false;
@@ -131,9 +178,35 @@ void GizmoInteraction::move(const ScreenProjector& projector, const QPointF& scr
                                  std::clamp(roundConeAngle(*angle), lowest, 90.0));
         return;
     }
+    if (m_drag == Drag::AreaSize) {
+        applyAreaSize(projector, screen);
+        return;
+    }
     const bool alongView = modifiers & (Qt::ControlModifier | Qt::AltModifier);
     m_drag = alongView ? Drag::MoveAlongView : Drag::Move;
     applyMove(projector, screen, alongView);
+}
+
+void GizmoInteraction::applyAreaSize(const ScreenProjector& projector, const QPointF& screen) {
+    const int row = m_rows.value(0, -1);
+    if (row < 0 || row >= m_doc->lightCount()) return;
+    // The point of the handle's axis (through the centre) nearest to the cursor's ray: the new half size,
+    // symmetric about the centre, which stays put.
+    const auto t = closestOnAxis(projector.ray(screen), m_areaCentre, m_handle.axis);
+    if (!t) return;
+    const double half = std::abs(*t) * distanceScale(m_doc->rig(), m_scene->frame()); // rig units
+    if (!std::isfinite(half)) return;
+    switch (m_handle.size) {
+    case render::AreaSize::Width:
+        m_doc->setLightValue({row}, LightProperty::AreaWidth, 2.0 * half);
+        break;
+    case render::AreaSize::Height:
+        m_doc->setLightValue({row}, LightProperty::AreaHeight, 2.0 * half);
+        break;
+    case render::AreaSize::Radius:
+        m_doc->setLightValue({row}, LightProperty::AreaRadius, half);
+        break;
+    }
 }
 
 void GizmoInteraction::applyMove(const ScreenProjector& projector, const QPointF& screen, bool alongView) {
@@ -234,6 +307,41 @@ bool GizmoInteraction::aimSelectedAt(const ScreenProjector& projector, const QPo
         return false;
     }
     return true;
+}
+
+GizmoInteraction::Highlight GizmoInteraction::placeHighlight(const ScreenProjector& projector,
+                                                             const QPointF& screen, QString* message) {
+    const QList<int> rows = m_doc->selectedRows();
+    if (rows.isEmpty()) return Highlight::Missed;
+    const Ray ray = projector.ray(screen);
+    const auto hit = intersectModelWithNormal(*m_scene->model(), ray);
+    if (!hit) return Highlight::Missed;
+    const glm::dvec3 mirror = glm::normalize(mirrorDirection(ray.direction, hit->normal));
+    const Rig& rig = m_doc->rig();
+    const SceneFrame frame = m_scene->frame();
+    QList<LightValueEdit> edits;
+    for (int row : rows) {
+        const Light& l = rig.lights[size_t(row)];
+        if (l.usesPosition()) {
+            double d = glm::length(rigToWorld(rig, frame, l.position) - hit->point);
+            if (!(d > 0.0) || !std::isfinite(d)) d = frame.radius; // a light on the point: one radius away
+            edits.append({row, LightProperty::Position,
+                          QVariant::fromValue(worldToRig(rig, frame, hit->point + mirror * d))});
+        }
+        if (l.usesDirection()) edits.append({row, LightProperty::Direction, QVariant::fromValue(-mirror)});
+    }
+    const QString text = rows.size() == 1
+                             ? QObject::tr("Place the highlight of %1").arg(m_doc->light(rows[0]).name)
+                             : QObject::tr("Place the highlight of %1 lights").arg(rows.size());
+    QString error;
+    auto command = ChangeLightValues::create(m_doc, edits, text, &error);
+    if (!command) {
+        if (error.isEmpty()) return Highlight::Placed; // already there
+        if (message) *message = error;
+        return Highlight::Refused;
+    }
+    m_doc->undoStack()->push(command.release());
+    return Highlight::Placed;
 }
 
 } // namespace lr

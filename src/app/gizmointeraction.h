@@ -1,12 +1,15 @@
-// Direct manipulation of lights in the viewport, independent of GL: picking a light's gizmo, dragging it in
-// the view plane (Ctrl or Alt: along the view axis), dragging a spot's cone edge to change its outer angle,
-// and aiming the selected lights at a point of the model. Every change goes through the Document's commands;
-// one drag is one undo step (a continuous-edit session from press to release).
+// Direct manipulation of lights in the viewport, independent of GL: picking a light's gizmo (an area light
+// also by its outline or anywhere inside it), dragging it in the view plane (Ctrl or Alt: along the view
+// axis), dragging a spot's cone edge to change its outer angle, dragging an area light's size handles,
+// aiming the selected lights at a point of the model and placing their highlight on it. Every change goes
+// through the Document's commands; one drag is one undo step (a continuous-edit session from press to
+// release).
 #pragma once
 
 #include "core/prepare.h"
 #include "editor/document.h"
 #include "picking.h"
+#include "render/gizmos.h"
 
 #include <QPointF>
 #include <memory>
@@ -31,13 +34,22 @@ class GizmoInteraction {
     static constexpr double kPickPixels = 12.0; // how near a click must be to a gizmo
     static constexpr double kDragThreshold = 3.0;
 
-    enum class Drag { None, Move, MoveAlongView, ConeOuter };
+    enum class Drag { None, Move, MoveAlongView, ConeOuter, AreaSize };
 
     GizmoInteraction(Document* document, Scene* scene);
     ~GizmoInteraction();
 
     // Light row whose gizmo is nearest to `screen` (within kPickPixels), or -1.
     int pickLight(const ScreenProjector& projector, const QPointF& screen) const;
+    // Area light row whose outline passes within kPickPixels of `screen` or encloses it (nearest the camera),
+    // or -1. pickLight tries the icons first, then this.
+    int pickAreaLight(const ScreenProjector& projector, const QPointF& screen) const;
+    // The size handle under `screen` (within kPickPixels) of the one selected area light; row -1 when none.
+    struct SizeHandle {
+        int row = -1;
+        render::AreaHandle handle;
+    };
+    SizeHandle pickSizeHandle(const ScreenProjector& projector, const QPointF& screen) const;
     // Selected spot light row whose outer cone rim passes within kPickPixels of `screen`, or -1.
     int pickConeEdge(const ScreenProjector& projector, const QPointF& screen) const;
 
@@ -58,9 +70,20 @@ class GizmoInteraction {
     // Returns false (and *message) when nothing is hit or no selected light has a direction.
     bool aimSelectedAt(const ScreenProjector& projector, const QPointF& screen, QString* message);
 
+    // "Place the highlight" (a plain click on the model): moves each selected light so that its mirror
+    // reflection, seen along the view ray through `screen`, lands on the model point P there: with R the
+    // view ray mirrored about the surface normal at P (intersectModelWithNormal: the shading normal), a light
+    // with a position goes to P + R·d, keeping its distance d from P; a light with a direction (spot, rect,
+    // disk, directional, rim) turns to -R, so a spot or area light faces P. Position and direction are one
+    // undo step. Missed: the ray misses the model or nothing is selected (nothing changes); Refused: the
+    // document refused the values (*message says why).
+    enum class Highlight { Missed, Placed, Refused };
+    Highlight placeHighlight(const ScreenProjector& projector, const QPointF& screen, QString* message);
+
   private:
     void reset();
     void applyMove(const ScreenProjector& projector, const QPointF& screen, bool alongView);
+    void applyAreaSize(const ScreenProjector& projector, const QPointF& screen);
 
     Document* m_doc;
     Scene* m_scene;
@@ -70,9 +93,11 @@ class GizmoInteraction {
     QList<int> m_rows;                    // lights being dragged
     std::vector<glm::dvec3> m_startWorld; // their anchors at the press (world)
     glm::dvec3 m_pickedAnchor{0.0};
-    double m_rimDistance = 0.0; // cone drags
-    int m_startIndex = 0;       // undo index when the drag started moving
-    LightId m_toggleOff = 0;    // Ctrl+click on a selected light: deselect at the release if not dragged
+    double m_rimDistance = 0.0;  // cone drags
+    render::AreaHandle m_handle; // area size drags: the handle at the press
+    glm::dvec3 m_areaCentre{0.0};
+    int m_startIndex = 0;    // undo index when the drag started moving
+    LightId m_toggleOff = 0; // Ctrl+click on a selected light: deselect at the release if not dragged
     std::unique_ptr<ContinuousEdit> m_edit;
 };
 

@@ -106,11 +106,14 @@ std::optional<double> intersectPlane(const Ray& ray, const glm::dvec3& point, co
     return t;
 }
 
-std::optional<glm::dvec3> intersectModel(const Model& model, const Ray& ray) {
+std::optional<ModelHit> intersectModelWithNormal(const Model& model, const Ray& ray) {
     // Möller–Trumbore in double, in the model's local frame (vertices are relative to model.origin).
     const glm::dvec3 o = ray.origin - model.origin;
     const glm::dvec3 d = ray.direction;
     double best = kInf;
+    const Mesh* bestMesh = nullptr;
+    size_t bestTri = 0;
+    double bestU = 0.0, bestW = 0.0;
     for (const Mesh& mesh : model.meshes) {
         const auto& v = mesh.vertices;
         for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
@@ -129,11 +132,74 @@ std::optional<glm::dvec3> intersectModel(const Model& model, const Ray& ray) {
             const double w = glm::dot(d, q) * inv;
             if (w < 0.0 || u + w > 1.0) continue;
             const double t = glm::dot(e2, q) * inv;
-            if (t > 1e-9 && t < best) best = t;
+            if (t > 1e-9 && t < best) {
+                best = t;
+                bestMesh = &mesh;
+                bestTri = i;
+                bestU = u;
+                bestW = w;
+            }
         }
     }
-    if (!std::isfinite(best)) return std::nullopt;
-    return ray.at(best);
+    if (!std::isfinite(best) || !bestMesh) return std::nullopt;
+    const auto& v = bestMesh->vertices;
+    const Vertex& va = v[bestMesh->indices[bestTri]];
+    const Vertex& vb = v[bestMesh->indices[bestTri + 1]];
+    const Vertex& vc = v[bestMesh->indices[bestTri + 2]];
+    const glm::dvec3 geometric = glm::cross(glm::dvec3(vb.position) - glm::dvec3(va.position),
+                                            glm::dvec3(vc.position) - glm::dvec3(va.position));
+    glm::dvec3 n = glm::dvec3(va.normal) * (1.0 - bestU - bestW) + glm::dvec3(vb.normal) * bestU +
+                   glm::dvec3(vc.normal) * bestW;
+    double len = glm::length(n);
+    if (!(len > 1e-12) || !std::isfinite(len)) {
+        n = geometric;
+        len = glm::length(n);
+    }
+    n = len > 0.0 && std::isfinite(len) ? n / len : -d;
+    if (glm::dot(n, d) > 0.0) n = -n; // the side the ray sees
+    return ModelHit{ray.at(best), n};
+}
+
+std::optional<glm::dvec3> intersectModel(const Model& model, const Ray& ray) {
+    const auto hit = intersectModelWithNormal(model, ray);
+    if (!hit) return std::nullopt;
+    return hit->point;
+}
+
+glm::dvec3 mirrorDirection(const glm::dvec3& incident, const glm::dvec3& normal) {
+    return incident - 2.0 * glm::dot(incident, normal) * normal;
+}
+
+std::optional<double> closestOnAxis(const Ray& ray, const glm::dvec3& origin, const glm::dvec3& axis) {
+    // Lines origin + t a and ray.origin + s d: minimise |w + t a - s d| with w = origin - ray.origin.
+    const glm::dvec3 w = origin - ray.origin;
+    const double b = glm::dot(axis, ray.direction);
+    const double denom = 1.0 - b * b;
+    if (!(denom > 1e-9)) return std::nullopt;
+    const double t = (b * glm::dot(w, ray.direction) - glm::dot(w, axis)) / denom;
+    if (!std::isfinite(t)) return std::nullopt;
+    return t;
+}
+
+bool hitsPolygon(const ScreenProjector& projector, const std::vector<glm::dvec3>& polygon,
+                 const QPointF& screen, double maxPixels) {
+    if (polygon.size() < 3) return false;
+    std::vector<QPointF> pts;
+    pts.reserve(polygon.size());
+    for (const glm::dvec3& p : polygon) {
+        const auto s = projector.project(p);
+        if (!s) return false;
+        pts.push_back(*s);
+    }
+    bool inside = false;
+    for (size_t i = 0, j = pts.size() - 1; i < pts.size(); j = i++) {
+        const QPointF &a = pts[i], &b = pts[j];
+        if (pointSegmentDistance(screen, a, b) <= maxPixels) return true;
+        if ((a.y() > screen.y()) != (b.y() > screen.y()) &&
+            screen.x() < (b.x() - a.x()) * (screen.y() - a.y()) / (b.y() - a.y()) + a.x())
+            inside = !inside;
+    }
+    return inside;
 }
 
 glm::dvec3 dragInViewPlane(const ScreenProjector& projector, const glm::dvec3& start, const QPointF& from,

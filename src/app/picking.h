@@ -54,6 +54,26 @@ std::optional<double> intersectPlane(const Ray& ray, const glm::dvec3& point, co
 
 // Nearest hit of the ray with the model's triangles (world space), or nullopt.
 std::optional<glm::dvec3> intersectModel(const Model& model, const Ray& ray);
+// The same hit with the surface normal there (world, unit, turned to face the ray's origin): the shading
+// normal, i.e. the triangle's vertex normals interpolated at the hit (what the renderer lights, before any
+// normal map), or the triangle's geometric normal where the vertex normals are degenerate.
+struct ModelHit {
+    glm::dvec3 point{0.0};
+    glm::dvec3 normal{0.0, 0.0, 1.0};
+};
+std::optional<ModelHit> intersectModelWithNormal(const Model& model, const Ray& ray);
+
+// Mirror direction of `incident` (travelling towards the surface) about the unit normal `normal`.
+glm::dvec3 mirrorDirection(const glm::dvec3& incident, const glm::dvec3& normal);
+
+// Parameter t of the point origin + t * axis (axis unit) nearest to the ray (the closest points of two
+// lines), or nullopt when the ray runs (nearly) along the axis.
+std::optional<double> closestOnAxis(const Ray& ray, const glm::dvec3& origin, const glm::dvec3& axis);
+
+// Whether `screen` lies inside the projected polygon (even-odd rule), or within maxPixels of its edges.
+// False when any corner is behind the camera.
+bool hitsPolygon(const ScreenProjector& projector, const std::vector<glm::dvec3>& polygon,
+                 const QPointF& screen, double maxPixels);
 
 // Moves `start` so that it follows the mouse from `from` to `to` in the plane through `start` facing
 // the camera. Returns `start` when the plane cannot be hit.

@@ -360,9 +360,10 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
     const double h = std::max(1, height());
     switch (m_nav) {
     case Navigation::None: {
-        // Hover feedback: a hand over a light or a selected spot's cone edge.
+        // Hover feedback: a hand over a light, a selected spot's cone edge or an area light's size handle.
         const ScreenProjector p = projector();
-        const bool over = m_interaction->pickConeEdge(p, pos) >= 0 || m_interaction->pickLight(p, pos) >= 0;
+        const bool over = m_interaction->pickSizeHandle(p, pos).row >= 0 ||
+                          m_interaction->pickConeEdge(p, pos) >= 0 || m_interaction->pickLight(p, pos) >= 0;
         const bool wipe = m_compare && m_compare->onWipeHandle(event->position(), QSizeF(size()));
         setCursor(wipe ? Qt::SplitHCursor : over ? Qt::PointingHandCursor : Qt::ArrowCursor);
         return;
@@ -406,7 +407,21 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event) {
                (m_pickEnvironment || event->modifiers().testFlags(Qt::ControlModifier | Qt::AltModifier))) {
         emit environmentClicked(pos); // the background (a light would have been a gizmo press)
     } else if (nav == Navigation::Orbit && !m_moved && !(event->modifiers() & Qt::ControlModifier)) {
-        m_doc->setSelection({}); // a click on empty space clears the selection
+        // A plain click that hit no gizmo: on the model with lights selected it places their highlight
+        // there; on the background (or with nothing selected) it clears the selection.
+        QString message;
+        switch (m_interaction->placeHighlight(projector(), pos, &message)) {
+        case GizmoInteraction::Highlight::Placed:
+            emit statusMessage(tr("Moved the selected light(s) so their highlight lands on the clicked point "
+                                  "(Shift+click aims instead)"));
+            break;
+        case GizmoInteraction::Highlight::Refused:
+            emit statusMessage(message);
+            break;
+        case GizmoInteraction::Highlight::Missed:
+            m_doc->setSelection({});
+            break;
+        }
     }
     event->accept();
 }

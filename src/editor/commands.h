@@ -5,6 +5,7 @@
 
 #include "editor/addlights.h"
 #include "editor/changelightvalue.h"
+#include "editor/changelightvalues.h"
 #include "editor/changerigspace.h"
 #include "editor/changerigvalue.h"
 #include "editor/duplicatelights.h"

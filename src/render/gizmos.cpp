@@ -100,6 +100,48 @@ void addGrid(Builder& b, const Bounds& bounds, double radius) {
 
 } // namespace
 
+std::vector<glm::dvec3> areaOutline(const Rig& rig, const SceneFrame& frame, const Light& light,
+                                    int diskSegments) {
+    std::vector<glm::dvec3> out;
+    if (!light.isArea()) return out;
+    const AreaAxes a = areaAxes(light.direction, light.area.roll);
+    const glm::dvec3 c = rigToWorld(rig, frame, light.position);
+    const double toWorld = 1.0 / distanceScale(rig, frame);
+    if (light.type == LightType::Disk) {
+        const double r = std::max(0.0, light.area.radius) * toWorld;
+        const int n = std::max(diskSegments, 3);
+        out.reserve(size_t(n));
+        for (int i = 0; i < n; ++i) {
+            const double t = kTwoPi * i / n;
+            out.push_back(c + (a.x * std::cos(t) + a.y * std::sin(t)) * r);
+        }
+        return out;
+    }
+    const glm::dvec3 hx = a.x * (0.5 * std::max(0.0, light.area.width) * toWorld);
+    const glm::dvec3 hy = a.y * (0.5 * std::max(0.0, light.area.height) * toWorld);
+    return {c + hx + hy, c - hx + hy, c - hx - hy, c + hx - hy};
+}
+
+std::vector<AreaHandle> areaHandles(const Rig& rig, const SceneFrame& frame, const Light& light) {
+    if (!light.isArea()) return {};
+    const AreaAxes a = areaAxes(light.direction, light.area.roll);
+    const glm::dvec3 c = rigToWorld(rig, frame, light.position);
+    const double toWorld = 1.0 / distanceScale(rig, frame);
+    if (light.type == LightType::Disk) {
+        const double r = std::max(0.0, light.area.radius) * toWorld;
+        return {{c + a.x * r, a.x, AreaSize::Radius},
+                {c - a.x * r, -a.x, AreaSize::Radius},
+                {c + a.y * r, a.y, AreaSize::Radius},
+                {c - a.y * r, -a.y, AreaSize::Radius}};
+    }
+    const double hw = 0.5 * std::max(0.0, light.area.width) * toWorld;
+    const double hh = 0.5 * std::max(0.0, light.area.height) * toWorld;
+    return {{c + a.x * hw, a.x, AreaSize::Width},
+            {c - a.x * hw, -a.x, AreaSize::Width},
+            {c + a.y * hh, a.y, AreaSize::Height},
+            {c - a.y * hh, -a.y, AreaSize::Height}};
+}
+
 glm::dvec3 directionalAnchor(const SceneFrame& frame, const glm::dvec3& direction) {
     return frame.center - safeNormalize(direction, glm::dvec3(0, -1, 0)) * (frame.radius * 1.6);
 }
@@ -134,6 +176,33 @@ GizmoGeometry buildGizmos(const Rig& rig, const SceneFrame& frame, const Bounds&
                 b.circle(at, {1, 0, 0}, range, faint);
                 b.circle(at, {0, 1, 0}, range, faint);
                 b.circle(at, {0, 0, 1}, range, faint);
+            }
+            if (l.isArea()) {
+                // The emitter's outline in the light's colour (brighter when selected), and its normal from
+                // the centre towards the lit side (both ways when it is two-sided).
+                const glm::vec4 edge = displayColor(l, selected ? 1.0f : 0.65f);
+                const std::vector<glm::dvec3> outline = areaOutline(rig, frame, l);
+                for (size_t k = 0; k < outline.size(); ++k)
+                    b.line(outline[k], outline[(k + 1) % outline.size()], edge);
+                if (selected) // a second, amber inner trace marks the selection as other gizmos do
+                    for (size_t k = 0; k < outline.size(); ++k)
+                        b.line(at + (outline[k] - at) * 0.97,
+                               at + (outline[(k + 1) % outline.size()] - at) * 0.97, faint);
+                double extent = 0.0;
+                for (const glm::dvec3& q : outline)
+                    extent = std::max(extent, glm::length(q - at));
+                const double len = std::clamp(extent, radius * 0.15, radius * 0.6);
+                b.arrow(at, dir, len, strong);
+                if (l.area.twoSided) b.arrow(at, -dir, len, strong);
+                if (selected && options.selected.size() == 1)
+                    for (const AreaHandle& h : areaHandles(rig, frame, l)) {
+                        const glm::dvec3 hp = b.toView(h.position);
+                        if (hp.z <= -b.nearClip && std::isfinite(hp.x + hp.y + hp.z))
+                            out.points.push_back(
+                                {glm::vec3(hp),
+                                 kSelectedColor,
+                                 {float(kAreaHandlePixels), float(int(GizmoShape::Square) + 8)}});
+                    }
             }
             if (l.usesCone()) {
                 const double len = drawRange ? std::min(range, radius * 3.0) : radius;

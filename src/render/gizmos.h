@@ -43,6 +43,24 @@ constexpr double kSelectedIconScale = 1.8;
 // Where a directional or rim light's gizmo is drawn (world): outside the bounding sphere, upstream.
 glm::dvec3 directionalAnchor(const SceneFrame& frame, const glm::dvec3& direction);
 
+// An area light's outline (world): a rect's four corners, centre ± x·width/2 ± y·height/2 on areaAxes
+// (core/prepare.h) in the order (+x+y, -x+y, -x-y, +x-y), or a disk's rim as `diskSegments` points from +x
+// towards +y. Sizes are rig units, scaled to the world as positions are (distanceScale). Empty for other
+// types.
+std::vector<glm::dvec3> areaOutline(const Rig& rig, const SceneFrame& frame, const Light& light,
+                                    int diskSegments = 48);
+
+// The size handles of an area light (drawn and dragged when it alone is selected): a rect's edge midpoints
+// (±x: width, ±y: height), a disk's rim at ±x and ±y (radius). `axis` is the unit direction from the centre.
+enum class AreaSize { Width, Height, Radius };
+struct AreaHandle {
+    glm::dvec3 position{0.0}; // world
+    glm::dvec3 axis{1.0, 0.0, 0.0};
+    AreaSize size = AreaSize::Width;
+};
+std::vector<AreaHandle> areaHandles(const Rig& rig, const SceneFrame& frame, const Light& light);
+constexpr double kAreaHandlePixels = 9.0;
+
 GizmoGeometry buildGizmos(const Rig& rig, const SceneFrame& frame, const Bounds& bounds,
                           const glm::dmat4& view, const GizmoOptions& options);
 
