@@ -1,7 +1,7 @@
 // Gizmo fragments: parts hidden by the model (scene depth) are drawn faint, not dropped, so a light
 // behind the model can still be found and picked. Point sprites draw the light icons:
 // shape 0 point (disc), 1 spot (disc with a ring), 2 directional (sun with rays), 3 rim (hollow ring),
-// 4 rect (square), 5 disk (disc in a square frame);
+// 4 rect (square; also the size handles of a selected rect or disk light), 5 disk (disc in a square frame);
 // +8: selected (white outline). Lines of shape 16 (kGridShape, gizmos.h) are the ground grid: hidden parts
 // are dropped (the model occludes its ground) and the grid fades out with distance from the eye between
 // uGridFade.x and uGridFade.y, as Blender's does.

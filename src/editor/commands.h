@@ -1,6 +1,7 @@
 // All undo commands of the editor (one family per file, each a RigCommand: rigcommand.h). Usually pushed
 // through Document's convenience methods; each has a static create() that validates first and returns nullptr
-// with a reason when refused. ChangeLightValue is the only command that changes values of lights.
+// with a reason when refused. ChangeLightValue changes values of lights (ChangeLightValues: several
+// properties as one step).
 #pragma once
 
 #include "editor/addlights.h"

@@ -85,6 +85,39 @@ class TestCommands : public QObject {
         QCOMPARE(writeRigJson(*back.rig), bytes(doc));
     }
 
+    void severalValuesAreOneStep() {
+        // ChangeLightValues (place the highlight): a position and a direction of one light, the direction
+        // of another, one undo step; a refused value pushes nothing; no change, no step.
+        Document doc;
+        doc.newRig(lrtest::sampleRig());
+        const QVariant down = QVariant::fromValue(glm::dvec3(0, -1, 0));
+        const QList<LightValueEdit> edits{
+            {1, LightProperty::Position, QVariant::fromValue(glm::dvec3(4, 5, 6))},
+            {1, LightProperty::Direction, down},
+            {2, LightProperty::Direction, QVariant::fromValue(glm::dvec3(1, 0, 0))}};
+        checkDoUndoRedo(doc, [&] {
+            auto c = ChangeLightValues::create(&doc, edits, QStringLiteral("Place"));
+            if (!c) return false;
+            doc.undoStack()->push(c.release());
+            return true;
+        });
+        QCOMPARE(doc.light(1).position, glm::dvec3(4, 5, 6));
+        QCOMPARE(doc.light(1).direction, glm::dvec3(0, -1, 0));
+        QCOMPARE(doc.light(2).direction, glm::dvec3(1, 0, 0));
+        QCOMPARE(doc.undoStack()->text(doc.undoStack()->index() - 1), QStringLiteral("Place"));
+        QString error;
+        // A point light has no direction; a zero direction is invalid: refused with a reason.
+        QVERIFY(!ChangeLightValues::create(&doc, {{0, LightProperty::Direction, down}}, QString(), &error));
+        QVERIFY(!error.isEmpty());
+        error.clear();
+        QVERIFY(!ChangeLightValues::create(
+            &doc, {{1, LightProperty::Direction, QVariant::fromValue(glm::dvec3(0))}}, QString(), &error));
+        QVERIFY(!error.isEmpty());
+        error.clear();
+        QVERIFY(!ChangeLightValues::create(&doc, {{1, LightProperty::Direction, down}}, QString(), &error));
+        QVERIFY(error.isEmpty()); // already so: nothing to do, not an error
+    }
+
     void dependentValuesAreUndoneExactly() {
         Document doc;
         doc.newRig(lrtest::sampleRig());
