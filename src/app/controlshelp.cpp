@@ -21,10 +21,11 @@ QList<ControlBinding> mouseBindings() {
         {QObject::tr("Click a light"), QObject::tr("Select it")},
         {QObject::tr("Ctrl+click a light"), QObject::tr("Add it to the selection, or take it out")},
         {QObject::tr("Click the background"), QObject::tr("Clear the selection")},
-        {QObject::tr("Click the model with lights selected"),
+        {QObject::tr("Click the model"),
          QObject::tr("Place the highlight: move each selected light, keeping its distance, so its mirror "
                      "reflection lands on that point (spot, rect and disk lights also turn to face it; "
-                     "directional and rim lights only turn)")},
+                     "directional and rim lights only turn). One undo step; with no light selected it "
+                     "changes nothing")},
         {QObject::tr("Click an area light's outline or inside it"), QObject::tr("Select it")},
         {QObject::tr("Left drag a selected rect or disk light's handle"),
          QObject::tr("Change its width, height or radius, symmetric about its centre")},
@@ -35,7 +36,8 @@ QList<ControlBinding> mouseBindings() {
         {QObject::tr("Left drag a selected spot's cone edge"),
          QObject::tr("Change its outer angle (in 0.5° steps)")},
         {QObject::tr("Shift+click the model"),
-         QObject::tr("Aim the selected spot, directional and rim lights at that point")},
+         QObject::tr("Aim the selected spot, rect, disk, directional and rim lights at that point "
+                     "(nothing moves)")},
         {QObject::tr("Ctrl+Alt+click the background"),
          QObject::tr("Add a directional light from the environment's bright spot there (also Edit › Light "
                      "from environment, then a click)")},

@@ -312,10 +312,10 @@ bool GizmoInteraction::aimSelectedAt(const ScreenProjector& projector, const QPo
 GizmoInteraction::Highlight GizmoInteraction::placeHighlight(const ScreenProjector& projector,
                                                              const QPointF& screen, QString* message) {
     const QList<int> rows = m_doc->selectedRows();
-    if (rows.isEmpty()) return Highlight::Missed;
     const Ray ray = projector.ray(screen);
     const auto hit = intersectModelWithNormal(*m_scene->model(), ray);
     if (!hit) return Highlight::Missed;
+    if (rows.isEmpty()) return Highlight::NothingSelected;
     const glm::dvec3 mirror = glm::normalize(mirrorDirection(ray.direction, hit->normal));
     const Rig& rig = m_doc->rig();
     const SceneFrame frame = m_scene->frame();

@@ -75,9 +75,9 @@ class GizmoInteraction {
     // view ray mirrored about the surface normal at P (intersectModelWithNormal: the shading normal), a light
     // with a position goes to P + R·d, keeping its distance d from P; a light with a direction (spot, rect,
     // disk, directional, rim) turns to -R, so a spot or area light faces P. Position and direction are one
-    // undo step. Missed: the ray misses the model or nothing is selected (nothing changes); Refused: the
-    // document refused the values (*message says why).
-    enum class Highlight { Missed, Placed, Refused };
+    // undo step. Missed: the ray misses the model; NothingSelected: it hits the model but no light is
+    // selected; Refused: the document refused the values (*message says why). Only Placed changes the rig.
+    enum class Highlight { Missed, NothingSelected, Placed, Refused };
     Highlight placeHighlight(const ScreenProjector& projector, const QPointF& screen, QString* message);
 
   private:

@@ -408,7 +408,8 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event) {
         emit environmentClicked(pos); // the background (a light would have been a gizmo press)
     } else if (nav == Navigation::Orbit && !m_moved && !(event->modifiers() & Qt::ControlModifier)) {
         // A plain click that hit no gizmo: on the model with lights selected it places their highlight
-        // there; on the background (or with nothing selected) it clears the selection.
+        // there; on the model with nothing selected it only says so; on the background it clears the
+        // selection.
         QString message;
         switch (m_interaction->placeHighlight(projector(), pos, &message)) {
         case GizmoInteraction::Highlight::Placed:
@@ -417,6 +418,10 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event) {
             break;
         case GizmoInteraction::Highlight::Refused:
             emit statusMessage(message);
+            break;
+        case GizmoInteraction::Highlight::NothingSelected:
+            emit statusMessage(tr("Select a light, then click the model to place its highlight there "
+                                  "(Shift+click aims it instead)"));
             break;
         case GizmoInteraction::Highlight::Missed:
             m_doc->setSelection({});

@@ -1,6 +1,7 @@
 // Area lights in the viewport (issue 16): the outline and handle geometry of rect and disk lights
 // (render/gizmos.h), picking them by outline or inside, dragging their size handles (one undo step), and
 // "place the highlight" / Shift+click aim (app/gizmointeraction.h), against hand-built cameras.
+#include "app/controlshelp.h"
 #include "app/gizmointeraction.h"
 #include "app/picking.h"
 #include "app/scene.h"
@@ -255,10 +256,10 @@ class TestAreaGizmos : public QObject {
         QVERIFY(doc.rig().lights == before.lights);
         doc.undoStack()->redo();
 
-        // A click off the model, or with nothing selected: nothing changes (the caller deselects).
+        // A click off the model (the viewport then deselects), or with nothing selected: nothing changes.
         QVERIFY(gi.placeHighlight(p, QPointF(5, 5), &message) == GizmoInteraction::Highlight::Missed);
         doc.setSelection({});
-        QVERIFY(gi.placeHighlight(p, click, &message) == GizmoInteraction::Highlight::Missed);
+        QVERIFY(gi.placeHighlight(p, click, &message) == GizmoInteraction::Highlight::NothingSelected);
         QCOMPARE(doc.undoStack()->count(), 1);
     }
 
@@ -277,6 +278,12 @@ class TestAreaGizmos : public QObject {
         QVERIFY(near(doc.light(0).position, glm::dvec3(3, 3, 3))); // aiming does not move it
         QVERIFY(near(doc.light(0).direction, glm::normalize(*hit - glm::dvec3(3, 3, 3)), 1e-12));
         QCOMPARE(doc.undoStack()->count(), 1);
+        // Help › Controls tells both gestures apart.
+        QStringList help;
+        for (const ControlBinding& b : mouseBindings())
+            help << b.input + QLatin1Char('=') + b.effect;
+        QVERIFY(help.filter(QStringLiteral("Click the model=Place the highlight")).size() == 1);
+        QVERIFY(help.filter(QStringLiteral("Shift+click the model=Aim")).size() == 1);
     }
 };
 
