@@ -299,6 +299,43 @@ class TestFriction : public QObject {
         QVERIFY2(outer * 2.0 == std::round(outer * 2.0), qPrintable(QString::number(outer, 'g', 17)));
     }
 
+    // Issue 16: a plain click on the model places the selected light's highlight there (one undo step,
+    // the distance kept); on the background it still clears the selection; with nothing selected it
+    // changes nothing.
+    void plainClickOnTheModel_placesTheHighlight() {
+        spotInFrontOfTheModel();
+        const ScreenProjector proj = viewport()->projector();
+        const Model& model = *m_window->scene()->model();
+        std::optional<QPoint> onModel, background;
+        for (int y = 4; y < viewport()->height() && !(onModel && background); y += 7)
+            for (int x = 4; x < viewport()->width() && !(onModel && background); x += 7) {
+                const QPoint q(x, y);
+                if (viewport()->interaction()->pickLight(proj, q) >= 0) continue;
+                const bool hit = intersectModel(model, proj.ray(q)).has_value();
+                if (hit && !onModel && QLineF(q, viewport()->rect().center()).length() < 80) onModel = q;
+                if (!hit && !background) background = q;
+            }
+        QVERIFY(onModel && background);
+        const SceneFrame frame = m_window->scene()->frame();
+        const glm::dvec3 before = rigToWorld(doc()->rig(), frame, doc()->light(0).position);
+        const glm::dvec3 p = *intersectModel(model, proj.ray(*onModel));
+        const int steps = doc()->undoStack()->count();
+        QTest::mouseClick(viewport(), Qt::LeftButton, Qt::NoModifier, *onModel);
+        QCOMPARE(doc()->undoStack()->count(), steps + 1);
+        const glm::dvec3 after = rigToWorld(doc()->rig(), frame, doc()->light(0).position);
+        QVERIFY(glm::length(after - before) > 1e-6 * frame.radius);
+        QVERIFY(std::abs(glm::length(after - p) - glm::length(before - p)) < 1e-6 * frame.radius);
+        QVERIFY(glm::dot(doc()->light(0).direction, glm::normalize(p - after)) > 1.0 - 1e-9); // faces P
+        QCOMPARE(doc()->selectedRows(), QList<int>{0});
+        doc()->undoStack()->undo();
+        QVERIFY(glm::length(rigToWorld(doc()->rig(), frame, doc()->light(0).position) - before) < 1e-9);
+        QTest::mouseClick(viewport(), Qt::LeftButton, Qt::NoModifier, *background);
+        QVERIFY(doc()->selectedRows().isEmpty());
+        const int index = doc()->undoStack()->index();
+        QTest::mouseClick(viewport(), Qt::LeftButton, Qt::NoModifier, *onModel);
+        QCOMPARE(doc()->undoStack()->index(), index); // nothing selected: no step
+    }
+
     // Item 11: F2 right after Delete does not open an editor on a row that is not selected.
     void f2AfterDelete_renamesNothingUnselected() {
         doc()->newRig(Rig{});
