@@ -70,13 +70,16 @@ inline constexpr double kDiskRadiusScale = 1.0539; // sqrt(2π / (8 sin(π/4)))
 
 template <typename T> struct Frame {
     Vec3<T> t1, t2, n;
-    Vec3<T> local(const Vec3<T>& v) const { return Vec3<T>(glm::dot(v, t1), glm::dot(v, t2), glm::dot(v, n)); }
+    Vec3<T> local(const Vec3<T>& v) const {
+        return Vec3<T>(glm::dot(v, t1), glm::dot(v, t2), glm::dot(v, n));
+    }
 };
 
 // A frame around `n` whose x is `towards`'s component perpendicular to n (any perpendicular when none).
 template <typename T> Frame<T> frameAround(const Vec3<T>& n, const Vec3<T>& towards) {
     const Vec3<T> any = std::abs(n.x) < T(0.9) ? Vec3<T>(0, -n.z, n.y) : Vec3<T>(n.z, 0, -n.x);
-    const Vec3<T> t1 = safeNormalize(towards - n * glm::dot(n, towards), safeNormalize(any, Vec3<T>(1, 0, 0)));
+    const Vec3<T> t1 =
+        safeNormalize(towards - n * glm::dot(n, towards), safeNormalize(any, Vec3<T>(1, 0, 0)));
     return {t1, glm::cross(n, t1), n};
 }
 
@@ -145,7 +148,8 @@ template <typename T> Vec3<T> meanDirection(const Polygon<T>& clippedUnit, const
 }
 
 // (1/π) ∫ (R·ω)^n dω over the polygon's part above the horizon, as the LTC diag(s, s, 1) around R.
-template <typename T> T phongLobeIntegral(const Polygon<T>& clipped, const Frame<T>& f, const Vec3<T>& R, T n) {
+template <typename T>
+T phongLobeIntegral(const Polygon<T>& clipped, const Frame<T>& f, const Vec3<T>& R, T n) {
     const Frame<T> r = frameAround(R, f.n);
     const T m = n > T(0) ? n : T(0);
     const T invS = std::sqrt((m + T(1)) * T(0.5));

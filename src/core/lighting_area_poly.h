@@ -37,13 +37,15 @@ template <typename T> Vec3<T> edgeIntegral(const Vec3<T>& a, const Vec3<T>& b) {
 template <typename T> Polygon<T> normalized(const Polygon<T>& p) {
     Polygon<T> o;
     o.n = p.n;
-    for (int i = 0; i < p.n; ++i) o.v[i] = safeNormalize(p.v[i], Vec3<T>(0, 0, 1));
+    for (int i = 0; i < p.n; ++i)
+        o.v[i] = safeNormalize(p.v[i], Vec3<T>(0, 0, 1));
     return o;
 }
 
 template <typename T> Vec3<T> polygonVector(const Polygon<T>& unit) {
     Vec3<T> sum(0);
-    for (int i = 0; i < unit.n; ++i) sum += edgeIntegral(unit.v[i], unit.v[(i + 1) % unit.n]);
+    for (int i = 0; i < unit.n; ++i)
+        sum += edgeIntegral(unit.v[i], unit.v[(i + 1) % unit.n]);
     return sum * T(0.5);
 }
 

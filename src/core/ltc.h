@@ -50,9 +50,7 @@ std::array<float, kLtcSize * kLtcSize * kLtcFloats> fitTable(void (*progress)(in
 const float* ltcTable();
 
 // The six numbers at (alpha, nDotV), bilinear between cells, the coordinates clamped to the table.
-template <typename T> struct Lookup {
-    T m00, m02, m20, m22, scale, bias;
-};
+template <typename T> struct Lookup { T m00, m02, m20, m22, scale, bias; };
 
 template <typename T> Lookup<T> lookup(T alpha, T nDotV) {
     const T r = std::sqrt(lighting::positive(alpha));

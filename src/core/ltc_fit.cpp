@@ -149,7 +149,9 @@ Fit fitCell(int i, int j, const Fit& start, int samples) {
         }
     // Nelder-Mead over (a, b, c, φ), φ from the mean direction, the shape from the neighbour.
     using P = std::array<double, 4>;
-    const auto eval = [&](const P& p) { return objective(cell, Matrix{p[0], p[1], p[2], p[3]}, set, samples, norm); };
+    const auto eval = [&](const P& p) {
+        return objective(cell, Matrix{p[0], p[1], p[2], p[3]}, set, samples, norm);
+    };
     std::array<P, 5> x;
     std::array<double, 5> fx;
     x[0] = {start.a, start.b, start.c, out.phi};
@@ -158,7 +160,8 @@ Fit fitCell(int i, int j, const Fit& start, int samples) {
         x[size_t(k + 1)] = x[0];
         x[size_t(k + 1)][size_t(k)] += std::max(0.1 * std::abs(x[0][size_t(k)]), minStep);
     }
-    for (size_t k = 0; k < 5; ++k) fx[k] = eval(x[k]);
+    for (size_t k = 0; k < 5; ++k)
+        fx[k] = eval(x[k]);
     for (int iter = 0; iter < 500; ++iter) {
         std::array<size_t, 5> idx{0, 1, 2, 3, 4};
         std::sort(idx.begin(), idx.end(), [&](size_t l, size_t r) { return fx[l] < fx[r]; });
@@ -166,10 +169,12 @@ Fit fitCell(int i, int j, const Fit& start, int samples) {
         if (fx[worst] - fx[best] <= 1e-9 * std::abs(fx[best])) break;
         P centre{0, 0, 0, 0};
         for (size_t k = 0; k < 4; ++k)
-            for (size_t e = 0; e < 4; ++e) centre[e] += x[idx[k]][e] / 4;
+            for (size_t e = 0; e < 4; ++e)
+                centre[e] += x[idx[k]][e] / 4;
         const auto along = [&](double t) {
             P p;
-            for (size_t e = 0; e < 4; ++e) p[e] = centre[e] + t * (x[worst][e] - centre[e]);
+            for (size_t e = 0; e < 4; ++e)
+                p[e] = centre[e] + t * (x[worst][e] - centre[e]);
             return p;
         };
         const P r = along(-1);
@@ -177,8 +182,10 @@ Fit fitCell(int i, int j, const Fit& start, int samples) {
         if (fr < fx[best]) {
             const P ex = along(-2);
             const double fe = eval(ex);
-            if (fe < fr) x[worst] = ex, fx[worst] = fe;
-            else x[worst] = r, fx[worst] = fr;
+            if (fe < fr)
+                x[worst] = ex, fx[worst] = fe;
+            else
+                x[worst] = r, fx[worst] = fr;
         } else if (fr < fx[second]) {
             x[worst] = r, fx[worst] = fr;
         } else {
@@ -188,7 +195,8 @@ Fit fitCell(int i, int j, const Fit& start, int samples) {
                 x[worst] = ct, fx[worst] = fc;
             } else {
                 for (size_t k = 1; k < 5; ++k) {
-                    for (size_t e = 0; e < 4; ++e) x[idx[k]][e] = (x[idx[k]][e] + x[best][e]) / 2;
+                    for (size_t e = 0; e < 4; ++e)
+                        x[idx[k]][e] = (x[idx[k]][e] + x[best][e]) / 2;
                     fx[idx[k]] = eval(x[idx[k]]);
                 }
             }
@@ -215,7 +223,8 @@ std::array<float, kLtcSize * kLtcSize * kLtcFloats> fitTable(void (*progress)(in
             previous = f;
             const std::array<double, 4> inv = f.inverse();
             float* cell = &table[size_t((j * kLtcSize + i) * kLtcFloats)];
-            for (int k = 0; k < 4; ++k) cell[k] = float(inv[size_t(k)]);
+            for (int k = 0; k < 4; ++k)
+                cell[k] = float(inv[size_t(k)]);
             cell[4] = float(f.scale);
             cell[5] = float(f.bias);
         }

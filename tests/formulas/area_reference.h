@@ -11,8 +11,8 @@ using AreaLight = lighting::ShadeLight<double>;
 using lighting::Vec3;
 
 // A rect (or disk: halfHeight ignored) centred at `centre`, emitting along `direction` (unit).
-inline AreaLight makeArea(lr::LightType type, Vec3<double> centre, Vec3<double> direction, double hw, double hh,
-                          bool twoSided = false) {
+inline AreaLight makeArea(lr::LightType type, Vec3<double> centre, Vec3<double> direction, double hw,
+                          double hh, bool twoSided = false) {
     AreaLight l;
     l.type = type;
     l.position = centre;
@@ -34,7 +34,8 @@ inline Vec3<double> areaQuadrature(const AreaLight& l, const lighting::Surface<d
                                    const lighting::ShadeSettings<double>& st, int K) {
     using namespace lighting;
     const Vec3<double> V = viewVector(st, s.position);
-    const Vec3<double> cDiff = st.model == ShadingModel::Pbr ? pbrDiffuseColor(s.albedo, s.metallic) : s.albedo;
+    const Vec3<double> cDiff =
+        st.model == ShadingModel::Pbr ? pbrDiffuseColor(s.albedo, s.metallic) : s.albedo;
     const Vec3<double> f0 = st.model == ShadingModel::Pbr ? pbrF0(s.albedo, s.metallic) : s.specular;
     const double alpha = pbrAlpha(s.roughness);
     Vec3<double> sum(0);
