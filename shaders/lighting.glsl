@@ -548,7 +548,7 @@ bool lightIsBounded(ShadeLight l) {
 // as a 2-layer RGBA32F array (layer 0: M⁻¹'s m00, m02, m20, m22 with m11 = 1; layer 1: scale, bias),
 // bilinear by texelFetch so that the filtering is float exact (a GPU's filter weights have 8 bits).
 const int kDiskVertices = 8;
-const int kMaxPolygon = 9;  // kDiskVertices + 1 from clipping
+const int kMaxPolygon = 10;  // kDiskVertices + 1 per clipping (the LTC clips twice)
 const float kDiskRadiusScale = 1.0539;
 const int kLtcSize = 64;
 #ifndef LR_PBR
@@ -753,9 +753,11 @@ AreaPbr areaPbr(ShadeLight l, vec3 P, vec3 N, vec3 V, float alpha) {
     vec4 k;
     vec2 fr;
     ltcLookup(alpha, nDotV, k, fr);
+    // The polygon clipped to the surface's horizon (the BRDF is zero below), then transformed by M⁻¹.
     vec3 t[kMaxPolygon];
-    for (int i = 0; i < n; ++i) t[i] = vec3(k.x * local[i].x + k.y * local[i].z, local[i].y, k.z * local[i].x + k.w * local[i].z);
-    float I = clippedCosine(t, n);
+    for (int i = 0; i < m; ++i)
+        t[i] = vec3(k.x * clipped[i].x + k.y * clipped[i].z, clipped[i].y, k.z * clipped[i].x + k.w * clipped[i].z);
+    float I = m >= 3 ? clippedCosine(t, m) : 0.0;
     o.scaleI = fr.x * I;
     o.biasI = fr.y * I;
     return o;

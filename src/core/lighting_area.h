@@ -22,7 +22,8 @@
 //     area-preserving kDiskVertices-gon, lighting_area_poly.h).
 //   half-Lambert: ((1 + cos)/2)² over the unclipped polygon as (Ω + 2C + C²/Ω)/4 (C = ∫cos dω): exact
 //     but for cos² replaced by its mean squared.
-//   GGX specular: LTC (ltc.h, our own fit) with horizon clipping, × (F0·scale + bias).
+//   GGX specular: LTC (ltc.h, our own fit), clipped to the surface's horizon and to the transformed
+//     cosine's, × (F0·scale + bias).
 //   PBR diffuse's (1 − F): Schlick's weight at the polygon's mean direction (exact for small emitters).
 //   Phong: (R·ω)^n as the LTC diag(s, s, 1) around R, s² = 2/(n + 1) (same integral and peak); Blinn-Phong:
 //     the same with n/4 (the Blinn lobe's width at normal incidence).
@@ -207,11 +208,12 @@ Vec3<T> shadeAreaLightPbr(const ShadeLight<T>& l, const Surface<T>& s, const Sha
     const T m = T(1) - saturate(std::abs(glm::dot(Vl, H)));
     const T w = m * m * m * m * m;
     const Vec3<T> diffuse = cDiff * (Vec3<T>(1) - f0) * ((T(1) - w) * D);
-    // Specular: the LTC integral × (F0·scale + bias).
+    // Specular: the LTC integral × (F0·scale + bias), the polygon clipped to the surface's horizon (where
+    // the BRDF is zero) before the transform and to the cosine's after it.
     T nDotV = std::abs(glm::dot(N, V));
     if (!(nDotV > T(kMinNDotV))) nDotV = T(kMinNDotV);
     const ltc::Lookup<T> k = ltc::lookup(alpha, nDotV);
-    const T I = clippedCosine(transformed(local, k.m00, k.m02, k.m20, k.m22));
+    const T I = clippedCosine(transformed(clipHorizon(local), k.m00, k.m02, k.m20, k.m22));
     const Vec3<T> specular = (f0 * k.scale + Vec3<T>(k.bias)) * I;
     return visibility * (l.color * diffuse + l.specular * specular) + ambient;
 }

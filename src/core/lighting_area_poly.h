@@ -15,9 +15,9 @@
 
 namespace lr::lighting {
 
-// Rect: 4 vertices; disk: kDiskVertices; clipping adds at most one.
+// Rect: 4 vertices; disk: kDiskVertices; each clipping adds at most one (the LTC clips twice).
 inline constexpr int kDiskVertices = 8;
-inline constexpr int kMaxPolygon = kDiskVertices + 1;
+inline constexpr int kMaxPolygon = kDiskVertices + 2;
 
 template <typename T> struct Polygon {
     Vec3<T> v[kMaxPolygon];

@@ -147,33 +147,35 @@ Fit fitCell(int i, int j, const Fit& start, int samples) {
             brdf(cell, x.w, &x.f, &x.pdf, &weight);
             if (x.pdf > 0) set.push_back(x);
         }
-    // Nelder-Mead over (a, b, c, φ), φ from the mean direction, the shape from the neighbour.
-    using P = std::array<double, 4>;
+    // Nelder-Mead over (a, b, c) from the neighbour's shape; φ stays the BRDF's mean direction (fitting it
+    // too let the pole drift towards N at grazing views, traded against the skew b: a lower L³ error, but
+    // a worse integral over caps away from the peak).
+    using P = std::array<double, 3>;
     const auto eval = [&](const P& p) {
-        return objective(cell, Matrix{p[0], p[1], p[2], p[3]}, set, samples, norm);
+        return objective(cell, Matrix{p[0], p[1], p[2], out.phi}, set, samples, norm);
     };
-    std::array<P, 5> x;
-    std::array<double, 5> fx;
-    x[0] = {start.a, start.b, start.c, out.phi};
+    std::array<P, 4> x;
+    std::array<double, 4> fx;
+    x[0] = {start.a, start.b, start.c};
     const double minStep = 0.05 * std::min(start.a, start.c);
-    for (int k = 0; k < 4; ++k) {
-        x[size_t(k + 1)] = x[0];
-        x[size_t(k + 1)][size_t(k)] += std::max(0.1 * std::abs(x[0][size_t(k)]), minStep);
+    for (size_t k = 0; k < 3; ++k) {
+        x[k + 1] = x[0];
+        x[k + 1][k] += std::max(0.1 * std::abs(x[0][k]), minStep);
     }
-    for (size_t k = 0; k < 5; ++k)
+    for (size_t k = 0; k < 4; ++k)
         fx[k] = eval(x[k]);
     for (int iter = 0; iter < 500; ++iter) {
-        std::array<size_t, 5> idx{0, 1, 2, 3, 4};
+        std::array<size_t, 4> idx{0, 1, 2, 3};
         std::sort(idx.begin(), idx.end(), [&](size_t l, size_t r) { return fx[l] < fx[r]; });
-        const size_t best = idx[0], worst = idx[4], second = idx[3];
+        const size_t best = idx[0], worst = idx[3], second = idx[2];
         if (fx[worst] - fx[best] <= 1e-9 * std::abs(fx[best])) break;
-        P centre{0, 0, 0, 0};
-        for (size_t k = 0; k < 4; ++k)
-            for (size_t e = 0; e < 4; ++e)
-                centre[e] += x[idx[k]][e] / 4;
+        P centre{0, 0, 0};
+        for (size_t k = 0; k < 3; ++k)
+            for (size_t e = 0; e < 3; ++e)
+                centre[e] += x[idx[k]][e] / 3;
         const auto along = [&](double t) {
             P p;
-            for (size_t e = 0; e < 4; ++e)
+            for (size_t e = 0; e < 3; ++e)
                 p[e] = centre[e] + t * (x[worst][e] - centre[e]);
             return p;
         };
@@ -194,8 +196,8 @@ Fit fitCell(int i, int j, const Fit& start, int samples) {
             if (fc < std::min(fr, fx[worst])) {
                 x[worst] = ct, fx[worst] = fc;
             } else {
-                for (size_t k = 1; k < 5; ++k) {
-                    for (size_t e = 0; e < 4; ++e)
+                for (size_t k = 1; k < 4; ++k) {
+                    for (size_t e = 0; e < 3; ++e)
                         x[idx[k]][e] = (x[idx[k]][e] + x[best][e]) / 2;
                     fx[idx[k]] = eval(x[idx[k]]);
                 }
@@ -203,7 +205,7 @@ Fit fitCell(int i, int j, const Fit& start, int samples) {
         }
     }
     const size_t best = size_t(std::min_element(fx.begin(), fx.end()) - fx.begin());
-    out.a = x[best][0], out.b = x[best][1], out.c = x[best][2], out.phi = x[best][3];
+    out.a = x[best][0], out.b = x[best][1], out.c = x[best][2];
     out.error = fx[best];
     return out;
 }

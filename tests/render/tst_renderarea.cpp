@@ -6,7 +6,9 @@
 //
 // Tolerance (per channel, linear radiance): exact |gpu − ref| <= 2e-4 · max(1, |ref|) (float polygon
 // integrals: atan2 and cross products of nearly parallel vertex directions lose a few more bits than the
-// point lights' formulas); balanced and fast are measured and printed, bounded loosely (fast: per vertex).
+// point lights' formulas; measured on llvmpipe: <= 5e-6); balanced is held to the same bound (its
+// approximations do not touch the area code); fast evaluates the area integrals at the vertices (F1) and is
+// only checked finite (on the test plane's few vertices the highlight falls between them).
 #include "glfixture.h"
 #include "scenes.h"
 
@@ -19,7 +21,7 @@ using namespace lr::test;
 
 namespace {
 constexpr double kExactTolerance = 2e-4;
-const QSize kSize(96, 72);
+const QSize kSize(64, 48);
 
 RenderSettings floatSettings() {
     RenderSettings s;
@@ -69,7 +71,7 @@ class TestRenderArea : public QObject {
         const char* paths[] = {"forward", "deferred", "clustered"};
         for (int q = 0; q < 3; ++q)
             for (int path = 0; path < 3; ++path) {
-                if (q == int(Quality::Fast) && path > 0) continue; // fast is forward only
+                if (q != int(Quality::Exact) && path > 0) continue; // fast is forward only; balanced: once
                 const char* tier = EnumNames<Quality>::names[size_t(q)];
                 QTest::addRow("pbr/%s/%s", paths[path], tier)
                     << int(ShadingModel::Pbr) << 0 << 0 << path << q;
@@ -103,7 +105,7 @@ class TestRenderArea : public QObject {
         QVERIFY2(m_gl.renderRadiance(camera, kSize, s, &radiance, &error), qPrintable(error));
         QVERIFY2(m_gl.renderGBuffer(camera, kSize, floatSettings(), &g, &error), qPrintable(error));
         const ViewCamera cam = m_gl.renderer().effectiveCamera(camera);
-        const bool exact = Quality(quality) == Quality::Exact;
+        const bool exact = Quality(quality) != Quality::Fast;
         const Comparison c = compareWithReference(radiance, g, rig, m_gl.renderer().sceneFrame(), cam.view(),
                                                   exact ? kExactTolerance : 1.0);
         qInfo().noquote() << c.summary();
