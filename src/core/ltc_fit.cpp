@@ -1,8 +1,9 @@
 // The LTC fit (ltc.h): our own implementation from the paper's description (Heitz, Dupuy, Hill and
 // Neubelt 2016, section 4): per cell, the BRDF's norm and Fresnel integrals by importance sampling, then
-// M's four free entries by Nelder-Mead minimising the L³ distance between the LTC distribution and the
-// normalised BRDF × cosine, estimated with fixed stratified samples of both distributions (balance
-// heuristic), so that the objective is a smooth function of M. No published table is used.
+// M's shape (a, b, c; its pole fixed at the BRDF's mean direction) by Nelder-Mead minimising the L³ distance
+// between the LTC distribution and the normalised BRDF × cosine, estimated with fixed stratified samples of
+// both distributions (balance heuristic), so that the objective is a smooth function of M. No published table
+// is used.
 #include "ltc.h"
 
 #include <algorithm>
