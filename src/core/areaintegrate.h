@@ -2,8 +2,8 @@
 // reference (docs/quality.md "Area lights"): exactly the definition of lighting_area.h, the integral over
 // the emitter's solid angle of directionalResponse() (× 1/π under classic shading), by Monte Carlo.
 //
-// Three sampling strategies combined by multiple importance sampling (balance heuristic, one sample of
-// each per point):
+// Three sampling strategies combined by multiple importance sampling (power heuristic, one sample of each
+// per point):
 //   - the emitter: a rect uniformly by solid angle (Ureña, Fajardo and King 2013, "An Area-Preserving
 //     Parametrization for Spherical Rectangles"; by area, its density converted, where it subtends less
 //     than kSmallSolidAngle), a disk by area (Shirley and Chiu's concentric map), density converted to
