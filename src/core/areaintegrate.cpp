@@ -33,7 +33,8 @@ int sideOf(const lighting::ShadeLight<double>& l, const V& P) {
 }
 
 bool seesEmitter(const lighting::ShadeLight<double>& l, const V& P) {
-    if (!traitsOf(l.type).isArea || !finitePositive(l.halfWidth) || !finitePositive(l.halfHeight)) return false;
+    if (!traitsOf(l.type).isArea || !finitePositive(l.halfWidth) || !finitePositive(l.halfHeight))
+        return false;
     const int side = sideOf(l, P);
     return side > 0 || (side < 0 && l.twoSided);
 }
@@ -86,7 +87,8 @@ class Emitter {
             double xu = -(cu * m_z0) / std::sqrt(std::max(0.0, 1.0 - cu * cu));
             xu = std::clamp(xu, m_x0, m_x1);
             const double dd = std::sqrt(xu * xu + m_z0 * m_z0);
-            const double h0 = m_y0 / std::sqrt(dd * dd + m_y0 * m_y0), h1 = m_y1 / std::sqrt(dd * dd + m_y1 * m_y1);
+            const double h0 = m_y0 / std::sqrt(dd * dd + m_y0 * m_y0),
+                         h1 = m_y1 / std::sqrt(dd * dd + m_y1 * m_y1);
             const double hv = h0 + u1 * (h1 - h0), hv2 = hv * hv;
             const double yv = hv2 < 1.0 - 1e-14 ? hv * dd / std::sqrt(1.0 - hv2) : m_y1;
             const V local = xu * m_x + std::clamp(yv, m_y0, m_y1) * m_y + m_z0 * m_z;
@@ -96,9 +98,12 @@ class Emitter {
             return true;
         }
         glm::dvec2 q;
-        if (m_disk) q = concentricDisk(u0, u1);
-        else q = {2.0 * u0 - 1.0, 2.0 * u1 - 1.0};
-        const V toPoint = m_l.position + q.x * m_l.halfWidth * m_l.axisX + q.y * m_l.halfHeight * m_l.axisY - m_P;
+        if (m_disk)
+            q = concentricDisk(u0, u1);
+        else
+            q = {2.0 * u0 - 1.0, 2.0 * u1 - 1.0};
+        const V toPoint =
+            m_l.position + q.x * m_l.halfWidth * m_l.axisX + q.y * m_l.halfHeight * m_l.axisY - m_P;
         const double d2 = glm::dot(toPoint, toPoint);
         if (!finitePositive(d2)) return false;
         *w = toPoint / std::sqrt(d2);
@@ -138,8 +143,8 @@ class LightIntegrand {
   public:
     LightIntegrand(const lighting::ShadeLight<double>& l, const lighting::Surface<double>& s,
                    const lighting::ShadeSettings<double>& st)
-        : m_l(l), m_s(s), m_st(st), m_emitter(l, s.position),
-          m_pbr(st.model == ShadingModel::Pbr), m_v(lighting::viewVector(st, s.position)),
+        : m_l(l), m_s(s), m_st(st), m_emitter(l, s.position), m_pbr(st.model == ShadingModel::Pbr),
+          m_v(lighting::viewVector(st, s.position)),
           m_cDiff(m_pbr ? lighting::pbrDiffuseColor(s.albedo, s.metallic) : s.albedo),
           m_f0(m_pbr ? lighting::pbrF0(s.albedo, s.metallic) : s.specular),
           m_alpha(m_pbr ? lighting::pbrAlpha(s.roughness) : 1.0),
@@ -292,7 +297,8 @@ Estimate integrate(std::span<const lighting::ShadeLight<double>> lights, std::sp
 Estimate integrateOne(const lighting::ShadeLight<double>& l, const lighting::Surface<double>& s,
                       const lighting::ShadeSettings<double>& st, std::uint64_t seed,
                       const envintegrate::Convergence& convergence, const V& rest) {
-    return integrate(std::span<const lighting::ShadeLight<double>>(&l, 1), {}, s, st, seed, convergence, rest);
+    return integrate(std::span<const lighting::ShadeLight<double>>(&l, 1), {}, s, st, seed, convergence,
+                     rest);
 }
 
 } // namespace lr::areaintegrate

@@ -74,8 +74,8 @@ class SpecularLobe {
         m_r = lighting::safeNormalize(reflectAbout(v, n), n);
         const double nv = glm::dot(n, v);
         m_visibleNormals = pbr && nv > 1e-6;
-        m_visibleNorm = m_visibleNormals ? 2.0 * (nv + std::sqrt(alpha * alpha + (1.0 - alpha * alpha) * nv * nv))
-                                         : 0.0;
+        m_visibleNorm =
+            m_visibleNormals ? 2.0 * (nv + std::sqrt(alpha * alpha + (1.0 - alpha * alpha) * nv * nv)) : 0.0;
         frameAround(n, &m_tangent, &m_bitangent);
         m_vLocal = V(glm::dot(v, m_tangent), glm::dot(v, m_bitangent), nv);
     }
@@ -97,8 +97,9 @@ class SpecularLobe {
         }
         if (!m_pbr && m_model == SpecularModel::Phong) {
             const double c = glm::dot(m_r, w);
-            return c > 0.0 ? (m_shininess + 1.0) / (2.0 * kPi) * lighting::safePow(std::min(c, 1.0), m_shininess)
-                           : 0.0;
+            return c > 0.0
+                       ? (m_shininess + 1.0) / (2.0 * kPi) * lighting::safePow(std::min(c, 1.0), m_shininess)
+                       : 0.0;
         }
         V h;
         double vh;

@@ -98,7 +98,8 @@ makeReferenceScene(const Model& model, const Rig& rig, const SceneFrame& frame, 
 }
 
 EnvironmentConvergence environmentConvergence(const ReferenceImage& r) {
-    return r.environment ? convergenceOf(r, r.environmentError, r.environmentSamples) : EnvironmentConvergence{};
+    return r.environment ? convergenceOf(r, r.environmentError, r.environmentSamples)
+                         : EnvironmentConvergence{};
 }
 
 EnvironmentConvergence areaConvergence(const ReferenceImage& r) {

@@ -21,7 +21,8 @@ using Light = lighting::ShadeLight<double>;
 namespace {
 
 // A rect (or disk) centred at c, emitting towards `normal`, its width along `x`.
-Light area(LightType type, const V& c, const V& normal, const V& x, double hw, double hh, double radiance = 1.0) {
+Light area(LightType type, const V& c, const V& normal, const V& x, double hw, double hh,
+           double radiance = 1.0) {
     Light l;
     l.type = type;
     l.position = c;
@@ -92,7 +93,8 @@ double rectIrradiance(const Light& l, const V& P, const V& N) {
 V quadrature(const Light& l, const lighting::Surface<double>& s, const lighting::ShadeSettings<double>& st,
              int n) {
     const V Vv = lighting::viewVector(st, s.position);
-    const V cDiff = st.model == ShadingModel::Pbr ? lighting::pbrDiffuseColor(s.albedo, s.metallic) : s.albedo;
+    const V cDiff =
+        st.model == ShadingModel::Pbr ? lighting::pbrDiffuseColor(s.albedo, s.metallic) : s.albedo;
     const V f0 = st.model == ShadingModel::Pbr ? lighting::pbrF0(s.albedo, s.metallic) : s.specular;
     const double alpha = lighting::pbrAlpha(s.roughness);
     V sum(0.0);
@@ -194,11 +196,14 @@ class TestAreaIntegrate : public QObject {
                 const lighting::ShadeSettings<double> st = glossy ? pbr() : classic();
                 const V d = l.position - P;
                 const V w = glm::normalize(d);
-                const double omega = lighting::areaOf(l) * std::abs(glm::dot(w, l.direction)) / glm::dot(d, d);
+                const double omega =
+                    lighting::areaOf(l) * std::abs(glm::dot(w, l.direction)) / glm::dot(d, d);
                 const V Vv = lighting::viewVector(st, P);
                 const V cDiff = glossy ? lighting::pbrDiffuseColor(s.albedo, 0.0) : s.albedo;
                 const V f0 = glossy ? lighting::pbrF0(s.albedo, 0.0) : s.specular;
-                V expected = lighting::directionalResponse(l, s, st, Vv, w, cDiff, f0, lighting::pbrAlpha(s.roughness)) * omega;
+                V expected = lighting::directionalResponse(l, s, st, Vv, w, cDiff, f0,
+                                                           lighting::pbrAlpha(s.roughness)) *
+                             omega;
                 if (!glossy) expected /= kPi;
                 expectWithin(areaintegrate::integrateOne(l, s, st, 1, tight()), expected, 1e-3, "small far");
             }
@@ -208,8 +213,10 @@ class TestAreaIntegrate : public QObject {
     // Glossy lobes (GGX, Phong, Blinn-Phong) of a large close emitter against the quadrature over its area.
     void glossyAgainstQuadrature() {
         const V P(0.0, 0.0, -3.0);
-        const Light rect = area(LightType::Rect, P + V(0.3, 1.0, 0.6), V(-0.1, -1, -0.4), V(1, 0, 0), 0.6, 0.4, 2.0);
-        const Light disk = area(LightType::Disk, P + V(0.3, 1.0, 0.6), V(-0.1, -1, -0.4), V(1, 0, 0), 0.5, 0.5, 2.0);
+        const Light rect =
+            area(LightType::Rect, P + V(0.3, 1.0, 0.6), V(-0.1, -1, -0.4), V(1, 0, 0), 0.6, 0.4, 2.0);
+        const Light disk =
+            area(LightType::Disk, P + V(0.3, 1.0, 0.6), V(-0.1, -1, -0.4), V(1, 0, 0), 0.5, 0.5, 2.0);
         for (const Light& l : {rect, disk}) {
             for (double roughness : {0.15, 0.5}) {
                 lighting::Surface<double> s = surface(P, V(0.1, 1, 0.5), V(0.9, 0.6, 0.3));
@@ -223,7 +230,8 @@ class TestAreaIntegrate : public QObject {
                 lighting::Surface<double> s = surface(P, V(0.1, 1, 0.5), V(0.5), V(0.6));
                 s.shininess = 64;
                 const V expected = quadrature(l, s, st, 1200);
-                expectWithin(areaintegrate::integrateOne(l, s, st, 4, tight()), expected, 2e-3, "phong/blinn");
+                expectWithin(areaintegrate::integrateOne(l, s, st, 4, tight()), expected, 2e-3,
+                             "phong/blinn");
             }
         }
     }
@@ -241,8 +249,10 @@ class TestAreaIntegrate : public QObject {
             const areaintegrate::Estimate e2 = areaintegrate::integrateOne(two, s, classic(), 2, tight());
             QVERIFY(nonNegativeFinite(e1.radiance) && nonNegativeFinite(e2.radiance));
             const V expected = y == 0.0 ? V(0.0) : s.albedo * rectIrradiance(one, P, s.normal) / kPi;
-            if (y >= 0.0) QCOMPARE(e1.radiance, V(0.0)); // behind or in its plane
-            else expectWithin(e1, expected, 1e-3, "in front");
+            if (y >= 0.0)
+                QCOMPARE(e1.radiance, V(0.0)); // behind or in its plane
+            else
+                expectWithin(e1, expected, 1e-3, "in front");
             expectWithin(e2, expected, 1e-3, "two-sided");
             QVERIFY(e1.errorLevels <= 0.05 + 1e-12 && e2.errorLevels <= 0.05 + 1e-12);
         }
@@ -279,8 +289,9 @@ class TestAreaIntegrate : public QObject {
             l.twoSided = i % 3 == 0;
             l.diffuse = i % 5 == 0 ? DiffuseModel::HalfLambert : DiffuseModel::Lambert;
             l.ambient = V(0.01);
-            lighting::Surface<double> s = surface(V(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-4, -2)),
-                                                  dir(), V(rng.uniform(0, 1)), V(rng.uniform(0, 1)));
+            lighting::Surface<double> s =
+                surface(V(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-4, -2)), dir(),
+                        V(rng.uniform(0, 1)), V(rng.uniform(0, 1)));
             if (i % 11 == 0) s.position = l.position + 0.3 * l.halfWidth * l.axisX; // on the light
             s.roughness = rng.uniform(0.0, 1.0), s.metallic = rng.uniform(0.0, 1.0);
             s.shininess = std::pow(10.0, rng.uniform(0.0, 3.0));
@@ -294,10 +305,11 @@ class TestAreaIntegrate : public QObject {
             if (!e.converged) ++over;
             const V Vv = lighting::viewVector(st, s.position);
             const V a = lighting::shadeAreaLight(l, s, st, Vv);
-            const V b = lighting::shadeAreaLightPbr(l, s, st, Vv, lighting::pbrDiffuseColor(s.albedo, s.metallic),
-                                                    lighting::pbrF0(s.albedo, s.metallic),
-                                                    lighting::pbrAlpha(s.roughness));
-            QVERIFY2(nonNegativeFinite(a) && nonNegativeFinite(b), qPrintable(QStringLiteral("case %1").arg(i)));
+            const V b = lighting::shadeAreaLightPbr(
+                l, s, st, Vv, lighting::pbrDiffuseColor(s.albedo, s.metallic),
+                lighting::pbrF0(s.albedo, s.metallic), lighting::pbrAlpha(s.roughness));
+            QVERIFY2(nonNegativeFinite(a) && nonNegativeFinite(b),
+                     qPrintable(QStringLiteral("case %1").arg(i)));
         }
         // The cap is for pathological pixels; random configurations converge.
         QVERIFY2(over * 50 <= runs, qPrintable(QStringLiteral("%1 of %2 at the cap").arg(over).arg(runs)));
@@ -315,7 +327,8 @@ class TestAreaIntegrate : public QObject {
         double sum = 0.0, sum2 = 0.0, reported = 0.0;
         const int n = 200;
         for (int i = 0; i < n; ++i) {
-            const areaintegrate::Estimate e = areaintegrate::integrateOne(l, s, classic(), std::uint64_t(i) * 7919u, c);
+            const areaintegrate::Estimate e =
+                areaintegrate::integrateOne(l, s, classic(), std::uint64_t(i) * 7919u, c);
             sum += e.radiance.x, sum2 += e.radiance.x * e.radiance.x, reported += e.standardError.x;
         }
         const double mean = sum / n, spread = std::sqrt(std::max(0.0, sum2 / n - mean * mean));

@@ -75,7 +75,8 @@ class TestAreaReference : public QObject {
         GBuffer g;
         QVERIFY2(m_gl.renderGBuffer(planeCamera(), kSize, settings, &g, &error), qPrintable(error));
         const glm::dmat4 view = m_gl.renderer().effectiveCamera(planeCamera()).view();
-        const auto scene = makeReferenceScene(*model, rig, m_gl.renderer().sceneFrame(), view, settings, &error);
+        const auto scene =
+            makeReferenceScene(*model, rig, m_gl.renderer().sceneFrame(), view, settings, &error);
         QVERIFY2(scene, qPrintable(error));
         QVERIFY(scene->hasAreaLights());
         const ReferenceImage ref = computeReference(g, *scene);
@@ -93,8 +94,10 @@ class TestAreaReference : public QObject {
                 if (!ref.covered[i]) continue;
                 const lighting::Surface<double> s = render::surfaceAt(g, x, y);
                 if (!areaintegrate::reaches(l, s)) continue;
-                const V expected = l.color * s.albedo * (rectIrradiance(l, s.position, s.normal) / lighting::kPi);
-                const V a = encodeSrgb(expected, 0.0, ToneMap::Clamp), b = encodeSrgb(ref.radiance[i], 0.0, ToneMap::Clamp);
+                const V expected =
+                    l.color * s.albedo * (rectIrradiance(l, s.position, s.normal) / lighting::kPi);
+                const V a = encodeSrgb(expected, 0.0, ToneMap::Clamp),
+                        b = encodeSrgb(ref.radiance[i], 0.0, ToneMap::Clamp);
                 ++compared;
                 double largest = 0.0;
                 for (int ch = 0; ch < 3; ++ch)
@@ -103,7 +106,8 @@ class TestAreaReference : public QObject {
                 if (largest > 1.5) ++off;
             }
         QVERIFY(compared > 0);
-        QVERIFY2(off * 100 <= compared, qPrintable(QStringLiteral("%1 of %2 more than 1.5 levels off").arg(off).arg(compared)));
+        QVERIFY2(off * 100 <= compared,
+                 qPrintable(QStringLiteral("%1 of %2 more than 1.5 levels off").arg(off).arg(compared)));
     }
 
     void ambientOnceAndShadowedFinite() {
@@ -118,7 +122,8 @@ class TestAreaReference : public QObject {
         GBuffer g;
         QVERIFY2(m_gl.renderGBuffer(planeCamera(), kSize, settings, &g, &error), qPrintable(error));
         const glm::dmat4 view = m_gl.renderer().effectiveCamera(planeCamera()).view();
-        const auto scene = makeReferenceScene(*model, rig, m_gl.renderer().sceneFrame(), view, settings, &error);
+        const auto scene =
+            makeReferenceScene(*model, rig, m_gl.renderer().sceneFrame(), view, settings, &error);
         QVERIFY2(scene, qPrintable(error));
         const ReferenceImage ref = computeReference(g, *scene);
         QCOMPARE(areaConvergence(ref).over, 0);
