@@ -1,6 +1,7 @@
 #include "envintegrate.h"
 
 #include "colour.h"
+#include "montecarlo.h"
 
 #include <algorithm>
 #include <cmath>
@@ -84,51 +85,23 @@ Cone coneOf(const Cell& c) {
     return k;
 }
 
-struct Rng { // splitmix64: independent, reproducible streams per pixel
-    std::uint64_t state;
-    explicit Rng(std::uint64_t seed) : state(seed * 0x9E3779B97F4A7C15ull + 0x632BE59BD9B4E019ull) {}
-    double next() {
-        std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        z ^= z >> 31;
-        return double(z >> 11) * 0x1.0p-53; // [0, 1)
-    }
-};
-
-// An orthonormal frame around a unit vector (Duff et al. 2017).
-void frameAround(const V& n, V* t, V* b) {
-    const double sign = std::copysign(1.0, n.z);
-    const double a = -1.0 / (sign + n.z), bb = n.x * n.y * a;
-    *t = V(1.0 + sign * n.x * n.x * a, sign * bb, -sign * n.x);
-    *b = V(bb, sign + n.y * n.y * a, -n.y);
-}
-
-V around(const V& axis, double cosTheta, double phi) {
-    V t, b;
-    frameAround(axis, &t, &b);
-    const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
-    return sinTheta * std::cos(phi) * t + sinTheta * std::sin(phi) * b + cosTheta * axis;
-}
-
-V reflectAbout(const V& v, const V& h) {
-    return 2.0 * glm::dot(v, h) * h - v;
-}
+using montecarlo::reflectAbout;
+using montecarlo::Rng;
 
 double maxOf(const V& v) {
     return std::max({v.x, v.y, v.z});
 }
 
+} // namespace
+
 // The largest channel's change, in 8-bit levels, of the display value when x moves by ±e.
-double displayLevels(const V& x, const V& e, const Convergence& c) {
+double displayErrorLevels(const V& x, const V& e, const Convergence& c) {
     const double scale = colour::exposureScale(c.exposureEV);
     const V d0 = colour::displayColour(x, scale, c.toneMap);
     const V up = colour::displayColour(x + e, scale, c.toneMap);
     const V down = colour::displayColour(glm::max(x - e, V(0.0)), scale, c.toneMap);
     return 255.0 * std::max(maxOf(glm::abs(up - d0)), maxOf(glm::abs(d0 - down)));
 }
-
-} // namespace
 
 struct EnvironmentField::Item {
     int level; // >= 1 a stored node, 0 a texel, -1 a sub-texel cell
@@ -490,81 +463,10 @@ Estimate EnvironmentField::integrate(const lighting::Surface<double>& s,
                         : lighting::shadeLight(unit, surface, st, v);
         return L * (W - k * kernel(glm::dot(n, w)));
     };
-    // The lobe's density at ω. Sampled half-vectors lie on n's side; ω + v is parallel to ±h, so the
-    // half-vector is oriented to n's side before the density is read (else reflections of half-vectors
-    // facing away from v would be sampled with a density counted as 0: a bias).
-    const auto halfVector = [&](const V& w, V* h, double* vh) {
-        const V hv = w + v;
-        const double hh = glm::dot(hv, hv);
-        if (!(hh > 1e-24)) return false;
-        *h = hv / std::sqrt(hh);
-        if (glm::dot(n, *h) < 0.0) *h = -*h;
-        *vh = std::abs(glm::dot(v, *h));
-        return *vh > 0.0;
-    };
-    // Physically based lobes sample GGX's visible normals (Heitz 2018) when v is above the surface: the
-    // weight f·cos/p is then F·G2/G1(v) ≤ 1, where sampling D(h)(n·h) gives G2·(v·h)/((n·v)(n·h)), large and
-    // erratic at grazing views; with the near-mirror metals of real models (DamagedHelmet's visor and trim
-    // in studio.exr) that left 3.6 % of pixels above the target at the cap. Its density at ω is
-    // D(h)·G1(v)/(4 n·v) = D(h) / (2 (n·v + √(α² + (1 − α²)(n·v)²))).
-    const double nv = glm::dot(n, v);
-    const bool visibleNormals = pbr && nv > 1e-6;
-    const double visibleNorm =
-        visibleNormals ? 2.0 * (nv + std::sqrt(alpha * alpha + (1.0 - alpha * alpha) * nv * nv)) : 0.0;
-    V tangent, bitangent;
-    frameAround(n, &tangent, &bitangent);
-    const V vLocal(glm::dot(v, tangent), glm::dot(v, bitangent), nv);
-    const auto lobePdf = [&](const V& w) {
-        // Only where the sampler goes (safePow(x, 0) is 1 even for x <= 0: a density there would be a bias).
-        if (visibleNormals) {
-            V h;
-            double vh;
-            if (!halfVector(w, &h, &vh)) return 0.0;
-            // The sampler only makes half-vectors above the surface that face v; every ω they reflect v
-            // into (even below the horizon, where the integrand is 0) has this density.
-            if (!(glm::dot(v, h) > 0.0) || !(glm::dot(n, h) > 0.0)) return 0.0;
-            return lighting::ggxDistribution(n, h, alpha) / visibleNorm;
-        }
-        if (!pbr && st.specular == SpecularModel::Phong) {
-            const double c = glm::dot(r, w);
-            return c > 0.0 ? (shininess + 1.0) / (2.0 * kPi) * lighting::safePow(std::min(c, 1.0), shininess)
-                           : 0.0;
-        }
-        V h;
-        double vh;
-        if (!halfVector(w, &h, &vh)) return 0.0;
-        const double nh = std::min(glm::dot(n, h), 1.0);
-        if (!(nh > 0.0)) return 0.0;
-        const double pdfH = pbr ? lighting::ggxDistribution(n, h, alpha) * nh
-                                : (shininess + 1.0) / (2.0 * kPi) * lighting::safePow(nh, shininess);
-        return pdfH / (4.0 * vh);
-    };
-    const auto sampleLobe = [&](double u0, double u1) {
-        const double phi = 2.0 * kPi * u1;
-        if (visibleNormals) {
-            // Heitz 2018, listing 1: stretch v, sample the projected disk, unstretch.
-            const V vh = glm::normalize(V(alpha * vLocal.x, alpha * vLocal.y, vLocal.z));
-            const double lensq = vh.x * vh.x + vh.y * vh.y;
-            const V t1 = lensq > 0.0 ? V(-vh.y, vh.x, 0.0) / std::sqrt(lensq) : V(1.0, 0.0, 0.0);
-            const V t2 = glm::cross(vh, t1);
-            const double rr = std::sqrt(u0);
-            const double p1 = rr * std::cos(phi);
-            double p2 = rr * std::sin(phi);
-            const double sh = 0.5 * (1.0 + vh.z);
-            p2 = (1.0 - sh) * std::sqrt(std::max(0.0, 1.0 - p1 * p1)) + sh * p2;
-            const V nh = p1 * t1 + p2 * t2 + std::sqrt(std::max(0.0, 1.0 - p1 * p1 - p2 * p2)) * vh;
-            const V hl = glm::normalize(V(alpha * nh.x, alpha * nh.y, std::max(0.0, nh.z)));
-            return reflectAbout(v, hl.x * tangent + hl.y * bitangent + hl.z * n);
-        }
-        if (pbr) {
-            const double a2 = alpha * alpha;
-            const double cosT = std::sqrt((1.0 - u0) / (1.0 + (a2 - 1.0) * u0));
-            return reflectAbout(v, around(n, cosT, phi));
-        }
-        const double cosT = std::pow(u0, 1.0 / (shininess + 1.0));
-        if (st.specular == SpecularModel::Phong) return around(r, cosT, phi);
-        return reflectAbout(v, around(n, cosT, phi));
-    };
+    // The specular lobe's sampling (montecarlo.h): GGX's visible normals under PBR, Phong's or Blinn's lobe.
+    const montecarlo::SpecularLobe lobe(n, v, pbr, alpha, st.specular, shininess);
+    const auto lobePdf = [&](const V& w) { return lobe.pdf(w); };
+    const auto sampleLobe = [&](double u0, double u1) { return lobe.sample(u0, u1); };
 
     V mean(0.0), se(0.0), windowError(0.0);
     const V guess =
@@ -582,7 +484,7 @@ Estimate EnvironmentField::integrate(const lighting::Surface<double>& s,
         double slope = 0.0;
         for (double f : {0.5, 1.0}) {
             const V at = rest + f * (x0 - rest);
-            slope = std::max(slope, displayLevels(at, V(dx), conv) / dx);
+            slope = std::max(slope, displayErrorLevels(at, V(dx), conv) / dx);
         }
         const double perIrradiance = occlusion * std::max(maxOf(k), 1e-300);
         const double tolerance = slope > 0.0 ? conv.quadratureLevels / slope / perIrradiance : 1e300;
@@ -599,15 +501,7 @@ Estimate EnvironmentField::integrate(const lighting::Surface<double>& s,
         for (auto& sh : shift)
             for (double& x : sh)
                 x = rng.next();
-        static const std::array<double, 6> kAlpha = [] {
-            double g = 2.0; // the root of x⁷ = x + 1
-            for (int i = 0; i < 60; ++i)
-                g = std::pow(1.0 + g, 1.0 / 7.0);
-            std::array<double, 6> a{};
-            for (int j = 0; j < 6; ++j)
-                a[size_t(j)] = std::fmod(std::pow(1.0 / g, j + 1), 1.0);
-            return a;
-        }();
+        const std::array<double, 6>& kAlpha = montecarlo::rSequence6();
         // One Monte Carlo run of at most `batches` batches over the sphere less `window` (when given: its
         // texels' integrand is counted as 0, the densities stay the whole sphere's, so it stays unbiased).
         const auto run = [&](const Window* window, int batches, const V& added, const V& addedError) {
@@ -650,7 +544,7 @@ Estimate EnvironmentField::integrate(const lighting::Surface<double>& s,
                 // Stop when the pixel's whole estimated error (this standard error and the quadrature's
                 // bound, as errorLevels below) is within the target.
                 if (b + 1 >= conv.minBatches &&
-                    displayLevels(base + occlusion * mean, occlusion * (se + k * bound), conv) <=
+                    displayErrorLevels(base + occlusion * mean, occlusion * (se + k * bound), conv) <=
                         conv.targetLevels) {
                     converged = true;
                     break;
@@ -689,7 +583,7 @@ Estimate EnvironmentField::integrate(const lighting::Surface<double>& s,
     e.radiance = occlusion * (k * E + mean);
     e.standardError = occlusion * se;
     e.bound = occlusion * (k * bound + windowError);
-    e.errorLevels = displayLevels(rest + e.radiance, e.standardError + e.bound, conv);
+    e.errorLevels = displayErrorLevels(rest + e.radiance, e.standardError + e.bound, conv);
     return e;
 }
 

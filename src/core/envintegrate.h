@@ -50,6 +50,10 @@ struct Convergence {
     double quadratureLevels = 0.1; // share of the target the diffuse quadrature's hard bound may use
 };
 
+// The largest channel's change, in 8-bit levels, of the displayed value (exposure, tone map, sRGB) when
+// the radiance x moves by ±e: how an estimate's error shows (area lights' integrator too, areaintegrate.h).
+double displayErrorLevels(const glm::dvec3& x, const glm::dvec3& e, const Convergence& c);
+
 struct Estimate {
     glm::dvec3 radiance{0.0};      // what the environment adds (linear, before exposure)
     glm::dvec3 standardError{0.0}; // of the Monte Carlo part (0 when it has none)

@@ -32,6 +32,10 @@ glm::dvec3 hsvToRgb(double h, double s, double v) {
     }
 }
 
+// Area lights' size in bounding radii: a rect of 1 × 0.6 and a disk of radius 0.4 (about the same area),
+// at the ring's 2.5 radii a softbox subtending about 0.1 sr.
+constexpr double kAreaWidth = 1.0, kAreaHeight = 0.6, kAreaRadius = 0.4;
+
 } // namespace
 
 Rig proceduralRig(const ProceduralRigOptions& o) {
@@ -60,6 +64,10 @@ Rig proceduralRig(const ProceduralRigOptions& o) {
             l.cone = {ConeModel::Smooth, 0.3 * 180.0 / glm::pi<double>(), 0.6 * 180.0 / glm::pi<double>(),
                       2.0};
         if (l.usesRimExponent()) l.rimExponent = 1.3;
+        if (l.isArea()) { // softboxes facing the centre, sized to the model (kAreaWidth × kAreaHeight radii)
+            l.area.width = kAreaWidth, l.area.height = kAreaHeight, l.area.radius = kAreaRadius;
+            l.area.roll = 0.0, l.area.twoSided = false;
+        }
         rig.lights.push_back(std::move(l));
     }
     return rig;

@@ -1,5 +1,7 @@
 #include "benchreport.h"
+
 #include "benchchart.h"
+#include "core/areaintegrate.h"
 
 #include <QJsonArray>
 #include <QPainter>
@@ -54,6 +56,11 @@ bool benchHasShadows(const BenchReport& report) {
 bool benchHasEnvironment(const BenchReport& report) {
     return std::any_of(report.results.begin(), report.results.end(),
                        [](const BenchResult& r) { return r.hasEnvironment; });
+}
+
+bool benchHasAreaLights(const BenchReport& report) {
+    return std::any_of(report.results.begin(), report.results.end(),
+                       [](const BenchResult& r) { return r.hasArea; });
 }
 
 QStringList benchTableRow(const BenchResult& r, bool shadows) {
@@ -137,6 +144,24 @@ QString benchTable(const BenchReport& report) {
                        .arg(num(e.maxErrorLevels, 2), num(e.meanErrorLevels, 3), num(e.meanSamples, 0));
         }
     }
+    if (benchHasAreaLights(report)) {
+        out +=
+            QStringLiteral("\nArea lights integrated in the double-precision reference by Monte Carlo (the "
+                           "errors above are against it; its own estimated error per covered pixel):\n");
+        QStringList seen;
+        for (const BenchResult& r : report.results) {
+            if (!r.hasArea || seen.contains(r.scene)) continue;
+            seen << r.scene;
+            const EnvironmentConvergence& e = r.area;
+            out += QStringLiteral("  %1: reference %2 s, %3 of %4 pixels above half a level (%5%; worst %6, "
+                                  "mean %7 levels), %8 points per pixel\n")
+                       .arg(r.scene, num(r.referenceMs / 1000.0, 2))
+                       .arg(e.over)
+                       .arg(e.pixels)
+                       .arg(num(100.0 * e.shareOver(), 2), num(e.maxErrorLevels, 2),
+                            num(e.meanErrorLevels, 3), num(e.meanSamples, 0));
+        }
+    }
     return out;
 }
 
@@ -207,6 +232,14 @@ QJsonObject benchJson(const BenchReport& report) {
             o.insert(QStringLiteral("environment_mean_error_levels"), r.environment.meanErrorLevels);
             o.insert(QStringLiteral("environment_mean_samples"), r.environment.meanSamples);
         }
+        if (r.hasArea) {
+            o.insert(QStringLiteral("area_reference_ms"), round3(r.referenceMs));
+            o.insert(QStringLiteral("area_over_half_level_pixels"), double(r.area.over));
+            o.insert(QStringLiteral("area_over_half_level_share"), r.area.shareOver());
+            o.insert(QStringLiteral("area_max_error_levels"), r.area.maxErrorLevels);
+            o.insert(QStringLiteral("area_mean_error_levels"), r.area.meanErrorLevels);
+            o.insert(QStringLiteral("area_mean_samples"), r.area.meanSamples);
+        }
         results.append(o);
     }
     QJsonArray uber;
@@ -255,6 +288,15 @@ QJsonObject benchJson(const BenchReport& report) {
                                {QStringLiteral("replicates"), c.replicates},
                                {QStringLiteral("min_sample_pairs"), c.replicates * c.batch * c.minBatches},
                                {QStringLiteral("max_sample_pairs"), c.replicates * c.batch * c.maxBatches}});
+    }
+    if (benchHasAreaLights(report)) {
+        const envintegrate::Convergence c = areaintegrate::defaultConvergence(op.exposureEV, op.toneMap);
+        doc.insert(
+            QStringLiteral("area_reference"),
+            QJsonObject{{QStringLiteral("target_levels"), kEnvironmentTargetLevels},
+                        {QStringLiteral("replicates"), c.replicates},
+                        {QStringLiteral("min_points_per_light"), c.replicates * c.batch * c.minBatches},
+                        {QStringLiteral("max_points_per_light"), c.replicates * c.batch * c.maxBatches}});
     }
     return doc;
 }

@@ -18,6 +18,7 @@ QStringList benchTableRow(const BenchResult& r, bool shadows = false);
 bool benchHasShadows(const BenchReport& report);
 // Whether some scene's reference integrated an environment (BenchResult::hasEnvironment).
 bool benchHasEnvironment(const BenchReport& report);
+bool benchHasAreaLights(const BenchReport& report); // some result's reference integrated area lights
 
 // The aligned text table, one line per result, followed by the über-shader comparison when present and,
 // when a reference integrated an environment, one line per such scene with its convergence.

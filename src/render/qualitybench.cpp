@@ -227,6 +227,10 @@ BenchStatus runQualityBench(const std::vector<BenchScene>& scenes, const BenchOp
                 r.environment = environmentConvergence(reference);
                 r.environmentSource = scene.environment ? scene.environment->source : QString();
             }
+            if (r.hasErrors && reference.area) {
+                r.hasArea = true;
+                r.area = areaConvergence(reference);
+            }
             report->results.push_back(r);
             progress.done += 1.0;
         }

@@ -15,7 +15,9 @@
 //   (compareShadows: share of pixels off the traced visibility outside the penumbra band, mean error);
 // - with an environment (BenchScene::environment and the rig's environment block), every renderer shades
 //   with it and the reference integrates it, so each tier's error includes the environment's; the
-//   reference's own convergence (share of pixels whose estimated error exceeds half a level) is reported.
+//   reference's own convergence (share of pixels whose estimated error exceeds half a level) is reported;
+// - with area lights (rect, disk) the reference integrates them by Monte Carlo (core/areaintegrate.h), and
+//   its convergence is reported the same way.
 //
 // Runs on the calling (GUI) thread; the reference evaluation uses the global thread pool meanwhile.
 #pragma once
@@ -95,6 +97,10 @@ struct BenchResult {
     bool hasEnvironment = false;
     EnvironmentConvergence environment;
     QString environmentSource;
+    // With errors, when the rig has area lights (issue 16): the reference's Monte Carlo convergence for
+    // them (reference.h areaConvergence: pixels whose estimated error exceeds half a level, the worst).
+    bool hasArea = false;
+    EnvironmentConvergence area;
     double referenceMs = 0.0;
     double speedUp = 0.0;    // exact's ms_median / this ms_median for the same scene (0: no exact run)
     double cpuSpeedUp = 0.0; // the same ratio of cpu_ms_median (steadier on a shared machine)

@@ -1,5 +1,6 @@
 #include "reference.h"
 
+#include "core/areaintegrate.h"
 #include "core/colour.h"
 #include "core/lighting.h"
 #include "gbuffer.h"
@@ -29,7 +30,30 @@ int largestChannelDifference(const glm::dvec3& a, const glm::dvec3& b, double ex
     return d;
 }
 
+// Covered pixels over the target, the largest and mean error and samples of one integrator's figures.
+EnvironmentConvergence convergenceOf(const ReferenceImage& r, const std::vector<float>& error,
+                                     const std::vector<std::int32_t>& samplesTaken) {
+    EnvironmentConvergence c;
+    double errors = 0.0, samples = 0.0;
+    for (size_t i = 0; i < r.covered.size() && i < error.size(); ++i) {
+        if (!r.covered[i]) continue;
+        ++c.pixels;
+        const double e = error[i];
+        errors += e, samples += samplesTaken[i];
+        c.maxErrorLevels = std::max(c.maxErrorLevels, e);
+        if (e > kEnvironmentTargetLevels) ++c.over;
+    }
+    if (c.pixels > 0)
+        c.meanErrorLevels = errors / double(c.pixels), c.meanSamples = samples / double(c.pixels);
+    return c;
+}
+
 } // namespace
+
+bool ReferenceScene::hasAreaLights() const {
+    return std::any_of(lights.begin(), lights.end(),
+                       [](const lighting::ShadeLight<double>& l) { return traitsOf(l.type).isArea; });
+}
 
 int ReferenceScene::casters() const {
     return int(
@@ -50,6 +74,8 @@ makeReferenceScene(const Model& model, const Rig& rig, const SceneFrame& frame, 
     for (const Light& l : rig.lights) // the lights prepareLights() kept, in its order
         if (l.enabled) s.emitters.push_back(shadowEmitter(rig, frame, l));
     s.viewToWorld = glm::inverse(view);
+    s.areaConvergence = areaintegrate::defaultConvergence(settings.exposureEV, settings.toneMap);
+    s.areaConvergence.targetLevels = kEnvironmentTargetLevels;
     if (s.casters() > 0) {
         auto tracer = std::make_shared<const ShadowTracer>(model, rig.ground.mode != GroundMode::Off);
         if (!tracer->ok()) {
@@ -72,20 +98,12 @@ makeReferenceScene(const Model& model, const Rig& rig, const SceneFrame& frame, 
 }
 
 EnvironmentConvergence environmentConvergence(const ReferenceImage& r) {
-    EnvironmentConvergence c;
-    if (!r.environment) return c;
-    double errors = 0.0, samples = 0.0;
-    for (size_t i = 0; i < r.covered.size(); ++i) {
-        if (!r.covered[i]) continue;
-        ++c.pixels;
-        const double e = r.environmentError[i];
-        errors += e, samples += r.environmentSamples[i];
-        c.maxErrorLevels = std::max(c.maxErrorLevels, e);
-        if (e > kEnvironmentTargetLevels) ++c.over;
-    }
-    if (c.pixels > 0)
-        c.meanErrorLevels = errors / double(c.pixels), c.meanSamples = samples / double(c.pixels);
-    return c;
+    return r.environment ? convergenceOf(r, r.environmentError, r.environmentSamples)
+                         : EnvironmentConvergence{};
+}
+
+EnvironmentConvergence areaConvergence(const ReferenceImage& r) {
+    return r.area ? convergenceOf(r, r.areaError, r.areaSamples) : EnvironmentConvergence{};
 }
 
 glm::dvec3 encodeSrgb(const glm::dvec3& radiance, double exposureEV, ToneMap op) {
@@ -116,6 +134,11 @@ ReferenceJob::ReferenceJob(GBuffer gbuffer, ReferenceScene scene)
         m_out.environmentError.assign(size_t(w) * size_t(h), 0.0f);
         m_out.environmentSamples.assign(size_t(w) * size_t(h), 0);
     }
+    m_out.area = m_scene.hasAreaLights();
+    if (m_out.area) {
+        m_out.areaError.assign(size_t(w) * size_t(h), 0.0f);
+        m_out.areaSamples.assign(size_t(w) * size_t(h), 0);
+    }
     m_rowIndices.resize(size_t(h));
     std::iota(m_rowIndices.begin(), m_rowIndices.end(), 0);
 }
@@ -137,9 +160,19 @@ void ReferenceJob::evaluateRow(int y) {
     const ReferenceScene& sc = m_scene;
     const glm::dvec3 bg = encodeSrgb(sc.background, 0.0, ToneMap::Clamp);
     const int casters = m_out.casters;
-    std::vector<double> visibility(sc.lights.size(), 1.0), dark(sc.lights.size(), 1.0);
-    for (size_t k = 0; k < sc.lights.size(); ++k)
+    const size_t n = sc.lights.size();
+    std::vector<double> visibility(n, 1.0), dark(n, 1.0);
+    for (size_t k = 0; k < n; ++k)
         if (casters > 0 && sc.emitters[k].casts) dark[k] = 0.0;
+    // Area lights go through shade.h with visibility 0 (their ambient only) and through areaintegrate for
+    // their direct terms: `shaded` is `visibility` so masked, `litShaded`/`darkShaded` all lit/`dark`.
+    std::vector<bool> isArea(n, false);
+    for (size_t k = 0; k < n; ++k)
+        isArea[k] = traitsOf(sc.lights[k].type).isArea;
+    std::vector<double> shaded(n, 1.0), litShaded(n, 1.0), darkShaded = dark;
+    for (size_t k = 0; k < n; ++k)
+        if (isArea[k]) litShaded[k] = darkShaded[k] = 0.0;
+    std::vector<V> direct;
     const glm::dvec3 eye(sc.viewToWorld[3]);
     const glm::dmat3 toWorld(sc.viewToWorld);
     std::uint8_t* row = m_out.srgb.scanLine(y);
@@ -154,7 +187,17 @@ void ReferenceJob::evaluateRow(int y) {
         }
         const lighting::Surface<double> s = render::surfaceAt(g, x, y);
         if (casters > 0) tracePixel(s, i, eye, visibility);
-        V radiance = lighting::shadeSurface<double>(s, sc.lights, sc.settings, visibility);
+        for (size_t k = 0; k < n; ++k)
+            shaded[k] = isArea[k] ? 0.0 : visibility[k];
+        V radiance = lighting::shadeSurface<double>(s, sc.lights, sc.settings, shaded);
+        if (m_out.area) {
+            const areaintegrate::Estimate a =
+                areaintegrate::integrate(sc.lights, visibility, s, sc.settings, std::uint64_t(i),
+                                         sc.areaConvergence, radiance, casters > 0 ? &direct : nullptr);
+            radiance += a.radiance;
+            m_out.areaError[i] = float(a.errorLevels);
+            m_out.areaSamples[i] = a.samples;
+        }
         V environment(0.0);
         if (sc.environment) {
             const envintegrate::Estimate e = sc.environment->integrate(
@@ -167,8 +210,10 @@ void ReferenceJob::evaluateRow(int y) {
         if (casters > 0) {
             // Whether the casters' direct light shows here at all: the image with all of it and with none
             // (the environment, never shadowed, in both).
-            const V lit = lighting::shadeSurface<double>(s, sc.lights, sc.settings) + environment;
-            const V unlit = lighting::shadeSurface<double>(s, sc.lights, sc.settings, dark) + environment;
+            V lit = lighting::shadeSurface<double>(s, sc.lights, sc.settings, litShaded) + environment;
+            V unlit = lighting::shadeSurface<double>(s, sc.lights, sc.settings, darkShaded) + environment;
+            for (size_t k = 0; k < direct.size(); ++k)
+                lit += direct[k], unlit += dark[k] * direct[k];
             m_out.shadowClass[i] =
                 largestChannelDifference(lit, unlit, sc.exposureEV, sc.toneMap) > kShadowThresholdLevels ? 1
                                                                                                          : 0;
@@ -192,12 +237,15 @@ void ReferenceJob::tracePixel(const lighting::Surface<double>& s, size_t pixel, 
     for (size_t l = 0; l < sc.lights.size(); ++l) {
         if (!sc.emitters[l].casts) continue;
         // Where the light's direct terms add nothing (outside its cone or range, facing away from it
-        // without a wrapped diffuse) visibility cannot matter: nothing is traced, it is 1.
+        // without a wrapped diffuse; an area light's emitter wholly behind or below the surface) visibility
+        // cannot matter: nothing is traced, it is 1.
         const std::span<const lighting::ShadeLight<double>> one(&sc.lights[l], 1);
         constexpr double kLit[] = {1.0}, kUnlit[] = {0.0};
         double v = 1.0;
-        if (lighting::shadeSurface<double>(s, one, sc.settings, kLit) !=
-            lighting::shadeSurface<double>(s, one, sc.settings, kUnlit))
+        if (traitsOf(sc.lights[l].type).isArea
+                ? areaintegrate::reaches(sc.lights[l], s)
+                : lighting::shadeSurface<double>(s, one, sc.settings, kLit) !=
+                      lighting::shadeSurface<double>(s, one, sc.settings, kUnlit))
             v = sc.tracer->visibility(p, n, sc.emitters[l], std::uint32_t(pixel * 977u + size_t(k) * 7919u));
         visibility[l] = v;
         m_out.visibility[pixel * size_t(m_out.casters) + size_t(k)] = visibilityCode(v);

@@ -15,6 +15,11 @@
 // pixel also gets what the environment adds, integrated as core/envintegrate.h defines it (no shadowing
 // by the model, × occlusion), with its estimated error per pixel; uncovered pixels keep the background
 // colour (a visible environment background is the GPU's alone and is not compared: covered pixels only).
+//
+// Area lights (issue 16): shade.h's shadeAreaLight would be the tiers' own approximation (LTC), so the
+// reference evaluates them through shade.h with visibility 0 (their ambient only) and adds their direct
+// terms integrated by core/areaintegrate.h (Monte Carlo, to half an 8-bit level of the displayed value),
+// × the caster's traced visibility as for any light; the estimated error is kept per pixel.
 #pragma once
 
 #include "core/envintegrate.h"
@@ -53,6 +58,9 @@ struct ReferenceScene {
     std::shared_ptr<const envintegrate::EnvironmentField> environment;
     envintegrate::Convergence environmentConvergence;
     QString environmentSource; // LoadedEnvironment::source ("studio", "/abs/sky.exr")
+    // Area lights: when their Monte Carlo stops (the frame's exposure and tone map).
+    envintegrate::Convergence areaConvergence;
+    bool hasAreaLights() const;
 };
 
 // The reference scene of `rig` on `model` seen through `view` (the renderer's effective camera view
@@ -84,6 +92,11 @@ struct ReferenceImage {
     bool environment = false;
     std::vector<float> environmentError;
     std::vector<std::int32_t> environmentSamples;
+    // Area lights, when the scene had any: per pixel the integrator's estimated error (8-bit levels,
+    // areaintegrate::Estimate::errorLevels) and the points it took (all area lights); 0 where uncovered.
+    bool area = false;
+    std::vector<float> areaError;
+    std::vector<std::int32_t> areaSamples;
     bool isNull() const { return width <= 0 || height <= 0; }
 };
 
@@ -115,6 +128,8 @@ struct EnvironmentConvergence {
     double shareOver() const { return pixels > 0 ? double(over) / double(pixels) : 0.0; }
 };
 EnvironmentConvergence environmentConvergence(const ReferenceImage& reference);
+// The same figures for the area lights' integration (target: kEnvironmentTargetLevels, half a level).
+EnvironmentConvergence areaConvergence(const ReferenceImage& reference);
 
 // The tone-map pass on one radiance, in double: ×2^EV (EV clamped to ±60), tone map, sRGB, 0..255.
 glm::dvec3 encodeSrgb(const glm::dvec3& radiance, double exposureEV, ToneMap op); // in [0, 1]

@@ -196,6 +196,16 @@ class TestImageCompare : public QObject {
                 QVERIFY(std::abs(std::hypot(l.position.x, l.position.z) - 2.5) < 1e-9 || count == 1);
                 QVERIFY(glm::dot(l.direction, -l.position) > 0.0);
             }
+            if (l.isArea()) {
+                // Softboxes (issue 16) facing the model's centre head on, sized to it and outside its
+                // bounding sphere (radius 1 in a model-space rig): the whole model on their emitting side.
+                QVERIFY(glm::length(l.direction + glm::normalize(l.position)) < 1e-12);
+                QVERIFY(glm::length(l.position) > 1.0);
+                QVERIFY(l.area.width > 0.1 && l.area.width < 2.0 && l.area.height > 0.1 &&
+                        l.area.height < 2.0);
+                QVERIFY(l.area.radius > 0.1 && l.area.radius < 1.0);
+                QVERIFY(!l.area.twoSided);
+            }
         }
         ProceduralRigOptions one = o;
         one.count = 1;
