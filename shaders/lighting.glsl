@@ -372,6 +372,12 @@ struct ShadeLight {
     float cosInner, cosOuter, outer, coneExponent;  // outer in radians
     int diffuse;
     float rimExponent;
+#if defined(LR_HAS_LIGHT_RECT) || defined(LR_HAS_LIGHT_DISK)
+    // Area lights: in-plane axes (unit, axisX × axisY = -direction), half extents; position = centre.
+    vec3 axisX, axisY;
+    float halfWidth, halfHeight;
+    bool twoSided;
+#endif
 #ifdef LR_SHADOWS
     int shadow;  // its shadow slot + 1 (shadows.glsl), 0: it casts none
 #endif
@@ -426,7 +432,11 @@ float lrShadow(ShadeLight l, Surface s, vec3 L);
 #if defined(LR_HAS_LIGHT_POINT) || defined(LR_HAS_LIGHT_SPOT)
 #define LR_HAS_POSITIONAL 1
 #endif
-#if defined(LR_HAS_POSITIONAL) || defined(LR_HAS_LIGHT_DIRECTIONAL)
+#if defined(LR_HAS_LIGHT_RECT) || defined(LR_HAS_LIGHT_DISK)
+#define LR_HAS_AREA 1
+#define lightIsArea(l) (lightTypeOf(l) == LR_LIGHT_RECT || lightTypeOf(l) == LR_LIGHT_DISK)
+#endif
+#if defined(LR_HAS_POSITIONAL) || defined(LR_HAS_LIGHT_DIRECTIONAL) || defined(LR_HAS_AREA)
 #define LR_HAS_SURFACE_LIGHTS 1
 #endif
 
@@ -438,7 +448,8 @@ uniform int uLightCount;
 //   0: position.xyz, range        1: color.xyz, type          2: specular.xyz, falloff
 //   3: direction.xyz, falloffExponent                        4: ambient.xyz, diffuse
 //   5: constant, linear, quadratic, cone                      6: cosInner, cosOuter, outer, coneExponent
-//   7: rimExponent, 0, 0, 0
+//   7: rimExponent, halfWidth, halfHeight, twoSided
+// Area lights (no falloff, no cone) reuse texels 5 and 6: 5: axisX.xyz, cone   6: axisY.xyz, coneExponent.
 // Unused fields are never read: the compiler drops their fetches.
 ShadeLight loadLight(int index) {
     int base = index * LR_LIGHT_TEXELS;
@@ -476,6 +487,13 @@ ShadeLight loadLight(int index) {
     l.outer = t6.z;
     l.coneExponent = t6.w;
     l.rimExponent = t7.x;
+#ifdef LR_HAS_AREA
+    l.axisX = t5.xyz;
+    l.axisY = t6.xyz;
+    l.halfWidth = t7.y;
+    l.halfHeight = t7.z;
+    l.twoSided = t7.w > 0.5;
+#endif
     return l;
 }
 
@@ -524,6 +542,227 @@ bool lightIsBounded(ShadeLight l) {
 }
 #endif
 
+#if defined(LR_HAS_LIGHT_RECT) || defined(LR_HAS_LIGHT_DISK)
+// ---- area lights (rect, disk): src/core/lighting_area.h and lighting_area_poly.h ----
+// Polygon integrals in a local frame whose z is the clipping hemisphere's pole; the LTC table (core/ltc.h)
+// as a 2-layer RGBA32F array (layer 0: M⁻¹'s m00, m02, m20, m22 with m11 = 1; layer 1: scale, bias),
+// bilinear by texelFetch so that the filtering is float exact (a GPU's filter weights have 8 bits).
+const int kDiskVertices = 8;
+const int kMaxPolygon = 9;  // kDiskVertices + 1 from clipping
+const float kDiskRadiusScale = 1.0539;
+const int kLtcSize = 64;
+#ifndef LR_PBR
+const float kPi = 3.14159265358979;
+const float kInvPi = 0.318309886183791;
+const float kMinRoughness = 0.0525;
+#endif
+uniform sampler2DArray uLtc;
+
+// θ · normalize(a × b) for unit a, b (atan2: exact at any angle, no acos).
+vec3 edgeIntegral(vec3 a, vec3 b) {
+    vec3 c = cross(a, b);
+    float s = sqrt(dot(c, c));
+    float d = dot(a, b);
+    float k = s > 1e-30 ? atan(s, d) / s : (d > 0.0 ? 1.0 : 0.0);
+    return c * k;
+}
+
+// ∫ ω dω over the polygon (the vertices normalised first): its z is ∫ cos θ dω, signed.
+vec3 polygonVector(vec3 p[kMaxPolygon], int n) {
+    vec3 u[kMaxPolygon];
+    for (int i = 0; i < n; ++i) u[i] = safeNormalize(p[i], vec3(0.0, 0.0, 1.0));
+    vec3 sum = vec3(0.0);
+    for (int i = 0; i < n; ++i) sum += edgeIntegral(u[i], u[i + 1 < n ? i + 1 : 0]);
+    return sum * 0.5;
+}
+
+// The convex polygon's part with z > 0 (lighting_area_poly.h clipHorizon).
+int clipHorizon(vec3 p[kMaxPolygon], int n, out vec3 o[kMaxPolygon]) {
+    int m = 0;
+    for (int i = 0; i < n; ++i) {
+        vec3 a = p[i];
+        vec3 b = p[i + 1 < n ? i + 1 : 0];
+        bool aUp = a.z > 0.0, bUp = b.z > 0.0;
+        if (aUp && m < kMaxPolygon) o[m++] = a;
+        if (aUp != bUp && m < kMaxPolygon) {
+            float t = a.z / (a.z - b.z);
+            vec3 x = a + (b - a) * t;
+            x.z = 0.0;
+            o[m++] = x;
+        }
+    }
+    return m;
+}
+
+// (1/π) ∫ max(cos θ, 0) dω: the clipped polygon's form factor.
+float clippedCosine(vec3 p[kMaxPolygon], int n) {
+    vec3 c[kMaxPolygon];
+    int m = clipHorizon(p, n, c);
+    return m < 3 ? 0.0 : abs(polygonVector(c, m).z) * kInvPi;
+}
+
+float solidAngle(vec3 p[kMaxPolygon], int n) {
+    vec3 u[kMaxPolygon];
+    for (int i = 0; i < n; ++i) u[i] = safeNormalize(p[i], vec3(0.0, 0.0, 1.0));
+    float sum = 0.0;
+    for (int i = 1; i + 1 < n; ++i) {
+        float num = dot(u[0], cross(u[i], u[i + 1]));
+        float den = 1.0 + dot(u[0], u[i]) + dot(u[i], u[i + 1]) + dot(u[i + 1], u[0]);
+        sum += 2.0 * atan(num, den);
+    }
+    return abs(sum);
+}
+
+struct Frame {
+    vec3 t1, t2, n;
+};
+
+vec3 toLocal(Frame f, vec3 v) { return vec3(dot(v, f.t1), dot(v, f.t2), dot(v, f.n)); }
+
+Frame frameAround(vec3 n, vec3 towards) {
+    vec3 any = abs(n.x) < 0.9 ? vec3(0.0, -n.z, n.y) : vec3(n.z, 0.0, -n.x);
+    Frame f;
+    f.t1 = safeNormalize(towards - n * dot(n, towards), safeNormalize(any, vec3(1.0, 0.0, 0.0)));
+    f.t2 = cross(n, f.t1);
+    f.n = n;
+    return f;
+}
+
+int emitterPolygon(ShadeLight l, vec3 P, Frame f, out vec3 p[kMaxPolygon]) {
+    vec3 c = l.position - P;
+#ifdef LR_HAS_LIGHT_DISK
+    if (lightTypeOf(l) == LR_LIGHT_DISK) {
+        float r = l.halfWidth * kDiskRadiusScale;
+        for (int i = 0; i < kDiskVertices; ++i) {
+            float a = (2.0 * kPi / float(kDiskVertices)) * float(i);
+            p[i] = toLocal(f, c + l.axisX * (r * cos(a)) + l.axisY * (r * sin(a)));
+        }
+        return kDiskVertices;
+    }
+#endif
+    vec3 x = l.axisX * l.halfWidth, y = l.axisY * l.halfHeight;
+    p[0] = toLocal(f, c - x - y);
+    p[1] = toLocal(f, c + x - y);
+    p[2] = toLocal(f, c + x + y);
+    p[3] = toLocal(f, c - x + y);
+    return 4;
+}
+
+bool facesEmitter(ShadeLight l, vec3 P) {
+    float side = dot(P - l.position, l.direction);
+    return l.twoSided ? (side > 0.0 || side < 0.0) : side > 0.0;
+}
+
+vec3 emitterToward(ShadeLight l, vec3 P) { return dot(P - l.position, l.direction) > 0.0 ? -l.direction : l.direction; }
+
+// (1/π) ∫ ((1 + cos)/2)² dω over the unclipped polygon, cos² as its mean squared (lighting_area.h).
+float halfLambertIntegral(vec3 p[kMaxPolygon], int n, vec3 toward) {
+    float omega = solidAngle(p, n);
+    vec3 e = polygonVector(p, n);
+    float cosSum = dot(e, toward) < 0.0 ? -e.z : e.z;
+    return omega > 0.0 ? positive(omega + 2.0 * cosSum + cosSum * cosSum / omega) * (0.25 * kInvPi) : 0.0;
+}
+
+// The diffuse integral of the light's model over the emitter (form factor or half-Lambert wrap).
+float areaDiffuse(ShadeLight l, vec3 p[kMaxPolygon], int n, vec3 toward) {
+    return diffuseOf(l) == LR_DIFFUSE_LAMBERT ? clippedCosine(p, n) : halfLambertIntegral(p, n, toward);
+}
+
+#ifndef LR_PBR
+// (1/π) ∫ (R·ω)^n dω over the clipped polygon, as the LTC diag(s, s, 1) around R, s² = 2/(n + 1).
+float phongLobeIntegral(vec3 clipped[kMaxPolygon], int m, Frame f, vec3 R, float n) {
+    Frame r = frameAround(R, f.n);
+    float e = n > 0.0 ? n : 0.0;
+    float invS = sqrt((e + 1.0) * 0.5);
+    vec3 p[kMaxPolygon];
+    for (int i = 0; i < m; ++i) {
+        vec3 q = toLocal(r, f.t1 * clipped[i].x + f.t2 * clipped[i].y + f.n * clipped[i].z);
+        p[i] = vec3(q.x * invS, q.y * invS, q.z);
+    }
+    return clippedCosine(p, m) * (2.0 / (e + 1.0));
+}
+
+// shadeAreaLight's direct terms split (diffuse per unit of colour·albedo, specular per unit of Sc·ks).
+vec2 areaClassic(ShadeLight l, vec3 P, vec3 N, float shininess, vec3 V) {
+    if (!facesEmitter(l, P)) return vec2(0.0);
+    Frame f = frameAround(N, V);
+    vec3 local[kMaxPolygon];
+    int n = emitterPolygon(l, P, f, local);
+    vec3 clipped[kMaxPolygon];
+    int m = clipHorizon(local, n, clipped);
+    float D = areaDiffuse(l, local, n, toLocal(f, emitterToward(l, P)));
+    float S = 0.0;
+    if (m >= 3) {
+        vec3 R = 2.0 * dot(N, V) * N - V;
+#if LR_SPECULAR == LR_SPECULAR_PHONG
+        float e = shininess;
+#else
+        float e = shininess * 0.25;
+#endif
+        S = phongLobeIntegral(clipped, m, f, safeNormalize(R, N), e);
+    }
+    return vec2(D, S);
+}
+#else
+// The LTC table at (α, N·V), bilinear (ltc.h lookup).
+void ltcLookup(float alpha, float nDotV, out vec4 minv, out vec2 fresnel) {
+    float u = saturate((sqrt(positive(alpha)) - kMinRoughness) / (1.0 - kMinRoughness));
+    float v = sqrt(saturate(1.0 - nDotV));
+    float x = u * float(kLtcSize - 1), y = v * float(kLtcSize - 1);
+    int i0 = min(int(x), kLtcSize - 2), j0 = min(int(y), kLtcSize - 2);
+    float fx = x - float(i0), fy = y - float(j0);
+    vec4 a0 = texelFetch(uLtc, ivec3(i0, j0, 0), 0), a1 = texelFetch(uLtc, ivec3(i0 + 1, j0, 0), 0);
+    vec4 a2 = texelFetch(uLtc, ivec3(i0, j0 + 1, 0), 0), a3 = texelFetch(uLtc, ivec3(i0 + 1, j0 + 1, 0), 0);
+    vec4 b0 = texelFetch(uLtc, ivec3(i0, j0, 1), 0), b1 = texelFetch(uLtc, ivec3(i0 + 1, j0, 1), 0);
+    vec4 b2 = texelFetch(uLtc, ivec3(i0, j0 + 1, 1), 0), b3 = texelFetch(uLtc, ivec3(i0 + 1, j0 + 1, 1), 0);
+    vec4 at = a0 + (a1 - a0) * fx, ab = a2 + (a3 - a2) * fx;
+    vec4 bt = b0 + (b1 - b0) * fx, bb = b2 + (b3 - b2) * fx;
+    minv = at + (ab - at) * fy;
+    fresnel = (bt + (bb - bt) * fy).xy;
+}
+
+// shadeAreaLightPbr's direct terms: diffuse = c_diff (1 − F0) (1 − w) D (per unit of colour), and the
+// specular's LTC integral I with its Fresnel scale and bias: specular = (F0·scale + bias)·I.
+struct AreaPbr {
+    float diffuse;  // (1 − w)·D: × c_diff (1 − F0)
+    float scaleI;   // scale·I: × F0
+    float biasI;    // bias·I
+};
+
+AreaPbr areaPbr(ShadeLight l, vec3 P, vec3 N, vec3 V, float alpha) {
+    AreaPbr o;
+    o.diffuse = 0.0;
+    o.scaleI = 0.0;
+    o.biasI = 0.0;
+    if (!facesEmitter(l, P)) return o;
+    Frame f = frameAround(N, V);
+    vec3 local[kMaxPolygon];
+    int n = emitterPolygon(l, P, f, local);
+    vec3 clipped[kMaxPolygon];
+    int m = clipHorizon(local, n, clipped);
+    vec3 toward = toLocal(f, emitterToward(l, P));
+    vec3 e = m >= 3 ? polygonVector(clipped, m) : vec3(0.0);
+    float D = diffuseOf(l) == LR_DIFFUSE_LAMBERT ? abs(e.z) * kInvPi : halfLambertIntegral(local, n, toward);
+    vec3 Vl = toLocal(f, V);
+    vec3 mean = safeNormalize(dot(e, toward) < 0.0 ? -e : e, vec3(0.0, 0.0, 1.0));
+    vec3 H = safeNormalize(mean + Vl, vec3(0.0, 0.0, 1.0));
+    float w = schlickWeight(dot(Vl, H));
+    o.diffuse = (1.0 - w) * D;
+    float nDotV = abs(dot(N, V));
+    nDotV = nDotV > kMinNDotV ? nDotV : kMinNDotV;
+    vec4 k;
+    vec2 fr;
+    ltcLookup(alpha, nDotV, k, fr);
+    vec3 t[kMaxPolygon];
+    for (int i = 0; i < n; ++i) t[i] = vec3(k.x * local[i].x + k.y * local[i].z, local[i].y, k.z * local[i].x + k.w * local[i].z);
+    float I = clippedCosine(t, n);
+    o.scaleI = fr.x * I;
+    o.biasI = fr.y * I;
+    return o;
+}
+#endif
+#endif
+
 // The viewer as the rig asks, in every tier. LR_FAST_INFINITE_VIEWER (measuring only): the fast tier with
 // Direct3D's default infinite viewer (F2 in docs/quality.md, measured and dropped).
 vec3 viewVector(ShadeSettings s, vec3 P) {
@@ -535,11 +774,31 @@ vec3 viewVector(ShadeSettings s, vec3 P) {
 #endif
 }
 
+#if defined(LR_HAS_AREA) && !defined(LR_PBR)
+// What an area light adds, classic (lighting_area.h shadeAreaLight); the shadow as for the other lights,
+// towards the emitter's centre.
+vec3 shadeAreaLight(ShadeLight l, Surface s, ShadeSettings st, vec3 V) {
+    vec2 ds = areaClassic(l, s.position, s.normal, s.shininess, V);
+    vec3 direct = l.color * s.albedo * ds.x + l.specular * s.specular * ds.y;
+#ifdef LR_SHADOWS
+    direct *= lrShadow(l, s, safeNormalize(l.position - s.position, s.normal));
+#endif
+#ifdef LR_HAS_LIGHT_AMBIENT
+    return direct + l.ambient * s.albedo;
+#else
+    return direct;
+#endif
+}
+#endif
+
 // Radiance one light adds at the surface (linear, HDR).
 vec3 shadeLight(ShadeLight l, Surface s, ShadeSettings st, vec3 V) {
     vec3 N = s.normal;
 #ifdef LR_HAS_LIGHT_RIM
     if (lightTypeOf(l) == LR_LIGHT_RIM) return l.color * rimTerm(l.direction, N, V, l.rimExponent);
+#endif
+#if defined(LR_HAS_AREA) && !defined(LR_PBR)
+    if (lightIsArea(l)) return shadeAreaLight(l, s, st, V);
 #endif
 #ifdef LR_HAS_SURFACE_LIGHTS
     vec3 L = -l.direction;
@@ -664,6 +923,22 @@ bool lightArrival(ShadeLight l, Surface s, ShadeSettings st, out vec3 L, out flo
     return true;
 }
 
+#ifdef LR_HAS_AREA
+// What an area light adds under physically based shading (lighting_area.h shadeAreaLightPbr).
+vec3 shadeAreaLightPbr(ShadeLight l, Surface s, ShadeSettings st, vec3 V, vec3 cDiff, vec3 f0, float alpha) {
+    AreaPbr a = areaPbr(l, s.position, s.normal, V, alpha);
+    vec3 direct = l.color * (cDiff * (vec3(1.0) - f0) * a.diffuse) + l.specular * (f0 * a.scaleI + vec3(a.biasI));
+#ifdef LR_SHADOWS
+    direct *= lrShadow(l, s, safeNormalize(l.position - s.position, s.normal));
+#endif
+#ifdef LR_HAS_LIGHT_AMBIENT
+    return direct + l.ambient * cDiff * (saturate(s.occlusion) * kInvPi);
+#else
+    return direct;
+#endif
+}
+#endif
+
 // Radiance one light adds under physically based shading (shade.h shadeLightPbr):
 //   attenuation · (colour·intensity · diffuse lobe + Sc·intensity · specular lobe + Ac·intensity · c_diff/π);
 // a rim light adds its classic term.
@@ -671,6 +946,9 @@ vec3 shadeLightPbr(ShadeLight l, Surface s, ShadeSettings st, vec3 V, vec3 cDiff
     vec3 N = s.normal;
 #ifdef LR_HAS_LIGHT_RIM
     if (lightTypeOf(l) == LR_LIGHT_RIM) return l.color * rimTerm(l.direction, N, V, l.rimExponent);
+#endif
+#ifdef LR_HAS_AREA
+    if (lightIsArea(l)) return shadeAreaLightPbr(l, s, st, V, cDiff, f0, alpha);
 #endif
 #ifdef LR_HAS_SURFACE_LIGHTS
     vec3 L;
@@ -761,6 +1039,18 @@ void shadeLightSplit(ShadeLight l, vec3 P, vec3 N, float shininess, ShadeSetting
         return;
     }
 #endif
+#if defined(LR_HAS_AREA) && !defined(LR_PBR)
+    if (lightIsArea(l)) {  // the area integrals at the vertex, as every light in this tier
+        vec2 ds = areaClassic(l, P, N, shininess, V);
+#ifdef LR_HAS_LIGHT_AMBIENT
+        o.diffuse += l.color * ds.x + l.ambient;
+#else
+        o.diffuse += l.color * ds.x;
+#endif
+        o.specular += l.specular * ds.y;
+        return;
+    }
+#endif
 #ifdef LR_HAS_SURFACE_LIGHTS
     vec3 L = -l.direction;
     float attenuation = 1.0;
@@ -836,6 +1126,18 @@ void shadeLightSplitPbr(ShadeLight l, Surface s, ShadeSettings st, vec3 V, float
 #ifdef LR_HAS_LIGHT_RIM
     if (lightTypeOf(l) == LR_LIGHT_RIM) {
         o.added += l.color * rimTerm(l.direction, N, V, l.rimExponent);
+        return;
+    }
+#endif
+#ifdef LR_HAS_AREA
+    if (lightIsArea(l)) {  // specular = F0·scaleI + biasI = F0·(A − B) + B with A = scaleI + biasI, B = biasI
+        AreaPbr a = areaPbr(l, s.position, N, V, alpha);
+        o.specular += l.specular * (a.scaleI + a.biasI);
+        o.fresnel += l.specular * a.biasI;
+        o.diffuse += l.color * a.diffuse;
+#ifdef LR_HAS_LIGHT_AMBIENT
+        o.ambient += l.ambient * kInvPi;
+#endif
         return;
     }
 #endif

@@ -17,11 +17,21 @@
 //   neither shadowed nor attenuated. `visibility` scales the direct terms only (shade.h).
 //
 // The double-precision reference integrates this by Monte Carlo; the GPU tiers and shadeAreaLight /
-// shadeAreaLightPbr approximate it (LTC: Heitz, Dupuy, Hill and Neubelt 2016).
+// shadeAreaLightPbr below approximate it (docs/lighting-models.md, "Area lights", has each error):
+//   Lambert diffuse: the horizon-clipped polygon's form factor: exact (for the rect; the disk is the
+//     area-preserving kDiskVertices-gon, lighting_area_poly.h).
+//   half-Lambert: ((1 + cos)/2)² over the unclipped polygon as (Ω + 2C + C²/Ω)/4 (C = ∫cos dω): exact
+//     but for cos² replaced by its mean squared.
+//   GGX specular: LTC (ltc.h, our own fit) with horizon clipping, × (F0·scale + bias).
+//   PBR diffuse's (1 − F): Schlick's weight at the polygon's mean direction (exact for small emitters).
+//   Phong: (R·ω)^n as the LTC diag(s, s, 1) around R, s² = 2/(n + 1) (same integral and peak); Blinn-Phong:
+//     the same with n/4 (the Blinn lobe's width at normal incidence).
 #pragma once
 
 #include "lighting.h"
+#include "lighting_area_poly.h"
 #include "lighttypes.h"
+#include "ltc.h"
 #include "shadetypes.h"
 
 #include <cmath>
@@ -54,28 +64,125 @@ template <typename T> T areaOf(const ShadeLight<T>& l) {
     return l.type == LightType::Disk ? a * T(kPi / 4.0) : a;
 }
 
-// PLACEHOLDER until the LTC evaluation lands: the emitter as one sample at its centre, its solid angle
-// A·cos θe / d² (at most 2π). Finite everywhere; exact only for small, distant emitters.
+// The emitter relative to the surface point P, in the local frame (t1, t2, n): a rect's 4 corners or the
+// disk's area-preserving kDiskVertices-gon (circumradius r·kDiskRadiusScale).
+inline constexpr double kDiskRadiusScale = 1.0539; // sqrt(2π / (8 sin(π/4)))
+
+template <typename T> struct Frame {
+    Vec3<T> t1, t2, n;
+    Vec3<T> local(const Vec3<T>& v) const {
+        return Vec3<T>(glm::dot(v, t1), glm::dot(v, t2), glm::dot(v, n));
+    }
+};
+
+// A frame around `n` whose x is `towards`'s component perpendicular to n (any perpendicular when none).
+template <typename T> Frame<T> frameAround(const Vec3<T>& n, const Vec3<T>& towards) {
+    const Vec3<T> any = std::abs(n.x) < T(0.9) ? Vec3<T>(0, -n.z, n.y) : Vec3<T>(n.z, 0, -n.x);
+    const Vec3<T> t1 =
+        safeNormalize(towards - n * glm::dot(n, towards), safeNormalize(any, Vec3<T>(1, 0, 0)));
+    return {t1, glm::cross(n, t1), n};
+}
+
+template <typename T> Polygon<T> emitterPolygon(const ShadeLight<T>& l, const Vec3<T>& P, const Frame<T>& f) {
+    Polygon<T> p;
+    const Vec3<T> c = l.position - P;
+    if (l.type == LightType::Disk) {
+        p.n = kDiskVertices;
+        const T r = l.halfWidth * T(kDiskRadiusScale);
+        for (int i = 0; i < kDiskVertices; ++i) {
+            const T a = T(2 * kPi / kDiskVertices) * T(i);
+            p.v[i] = f.local(c + l.axisX * (r * std::cos(a)) + l.axisY * (r * std::sin(a)));
+        }
+        return p;
+    }
+    const Vec3<T> x = l.axisX * l.halfWidth, y = l.axisY * l.halfHeight;
+    p.n = 4;
+    p.v[0] = f.local(c - x - y);
+    p.v[1] = f.local(c + x - y);
+    p.v[2] = f.local(c + x + y);
+    p.v[3] = f.local(c - x + y);
+    return p;
+}
+
+// Whether P sees an emitting face: in front of the emitter's plane, or on either side when two-sided.
+template <typename T> bool facesEmitter(const ShadeLight<T>& l, const Vec3<T>& P) {
+    const T side = glm::dot(P - l.position, l.direction);
+    return l.twoSided ? (side > T(0) || side < T(0)) : side > T(0);
+}
+
+// The emitter's normal pointing away from P (towards the emitter), in view space.
+template <typename T> Vec3<T> emitterToward(const ShadeLight<T>& l, const Vec3<T>& P) {
+    return glm::dot(P - l.position, l.direction) > T(0) ? -l.direction : l.direction;
+}
+
+// M⁻¹ of the LTC applied to each vertex (ltc.h: m11 = 1).
+template <typename T> Polygon<T> transformed(const Polygon<T>& p, T m00, T m02, T m20, T m22) {
+    Polygon<T> o;
+    o.n = p.n;
+    for (int i = 0; i < p.n; ++i) {
+        const Vec3<T>& v = p.v[i];
+        o.v[i] = Vec3<T>(m00 * v.x + m02 * v.z, v.y, m20 * v.x + m22 * v.z);
+    }
+    return o;
+}
+
+// (1/π) ∫ ((1 + cos)/2)² dω over the unclipped polygon (half-Lambert's wrap reaches below the horizon),
+// cos² replaced by (C/Ω)², its mean squared: (Ω + 2C + C²/Ω) / 4π.
+// `toward`: the emitter plane's normal on P's side, negated (every direction to the emitter has a positive
+// dot product with it, so ∫ ω dω does too: it orients the winding).
+template <typename T> T halfLambertIntegral(const Polygon<T>& local, const Vec3<T>& toward) {
+    const Polygon<T> u = normalized(local);
+    const T omega = solidAngle(u);
+    if (!(omega > T(0))) return T(0);
+    Vec3<T> e = polygonVector(u);
+    T cosSum = e.z;
+    if (glm::dot(e, toward) < T(0)) cosSum = -cosSum;
+    return positive(omega + T(2) * cosSum + cosSum * cosSum / omega) * T(0.25 / kPi);
+}
+
+// The clipped polygon's mean direction (∫ ω dω, oriented), in the local frame; the pole when it has none.
+template <typename T> Vec3<T> meanDirection(const Polygon<T>& clippedUnit, const Vec3<T>& toward) {
+    Vec3<T> e = polygonVector(clippedUnit);
+    if (glm::dot(e, toward) < T(0)) e = -e;
+    return safeNormalize(e, Vec3<T>(0, 0, 1));
+}
+
+// (1/π) ∫ (R·ω)^n dω over the polygon's part above the horizon, as the LTC diag(s, s, 1) around R.
 template <typename T>
-Vec3<T> areaDirectRepresentative(const ShadeLight<T>& l, const Surface<T>& s, const ShadeSettings<T>& st,
-                                 const Vec3<T>& V, const Vec3<T>& cDiff, const Vec3<T>& f0, T alpha) {
-    const Vec3<T> toLight = l.position - s.position;
-    const Vec3<T> w = safeNormalize(toLight, s.normal);
-    const T d = glm::dot(toLight, w);
-    T cosE = -glm::dot(w, l.direction); // at the emitter: > 0 when P is on its front side
-    if (l.twoSided) cosE = std::abs(cosE);
-    if (!(cosE > T(0)) || !(d > T(0))) return Vec3<T>(0);
-    const T omega = std::min(T(2 * kPi), areaOf(l) * cosE / (d * d));
-    if (!(omega > T(0))) return Vec3<T>(0);
-    return directionalResponse(l, s, st, V, w, cDiff, f0, alpha) * omega;
+T phongLobeIntegral(const Polygon<T>& clipped, const Frame<T>& f, const Vec3<T>& R, T n) {
+    const Frame<T> r = frameAround(R, f.n);
+    const T m = n > T(0) ? n : T(0);
+    const T invS = std::sqrt((m + T(1)) * T(0.5));
+    Polygon<T> p;
+    p.n = clipped.n;
+    for (int i = 0; i < clipped.n; ++i) {
+        const Vec3<T> w = f.t1 * clipped.v[i].x + f.t2 * clipped.v[i].y + f.n * clipped.v[i].z;
+        const Vec3<T> q = r.local(w);
+        p.v[i] = Vec3<T>(q.x * invS, q.y * invS, q.z);
+    }
+    return clippedCosine(p) * (T(2) / (m + T(1)));
 }
 
 // What an area light adds under the classic models (the definition above, with its 1/π).
 template <typename T>
 Vec3<T> shadeAreaLight(const ShadeLight<T>& l, const Surface<T>& s, const ShadeSettings<T>& st,
                        const Vec3<T>& V, T visibility = T(1)) {
-    const Vec3<T> direct = areaDirectRepresentative(l, s, st, V, s.albedo, s.specular, T(1)) * T(1.0 / kPi);
-    return visibility * direct + l.ambient * s.albedo;
+    const Vec3<T> ambient = l.ambient * s.albedo;
+    if (!facesEmitter(l, s.position)) return ambient;
+    const Vec3<T>& N = s.normal;
+    const Frame<T> f = frameAround(N, V);
+    const Polygon<T> local = emitterPolygon(l, s.position, f);
+    const Polygon<T> clipped = clipHorizon(local);
+    const T D = l.diffuse == DiffuseModel::Lambert
+                    ? clippedCosine(local)
+                    : halfLambertIntegral(local, f.local(emitterToward(l, s.position)));
+    T S = T(0);
+    if (clipped.n >= 3) {
+        const Vec3<T> R = T(2) * glm::dot(N, V) * N - V; // reflect(-V, N)
+        const T n = st.specular == SpecularModel::Phong ? s.shininess : s.shininess * T(0.25);
+        S = phongLobeIntegral(clipped, f, safeNormalize(R, N), n);
+    }
+    return visibility * (l.color * s.albedo * D + l.specular * s.specular * S) + ambient;
 }
 
 // What an area light adds under physically based shading.
@@ -83,8 +190,30 @@ template <typename T>
 Vec3<T> shadeAreaLightPbr(const ShadeLight<T>& l, const Surface<T>& s, const ShadeSettings<T>& st,
                           const Vec3<T>& V, const Vec3<T>& cDiff, const Vec3<T>& f0, T alpha,
                           T visibility = T(1)) {
-    const Vec3<T> direct = areaDirectRepresentative(l, s, st, V, cDiff, f0, alpha);
-    return visibility * direct + l.ambient * cDiff * (saturate(s.occlusion) * T(1.0 / kPi));
+    (void)st;
+    const Vec3<T> ambient = l.ambient * cDiff * (saturate(s.occlusion) * T(1.0 / kPi));
+    if (!facesEmitter(l, s.position)) return ambient;
+    const Vec3<T>& N = s.normal;
+    const Frame<T> f = frameAround(N, V);
+    const Polygon<T> local = emitterPolygon(l, s.position, f);
+    const Polygon<T> clipped = normalized(clipHorizon(local));
+    const Vec3<T> toward = f.local(emitterToward(l, s.position));
+    // Diffuse: the form factor (or the half-Lambert wrap) × (1 − F) at the mean direction.
+    const T D = l.diffuse == DiffuseModel::Lambert
+                    ? (clipped.n >= 3 ? std::abs(polygonVector(clipped).z) * T(1.0 / kPi) : T(0))
+                    : halfLambertIntegral(local, toward);
+    const Vec3<T> Vl = f.local(V);
+    const Vec3<T> H = safeNormalize(meanDirection(clipped, toward) + Vl, Vec3<T>(0, 0, 1));
+    const T m = T(1) - saturate(std::abs(glm::dot(Vl, H)));
+    const T w = m * m * m * m * m;
+    const Vec3<T> diffuse = cDiff * (Vec3<T>(1) - f0) * ((T(1) - w) * D);
+    // Specular: the LTC integral × (F0·scale + bias).
+    T nDotV = std::abs(glm::dot(N, V));
+    if (!(nDotV > T(kMinNDotV))) nDotV = T(kMinNDotV);
+    const ltc::Lookup<T> k = ltc::lookup(alpha, nDotV);
+    const T I = clippedCosine(transformed(local, k.m00, k.m02, k.m20, k.m22));
+    const Vec3<T> specular = (f0 * k.scale + Vec3<T>(k.bias)) * I;
+    return visibility * (l.color * diffuse + l.specular * specular) + ambient;
 }
 
 } // namespace lr::lighting

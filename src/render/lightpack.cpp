@@ -1,5 +1,7 @@
 #include "lightpack.h"
 
+#include "core/lighttypes.h"
+
 namespace lr::render {
 
 LightTexels packLight(const lighting::ShadeLight<float>& l) {
@@ -15,9 +17,14 @@ LightTexels packLight(const lighting::ShadeLight<float>& l) {
     put3(2, l.specular, float(int(l.falloff)));
     put3(3, l.direction, l.falloffExponent);
     put3(4, l.ambient, float(int(l.diffuse)));
-    put3(5, glm::vec3(l.constant, l.linear, l.quadratic), float(int(l.cone)));
-    put3(6, glm::vec3(l.cosInner, l.cosOuter, l.outer), l.coneExponent);
-    put3(7, glm::vec3(l.rimExponent, 0.0f, 0.0f), 0.0f);
+    if (traitsOf(l.type).isArea) { // no falloff, no cone: texels 5 and 6 carry the emitter's axes
+        put3(5, l.axisX, float(int(l.cone)));
+        put3(6, l.axisY, l.coneExponent);
+    } else {
+        put3(5, glm::vec3(l.constant, l.linear, l.quadratic), float(int(l.cone)));
+        put3(6, glm::vec3(l.cosInner, l.cosOuter, l.outer), l.coneExponent);
+    }
+    put3(7, glm::vec3(l.rimExponent, l.halfWidth, l.halfHeight), l.twoSided ? 1.0f : 0.0f);
     return t;
 }
 

@@ -1,6 +1,7 @@
 #include "lightset.h"
 
 #include "lightpack.h"
+#include "ltcgl.h"
 #include "programcache.h"
 #include "shadergen.h"
 #include "shadowmaps.h"
@@ -25,7 +26,8 @@ void LightSet::release(QOpenGLFunctions_3_3_Core* gl) {
     m_clusters.release(gl);
     gl->glDeleteBuffers(1, &m_buffer);
     gl->glDeleteTextures(1, &m_texture);
-    m_buffer = m_texture = 0;
+    if (m_ltc) gl->glDeleteTextures(1, &m_ltc);
+    m_buffer = m_texture = m_ltc = 0;
     m_capacity = 0;
     m_packed.clear();
     m_dirty = true;
@@ -61,6 +63,7 @@ void LightSet::update(QOpenGLFunctions_3_3_Core* gl, const SceneFrame& frame, co
             m_farLights = true;
         m_bounds.push_back(lightBounds(prepared, scale));
         m_boundedLights += m_bounds.back().bounded ? 1 : 0;
+        if (l.isArea() && !m_ltc) m_ltc = createLtcTexture(gl);
         LightTexels t = packLight(castLight<float>(prepared));
         for (size_t k = 0; k < casters.size(); ++k)
             if (casters[k].rigIndex == int(i))
@@ -138,6 +141,10 @@ bool LightSet::cluster(QOpenGLFunctions_3_3_Core* gl, const glm::dmat4& projecti
 void LightSet::bind(QOpenGLFunctions_3_3_Core* gl, bool clustered) const {
     gl->glActiveTexture(textureUnit(TextureUnit::Lights));
     gl->glBindTexture(GL_TEXTURE_BUFFER, m_texture);
+    if (m_ltc) {
+        gl->glActiveTexture(textureUnit(TextureUnit::Ltc));
+        gl->glBindTexture(GL_TEXTURE_2D_ARRAY, m_ltc);
+    }
     if (clustered) m_clusters.bind(gl);
     gl->glActiveTexture(GL_TEXTURE0);
 }

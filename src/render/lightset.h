@@ -67,6 +67,8 @@ class LightSet {
     int m_count = 0;
     bool m_farLights = false;
     GLuint m_buffer = 0, m_texture = 0;
+    // The area lights' LTC table (ltcgl.h), made when the first one is uploaded.
+    GLuint m_ltc = 0;
     std::vector<float> m_packed;        // what the buffer holds, to upload only what changed
     int m_capacity = 0;                 // texels the buffer holds
     int m_shadowCount = 0;              // casters with a record

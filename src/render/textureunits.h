@@ -27,6 +27,9 @@ enum class TextureUnit : GLuint {
     EnvSpecular = 16,   // the GGX chain, one mip level per roughness step
     EnvIrradiance = 17, // E(n), equirectangular
     EnvDfg = 18,        // the split-sum table (core/envbrdf.h)
+    // Area lights' LTC table (core/ltc.h, ltcgl.h), bound only when a rect or disk light exists; beyond
+    // 16 too: GL_MAX_TEXTURE_IMAGE_UNITS is 32 on every driver this targets.
+    Ltc = 19,
 };
 
 constexpr int kEnvironmentUnitsNeeded = 19;
@@ -63,6 +66,7 @@ inline constexpr SamplerBinding kSamplerBindings[] = {
     {"uEnvSpecular", TextureUnit::EnvSpecular},
     {"uEnvIrradiance", TextureUnit::EnvIrradiance},
     {"uEnvDfg", TextureUnit::EnvDfg},
+    {"uLtc", TextureUnit::Ltc},
 };
 
 // GL 3.3 guarantees 16 texture image units per fragment stage: every unit but the environment's.

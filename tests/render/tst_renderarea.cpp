@@ -1,0 +1,121 @@
+// Area lights on the GPU (issue 16): a rect and a disk light on the test plane and the PBR spheres, under
+// classic and physically based shading, forward, deferred and clustered, each quality tier, against
+// lighting::shadeSurface<double> (core/lighting_area.h: the same LTC and form factors in double). This
+// checks shaders/lighting.glsl's area twin; the LTC's own error against the definition is tests/formulas'
+// formulas_area (and the Monte Carlo reference's).
+//
+// Tolerance (per channel, linear radiance): exact |gpu − ref| <= 2e-4 · max(1, |ref|) (float polygon
+// integrals: atan2 and cross products of nearly parallel vertex directions lose a few more bits than the
+// point lights' formulas); balanced and fast are measured and printed, bounded loosely (fast: per vertex).
+#include "glfixture.h"
+#include "scenes.h"
+
+#include "render/offscreen.h"
+
+#include <QTest>
+
+using namespace lr;
+using namespace lr::test;
+
+namespace {
+constexpr double kExactTolerance = 2e-4;
+const QSize kSize(96, 72);
+
+RenderSettings floatSettings() {
+    RenderSettings s;
+    s.msaaSamples = 0;
+    s.hdrFloat32 = true;
+    return s;
+}
+
+Light areaLight(LightType type, glm::dvec3 p, glm::dvec3 target, double intensity) {
+    Light l = makeLight(type, type == LightType::Rect ? QStringLiteral("softbox") : QStringLiteral("disk"));
+    l.position = p;
+    l.direction = glm::normalize(target - p);
+    l.area.width = 1.2, l.area.height = 0.6, l.area.radius = 0.5, l.area.roll = 20.0;
+    l.intensity = intensity;
+    l.color = {1.0, 0.9, 0.8};
+    return l;
+}
+
+Rig areaRig(ShadingModel model, SpecularModel spec, DiffuseModel diffuse) {
+    Light rect = areaLight(LightType::Rect, {0.6, 0.9, 1.3}, {0, 0, 0}, 3.0);
+    Light disk = areaLight(LightType::Disk, {-1.0, -0.4, 1.0}, {0, 0.2, 0}, 2.0);
+    disk.area.twoSided = true;
+    rect.diffuse = disk.diffuse = diffuse;
+    Rig r = model == ShadingModel::Pbr ? pbrRig({rect, disk}) : rigOf({rect, disk});
+    r.shading.specular = spec;
+    return r;
+}
+} // namespace
+
+class TestRenderArea : public QObject {
+    Q_OBJECT
+    OffscreenRenderer m_gl;
+
+  private slots:
+    void initTestCase() {
+        LR_REQUIRE_DISPLAY();
+        QString error;
+        QVERIFY2(m_gl.initialize(&error), qPrintable(error));
+    }
+
+    void matchesDoubleReference_data() {
+        QTest::addColumn<int>("model");
+        QTest::addColumn<int>("spec");
+        QTest::addColumn<int>("diffuse");
+        QTest::addColumn<int>("path");
+        QTest::addColumn<int>("quality");
+        const char* paths[] = {"forward", "deferred", "clustered"};
+        for (int q = 0; q < 3; ++q)
+            for (int path = 0; path < 3; ++path) {
+                if (q == int(Quality::Fast) && path > 0) continue; // fast is forward only
+                const char* tier = EnumNames<Quality>::names[size_t(q)];
+                QTest::addRow("pbr/%s/%s", paths[path], tier)
+                    << int(ShadingModel::Pbr) << 0 << 0 << path << q;
+                QTest::addRow("pbr-halflambert/%s/%s", paths[path], tier)
+                    << int(ShadingModel::Pbr) << 0 << int(DiffuseModel::HalfLambert) << path << q;
+                QTest::addRow("phong/%s/%s", paths[path], tier)
+                    << int(ShadingModel::Classic) << int(SpecularModel::Phong) << 0 << path << q;
+                QTest::addRow("blinn/%s/%s", paths[path], tier)
+                    << int(ShadingModel::Classic) << int(SpecularModel::BlinnPhong) << 0 << path << q;
+            }
+    }
+
+    void matchesDoubleReference() {
+        QFETCH(int, model);
+        QFETCH(int, spec);
+        QFETCH(int, diffuse);
+        QFETCH(int, path);
+        QFETCH(int, quality);
+        const bool pbr = ShadingModel(model) == ShadingModel::Pbr;
+        const Rig rig = areaRig(ShadingModel(model), SpecularModel(spec), DiffuseModel(diffuse));
+        RenderSettings s = floatSettings();
+        s.quality = Quality(quality);
+        s.shadingPath = path == 1 ? ShadingPath::Deferred : ShadingPath::Forward;
+        s.clusteredShading = path == 2 ? 1 : 0;
+        QString error;
+        QVERIFY2(m_gl.setModel(pbr ? pbrSpheresScene() : planeScene(), &error), qPrintable(error));
+        m_gl.setRig(rig);
+        const ViewCamera camera = pbr ? pbrSpheresCamera() : planeCamera();
+        FloatImage radiance;
+        GBuffer g;
+        QVERIFY2(m_gl.renderRadiance(camera, kSize, s, &radiance, &error), qPrintable(error));
+        QVERIFY2(m_gl.renderGBuffer(camera, kSize, floatSettings(), &g, &error), qPrintable(error));
+        const ViewCamera cam = m_gl.renderer().effectiveCamera(camera);
+        const bool exact = Quality(quality) == Quality::Exact;
+        const Comparison c = compareWithReference(radiance, g, rig, m_gl.renderer().sceneFrame(), cam.view(),
+                                                  exact ? kExactTolerance : 1.0);
+        qInfo().noquote() << c.summary();
+        QVERIFY2(c.nonFinite == 0, qPrintable(c.summary()));
+        QVERIFY2(c.covered > kSize.width() * kSize.height() / 8, qPrintable(c.summary()));
+        QVERIFY2(c.maxReference > 0.0, "the scene should be lit");
+        if (exact) {
+            QVERIFY2(c.failures == 0, qPrintable(c.summary()));
+            QVERIFY2(c.skipped <= c.covered / 50, qPrintable(c.summary()));
+        }
+    }
+};
+
+QTEST_MAIN(TestRenderArea)
+#include "tst_renderarea.moc"
