@@ -194,14 +194,9 @@ float shadowPcss(ShadowRecord r, ShadowCoord c, float ref, vec2 slope, float tex
 // receiver moves off its surface by the normal offset (texels of its footprint, along the normal on the
 // light's side: an effective depth bias of offset/cos θ, growing where the light grazes) and toward the
 // light by the constant bias; glPolygonOffset adds the slope-scaled term when the map is drawn.
-//
-// An area light's map is centred on its emitter: whatever direction the caller passes (its shading may
-// use a representative point), the offsets here go towards the centre, as the map was drawn.
+// An area light's map is centred on its emitter, so its caller passes L towards the centre.
 float lrShadow(ShadeLight l, Surface s, vec3 L) {
     if (!lrShadowsOn || l.shadow <= 0) return 1.0;
-#if defined(LR_HAS_LIGHT_RECT) || defined(LR_HAS_LIGHT_DISK)
-    if (lightTypeOf(l) == LR_LIGHT_RECT || lightTypeOf(l) == LR_LIGHT_DISK) L = safeNormalize(l.position - s.position, s.normal);
-#endif
     ShadowRecord r = loadShadow(l.shadow - 1);
     ShadowCoord c0 = shadowCoord(r, s.position);
     if (!c0.valid) return 1.0;  // behind a spot's map: outside its cone

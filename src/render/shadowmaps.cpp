@@ -131,6 +131,7 @@ void planAreaShadow(const Light& l, const glm::dvec3& position, const glm::dvec3
         v->tanHalf = 1.0 + 2.0 * kAreaFilterTexels / v->resolution;
         return;
     }
+    v->maxFilterTexels = kAreaMapFilterTexels;
     const double half = std::asin(r / dist);
     const glm::dvec3 look = (c - position) / dist;
     v->tanHalf = std::tan(half);

@@ -45,8 +45,10 @@ static_assert(kLightTypeCount <= kShadowSlotScale);
 // a face's edge still finds depths; the shader projects with the same value (ShadowView::tanHalf).
 inline constexpr double kCubeMarginTexels = 24.0;
 // PCSS's search and filter radius at most, texels: 24 for point, spot and directional emitters
-// (kCubeMarginTexels), this for area lights, whose penumbrae are wider; their cube maps get this margin.
+// (kCubeMarginTexels); for area lights, whose penumbrae are wider, this on a cube (its margin) and
+// kAreaMapFilterTexels on a perspective map (whose border is lit: no margin needed).
 inline constexpr double kAreaFilterTexels = 64.0;
+inline constexpr double kAreaMapFilterTexels = 128.0;
 
 enum class ShadowKind { Perspective = 0, Orthographic = 1, Cube = 2 };
 // The map a casting light of this type gets: spot perspective, directional orthographic, point a cube;
