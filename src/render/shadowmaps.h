@@ -82,7 +82,7 @@ struct ShadowView {
     int layer = 0;       // first layer in the array (a cube uses `faces`)
     int faces = 6;       // cube: 6, or 5 for a one-sided area light (no face behind its plane)
     int resolution = 0;  // texels per side (the array's)
-    glm::dmat4 viewProj; // world -> light clip (perspective, orthographic)
+    glm::dmat4 viewProj{1.0}; // world -> light clip (perspective, orthographic; a cube: unused)
     glm::dvec3 position; // world: the light (cube), the eye (perspective)
     // Cube: the frame its faces are laid out in (columns, world): the world axes, or for an area light
     // (y × x of its in-plane axes, its direction), so face 4 (+Z) looks where it shines, face 5 behind.
