@@ -52,10 +52,14 @@ glm::dvec2 squareRim(double s) {
     const int side = std::min(3, int(t));
     const double f = 2.0 * (t - side) - 1.0;
     switch (side) {
-    case 0: return {f, -1.0};
-    case 1: return {1.0, f};
-    case 2: return {-f, 1.0};
-    default: return {-1.0, -f};
+    case 0:
+        return {f, -1.0};
+    case 1:
+        return {1.0, f};
+    case 2:
+        return {-f, 1.0};
+    default:
+        return {-1.0, -f};
     }
 }
 
@@ -230,8 +234,9 @@ double ShadowTracer::visibility(const glm::dvec3& point, const glm::dvec3& norma
             return !occluded(origin, glm::normalize(cosT * w + side),
                              std::numeric_limits<double>::infinity());
         }
-        const glm::dvec3 target = area ? e.position + disk.x * e.halfWidth * e.axisX + disk.y * e.halfHeight * e.axisY
-                                       : e.position + e.radius * (disk.x * t + disk.y * b);
+        const glm::dvec3 target =
+            area ? e.position + disk.x * e.halfWidth * e.axisX + disk.y * e.halfHeight * e.axisY
+                 : e.position + e.radius * (disk.x * t + disk.y * b);
         const glm::dvec3 toTarget = target - origin;
         const double len = glm::length(toTarget);
         if (!(len > 0.0)) return true;
@@ -246,7 +251,8 @@ double ShadowTracer::visibility(const glm::dvec3& point, const glm::dvec3& norma
             for (int i = 0; i < n; ++i) {
                 const double u = (i + uniform01(&state)) / n, v = (j + uniform01(&state)) / n;
                 const bool square = e.area == ShadowEmitter::Area::Rect;
-                arrived += arrives(square ? glm::dvec2(2.0 * u - 1.0, 2.0 * v - 1.0) : concentricDisk(u, v)) ? 1 : 0;
+                arrived +=
+                    arrives(square ? glm::dvec2(2.0 * u - 1.0, 2.0 * v - 1.0) : concentricDisk(u, v)) ? 1 : 0;
             }
         return std::pair{arrived, n * n};
     };
@@ -257,10 +263,11 @@ double ShadowTracer::visibility(const glm::dvec3& point, const glm::dvec3& norma
     int probeArrived = 0;
     for (int k = 0; k < kShadowRimSamples; ++k) {
         const double a = 2.0 * std::numbers::pi * (k + phase) / kShadowRimSamples;
-        probeArrived += arrives(e.area == ShadowEmitter::Area::Rect ? squareRim((k + phase) / kShadowRimSamples)
-                                                                   : glm::dvec2(std::cos(a), std::sin(a)))
-                            ? 1
-                            : 0;
+        probeArrived +=
+            arrives(e.area == ShadowEmitter::Area::Rect ? squareRim((k + phase) / kShadowRimSamples)
+                                                        : glm::dvec2(std::cos(a), std::sin(a)))
+                ? 1
+                : 0;
     }
     const auto [insideArrived, insideRays] = count(kShadowProbeSamples, state);
     probeArrived += insideArrived;

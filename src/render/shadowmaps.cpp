@@ -70,7 +70,8 @@ ShadowKind areaShadowKind(const glm::dvec3& position, const glm::dvec3& c, doubl
     const double dist = glm::length(c - position);
     if (!(dist > r)) return ShadowKind::Cube;
     const double tanSphere = r / std::sqrt(dist * dist - r * r);
-    return tanSphere <= 1.0 + 2.0 * kAreaFilterTexels / resolution ? ShadowKind::Perspective : ShadowKind::Cube;
+    return tanSphere <= 1.0 + 2.0 * kAreaFilterTexels / resolution ? ShadowKind::Perspective
+                                                                   : ShadowKind::Cube;
 }
 
 double areaPenumbraSize(const Light& l) {
@@ -224,10 +225,14 @@ std::array<float, 4 * kShadowTexels> packShadow(const ShadowView& v, const glm::
     std::array<float, 4 * kShadowTexels> t{};
     const glm::mat4 mf(m);
     std::copy_n(glm::value_ptr(mf), 16, t.begin());
-    const float rest[] = {float(v.layer),        float(int(v.kind)), float(v.znear),        float(v.zfar),
-                          float(v.texelScale()), float(v.bias),      float(v.normalOffset), float(v.emitter),
-                          float(lightIndex),     float(v.tanHalf),   float(v.resolution),   0.0f,
-                          float(v.searchEmitter), float(v.maxFilterTexels), float(v.layers()), 0.0f};
+    const float rest[] = {float(v.layer),         float(int(v.kind)),
+                          float(v.znear),         float(v.zfar),
+                          float(v.texelScale()),  float(v.bias),
+                          float(v.normalOffset),  float(v.emitter),
+                          float(lightIndex),      float(v.tanHalf),
+                          float(v.resolution),    0.0f,
+                          float(v.searchEmitter), float(v.maxFilterTexels),
+                          float(v.layers()),      0.0f};
     std::copy(std::begin(rest), std::end(rest), t.begin() + 16);
     return t;
 }

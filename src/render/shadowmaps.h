@@ -5,10 +5,10 @@
 // orthographic one, a point light six perspective faces (90°, slightly widened so filters near a face's
 // edge stay on it). An area light (rect, disk) gets a perspective map from its centre fitted to the
 // model's sphere when that sphere fits in one cube face's angle, else a cube in the light's own frame
-// without its back face (5 layers; 6 when two-sided): see areaShadowKind(). Every map is fitted to the model's bounding sphere, never to the view, so orbiting
-// never re-renders one. The ground is not fitted: it casts nothing, and a receiver outside a map's
-// frustum cannot have the model between it and the light (the frustum contains the model's sphere as seen
-// from the light), so it reads the border depth (1: lit).
+// without its back face (5 layers; 6 when two-sided): see areaShadowKind(). Every map is fitted to the
+// model's bounding sphere, never to the view, so orbiting never re-renders one. The ground is not fitted: it
+// casts nothing, and a receiver outside a map's frustum cannot have the model between it and the light (the
+// frustum contains the model's sphere as seen from the light), so it reads the border depth (1: lit).
 //
 // ShadowMaps owns one GL_TEXTURE_2D_ARRAY of GL_DEPTH_COMPONENT32F layers (one per spot or directional
 // light, six per point light), all of one resolution (the largest a caster asks for, halved until the
@@ -54,9 +54,9 @@ enum class ShadowKind { Perspective = 0, Orthographic = 1, Cube = 2 };
 // The map a casting light of this type gets: spot perspective, directional orthographic, point a cube;
 // an area light's depends on where the model is (areaShadowKind), this says Cube (it may need one).
 constexpr ShadowKind shadowKindOf(LightType type) {
-    return type == LightType::Directional                          ? ShadowKind::Orthographic
+    return type == LightType::Directional                      ? ShadowKind::Orthographic
            : type == LightType::Point || traitsOf(type).isArea ? ShadowKind::Cube
-                                                                   : ShadowKind::Perspective;
+                                                               : ShadowKind::Perspective;
 }
 // An area light at world `position` over a model sphere (centre c, radius r) at `resolution`: a
 // perspective map when the light is outside the sphere and the sphere's half-angle is within a cube
@@ -79,11 +79,11 @@ inline bool hasSoftShadow(const Light& l) {
 struct ShadowView {
     int rigIndex = -1; // the light in Rig::lights
     ShadowKind kind = ShadowKind::Perspective;
-    int layer = 0;       // first layer in the array (a cube uses `faces`)
-    int faces = 6;       // cube: 6, or 5 for a one-sided area light (no face behind its plane)
-    int resolution = 0;  // texels per side (the array's)
+    int layer = 0;            // first layer in the array (a cube uses `faces`)
+    int faces = 6;            // cube: 6, or 5 for a one-sided area light (no face behind its plane)
+    int resolution = 0;       // texels per side (the array's)
     glm::dmat4 viewProj{1.0}; // world -> light clip (perspective, orthographic; a cube: unused)
-    glm::dvec3 position; // world: the light (cube), the eye (perspective)
+    glm::dvec3 position;      // world: the light (cube), the eye (perspective)
     // Cube: the frame its faces are laid out in (columns, world): the world axes, or for an area light
     // (y × x of its in-plane axes, its direction), so face 4 (+Z) looks where it shines, face 5 behind.
     glm::dmat3 axes{1.0};

@@ -57,7 +57,8 @@ int main(int argc, char** argv) {
     if (const QString area = qEnvironmentVariable("LR_PERF_AREA"); !area.isEmpty()) {
         const double r = model.bounds.radius();
         Light l = makeLight(LightType::Rect, QStringLiteral("softbox"));
-        l.position = model.bounds.center() + glm::dvec3(0.0, (area.contains(QLatin1String("near")) ? 1.3 : 3.0) * r, 0.0);
+        l.position = model.bounds.center() +
+                     glm::dvec3(0.0, (area.contains(QLatin1String("near")) ? 1.3 : 3.0) * r, 0.0);
         l.direction = {0.0, -1.0, 0.0};
         l.area.width = l.area.height = area.section(QLatin1Char(':'), 0, 0).toDouble() * r;
         l.area.twoSided = area.contains(QLatin1String("two"));

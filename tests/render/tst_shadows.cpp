@@ -566,8 +566,10 @@ class TestShadows : public QObject {
                 const double v = visibilityAt(a, b, cam, p);
                 if (v < 0) continue;
                 ++compared;
-                const bool ok = t == 0.0 ? v < 0.02 : t == 1.0 && std::abs(v - 1.0) < litTolerance(Quality::Exact);
-                if (!ok && ++wrong <= 5) qWarning() << "rect" << width << "at x" << p.x << "traced" << t << "GPU" << v;
+                const bool ok =
+                    t == 0.0 ? v < 0.02 : t == 1.0 && std::abs(v - 1.0) < litTolerance(Quality::Exact);
+                if (!ok && ++wrong <= 5)
+                    qWarning() << "rect" << width << "at x" << p.x << "traced" << t << "GPU" << v;
             }
             const Edge t = edgeAlong(a, b, cam, from, to);
             double traced10 = -1, traced90 = -1;
@@ -578,9 +580,9 @@ class TestShadows : public QObject {
             }
             const Edge& g = t;
             widths[k++] = g.width();
-            qInfo() << "rect" << width << "penumbra 10-90 %: GPU" << g.at10 << "to" << g.at90 << "=" << g.width()
-                    << ", traced" << traced10 << "to" << traced90 << "=" << traced90 - traced10 << "; compared"
-                    << compared << "points outside the band";
+            qInfo() << "rect" << width << "penumbra 10-90 %: GPU" << g.at10 << "to" << g.at90 << "="
+                    << g.width() << ", traced" << traced10 << "to" << traced90 << "=" << traced90 - traced10
+                    << "; compared" << compared << "points outside the band";
             QCOMPARE(wrong, 0);
             QVERIFY(compared > 30);
             QVERIFY(g.at10 >= 0 && g.at90 >= 0);
