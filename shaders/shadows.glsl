@@ -12,6 +12,9 @@
 //      normal offset (texels), emitter (diameter in world units, or 2·tan(angle/2) for orthographic)
 //   6: the light's index in uLights (-1: not uploaded), tan of the half-angle (perspective, cube),
 //      resolution, 0
+//   7: the blocker search's emitter (as 5.w; an area light's largest extent), PCSS's radius cap in texels
+//      (kMaxFilterTexels, or shadowmaps.h kAreaFilterTexels for area lights), layers (a cube: 6, or 5 for a
+//      one-sided area light, whose face 5 behind its plane is not drawn), 0
 #if defined(LR_SHADING) && defined(LR_SHADOWS)
 
 uniform sampler2DArrayShadow uShadowMaps;  // compare LEQUAL, bilinear: each tap is a 2×2 PCF
@@ -22,6 +25,7 @@ uniform vec4 uShadowRecords[LR_MAX_SHADOW_CASTERS * LR_SHADOW_TEXELS];
 bool lrShadowsOn = true;  // the shadow catcher switches them off to measure the unshadowed light
 
 const float kMaxFilterTexels = 24.0;  // PCSS's search and filter radius at most (the cube faces' margin)
+                                      // for point, spot and directional lights; area lights: record 7.y
 
 struct ShadowRecord {
     mat4 m;
@@ -30,6 +34,7 @@ struct ShadowRecord {
     float znear, zfar;
     float texelScale, bias, normalOffset, emitter;
     float tanHalf, resolution;
+    float searchEmitter, maxFilter, faces;
 };
 
 ShadowRecord loadShadow(int slot) {
@@ -39,6 +44,7 @@ ShadowRecord loadShadow(int slot) {
     vec4 a = uShadowRecords[base + 4];
     vec4 b = uShadowRecords[base + 5];
     vec4 c = uShadowRecords[base + 6];
+    vec4 e = uShadowRecords[base + 7];
     r.layer = a.x;
     r.kind = int(a.y);
     r.znear = a.z;
@@ -49,10 +55,14 @@ ShadowRecord loadShadow(int slot) {
     r.emitter = b.w;
     r.tanHalf = c.y;
     r.resolution = c.z;
+    r.searchEmitter = e.x;
+    r.maxFilter = e.y;
+    r.faces = e.z;
     return r;
 }
 
-// The cube faces (shadowmaps.cpp kFaces): the axis each looks along, its right and up vectors.
+// The cube faces (shadowmaps.cpp kFaces): the axis each looks along, its right and up vectors, in the
+// cube's frame (world axes; an area light's own, +Z where it shines: the record's matrix turns into it).
 const vec3 kFaceForward[6] = vec3[6](vec3(1, 0, 0), vec3(-1, 0, 0), vec3(0, 1, 0), vec3(0, -1, 0),
                                      vec3(0, 0, 1), vec3(0, 0, -1));
 const vec3 kFaceRight[6] = vec3[6](vec3(0, 0, 1), vec3(0, 0, -1), vec3(1, 0, 0), vec3(-1, 0, 0),
@@ -91,6 +101,7 @@ ShadowCoord shadowCoord(ShadowRecord r, vec3 P) {
         c.uvLayer = vec3(xy * 0.5 + 0.5, r.layer + float(face));
         c.depth = perspectiveDepth(r, t);
         c.dist = t;
+        c.valid = float(face) < r.faces;  // behind a one-sided area light: no layer, and no light
         return c;
     }
 #endif
@@ -147,15 +158,22 @@ float shadowPcf3x3(ShadowCoord c, float ref, vec2 slope, float texelUv) {
 // region of the map the emitter can see past; the penumbra's half-width at the receiver (distance dR) is
 // emitter·(dR − dB)/(2·dB) (perspective; orthographic: emitter·(dR − dB)/2 with emitter = 2·tan(angle/2)),
 // in texels of the receiver's footprint; then 16 bilinear compare taps over that radius.
+//
+// An area light's kernels reach kAreaFilterTexels: 16 taps that far apart would band, so its Poisson disk
+// turns by a per-texel angle (interleaved gradient noise of the map position: noise instead of bands);
+// other lights' turn is 0 (their kernels are exactly as before).
 float shadowPcss(ShadowRecord r, ShadowCoord c, float ref, vec2 slope, float texelUv) {
     float dR = max(c.dist, 1e-30);
     float footprint = r.kind == 1 ? r.texelScale : r.texelScale * dR;  // world size of a texel here
     float reach = max(dR - r.znear, 0.0);
-    float search = 0.5 * r.emitter * reach / (r.kind == 1 ? footprint : r.znear * r.texelScale * dR);
-    search = clamp(search, 1.0, kMaxFilterTexels);
+    float search = 0.5 * r.searchEmitter * reach / (r.kind == 1 ? footprint : r.znear * r.texelScale * dR);
+    search = clamp(search, 1.0, r.maxFilter);
+    vec2 cell = floor(c.uvLayer.xy * (4.0 * r.resolution));
+    float turn = r.maxFilter > kMaxFilterTexels ? 6.2831853 * fract(52.9829189 * fract(dot(cell, vec2(0.06711056, 0.00583715)))) : 0.0;
+    mat2 spin = mat2(cos(turn), sin(turn), -sin(turn), cos(turn));
     float sum = 0.0, n = 0.0;
     for (int i = 0; i < 16; i += 2) {  // 8 of the 16 points: the mean blocker distance needs fewer
-        vec2 o = kPoisson[i] * (search * texelUv);
+        vec2 o = spin * kPoisson[i] * (search * texelUv);
         float d = texture(uShadowDepths, c.uvLayer + vec3(o, 0.0)).r;
         if (d < ref + dot(slope, o)) {
             sum += linearDepth(r, d);
@@ -165,9 +183,9 @@ float shadowPcss(ShadowRecord r, ShadowCoord c, float ref, vec2 slope, float tex
     if (n == 0.0) return 1.0;
     float dB = max(sum / n, 1e-30);
     float penumbra = 0.5 * r.emitter * max(dR - dB, 0.0) / (r.kind == 1 ? 1.0 : dB);  // world, half-width
-    float radius = clamp(penumbra / footprint, 0.5, kMaxFilterTexels);
+    float radius = clamp(penumbra / footprint, 0.5, r.maxFilter);
     float v = 0.0;
-    for (int i = 0; i < 16; ++i) v += shadowTapAt(c, ref, slope, kPoisson[i] * (radius * texelUv));
+    for (int i = 0; i < 16; ++i) v += shadowTapAt(c, ref, slope, spin * kPoisson[i] * (radius * texelUv));
     return v / 16.0;
 }
 #endif
@@ -176,6 +194,7 @@ float shadowPcss(ShadowRecord r, ShadowCoord c, float ref, vec2 slope, float tex
 // receiver moves off its surface by the normal offset (texels of its footprint, along the normal on the
 // light's side: an effective depth bias of offset/cos θ, growing where the light grazes) and toward the
 // light by the constant bias; glPolygonOffset adds the slope-scaled term when the map is drawn.
+// An area light's map is centred on its emitter, so its caller passes L towards the centre.
 float lrShadow(ShadeLight l, Surface s, vec3 L) {
     if (!lrShadowsOn || l.shadow <= 0) return 1.0;
     ShadowRecord r = loadShadow(l.shadow - 1);

@@ -46,6 +46,23 @@ glm::dvec2 concentricDisk(double u, double v) {
     return r * glm::dvec2(std::cos(phi), std::sin(phi));
 }
 
+// The point a fraction s (0..1) along the unit square [-1, 1]²'s perimeter (counter-clockwise).
+glm::dvec2 squareRim(double s) {
+    const double t = 4.0 * (s - std::floor(s));
+    const int side = std::min(3, int(t));
+    const double f = 2.0 * (t - side) - 1.0;
+    switch (side) {
+    case 0:
+        return {f, -1.0};
+    case 1:
+        return {1.0, f};
+    case 2:
+        return {-f, 1.0};
+    default:
+        return {-1.0, -f};
+    }
+}
+
 // Two unit vectors completing unit `w` to an orthonormal basis.
 void basisAround(const glm::dvec3& w, glm::dvec3* t, glm::dvec3* b) {
     const glm::dvec3 helper = std::abs(w.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
@@ -64,6 +81,18 @@ ShadowEmitter shadowEmitter(const Rig& rig, const SceneFrame& frame, const Light
         e.toLight = -lighting::safeNormalize(light.direction, glm::dvec3(0.0, -1.0, 0.0));
         const double angle = std::isfinite(light.shadow.angle) ? std::max(0.0, light.shadow.angle) : 0.0;
         e.halfAngle = 0.5 * glm::radians(std::min(angle, 180.0));
+    } else if (light.isArea()) {
+        e.position = rigToWorld(rig, frame, light.position);
+        e.area = light.type == LightType::Disk ? ShadowEmitter::Area::Disk : ShadowEmitter::Area::Rect;
+        e.normal = lighting::safeNormalize(light.direction, glm::dvec3(0.0, -1.0, 0.0));
+        const AreaAxes a = areaAxes(e.normal, light.area.roll);
+        e.axisX = a.x;
+        e.axisY = a.y;
+        const auto half = [&](double v) { return std::isfinite(v) ? 0.5 * std::max(0.0, v) * toWorld : 0.0; };
+        const bool disk = e.area == ShadowEmitter::Area::Disk;
+        e.halfWidth = half(disk ? 2.0 * light.area.radius : light.area.width);
+        e.halfHeight = half(disk ? 2.0 * light.area.radius : light.area.height);
+        e.twoSided = light.area.twoSided;
     } else {
         e.position = rigToWorld(rig, frame, light.position);
         const double size = std::isfinite(light.shadow.size) ? std::max(0.0, light.shadow.size) : 0.0;
@@ -186,7 +215,11 @@ double ShadowTracer::visibility(const glm::dvec3& point, const glm::dvec3& norma
         if (!(d > 0.0) || !std::isfinite(d)) return 1.0; // the light at the point: nothing in between
         w = toCentre / d;
     }
-    const bool hard = e.directional ? !(e.halfAngle > 0.0) : !(e.radius > 0.0);
+    const bool area = e.area != ShadowEmitter::Area::None;
+    if (area && !e.twoSided && !(glm::dot(origin - e.position, e.normal) > 0.0)) return 1.0; // behind it
+    const bool hard = e.directional ? !(e.halfAngle > 0.0)
+                      : area        ? !(e.halfWidth > 0.0 || e.halfHeight > 0.0)
+                                    : !(e.radius > 0.0);
     glm::dvec3 t, b;
     basisAround(w, &t, &b);
     const double oneMinusCos = e.directional ? 1.0 - std::cos(e.halfAngle) : 0.0;
@@ -201,7 +234,9 @@ double ShadowTracer::visibility(const glm::dvec3& point, const glm::dvec3& norma
             return !occluded(origin, glm::normalize(cosT * w + side),
                              std::numeric_limits<double>::infinity());
         }
-        const glm::dvec3 target = e.position + e.radius * (disk.x * t + disk.y * b);
+        const glm::dvec3 target =
+            area ? e.position + disk.x * e.halfWidth * e.axisX + disk.y * e.halfHeight * e.axisY
+                 : e.position + e.radius * (disk.x * t + disk.y * b);
         const glm::dvec3 toTarget = target - origin;
         const double len = glm::length(toTarget);
         if (!(len > 0.0)) return true;
@@ -215,7 +250,9 @@ double ShadowTracer::visibility(const glm::dvec3& point, const glm::dvec3& norma
         for (int j = 0; j < n; ++j)
             for (int i = 0; i < n; ++i) {
                 const double u = (i + uniform01(&state)) / n, v = (j + uniform01(&state)) / n;
-                arrived += arrives(concentricDisk(u, v)) ? 1 : 0;
+                const bool square = e.area == ShadowEmitter::Area::Rect;
+                arrived +=
+                    arrives(square ? glm::dvec2(2.0 * u - 1.0, 2.0 * v - 1.0) : concentricDisk(u, v)) ? 1 : 0;
             }
         return std::pair{arrived, n * n};
     };
@@ -226,7 +263,11 @@ double ShadowTracer::visibility(const glm::dvec3& point, const glm::dvec3& norma
     int probeArrived = 0;
     for (int k = 0; k < kShadowRimSamples; ++k) {
         const double a = 2.0 * std::numbers::pi * (k + phase) / kShadowRimSamples;
-        probeArrived += arrives(glm::dvec2(std::cos(a), std::sin(a))) ? 1 : 0;
+        probeArrived +=
+            arrives(e.area == ShadowEmitter::Area::Rect ? squareRim((k + phase) / kShadowRimSamples)
+                                                        : glm::dvec2(std::cos(a), std::sin(a)))
+                ? 1
+                : 0;
     }
     const auto [insideArrived, insideRays] = count(kShadowProbeSamples, state);
     probeArrived += insideArrived;

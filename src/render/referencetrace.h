@@ -12,6 +12,11 @@
 //   both are sampled stratified and jittered (equal-area disk mapping). First a probe: kShadowRimSamples
 //   rays to the emitter's rim and kShadowProbeSamples inside; when they all agree the point is fully lit
 //   or fully shadowed, else kShadowSamples fresh rays decide.
+// - an area light (rect, disk) is its own shape: the rect c ± hw·X ± hh·Y or the disk of its radius in
+//   its plane (X, Y from areaAxes, world units as positions), sampled the same way (rect: jittered strata
+//   of the rect, its perimeter for the rim; disk: the equal-area map, its circle); the fraction is of its
+//   area. A point behind a one-sided emitter's plane gets 1: the light does not reach it, so nothing
+//   shadows it (its shading is 0 there).
 #pragma once
 
 #include "core/prepare.h"
@@ -38,6 +43,12 @@ struct ShadowEmitter {
     glm::dvec3 toLight{0.0, 1.0, 0.0}; // directional: unit, towards the light (against its direction)
     double radius = 0.0;               // point, spot: the emitter disk's radius
     double halfAngle = 0.0;            // directional: the cone's half-angle, radians
+    // Area lights: the shape (None: not an area light), the unit in-plane axes and where it shines (world),
+    // its half extents (world units; a disk's are both its radius), and whether both sides emit.
+    enum class Area { None, Rect, Disk } area = Area::None;
+    glm::dvec3 axisX{1.0, 0.0, 0.0}, axisY{0.0, 1.0, 0.0}, normal{0.0, -1.0, 0.0};
+    double halfWidth = 0.0, halfHeight = 0.0;
+    bool twoSided = false;
 };
 
 ShadowEmitter shadowEmitter(const Rig& rig, const SceneFrame& frame, const Light& light);

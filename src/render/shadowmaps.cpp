@@ -37,16 +37,52 @@ void planesAround(double distance, double radius, double* znear, double* zfar) {
     *znear = std::max(distance - radius, *zfar * 1e-3);
 }
 
-int arrayResolution(const Rig& rig, const std::vector<int>& casters, int layers) {
+// The layers a casting light's map takes at `res` (an area light's kind depends on it, slightly).
+int layersOf(const Light& l, const glm::dvec3& position, const glm::dvec3& c, double r, int res) {
+    if (l.isArea())
+        return areaShadowKind(position, c, r, res) == ShadowKind::Cube ? (l.area.twoSided ? 6 : 5) : 1;
+    return shadowKindOf(l.type) == ShadowKind::Cube ? 6 : 1;
+}
+
+int arrayResolution(const Rig& rig, const std::vector<int>& casters, const std::vector<glm::dvec3>& positions,
+                    const glm::dvec3& c, double r) {
     int res = 256;
     for (int i : casters)
         res = std::max(res, std::clamp(rig.lights[size_t(i)].shadow.resolution, 256, 4096));
-    while (res > 256 && qint64(res) * res * 4 * layers > kMaxShadowBytes)
+    const auto layers = [&](int at) {
+        qint64 n = 0;
+        for (size_t k = 0; k < casters.size(); ++k)
+            n += layersOf(rig.lights[size_t(casters[k])], positions[k], c, r, at);
+        return n;
+    };
+    while (res > 256 && qint64(res) * res * 4 * layers(res) > kMaxShadowBytes)
         res /= 2;
     return res;
 }
 
+double finiteSize(double v) {
+    return std::isfinite(v) ? std::max(0.0, v) : 0.0;
+}
+
 } // namespace
+
+ShadowKind areaShadowKind(const glm::dvec3& position, const glm::dvec3& c, double r, int resolution) {
+    const double dist = glm::length(c - position);
+    if (!(dist > r)) return ShadowKind::Cube;
+    const double tanSphere = r / std::sqrt(dist * dist - r * r);
+    return tanSphere <= 1.0 + 2.0 * kAreaFilterTexels / resolution ? ShadowKind::Perspective
+                                                                   : ShadowKind::Cube;
+}
+
+double areaPenumbraSize(const Light& l) {
+    if (l.type == LightType::Disk) return 2.0 * finiteSize(l.area.radius);
+    return 2.0 * std::sqrt(finiteSize(l.area.width) * finiteSize(l.area.height) / M_PI);
+}
+
+double areaSearchSize(const Light& l) {
+    if (l.type == LightType::Disk) return 2.0 * finiteSize(l.area.radius);
+    return std::hypot(finiteSize(l.area.width), finiteSize(l.area.height));
+}
 
 double ShadowView::texelScale() const {
     return kind == ShadowKind::Orthographic ? 2.0 * halfWidth / resolution : 2.0 * tanHalf / resolution;
@@ -54,7 +90,8 @@ double ShadowView::texelScale() const {
 
 glm::dmat4 ShadowView::faceViewProj(int face) const {
     if (kind != ShadowKind::Cube) return viewProj;
-    const Face& f = kFaces[std::clamp(face, 0, 5)];
+    const Face& local = kFaces[std::clamp(face, 0, 5)];
+    const Face f{axes * local.forward, axes * local.right, axes * local.up}; // the face in world axes
     glm::dmat4 v(1.0); // rows: right, up, -forward (a right-handed view looking down -Z)
     for (int c = 0; c < 3; ++c) {
         v[c][0] = f.right[c];
@@ -70,22 +107,55 @@ glm::dmat4 ShadowView::faceViewProj(int face) const {
 bool ShadowView::sameMap(const ShadowView& o) const {
     return kind == o.kind && layer == o.layer && resolution == o.resolution && viewProj == o.viewProj &&
            position == o.position && znear == o.znear && zfar == o.zfar && tanHalf == o.tanHalf &&
-           halfWidth == o.halfWidth;
+           halfWidth == o.halfWidth && faces == o.faces && axes == o.axes;
 }
+
+namespace {
+
+// An area light's map from its centre (docs/lighting-models.md "Shadows", "Area lights"): blockers behind
+// its plane cannot shadow its front from there (every segment from the emitter to a point in front stays
+// in front), so one centre serves the whole emitter; its extent only widens the PCSS filter.
+void planAreaShadow(const Light& l, const glm::dvec3& position, const glm::dvec3& c, double r, double toWorld,
+                    ShadowView* v) {
+    v->position = position;
+    v->emitter = areaPenumbraSize(l) * toWorld;
+    v->searchEmitter = areaSearchSize(l) * toWorld;
+    v->maxFilterTexels = kAreaFilterTexels;
+    v->kind = areaShadowKind(position, c, r, v->resolution);
+    const double dist = glm::length(c - position);
+    planesAround(dist, r, &v->znear, &v->zfar);
+    if (v->kind == ShadowKind::Cube) {
+        const glm::dvec3 n = lighting::safeNormalize(l.direction, glm::dvec3(0, -1, 0));
+        const AreaAxes a = areaAxes(n, l.area.roll);
+        v->axes = glm::dmat3(a.y, a.x, n); // a.y × a.x = n: right-handed, face 4 (+Z) along n
+        v->faces = l.area.twoSided ? 6 : 5;
+        v->tanHalf = 1.0 + 2.0 * kAreaFilterTexels / v->resolution;
+        return;
+    }
+    v->maxFilterTexels = kAreaMapFilterTexels;
+    const double half = std::asin(r / dist);
+    const glm::dvec3 look = (c - position) / dist;
+    v->tanHalf = std::tan(half);
+    v->viewProj = glm::perspective(2.0 * half, 1.0, v->znear, v->zfar) *
+                  glm::lookAt(position, position + look, upFor(look));
+}
+
+} // namespace
 
 std::vector<ShadowView> planShadows(const Rig& rig, const SceneFrame& frame, const Bounds& bounds) {
     std::vector<int> casters;
-    int layers = 0;
+    std::vector<glm::dvec3> positions; // world
     for (size_t i = 0; i < rig.lights.size() && int(casters.size()) < kMaxShadowCasters; ++i) {
         if (!rig.lights[i].hasShadow()) continue;
         casters.push_back(int(i));
-        layers += rig.lights[i].type == LightType::Point ? 6 : 1;
+        positions.push_back(rig.lights[i].usesPosition() ? rigToWorld(rig, frame, rig.lights[i].position)
+                                                         : glm::dvec3(0.0));
     }
     std::vector<ShadowView> views;
     if (casters.empty()) return views;
-    const int res = arrayResolution(rig, casters, layers);
     const glm::dvec3 c = bounds.center();
     const double r = bounds.radius() * 1.02; // a margin for float rounding at the sphere's rim
+    const int res = arrayResolution(rig, casters, positions, c, r);
     const double toWorld = 1.0 / distanceScale(rig, frame);
     int layer = 0;
     for (int i : casters) {
@@ -97,7 +167,10 @@ std::vector<ShadowView> planShadows(const Rig& rig, const SceneFrame& frame, con
         v.bias = std::clamp(l.shadow.bias, 0.0, 16.0);
         v.normalOffset = std::clamp(l.shadow.normalOffset, 0.0, 16.0);
         v.kind = shadowKindOf(l.type);
-        if (v.kind == ShadowKind::Orthographic) {
+        v.searchEmitter = 0.0;
+        if (l.isArea()) {
+            planAreaShadow(l, rigToWorld(rig, frame, l.position), c, r, toWorld, &v);
+        } else if (v.kind == ShadowKind::Orthographic) {
             const glm::dvec3 d = lighting::safeNormalize(l.direction, glm::dvec3(0, -1, 0));
             v.position = c - d * (2.0 * r);
             v.znear = r;
@@ -106,9 +179,11 @@ std::vector<ShadowView> planShadows(const Rig& rig, const SceneFrame& frame, con
             v.viewProj = glm::ortho(-r, r, -r, r, v.znear, v.zfar) * glm::lookAt(v.position, c, upFor(d));
             const double angle = std::clamp(l.shadow.angle, 0.0, 10.0);
             v.emitter = 2.0 * std::tan(0.5 * angle * M_PI / 180.0);
+            v.searchEmitter = v.emitter;
         } else {
             v.position = rigToWorld(rig, frame, l.position);
             v.emitter = std::max(0.0, l.shadow.size) * toWorld;
+            v.searchEmitter = v.emitter;
             const double dist = glm::length(c - v.position);
             planesAround(dist, r, &v.znear, &v.zfar);
             if (v.kind == ShadowKind::Cube) {
@@ -143,14 +218,21 @@ qint64 shadowMapBytes(const std::vector<ShadowView>& views) {
 
 std::array<float, 4 * kShadowTexels> packShadow(const ShadowView& v, const glm::dmat4& view, int lightIndex) {
     const glm::dmat4 toWorld = glm::inverse(view);
-    const glm::dmat4 m = v.kind == ShadowKind::Cube ? glm::translate(glm::dmat4(1.0), -v.position) * toWorld
-                                                    : v.viewProj * toWorld;
+    const glm::dmat4 m =
+        v.kind == ShadowKind::Cube
+            ? glm::dmat4(glm::transpose(v.axes)) * glm::translate(glm::dmat4(1.0), -v.position) * toWorld
+            : v.viewProj * toWorld;
     std::array<float, 4 * kShadowTexels> t{};
     const glm::mat4 mf(m);
     std::copy_n(glm::value_ptr(mf), 16, t.begin());
-    const float rest[] = {float(v.layer),        float(int(v.kind)), float(v.znear),        float(v.zfar),
-                          float(v.texelScale()), float(v.bias),      float(v.normalOffset), float(v.emitter),
-                          float(lightIndex),     float(v.tanHalf),   float(v.resolution),   0.0f};
+    const float rest[] = {float(v.layer),         float(int(v.kind)),
+                          float(v.znear),         float(v.zfar),
+                          float(v.texelScale()),  float(v.bias),
+                          float(v.normalOffset),  float(v.emitter),
+                          float(lightIndex),      float(v.tanHalf),
+                          float(v.resolution),    0.0f,
+                          float(v.searchEmitter), float(v.maxFilterTexels),
+                          float(v.layers()),      0.0f};
     std::copy(std::begin(rest), std::end(rest), t.begin() + 16);
     return t;
 }

@@ -2,7 +2,9 @@
 // analytic scenes built in code: a sphere above a plane against the closed-form shadow outline (point and
 // directional light), a cube resting on the ground (no peter-panning), a light inside the model, a
 // directional light parallel to the ground, and the penumbra of a disk light behind a straight edge
-// against the exact visible fraction of the disk. No OpenGL: the tracer takes world points directly.
+// against the exact visible fraction of the disk; area lights (issue 16): a rect's penumbra behind an edge
+// against its exact (linear) visible share, wider for a wider rect, and a one-sided rect, which shadows
+// nothing behind its plane. No OpenGL: the tracer takes world points directly.
 #include "shadowscenes.h"
 
 #include "render/referencetrace.h"
@@ -30,6 +32,22 @@ ShadowEmitter sunEmitter(glm::dvec3 toLight, double angleDegrees = 0.0) {
     e.directional = true;
     e.toLight = glm::normalize(toLight);
     e.halfAngle = 0.5 * angleDegrees * std::numbers::pi / 180.0;
+    return e;
+}
+
+// A rect light at `position` shining down (-Y), width along X, height along Z (or a disk of radius w/2).
+ShadowEmitter rectEmitter(glm::dvec3 position, double width, double height, bool twoSided = false,
+                          ShadowEmitter::Area shape = ShadowEmitter::Area::Rect) {
+    ShadowEmitter e;
+    e.casts = true;
+    e.position = position;
+    e.area = shape;
+    e.normal = {0.0, -1.0, 0.0};
+    e.axisX = {1.0, 0.0, 0.0};
+    e.axisY = {0.0, 0.0, 1.0};
+    e.halfWidth = 0.5 * width;
+    e.halfHeight = 0.5 * height;
+    e.twoSided = twoSided;
     return e;
 }
 
@@ -196,6 +214,63 @@ class TestShadowReference : public QObject {
         QVERIFY(worstFine < 0.01);
     }
 
+    // A rect of width w at height H over the straight edge x = 0 of a half-plane (x < 0) at height h: the
+    // emitter point x_e is seen from ground point x iff x_e ≥ −x·(H − h)/h, so the visible share of the
+    // rect, uniform in x_e over [−w/2, w/2], is linear across a penumbra w·h/(H − h) wide. Both a narrow
+    // and a wide rect match it, and the wide one's band is ten times the narrow one's.
+    void rectPenumbraIsItsVisibleShare() {
+        constexpr double H = 3.0, h = 1.0;
+        const ShadowTracer tracer(
+            ShadowSceneBuilder().quad({-10, h, -10}, {-10, h, 10}, {0, h, 10}, {0, h, -10}).build(), false);
+        QVERIFY2(tracer.ok(), qPrintable(tracer.error()));
+        double bands[2] = {0.0, 0.0};
+        int k = 0;
+        for (double width : {0.2, 2.0}) {
+            const ShadowEmitter rect = rectEmitter({0.0, H, 0.0}, width, 0.5);
+            const double band = width * h / (H - h);
+            double worst = 0.0, at10 = 1e9, at90 = -1e9;
+            for (int i = 0; i <= 200; ++i) {
+                const double x = band * (-1.0 + 2.0 * i / 200.0);
+                const double exact = std::clamp((0.5 * width + x * (H - h) / h) / width, 0.0, 1.0);
+                const double v = tracer.visibility({x, 0.0, 0.3}, kUp, rect, std::uint32_t(i + 7));
+                worst = std::max(worst, std::abs(v - exact));
+                if (v >= 0.1) at10 = std::min(at10, x);
+                if (v < 0.9) at90 = std::max(at90, x);
+            }
+            bands[k++] = at90 - at10;
+            qInfo() << "rect" << width << "wide: 10-90 % band" << at90 - at10 << "(exact" << 0.8 * band
+                    << ") worst error" << worst;
+            QVERIFY2(worst < 0.05, qPrintable(QString::number(worst)));
+            QVERIFY(std::abs((at90 - at10) - 0.8 * band) < 0.1 * band);
+        }
+        QVERIFY(bands[1] > 8.0 * bands[0]);
+        // A disk: the same edge, a penumbra as wide as its diameter's similar triangles, about x = 0.
+        const ShadowEmitter disk = rectEmitter({0.0, H, 0.0}, 1.0, 1.0, false, ShadowEmitter::Area::Disk);
+        QCOMPARE(tracer.visibility({-0.26, 0.0, 0.0}, kUp, disk, 1u), 0.0);
+        QCOMPARE(tracer.visibility({0.26, 0.0, 0.0}, kUp, disk, 2u), 1.0);
+        QVERIFY(std::abs(tracer.visibility({0.0, 0.0, 0.0}, kUp, disk, 3u, 4096) - 0.5) < 0.02);
+    }
+
+    // A one-sided rect at height 2 shining down, a slab at height 3 above it (behind its plane): the
+    // ground below is fully lit (a blocker behind the emitter cannot come between it and its front), and a
+    // point on the slab's far side, behind the plane, gets 1 (the light does not reach it). Two-sided, the
+    // same point above the rect sees the slab in the way: shadowed.
+    void oneSidedRectShadowsNothingBehindIt() {
+        const ShadowTracer tracer(ShadowSceneBuilder().box({-3, 3.0, -3}, {3, 3.2, 3}).build(), false);
+        QVERIFY2(tracer.ok(), qPrintable(tracer.error()));
+        const ShadowEmitter one = rectEmitter({0.0, 2.0, 0.0}, 1.0, 1.0);
+        for (double x : {-1.0, 0.0, 0.4, 2.0})
+            QCOMPARE(tracer.visibility({x, 0.0, 0.0}, kUp, one, std::uint32_t(x * 10 + 20)), 1.0);
+        const glm::dvec3 above(0.0, 3.5, 0.0);
+        QCOMPARE(tracer.visibility(above, kUp, one, 5u), 1.0);
+        const ShadowEmitter two = rectEmitter({0.0, 2.0, 0.0}, 1.0, 1.0, true);
+        QCOMPARE(tracer.visibility(above, kUp, two, 5u), 0.0);
+        QCOMPARE(tracer.visibility({0.0, 0.0, 0.0}, kUp, two, 6u), 1.0);
+        // Zero size: one ray to the centre, a hard shadow.
+        const ShadowEmitter dot = rectEmitter({0.0, 2.0, 0.0}, 0.0, 0.0, true);
+        QCOMPARE(tracer.visibility(above, kUp, dot, 5u), 0.0);
+    }
+
     // The emitter from a rig light: size in rig units scaled like positions, angle a full angle.
     void emitterFromRigLight() {
         Rig rig;
@@ -220,6 +295,28 @@ class TestShadowReference : public QObject {
         sun.shadow.enabled = false;
         QVERIFY(!shadowEmitter(rig, frame, sun).casts);
         QVERIFY(!shadowEmitter(rig, frame, makeLight(LightType::Rim, QStringLiteral("r"))).casts);
+        // Area lights: their own shape and axes (areaAxes), half extents in world units, the side.
+        Light rect = makeLight(LightType::Rect, QStringLiteral("rect"));
+        rect.position = {0.0, 1.0, 0.0};
+        rect.direction = {0.0, -1.0, 0.0};
+        rect.area.width = 0.5;
+        rect.area.height = 0.25;
+        rect.area.twoSided = true;
+        rect.shadow.enabled = true;
+        e = shadowEmitter(rig, frame, rect);
+        QVERIFY(e.casts && !e.directional && e.area == ShadowEmitter::Area::Rect && e.twoSided);
+        QVERIFY(e.position == glm::dvec3(1.0, 6.0, 3.0));
+        QCOMPARE(e.halfWidth, 0.25 * 4.0);
+        QCOMPARE(e.halfHeight, 0.125 * 4.0);
+        const AreaAxes axes = areaAxes(rect.direction, 0.0);
+        QVERIFY(e.axisX == axes.x && e.axisY == axes.y && e.normal == rect.direction);
+        Light disk = makeLight(LightType::Disk, QStringLiteral("disk"));
+        disk.area.radius = 0.3;
+        disk.shadow.enabled = true;
+        e = shadowEmitter(rig, frame, disk);
+        QVERIFY(e.area == ShadowEmitter::Area::Disk && !e.twoSided);
+        QCOMPARE(e.halfWidth, 0.3 * 4.0);
+        QCOMPARE(e.halfHeight, 0.3 * 4.0);
     }
 };
 

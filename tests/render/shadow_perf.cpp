@@ -5,6 +5,10 @@
 //   the same view without shadows, the time per map (RenderStats::shadowMapMs over the layers) and the
 //   maps' memory. Medians of process CPU ms per frame (glFinish each; LR_PERF_WALL=1: wall clock).
 //   shadow_perf MODEL [frames=20] [WxH=1280x720]
+// LR_PERF_AREA=W[:near][:two]: the lights replaced by one casting rect light W model radii square, 3 radii
+// above the model's centre shining down (a perspective map), or 1.3 radii (`near`: a cube of 5 faces;
+// `two`: two-sided, 6).
+#include "core/prepare.h"
 #include "model/modelloader.h"
 #include "render/offscreen.h"
 
@@ -49,6 +53,20 @@ int main(int argc, char** argv) {
         l.shadow.size = 0.05 * model.bounds.radius();
         l.shadow.angle = 1.0;
         casters += l.hasShadow() ? 1 : 0;
+    }
+    if (const QString area = qEnvironmentVariable("LR_PERF_AREA"); !area.isEmpty()) {
+        const double r = model.bounds.radius();
+        Light l = makeLight(LightType::Rect, QStringLiteral("softbox"));
+        l.position = model.bounds.center() +
+                     glm::dvec3(0.0, (area.contains(QLatin1String("near")) ? 1.3 : 3.0) * r, 0.0);
+        l.direction = {0.0, -1.0, 0.0};
+        l.area.width = l.area.height = area.section(QLatin1Char(':'), 0, 0).toDouble() * r;
+        l.area.twoSided = area.contains(QLatin1String("two"));
+        l.intensity = 5.0;
+        l.shadow.enabled = true;
+        rig.space = RigSpace::World;
+        rig.lights = {l};
+        casters = 1;
     }
     Rig plain = rig;
     for (Light& l : plain.lights)

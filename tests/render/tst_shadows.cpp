@@ -7,6 +7,7 @@
 #include "shadowscenes.h"
 
 #include "render/offscreen.h"
+#include "render/referencetrace.h"
 #include "render/renderplan.h"
 #include "render/shadergen.h"
 #include "render/shadowmaps.h"
@@ -32,6 +33,18 @@ Light castingSpot(glm::dvec3 position, glm::dvec3 target, double outer, double s
     l.cone = {ConeModel::Smooth, outer - 2.0, outer, 1.0};
     l.shadow.enabled = true;
     l.shadow.size = size;
+    return l;
+}
+
+// A rect light at `position` shining straight down, `width` × `width`, one- or two-sided.
+Light castingRect(glm::dvec3 position, double width, bool twoSided = false) {
+    Light l = makeLight(LightType::Rect, QStringLiteral("rect"));
+    l.position = position;
+    l.direction = {0.0, -1.0, 0.0};
+    l.area.width = width;
+    l.area.height = width;
+    l.area.twoSided = twoSided;
+    l.shadow.enabled = true;
     return l;
 }
 
@@ -473,6 +486,123 @@ class TestShadows : public QObject {
         const auto in = planShadows(rigOf({inside}), frame, b);
         QVERIFY(in.front().tanHalf <= std::tan(85.0 * M_PI / 180.0) + 1e-9);
         QVERIFY(in.front().znear > 0.0 && in.front().znear < in.front().zfar);
+    }
+
+    // Area lights' maps: a rect far from the model gets one perspective map fitted to the model's sphere,
+    // one close to it a cube in its own frame (face 4 along its direction) without the back face (5
+    // layers; 6 when two-sided); PCSS sizes: the equal-area diameter and the diagonal; a point light's
+    // map is as before.
+    void areaLightMapsPlan() {
+        const auto model = floatingSphere();
+        const Rig far = rigOf({castingRect({0, 4, 0}, 0.5)});
+        const SceneFrame frame{model->bounds.center(), model->bounds.radius()};
+        std::vector<ShadowView> v = planShadows(far, frame, model->bounds);
+        QCOMPARE(int(v.size()), 1);
+        QCOMPARE(v[0].kind, ShadowKind::Perspective);
+        QCOMPARE(v[0].layers(), 1);
+        QCOMPARE(v[0].maxFilterTexels, kAreaMapFilterTexels);
+        const double toWorld = 1.0 / distanceScale(far, frame);
+        QVERIFY(std::abs(v[0].emitter - 2.0 * std::sqrt(0.25 / M_PI) * toWorld) < 1e-12);
+        QVERIFY(std::abs(v[0].searchEmitter - std::sqrt(0.5) * toWorld) < 1e-12);
+        const Rig near = rigOf({castingRect({0, 1.2, 0}, 0.5)});
+        v = planShadows(near, frame, model->bounds);
+        QCOMPARE(v[0].kind, ShadowKind::Cube);
+        QCOMPARE(v[0].layers(), 5);
+        QCOMPARE(v[0].maxFilterTexels, kAreaFilterTexels);
+        QVERIFY(glm::length(v[0].axes[2] - glm::dvec3(0, -1, 0)) < 1e-12);
+        QVERIFY(std::abs(glm::determinant(v[0].axes) - 1.0) < 1e-12);
+        const Rig both = rigOf({castingRect({0, 1.2, 0}, 0.5, true)});
+        QCOMPARE(planShadows(both, frame, model->bounds)[0].layers(), 6);
+        Light bulb = makeLight(LightType::Point, QStringLiteral("bulb"));
+        bulb.shadow.enabled = true;
+        bulb.shadow.size = 0.2;
+        v = planShadows(rigOf({bulb}), frame, model->bounds);
+        QCOMPARE(v[0].layers(), 6);
+        QCOMPARE(v[0].maxFilterTexels, kCubeMarginTexels);
+        QCOMPARE(v[0].searchEmitter, v[0].emitter);
+        QVERIFY(v[0].axes == glm::dmat3(1.0));
+    }
+
+    // A rect light over the floating sphere shadows the ground: the GPU visibility (exact tier) agrees
+    // with the traced reference's wherever the traced one is 0 or 1, away from its penumbra band; a rect
+    // ten times as wide gives a wider measured band (10 % to 90 %); a one-sided rect close under the
+    // sphere (a 5-face cube) shadows nothing in front of it, as the two-sided one (6 faces).
+    void rectShadowFollowsItsSize() {
+        const auto model = floatingSphere();
+        QVERIFY(m_gl->setModel(model));
+        const ViewCamera cam = groundCamera();
+        const ShadowTracer tracer(*model, false);
+        QVERIFY2(tracer.ok(), qPrintable(tracer.error()));
+        const glm::dvec3 from(0.0, 0.0, 0.0), to(1.8, 0.0, 0.0);
+        double widths[2] = {0.0, 0.0};
+        int k = 0;
+        for (double width : {0.2, 2.0}) {
+            const Rig on = withGround({castingRect({0, 4, 0}, width)}, GroundMode::Visible);
+            const FloatImage a = radiance(on, cam, settingsFor(Quality::Exact)),
+                             b = radiance(withoutShadows(on), cam, settingsFor(Quality::Exact));
+            if (visibilityAt(a, b, cam, {1.5, 0.0, 0.0}) < 0)
+                QSKIP("no GPU shading of area lights on this branch (it comes with arealtc)");
+            const ShadowEmitter e = shadowEmitter(on, m_gl->renderer().sceneFrame(), on.lights.front());
+            // The traced profile along the ground through the shadow's centre, and its penumbra band
+            // [lo, hi] (0 < traced < 1), widened by half its width each side: PCSS widens a penumbra
+            // about the centre's hard edge, so its kernel reaches that far into the umbra.
+            const int steps = 240;
+            std::vector<double> traced(steps + 1);
+            double lo = 1e9, hi = -1e9;
+            for (int i = 0; i <= steps; ++i) {
+                const glm::dvec3 p(-1.8 + 3.6 * i / steps, 0.0, 0.0);
+                traced[size_t(i)] = tracer.visibility(p, {0, 1, 0}, e, std::uint32_t(i), 1024);
+                if (traced[size_t(i)] > 0.0 && traced[size_t(i)] < 1.0 && p.x > 0.0) {
+                    lo = std::min(lo, p.x);
+                    hi = std::max(hi, p.x);
+                }
+            }
+            const double margin = 0.5 * (hi - lo) + 0.02;
+            int compared = 0, wrong = 0;
+            for (int i = 0; i <= steps; ++i) {
+                const glm::dvec3 p(-1.8 + 3.6 * i / steps, 0.0, 0.0);
+                const double t = traced[size_t(i)], d = std::abs(p.x);
+                if (!(d < lo - margin || d > hi + margin)) continue;
+                const double v = visibilityAt(a, b, cam, p);
+                if (v < 0) continue;
+                ++compared;
+                const bool ok =
+                    t == 0.0 ? v < 0.02 : t == 1.0 && std::abs(v - 1.0) < litTolerance(Quality::Exact);
+                if (!ok && ++wrong <= 5)
+                    qWarning() << "rect" << width << "at x" << p.x << "traced" << t << "GPU" << v;
+            }
+            const Edge t = edgeAlong(a, b, cam, from, to);
+            double traced10 = -1, traced90 = -1;
+            for (int i = steps / 2; i <= steps; ++i) {
+                const double x = -1.8 + 3.6 * i / steps;
+                if (traced10 < 0 && traced[size_t(i)] >= 0.1) traced10 = x;
+                if (traced90 < 0 && traced[size_t(i)] >= 0.9) traced90 = x;
+            }
+            const Edge& g = t;
+            widths[k++] = g.width();
+            qInfo() << "rect" << width << "penumbra 10-90 %: GPU" << g.at10 << "to" << g.at90 << "="
+                    << g.width() << ", traced" << traced10 << "to" << traced90 << "=" << traced90 - traced10
+                    << "; compared" << compared << "points outside the band";
+            QCOMPARE(wrong, 0);
+            QVERIFY(compared > 30);
+            QVERIFY(g.at10 >= 0 && g.at90 >= 0);
+        }
+        QVERIFY2(widths[1] > 3.0 * widths[0],
+                 qPrintable(QStringLiteral("bands %1 and %2").arg(widths[0]).arg(widths[1])));
+        // One- and two-sided under the sphere: the same ground, no shadow on it.
+        RenderStats stats[2];
+        FloatImage images[2];
+        for (int two : {0, 1}) {
+            const Rig on = withGround({castingRect({0, 0.45, 0}, 0.3, two)}, GroundMode::Visible);
+            images[two] = radiance(on, cam, settingsFor(Quality::Exact));
+            stats[two] = m_gl->renderer().stats();
+            const FloatImage b = radiance(withoutShadows(on), cam, settingsFor(Quality::Exact));
+            for (double x : {0.0, 0.3, 0.8})
+                QVERIFY2(std::abs(visibilityAt(images[two], b, cam, {x, 0.0, 0.1}) - 1.0) < 1e-4,
+                         qPrintable(QStringLiteral("%1-sided at %2").arg(two + 1).arg(x)));
+        }
+        QCOMPARE(stats[0].shadowLayersRendered, 5);
+        QCOMPARE(stats[1].shadowLayersRendered, 6);
     }
 
     // Extreme lights render finite in every tier: a 179° and a 0.1° spot, a directional light parallel to
