@@ -172,13 +172,26 @@ class RigGenerator {
             if (chance(0.3)) l.ambient = color();
         }
         if (l.type == LightType::Rim) l.rimExponent = positive(kMaxRigExponent);
+        if (l.isArea()) {
+            AreaShape& a = l.area;
+            if (traitsOf(l.type).usesRectSize) {
+                a.width = value(kMaxRigLength);
+                a.height = value(kMaxRigLength);
+            } else {
+                a.radius = value(kMaxRigLength);
+            }
+            a.roll = std::min(180.0, value(360.0) - 180.0);
+            a.twoSided = chance(0.5);
+        }
         if (l.castsShadows() && chance(0.5)) {
             Shadow& s = l.shadow;
             s.enabled = chance(0.7);
             s.resolution = kMinShadowResolution << m_rng.bounded(5); // 256 ... 4096
             s.bias = std::min(kMaxShadowBias, value(kMaxShadowBias));
             s.normalOffset = std::min(kMaxShadowBias, value(kMaxShadowBias));
-            if (l.usesPosition())
+            if (l.isArea())
+                ; // an area light's softness is its "area": its shadow has no size
+            else if (l.usesPosition())
                 s.size = value(kMaxRigLength);
             else
                 s.angle = std::min(kMaxShadowAngle, value(kMaxShadowAngle));
