@@ -132,12 +132,12 @@ void convertCone(const Light& l, GltfLight& g, std::vector<LossyConversion>& los
 // as m²): a spot of L·A with a 90° cone (inner 0: glTF's cone gives cos² θ) at its centre along its axis; a
 // two-sided one emits to both sides, a point light of L·A/2 (the same total flux, 2πLA). Its intensity means
 // the same under both shadings (lighting_area.h's 1/π under classic is the Lambert lobe's): no × π.
-GltfLight areaStandIn(const Rig& rig, const SceneFrame& frame, const glm::dmat3& fileFromWorld, const Light& l,
-                      std::vector<LossyConversion>& losses) {
+GltfLight areaStandIn(const Rig& rig, const SceneFrame& frame, const glm::dmat3& fileFromWorld,
+                      const Light& l, std::vector<LossyConversion>& losses) {
     const double s = distanceScale(rig, frame); // rig units per world unit
     const bool disk = l.type == LightType::Disk;
-    const double area = (disk ? std::numbers::pi * l.area.radius * l.area.radius : l.area.width * l.area.height) /
-                        (s * s);
+    const double area =
+        (disk ? std::numbers::pi * l.area.radius * l.area.radius : l.area.width * l.area.height) / (s * s);
     GltfLight g;
     g.name = l.name;
     g.translation = fileFromWorld * rigToWorld(rig, frame, l.position);
@@ -157,14 +157,16 @@ GltfLight areaStandIn(const Rig& rig, const SceneFrame& frame, const glm::dmat3&
     }
     const QString size = disk ? QStringLiteral("radius %1").arg(num(l.area.radius))
                               : QStringLiteral("%1 × %2").arg(num(l.area.width), num(l.area.height));
-    losses.push_back({ExportLoss::AreaLight, l.name,
-                      QStringLiteral("%1 %2%3, %4 nits → %5 %6 cd")
-                          .arg(toString(l.type), size, l.area.twoSided ? QStringLiteral(" two-sided") : QString(),
-                               num(l.intensity), g.type, num(g.intensity))});
+    losses.push_back(
+        {ExportLoss::AreaLight, l.name,
+         QStringLiteral("%1 %2%3, %4 nits → %5 %6 cd")
+             .arg(toString(l.type), size, l.area.twoSided ? QStringLiteral(" two-sided") : QString(),
+                  num(l.intensity), g.type, num(g.intensity))});
     if (l.diffuse == DiffuseModel::HalfLambert)
         losses.push_back({ExportLoss::HalfLambert, l.name, QStringLiteral("half-lambert")});
     if (l.specularIsColor || l.specular.x != 1.0)
-        losses.push_back({ExportLoss::Specular, l.name, QStringLiteral("specular %1").arg(num(l.specular.x))});
+        losses.push_back(
+            {ExportLoss::Specular, l.name, QStringLiteral("specular %1").arg(num(l.specular.x))});
     if (l.ambient && *l.ambient != glm::dvec3(0.0))
         losses.push_back({ExportLoss::LightAmbient, l.name, QStringLiteral("its own ambient")});
     if (l.hasShadow()) losses.push_back({ExportLoss::Shadow, l.name, QStringLiteral("casts a shadow")});

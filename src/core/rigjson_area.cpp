@@ -41,10 +41,10 @@ std::optional<AreaShape> readArea(Checker& c, const Value& v, const QString& pat
         size("height", a.height);
     } else {
         for (const char* key : {"width", "height"})
-            o.reject(key, QStringLiteral("%1 has no %2: its size is \"radius\" (only %3 lights have a "
-                                         "width and a height)")
-                              .arg(light, QLatin1String(key),
-                                   lightTypesWith(&LightTypeTraits::usesRectSize)));
+            o.reject(key,
+                     QStringLiteral("%1 has no %2: its size is \"radius\" (only %3 lights have a "
+                                    "width and a height)")
+                         .arg(light, QLatin1String(key), lightTypesWith(&LightTypeTraits::usesRectSize)));
     }
     if (disk)
         size("radius", a.radius);
@@ -52,7 +52,8 @@ std::optional<AreaShape> readArea(Checker& c, const Value& v, const QString& pat
         o.reject("radius", QStringLiteral("%1 has no radius: its size is \"width\" and \"height\" (only "
                                           "%2 lights have a radius)")
                                .arg(light, lightTypesWith(&LightTypeTraits::usesDiskRadius)));
-    if (const Value* r = o.take("roll")) keep(c.number(*r, o.path("roll"), {-180.0, true, 180.0, true}), a.roll);
+    if (const Value* r = o.take("roll"))
+        keep(c.number(*r, o.path("roll"), {-180.0, true, 180.0, true}), a.roll);
     if (const Value* t = o.take("twoSided")) keep(c.boolean(*t, o.path("twoSided")), a.twoSided);
     o.finish();
     if (!ok) return std::nullopt;

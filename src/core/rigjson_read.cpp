@@ -46,7 +46,8 @@ void readAreaOf(Checker& c, ObjectView& o, std::optional<LightType> type, const 
     }
     for (const char* key : {"width", "height", "radius", "roll", "twoSided"})
         o.reject(key, area ? QStringLiteral("belongs in \"area\"")
-                           : QStringLiteral("%1 has no %2 (it would belong in \"area\", which only %3 lights have)")
+                           : QStringLiteral(
+                                 "%1 has no %2 (it would belong in \"area\", which only %3 lights have)")
                                  .arg(a, QLatin1String(key), lightTypesWith(&LightTypeTraits::isArea)));
 }
 

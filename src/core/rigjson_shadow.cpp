@@ -52,8 +52,8 @@ std::optional<Shadow> readShadow(Checker& c, const Value& v, const QString& path
     const bool atInfinity = !type || !traitsOf(*type).usesPosition;
     const QString light = type ? QStringLiteral("a %1 light's shadow").arg(toString(*type)) : QString();
     if (area) {
-        o.reject("size", QStringLiteral("%1 has no size: the light's own \"area\" softens its shadow")
-                             .arg(light));
+        o.reject("size",
+                 QStringLiteral("%1 has no size: the light's own \"area\" softens its shadow").arg(light));
     } else if (positioned) {
         if (const Value* x = o.take("size"))
             keep(c.number(*x, o.path("size"), nonNegative(kMaxRigLength)), s.size);

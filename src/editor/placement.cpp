@@ -64,7 +64,7 @@ Light placeNewLight(const Rig& rig, LightType type, const QString& name, const P
     if (l.usesPosition()) l.position = worldToRig(rig, f, world);
     if (l.usesFalloff() && l.falloff.hasRange())
         l.falloff.range = kPlacementRange * radius * distanceScale(rig, f);
-    if (l.usesDirection() && l.type != LightType::Rim) l.direction = -out; // towards the centre
+    if (l.usesDirection() && l.type != LightType::Rim) l.direction = -out;       // towards the centre
     const double distance = kPlacementDistance * radius * distanceScale(rig, f); // rig units
     if (l.isArea()) {
         const double size = kAreaPlacementSize * radius * distanceScale(rig, f);

@@ -205,11 +205,13 @@ class TestPlacement : public QObject {
         rig.lights = {l};
         QVERIFY(readRigJson(writeRigJson(rig), QStringLiteral("r.json")).ok());
         const glm::dvec3 at = rigToWorld(rig, model, l.position);
-        QVERIFY(std::abs(glm::length(at - model.center) - kPlacementDistance * model.radius) < 1e-9 * model.radius);
+        QVERIFY(std::abs(glm::length(at - model.center) - kPlacementDistance * model.radius) <
+                1e-9 * model.radius);
         QVERIFY(glm::dot(l.direction, glm::normalize(model.center - at)) > 1.0 - 1e-12);
         const double toWorld = 1.0 / distanceScale(rig, model);
         if (l.type == LightType::Rect) {
-            QVERIFY(std::abs(l.area.width * toWorld - kAreaPlacementSize * model.radius) < 1e-9 * model.radius);
+            QVERIFY(std::abs(l.area.width * toWorld - kAreaPlacementSize * model.radius) <
+                    1e-9 * model.radius);
             QCOMPARE(l.area.height, l.area.width);
         } else {
             QVERIFY(std::abs(2.0 * l.area.radius * toWorld - kAreaPlacementSize * model.radius) <
@@ -238,8 +240,9 @@ class TestPlacement : public QObject {
             }
         factor *= (2.0 * hw / kCells) * (2.0 * hh / kCells);
         const double level = l.intensity * factor; // lux (pbr) or π × the classic directional intensity
-        const double expected = rig.shading.model == ShadingModel::Pbr ? kPbrPlacementIlluminance
-                                                                       : std::numbers::pi * kClassicAreaPlacementLevel;
+        const double expected = rig.shading.model == ShadingModel::Pbr
+                                    ? kPbrPlacementIlluminance
+                                    : std::numbers::pi * kClassicAreaPlacementLevel;
         QVERIFY2(std::abs(level - expected) < 2e-3 * expected,
                  qPrintable(QStringLiteral("%1 vs %2").arg(level).arg(expected)));
         QVERIFY(l.intensity <= kMaxRigIntensity);

@@ -136,7 +136,8 @@ class TestGltfLights : public QObject {
         QVERIFY(std::abs(point.intensity - 0.5 * 8.0 * diskArea) < 1e-9);
         QCOMPARE(count(e, ExportLoss::AreaLight), 2);
         QCOMPARE(count(e, ExportLoss::Disabled), 1);
-        QVERIFY(describeLoss(e.losses[0]).startsWith(QStringLiteral("Softbox: rect or disk light: rect 1.5 × 0.5")));
+        QVERIFY(describeLoss(e.losses[0])
+                    .startsWith(QStringLiteral("Softbox: rect or disk light: rect 1.5 × 0.5")));
 
         // Far on its axis the one-sided stand-in matches the emitter: a disk of radius R (world) at D.
         Light far = disk;

@@ -90,7 +90,8 @@ class TestAreaLightImport : public QObject {
 
         const Light& broken = model.lights.lights[2];
         QCOMPARE(broken.area.width, 1.0); // AreaShape's default, with a warning
-        QVERIFY2(model.warnings.join(QLatin1Char('\n')).contains(QStringLiteral("box.fbx: light Broken: area light size")),
+        QVERIFY2(model.warnings.join(QLatin1Char('\n'))
+                     .contains(QStringLiteral("box.fbx: light Broken: area light size")),
                  qPrintable(model.warnings.join(QLatin1Char('\n'))));
 
         // The imported rig is a valid rig file (version 2: it has rect lights).
@@ -104,19 +105,20 @@ class TestAreaLightImport : public QObject {
     // Every roll survives areaAxes -> rollForUp: the import's inverse of the convention.
     void rollRoundTrips() {
         for (double roll : {-179.0, -90.0, -30.0, 0.0, 45.0, 135.0, 180.0}) {
-            for (const glm::dvec3 dir : {glm::dvec3(0, 0, -1), glm::normalize(glm::dvec3(1, -2, 0.5)),
-                                         glm::dvec3(0, -1, 0)}) {
+            for (const glm::dvec3 dir :
+                 {glm::dvec3(0, 0, -1), glm::normalize(glm::dvec3(1, -2, 0.5)), glm::dvec3(0, -1, 0)}) {
                 const AreaAxes a = areaAxes(dir, roll);
                 auto* l = areaLight("L", {float(a.y.x), float(a.y.y), float(a.y.z)}, {1, 1});
                 l->mDirection = aiVector3D(float(dir.x), float(dir.y), float(dir.z));
                 aiScene scene;
                 scene.mRootNode = new aiNode("root");
                 scene.mNumLights = 1;
-                scene.mLights = new aiLight*[1]{l};
+                scene.mLights = new aiLight* [1] { l };
                 Model model;
                 detail::convertLightsAndCameras(&scene, false, QStringLiteral("x.blend"), model);
                 QCOMPARE(int(model.lights.lights.size()), 1);
-                const AreaAxes back = areaAxes(model.lights.lights[0].direction, model.lights.lights[0].area.roll);
+                const AreaAxes back =
+                    areaAxes(model.lights.lights[0].direction, model.lights.lights[0].area.roll);
                 QVERIFY2(near(back.x, a.x, 1e-5) && near(back.y, a.y, 1e-5),
                          qPrintable(QStringLiteral("roll %1").arg(roll)));
             }

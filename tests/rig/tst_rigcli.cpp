@@ -158,15 +158,18 @@ void TestRigCli::validateAreaLights() {
     Run r = lightrig({QStringLiteral("validate"), good, bad, old});
     QVERIFY2(r.code == 1, qPrintable(show(r)));
     QVERIFY2(r.lines().contains(good + QStringLiteral(": ok")), qPrintable(show(r)));
-    QVERIFY2(r.lines().contains(bad + QStringLiteral(": lights[0].area.width: must be a finite number from 0 to "
-                                                     "1e12, got -2")),
-             qPrintable(show(r)));
-    QVERIFY2(r.lines().contains(old + QStringLiteral(": lights[0].type: disk lights came with version 2 of the "
-                                                     "format, but the file says \"version\": 1; write "
-                                                     "\"version\": 2")),
-             qPrintable(show(r)));
+    QVERIFY2(
+        r.lines().contains(bad + QStringLiteral(": lights[0].area.width: must be a finite number from 0 to "
+                                                "1e12, got -2")),
+        qPrintable(show(r)));
+    QVERIFY2(
+        r.lines().contains(old + QStringLiteral(": lights[0].type: disk lights came with version 2 of the "
+                                                "format, but the file says \"version\": 1; write "
+                                                "\"version\": 2")),
+        qPrintable(show(r)));
     QVERIFY2(!r.lines().contains(bad + QStringLiteral(": ok")), qPrintable(show(r)));
-    r = lightrig({QStringLiteral("validate"), good, builtinPresetPath(QStringLiteral("pbr-softbox-product"))});
+    r = lightrig(
+        {QStringLiteral("validate"), good, builtinPresetPath(QStringLiteral("pbr-softbox-product"))});
     QVERIFY2(r.code == 0, qPrintable(show(r)));
     r = lightrig({QStringLiteral("format"), QStringLiteral("--check"), good});
     QVERIFY2(r.code == 0, qPrintable(show(r)));

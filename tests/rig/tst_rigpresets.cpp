@@ -40,10 +40,10 @@ const QStringList kExpected = {
     QStringLiteral("silhouette"),
     QStringLiteral("three-point"),
 };
-const QStringList kPbr = {QStringLiteral("pbr-bottle-strips"),      QStringLiteral("pbr-hdri-studio"),
-                          QStringLiteral("pbr-overhead-softbox"),   QStringLiteral("pbr-rim-heavy"),
-                          QStringLiteral("pbr-softbox-product"),    QStringLiteral("pbr-studio-environment"),
-                          QStringLiteral("pbr-three-point"),        QStringLiteral("pbr-white-sweep")};
+const QStringList kPbr = {QStringLiteral("pbr-bottle-strips"),    QStringLiteral("pbr-hdri-studio"),
+                          QStringLiteral("pbr-overhead-softbox"), QStringLiteral("pbr-rim-heavy"),
+                          QStringLiteral("pbr-softbox-product"),  QStringLiteral("pbr-studio-environment"),
+                          QStringLiteral("pbr-three-point"),      QStringLiteral("pbr-white-sweep")};
 // Issue 16: the presets built of area lights (rect, disk).
 const QStringList kArea = {QStringLiteral("pbr-bottle-strips"), QStringLiteral("pbr-overhead-softbox"),
                            QStringLiteral("pbr-softbox-product")};
@@ -539,10 +539,10 @@ void TestRigPresets::areaPresets() {
         const double d = glm::length(l.position);
         QVERIFY2(d > 2.0 && d < 4.0, qPrintable(what));
         QVERIFY2(glm::dot(l.direction, -l.position / d) > 0.9, qPrintable(what)); // aimed at the model
-        const double longSide = l.type == LightType::Rect ? std::max(l.area.width, l.area.height)
-                                                          : 2.0 * l.area.radius;
-        const double shortSide = l.type == LightType::Rect ? std::min(l.area.width, l.area.height)
-                                                           : 2.0 * l.area.radius;
+        const double longSide =
+            l.type == LightType::Rect ? std::max(l.area.width, l.area.height) : 2.0 * l.area.radius;
+        const double shortSide =
+            l.type == LightType::Rect ? std::min(l.area.width, l.area.height) : 2.0 * l.area.radius;
         QVERIFY2(longSide >= 0.8 && longSide <= 4.0 && shortSide >= 0.3, qPrintable(what));
         QVERIFY2(l.intensity > 1.0 && l.intensity < 100.0, qPrintable(what)); // nits
     }
@@ -556,9 +556,11 @@ void TestRigPresets::areaPresets() {
         QVERIFY(strips[0].position.x * strips[1].position.x < 0.0);
         QVERIFY(std::abs(strips[0].position.y) < 0.5 && std::abs(strips[1].position.y) < 0.5);
     } else {
-        const auto key = std::max_element(rig.lights.begin(), rig.lights.end(), [](const Light& a, const Light& b) {
-            return a.intensity * a.area.width * a.area.height < b.intensity * b.area.width * b.area.height;
-        });
+        const auto key =
+            std::max_element(rig.lights.begin(), rig.lights.end(), [](const Light& a, const Light& b) {
+                return a.intensity * a.area.width * a.area.height <
+                       b.intensity * b.area.width * b.area.height;
+            });
         QVERIFY2(key->type == LightType::Rect && key->hasShadow(), qPrintable(key->name));
     }
     bool disk = false;

@@ -248,9 +248,9 @@ void TestRigWrite::randomRigsRoundTrip() {
 
 void TestRigWrite::loadSaveIsByteIdentical_data() {
     QTest::addColumn<QString>("file");
-    for (const char* f : {"good/issue-example.json", "good/minimal.json", "good/all-fields.json",
-                          "good/utf8-bom.json", "good/shadows.json", "good/environment.json",
-                          "good/area.json"})
+    for (const char* f :
+         {"good/issue-example.json", "good/minimal.json", "good/all-fields.json", "good/utf8-bom.json",
+          "good/shadows.json", "good/environment.json", "good/area.json"})
         QTest::newRow(f) << dataPath(QString::fromLatin1(f));
 }
 
@@ -332,8 +332,9 @@ void TestRigWrite::areaIsWrittenInFull() {
          {"\"version\": 2,", "\"area\": {\"width\": 2, \"height\": 0.5, \"roll\": -45, \"twoSided\": true}",
           "\"shadow\": {\"enabled\": true, \"resolution\": 1024, \"bias\": 1, \"normalOffset\": 1}",
           "\"area\": {\"radius\": 0.25, \"roll\": 0, \"twoSided\": false}"})
-        QVERIFY2(text.contains(line), qPrintable(QStringLiteral("%1 not in\n%2").arg(QLatin1String(line),
-                                                                                       QString::fromUtf8(text))));
+        QVERIFY2(
+            text.contains(line),
+            qPrintable(QStringLiteral("%1 not in\n%2").arg(QLatin1String(line), QString::fromUtf8(text))));
     const RigReadResult r = readRigJson(text, QStringLiteral("a.json"));
     LR_VERIFY_OK(r);
     LR_COMPARE(r.rig->lights[0].area, (AreaShape{2.0, 0.5, 0.5, -45.0, true})); // a rect has no radius
