@@ -201,23 +201,25 @@ bool readLight(Reader& r, Light& l, const QString& at) {
     bool hasTemperature = false, hasAmbient = false;
     double temperature = 0.0;
     glm::dvec3 ambient(0.0);
-    const bool ok = r.string(l.name, f("name")) && r.enumeration(l.type, f("type")) &&
-                    r.flag(l.enabled, f("enabled")) && r.number(l.color, f("color")) &&
-                    r.number(l.intensity, f("intensity")) && r.flag(hasTemperature, f("temperature")) &&
-                    r.number(temperature, f("temperature")) && r.number(l.position, f("position")) &&
-                    r.number(l.direction, f("direction")) && r.enumeration(l.falloff.model, f("falloff")) &&
-                    r.number(l.falloff.range, f("range")) &&
-                    r.number(l.falloff.exponent, f("falloff exponent")) &&
-                    r.number(l.falloff.constant, f("constant")) && r.number(l.falloff.linear, f("linear")) &&
-                    r.number(l.falloff.quadratic, f("quadratic")) && r.enumeration(l.cone.model, f("cone")) &&
-                    r.number(l.cone.inner, f("cone inner")) && r.number(l.cone.outer, f("cone outer")) &&
-                    r.number(l.cone.exponent, f("cone exponent")) && r.enumeration(l.diffuse, f("diffuse")) &&
-                    r.flag(l.specularIsColor, f("specular kind")) && r.number(l.specular, f("specular")) &&
-                    r.flag(hasAmbient, f("ambient")) && r.number(ambient, f("ambient")) &&
-                    r.number(l.rimExponent, f("rim exponent")) && r.number(l.area.width, f("area width")) &&
-                    r.number(l.area.height, f("area height")) && r.number(l.area.radius, f("area radius")) &&
-                    r.number(l.area.roll, f("area roll")) && r.flag(l.area.twoSided, f("two-sided"));
+    const bool ok =
+        r.string(l.name, f("name")) && r.enumeration(l.type, f("type")) && r.flag(l.enabled, f("enabled")) &&
+        r.number(l.color, f("color")) && r.number(l.intensity, f("intensity")) &&
+        r.flag(hasTemperature, f("temperature")) && r.number(temperature, f("temperature")) &&
+        r.number(l.position, f("position")) && r.number(l.direction, f("direction")) &&
+        r.enumeration(l.falloff.model, f("falloff")) && r.number(l.falloff.range, f("range")) &&
+        r.number(l.falloff.exponent, f("falloff exponent")) && r.number(l.falloff.constant, f("constant")) &&
+        r.number(l.falloff.linear, f("linear")) && r.number(l.falloff.quadratic, f("quadratic")) &&
+        r.enumeration(l.cone.model, f("cone")) && r.number(l.cone.inner, f("cone inner")) &&
+        r.number(l.cone.outer, f("cone outer")) && r.number(l.cone.exponent, f("cone exponent")) &&
+        r.enumeration(l.diffuse, f("diffuse")) && r.flag(l.specularIsColor, f("specular kind")) &&
+        r.number(l.specular, f("specular")) && r.flag(hasAmbient, f("ambient")) &&
+        r.number(ambient, f("ambient")) && r.number(l.rimExponent, f("rim exponent"));
     if (!ok) return false;
+    AreaShape& a = l.area;
+    if (!(r.number(a.width, f("area width")) && r.number(a.height, f("area height")) &&
+          r.number(a.radius, f("area radius")) && r.number(a.roll, f("area roll")) &&
+          r.flag(a.twoSided, f("two-sided"))))
+        return false;
     if (hasTemperature) l.temperature = temperature;
     if (hasAmbient) l.ambient = ambient;
     return true;
