@@ -26,9 +26,9 @@ const ExportLossInfo kExportLosses[int(ExportLoss::Count)] = {
     {ExportLoss::Rim, "rim", "Rim light", "nothing (glTF has no rim light)"},
     {ExportLoss::Area, "area", "Area light", "a point (glTF has no area lights)"},
     {ExportLoss::AreaLight, "area-light", "Rect or disk light",
-     "a spot at its centre along its axis (two-sided: a point light) of the emitter's on-axis intensity, "
-     "luminance × area in candela, and a 90° cone (glTF's cone gives cos² θ where the emitter gives cos θ; "
-     "a point light carries the same total flux); exact for a small emitter on its axis"},
+     "a spot of luminance × area candela at its centre along its axis with a 90° cone (two-sided: a point "
+     "light of half that, the same flux); exact far away on its axis, cos² θ off it where the emitter has "
+     "cos θ"},
     {ExportLoss::Shadow, "shadow", "Shadow", "nothing (KHR_lights_punctual lights carry no shadow settings)"},
     {ExportLoss::Disabled, "disabled", "Switched-off light", "nothing (glTF lights cannot be switched off)"},
     {ExportLoss::Ambient, "ambient", "Ambient",
@@ -159,7 +159,7 @@ GltfLight areaStandIn(const Rig& rig, const SceneFrame& frame, const glm::dmat3&
                               : QStringLiteral("%1 × %2").arg(num(l.area.width), num(l.area.height));
     losses.push_back(
         {ExportLoss::AreaLight, l.name,
-         QStringLiteral("%1 %2%3, %4 nits → %5 %6 cd")
+         QStringLiteral("%1 %2%3 at %4 nits: a %5 of %6 cd")
              .arg(toString(l.type), size, l.area.twoSided ? QStringLiteral(" two-sided") : QString(),
                   num(l.intensity), g.type, num(g.intensity))});
     if (l.diffuse == DiffuseModel::HalfLambert)
