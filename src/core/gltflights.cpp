@@ -25,6 +25,10 @@ const ExportLossInfo kExportLosses[int(ExportLoss::Count)] = {
      "nothing (glTF lights have no ambient term)"},
     {ExportLoss::Rim, "rim", "Rim light", "nothing (glTF has no rim light)"},
     {ExportLoss::Area, "area", "Area light", "a point (glTF has no area lights)"},
+    {ExportLoss::AreaLight, "area-light", "Rect or disk light",
+     "a spot of luminance × area candela at its centre along its axis with a 90° cone (two-sided: a point "
+     "light of half that, the same flux); exact far away on its axis, cos² θ off it where the emitter has "
+     "cos θ"},
     {ExportLoss::Shadow, "shadow", "Shadow", "nothing (KHR_lights_punctual lights carry no shadow settings)"},
     {ExportLoss::Disabled, "disabled", "Switched-off light", "nothing (glTF lights cannot be switched off)"},
     {ExportLoss::Ambient, "ambient", "Ambient",
@@ -123,6 +127,52 @@ void convertCone(const Light& l, GltfLight& g, std::vector<LossyConversion>& los
     if (!was.isEmpty()) losses.push_back({ExportLoss::Cone, l.name, was});
 }
 
+// A rect or disk light as KHR_lights_punctual can hold it (kExportLosses' area-light row). Far from a
+// Lambertian emitter of luminance L and area A its intensity is L·A·cos θ (candela, A in world units² read
+// as m²): a spot of L·A with a 90° cone (inner 0: glTF's cone gives cos² θ) at its centre along its axis; a
+// two-sided one emits to both sides, a point light of L·A/2 (the same total flux, 2πLA). Its intensity means
+// the same under both shadings (lighting_area.h's 1/π under classic is the Lambert lobe's): no × π.
+GltfLight areaStandIn(const Rig& rig, const SceneFrame& frame, const glm::dmat3& fileFromWorld,
+                      const Light& l, std::vector<LossyConversion>& losses) {
+    const double s = distanceScale(rig, frame); // rig units per world unit
+    const bool disk = l.type == LightType::Disk;
+    const double area =
+        (disk ? std::numbers::pi * l.area.radius * l.area.radius : l.area.width * l.area.height) / (s * s);
+    GltfLight g;
+    g.name = l.name;
+    g.translation = fileFromWorld * rigToWorld(rig, frame, l.position);
+    g.rotation = lookRotation(fileFromWorld * l.direction, fileFromWorld * glm::dvec3(0, 1, 0));
+    const glm::dvec3 c = glm::max(l.effectiveColor(), glm::dvec3(0.0));
+    const double m = std::max({c.x, c.y, c.z});
+    g.color = m > 0.0 ? c / m : glm::dvec3(0.0);
+    const double intensity = l.intensity * (m > 0.0 ? m : 1.0) * area;
+    if (l.area.twoSided) {
+        g.type = QStringLiteral("point");
+        g.intensity = 0.5 * intensity;
+    } else {
+        g.type = QStringLiteral("spot");
+        g.intensity = intensity;
+        g.innerConeAngle = 0.0;
+        g.outerConeAngle = std::numbers::pi / 2.0;
+    }
+    const QString size = disk ? QStringLiteral("radius %1").arg(num(l.area.radius))
+                              : QStringLiteral("%1 × %2").arg(num(l.area.width), num(l.area.height));
+    losses.push_back(
+        {ExportLoss::AreaLight, l.name,
+         QStringLiteral("%1 %2%3 at %4 nits: a %5 of %6 cd")
+             .arg(toString(l.type), size, l.area.twoSided ? QStringLiteral(" two-sided") : QString(),
+                  num(l.intensity), g.type, num(g.intensity))});
+    if (l.diffuse == DiffuseModel::HalfLambert)
+        losses.push_back({ExportLoss::HalfLambert, l.name, QStringLiteral("half-lambert")});
+    if (l.specularIsColor || l.specular.x != 1.0)
+        losses.push_back(
+            {ExportLoss::Specular, l.name, QStringLiteral("specular %1").arg(num(l.specular.x))});
+    if (l.ambient && *l.ambient != glm::dvec3(0.0))
+        losses.push_back({ExportLoss::LightAmbient, l.name, QStringLiteral("its own ambient")});
+    if (l.hasShadow()) losses.push_back({ExportLoss::Shadow, l.name, QStringLiteral("casts a shadow")});
+    return g;
+}
+
 // The rig's settings glTF has no place for, as their rig-file JSON (the note in extras.lightrig).
 QJsonObject noteFor(const Rig& rig, double unit) {
     const QJsonObject file = QJsonDocument::fromJson(writeRigJson(rig)).object();
@@ -156,6 +206,11 @@ GltfRigExport convertRigToGltf(const Rig& rig, const SceneFrame& frame, const gl
     if (classic && !rig.lights.empty())
         out.losses.push_back({ExportLoss::ClassicUnits, rigSubject, QStringLiteral("shading \"classic\"")});
     for (const Light& l : rig.lights) {
+        if (l.isArea() && l.enabled) {
+            GltfLight g = areaStandIn(rig, frame, fileFromWorld, l, out.losses);
+            out.lights.push_back(g);
+            continue;
+        }
         if (l.type == LightType::Rim) {
             out.losses.push_back(
                 {ExportLoss::Rim, l.name, QStringLiteral("exponent %1").arg(num(l.rimExponent))});

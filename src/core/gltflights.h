@@ -1,5 +1,6 @@
 // A rig as glTF lights (issue 17, docs/export.md): every enabled point, spot and directional light becomes
-// a KHR_lights_punctual light on a node of its own, in glTF's frame (right-handed, +Y up, the model file's
+// a KHR_lights_punctual light on a node of its own (a rect or disk light a spot or point light standing in
+// for it, listed as a loss: glTF has no area lights), in glTF's frame (right-handed, +Y up, the model file's
 // units, which glTF reads as metres), with the extension's semantics: candela for point and spot lights,
 // lux for directional lights, inverse-square falloff with the smooth range window, spot cones as inner and
 // outer half-angles in radians. What glTF cannot say is converted by a documented rule and listed, never
@@ -34,6 +35,7 @@ enum class ExportLoss {
     LightAmbient, // a light's own ambient term
     Rim,          // rim lights (no physical counterpart)
     Area,         // area emitters: a shadow's emitter size, the studio's softboxes
+    AreaLight,    // rect and disk lights (issue 16): a spot (one-sided) or a point (two-sided) instead
     Shadow,       // shadow casting (KHR_lights_punctual lights carry none)
     Disabled,     // lights switched off (glTF lights have no switch)
     Ambient,      // the scene ambient (glTF has no ambient light)

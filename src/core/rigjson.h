@@ -1,4 +1,4 @@
-// Rig files: JSON, format "lightrig", version 1 (docs/rig-format.md). Reading validates everything and
+// Rig files: JSON, format "lightrig", versions 1 and 2 (docs/rig-format.md). Reading validates everything and
 // reports every error as "FILE: json.path: reason"; writing is canonical (stable key order, only the
 // fields a light's type and models use) and atomic.
 #pragma once
@@ -12,7 +12,9 @@
 
 namespace lr {
 
-constexpr int kRigFormatVersion = 1;
+// The newest version this LightRig reads; it reads every older one too. 2 (issue 16) added the rect and disk
+// light types and their "area"; a rig is written as the oldest version that holds it (rigjson_area.cpp).
+constexpr int kRigFormatVersion = 2;
 constexpr qint64 kMaxRigFileBytes = 16 * 1024 * 1024;
 constexpr int kMaxRigLights = 4096;
 // Value limits of the format (docs/rig-format.md), for editors that want to stay within them.

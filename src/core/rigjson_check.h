@@ -103,6 +103,13 @@ std::optional<Cone> readCone(Checker& c, const json::Value& v, const QString& pa
 std::optional<Shadow> readShadow(Checker& c, const json::Value& v, const QString& path,
                                  std::optional<LightType> type);
 std::optional<Ground> readGround(Checker& c, const json::Value& v, const QString& path);
+// rigjson_area.cpp: an area light's "area" (type: the light's, nullopt when unknown: every key allowed);
+// nullopt when invalid (errors reported). The first format version that has a light type (rect and disk: 2),
+// and the version a rig is written as: the oldest that holds every light it has.
+std::optional<AreaShape> readArea(Checker& c, const json::Value& v, const QString& path,
+                                  std::optional<LightType> type);
+int firstFormatVersion(LightType type);
+int formatVersionFor(const Rig& rig);
 // rigjson_environment.cpp: the rig's "environment" (nullopt when invalid, errors reported), and its canonical
 // text (nullopt for the default environment, which is not written).
 std::optional<Environment> readEnvironment(Checker& c, const json::Value& v, const QString& path);

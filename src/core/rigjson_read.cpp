@@ -34,7 +34,24 @@ void readSpecular(Checker& c, const Value& v, const QString& path, Light& l) {
     }
 }
 
-std::optional<Light> readLight(Checker& c, const Value& v, const QString& path) {
+// `area` and its keys written on the light itself.
+void readAreaOf(Checker& c, ObjectView& o, std::optional<LightType> type, const QString& a, Light& l) {
+    const bool area = !type || traitsOf(*type).isArea;
+    if (area) {
+        if (const Value* x = o.take("area"))
+            if (const auto shape = rigjson::readArea(c, *x, o.path("area"), type)) l.area = *shape;
+    } else {
+        o.reject("area", QStringLiteral("%1 has no area (only %2 lights have one: they emit from a surface)")
+                             .arg(a, lightTypesWith(&LightTypeTraits::isArea)));
+    }
+    for (const char* key : {"width", "height", "radius", "roll", "twoSided"})
+        o.reject(key, area ? QStringLiteral("belongs in \"area\"")
+                           : QStringLiteral(
+                                 "%1 has no %2 (it would belong in \"area\", which only %3 lights have)")
+                                 .arg(a, QLatin1String(key), lightTypesWith(&LightTypeTraits::isArea)));
+}
+
+std::optional<Light> readLight(Checker& c, const Value& v, const QString& path, int version) {
     if (!c.isObject(v, path)) return std::nullopt;
     ObjectView o(c, v, path);
     Light l;
@@ -43,6 +60,16 @@ std::optional<Light> readLight(Checker& c, const Value& v, const QString& path) 
         type = c.enumValue<LightType>(*t, o.path("type"));
     else
         c.error(o.path("type"), QStringLiteral("missing; one of %1").arg(allowedNames<LightType>()));
+    if (type && rigjson::firstFormatVersion(*type) > version) {
+        // An older file cannot hold the type (no writer made it, an older reader refuses it): say so.
+        c.error(o.path("type"),
+                QStringLiteral("%1 lights came with version %2 of the format, but the file says \"version\": "
+                               "%3; write \"version\": %2")
+                    .arg(toString(*type))
+                    .arg(rigjson::firstFormatVersion(*type))
+                    .arg(version));
+        type.reset();
+    }
     if (type) l.type = *type;
     const QString a = type ? QStringLiteral("a %1 light").arg(toString(*type)) : QString();
     const auto is = [&](bool (Light::*uses)() const) { return !type || (l.*uses)(); }; // unknown type: allow
@@ -114,6 +141,7 @@ std::optional<Light> readLight(Checker& c, const Value& v, const QString& path) 
         o.reject("exponent", QStringLiteral("only %1 lights have an exponent; a falloff or cone exponent "
                                             "belongs in \"falloff\" or \"cone\"")
                                  .arg(lightTypesWith(&LightTypeTraits::usesRimExponent)));
+    readAreaOf(c, o, type, a, l);
     if (is(&Light::castsShadows)) {
         if (const Value* s = o.take("shadow"))
             if (const auto shadow = readShadow(c, *s, o.path("shadow"), type)) l.shadow = *shadow;
@@ -152,8 +180,10 @@ void readShading(Checker& c, const Value& v, const QString& path, Shading& s) {
     o.finish();
 }
 
-// Checks "format" and "version"; false when the rest of the file must not be read.
-bool readHeader(Checker& c, ObjectView& top) {
+// Checks "format" and "version"; false when the rest of the file must not be read. *version: the file's
+// (every version from 1 to kRigFormatVersion is read; the newest when it is missing or invalid).
+bool readHeader(Checker& c, ObjectView& top, int* version) {
+    *version = kRigFormatVersion;
     if (const Value* f = top.take("format")) {
         if (f->kind != Value::Kind::String || f->string != QLatin1String("lightrig")) {
             c.expected(*f, QStringLiteral("format"),
@@ -176,7 +206,9 @@ bool readHeader(Checker& c, ObjectView& top) {
         }
         if (!integer || v->number < 1)
             c.expected(*v, QStringLiteral("version"),
-                       QStringLiteral("the integer %1").arg(kRigFormatVersion));
+                       QStringLiteral("an integer from 1 to %1").arg(kRigFormatVersion));
+        else
+            *version = int(v->number);
     } else {
         c.error(QStringLiteral("version"),
                 QStringLiteral("missing; this reader expects \"version\": %1").arg(kRigFormatVersion));
@@ -223,7 +255,8 @@ RigReadResult readRigJson(const QByteArray& data, const QString& displayName) {
         return c.result(std::nullopt);
     }
     ObjectView top(c, doc.root, QString());
-    if (!readHeader(c, top)) return c.result(std::nullopt);
+    int version = kRigFormatVersion;
+    if (!readHeader(c, top, &version)) return c.result(std::nullopt);
 
     Rig rig;
     top.read("name", rig.name, [&](const Value& x, const QString& p) { return c.name(x, p); });
@@ -245,7 +278,7 @@ RigReadResult readRigJson(const QByteArray& data, const QString& displayName) {
         } else {
             for (size_t i = 0; i < lights->items.size(); ++i)
                 if (auto l = readLight(c, lights->items[i],
-                                       json::appendIndex(QStringLiteral("lights"), qsizetype(i))))
+                                       json::appendIndex(QStringLiteral("lights"), qsizetype(i)), version))
                     rig.lights.push_back(std::move(*l));
             if (const int casters = shadowCasterCount(rig.lights); casters > kMaxShadowCasters)
                 c.error(QStringLiteral("lights"),

@@ -46,10 +46,15 @@ std::optional<Shadow> readShadow(Checker& c, const Value& v, const QString& path
     texels("normalOffset", s.normalOffset);
 
     // The emitter's extent: a diameter for lights at a position, an angular diameter for lights at infinity.
-    const bool positioned = !type || traitsOf(*type).usesPosition;
+    // An area light's softness is its own size ("area"), so its shadow has neither.
+    const bool area = type && traitsOf(*type).isArea;
+    const bool positioned = !type || (traitsOf(*type).usesPosition && !area);
     const bool atInfinity = !type || !traitsOf(*type).usesPosition;
     const QString light = type ? QStringLiteral("a %1 light's shadow").arg(toString(*type)) : QString();
-    if (positioned) {
+    if (area) {
+        o.reject("size",
+                 QStringLiteral("%1 has no size: the light's own \"area\" softens its shadow").arg(light));
+    } else if (positioned) {
         if (const Value* x = o.take("size"))
             keep(c.number(*x, o.path("size"), nonNegative(kMaxRigLength)), s.size);
     } else {

@@ -85,15 +85,33 @@ std::optional<QByteArray> shadow(const Light& l) {
     const Shadow& s = l.shadow;
     const Shadow d;
     const bool positioned = l.usesPosition();
+    const bool area = l.isArea(); // its softness is its "area": neither size nor angle
     const bool isDefault = s.enabled == d.enabled && s.resolution == d.resolution && s.bias == d.bias &&
                            s.normalOffset == d.normalOffset &&
-                           (positioned ? s.size == d.size : s.angle == d.angle);
+                           (area || (positioned ? s.size == d.size : s.angle == d.angle));
     if (!l.castsShadows() || isDefault) return std::nullopt;
-    return inlineObject({{"enabled", s.enabled ? "true" : "false"},
-                         {"resolution", QByteArray::number(s.resolution)},
-                         {"bias", num(s.bias)},
-                         {"normalOffset", num(s.normalOffset)},
-                         positioned ? std::pair{"size", num(s.size)} : std::pair{"angle", num(s.angle)}});
+    Fields fields{{"enabled", s.enabled ? "true" : "false"},
+                  {"resolution", QByteArray::number(s.resolution)},
+                  {"bias", num(s.bias)},
+                  {"normalOffset", num(s.normalOffset)}};
+    if (!area)
+        fields.push_back(positioned ? std::pair{"size", num(s.size)} : std::pair{"angle", num(s.angle)});
+    return inlineObject(fields);
+}
+
+// An area light's emitter, always written in full (as falloff and cone are): a rect's width and height or
+// a disk's radius, then roll and twoSided.
+QByteArray area(const Light& l) {
+    const AreaShape& a = l.area;
+    Fields fields;
+    if (traitsOf(l.type).usesRectSize) {
+        fields.push_back({"width", num(a.width)});
+        fields.push_back({"height", num(a.height)});
+    }
+    if (traitsOf(l.type).usesDiskRadius) fields.push_back({"radius", num(a.radius)});
+    fields.push_back({"roll", num(a.roll)});
+    fields.push_back({"twoSided", a.twoSided ? "true" : "false"});
+    return inlineObject(fields);
 }
 
 QByteArray light(const Light& l) {
@@ -107,6 +125,7 @@ QByteArray light(const Light& l) {
     if (l.usesDirection()) f.push_back({"direction", vec(l.direction)});
     if (l.usesFalloff()) f.push_back({"falloff", falloff(l.falloff)});
     if (l.usesCone()) f.push_back({"cone", cone(l.cone)});
+    if (l.isArea()) f.push_back({"area", area(l)});
     if (l.usesSurfaceModels()) {
         if (l.diffuse != DiffuseModel::Lambert) f.push_back({"diffuse", name(l.diffuse)});
         if (l.specularIsColor)
@@ -138,7 +157,7 @@ QByteArray writeRigJson(const Rig& rig) {
                                : Fields{{"specular", name(rig.shading.specular)},
                                         {"viewer", name(rig.shading.viewer)},
                                         {"shininess", num(rig.shading.shininess)}};
-    Fields top{{"format", "\"lightrig\""},    {"version", QByteArray::number(kRigFormatVersion)},
+    Fields top{{"format", "\"lightrig\""},    {"version", QByteArray::number(rigjson::formatVersionFor(rig))},
                {"name", str(rig.name)},       {"space", name(rig.space)},
                {"ambient", vec(rig.ambient)}, {"shading", inlineObject(shading)}};
     // The ground only when not the default (off, grey), in full.

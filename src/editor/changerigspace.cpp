@@ -25,6 +25,9 @@ std::optional<Rig> convertRigSpace(const Rig& rig, RigSpace space, const SceneFr
         if (!l.usesPosition()) continue;
         l.position = worldToRig(out, f, rigToWorld(rig, f, l.position));
         l.shadow.size *= k; // the emitter's diameter is a distance too (an angle needs nothing)
+        // An area light's size too (its luminance is per unit area and solid angle: unchanged).
+        for (double* size : {&l.area.width, &l.area.height, &l.area.radius})
+            *size *= k;
         Falloff& fo = l.falloff;
         if (fo.hasRange()) fo.range *= k;
         if (fo.model == FalloffModel::InverseSquare) l.intensity *= k * k; // 1/d² in the new units

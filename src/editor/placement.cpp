@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/trigonometric.hpp>
+#include <numbers>
 
 namespace lr {
 
@@ -19,7 +20,29 @@ using lighting::safeNormalize;
 // Azimuth offsets (degrees, around the view's up) of successive new lights: right, left, further right...
 constexpr double kAzimuths[] = {35.0, -35.0, 70.0, -70.0, 0.0, 105.0, -105.0, 140.0, -140.0};
 constexpr double kElevation = 30.0; // degrees above the viewer's horizon
+
+// The level (intensity) an area light needs for `target` at `distance`; kMaxRigIntensity when its emitter is
+// empty or too small for the format's limit.
+double areaIntensityFor(const Light& l, double distance, double target) {
+    const double factor = areaIrradianceFactor(l, distance);
+    if (!(factor > 0.0)) return kMaxRigIntensity;
+    return std::min(target / factor, kMaxRigIntensity);
+}
 } // namespace
+
+double areaIrradianceFactor(const Light& l, double distance) {
+    if (!l.isArea() || !std::isfinite(distance)) return 0.0;
+    const double d = std::max(std::abs(distance), 1e-12);
+    if (l.type == LightType::Disk) {
+        const double r = std::max(l.area.radius, 0.0);
+        return std::numbers::pi * r * r / (r * r + d * d); // π sin² of the half-angle
+    }
+    // Four corner rectangles of half-sizes a and b: the form factor of a parallel rectangle seen from above
+    // one corner, times π each (Howell's catalogue, C-11).
+    const double a = std::max(l.area.width, 0.0) / (2.0 * d), b = std::max(l.area.height, 0.0) / (2.0 * d);
+    const double sa = std::sqrt(1.0 + a * a), sb = std::sqrt(1.0 + b * b);
+    return 2.0 * (a / sa * std::atan(b / sa) + b / sb * std::atan(a / sb));
+}
 
 Light placeNewLight(const Rig& rig, LightType type, const QString& name, const PlacementView& view,
                     int index) {
@@ -41,9 +64,16 @@ Light placeNewLight(const Rig& rig, LightType type, const QString& name, const P
     if (l.usesPosition()) l.position = worldToRig(rig, f, world);
     if (l.usesFalloff() && l.falloff.hasRange())
         l.falloff.range = kPlacementRange * radius * distanceScale(rig, f);
-    if (type == LightType::Spot || type == LightType::Directional) l.direction = -out; // towards the centre
-    if (rig.shading.model == ShadingModel::Pbr)
-        makePhysicallyBased(l, kPlacementDistance * radius * distanceScale(rig, f));
+    if (l.usesDirection() && l.type != LightType::Rim) l.direction = -out;       // towards the centre
+    const double distance = kPlacementDistance * radius * distanceScale(rig, f); // rig units
+    if (l.isArea()) {
+        const double size = kAreaPlacementSize * radius * distanceScale(rig, f);
+        l.area.width = l.area.height = std::min(size, kMaxRigLength);
+        l.area.radius = std::min(0.5 * size, kMaxRigLength);
+        l.area.roll = 0.0; // width level with the view's horizon when the view is upright
+        l.intensity = areaIntensityFor(l, distance, std::numbers::pi * kClassicAreaPlacementLevel);
+    }
+    if (rig.shading.model == ShadingModel::Pbr) makePhysicallyBased(l, distance);
     return l;
 }
 
@@ -55,6 +85,10 @@ void makePhysicallyBased(Light& l, double distance) {
         return;
     }
     const double d = std::isfinite(distance) && distance > 0.0 ? distance : 1.0;
+    if (l.isArea()) { // its intensity is its face's luminance; no falloff, no cone
+        l.intensity = areaIntensityFor(l, d, kPbrPlacementIlluminance);
+        return;
+    }
     l.intensity = std::min(kPbrPlacementIlluminance * d * d, kMaxRigIntensity);
     l.falloff.model = FalloffModel::InverseSquare; // the range window keeps the placement's range
     if (l.usesCone()) {

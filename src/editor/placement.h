@@ -3,7 +3,9 @@
 // presets use in model space), on the viewer's side and above, so it lights what the user is looking at;
 // a spot and a directional light face the model's centre; a point or spot light's range is kPlacementRange
 // radii, so it reaches all of the model. Successive lights walk around the viewer's side (they do not stack).
-// Positions and ranges are written in the rig's own space (world units, or radii in model space).
+// A new area light (rect, disk; issue 16) is placed like a spot, faces the model's centre and is a softbox
+// about the model's size: a rect kAreaPlacementSize radii square, a disk of that diameter.
+// Positions, ranges and sizes are written in the rig's own space (world units, or radii in model space).
 #pragma once
 
 #include "core/prepare.h"
@@ -18,6 +20,7 @@ class Document;
 
 constexpr double kPlacementDistance = 3.0; // bounding radii from the model's centre
 constexpr double kPlacementRange = 8.0;    // bounding radii
+constexpr double kAreaPlacementSize = 1.0; // a new rect's width and height, a new disk's diameter: radii
 
 // What the placement needs to know about the scene and the view (world units).
 struct PlacementView {
@@ -33,8 +36,18 @@ struct PlacementView {
 // below lights a mid-grey model at about the level a classic default light does (docs/rig-format.md).
 // Candela past the format's limit (kMaxRigIntensity: a world-space rig around a model over ~200 units
 // across) are clamped to it: the light stays valid, the model is lit less.
+// An area light gets the luminance (nits) that gives kPbrPlacementIlluminance at a point `distance` in front
+// of its centre, facing it (areaIrradianceFactor), clamped to the format's limit. Under classic shading a
+// new area light gets the intensity whose light at the model's centre equals a classic directional light of
+// intensity kClassicAreaPlacementLevel head on (lighting_area.h: (1/π) × the same factor × intensity).
 constexpr double kPbrPlacementIlluminance = 2.0; // lux at the model's centre
+constexpr double kClassicAreaPlacementLevel = 1.0;
 void makePhysicallyBased(Light& light, double distance);
+
+// The irradiance an area light of unit radiance gives at a point `distance` (rig units) in front of its
+// centre on its axis, facing it: the cosine-weighted solid angle ∫cos θ dω of the emitter (closed forms for
+// the rectangle and the disk; about area / distance² when small). 0 for other types or an empty emitter.
+double areaIrradianceFactor(const Light& light, double distance);
 
 // makeLight(type, name) moved, aimed and scaled for the model. `index` picks the spot around the viewer's
 // side (0, 1, 2, ...: the number of lights already in the rig gives successive lights different places).

@@ -2,6 +2,7 @@
 // their nodes. Conventions and the Assimp 5.2.5 quirks they undo are documented in modelloader.h.
 #include "importdetail.h"
 
+#include "core/prepare.h"
 #include "core/rigjson.h"
 
 #include <QFileInfo>
@@ -94,6 +95,33 @@ QString number(double v) {
     return QString::number(v, 'g', 6);
 }
 
+// The roll (degrees) that turns areaAxes(direction, 0)'s y towards `up` (its part perpendicular to the
+// direction); 0 when up is parallel to the direction, zero or not finite.
+double rollForUp(const glm::dvec3& direction, const glm::dvec3& up) {
+    const AreaAxes a = areaAxes(direction, 0.0);
+    const double x = glm::dot(up, a.x), y = glm::dot(up, a.y);
+    if (!std::isfinite(x) || !std::isfinite(y) || std::hypot(x, y) <= 1e-12 * glm::length(up)) return 0.0;
+    return std::clamp(std::atan2(x, y) * kRadToDeg, -180.0, 180.0); // y' = sin(roll) x + cos(roll) y
+}
+
+// An area light (aiLightSource_AREA: a Blender area lamp, an FBX area light) as a rect light: mSize is its
+// width along the light's right (direction × up) and its height along its up (mUp, made perpendicular to the
+// direction), which gives the roll against areaAxes' convention (core/prepare.h). Assimp says nothing of
+// sides or units: one-sided, and the file's colour × intensity is taken as the face's radiance.
+void setArea(const aiLight& al, const glm::dmat4& world, const QString& where, Light& light,
+             QStringList& warnings) {
+    const double w = al.mSize.x, h = al.mSize.y;
+    if (std::isfinite(w) && std::isfinite(h) && w >= 0.0 && h >= 0.0) {
+        light.area.width = std::min(w, kMaxRigLength);
+        light.area.height = std::min(h, kMaxRigLength);
+    } else {
+        warnings << QStringLiteral("%1: area light size [%2, %3] is not usable; 1 × 1 instead")
+                        .arg(where, number(w), number(h));
+    }
+    const glm::dvec3 up = glm::dmat3(world) * glm::dvec3(al.mUp.x, al.mUp.y, al.mUp.z);
+    light.area.roll = rollForUp(light.direction, up);
+}
+
 // The rig format's limits (core/rigjson.h) applied to a light read from a model file, which would
 // otherwise skip them (a glTF light of colour [-1, 2, 1e30] and intensity -5 was rendered, and the rig
 // could not be saved): out-of-range values are clamped and a light that still would not load is
@@ -138,7 +166,8 @@ bool applyRigLimits(const aiColor3D& raw, const QString& where, Light& light, QS
     return true;
 }
 
-// Assimp's light sources by their glTF (KHR_lights_punctual) names, which kLightTypeTraits maps to types.
+// Assimp's light sources by their glTF (KHR_lights_punctual) names, which kLightTypeTraits maps to types
+// (area lights, which glTF has none of, are handled before).
 QString gltfTypeName(aiLightSourceType type) {
     switch (type) {
     case aiLightSource_POINT:
@@ -147,8 +176,6 @@ QString gltfTypeName(aiLightSourceType type) {
         return QStringLiteral("spot");
     case aiLightSource_DIRECTIONAL:
         return QStringLiteral("directional");
-    case aiLightSource_AREA:
-        return QStringLiteral("area");
     default:
         return {};
     }
@@ -179,11 +206,12 @@ void convertLightsAndCameras(const aiScene* scene, bool gltf, const QString& dis
             rig.ambient += light.color * light.intensity;
             continue;
         }
-        const std::optional<LightType> type = lightTypeFromGltf(gltfTypeName(al->mType));
+        const std::optional<LightType> type = al->mType == aiLightSource_AREA
+                                                  ? std::optional(LightType::Rect)
+                                                  : lightTypeFromGltf(gltfTypeName(al->mType));
         if (!type) {
             model.warnings << QStringLiteral(
-                                  "%1: light %2 of a type LightRig does not model (area or undefined) "
-                                  "skipped")
+                                  "%1: light %2 of a type LightRig does not model (undefined) skipped")
                                   .arg(displayName, name);
             continue;
         }
@@ -195,6 +223,8 @@ void convertLightsAndCameras(const aiScene* scene, bool gltf, const QString& dis
         }
         if (light.usesFalloff()) setFalloff(*al, gltf, node, light);
         if (light.usesCone()) setCone(*al, gltf, light);
+        if (light.isArea())
+            setArea(*al, world, QStringLiteral("%1: light %2").arg(displayName, name), light, model.warnings);
         if (int(rig.lights.size()) >= kMaxRigLights) {
             model.warnings << QStringLiteral("%1: more than %2 lights; the rest are skipped")
                                   .arg(displayName)

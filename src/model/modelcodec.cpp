@@ -98,6 +98,9 @@ void writeLight(Writer& w, const Light& l) {
     w.u8(l.ambient.has_value());
     w.pod(l.ambient.value_or(glm::dvec3(0.0)));
     w.pod(l.rimExponent);
+    for (double d : {l.area.width, l.area.height, l.area.radius, l.area.roll})
+        w.pod(d);
+    w.u8(l.area.twoSided);
 }
 
 // ---------------------------------------------------------------------------------------------- reading

@@ -20,7 +20,7 @@ constexpr std::size_t kMinMaterialBytes =
 constexpr std::size_t kMinTextureBytes = 4 + 4 + 4 + 4;
 constexpr std::size_t kMinCameraBytes = 4 + 3 * 24 + 4 * 8;
 constexpr std::size_t kMinLightBytes =
-    4 + 1 + 1 + 24 + 8 + 1 + 8 + 24 + 24 + 1 + 5 * 8 + 1 + 3 * 8 + 1 + 1 + 24 + 1 + 24 + 8;
+    4 + 1 + 1 + 24 + 8 + 1 + 8 + 24 + 24 + 1 + 5 * 8 + 1 + 3 * 8 + 1 + 1 + 24 + 1 + 24 + 8 + 4 * 8 + 1;
 
 bool finiteBits(float f) {
     return (std::bit_cast<quint32>(f) & 0x7f800000u) != 0x7f800000u;
@@ -215,6 +215,11 @@ bool readLight(Reader& r, Light& l, const QString& at) {
         r.number(l.specular, f("specular")) && r.flag(hasAmbient, f("ambient")) &&
         r.number(ambient, f("ambient")) && r.number(l.rimExponent, f("rim exponent"));
     if (!ok) return false;
+    AreaShape& a = l.area;
+    if (!(r.number(a.width, f("area width")) && r.number(a.height, f("area height")) &&
+          r.number(a.radius, f("area radius")) && r.number(a.roll, f("area roll")) &&
+          r.flag(a.twoSided, f("two-sided"))))
+        return false;
     if (hasTemperature) l.temperature = temperature;
     if (hasAmbient) l.ambient = ambient;
     return true;

@@ -11,6 +11,7 @@
 #include <QTest>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+#include <numbers>
 
 using namespace lr;
 
@@ -172,6 +173,130 @@ class TestPlacement : public QObject {
         const Light far = placeNewLight(world, LightType::Point, QStringLiteral("F"), bigView(), 0);
         QCOMPARE(far.intensity, kMaxRigIntensity);
         QVERIFY(validateLight(far).isEmpty());
+    }
+
+    // Issue 16: a new rect or disk light faces the model's centre from the placement sphere, is a softbox of
+    // about the model's size, and lights the centre with kPbrPlacementIlluminance lux (physically based) or
+    // as a classic directional light of intensity kClassicAreaPlacementLevel would (classic), checked by
+    // integrating its emitter numerically rather than through areaIrradianceFactor's closed forms.
+    void newAreaLightsAreSoftboxesFacingTheModel_data() {
+        QTest::addColumn<int>("space");
+        QTest::addColumn<int>("type");
+        QTest::addColumn<int>("shading");
+        for (RigSpace space : {RigSpace::World, RigSpace::Model})
+            for (LightType type : {LightType::Rect, LightType::Disk})
+                for (ShadingModel shading : {ShadingModel::Classic, ShadingModel::Pbr})
+                    QTest::newRow(qPrintable(lr::toString(space) + QLatin1Char(' ') + lr::toString(type) +
+                                             QLatin1Char(' ') + lr::toString(shading)))
+                        << int(space) << int(type) << int(shading);
+    }
+    void newAreaLightsAreSoftboxesFacingTheModel() {
+        QFETCH(int, space);
+        QFETCH(int, type);
+        QFETCH(int, shading);
+        const SceneFrame model{kBigModel.center, 50.0};
+        PlacementView placement = bigView();
+        placement.frame = model;
+        Rig rig;
+        rig.space = RigSpace(space);
+        rig.shading.model = ShadingModel(shading);
+        const Light l = placeNewLight(rig, LightType(type), QStringLiteral("Softbox"), placement, 2);
+        QVERIFY2(validateLight(l).isEmpty(), qPrintable(validateLight(l)));
+        rig.lights = {l};
+        QVERIFY(readRigJson(writeRigJson(rig), QStringLiteral("r.json")).ok());
+        const glm::dvec3 at = rigToWorld(rig, model, l.position);
+        QVERIFY(std::abs(glm::length(at - model.center) - kPlacementDistance * model.radius) <
+                1e-9 * model.radius);
+        QVERIFY(glm::dot(l.direction, glm::normalize(model.center - at)) > 1.0 - 1e-12);
+        const double toWorld = 1.0 / distanceScale(rig, model);
+        if (l.type == LightType::Rect) {
+            QVERIFY(std::abs(l.area.width * toWorld - kAreaPlacementSize * model.radius) <
+                    1e-9 * model.radius);
+            QCOMPARE(l.area.height, l.area.width);
+        } else {
+            QVERIFY(std::abs(2.0 * l.area.radius * toWorld - kAreaPlacementSize * model.radius) <
+                    1e-9 * model.radius);
+        }
+        QVERIFY(!l.area.twoSided);
+
+        // ∫ L cos θ_receiver cos θ_emitter / r² dA over the emitter (midpoint rule, 400² cells), in world
+        // units: the irradiance at the model's centre, facing the light.
+        const AreaAxes axes = areaAxes(l.direction, l.area.roll);
+        const bool disk = l.type == LightType::Disk;
+        const double hw = (disk ? l.area.radius : 0.5 * l.area.width) * toWorld;
+        const double hh = (disk ? l.area.radius : 0.5 * l.area.height) * toWorld;
+        const glm::dvec3 n = glm::normalize(at - model.center); // the receiver's normal
+        double factor = 0.0;
+        constexpr int kCells = 400;
+        for (int i = 0; i < kCells; ++i)
+            for (int j = 0; j < kCells; ++j) {
+                const double u = (i + 0.5) / kCells * 2.0 - 1.0, v = (j + 0.5) / kCells * 2.0 - 1.0;
+                if (disk && u * u + v * v > 1.0) continue;
+                const glm::dvec3 p = at + axes.x * (u * hw) + axes.y * (v * hh);
+                const glm::dvec3 w = p - model.center;
+                const double r2 = glm::dot(w, w);
+                const glm::dvec3 wn = w / std::sqrt(r2);
+                factor += glm::dot(n, wn) * glm::dot(l.direction, -wn) / r2;
+            }
+        factor *= (2.0 * hw / kCells) * (2.0 * hh / kCells);
+        const double level = l.intensity * factor; // lux (pbr) or π × the classic directional intensity
+        const double expected = rig.shading.model == ShadingModel::Pbr
+                                    ? kPbrPlacementIlluminance
+                                    : std::numbers::pi * kClassicAreaPlacementLevel;
+        QVERIFY2(std::abs(level - expected) < 2e-3 * expected,
+                 qPrintable(QStringLiteral("%1 vs %2").arg(level).arg(expected)));
+        QVERIFY(l.intensity <= kMaxRigIntensity);
+    }
+
+    // The closed forms against their small-emitter limit (L·A/d²) and the clamp of an emitter too small.
+    void areaIrradianceFactor_limitsAndClamp() {
+        Light rect = makeLight(LightType::Rect, QStringLiteral("r"));
+        rect.area.width = 0.02, rect.area.height = 0.01;
+        QVERIFY(std::abs(areaIrradianceFactor(rect, 10.0) - 0.0002 / 100.0) < 1e-6 * 0.0002 / 100.0);
+        Light disk = makeLight(LightType::Disk, QStringLiteral("d"));
+        disk.area.radius = 0.01;
+        const double a = std::numbers::pi * 1e-4;
+        QVERIFY(std::abs(areaIrradianceFactor(disk, 10.0) - a / 100.0) < 1e-6 * a / 100.0);
+        disk.area.radius = 1e9; // fills the hemisphere: π
+        QVERIFY(std::abs(areaIrradianceFactor(disk, 1.0) - std::numbers::pi) < 1e-9);
+        QCOMPARE(areaIrradianceFactor(makeLight(LightType::Spot, QStringLiteral("s")), 1.0), 0.0);
+        rect.area.width = 0.0;
+        QCOMPARE(areaIrradianceFactor(rect, 1.0), 0.0);
+        makePhysicallyBased(rect, 3.0); // an empty emitter: the brightest the format allows, still valid
+        QCOMPARE(rect.intensity, kMaxRigIntensity);
+        QVERIFY(validateLight(rect).isEmpty());
+    }
+
+    // A rect added to a physically based document from the Lights dock's Add menu (at makeLight's (2, 2, 2),
+    // facing the origin) gives kPbrPlacementIlluminance there.
+    void addRectInAPbrDocument_givesThePlacementIlluminance() {
+        Document doc;
+        Rig rig;
+        rig.shading.model = ShadingModel::Pbr;
+        doc.newRig(rig);
+        QVERIFY(doc.addLight(LightType::Rect));
+        const Light& l = doc.light(0);
+        const double e = l.intensity * areaIrradianceFactor(l, glm::length(l.position));
+        QVERIFY(std::abs(e - kPbrPlacementIlluminance) < 1e-9);
+        QVERIFY(l.intensity > 10.0 && l.intensity < 100.0); // 1 × 1 at 3.46: about 24 nits
+    }
+
+    // Switching space scales an area light's size with positions (its luminance stays).
+    void switchingSpace_scalesAreaSizes() {
+        Rig rig;
+        Light rect = makeLight(LightType::Rect, QStringLiteral("R"));
+        rect.position = kBigModel.center + glm::dvec3(0, 0, 3.0 * kBigModel.radius);
+        rect.area.width = 2.0 * kBigModel.radius, rect.area.height = kBigModel.radius;
+        Light disk = makeLight(LightType::Disk, QStringLiteral("D"));
+        disk.area.radius = 0.5 * kBigModel.radius;
+        rig.lights = {rect, disk};
+        QString error;
+        const std::optional<Rig> model = convertRigSpace(rig, RigSpace::Model, kBigModel, &error);
+        QVERIFY2(model, qPrintable(error));
+        QVERIFY(std::abs(model->lights[0].area.width - 2.0) < 1e-12);
+        QVERIFY(std::abs(model->lights[0].area.height - 1.0) < 1e-12);
+        QVERIFY(std::abs(model->lights[1].area.radius - 0.5) < 1e-12);
+        QCOMPARE(model->lights[0].intensity, rect.intensity);
     }
 
     void addLightInAPbrDocument_isKhrLike() {

@@ -95,6 +95,66 @@ class TestGltfLights : public QObject {
         QVERIFY(e.losses.empty());
     }
 
+    // Issue 16: glTF has no area lights. A one-sided rect or disk becomes a spot at its centre along its axis
+    // of the emitter's on-axis intensity L·A candela and a 90° cone; far away on its axis it gives what the
+    // emitter gives (checked against the exact on-axis irradiance of a disk, π L R² / (R² + D²)); a
+    // two-sided one a point light of L·A/2 (the same flux); each listed as an area-light loss. Sizes follow
+    // a model-space rig's scale; the intensity is not multiplied by π under classic shading.
+    void areaLightsBecomeSpotsOrPoints() {
+        Light rect = makeLight(LightType::Rect, QStringLiteral("Softbox"));
+        rect.position = {0, 0, 3};
+        rect.direction = {0, 0, -1};
+        rect.area = {1.5, 0.5, 0.5, 30.0, false};
+        rect.intensity = 20.0;
+        rect.color = {1.0, 0.5, 0.5};
+        Light disk = makeLight(LightType::Disk, QStringLiteral("Dish"));
+        disk.position = {0, 4, 0};
+        disk.direction = {0, -1, 0};
+        disk.area.radius = 0.25;
+        disk.area.twoSided = true;
+        disk.intensity = 8.0;
+        Light off = makeLight(LightType::Rect, QStringLiteral("Off"));
+        off.enabled = false;
+        const SceneFrame frame{{1, 0, 0}, 2.0}; // model space: 2 world units per rig unit
+        const GltfRigExport e = convertRigToGltf(pbrRig({rect, disk, off}, RigSpace::Model), frame);
+        QCOMPARE(e.lights.size(), size_t(2));
+        const GltfLight& spot = e.lights[0];
+        QCOMPARE(spot.type, QStringLiteral("spot"));
+        QVERIFY(near(spot.translation, {1, 0, 6}));
+        QVERIFY(near(spot.rotation * glm::dvec3(0, 0, -1), rect.direction, 1e-12));
+        QVERIFY(std::abs(spot.intensity - 20.0 * 1.5 * 0.5 * 4.0) < 1e-9); // L × A in m² (× 2²)
+        QVERIFY(near(spot.color, {1.0, 0.5, 0.5}));
+        QCOMPARE(spot.innerConeAngle, 0.0);
+        QCOMPARE(spot.outerConeAngle, kPi / 2.0);
+        QCOMPARE(spot.range, -1.0);
+        const QJsonObject json = spot.lightJson();
+        QCOMPARE(json.value(QStringLiteral("type")).toString(), QStringLiteral("spot"));
+        QVERIFY(json.value(QStringLiteral("spot")).toObject().contains(QStringLiteral("outerConeAngle")));
+        const GltfLight& point = e.lights[1];
+        QCOMPARE(point.type, QStringLiteral("point"));
+        const double diskArea = kPi * 0.25 * 0.25 * 4.0;
+        QVERIFY(std::abs(point.intensity - 0.5 * 8.0 * diskArea) < 1e-9);
+        QCOMPARE(count(e, ExportLoss::AreaLight), 2);
+        QCOMPARE(count(e, ExportLoss::Disabled), 1);
+        QVERIFY(describeLoss(e.losses[0])
+                    .startsWith(QStringLiteral("Softbox: rect or disk light: rect 1.5 × 0.5")));
+
+        // Far on its axis the one-sided stand-in matches the emitter: a disk of radius R (world) at D.
+        Light far = disk;
+        far.area.twoSided = false;
+        const GltfRigExport f = convertRigToGltf(pbrRig({far}), {});
+        const double R = 0.25, L = 8.0;
+        for (double D : {2.5, 10.0, 100.0}) {
+            const double exact = kPi * L * R * R / (R * R + D * D), standIn = f.lights[0].intensity / (D * D);
+            QVERIFY2(std::abs(standIn / exact - 1.0) < 1.01 * R * R / (D * D),
+                     qPrintable(QStringLiteral("D %1: %2 vs %3").arg(D).arg(standIn).arg(exact)));
+        }
+        // Classic: an area light's intensity means the same under both shadings.
+        Rig classic = pbrRig({far});
+        classic.shading.model = ShadingModel::Classic;
+        QCOMPARE(convertRigToGltf(classic, {}).lights[0].intensity, f.lights[0].intensity);
+    }
+
     void classicIntensityTimesPi() {
         Rig rig;
         Light sun = makeLight(LightType::Directional, QStringLiteral("Sun"));

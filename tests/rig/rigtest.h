@@ -23,12 +23,19 @@ inline QByteArray rigJson(const QByteArray& lights, const QByteArray& extra = {}
     return R"({"format": "lightrig", "version": 1, )" + extra + R"( "lights": [)" + lights + "]}";
 }
 
+// The same as version 2, the first that has rect and disk lights (issue 16).
+inline QByteArray rigJson2(const QByteArray& lights, const QByteArray& extra = {}) {
+    return R"({"format": "lightrig", "version": 2, )" + extra + R"( "lights": [)" + lights + "]}";
+}
+
 // Valid lights of each type, to which rows add or change one thing.
 inline const QByteArray kPoint = R"({"type": "point", "position": [0, 1, 0], "falloff": {"model": "none"}})";
 inline const QByteArray kSpot = R"({"type": "spot", "position": [0, 1, 0], "direction": [0, -1, 0],
     "falloff": {"model": "none"}, "cone": {"model": "smooth", "inner": 20, "outer": 35}})";
 inline const QByteArray kDirectional = R"({"type": "directional", "direction": [0, -1, 0]})";
 inline const QByteArray kRim = R"({"type": "rim", "direction": [0, 0, 1]})";
+inline const QByteArray kRect = R"({"type": "rect", "position": [0, 2, 0], "direction": [0, -1, 0]})";
+inline const QByteArray kDisk = R"({"type": "disk", "position": [0, 2, 0], "direction": [0, -1, 0]})";
 
 // light with `members` added at the end: with(kPoint, R"("cone": {})")
 inline QByteArray with(const QByteArray& light, const QByteArray& members) {

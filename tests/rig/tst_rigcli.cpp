@@ -38,6 +38,7 @@ class TestRigCli : public QObject {
     void editorWithoutADisplay();
     void validateEmbeddedPreset();
     void validateEnvironment();
+    void validateAreaLights();
     void fifoIsRefused();
     void typoIsAUsageError();
     void formatCheck();
@@ -137,6 +138,41 @@ void TestRigCli::validateEnvironment() {
         named = named || (line.startsWith(missing + QStringLiteral(": environment.file: ")) &&
                           line.contains(QStringLiteral("sky.exr")));
     QVERIFY2(named, qPrintable(show(r)));
+}
+
+// Issue 16: `validate` reads rect and disk lights through the same reader as render and bench: a softbox rig
+// is ok (and `format --check` finds it canonical), a bad area.width is reported with the file, the field and
+// the reason, a rect in a version 1 file names the version that introduced it; exit 1 for either.
+void TestRigCli::validateAreaLights() {
+    const QString good = dataPath(QStringLiteral("good/area.json"));
+    const QString bad = m_dir.filePath(QStringLiteral("softbox.json"));
+    QFile f(bad);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(rigJson2(with(kRect, R"("area": {"width": -2, "height": 1})")));
+    f.close();
+    const QString old = m_dir.filePath(QStringLiteral("old.json"));
+    QFile o(old);
+    QVERIFY(o.open(QIODevice::WriteOnly));
+    o.write(rigJson(kDisk));
+    o.close();
+    Run r = lightrig({QStringLiteral("validate"), good, bad, old});
+    QVERIFY2(r.code == 1, qPrintable(show(r)));
+    QVERIFY2(r.lines().contains(good + QStringLiteral(": ok")), qPrintable(show(r)));
+    QVERIFY2(
+        r.lines().contains(bad + QStringLiteral(": lights[0].area.width: must be a finite number from 0 to "
+                                                "1e12, got -2")),
+        qPrintable(show(r)));
+    QVERIFY2(
+        r.lines().contains(old + QStringLiteral(": lights[0].type: disk lights came with version 2 of the "
+                                                "format, but the file says \"version\": 1; write "
+                                                "\"version\": 2")),
+        qPrintable(show(r)));
+    QVERIFY2(!r.lines().contains(bad + QStringLiteral(": ok")), qPrintable(show(r)));
+    r = lightrig(
+        {QStringLiteral("validate"), good, builtinPresetPath(QStringLiteral("pbr-softbox-product"))});
+    QVERIFY2(r.code == 0, qPrintable(show(r)));
+    r = lightrig({QStringLiteral("format"), QStringLiteral("--check"), good});
+    QVERIFY2(r.code == 0, qPrintable(show(r)));
 }
 
 // `mkfifo f.json; lightrig validate f.json` blocked forever; now every reader of rig files refuses it.

@@ -26,8 +26,11 @@ const QStringList kExpected = {
     QStringLiteral("butterfly"),
     QStringLiteral("d3d-spot"),
     QStringLiteral("default"),
+    QStringLiteral("pbr-bottle-strips"),
     QStringLiteral("pbr-hdri-studio"),
+    QStringLiteral("pbr-overhead-softbox"),
     QStringLiteral("pbr-rim-heavy"),
+    QStringLiteral("pbr-softbox-product"),
     QStringLiteral("pbr-studio-environment"),
     QStringLiteral("pbr-three-point"),
     QStringLiteral("pbr-white-sweep"),
@@ -37,9 +40,13 @@ const QStringList kExpected = {
     QStringLiteral("silhouette"),
     QStringLiteral("three-point"),
 };
-const QStringList kPbr = {QStringLiteral("pbr-hdri-studio"), QStringLiteral("pbr-rim-heavy"),
-                          QStringLiteral("pbr-studio-environment"), QStringLiteral("pbr-three-point"),
-                          QStringLiteral("pbr-white-sweep")};
+const QStringList kPbr = {QStringLiteral("pbr-bottle-strips"),    QStringLiteral("pbr-hdri-studio"),
+                          QStringLiteral("pbr-overhead-softbox"), QStringLiteral("pbr-rim-heavy"),
+                          QStringLiteral("pbr-softbox-product"),  QStringLiteral("pbr-studio-environment"),
+                          QStringLiteral("pbr-three-point"),      QStringLiteral("pbr-white-sweep")};
+// Issue 16: the presets built of area lights (rect, disk).
+const QStringList kArea = {QStringLiteral("pbr-bottle-strips"), QStringLiteral("pbr-overhead-softbox"),
+                           QStringLiteral("pbr-softbox-product")};
 // Issue 15: the presets lit by an environment (and which kind).
 const QStringList kEnvironment = {QStringLiteral("pbr-hdri-studio"),
                                   QStringLiteral("pbr-studio-environment")};
@@ -157,6 +164,8 @@ class TestRigPresets : public QObject {
     void defaultRigRule();
     void shadowPresets();
     void environmentPresets();
+    void areaPresets_data();
+    void areaPresets();
 };
 
 void TestRigPresets::names() {
@@ -284,7 +293,8 @@ void TestRigPresets::rimBacklight() {
 
 void TestRigPresets::studioRigsAreInModelSpace() {
     for (const char* n : {"default", "three-point", "rembrandt", "butterfly", "silhouette", "pbr-three-point",
-                          "pbr-white-sweep", "pbr-rim-heavy", "pbr-studio-environment", "pbr-hdri-studio"})
+                          "pbr-white-sweep", "pbr-rim-heavy", "pbr-studio-environment", "pbr-hdri-studio",
+                          "pbr-softbox-product", "pbr-overhead-softbox", "pbr-bottle-strips"})
         QVERIFY2(preset(QString::fromLatin1(n)).space == RigSpace::Model, n);
     for (const char* n : {"book-point-spot", "d3d-spot", "rgb-three"})
         QVERIFY2(preset(QString::fromLatin1(n)).space == RigSpace::World, n);
@@ -466,9 +476,17 @@ void TestRigPresets::shadowPresets() {
             QVERIFY(l.shadow.size >= 1.0);
         QVERIFY(l.position.y > 0.0 || l.direction.y < 0.0); // from above: a shadow on the ground
     }
+    // Issue 16: the softbox presets' key casts a shadow (soft from its own size) onto a ground.
+    for (const char* n : {"pbr-softbox-product", "pbr-overhead-softbox"}) {
+        const Rig rig = preset(QString::fromLatin1(n));
+        QCOMPARE(casters(rig).size(), 1);
+        QVERIFY2(rig.lights[0].hasShadow() && rig.lights[0].isArea() && rig.lights[0].position.y > 0.0, n);
+        QVERIFY2(rig.ground.mode != GroundMode::Off, n);
+    }
     for (const QString& n : kExpected) {
         if (n == QLatin1String("rembrandt") || n == QLatin1String("butterfly") ||
-            n == QLatin1String("pbr-white-sweep"))
+            n == QLatin1String("pbr-white-sweep") || n == QLatin1String("pbr-softbox-product") ||
+            n == QLatin1String("pbr-overhead-softbox"))
             continue;
         const Rig rig = preset(n);
         QVERIFY2(casters(rig).isEmpty() && rig.ground == Ground{}, qPrintable(n));
@@ -496,6 +514,60 @@ void TestRigPresets::environmentPresets() {
     QCOMPARE(hdri.lights[0].name, QStringLiteral("Key"));
     for (const Rig* rig : {&studio, &hdri})
         QCOMPARE(rig->ambient, glm::dvec3(0.0)); // the environment is the ambient light
+}
+
+void TestRigPresets::areaPresets_data() {
+    QTest::addColumn<QString>("name");
+    for (const QString& n : kArea)
+        QTest::newRow(qPrintable(n)) << n;
+}
+
+// Issue 16: the softbox presets (format version 2) are lit by area lights only, each a few radii from the
+// model, facing it (its centre on the emitter's front side, near the axis), one- to four-radii softboxes and
+// strips; at least one has a disk; the key (the brightest) casts a shadow in the softbox presets.
+void TestRigPresets::areaPresets() {
+    QFETCH(QString, name);
+    const Rig rig = preset(name);
+    QVERIFY(readAll(builtinPresetPath(name)).contains("\"version\": 2,"));
+    QVERIFY(rig.shading.model == ShadingModel::Pbr && rig.space == RigSpace::Model);
+    QVERIFY(rig.lights.size() >= 2);
+    int rects = 0;
+    for (const Light& l : rig.lights) {
+        const QString what = name + QStringLiteral(": ") + l.name;
+        QVERIFY2(l.isArea() && l.enabled, qPrintable(what));
+        rects += l.type == LightType::Rect;
+        const double d = glm::length(l.position);
+        QVERIFY2(d > 2.0 && d < 4.0, qPrintable(what));
+        QVERIFY2(glm::dot(l.direction, -l.position / d) > 0.9, qPrintable(what)); // aimed at the model
+        const double longSide =
+            l.type == LightType::Rect ? std::max(l.area.width, l.area.height) : 2.0 * l.area.radius;
+        const double shortSide =
+            l.type == LightType::Rect ? std::min(l.area.width, l.area.height) : 2.0 * l.area.radius;
+        QVERIFY2(longSide >= 0.8 && longSide <= 4.0 && shortSide >= 0.3, qPrintable(what));
+        QVERIFY2(l.intensity > 1.0 && l.intensity < 100.0, qPrintable(what)); // nits
+    }
+    QVERIFY(rects >= 1);
+    if (name == QLatin1String("pbr-bottle-strips")) {
+        // Two tall strips, one on either side of the bottle, at its height.
+        std::vector<Light> strips;
+        for (const Light& l : rig.lights)
+            if (l.type == LightType::Rect && l.area.height > 5.0 * l.area.width) strips.push_back(l);
+        QCOMPARE(int(strips.size()), 2);
+        QVERIFY(strips[0].position.x * strips[1].position.x < 0.0);
+        QVERIFY(std::abs(strips[0].position.y) < 0.5 && std::abs(strips[1].position.y) < 0.5);
+    } else {
+        const auto key =
+            std::max_element(rig.lights.begin(), rig.lights.end(), [](const Light& a, const Light& b) {
+                return a.intensity * a.area.width * a.area.height <
+                       b.intensity * b.area.width * b.area.height;
+            });
+        QVERIFY2(key->type == LightType::Rect && key->hasShadow(), qPrintable(key->name));
+    }
+    bool disk = false;
+    for (const QString& n : kArea)
+        for (const Light& l : preset(n).lights)
+            disk = disk || l.type == LightType::Disk;
+    QVERIFY(disk);
 }
 
 QTEST_GUILESS_MAIN(TestRigPresets)

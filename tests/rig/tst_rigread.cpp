@@ -27,6 +27,8 @@ class TestRigRead : public QObject {
     void unknownKeysAreWarnings();
     void utf8BomIsAccepted();
     void environment();
+    void areaLights();
+    void areaDefaults();
     void environmentDefaultsAndWarnings();
     void badFiles_data();
     void badFiles();
@@ -168,6 +170,51 @@ void TestRigRead::unknownKeysAreWarnings() {
     QCOMPARE(r.rig->lights[0].color, glm::dvec3(1.0)); // "colour" is not "color"
 }
 
+// Issue 16: rect and disk lights (format version 2), every key of "area", as good/area.json gives them.
+void TestRigRead::areaLights() {
+    const QString file = dataPath(QStringLiteral("good/area.json"));
+    const RigReadResult r = readRigFile(file);
+    LR_VERIFY_OK(r);
+    QVERIFY(r.warnings.isEmpty());
+    QCOMPARE(int(r.rig->lights.size()), 2);
+    const Light& rect = r.rig->lights[0];
+    QVERIFY(rect.type == LightType::Rect && rect.isArea());
+    LR_COMPARE(rect.area, (AreaShape{1.5, 1.0, 0.5, 90.0, false}));
+    QVERIFY(rect.shadow.enabled);
+    QCOMPARE(rect.shadow.resolution, 2048);
+    const Light& disk = r.rig->lights[1];
+    QVERIFY(disk.type == LightType::Disk);
+    QCOMPARE(disk.area.radius, 0.4);
+    QVERIFY(disk.area.twoSided);
+    QCOMPARE(disk.area.width, AreaShape{}.width); // kept at its default, unused by a disk
+    // The file is canonical: it is written back byte for byte, as version 2.
+    QCOMPARE(writeRigJson(*r.rig), readAll(file));
+}
+
+// "area" and each of its keys are optional (lr::AreaShape's defaults); sizes 0 and the roll's ends are
+// allowed; a version 2 file without area lights is read and written back as version 1 (the oldest version
+// that holds it), a rig with one as version 2.
+void TestRigRead::areaDefaults() {
+    RigReadResult r = readRigJson(rigJson2(kRect + ", " + kDisk), QStringLiteral("a.json"));
+    LR_VERIFY_OK(r);
+    LR_COMPARE(r.rig->lights[0].area, AreaShape{});
+    LR_COMPARE(r.rig->lights[1].area, AreaShape{});
+    r = readRigJson(rigJson2(with(kRect, R"("area": {"width": 0, "height": 1e12, "roll": -180})") + ", " +
+                             with(kDisk, R"("area": {"radius": 0, "roll": 180})")),
+                    QStringLiteral("a.json"));
+    LR_VERIFY_OK(r);
+    LR_COMPARE(r.rig->lights[0].area, (AreaShape{0.0, 1e12, 0.5, -180.0, false}));
+    LR_COMPARE(r.rig->lights[1].area, (AreaShape{1.0, 1.0, 0.0, 180.0, false}));
+    QVERIFY(writeRigJson(*r.rig).contains("\"version\": 2,"));
+    r = readRigJson(rigJson2(kPoint), QStringLiteral("p.json"));
+    LR_VERIFY_OK(r);
+    QVERIFY(writeRigJson(*r.rig).contains("\"version\": 1,"));
+    // A spot's shadow keeps its size; an area light's unknown-type reading still checks the area's values.
+    r = readRigJson(rigJson2(R"({"type": "softbox", "area": {"width": -1}})"), QStringLiteral("u.json"));
+    QVERIFY(hasMessage(r.errors, QStringLiteral("u.json"), QStringLiteral("lights[0].type: must be")));
+    QVERIFY(hasMessage(r.errors, QStringLiteral("u.json"), QStringLiteral("lights[0].area.width: must be")));
+}
+
 // Issue 15: every key of the "environment" block, as good/environment.json gives it.
 void TestRigRead::environment() {
     const QString file = dataPath(QStringLiteral("good/environment.json"));
@@ -253,7 +300,7 @@ static const struct {
      "lights[0].falloff.range: must be a finite number > 0 and <= 1e12, got 1e-400 (out of the range"},
     {"nan.json", "line 1, column 50 (in ambient[0]): NaN is not a JSON number"},
     {"infinity.json", "line 1, column 53 (in ambient[1]): -Infinity is not a JSON number"},
-    {"newer-version.json", "version: the file is version 2, newer than this LightRig reads (version 1)"},
+    {"newer-version.json", "version: the file is version 3, newer than this LightRig reads (version 2)"},
     {"not-lightrig.json", "format: missing"},
     {"wrong-format.json", "format: must be \"lightrig\""},
     {"top-level-array.json", "(top level): must be a JSON object"},

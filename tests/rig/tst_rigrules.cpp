@@ -24,13 +24,13 @@ void TestRigRules::rules_data() {
         "format: must be \"lightrig\"");
     row("version missing", R"({"format": "lightrig", "lights": []})", "version: missing");
     row("version 0", R"({"format": "lightrig", "version": 0, "lights": []})",
-        "version: must be the integer 1");
+        "version: must be an integer from 1 to 2");
     row("version 1.5", R"({"format": "lightrig", "version": 1.5, "lights": []})",
-        "version: must be the integer 1");
+        "version: must be an integer from 1 to 2");
     row("version string", R"({"format": "lightrig", "version": "1", "lights": []})",
-        "version: must be the integer 1");
-    row("version 2", R"({"format": "lightrig", "version": 2, "lights": []})",
-        "version: the file is version 2, newer");
+        "version: must be an integer from 1 to 2");
+    row("version 3", R"({"format": "lightrig", "version": 3, "lights": []})",
+        "version: the file is version 3, newer than this LightRig reads (version 2)");
     row("name not a string", rigJson({}, R"("name": 42,)"), "name: must be a string, got 42");
     row("name too long", rigJson({}, "\"name\": \"" + QByteArray(257, 'x') + "\","),
         "name: must be at most 256 characters");
@@ -267,6 +267,55 @@ void TestRigRules::rules_data() {
         "ground.color[1]: must be a finite number from 0 to 1, got 1.5");
     row("ground colour 2 components", rigJson({}, R"("ground": {"mode": "visible", "color": [1, 1]},)"),
         "ground.color: must be an RGB albedo");
+    // Area lights (issue 16, format version 2).
+    row("rect in a version 1 file", rigJson(kRect),
+        "lights[0].type: rect lights came with version 2 of the format, but the file says \"version\": 1; "
+        "write \"version\": 2");
+    row("disk in a version 1 file", rigJson(with(kDisk, R"("area": {"radius": 1})")),
+        "lights[0].type: disk lights came with version 2 of the format");
+    row("rect position missing", rigJson2(R"({"type": "rect", "direction": [0, -1, 0]})"),
+        "lights[0].position: missing; a rect light needs a position");
+    row("disk direction missing", rigJson2(R"({"type": "disk", "position": [0, 1, 0]})"),
+        "lights[0].direction: missing; a disk light needs a direction");
+    row("area not object", rigJson2(with(kRect, R"("area": 2)")), "lights[0].area: must be an object");
+    row("area width negative", rigJson2(with(kRect, R"("area": {"width": -1})")),
+        "lights[0].area.width: must be a finite number from 0 to 1e12, got -1");
+    row("area height huge", rigJson2(with(kRect, R"("area": {"height": 2e12})")),
+        "lights[0].area.height: must be a finite number from 0 to 1e12, got 2e12");
+    row("area width string", rigJson2(with(kRect, R"("area": {"width": "1m"})")),
+        "lights[0].area.width: must be a finite number from 0 to 1e12, got the string \"1m\"");
+    row("area radius overflow", rigJson2(with(kDisk, R"("area": {"radius": 1e999})")),
+        "lights[0].area.radius: must be a finite number from 0 to 1e12, got 1e999");
+    row("area roll 181", rigJson2(with(kRect, R"("area": {"roll": 181})")),
+        "lights[0].area.roll: must be a finite number from -180 to 180, got 181");
+    row("area roll -190", rigJson2(with(kDisk, R"("area": {"roll": -190})")),
+        "lights[0].area.roll: must be a finite number from -180 to 180, got -190");
+    row("area twoSided string", rigJson2(with(kRect, R"("area": {"twoSided": "yes"})")),
+        "lights[0].area.twoSided: must be true or false");
+    row("rect with radius", rigJson2(with(kRect, R"("area": {"radius": 1})")),
+        "lights[0].area.radius: a rect light has no radius: its size is \"width\" and \"height\" (only "
+        "disk lights have a radius)");
+    row("disk with width", rigJson2(with(kDisk, R"("area": {"width": 1})")),
+        "lights[0].area.width: a disk light has no width: its size is \"radius\" (only rect lights have a "
+        "width and a height)");
+    row("area on a spot", rigJson2(with(kSpot, R"("area": {"width": 1})")),
+        "lights[0].area: a spot light has no area (only rect and disk lights have one");
+    row("area on a directional", rigJson(with(kDirectional, R"("area": {})")),
+        "lights[0].area: a directional light has no area");
+    row("width on a rect itself", rigJson2(with(kRect, R"("width": 1)")),
+        "lights[0].width: belongs in \"area\"");
+    row("radius on a point", rigJson(with(kPoint, R"("radius": 1)")),
+        "lights[0].radius: a point light has no radius (it would belong in \"area\", which only rect and "
+        "disk lights have)");
+    row("rect with falloff", rigJson2(with(kRect, R"("falloff": {"model": "none"})")),
+        "lights[0].falloff: a rect light has no falloff");
+    row("disk with cone", rigJson2(with(kDisk, R"("cone": {"model": "hard", "outer": 30})")),
+        "lights[0].cone: a disk light has no cone");
+    row("rect shadow size", rigJson2(with(kRect, R"("shadow": {"enabled": true, "size": 0.5})")),
+        "lights[0].shadow.size: a rect light's shadow has no size: the light's own \"area\" softens its "
+        "shadow");
+    row("disk shadow angle", rigJson2(with(kDisk, R"("shadow": {"enabled": true, "angle": 1})")),
+        "lights[0].shadow.angle: a disk light's shadow has no angle");
     // Environment (issue 15).
     const auto env = [](const QByteArray& members) {
         return rigJson({}, "\"environment\": {" + members + "},");

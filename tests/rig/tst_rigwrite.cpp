@@ -172,13 +172,26 @@ class RigGenerator {
             if (chance(0.3)) l.ambient = color();
         }
         if (l.type == LightType::Rim) l.rimExponent = positive(kMaxRigExponent);
+        if (l.isArea()) {
+            AreaShape& a = l.area;
+            if (traitsOf(l.type).usesRectSize) {
+                a.width = value(kMaxRigLength);
+                a.height = value(kMaxRigLength);
+            } else {
+                a.radius = value(kMaxRigLength);
+            }
+            a.roll = std::min(180.0, value(360.0) - 180.0);
+            a.twoSided = chance(0.5);
+        }
         if (l.castsShadows() && chance(0.5)) {
             Shadow& s = l.shadow;
             s.enabled = chance(0.7);
             s.resolution = kMinShadowResolution << m_rng.bounded(5); // 256 ... 4096
             s.bias = std::min(kMaxShadowBias, value(kMaxShadowBias));
             s.normalOffset = std::min(kMaxShadowBias, value(kMaxShadowBias));
-            if (l.usesPosition())
+            if (l.isArea())
+                ; // an area light's softness is its "area": its shadow has no size
+            else if (l.usesPosition())
                 s.size = value(kMaxRigLength);
             else
                 s.angle = std::min(kMaxShadowAngle, value(kMaxShadowAngle));
@@ -205,6 +218,7 @@ class TestRigWrite : public QObject {
     void loadSaveIsByteIdentical();
     void numbersAreShortestAndExact();
     void onlyUsedFieldsAreWritten();
+    void areaIsWrittenInFull();
     void shadowAndGroundOnlyWhenSet();
     void environmentOnlyWhenSet();
     void environmentRotationIsNormalised();
@@ -234,8 +248,9 @@ void TestRigWrite::randomRigsRoundTrip() {
 
 void TestRigWrite::loadSaveIsByteIdentical_data() {
     QTest::addColumn<QString>("file");
-    for (const char* f : {"good/issue-example.json", "good/minimal.json", "good/all-fields.json",
-                          "good/utf8-bom.json", "good/shadows.json", "good/environment.json"})
+    for (const char* f :
+         {"good/issue-example.json", "good/minimal.json", "good/all-fields.json", "good/utf8-bom.json",
+          "good/shadows.json", "good/environment.json", "good/area.json"})
         QTest::newRow(f) << dataPath(QString::fromLatin1(f));
 }
 
@@ -280,6 +295,7 @@ void TestRigWrite::onlyUsedFieldsAreWritten() {
     point.cone = {ConeModel::Hard, 5.0, 10.0, 3.0};
     point.direction = {1, 0, 0};
     point.rimExponent = 7.0;
+    point.area = {9.0, 9.0, 9.0, 9.0, true}; // an area light's values on a point light: not written
     Light rim = makeLight(LightType::Rim, QStringLiteral("r"));
     rim.position = {1, 2, 3};
     rim.diffuse = DiffuseModel::HalfLambert;
@@ -290,13 +306,45 @@ void TestRigWrite::onlyUsedFieldsAreWritten() {
     rig.lights = {point, rim};
     const QByteArray text = writeRigJson(rig);
     for (const char* key : {"\"cone\"", "\"direction\": [1, 0, 0]", "\"diffuse\"", "\"specular\": 0.5",
-                            "\"ambient\": [0.2", "\"position\": [1, 2, 3]", "7"})
+                            "\"ambient\": [0.2", "\"position\": [1, 2, 3]", "7", "area", "9"})
         QVERIFY2(!text.contains(key),
                  qPrintable(QStringLiteral("%1 in\n%2").arg(QLatin1String(key), QString::fromUtf8(text))));
     const RigReadResult r = readRigJson(text, QStringLiteral("u.json"));
     LR_VERIFY_OK(r);
     LR_COMPARE(r.rig->lights[0].falloff, point.falloff);
     QCOMPARE(r.rig->lights[1].direction, rim.direction);
+}
+
+// Issue 16: an area light always has "area", in full with the keys of its shape; its shadow never has a size
+// or an angle (its softness is its own area), and the file is version 2 only when it has an area light.
+void TestRigWrite::areaIsWrittenInFull() {
+    Light rect = makeLight(LightType::Rect, QStringLiteral("r"));
+    rect.area = {2.0, 0.5, 7.0, -45.0, true};
+    rect.shadow.enabled = true;
+    rect.shadow.size = 3.0;  // an editor's leftover: an area light's shadow has no size
+    rect.shadow.angle = 4.0; // nor an angle
+    Light disk = makeLight(LightType::Disk, QStringLiteral("d"));
+    disk.area = {5.0, 6.0, 0.25, 0.0, false};
+    Rig rig;
+    rig.lights = {rect, disk};
+    const QByteArray text = writeRigJson(rig);
+    for (const char* line :
+         {"\"version\": 2,", "\"area\": {\"width\": 2, \"height\": 0.5, \"roll\": -45, \"twoSided\": true}",
+          "\"shadow\": {\"enabled\": true, \"resolution\": 1024, \"bias\": 1, \"normalOffset\": 1}",
+          "\"area\": {\"radius\": 0.25, \"roll\": 0, \"twoSided\": false}"})
+        QVERIFY2(
+            text.contains(line),
+            qPrintable(QStringLiteral("%1 not in\n%2").arg(QLatin1String(line), QString::fromUtf8(text))));
+    const RigReadResult r = readRigJson(text, QStringLiteral("a.json"));
+    LR_VERIFY_OK(r);
+    LR_COMPARE(r.rig->lights[0].area, (AreaShape{2.0, 0.5, 0.5, -45.0, true})); // a rect has no radius
+    QCOMPARE(r.rig->lights[1].area.radius, 0.25);
+    // Its area's order in a light: after direction, before shadow.
+    QVERIFY(text.indexOf("\"direction\"") < text.indexOf("\"area\"") &&
+            text.indexOf("\"area\"") < text.indexOf("\"shadow\""));
+    // Without area lights the same rig is version 1.
+    rig.lights = {makeLight(LightType::Spot, QStringLiteral("s"))};
+    QVERIFY(writeRigJson(rig).contains("\"version\": 1,"));
 }
 
 // Issue 14: "shadow" and "ground" are written only when they differ from the defaults (so files from before

@@ -75,6 +75,9 @@ void TestModelCodec::roundTripsEveryField() {
     changed.lights.lights[3].cone.exponent += 1.0;
     QVERIFY(!test::modelDifference(original, changed).isEmpty());
     changed = original;
+    changed.lights.lights[4].area.roll += 1.0; // issue 16: the area shape crosses the worker too
+    QVERIFY(!test::modelDifference(original, changed).isEmpty());
+    changed = original;
     changed.meshes[1].vertices[2].tangent.w = -changed.meshes[1].vertices[2].tangent.w;
     QVERIFY(!test::modelDifference(original, changed).isEmpty());
     // Textures arrive as RGBA8888 whatever they were.

@@ -46,6 +46,7 @@ inline Light lightVariant(int i) {
     l.specular = {0.5, 0.25 * i, 0.125};
     if (i % 2 == 1) l.ambient = glm::dvec3(0.01 * i, 0.02, 0.03);
     l.rimExponent = 1.0 + 0.1 * i;
+    l.area = {0.5 + i, 0.25 * i, 0.125 + i, -10.0 * i, i % 2 == 0};
     return l;
 }
 
