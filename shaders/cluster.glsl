@@ -29,9 +29,9 @@ int clusterIndexAt(vec2 fragCoord, float depth) {
 vec3 shadeSurfaceClustered(Surface s, ShadeSettings st, vec2 fragCoord) {
     vec3 V = viewVector(st, s.position);
 #ifdef LR_PBR
-    PbrSurface p = pbrSurface(s);
+    PbrSurface p = pbrSurfaceLit(s, V);
     vec3 sum = pbrSceneAmbient(s, st, p);
-#define lrShadeClustered(l) shadeLightPbr(l, s, st, V, p.cDiff, p.f0, p.alpha)
+#define lrShadeClustered(l) shadeLightPbr(l, s, st, V, p)
 #else
     vec3 sum = st.ambient * s.albedo;
 #define lrShadeClustered(l) shadeLight(l, s, st, V)

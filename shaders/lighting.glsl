@@ -548,7 +548,6 @@ bool lightIsBounded(ShadeLight l) {
 // as a 2-layer RGBA32F array (layer 0: M⁻¹'s m00, m02, m20, m22 with m11 = 1; layer 1: scale, bias),
 // bilinear by texelFetch so that the filtering is float exact (a GPU's filter weights have 8 bits).
 const int kDiskVertices = 8;
-const int kMaxPolygon = 10;  // kDiskVertices + 1 per clipping (the LTC clips twice)
 const float kDiskRadiusScale = 1.0539;
 const int kLtcSize = 64;
 #ifndef LR_PBR
@@ -558,7 +557,9 @@ const float kMinRoughness = 0.0525;
 #endif
 uniform sampler2DArray uLtc;
 
-// θ · normalize(a × b) for unit a, b (atan2: exact at any angle, no acos).
+// The edge a→b's share of 2 ∫ ω dω: θ · normalize(a × b), zero for a point. The angle is atan2(|a × b|, a · b),
+// exact at any angle (no acos) and the same at any length of a and b: the emitter's corners are normalised
+// once, and the points the clips and M⁻¹ make of them keep lengths within a few orders of magnitude of 1.
 vec3 edgeIntegral(vec3 a, vec3 b) {
     vec3 c = cross(a, b);
     float s = sqrt(dot(c, c));
@@ -567,50 +568,80 @@ vec3 edgeIntegral(vec3 a, vec3 b) {
     return c * k;
 }
 
-// ∫ ω dω over the polygon (the vertices normalised first): its z is ∫ cos θ dω, signed.
-vec3 polygonVector(vec3 p[kMaxPolygon], int n) {
-    vec3 u[kMaxPolygon];
-    for (int i = 0; i < n; ++i) u[i] = safeNormalize(p[i], vec3(0.0, 0.0, 1.0));
-    vec3 sum = vec3(0.0);
-    for (int i = 0; i < n; ++i) sum += edgeIntegral(u[i], u[i + 1 < n ? i + 1 : 0]);
-    return sum * 0.5;
+vec3 unitOrPole(vec3 p) { return safeNormalize(p, vec3(0.0, 0.0, 1.0)); }
+
+// The polygons stream past edge by edge and are clipped on the fly (lighting_area_poly.h clipHorizon gives
+// the same polygons): no array of vertices, which llvmpipe keeps in memory and indexes lane by lane. A
+// convex polygon leaves the half-space z > 0 once and comes back once; the closing edge along the plane
+// joins the two points (both zero when it never crosses, an edge of length zero).
+struct Clipper {
+    vec3 sum;      // 2 ∫ ω dω over the edges' kept parts so far
+    vec3 exitP;    // where the boundary went below z = 0
+    vec3 entryP;   // where it came back
+    bool crossed;  // whether it did (the closing edge costs nothing where no pixel's polygon crosses)
+};
+
+Clipper clipperStart() { return Clipper(vec3(0.0), vec3(0.0), vec3(0.0), false); }
+
+// The part of a→b with z > 0 as s0→s1 (one point twice when none), noting a crossing.
+void keptPart(inout Clipper c, vec3 a, vec3 b, out vec3 s0, out vec3 s1) {
+    bool aUp = a.z > 0.0, bUp = b.z > 0.0;
+    bool crosses = aUp != bUp;
+    vec3 x = a + (b - a) * (crosses ? a.z / (a.z - b.z) : 0.0);
+    x.z = crosses ? 0.0 : x.z;
+    s0 = aUp ? a : x;
+    s1 = bUp ? b : x;
+    c.exitP = aUp && !bUp ? x : c.exitP;
+    c.entryP = bUp && !aUp ? x : c.entryP;
+    c.crossed = c.crossed || crosses;
 }
 
-// The convex polygon's part with z > 0 (lighting_area_poly.h clipHorizon).
-int clipHorizon(vec3 p[kMaxPolygon], int n, out vec3 o[kMaxPolygon]) {
-    int m = 0;
-    for (int i = 0; i < n; ++i) {
-        vec3 a = p[i];
-        vec3 b = p[i + 1 < n ? i + 1 : 0];
-        bool aUp = a.z > 0.0, bUp = b.z > 0.0;
-        if (aUp && m < kMaxPolygon) o[m++] = a;
-        if (aUp != bUp && m < kMaxPolygon) {
-            float t = a.z / (a.z - b.z);
-            vec3 x = a + (b - a) * t;
-            x.z = 0.0;
-            o[m++] = x;
-        }
-    }
-    return m;
+void clipEdge(inout Clipper c, vec3 a, vec3 b) {
+    vec3 s0, s1;
+    keptPart(c, a, b, s0, s1);
+    c.sum += edgeIntegral(s0, s1);
 }
 
-// (1/π) ∫ max(cos θ, 0) dω: the clipped polygon's form factor.
-float clippedCosine(vec3 p[kMaxPolygon], int n) {
-    vec3 c[kMaxPolygon];
-    int m = clipHorizon(p, n, c);
-    return m < 3 ? 0.0 : abs(polygonVector(c, m).z) * kInvPi;
+// ∫ ω dω over the clipped polygon: its z is π × the clipped form factor, signed by the winding.
+vec3 clipperEnd(Clipper c) {
+    if (c.crossed) c.sum += edgeIntegral(c.exitP, c.entryP);
+    return c.sum * 0.5;
 }
 
-float solidAngle(vec3 p[kMaxPolygon], int n) {
-    vec3 u[kMaxPolygon];
-    for (int i = 0; i < n; ++i) u[i] = safeNormalize(p[i], vec3(0.0, 0.0, 1.0));
-    float sum = 0.0;
-    for (int i = 1; i + 1 < n; ++i) {
-        float num = dot(u[0], cross(u[i], u[i + 1]));
-        float den = 1.0 + dot(u[0], u[i]) + dot(u[i], u[i + 1]) + dot(u[i + 1], u[0]);
-        sum += 2.0 * atan(num, den);
-    }
-    return abs(sum);
+// The emitter's polygon (local frame) through both clips: its part above the horizon, and that part mapped
+// by A (the LTC's M⁻¹, or Phong's scaled frame about R) and clipped again, the lobe's polygon. full (the
+// half-Lambert wrap only): the unclipped polygon's vector and its signed solid angle (a fan from vertex 0).
+struct AreaStream {
+    Clipper horizon;
+    Clipper lobe;
+    mat3 A;
+    bool full;
+    vec3 fullSum;
+    float omega;
+};
+
+struct AreaSums {
+    vec3 clipped;  // ∫ ω dω over the part above the horizon
+    vec3 lobe;     // ∫ ω dω over A·(that part), clipped to z > 0
+    vec3 full;     // ∫ ω dω over the whole polygon (with full)
+    float omega;   // its solid angle (with full)
+};
+
+void feedEdge(inout AreaStream s, vec3 a, vec3 b) {
+    vec3 s0, s1;
+    keptPart(s.horizon, a, b, s0, s1);
+    s.horizon.sum += edgeIntegral(s0, s1);
+    clipEdge(s.lobe, s.A * s0, s.A * s1);
+    if (s.full) s.fullSum += edgeIntegral(a, b);
+}
+
+// The signed solid angle of the triangle of unit vectors o, a, b (Van Oosterom & Strackee).
+float triangleSolidAngle(vec3 o, vec3 a, vec3 b) {
+    return 2.0 * atan(dot(o, cross(a, b)), 1.0 + dot(o, a) + dot(a, b) + dot(b, o));
+}
+
+void feedFan(inout AreaStream s, vec3 o, vec3 a, vec3 b) {
+    if (s.full) s.omega += triangleSolidAngle(o, a, b);
 }
 
 struct Frame {
@@ -628,24 +659,56 @@ Frame frameAround(vec3 n, vec3 towards) {
     return f;
 }
 
-int emitterPolygon(ShadeLight l, vec3 P, Frame f, out vec3 p[kMaxPolygon]) {
+// Streams the emitter at P in the frame f: a rect's four corners, or a disk as the equal-area octagon.
+AreaSums areaSums(ShadeLight l, vec3 P, Frame f, mat3 A, bool full) {
+    AreaStream s;
+    s.horizon = clipperStart();
+    s.lobe = s.horizon;
+    s.A = A;
+    s.full = full;
+    s.fullSum = vec3(0.0);
+    s.omega = 0.0;
+    AreaSums o;
+    o.clipped = o.lobe = o.full = vec3(0.0);
+    o.omega = 0.0;
     vec3 c = l.position - P;
+    // The centre and half axes in the local frame (a disk's octagon on the circle of the equal-area radius).
+    bool disk = lightTypeOf(l) == LR_LIGHT_DISK;
+    float halfX = disk ? l.halfWidth * kDiskRadiusScale : l.halfWidth;
+    vec3 cl = toLocal(f, c), xl = toLocal(f, l.axisX * halfX);
+    vec3 yl = toLocal(f, l.axisY * (disk ? halfX : l.halfHeight));
+    // Wholly below the horizon, nothing is left of it but for the half-Lambert wrap.
+    if (!full && cl.z + abs(xl.z) + abs(yl.z) <= 0.0) return o;
 #ifdef LR_HAS_LIGHT_DISK
     if (lightTypeOf(l) == LR_LIGHT_DISK) {
-        float r = l.halfWidth * kDiskRadiusScale;
-        for (int i = 0; i < kDiskVertices; ++i) {
+        vec3 first = unitOrPole(cl + xl);
+        vec3 prev = first;
+        for (int i = 1; i <= kDiskVertices; ++i) {
             float a = (2.0 * kPi / float(kDiskVertices)) * float(i);
-            p[i] = toLocal(f, c + l.axisX * (r * cos(a)) + l.axisY * (r * sin(a)));
+            vec3 cur = i < kDiskVertices ? unitOrPole(cl + xl * cos(a) + yl * sin(a)) : first;
+            feedEdge(s, prev, cur);
+            if (i >= 2 && i < kDiskVertices) feedFan(s, first, prev, cur);
+            prev = cur;
         }
-        return kDiskVertices;
-    }
+    } else
 #endif
-    vec3 x = l.axisX * l.halfWidth, y = l.axisY * l.halfHeight;
-    p[0] = toLocal(f, c - x - y);
-    p[1] = toLocal(f, c + x - y);
-    p[2] = toLocal(f, c + x + y);
-    p[3] = toLocal(f, c - x + y);
-    return 4;
+    {
+        vec3 p0 = unitOrPole(cl - xl - yl), p1 = unitOrPole(cl + xl - yl);
+        vec3 p2 = unitOrPole(cl + xl + yl), p3 = unitOrPole(cl - xl + yl);
+        feedEdge(s, p0, p1);
+        feedEdge(s, p1, p2);
+        feedEdge(s, p2, p3);
+        feedEdge(s, p3, p0);
+        feedFan(s, p0, p1, p2);
+        feedFan(s, p0, p2, p3);
+    }
+    // The first clip's closing edge along the horizon is an edge of the lobe's polygon too.
+    if (s.horizon.crossed) clipEdge(s.lobe, A * s.horizon.exitP, A * s.horizon.entryP);
+    o.clipped = clipperEnd(s.horizon);
+    o.lobe = clipperEnd(s.lobe);
+    o.full = s.fullSum * 0.5;
+    o.omega = abs(s.omega);
+    return o;
 }
 
 bool facesEmitter(ShadeLight l, vec3 P) {
@@ -656,56 +719,48 @@ bool facesEmitter(ShadeLight l, vec3 P) {
 vec3 emitterToward(ShadeLight l, vec3 P) { return dot(P - l.position, l.direction) > 0.0 ? -l.direction : l.direction; }
 
 // (1/π) ∫ ((1 + cos)/2)² dω over the unclipped polygon, cos² as its mean squared (lighting_area.h).
-float halfLambertIntegral(vec3 p[kMaxPolygon], int n, vec3 toward) {
-    float omega = solidAngle(p, n);
-    vec3 e = polygonVector(p, n);
-    float cosSum = dot(e, toward) < 0.0 ? -e.z : e.z;
-    return omega > 0.0 ? positive(omega + 2.0 * cosSum + cosSum * cosSum / omega) * (0.25 * kInvPi) : 0.0;
+float halfLambertIntegral(AreaSums a, vec3 toward) {
+    float cosSum = dot(a.full, toward) < 0.0 ? -a.full.z : a.full.z;
+    return a.omega > 0.0 ? positive(a.omega + 2.0 * cosSum + cosSum * cosSum / a.omega) * (0.25 * kInvPi) : 0.0;
 }
 
 // The diffuse integral of the light's model over the emitter (form factor or half-Lambert wrap).
-float areaDiffuse(ShadeLight l, vec3 p[kMaxPolygon], int n, vec3 toward) {
-    return diffuseOf(l) == LR_DIFFUSE_LAMBERT ? clippedCosine(p, n) : halfLambertIntegral(p, n, toward);
+float areaDiffuse(ShadeLight l, AreaSums a, vec3 toward) {
+    return diffuseOf(l) == LR_DIFFUSE_LAMBERT ? abs(a.clipped.z) * kInvPi : halfLambertIntegral(a, toward);
 }
 
 #ifndef LR_PBR
-// (1/π) ∫ (R·ω)^n dω over the clipped polygon, as the LTC diag(s, s, 1) around R, s² = 2/(n + 1).
-float phongLobeIntegral(vec3 clipped[kMaxPolygon], int m, Frame f, vec3 R, float n) {
-    Frame r = frameAround(R, f.n);
-    float e = n > 0.0 ? n : 0.0;
-    float invS = sqrt((e + 1.0) * 0.5);
-    vec3 p[kMaxPolygon];
-    for (int i = 0; i < m; ++i) {
-        vec3 q = toLocal(r, f.t1 * clipped[i].x + f.t2 * clipped[i].y + f.n * clipped[i].z);
-        p[i] = vec3(q.x * invS, q.y * invS, q.z);
-    }
-    return clippedCosine(p, m) * (2.0 / (e + 1.0));
-}
-
-// shadeAreaLight's direct terms split (diffuse per unit of colour·albedo, specular per unit of Sc·ks).
+// shadeAreaLight's direct terms split (diffuse per unit of colour·albedo, specular per unit of Sc·ks). The
+// specular: (1/π) ∫ (R·ω)^n dω over the clipped polygon, as the LTC diag(s, s, 1) around R, s² = 2/(n + 1).
 vec2 areaClassic(ShadeLight l, vec3 P, vec3 N, float shininess, vec3 V) {
     if (!facesEmitter(l, P)) return vec2(0.0);
     Frame f = frameAround(N, V);
-    vec3 local[kMaxPolygon];
-    int n = emitterPolygon(l, P, f, local);
-    vec3 clipped[kMaxPolygon];
-    int m = clipHorizon(local, n, clipped);
-    float D = areaDiffuse(l, local, n, toLocal(f, emitterToward(l, P)));
-    float S = 0.0;
-    if (m >= 3) {
-        vec3 R = 2.0 * dot(N, V) * N - V;
+    vec3 R = safeNormalize(2.0 * dot(N, V) * N - V, N);
 #if LR_SPECULAR == LR_SPECULAR_PHONG
-        float e = shininess;
+    float e = positive(shininess);
 #else
-        float e = shininess * 0.25;
+    float e = positive(shininess * 0.25);
 #endif
-        S = phongLobeIntegral(clipped, m, f, safeNormalize(R, N), e);
-    }
+    float invS = sqrt((e + 1.0) * 0.5);
+    Frame r = frameAround(R, f.n);
+    // Local (surface frame) → R's frame, scaled across R.
+    mat3 toR = transpose(mat3(r.t1 * invS, r.t2 * invS, r.n)) * mat3(f.t1, f.t2, f.n);
+    AreaSums a = areaSums(l, P, f, toR, diffuseOf(l) != LR_DIFFUSE_LAMBERT);
+    float D = areaDiffuse(l, a, toLocal(f, emitterToward(l, P)));
+    float S = abs(a.lobe.z) * kInvPi * (2.0 / (e + 1.0));
     return vec2(D, S);
 }
 #else
-// The LTC table at (α, N·V), bilinear (ltc.h lookup).
-void ltcLookup(float alpha, float nDotV, out vec4 minv, out vec2 fresnel) {
+// The LTC table at (α, N·V), bilinear (ltc.h lookup). It depends on the surface, not on the light: looked up
+// once per surface (PbrSurface), so that a pixel under sixteen softboxes fetches its eight texels once.
+struct LtcSample {
+    vec4 minv;     // M⁻¹'s m00, m02, m20, m22
+    vec2 fresnel;  // scale, bias
+};
+
+LtcSample ltcLookup(float alpha, vec3 N, vec3 V) {
+    float nDotV = abs(dot(N, V));
+    nDotV = nDotV > kMinNDotV ? nDotV : kMinNDotV;
     float u = saturate((sqrt(positive(alpha)) - kMinRoughness) / (1.0 - kMinRoughness));
     float v = sqrt(saturate(1.0 - nDotV));
     float x = u * float(kLtcSize - 1), y = v * float(kLtcSize - 1);
@@ -717,8 +772,10 @@ void ltcLookup(float alpha, float nDotV, out vec4 minv, out vec2 fresnel) {
     vec4 b2 = texelFetch(uLtc, ivec3(i0, j0 + 1, 1), 0), b3 = texelFetch(uLtc, ivec3(i0 + 1, j0 + 1, 1), 0);
     vec4 at = a0 + (a1 - a0) * fx, ab = a2 + (a3 - a2) * fx;
     vec4 bt = b0 + (b1 - b0) * fx, bb = b2 + (b3 - b2) * fx;
-    minv = at + (ab - at) * fy;
-    fresnel = (bt + (bb - bt) * fy).xy;
+    LtcSample o;
+    o.minv = at + (ab - at) * fy;
+    o.fresnel = (bt + (bb - bt) * fy).xy;
+    return o;
 }
 
 // shadeAreaLightPbr's direct terms: diffuse = c_diff (1 − F0) (1 − w) D (per unit of colour), and the
@@ -729,37 +786,27 @@ struct AreaPbr {
     float biasI;    // bias·I
 };
 
-AreaPbr areaPbr(ShadeLight l, vec3 P, vec3 N, vec3 V, float alpha) {
+AreaPbr areaPbr(ShadeLight l, vec3 P, vec3 N, vec3 V, LtcSample ltc) {
     AreaPbr o;
     o.diffuse = 0.0;
     o.scaleI = 0.0;
     o.biasI = 0.0;
     if (!facesEmitter(l, P)) return o;
     Frame f = frameAround(N, V);
-    vec3 local[kMaxPolygon];
-    int n = emitterPolygon(l, P, f, local);
-    vec3 clipped[kMaxPolygon];
-    int m = clipHorizon(local, n, clipped);
+    vec4 k = ltc.minv;
+    // The polygon clipped to the surface's horizon (the BRDF is zero below), then transformed by M⁻¹.
+    mat3 minv = mat3(vec3(k.x, 0.0, k.z), vec3(0.0, 1.0, 0.0), vec3(k.y, 0.0, k.w));
+    AreaSums a = areaSums(l, P, f, minv, diffuseOf(l) != LR_DIFFUSE_LAMBERT);
     vec3 toward = toLocal(f, emitterToward(l, P));
-    vec3 e = m >= 3 ? polygonVector(clipped, m) : vec3(0.0);
-    float D = diffuseOf(l) == LR_DIFFUSE_LAMBERT ? abs(e.z) * kInvPi : halfLambertIntegral(local, n, toward);
+    float D = areaDiffuse(l, a, toward);
     vec3 Vl = toLocal(f, V);
-    vec3 mean = safeNormalize(dot(e, toward) < 0.0 ? -e : e, vec3(0.0, 0.0, 1.0));
+    vec3 mean = safeNormalize(dot(a.clipped, toward) < 0.0 ? -a.clipped : a.clipped, vec3(0.0, 0.0, 1.0));
     vec3 H = safeNormalize(mean + Vl, vec3(0.0, 0.0, 1.0));
     float w = schlickWeight(dot(Vl, H));
     o.diffuse = (1.0 - w) * D;
-    float nDotV = abs(dot(N, V));
-    nDotV = nDotV > kMinNDotV ? nDotV : kMinNDotV;
-    vec4 k;
-    vec2 fr;
-    ltcLookup(alpha, nDotV, k, fr);
-    // The polygon clipped to the surface's horizon (the BRDF is zero below), then transformed by M⁻¹.
-    vec3 t[kMaxPolygon];
-    for (int i = 0; i < m; ++i)
-        t[i] = vec3(k.x * clipped[i].x + k.y * clipped[i].z, clipped[i].y, k.z * clipped[i].x + k.w * clipped[i].z);
-    float I = m >= 3 ? clippedCosine(t, m) : 0.0;
-    o.scaleI = fr.x * I;
-    o.biasI = fr.y * I;
+    float I = abs(a.lobe.z) * kInvPi;
+    o.scaleI = ltc.fresnel.x * I;
+    o.biasI = ltc.fresnel.y * I;
     return o;
 }
 #endif
@@ -925,16 +972,42 @@ bool lightArrival(ShadeLight l, Surface s, ShadeSettings st, out vec3 L, out flo
     return true;
 }
 
+// What shadeSurface() computes once per surface under PBR, before the lights.
+struct PbrSurface {
+    vec3 cDiff, f0;
+    float alpha;
+#ifdef LR_HAS_AREA
+    LtcSample ltc;  // the area lights' LTC at this (α, N·V)
+#endif
+};
+
+PbrSurface pbrSurface(Surface s) {
+    PbrSurface p;
+    p.cDiff = pbrDiffuseColor(s.albedo, s.metallic);
+    p.f0 = pbrF0(s.albedo, s.metallic);
+    p.alpha = pbrAlpha(s.roughness);
+    return p;
+}
+
+// pbrSurface() with what the lights need of the viewer once per surface (the LTC lookup).
+PbrSurface pbrSurfaceLit(Surface s, vec3 V) {
+    PbrSurface p = pbrSurface(s);
+#ifdef LR_HAS_AREA
+    p.ltc = ltcLookup(p.alpha, s.normal, V);
+#endif
+    return p;
+}
+
 #ifdef LR_HAS_AREA
 // What an area light adds under physically based shading (lighting_area.h shadeAreaLightPbr).
-vec3 shadeAreaLightPbr(ShadeLight l, Surface s, ShadeSettings st, vec3 V, vec3 cDiff, vec3 f0, float alpha) {
-    AreaPbr a = areaPbr(l, s.position, s.normal, V, alpha);
-    vec3 direct = l.color * (cDiff * (vec3(1.0) - f0) * a.diffuse) + l.specular * (f0 * a.scaleI + vec3(a.biasI));
+vec3 shadeAreaLightPbr(ShadeLight l, Surface s, ShadeSettings st, vec3 V, PbrSurface p) {
+    AreaPbr a = areaPbr(l, s.position, s.normal, V, p.ltc);
+    vec3 direct = l.color * (p.cDiff * (vec3(1.0) - p.f0) * a.diffuse) + l.specular * (p.f0 * a.scaleI + vec3(a.biasI));
 #ifdef LR_SHADOWS
     direct *= lrShadow(l, s, safeNormalize(l.position - s.position, s.normal));
 #endif
 #ifdef LR_HAS_LIGHT_AMBIENT
-    return direct + l.ambient * cDiff * (saturate(s.occlusion) * kInvPi);
+    return direct + l.ambient * p.cDiff * (saturate(s.occlusion) * kInvPi);
 #else
     return direct;
 #endif
@@ -944,13 +1017,15 @@ vec3 shadeAreaLightPbr(ShadeLight l, Surface s, ShadeSettings st, vec3 V, vec3 c
 // Radiance one light adds under physically based shading (shade.h shadeLightPbr):
 //   attenuation · (colour·intensity · diffuse lobe + Sc·intensity · specular lobe + Ac·intensity · c_diff/π);
 // a rim light adds its classic term.
-vec3 shadeLightPbr(ShadeLight l, Surface s, ShadeSettings st, vec3 V, vec3 cDiff, vec3 f0, float alpha) {
+vec3 shadeLightPbr(ShadeLight l, Surface s, ShadeSettings st, vec3 V, PbrSurface p) {
     vec3 N = s.normal;
+    vec3 cDiff = p.cDiff, f0 = p.f0;
+    float alpha = p.alpha;
 #ifdef LR_HAS_LIGHT_RIM
     if (lightTypeOf(l) == LR_LIGHT_RIM) return l.color * rimTerm(l.direction, N, V, l.rimExponent);
 #endif
 #ifdef LR_HAS_AREA
-    if (lightIsArea(l)) return shadeAreaLightPbr(l, s, st, V, cDiff, f0, alpha);
+    if (lightIsArea(l)) return shadeAreaLightPbr(l, s, st, V, p);
 #endif
 #ifdef LR_HAS_SURFACE_LIGHTS
     vec3 L;
@@ -983,20 +1058,6 @@ vec3 shadeLightPbr(ShadeLight l, Surface s, ShadeSettings st, vec3 V, vec3 cDiff
 #endif
 }
 
-// What shadeSurface() computes once per surface under PBR, before the lights.
-struct PbrSurface {
-    vec3 cDiff, f0;
-    float alpha;
-};
-
-PbrSurface pbrSurface(Surface s) {
-    PbrSurface p;
-    p.cDiff = pbrDiffuseColor(s.albedo, s.metallic);
-    p.f0 = pbrF0(s.albedo, s.metallic);
-    p.alpha = pbrAlpha(s.roughness);
-    return p;
-}
-
 // The scene ambient: an irradiance (as three.js's AmbientLight) on the diffuse lobe, times the occlusion.
 vec3 pbrSceneAmbient(Surface s, ShadeSettings st, PbrSurface p) {
     return st.ambient * p.cDiff * (saturate(s.occlusion) * kInvPi);
@@ -1007,10 +1068,10 @@ vec3 pbrSceneAmbient(Surface s, ShadeSettings st, PbrSurface p) {
 vec3 shadeSurface(Surface s, ShadeSettings st) {
     vec3 V = viewVector(st, s.position);
 #ifdef LR_PBR
-    PbrSurface p = pbrSurface(s);
+    PbrSurface p = pbrSurfaceLit(s, V);
     vec3 sum = pbrSceneAmbient(s, st, p);
 #if defined(LR_HAS_SURFACE_LIGHTS) || defined(LR_HAS_LIGHT_RIM)
-    for (int i = 0; i < uLightCount; ++i) sum += shadeLightPbr(loadLight(i), s, st, V, p.cDiff, p.f0, p.alpha);
+    for (int i = 0; i < uLightCount; ++i) sum += shadeLightPbr(loadLight(i), s, st, V, p);
 #endif
     return sum + s.emissive;
 #else
@@ -1123,7 +1184,8 @@ struct VertexLightPbr {
     vec3 added;     // rim lights
 };
 
-void shadeLightSplitPbr(ShadeLight l, Surface s, ShadeSettings st, vec3 V, float alpha, inout VertexLightPbr o) {
+void shadeLightSplitPbr(ShadeLight l, Surface s, ShadeSettings st, vec3 V, PbrSurface p, inout VertexLightPbr o) {
+    float alpha = p.alpha;
     vec3 N = s.normal;
 #ifdef LR_HAS_LIGHT_RIM
     if (lightTypeOf(l) == LR_LIGHT_RIM) {
@@ -1133,7 +1195,7 @@ void shadeLightSplitPbr(ShadeLight l, Surface s, ShadeSettings st, vec3 V, float
 #endif
 #ifdef LR_HAS_AREA
     if (lightIsArea(l)) {  // specular = F0·scaleI + biasI = F0·(A − B) + B with A = scaleI + biasI, B = biasI
-        AreaPbr a = areaPbr(l, s.position, N, V, alpha);
+        AreaPbr a = areaPbr(l, s.position, N, V, p.ltc);
         o.specular += l.specular * (a.scaleI + a.biasI);
         o.fresnel += l.specular * a.biasI;
         o.diffuse += l.color * a.diffuse;
@@ -1176,15 +1238,20 @@ VertexLightPbr shadeVertexPbr(vec3 P, vec3 N, float roughness, ShadeSettings st)
     s.position = P;
     s.normal = N;
     vec3 V = viewVector(st, P);
-    float alpha = pbrAlpha(roughness);
+    PbrSurface p;  // the vertex knows its roughness; the material's colours come per pixel (shadePixelPbr)
+    p.cDiff = p.f0 = vec3(0.0);
+    p.alpha = pbrAlpha(roughness);
+#ifdef LR_HAS_AREA
+    p.ltc = ltcLookup(p.alpha, N, V);
+#endif
 #if defined(LR_HAS_SURFACE_LIGHTS) || defined(LR_HAS_LIGHT_RIM)
 #ifdef LR_SHADOWS
     for (int i = 0; i < uLightCount; ++i) {
         ShadeLight l = loadLight(i);
-        if (l.shadow == 0) shadeLightSplitPbr(l, s, st, V, alpha, o);
+        if (l.shadow == 0) shadeLightSplitPbr(l, s, st, V, p, o);
     }
 #else
-    for (int i = 0; i < uLightCount; ++i) shadeLightSplitPbr(loadLight(i), s, st, V, alpha, o);
+    for (int i = 0; i < uLightCount; ++i) shadeLightSplitPbr(loadLight(i), s, st, V, p, o);
 #endif
 #endif
     return o;

@@ -225,13 +225,13 @@ vec3 shadeCastingLights(Surface s, ShadeSettings st) {
     vec3 V = viewVector(st, s.position);
     vec3 sum = vec3(0.0);
 #ifdef LR_PBR
-    PbrSurface p = pbrSurface(s);
+    PbrSurface p = pbrSurfaceLit(s, V);
 #endif
     for (int k = 0; k < uShadowCount; ++k) {
         int index = int(uShadowRecords[k * LR_SHADOW_TEXELS + 6].x);
         if (index < 0) continue;
 #ifdef LR_PBR
-        sum += shadeLightPbr(loadLight(index), s, st, V, p.cDiff, p.f0, p.alpha);
+        sum += shadeLightPbr(loadLight(index), s, st, V, p);
 #else
         sum += shadeLight(loadLight(index), s, st, V);
 #endif
