@@ -558,8 +558,9 @@ const float kMinRoughness = 0.0525;
 uniform sampler2DArray uLtc;
 
 // The edge a→b's share of 2 ∫ ω dω: θ · normalize(a × b), zero for a point. The angle is atan2(|a × b|, a · b),
-// exact at any angle (no acos) and the same at any length of a and b: the emitter's corners are normalised
-// once, and the points the clips and M⁻¹ make of them keep lengths within a few orders of magnitude of 1.
+// exact at any angle (no acos) and the same at any length of a and b: the emitter's corners are scaled
+// together to lengths near 1, and the points the clips and M⁻¹ make of them stay within a few orders of
+// magnitude of that.
 vec3 edgeIntegral(vec3 a, vec3 b) {
     vec3 c = cross(a, b);
     float s = sqrt(dot(c, c));
@@ -635,8 +636,11 @@ void feedEdge(inout AreaStream s, vec3 a, vec3 b) {
     if (s.full) s.fullSum += edgeIntegral(a, b);
 }
 
-// The signed solid angle of the triangle of unit vectors o, a, b (Van Oosterom & Strackee).
+// The signed solid angle of the triangle o, a, b (Van Oosterom & Strackee).
 float triangleSolidAngle(vec3 o, vec3 a, vec3 b) {
+    o = unitOrPole(o);
+    a = unitOrPole(a);
+    b = unitOrPole(b);
     return 2.0 * atan(dot(o, cross(a, b)), 1.0 + dot(o, a) + dot(a, b) + dot(b, o));
 }
 
@@ -679,13 +683,19 @@ AreaSums areaSums(ShadeLight l, vec3 P, Frame f, mat3 A, bool full) {
     vec3 yl = toLocal(f, l.axisY * (disk ? halfX : l.halfHeight));
     // Wholly below the horizon, nothing is left of it but for the half-Lambert wrap.
     if (!full && cl.z + abs(xl.z) + abs(yl.z) <= 0.0) return o;
+    // One scale for all the corners (the edge integrals are the same at any length) keeps them near 1.
+    float size2 = dot(cl, cl) + dot(xl, xl) + dot(yl, yl);
+    float scale = size2 > 0.0 && size2 <= kFloatMax ? inversesqrt(size2) : 1.0;
+    cl *= scale;
+    xl *= scale;
+    yl *= scale;
 #ifdef LR_HAS_LIGHT_DISK
     if (lightTypeOf(l) == LR_LIGHT_DISK) {
-        vec3 first = unitOrPole(cl + xl);
+        vec3 first = cl + xl;
         vec3 prev = first;
         for (int i = 1; i <= kDiskVertices; ++i) {
             float a = (2.0 * kPi / float(kDiskVertices)) * float(i);
-            vec3 cur = i < kDiskVertices ? unitOrPole(cl + xl * cos(a) + yl * sin(a)) : first;
+            vec3 cur = i < kDiskVertices ? cl + xl * cos(a) + yl * sin(a) : first;
             feedEdge(s, prev, cur);
             if (i >= 2 && i < kDiskVertices) feedFan(s, first, prev, cur);
             prev = cur;
@@ -693,8 +703,7 @@ AreaSums areaSums(ShadeLight l, vec3 P, Frame f, mat3 A, bool full) {
     } else
 #endif
     {
-        vec3 p0 = unitOrPole(cl - xl - yl), p1 = unitOrPole(cl + xl - yl);
-        vec3 p2 = unitOrPole(cl + xl + yl), p3 = unitOrPole(cl - xl + yl);
+        vec3 p0 = cl - xl - yl, p1 = cl + xl - yl, p2 = cl + xl + yl, p3 = cl - xl + yl;
         feedEdge(s, p0, p1);
         feedEdge(s, p1, p2);
         feedEdge(s, p2, p3);
