@@ -788,11 +788,12 @@ LtcSample ltcLookup(float alpha, vec3 N, vec3 V) {
 }
 
 // shadeAreaLightPbr's direct terms: diffuse = c_diff (1 − F0) (1 − w) D (per unit of colour), and the
-// specular's LTC integral I with its Fresnel scale and bias: specular = (F0·scale + bias)·I.
+// specular's LTC integral I × the lobe's norm n, split by Schlick's weight ws at the lobe's mean direction:
+// specular = F0·scaleI + biasI with scaleI = (1 − ws)·n·I, biasI = ws·n·I.
 struct AreaPbr {
     float diffuse;  // (1 − w)·D: × c_diff (1 − F0)
-    float scaleI;   // scale·I: × F0
-    float biasI;    // bias·I
+    float scaleI;   // (1 − ws)·n·I: × F0
+    float biasI;    // ws·n·I
 };
 
 AreaPbr areaPbr(ShadeLight l, vec3 P, vec3 N, vec3 V, LtcSample ltc) {
@@ -813,9 +814,16 @@ AreaPbr areaPbr(ShadeLight l, vec3 P, vec3 N, vec3 V, LtcSample ltc) {
     vec3 H = safeNormalize(mean + Vl, vec3(0.0, 0.0, 1.0));
     float w = schlickWeight(dot(Vl, H));
     o.diffuse = (1.0 - w) * D;
+    // The lobe's norm × Schlick's Fresnel at its mean direction over the light: the LTC polygon's vector
+    // taken back through M (M⁻¹'s xz block inverted, m11 = 1; lighting_area.h lobeMeanDirection).
     float I = abs(a.lobe.z) * kInvPi;
-    o.scaleI = ltc.fresnel.x * I;
-    o.biasI = ltc.fresnel.y * I;
+    vec3 e = a.lobe.z < 0.0 ? -a.lobe : a.lobe;
+    float det = k.x * k.w - k.y * k.z;
+    vec3 lobeMean = safeNormalize(vec3(k.w * e.x - k.y * e.z, e.y * det, k.x * e.z - k.z * e.x), vec3(0.0, 0.0, 1.0));
+    float ws = schlickWeight(dot(Vl, safeNormalize(lobeMean + Vl, vec3(0.0, 0.0, 1.0))));
+    float normI = (ltc.fresnel.x + ltc.fresnel.y) * I;
+    o.scaleI = (1.0 - ws) * normI;
+    o.biasI = ws * normI;
     return o;
 }
 #endif

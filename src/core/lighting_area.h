@@ -23,7 +23,9 @@
 //   half-Lambert: ((1 + cos)/2)² over the unclipped polygon as (Ω + 2C + C²/Ω)/4 (C = ∫cos dω): exact
 //     but for cos² replaced by its mean squared.
 //   GGX specular: LTC (ltc.h, our own fit), clipped to the surface's horizon and to the transformed
-//     cosine's, × (F0·scale + bias).
+//     cosine's, × the lobe's norm × Schlick's Fresnel at the lobe's mean direction over the light (exact
+//     for small emitters; Hill's F0·scale + bias, the lobe's average Fresnel, made a dielectric's grazing
+//     highlight 3–10× too dim and its tail too bright).
 //   PBR diffuse's (1 − F): Schlick's weight at the polygon's mean direction (exact for small emitters).
 //   Phong: (R·ω)^n as the LTC diag(s, s, 1) around R, s² = 2/(n + 1) (same integral and peak); Blinn-Phong:
 //     the same with n/4 (the Blinn lobe's width at normal incidence).
@@ -148,6 +150,22 @@ template <typename T> Vec3<T> meanDirection(const Polygon<T>& clippedUnit, const
     return safeNormalize(e, Vec3<T>(0, 0, 1));
 }
 
+// Schlick's weight (1 − V·H)^5 for light from the unit direction w (local frame).
+template <typename T> T schlickWeight(const Vec3<T>& V, const Vec3<T>& w) {
+    const Vec3<T> H = safeNormalize(w + V, Vec3<T>(0, 0, 1));
+    const T m = T(1) - saturate(std::abs(glm::dot(V, H)));
+    return m * m * m * m * m;
+}
+
+// The lobe's mean direction over the light: the vector of the LTC's polygon e (in the cosine's space, either
+// winding) taken back through M (M⁻¹'s xz block inverted, m11 = 1) to the local frame.
+template <typename T> Vec3<T> lobeMeanDirection(Vec3<T> e, const ltc::Lookup<T>& k) {
+    if (e.z < T(0)) e = -e;
+    const T det = k.m00 * k.m22 - k.m02 * k.m20;
+    return safeNormalize(Vec3<T>(k.m22 * e.x - k.m02 * e.z, e.y * det, -k.m20 * e.x + k.m00 * e.z),
+                         Vec3<T>(0, 0, 1));
+}
+
 // (1/π) ∫ (R·ω)^n dω over the polygon's part above the horizon, as the LTC diag(s, s, 1) around R.
 template <typename T>
 T phongLobeIntegral(const Polygon<T>& clipped, const Frame<T>& f, const Vec3<T>& R, T n) {
@@ -204,17 +222,19 @@ Vec3<T> shadeAreaLightPbr(const ShadeLight<T>& l, const Surface<T>& s, const Sha
                     ? (clipped.n >= 3 ? std::abs(polygonVector(clipped).z) * T(1.0 / kPi) : T(0))
                     : halfLambertIntegral(local, toward);
     const Vec3<T> Vl = f.local(V);
-    const Vec3<T> H = safeNormalize(meanDirection(clipped, toward) + Vl, Vec3<T>(0, 0, 1));
-    const T m = T(1) - saturate(std::abs(glm::dot(Vl, H)));
-    const T w = m * m * m * m * m;
+    const T w = schlickWeight(Vl, meanDirection(clipped, toward));
     const Vec3<T> diffuse = cDiff * (Vec3<T>(1) - f0) * ((T(1) - w) * D);
-    // Specular: the LTC integral × (F0·scale + bias), the polygon clipped to the surface's horizon (where
-    // the BRDF is zero) before the transform and to the cosine's after it.
+    // Specular: the LTC integral × the lobe's norm (scale + bias) × Schlick's Fresnel at the lobe's mean
+    // direction over the light, the polygon clipped to the surface's horizon (where the BRDF is zero) before
+    // the transform and to the cosine's after it.
     T nDotV = std::abs(glm::dot(N, V));
     if (!(nDotV > T(kMinNDotV))) nDotV = T(kMinNDotV);
     const ltc::Lookup<T> k = ltc::lookup(alpha, nDotV);
-    const T I = clippedCosine(transformed(clipHorizon(local), k.m00, k.m02, k.m20, k.m22));
-    const Vec3<T> specular = (f0 * k.scale + Vec3<T>(k.bias)) * I;
+    const Polygon<T> lobe = clipHorizon(transformed(clipHorizon(local), k.m00, k.m02, k.m20, k.m22));
+    Vec3<T> e = lobe.n >= 3 ? polygonVector(normalized(lobe)) : Vec3<T>(0);
+    const T I = std::abs(e.z) * T(1.0 / kPi);
+    const T ws = schlickWeight(Vl, lobeMeanDirection(e, k));
+    const Vec3<T> specular = (f0 + (Vec3<T>(1) - f0) * ws) * ((k.scale + k.bias) * I);
     return visibility * (l.color * diffuse + l.specular * specular) + ambient;
 }
 

@@ -6,8 +6,11 @@
 //   M = | m00  0  m02 |
 //       |  0  m11  0  |      in the frame (T1, T2, N), V = (sin θv, 0, cos θv),
 //       | m20  0  m22 |
-// and the polygon integral is the clipped-cosine integral of the polygon transformed by M⁻¹. The fit
-// writes M = R(φ)·S, R turning about y to the BRDF's mean direction φ, S = [[a, 0, b], [0, c, 0], [0, 0, 1]].
+// and the polygon integral is the clipped-cosine integral of the polygon, clipped to the horizon, transformed
+// by M⁻¹. The fit writes M = R(φ)·S, R turning about y to the BRDF's mean direction φ, S = [[a, 0, b],
+// [0, c, 0], [0, 0, 1]]. Clipping to the horizon first leaves h < 1 of the LTC's mass (at grazing views a
+// lobe about the mirror direction reaches below it): the table's scale and bias are the integrals above
+// divided by h, so that the whole hemisphere gives the BRDF's norm.
 //
 // The table: kLtcSize × kLtcSize cells, cell (i, j) at perceptual roughness
 // r = kMinRoughness + (1 − kMinRoughness)·i/(kLtcSize − 1) and N·V = 1 − (j/(kLtcSize − 1))² (x: roughness,
@@ -19,6 +22,7 @@
 #include "lighting.h"
 
 #include <array>
+#include <cmath>
 
 namespace lr::ltc {
 
@@ -34,6 +38,7 @@ double cellNDotV(int j);
 struct Fit {
     double a = 1, b = 0, c = 1, phi = 0;
     double scale = 0, bias = 0;
+    double horizon = 1; // the share of the LTC's mass above the horizon (Matrix::aboveHorizon)
     double error = 0;
     std::array<double, 4> inverse() const; // (m00, m02, m20, m22) of M⁻¹ / m11(M⁻¹)
 };
@@ -48,6 +53,14 @@ std::array<float, kLtcSize * kLtcSize * kLtcFloats> fitTable(void (*progress)(in
 
 // The generated table (ltc_table.cpp).
 const float* ltcTable();
+
+// The share h of the LTC's mass above the horizon for M⁻¹'s (m00, m20) (any positive scale): the
+// clamped cosine's mass on the positive side of the plane whose normal is M's last row, ∝ (−m20, 0, m00),
+// at β from the pole: (1 + cos β)/2. The table's scale and bias are the BRDF's integrals divided by it.
+inline double horizonShare(double m00, double m20) {
+    const double l = std::hypot(m00, m20);
+    return l > 0 ? 0.5 * (1 + m00 / l) : 0.5;
+}
 
 // The six numbers at (alpha, nDotV), bilinear between cells, the coordinates clamped to the table.
 template <typename T> struct Lookup { T m00, m02, m20, m22, scale, bias; };
