@@ -565,7 +565,7 @@ uniform sampler2DArray uLtc;
 // below float's rounding).
 float angleOf(float s, float d) {
     float ad = abs(d);
-    float r = min(s, ad) / max(max(s, ad), 1e-38);
+    float r = min(s, ad) / max(max(s, ad), 1e-30);
     float r2 = r * r;
     float p = r * (0.9999993329 + r2 * (-0.3332985605 + r2 * (0.1994653599 + r2 * (-0.1390853351 +
               r2 * (0.0964200441 + r2 * (-0.0559098861 + r2 * (0.0218612288 + r2 * -0.0040540580)))))));
