@@ -557,12 +557,8 @@ const float kMinRoughness = 0.0525;
 #endif
 uniform sampler2DArray uLtc;
 
-// The edge a→b's share of 2 ∫ ω dω: θ · normalize(a × b), zero for a point. The angle is atan2(|a × b|, a · b),
-// exact at any angle (no acos) and the same at any length of a and b: the emitter's corners are scaled
-// together to lengths near 1, and the points the clips and M⁻¹ make of them stay within a few orders of
-// magnitude of that.
 // atan2(s, d) for s ≥ 0, in [0, π]: one division and Abramowitz & Stegun 4.4.49 on [0, 1] (|error| ≤ 2e-8,
-// below float's rounding).
+// below float's rounding; GLSL's two-argument atan handles every quadrant and cost half an area light).
 float angleOf(float s, float d) {
     float ad = abs(d);
     float r = min(s, ad) / max(max(s, ad), 1e-30);
@@ -573,6 +569,10 @@ float angleOf(float s, float d) {
     return d < 0.0 ? 3.14159265358979 - t : t;
 }
 
+// The edge a→b's share of 2 ∫ ω dω: θ · normalize(a × b), zero for a point. The angle is atan2(|a × b|, a · b),
+// exact at any angle (no acos) and the same at any length of a and b: the emitter's corners are scaled
+// together to lengths near 1, and the points the clips and M⁻¹ make of them stay within a few orders of
+// magnitude of that.
 vec3 edgeIntegral(vec3 a, vec3 b) {
     vec3 c = cross(a, b);
     float s = sqrt(dot(c, c));
@@ -694,7 +694,7 @@ AreaSums areaSums(ShadeLight l, vec3 P, Frame f, mat3 A, bool full) {
     vec3 cl = toLocal(f, c), xl = toLocal(f, l.axisX * halfX);
     vec3 yl = toLocal(f, l.axisY * (disk ? halfX : l.halfHeight));
     // Wholly below the horizon, nothing is left of it but for the half-Lambert wrap.
-    // if (!full && cl.z + abs(xl.z) + abs(yl.z) <= 0.0) return o;
+    if (!full && cl.z + abs(xl.z) + abs(yl.z) <= 0.0) return o;
     // One scale for all the corners (the edge integrals are the same at any length) keeps them near 1.
     float size2 = dot(cl, cl) + dot(xl, xl) + dot(yl, yl);
     float scale = size2 > 0.0 && size2 <= kFloatMax ? inversesqrt(size2) : 1.0;
