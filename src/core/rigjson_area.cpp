@@ -22,19 +22,12 @@ std::optional<AreaShape> readArea(Checker& c, const Value& v, const QString& pat
     if (!c.isObject(v, path)) return std::nullopt;
     ObjectView o(c, v, path);
     AreaShape a;
-    bool ok = true;
-    const auto keep = [&](auto result, auto& out) {
-        if (result)
-            out = *result;
-        else
-            ok = false;
-    };
     // Unknown type: every key allowed (its values still checked).
     const bool rect = !type || traitsOf(*type).usesRectSize;
     const bool disk = !type || traitsOf(*type).usesDiskRadius;
     const QString light = type ? QStringLiteral("a %1 light").arg(toString(*type)) : QString();
     const auto size = [&](const char* key, double& out) {
-        if (const Value* x = o.take(key)) keep(c.number(*x, o.path(key), nonNegative(kMaxRigLength)), out);
+        if (const Value* x = o.take(key)) o.keep(c.number(*x, o.path(key), nonNegative(kMaxRigLength)), out);
     };
     if (rect) {
         size("width", a.width);
@@ -53,11 +46,9 @@ std::optional<AreaShape> readArea(Checker& c, const Value& v, const QString& pat
                                           "%2 lights have a radius)")
                                .arg(light, lightTypesWith(&LightTypeTraits::usesDiskRadius)));
     if (const Value* r = o.take("roll"))
-        keep(c.number(*r, o.path("roll"), {-180.0, true, 180.0, true}), a.roll);
-    if (const Value* t = o.take("twoSided")) keep(c.boolean(*t, o.path("twoSided")), a.twoSided);
-    o.finish();
-    if (!ok) return std::nullopt;
-    return a;
+        o.keep(c.number(*r, o.path("roll"), {-180.0, true, 180.0, true}), a.roll);
+    if (const Value* t = o.take("twoSided")) o.keep(c.boolean(*t, o.path("twoSided")), a.twoSided);
+    return o.result(a);
 }
 
 } // namespace lr::rigjson

@@ -160,6 +160,13 @@ const Value* ObjectView::take(const char* key) {
     return nullptr;
 }
 
+const Value* ObjectView::require(const char* key, const QString& missing) {
+    if (const Value* v = take(key)) return v;
+    m_checker.error(path(key), missing);
+    m_valid = false;
+    return nullptr;
+}
+
 void ObjectView::reject(const char* key, const QString& reason) {
     if (take(key)) m_checker.error(path(key), reason);
 }

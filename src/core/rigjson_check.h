@@ -71,7 +71,8 @@ class Checker {
 };
 
 // One JSON object being read: take() the keys the format defines for it, reject() the ones it defines
-// elsewhere, and finish() to warn about the rest.
+// elsewhere, and finish() to warn about the rest. A value that fails its reader (keep(), read(), require())
+// makes the object invalid: result() then gives nullopt, the errors already reported.
 class ObjectView {
   public:
     ObjectView(Checker& checker, const json::Value& object, const QString& path);
@@ -84,8 +85,22 @@ class ObjectView {
 
     // take() + the typed reader; leaves `out` alone when the key is absent or invalid.
     template <typename T, typename Read> void read(const char* key, T& out, Read&& reader) {
-        if (const json::Value* v = take(key))
-            if (auto r = reader(*v, path(key))) out = *r;
+        if (const json::Value* v = take(key)) keep(reader(*v, path(key)), out);
+    }
+    // A reader's result into `out`, or the object marked invalid.
+    template <typename R, typename T> void keep(const R& result, T& out) {
+        if (result)
+            out = *result;
+        else
+            m_valid = false;
+    }
+    // take() a key the object must have; when it is missing, the error `missing` at path.key.
+    const json::Value* require(const char* key, const QString& missing);
+    void invalidate() { m_valid = false; }
+    // finish(), then `value` unless something in the object was invalid.
+    template <typename T> std::optional<T> result(T value) {
+        finish();
+        return m_valid ? std::optional<T>(std::move(value)) : std::nullopt;
     }
 
   private:
@@ -93,6 +108,7 @@ class ObjectView {
     const json::Value& m_object;
     QString m_path;
     std::vector<bool> m_used;
+    bool m_valid = true;
 };
 
 // rigjson_models.cpp: a light's "falloff" and "cone" objects; nullopt when invalid (errors reported).

@@ -51,57 +51,31 @@ std::optional<Softbox> readSoftbox(Checker& c, const Value& v, const QString& pa
     if (!c.isObject(v, path)) return std::nullopt;
     ObjectView o(c, v, path);
     Softbox b;
-    bool ok = true;
     const auto number = [&](const char* key, double& out, const Interval& in) {
-        if (const Value* x = o.take(key)) {
-            if (const auto n = c.number(*x, o.path(key), in))
-                out = *n;
-            else
-                ok = false;
-        }
+        if (const Value* x = o.take(key)) o.keep(c.number(*x, o.path(key), in), out);
     };
     number("azimuth", b.azimuth, {});
     number("elevation", b.elevation, {-90.0, true, 90.0, true});
     number("width", b.width, positive(kMaxSoftboxAngle));
     number("height", b.height, positive(kMaxSoftboxAngle));
-    if (const Value* x = o.take("color")) {
-        if (const auto col = c.color(*x, o.path("color")))
-            b.color = *col;
-        else
-            ok = false;
-    }
+    if (const Value* x = o.take("color")) o.keep(c.color(*x, o.path("color")), b.color);
     number("intensity", b.intensity, nonNegative(kMaxRigIntensity));
-    o.finish();
-    return ok ? std::optional(b) : std::nullopt;
+    return o.result(b);
 }
 
 std::optional<EnvironmentSpot> readSpot(Checker& c, const Value& v, const QString& path) {
     if (!c.isObject(v, path)) return std::nullopt;
     ObjectView o(c, v, path);
     EnvironmentSpot s;
-    bool ok = true;
-    if (const Value* d = o.take("direction")) {
-        if (const auto dir = c.direction(*d, o.path("direction")))
-            s.direction = *dir;
-        else
-            ok = false;
-    } else {
-        c.error(o.path("direction"),
-                QStringLiteral("missing; a dimmed spot needs a direction [x, y, z] (the spot's centre)"));
-        ok = false;
-    }
+    if (const Value* d = o.require("direction", QStringLiteral("missing; a dimmed spot needs a direction "
+                                                               "[x, y, z] (the spot's centre)")))
+        o.keep(c.direction(*d, o.path("direction")), s.direction);
     const auto number = [&](const char* key, double& out, const Interval& in) {
-        if (const Value* x = o.take(key)) {
-            if (const auto n = c.number(*x, o.path(key), in))
-                out = *n;
-            else
-                ok = false;
-        }
+        if (const Value* x = o.take(key)) o.keep(c.number(*x, o.path(key), in), out);
     };
     number("angle", s.angle, positive(kMaxEnvironmentSpotAngle));
     number("factor", s.factor, nonNegative(1.0));
-    o.finish();
-    return ok ? std::optional(s) : std::nullopt;
+    return o.result(s);
 }
 
 // An array of at most `max` objects read by `item`; false when anything in it was invalid.
@@ -131,22 +105,14 @@ std::optional<Studio> readStudio(Checker& c, const Value& v, const QString& path
     if (!c.isObject(v, path)) return std::nullopt;
     ObjectView o(c, v, path);
     Studio s;
-    bool ok = true;
     for (const auto& [key, out] :
-         {std::pair{"zenith", &s.zenith}, std::pair{"horizon", &s.horizon}, std::pair{"floor", &s.floor}}) {
-        if (const Value* x = o.take(key)) {
-            if (const auto col = c.color(*x, o.path(key)))
-                *out = *col;
-            else
-                ok = false;
-        }
-    }
+         {std::pair{"zenith", &s.zenith}, std::pair{"horizon", &s.horizon}, std::pair{"floor", &s.floor}})
+        if (const Value* x = o.take(key)) o.keep(c.color(*x, o.path(key)), *out);
     if (const Value* x = o.take("softboxes"))
-        ok = readList(c, *x, o.path("softboxes"), kMaxEnvironmentSoftboxes, QStringLiteral("softboxes"),
-                      s.softboxes, readSoftbox) &&
-             ok;
-    o.finish();
-    return ok ? std::optional(s) : std::nullopt;
+        if (!readList(c, *x, o.path("softboxes"), kMaxEnvironmentSoftboxes, QStringLiteral("softboxes"),
+                      s.softboxes, readSoftbox))
+            o.invalidate();
+    return o.result(s);
 }
 
 // Canonical text: the writer's conventions (rigjson_write.cpp), for the one object that nests blocks.
@@ -184,46 +150,35 @@ std::optional<Environment> readEnvironment(Checker& c, const Value& v, const QSt
     if (!c.isObject(v, path)) return std::nullopt;
     ObjectView o(c, v, path);
     Environment e;
-    bool ok = true;
-    const auto keep = [&](auto result, auto& out) {
-        if (result)
-            out = *result;
-        else
-            ok = false;
-    };
-    if (const Value* s = o.take("source")) {
-        keep(c.enumValue<EnvironmentSource>(*s, o.path("source")), e.source);
-    } else {
-        c.error(o.path("source"),
-                QStringLiteral("missing; one of %1").arg(allowedNames<EnvironmentSource>()));
-        ok = false;
-    }
-    if (const Value* f = o.take("file")) {
-        keep(readFile(c, *f, o.path("file")), e.file);
-    } else if (e.source == EnvironmentSource::Image) {
-        c.error(o.path("file"),
-                QStringLiteral("missing; an image environment needs \"file\": an .hdr or .exr file relative "
-                               "to the rig's folder, absolute, or \"builtin:NAME\""));
-        ok = false;
+    if (const Value* s =
+            o.require("source", QStringLiteral("missing; one of %1").arg(allowedNames<EnvironmentSource>())))
+        o.keep(c.enumValue<EnvironmentSource>(*s, o.path("source")), e.source);
+    if (e.source == EnvironmentSource::Image) {
+        if (const Value* f =
+                o.require("file", QStringLiteral("missing; an image environment needs \"file\": an "
+                                                 ".hdr or .exr file relative to the rig's folder, "
+                                                 "absolute, or \"builtin:NAME\"")))
+            o.keep(readFile(c, *f, o.path("file")), e.file);
+    } else if (const Value* f = o.take("file")) {
+        o.keep(readFile(c, *f, o.path("file")), e.file);
     }
     const auto number = [&](const char* key, double& out, const Interval& in) {
-        if (const Value* x = o.take(key)) keep(c.number(*x, o.path(key), in), out);
+        if (const Value* x = o.take(key)) o.keep(c.number(*x, o.path(key), in), out);
     };
     number("intensity", e.intensity, {-kMaxEnvironmentEV, true, kMaxEnvironmentEV, true});
     number("rotation", e.rotation, {});
     e.rotation = normalizedEnvironmentRotation(e.rotation);
     if (const Value* b = o.take("background"))
-        keep(c.enumValue<EnvironmentBackground>(*b, o.path("background")), e.background);
+        o.keep(c.enumValue<EnvironmentBackground>(*b, o.path("background")), e.background);
     number("blur", e.blur, nonNegative(1.0));
-    if (const Value* d = o.take("diffuse")) keep(c.enumValue<DiffuseModel>(*d, o.path("diffuse")), e.diffuse);
-    if (const Value* s = o.take("studio")) keep(readStudio(c, *s, o.path("studio")), e.studio);
+    if (const Value* d = o.take("diffuse"))
+        o.keep(c.enumValue<DiffuseModel>(*d, o.path("diffuse")), e.diffuse);
+    if (const Value* s = o.take("studio")) o.keep(readStudio(c, *s, o.path("studio")), e.studio);
     if (const Value* s = o.take("spots"))
-        ok = readList(c, *s, o.path("spots"), kMaxEnvironmentSpots, QStringLiteral("spots"), e.spots,
-                      readSpot) &&
-             ok;
-    o.finish();
-    if (!ok) return std::nullopt;
-    return e;
+        if (!readList(c, *s, o.path("spots"), kMaxEnvironmentSpots, QStringLiteral("spots"), e.spots,
+                      readSpot))
+            o.invalidate();
+    return o.result(e);
 }
 
 std::optional<QByteArray> writeEnvironment(const Environment& e) {

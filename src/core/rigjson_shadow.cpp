@@ -11,25 +11,15 @@ std::optional<Shadow> readShadow(Checker& c, const Value& v, const QString& path
     if (!c.isObject(v, path)) return std::nullopt;
     ObjectView o(c, v, path);
     Shadow s;
-    bool ok = true;
-    const auto keep = [&](auto result, auto& out) {
-        if (result)
-            out = *result;
-        else
-            ok = false;
-    };
-    if (const Value* e = o.take("enabled")) {
-        keep(c.boolean(*e, o.path("enabled")), s.enabled);
-    } else {
-        c.error(o.path("enabled"), QStringLiteral("missing; a shadow says \"enabled\": true or false"));
-        ok = false;
-    }
+    if (const Value* e =
+            o.require("enabled", QStringLiteral("missing; a shadow says \"enabled\": true or false")))
+        o.keep(c.boolean(*e, o.path("enabled")), s.enabled);
 
     if (const Value* r = o.take("resolution")) {
         if (r->isNumber() && r->finite && isShadowResolution(r->number)) {
             s.resolution = int(r->number);
         } else {
-            ok = false;
+            o.invalidate();
             const QString range = QStringLiteral("a power of two between %1 and %2")
                                       .arg(kMinShadowResolution)
                                       .arg(kMaxShadowResolution);
@@ -40,7 +30,7 @@ std::optional<Shadow> readShadow(Checker& c, const Value& v, const QString& path
         }
     }
     const auto texels = [&](const char* key, double& out) {
-        if (const Value* x = o.take(key)) keep(c.number(*x, o.path(key), nonNegative(kMaxShadowBias)), out);
+        if (const Value* x = o.take(key)) o.keep(c.number(*x, o.path(key), nonNegative(kMaxShadowBias)), out);
     };
     texels("bias", s.bias);
     texels("normalOffset", s.normalOffset);
@@ -56,7 +46,7 @@ std::optional<Shadow> readShadow(Checker& c, const Value& v, const QString& path
                  QStringLiteral("%1 has no size: the light's own \"area\" softens its shadow").arg(light));
     } else if (positioned) {
         if (const Value* x = o.take("size"))
-            keep(c.number(*x, o.path("size"), nonNegative(kMaxRigLength)), s.size);
+            o.keep(c.number(*x, o.path("size"), nonNegative(kMaxRigLength)), s.size);
     } else {
         o.reject("size",
                  QStringLiteral("%1 has no size: its softness is \"angle\", the emitter's angular diameter "
@@ -65,43 +55,25 @@ std::optional<Shadow> readShadow(Checker& c, const Value& v, const QString& path
     }
     if (atInfinity) {
         if (const Value* x = o.take("angle"))
-            keep(c.number(*x, o.path("angle"), nonNegative(kMaxShadowAngle)), s.angle);
+            o.keep(c.number(*x, o.path("angle"), nonNegative(kMaxShadowAngle)), s.angle);
     } else {
         o.reject("angle",
                  QStringLiteral("%1 has no angle: its softness is \"size\", the emitter's diameter in "
                                 "the rig's units (only directional lights have an angle)")
                      .arg(light));
     }
-    o.finish();
-    if (!ok) return std::nullopt;
-    return s;
+    return o.result(s);
 }
 
 std::optional<Ground> readGround(Checker& c, const Value& v, const QString& path) {
     if (!c.isObject(v, path)) return std::nullopt;
     ObjectView o(c, v, path);
     Ground g;
-    bool ok = true;
-    if (const Value* m = o.take("mode")) {
-        const auto mode = c.enumValue<GroundMode>(*m, o.path("mode"));
-        if (mode)
-            g.mode = *mode;
-        else
-            ok = false;
-    } else {
-        c.error(o.path("mode"), QStringLiteral("missing; one of %1").arg(allowedNames<GroundMode>()));
-        ok = false;
-    }
-    if (const Value* col = o.take("color")) {
-        const auto albedo = c.albedo(*col, o.path("color"));
-        if (albedo)
-            g.color = *albedo;
-        else
-            ok = false;
-    }
-    o.finish();
-    if (!ok) return std::nullopt;
-    return g;
+    if (const Value* m =
+            o.require("mode", QStringLiteral("missing; one of %1").arg(allowedNames<GroundMode>())))
+        o.keep(c.enumValue<GroundMode>(*m, o.path("mode")), g.mode);
+    if (const Value* col = o.take("color")) o.keep(c.albedo(*col, o.path("color")), g.color);
+    return o.result(g);
 }
 
 } // namespace lr::rigjson
