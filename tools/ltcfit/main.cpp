@@ -1,7 +1,7 @@
 // ltcfit: fits the LTC table (src/core/ltc.h) to LightRig's GGX BRDF and writes it as C++ source,
 // src/core/ltc_table.cpp. Not built by default: cmake --build build/dev --target ltcfit, then
 //   build/dev/tools/ltcfit/ltcfit src/core/ltc_table.cpp
-// One column of the table per thread; about five minutes on one core (docs/lighting-models.md "Area lights").
+// One roughness column per thread: 35 s on the 2-core machine (docs/lighting-models.md "Area lights").
 #include "core/atomicwrite.h"
 #include "core/ltc.h"
 
