@@ -628,6 +628,7 @@ struct AreaStream {
     Clipper horizon;
     Clipper lobe;
     mat3 A;
+    bool diffuse;  // whether the part above the horizon is integrated (not for a metal: c_diff = 0)
     bool full;
     vec3 fullSum;
     float omega;
@@ -643,7 +644,7 @@ struct AreaSums {
 void feedEdge(inout AreaStream s, vec3 a, vec3 b) {
     vec3 s0, s1;
     keptPart(s.horizon, a, b, s0, s1);
-    s.horizon.sum += edgeIntegral(s0, s1);
+    if (s.diffuse) s.horizon.sum += edgeIntegral(s0, s1);
     clipEdge(s.lobe, s.A * s0, s.A * s1);
     if (s.full) s.fullSum += edgeIntegral(a, b);
 }
@@ -676,11 +677,12 @@ Frame frameAround(vec3 n, vec3 towards) {
 }
 
 // Streams the emitter at P in the frame f: a rect's four corners, or a disk as the equal-area octagon.
-AreaSums areaSums(ShadeLight l, vec3 P, Frame f, mat3 A, bool full) {
+AreaSums areaSums(ShadeLight l, vec3 P, Frame f, mat3 A, bool diffuse, bool full) {
     AreaStream s;
     s.horizon = clipperStart();
     s.lobe = s.horizon;
     s.A = A;
+    s.diffuse = diffuse || full;
     s.full = full;
     s.fullSum = vec3(0.0);
     s.omega = 0.0;
@@ -725,7 +727,7 @@ AreaSums areaSums(ShadeLight l, vec3 P, Frame f, mat3 A, bool full) {
     }
     // The first clip's closing edge along the horizon is an edge of the lobe's polygon too.
     if (s.horizon.crossed) clipEdge(s.lobe, A * s.horizon.exitP, A * s.horizon.entryP);
-    o.clipped = clipperEnd(s.horizon);
+    o.clipped = s.diffuse ? clipperEnd(s.horizon) : vec3(0.0);
     o.lobe = clipperEnd(s.lobe);
     o.full = s.fullSum * 0.5;
     o.omega = abs(s.omega);
@@ -766,7 +768,7 @@ vec2 areaClassic(ShadeLight l, vec3 P, vec3 N, float shininess, vec3 V) {
     Frame r = frameAround(R, f.n);
     // Local (surface frame) → R's frame, scaled across R.
     mat3 toR = transpose(mat3(r.t1 * invS, r.t2 * invS, r.n)) * mat3(f.t1, f.t2, f.n);
-    AreaSums a = areaSums(l, P, f, toR, diffuseOf(l) != LR_DIFFUSE_LAMBERT);
+    AreaSums a = areaSums(l, P, f, toR, true, diffuseOf(l) != LR_DIFFUSE_LAMBERT);
     float D = areaDiffuse(l, a, toLocal(f, emitterToward(l, P)));
     float S = abs(a.lobe.z) * kInvPi * (2.0 / (e + 1.0));
     return vec2(D, S);
@@ -808,7 +810,7 @@ struct AreaPbr {
     float biasI;    // ws·n·I
 };
 
-AreaPbr areaPbr(ShadeLight l, vec3 P, vec3 N, vec3 V, LtcSample ltc) {
+AreaPbr areaPbr(ShadeLight l, vec3 P, vec3 N, vec3 V, LtcSample ltc, bool diffuse) {
     AreaPbr o;
     o.diffuse = 0.0;
     o.scaleI = 0.0;
@@ -818,7 +820,7 @@ AreaPbr areaPbr(ShadeLight l, vec3 P, vec3 N, vec3 V, LtcSample ltc) {
     vec4 k = ltc.minv;
     // The polygon clipped to the surface's horizon (the BRDF is zero below), then transformed by M⁻¹.
     mat3 minv = mat3(vec3(k.x, 0.0, k.z), vec3(0.0, 1.0, 0.0), vec3(k.y, 0.0, k.w));
-    AreaSums a = areaSums(l, P, f, minv, diffuseOf(l) != LR_DIFFUSE_LAMBERT);
+    AreaSums a = areaSums(l, P, f, minv, diffuse, diffuseOf(l) != LR_DIFFUSE_LAMBERT);
     vec3 toward = toLocal(f, emitterToward(l, P));
     float D = areaDiffuse(l, a, toward);
     vec3 Vl = toLocal(f, V);
@@ -1030,7 +1032,7 @@ PbrSurface pbrSurfaceLit(Surface s, vec3 V) {
 #ifdef LR_HAS_AREA
 // What an area light adds under physically based shading (lighting_area.h shadeAreaLightPbr).
 vec3 shadeAreaLightPbr(ShadeLight l, Surface s, ShadeSettings st, vec3 V, PbrSurface p) {
-    AreaPbr a = areaPbr(l, s.position, s.normal, V, p.ltc);
+    AreaPbr a = areaPbr(l, s.position, s.normal, V, p.ltc, any(greaterThan(p.cDiff, vec3(0.0))));
     vec3 direct = l.color * (p.cDiff * (vec3(1.0) - p.f0) * a.diffuse) + l.specular * (p.f0 * a.scaleI + vec3(a.biasI));
 #ifdef LR_SHADOWS
     direct *= lrShadow(l, s, safeNormalize(l.position - s.position, s.normal));
@@ -1224,7 +1226,7 @@ void shadeLightSplitPbr(ShadeLight l, Surface s, ShadeSettings st, vec3 V, PbrSu
 #endif
 #ifdef LR_HAS_AREA
     if (lightIsArea(l)) {  // specular = F0·scaleI + biasI = F0·(A − B) + B with A = scaleI + biasI, B = biasI
-        AreaPbr a = areaPbr(l, s.position, N, V, p.ltc);
+        AreaPbr a = areaPbr(l, s.position, N, V, p.ltc, true);  // the material comes per pixel
         o.specular += l.specular * (a.scaleI + a.biasI);
         o.fresnel += l.specular * a.biasI;
         o.diffuse += l.color * a.diffuse;
