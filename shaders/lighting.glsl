@@ -779,6 +779,8 @@ vec2 areaClassic(ShadeLight l, vec3 P, vec3 N, float shininess, vec3 V) {
 struct LtcSample {
     vec4 minv;     // M⁻¹'s m00, m02, m20, m22
     vec2 fresnel;  // scale, bias
+    Frame frame;   // the local frame: N, and V in its xz plane
+    vec3 Vl;       // V in it
 };
 
 LtcSample ltcLookup(float alpha, vec3 N, vec3 V) {
@@ -798,7 +800,17 @@ LtcSample ltcLookup(float alpha, vec3 N, vec3 V) {
     LtcSample o;
     o.minv = at + (ab - at) * fy;
     o.fresnel = (bt + (bb - bt) * fy).xy;
+    o.frame = frameAround(N, V);
+    o.Vl = toLocal(o.frame, V);
     return o;
+}
+
+// v / |v|, or the pole where |v|² ≤ 1e-30, as core's safeNormalize for the vectors below (polygon vectors
+// and half-vectors, |v| ≤ 2π): without its range scaling, which llvmpipe pays in full four times per area
+// light and pixel.
+vec3 unitOrPoleSmall(vec3 v) {
+    float d = dot(v, v);
+    return d > 1e-30 ? v * inversesqrt(d) : vec3(0.0, 0.0, 1.0);
 }
 
 // shadeAreaLightPbr's direct terms: diffuse = c_diff (1 − F0) (1 − w) D (per unit of colour), and the
@@ -816,25 +828,24 @@ AreaPbr areaPbr(ShadeLight l, vec3 P, vec3 N, vec3 V, LtcSample ltc, bool diffus
     o.scaleI = 0.0;
     o.biasI = 0.0;
     if (!facesEmitter(l, P)) return o;
-    Frame f = frameAround(N, V);
+    Frame f = ltc.frame;
     vec4 k = ltc.minv;
     // The polygon clipped to the surface's horizon (the BRDF is zero below), then transformed by M⁻¹.
     mat3 minv = mat3(vec3(k.x, 0.0, k.z), vec3(0.0, 1.0, 0.0), vec3(k.y, 0.0, k.w));
     AreaSums a = areaSums(l, P, f, minv, diffuse, diffuseOf(l) != LR_DIFFUSE_LAMBERT);
     vec3 toward = toLocal(f, emitterToward(l, P));
     float D = areaDiffuse(l, a, toward);
-    vec3 Vl = toLocal(f, V);
-    vec3 mean = safeNormalize(dot(a.clipped, toward) < 0.0 ? -a.clipped : a.clipped, vec3(0.0, 0.0, 1.0));
-    vec3 H = safeNormalize(mean + Vl, vec3(0.0, 0.0, 1.0));
-    float w = schlickWeight(dot(Vl, H));
+    vec3 Vl = ltc.Vl;
+    vec3 mean = unitOrPoleSmall(dot(a.clipped, toward) < 0.0 ? -a.clipped : a.clipped);
+    float w = schlickWeight(dot(Vl, unitOrPoleSmall(mean + Vl)));
     o.diffuse = (1.0 - w) * D;
     // The lobe's norm × Schlick's Fresnel at its mean direction over the light: the LTC polygon's vector
     // taken back through M (M⁻¹'s xz block inverted, m11 = 1; lighting_area.h lobeMeanDirection).
     float I = abs(a.lobe.z) * kInvPi;
     vec3 e = a.lobe.z < 0.0 ? -a.lobe : a.lobe;
     float det = k.x * k.w - k.y * k.z;
-    vec3 lobeMean = safeNormalize(vec3(k.w * e.x - k.y * e.z, e.y * det, k.x * e.z - k.z * e.x), vec3(0.0, 0.0, 1.0));
-    float ws = schlickWeight(dot(Vl, safeNormalize(lobeMean + Vl, vec3(0.0, 0.0, 1.0))));
+    vec3 lobeMean = unitOrPoleSmall(vec3(k.w * e.x - k.y * e.z, e.y * det, k.x * e.z - k.z * e.x));
+    float ws = schlickWeight(dot(Vl, unitOrPoleSmall(lobeMean + Vl)));
     float normI = (ltc.fresnel.x + ltc.fresnel.y) * I;
     o.scaleI = (1.0 - ws) * normI;
     o.biasI = ws * normI;
