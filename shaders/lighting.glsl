@@ -557,28 +557,38 @@ const float kMinRoughness = 0.0525;
 #endif
 uniform sampler2DArray uLtc;
 
-// atan2(s, d) for s ≥ 0, in [0, π]: one division and Abramowitz & Stegun 4.4.49 on [0, 1] (|error| ≤ 2e-8,
-// below float's rounding; GLSL's two-argument atan handles every quadrant and cost half an area light).
-float angleOf(float s, float d) {
+// Powers of two near 1/x and 1/√x for finite x > 0, from the exponent bits: no division and no square root,
+// which llvmpipe pays in full (the edge integrals below need lengths near 1, not exactly 1).
+float pow2Inverse(float x) { return intBitsToFloat((254 << 23) - (floatBitsToInt(x) & 0x7f800000)); }
+float pow2InverseSqrt(float x) {
+    int e = ((floatBitsToInt(x) >> 23) & 0xff) - 127;
+    return intBitsToFloat((127 - (e >> 1)) << 23);
+}
+
+// θ / |a × b| for an edge with |a × b|² = cc and a · b = d, θ = atan2(|a × b|, a · b) in [0, π] (exact at any
+// angle, no acos); 1 or 0 for a point (its a × b is zero). The arctangent on [0, 1] is Abramowitz & Stegun
+// 4.4.49 (|error| ≤ 2e-8, below float's rounding; GLSL's two-argument atan handles every quadrant and cost
+// half an area light), and one division serves both min/max and 1/|a × b|.
+float edgeFactor(float cc, float d) {
+    float s = sqrt(cc);
     float ad = abs(d);
-    float r = min(s, ad) / max(max(s, ad), 1e-30);
+    float m = max(s, ad);
+    float q = 1.0 / max(m * s, 1e-36);
+    float r = min(s, ad) * s * q;
     float r2 = r * r;
     float p = r * (0.9999993329 + r2 * (-0.3332985605 + r2 * (0.1994653599 + r2 * (-0.1390853351 +
               r2 * (0.0964200441 + r2 * (-0.0559098861 + r2 * (0.0218612288 + r2 * -0.0040540580)))))));
     float t = s > ad ? 1.57079632679490 - p : p;
-    return d < 0.0 ? 3.14159265358979 - t : t;
+    float theta = d < 0.0 ? 3.14159265358979 - t : t;
+    return cc > 1e-36 ? theta * m * q : (d > 0.0 ? 1.0 : 0.0);
 }
 
-// The edge a→b's share of 2 ∫ ω dω: θ · normalize(a × b), zero for a point. The angle is atan2(|a × b|, a · b),
-// exact at any angle (no acos) and the same at any length of a and b: the emitter's corners are scaled
-// together to lengths near 1, and the points the clips and M⁻¹ make of them stay within a few orders of
-// magnitude of that.
+// The edge a→b's share of 2 ∫ ω dω: θ · normalize(a × b), zero for a point; the same at any length of a and
+// b: the emitter's corners are scaled together to lengths near 1, and the points the clips and M⁻¹ make of
+// them stay within a few orders of magnitude of that.
 vec3 edgeIntegral(vec3 a, vec3 b) {
     vec3 c = cross(a, b);
-    float s = sqrt(dot(c, c));
-    float d = dot(a, b);
-    float k = s > 1e-30 ? angleOf(s, d) / s : (d > 0.0 ? 1.0 : 0.0);
-    return c * k;
+    return c * edgeFactor(dot(c, c), dot(a, b));
 }
 
 vec3 unitOrPole(vec3 p) { return safeNormalize(p, vec3(0.0, 0.0, 1.0)); }
@@ -600,8 +610,11 @@ Clipper clipperStart() { return Clipper(vec3(0.0), vec3(0.0), vec3(0.0), false);
 void keptPart(inout Clipper c, vec3 a, vec3 b, out vec3 s0, out vec3 s1) {
     bool aUp = a.z > 0.0, bUp = b.z > 0.0;
     bool crosses = aUp != bUp;
-    vec3 x = a + (b - a) * (crosses ? a.z / (a.z - b.z) : 0.0);
-    x.z = crosses ? 0.0 : x.z;
+    // a.z b − b.z a, oriented, lies on the segment's ray through the plane; scaled by a power of two near
+    // 1 / (|a.z| + |b.z|) (exponent bits, no division) so that its length stays near the corners'.
+    float pow2 = pow2Inverse(abs(a.z) + abs(b.z));
+    vec3 x = (a.z * b - b.z * a) * (aUp ? pow2 : -pow2);
+    x.z = 0.0;
     s0 = aUp ? a : x;
     s1 = bUp ? b : x;
     c.exitP = aUp && !bUp ? x : c.exitP;
@@ -617,7 +630,10 @@ void clipEdge(inout Clipper c, vec3 a, vec3 b) {
 
 // ∫ ω dω over the clipped polygon: its z is π × the clipped form factor, signed by the winding.
 vec3 clipperEnd(Clipper c) {
-    if (c.crossed) c.sum += edgeIntegral(c.exitP, c.entryP);
+    // The closing edge lies in the plane z = 0: its a × b is (0, 0, cz).
+    vec3 a = c.exitP, b = c.entryP;
+    float cz = a.x * b.y - a.y * b.x;
+    if (c.crossed) c.sum.z += cz * edgeFactor(cz * cz, a.x * b.x + a.y * b.y);
     return c.sum * 0.5;
 }
 
@@ -699,7 +715,7 @@ AreaSums areaSums(ShadeLight l, vec3 P, Frame f, mat3 A, bool diffuse, bool full
     if (!full && cl.z + abs(xl.z) + abs(yl.z) <= 0.0) return o;
     // One scale for all the corners (the edge integrals are the same at any length) keeps them near 1.
     float size2 = dot(cl, cl) + dot(xl, xl) + dot(yl, yl);
-    float scale = size2 > 0.0 && size2 <= kFloatMax ? inversesqrt(size2) : 1.0;
+    float scale = size2 > 0.0 && size2 <= kFloatMax ? pow2InverseSqrt(size2) : 1.0;
     cl *= scale;
     xl *= scale;
     yl *= scale;
@@ -805,12 +821,12 @@ LtcSample ltcLookup(float alpha, vec3 N, vec3 V) {
     return o;
 }
 
-// v / |v|, or the pole where |v|² ≤ 1e-30, as core's safeNormalize for the vectors below (polygon vectors
-// and half-vectors, |v| ≤ 2π): without its range scaling, which llvmpipe pays in full four times per area
-// light and pixel.
-vec3 unitOrPoleSmall(vec3 v) {
-    float d = dot(v, v);
-    return d > 1e-30 ? v * inversesqrt(d) : vec3(0.0, 0.0, 1.0);
+// Schlick's weight at the half vector of V and the direction of m: V·H = sqrt((1 + V·m/|m|) / 2), the pole
+// for m = 0.
+float schlickToward(vec3 m, vec3 V) {
+    float mm = dot(m, m);
+    float c = mm > 1e-30 ? dot(m, V) / sqrt(mm) : V.z;
+    return schlickWeight(sqrt(saturate(0.5 + 0.5 * c)));
 }
 
 // shadeAreaLightPbr's direct terms: diffuse = c_diff (1 − F0) (1 − w) D (per unit of colour), and the
@@ -836,16 +852,14 @@ AreaPbr areaPbr(ShadeLight l, vec3 P, vec3 N, vec3 V, LtcSample ltc, bool diffus
     vec3 toward = toLocal(f, emitterToward(l, P));
     float D = areaDiffuse(l, a, toward);
     vec3 Vl = ltc.Vl;
-    vec3 mean = unitOrPoleSmall(dot(a.clipped, toward) < 0.0 ? -a.clipped : a.clipped);
-    float w = schlickWeight(dot(Vl, unitOrPoleSmall(mean + Vl)));
+    float w = schlickToward(dot(a.clipped, toward) < 0.0 ? -a.clipped : a.clipped, Vl);
     o.diffuse = (1.0 - w) * D;
     // The lobe's norm × Schlick's Fresnel at its mean direction over the light: the LTC polygon's vector
     // taken back through M (M⁻¹'s xz block inverted, m11 = 1; lighting_area.h lobeMeanDirection).
     float I = abs(a.lobe.z) * kInvPi;
     vec3 e = a.lobe.z < 0.0 ? -a.lobe : a.lobe;
     float det = k.x * k.w - k.y * k.z;
-    vec3 lobeMean = unitOrPoleSmall(vec3(k.w * e.x - k.y * e.z, e.y * det, k.x * e.z - k.z * e.x));
-    float ws = schlickWeight(dot(Vl, unitOrPoleSmall(lobeMean + Vl)));
+    float ws = schlickToward(vec3(k.w * e.x - k.y * e.z, e.y * det, k.x * e.z - k.z * e.x), Vl);
     float normI = (ltc.fresnel.x + ltc.fresnel.y) * I;
     o.scaleI = (1.0 - ws) * normI;
     o.biasI = ws * normI;

@@ -49,6 +49,22 @@ Rig areaRig(ShadingModel model, SpecularModel spec, DiffuseModel diffuse) {
     r.shading.specular = spec;
     return r;
 }
+
+// The extremes on the test plane (z = 0, normal +z): a rect standing across the plane (half of it below the
+// surface), a rect lying 1e-4 above the plane facing it (its edges nearly in every point's horizon), a disk
+// 1e4× the plane's size far above it, and a rect of zero width.
+Rig extremeRig(ShadingModel model, SpecularModel spec) {
+    Light across = areaLight(LightType::Rect, {0.5, 0.3, 0.0}, {-1.0, 0.3, 0.0}, 2.0);
+    Light touching = areaLight(LightType::Rect, {-0.6, -0.5, 1e-4}, {-0.6, -0.5, -1.0}, 1.0);
+    Light huge = areaLight(LightType::Disk, {0.0, 0.0, 5e4}, {0.0, 0.0, 0.0}, 1e-8);
+    huge.area.radius = 2e4;
+    Light zero = areaLight(LightType::Rect, {0.0, 0.5, 0.8}, {0.0, 0.0, 0.0}, 3.0);
+    zero.area.width = 0.0;
+    Rig r = model == ShadingModel::Pbr ? pbrRig({across, touching, huge, zero})
+                                       : rigOf({across, touching, huge, zero});
+    r.shading.specular = spec;
+    return r;
+}
 } // namespace
 
 class TestRenderArea : public QObject {
@@ -116,6 +132,38 @@ class TestRenderArea : public QObject {
             QVERIFY2(c.failures == 0, qPrintable(c.summary()));
             QVERIFY2(c.skipped <= c.covered / 50, qPrintable(c.summary()));
         }
+    }
+
+    // Where the float polygon integrals are nearest their limits (corners within 1e-4 of the horizon, edges
+    // clipped at grazing angles, a light 1e4× the scene), exact still matches the double reference.
+    void extremesMatchDoubleReference_data() {
+        QTest::addColumn<int>("model");
+        QTest::addColumn<int>("spec");
+        QTest::addRow("pbr") << int(ShadingModel::Pbr) << 0;
+        QTest::addRow("phong") << int(ShadingModel::Classic) << int(SpecularModel::Phong);
+    }
+
+    void extremesMatchDoubleReference() {
+        QFETCH(int, model);
+        QFETCH(int, spec);
+        const Rig rig = extremeRig(ShadingModel(model), SpecularModel(spec));
+        QString error;
+        QVERIFY2(m_gl.setModel(planeScene(), &error), qPrintable(error));
+        m_gl.setRig(rig);
+        FloatImage radiance;
+        GBuffer g;
+        QVERIFY2(m_gl.renderRadiance(planeCamera(), kSize, floatSettings(), &radiance, &error),
+                 qPrintable(error));
+        QVERIFY2(m_gl.renderGBuffer(planeCamera(), kSize, floatSettings(), &g, &error), qPrintable(error));
+        const ViewCamera cam = m_gl.renderer().effectiveCamera(planeCamera());
+        const Comparison c =
+            compareWithReference(radiance, g, rig, m_gl.renderer().sceneFrame(), cam.view(), kExactTolerance);
+        qInfo().noquote() << c.summary();
+        QVERIFY2(c.nonFinite == 0, qPrintable(c.summary()));
+        QVERIFY2(c.covered > kSize.width() * kSize.height() / 8, qPrintable(c.summary()));
+        QVERIFY2(c.maxReference > 0.0, "the scene should be lit");
+        QVERIFY2(c.failures == 0, qPrintable(c.summary()));
+        QVERIFY2(c.skipped <= c.covered / 50, qPrintable(c.summary()));
     }
 };
 
