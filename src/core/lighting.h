@@ -210,11 +210,14 @@ template <typename T> T smithVisibility(T nDotL, T nDotV, T alpha) {
     return denom > T(0) ? T(0.5) / denom : T(0);
 }
 
-// Schlick: F0 + (1 - F0) (1 - |V·H|)^5.
-template <typename T> Vec3<T> fresnelSchlick(const Vec3<T>& f0, T vDotH) {
+// Schlick: F0 + (1 - F0) w, w = (1 - |V·H|)^5 (the weight alone also serves the area lights' Fresnel).
+template <typename T> T schlickWeight(T vDotH) {
     const T m = T(1) - saturate(std::abs(vDotH));
     const T m2 = m * m;
-    return f0 + (Vec3<T>(1) - f0) * (m2 * m2 * m);
+    return m2 * m2 * m;
+}
+template <typename T> Vec3<T> fresnelSchlick(const Vec3<T>& f0, T vDotH) {
+    return f0 + (Vec3<T>(1) - f0) * schlickWeight(vDotH);
 }
 
 // The material's diffuse colour c_diff = baseColor (1 - metallic) and F0 = mix(0.04, baseColor, metallic),

@@ -152,9 +152,7 @@ template <typename T> Vec3<T> meanDirection(const Polygon<T>& clippedUnit, const
 
 // Schlick's weight (1 − V·H)^5 for light from the unit direction w (local frame).
 template <typename T> T schlickWeight(const Vec3<T>& V, const Vec3<T>& w) {
-    const Vec3<T> H = safeNormalize(w + V, Vec3<T>(0, 0, 1));
-    const T m = T(1) - saturate(std::abs(glm::dot(V, H)));
-    return m * m * m * m * m;
+    return schlickWeight(glm::dot(V, safeNormalize(w + V, Vec3<T>(0, 0, 1))));
 }
 
 // The lobe's mean direction over the light: the vector of the LTC's polygon e (in the cosine's space, either
