@@ -3,22 +3,12 @@
 #include "app/picking.h"
 #include "model/model.h"
 
+#include "pickingcamera.h"
+
 #include <QTest>
-#include <glm/gtc/matrix_transform.hpp>
 
 using namespace lr;
-
-namespace {
-// Camera at (0,0,10) looking at the origin, 90° vertical field of view, 200×100 pixels.
-ScreenProjector frontCamera() {
-    const glm::dmat4 view = glm::lookAt(glm::dvec3(0, 0, 10), glm::dvec3(0), glm::dvec3(0, 1, 0));
-    const glm::dmat4 proj = glm::perspective(glm::radians(90.0), 2.0, 0.1, 100.0);
-    return ScreenProjector(view, proj, QSizeF(200, 100));
-}
-bool near(const glm::dvec3& a, const glm::dvec3& b, double tol = 1e-9) {
-    return glm::length(a - b) <= tol;
-}
-} // namespace
+using namespace lr::test;
 
 class TestPicking : public QObject {
     Q_OBJECT
