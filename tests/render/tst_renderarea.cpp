@@ -112,26 +112,9 @@ class TestRenderArea : public QObject {
         s.quality = Quality(quality);
         s.shadingPath = path == 1 ? ShadingPath::Deferred : ShadingPath::Forward;
         s.clusteredShading = path == 2 ? 1 : 0;
-        QString error;
-        QVERIFY2(m_gl.setModel(pbr ? pbrSpheresScene() : planeScene(), &error), qPrintable(error));
-        m_gl.setRig(rig);
-        const ViewCamera camera = pbr ? pbrSpheresCamera() : planeCamera();
-        FloatImage radiance;
-        GBuffer g;
-        QVERIFY2(m_gl.renderRadiance(camera, kSize, s, &radiance, &error), qPrintable(error));
-        QVERIFY2(m_gl.renderGBuffer(camera, kSize, floatSettings(), &g, &error), qPrintable(error));
-        const ViewCamera cam = m_gl.renderer().effectiveCamera(camera);
-        const bool exact = Quality(quality) != Quality::Fast;
-        const Comparison c = compareWithReference(radiance, g, rig, m_gl.renderer().sceneFrame(), cam.view(),
-                                                  exact ? kExactTolerance : 1.0);
-        qInfo().noquote() << c.summary();
-        QVERIFY2(c.nonFinite == 0, qPrintable(c.summary()));
-        QVERIFY2(c.covered > kSize.width() * kSize.height() / 8, qPrintable(c.summary()));
-        QVERIFY2(c.maxReference > 0.0, "the scene should be lit");
-        if (exact) {
-            QVERIFY2(c.failures == 0, qPrintable(c.summary()));
-            QVERIFY2(c.skipped <= c.covered / 50, qPrintable(c.summary()));
-        }
+        checkAgainstReference(pbr ? pbrSpheresScene() : planeScene(),
+                              pbr ? pbrSpheresCamera() : planeCamera(), rig, s,
+                              Quality(quality) != Quality::Fast);
     }
 
     // Where the float polygon integrals are nearest their limits (corners within 1e-4 of the horizon, edges
@@ -146,24 +129,33 @@ class TestRenderArea : public QObject {
     void extremesMatchDoubleReference() {
         QFETCH(int, model);
         QFETCH(int, spec);
-        const Rig rig = extremeRig(ShadingModel(model), SpecularModel(spec));
+        checkAgainstReference(planeScene(), planeCamera(),
+                              extremeRig(ShadingModel(model), SpecularModel(spec)), floatSettings(), true);
+    }
+
+  private:
+    // Renders `rig` on `scene` and compares each covered pixel with the double-precision reference: finite,
+    // mostly covered, lit, and for `exact` within kExactTolerance wherever the reference is well-conditioned.
+    void checkAgainstReference(std::shared_ptr<const Model> scene, const ViewCamera& camera, const Rig& rig,
+                               const RenderSettings& s, bool exact) {
         QString error;
-        QVERIFY2(m_gl.setModel(planeScene(), &error), qPrintable(error));
+        QVERIFY2(m_gl.setModel(std::move(scene), &error), qPrintable(error));
         m_gl.setRig(rig);
         FloatImage radiance;
         GBuffer g;
-        QVERIFY2(m_gl.renderRadiance(planeCamera(), kSize, floatSettings(), &radiance, &error),
-                 qPrintable(error));
-        QVERIFY2(m_gl.renderGBuffer(planeCamera(), kSize, floatSettings(), &g, &error), qPrintable(error));
-        const ViewCamera cam = m_gl.renderer().effectiveCamera(planeCamera());
-        const Comparison c =
-            compareWithReference(radiance, g, rig, m_gl.renderer().sceneFrame(), cam.view(), kExactTolerance);
+        QVERIFY2(m_gl.renderRadiance(camera, kSize, s, &radiance, &error), qPrintable(error));
+        QVERIFY2(m_gl.renderGBuffer(camera, kSize, floatSettings(), &g, &error), qPrintable(error));
+        const ViewCamera cam = m_gl.renderer().effectiveCamera(camera);
+        const Comparison c = compareWithReference(radiance, g, rig, m_gl.renderer().sceneFrame(), cam.view(),
+                                                  exact ? kExactTolerance : 1.0);
         qInfo().noquote() << c.summary();
         QVERIFY2(c.nonFinite == 0, qPrintable(c.summary()));
         QVERIFY2(c.covered > kSize.width() * kSize.height() / 8, qPrintable(c.summary()));
         QVERIFY2(c.maxReference > 0.0, "the scene should be lit");
-        QVERIFY2(c.failures == 0, qPrintable(c.summary()));
-        QVERIFY2(c.skipped <= c.covered / 50, qPrintable(c.summary()));
+        if (exact) {
+            QVERIFY2(c.failures == 0, qPrintable(c.summary()));
+            QVERIFY2(c.skipped <= c.covered / 50, qPrintable(c.summary()));
+        }
     }
 };
 
