@@ -557,8 +557,9 @@ const float kMinRoughness = 0.0525;
 #endif
 uniform sampler2DArray uLtc;
 
-// Powers of two near 1/x and 1/√x for finite x > 0, from the exponent bits: no division and no square root,
-// which llvmpipe pays in full (the edge integrals below need lengths near 1, not exactly 1).
+// Powers of two near 1/x and 1/√x for finite x > 0 (x = 0 gives 2^127 and 2^64: the clip below then scales a
+// zero vector), from the exponent bits: no division and no square root, which llvmpipe pays in full (the
+// edge integrals below need lengths near 1, not exactly 1).
 float pow2Inverse(float x) { return intBitsToFloat((254 << 23) - (floatBitsToInt(x) & 0x7f800000)); }
 float pow2InverseSqrt(float x) {
     int e = ((floatBitsToInt(x) >> 23) & 0xff) - 127;
