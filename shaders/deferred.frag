@@ -2,6 +2,9 @@
 // covered pixels run. Every covered pixel is shaded once with whole 4x4 blocks of work, where the forward
 // pass would shade the partial blocks of every small triangle (a software rasteriser's main waste).
 // Same Surface values (RGBA32F, exact), same shadeSurface(): the same radiance as the forward path.
+// LR_ATTRIBUTE_GBUFFER: the G-buffer holds the fragment's attributes instead (surface.glsl), and this pass
+// builds the Surface with the material's textures, so the texture reads too run once per pixel in whole
+// blocks instead of in every small triangle's partial ones.
 uniform sampler2D uGBuffer0;  // decodeGBuffer's g0 .. g3 (gbuffer.glsl, generated from src/render/gbuffer.h)
 uniform sampler2D uGBuffer1;
 uniform sampler2D uGBuffer2;
@@ -16,8 +19,14 @@ out vec4 oColor;
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
+#ifdef LR_ATTRIBUTE_GBUFFER
+    decodeAttributes(texelFetch(uGBuffer0, p, 0), texelFetch(uGBuffer1, p, 0), texelFetch(uGBuffer2, p, 0),
+                     texelFetch(uGBuffer3, p, 0));
+    Surface s = surfaceHere();
+#else
     Surface s = decodeGBuffer(texelFetch(uGBuffer0, p, 0), texelFetch(uGBuffer1, p, 0),
                               texelFetch(uGBuffer2, p, 0), texelFetch(uGBuffer3, p, 0));
+#endif
     ShadeSettings st;
     st.ambient = uAmbient;
     st.distanceScale = uDistanceScale;

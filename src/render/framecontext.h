@@ -18,6 +18,8 @@
 
 namespace lr::render {
 
+struct GpuDraw;
+
 // Display: exposure, tone map and sRGB per fragment into an 8-bit target. Hdr: linear radiance into a
 // float target, then the tone-map pass. Both give the same pixels without MSAA.
 enum class ColourPath { Display, Hdr };
@@ -42,7 +44,10 @@ struct FrameContext {
     bool overlays = false;                 // gizmos or grid
     int samples = 0;                       // of the scene target (> 1: MSAA)
     bool gbufferReadBack = false;          // renderGBuffer: clear the G-buffer's colour too
-    GLuint outputFbo = 0;                  // the caller's framebuffer
+    // The deferred G-buffer holds attributes (FeatureKey::attributes) and the lighting pass builds every
+    // pixel's Surface with this draw's material (GpuModel::sharedMaterialDraw); nullptr: it holds Surfaces.
+    const GpuDraw* attributeDraw = nullptr;
+    GLuint outputFbo = 0; // the caller's framebuffer
     // The rig's environment lights the frame (its source is not None and one is loaded and uploaded:
     // LR_ENVIRONMENT in every lit program); its rotation, intensity and classic diffuse model.
     bool environment = false;

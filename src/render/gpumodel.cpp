@@ -65,6 +65,20 @@ void GpuModel::uploadTextures(QOpenGLFunctions_3_3_Core* gl) {
     }
 }
 
+const GpuDraw* GpuModel::sharedMaterialDraw() const {
+    const GpuDraw* first = nullptr;
+    for (const GpuDraw& d : m_draws) {
+        if (d.features.alphaBlend) continue;
+        if (!first) {
+            if (d.features.vertexColors || d.features.alphaMask) return nullptr;
+            first = &d;
+        } else if (d.material != first->material || !(d.features == first->features)) {
+            return nullptr;
+        }
+    }
+    return first;
+}
+
 GLuint GpuModel::textureName(int index, bool srgb) const {
     const auto it = m_textures.find({index, srgb});
     return it == m_textures.end() ? 0 : it->second;

@@ -37,6 +37,10 @@ class GpuModel {
 
     const Model* model() const { return m_model.get(); }
     const std::vector<GpuDraw>& draws() const { return m_draws; }
+    // The first opaque (not BLEND) draw when every opaque draw has its material and features and the
+    // deferred lighting pass can build their Surface from attributes (no vertex colours, no alpha MASK);
+    // nullptr otherwise. Selects the deferred path's attribute G-buffer (FeatureKey::attributes).
+    const GpuDraw* sharedMaterialDraw() const;
 
     // Interaction proxies of a dense model (lod.h), built on a worker thread after upload(): uploads them
     // once they are ready (with wait, blocks until then). True when the draws have them now.

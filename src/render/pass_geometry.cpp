@@ -91,13 +91,8 @@ FeatureKey MeshPass::meshKey(const FrameContext& frame, const PassScene& scene, 
     FeatureKey key;
     if (!gpass) key.rig = shaded;     // the G-pass does no lighting,
     key.rig.shading = shaded.shading; // but writes the physically based fields under PBR
-    key.material = d.features;
-    if (shaded.shading != ShadingModel::Pbr) // classic programs never sample the PBR textures
-        key.material.metalRoughTexture = key.material.occlusionTexture = false;
-    // Occlusion scales ambient light only (glTF): without any (no scene ambient, no light's ambient colour,
-    // no environment) it changes nothing, so the texture is not read (the G-buffer then holds occlusion 1).
-    if (rig.ambient == glm::dvec3(0.0) && !shaded.lightAmbient && !shaded.environment)
-        key.material.occlusionTexture = false;
+    key.material = sampledFeatures(d, rig, shaded);
+    key.attributes = gpass && frame.attributeDraw;           // it then writes attributes, not Surfaces
     key.quality = gpass ? Quality::Exact : settings.quality; // the G-buffer is the exact surface
     key.approximations = approx::forTier(settings.approximations, key.quality);
     // B2: an integer shininess becomes a chain of products (classic: PBR has no shininess)
@@ -110,6 +105,55 @@ FeatureKey MeshPass::meshKey(const FrameContext& frame, const PassScene& scene, 
     if (output == ShaderOutput::Display) key.toneMap = frame.toneMap;
     key.clustered = clustered;
     return key;
+}
+
+MaterialFeatures MeshPass::sampledFeatures(const GpuDraw& d, const Rig& rig, const RigFeatures& shaded) {
+    MaterialFeatures f = d.features;
+    if (shaded.shading != ShadingModel::Pbr) // classic programs never sample the PBR textures
+        f.metalRoughTexture = f.occlusionTexture = false;
+    // Occlusion scales ambient light only (glTF): without any (no scene ambient, no light's ambient colour,
+    // no environment) it changes nothing, so the texture is not read (the G-buffer then holds occlusion 1).
+    if (rig.ambient == glm::dvec3(0.0) && !shaded.lightAmbient && !shaded.environment)
+        f.occlusionTexture = false;
+    return f;
+}
+
+void MeshPass::bindMaterial(const FeatureKey& key, const MeshProgram& p, const GpuDraw& d, const Model& model,
+                            const Rig& rig, GLuint sampler) {
+    static const Material defaultMaterial;
+    const Material& m = d.material >= 0 ? model.materials[size_t(d.material)] : defaultMaterial;
+    glUniform4fv(p.baseColor, 1, glm::value_ptr(m.baseColor));
+    glUniform3fv(p.emissive, 1, glm::value_ptr(m.emissive));
+    glUniform3fv(p.specular, 1, glm::value_ptr(m.specular));
+    glUniform1f(p.shininess, m.shininess >= 0.0f ? m.shininess : float(rig.shading.shininess));
+    if (p.normalScale >= 0) glUniform1f(p.normalScale, m.normalScale);
+    if (p.alphaCutoff >= 0) glUniform1f(p.alphaCutoff, m.alphaCutoff);
+    const auto transforms = textureTransforms(m);
+    for (size_t i = 0; i < p.textureTransforms.size(); ++i)
+        if (p.textureTransforms[i] >= 0)
+            glUniformMatrix3fv(p.textureTransforms[i], 1, GL_FALSE,
+                               glm::value_ptr(textureTransformMatrix(*transforms[i])));
+    if (p.metallic >= 0) glUniform1f(p.metallic, m.metallic);
+    if (p.roughness >= 0) glUniform1f(p.roughness, m.roughness);
+    if (p.occlusionStrength >= 0) glUniform1f(p.occlusionStrength, m.occlusionStrength);
+    const std::pair<TextureUnit, GLuint> textures[] = {
+        {TextureUnit::BaseColor, d.baseColorTexture},
+        {TextureUnit::Normal, d.normalTexture},
+        {TextureUnit::Emissive, d.emissiveTexture},
+        {TextureUnit::MetalRough, key.material.metalRoughTexture ? d.metalRoughTexture : 0},
+        {TextureUnit::Occlusion, key.material.occlusionTexture ? d.occlusionTexture : 0}};
+    for (const auto& [unit, texture] : textures) {
+        if (!texture) continue;
+        glActiveTexture(textureUnit(unit));
+        glBindTexture(GL_TEXTURE_2D, texture);
+        glBindSampler(GLuint(unit), sampler);
+    }
+}
+
+void MeshPass::unbindMaterialSamplers() {
+    for (const TextureUnit unit : {TextureUnit::BaseColor, TextureUnit::Normal, TextureUnit::Emissive,
+                                   TextureUnit::MetalRough, TextureUnit::Occlusion})
+        glBindSampler(GLuint(unit), 0);
 }
 
 bool MeshPass::drawMeshes(const FrameContext& frame, PassScene& scene,
@@ -141,7 +185,6 @@ bool MeshPass::drawMeshes(const FrameContext& frame, PassScene& scene,
     if (environment) scene.environment->bind(this);
     bool ok = true;
     MeshProgram* current = nullptr;
-    const Material defaultMaterial;
     for (const auto& [key, d] : order) {
         QString error;
         MeshProgram* p = scene.programs->meshProgram(key, &error);
@@ -160,40 +203,7 @@ bool MeshPass::drawMeshes(const FrameContext& frame, PassScene& scene,
             if (environment && key.rig.environment)
                 scene.environment->setUniforms(this, p->program.get(), frame.environmentUniforms);
         }
-        const Material& m = d->material >= 0 ? model->materials[size_t(d->material)] : defaultMaterial;
-        glUniform4fv(p->baseColor, 1, glm::value_ptr(m.baseColor));
-        glUniform3fv(p->emissive, 1, glm::value_ptr(m.emissive));
-        glUniform3fv(p->specular, 1, glm::value_ptr(m.specular));
-        glUniform1f(p->shininess, m.shininess >= 0.0f ? m.shininess : float(rig.shading.shininess));
-        if (p->normalScale >= 0) glUniform1f(p->normalScale, m.normalScale);
-        if (p->alphaCutoff >= 0) glUniform1f(p->alphaCutoff, m.alphaCutoff);
-        const auto transforms = textureTransforms(m);
-        for (size_t i = 0; i < p->textureTransforms.size(); ++i)
-            if (p->textureTransforms[i] >= 0)
-                glUniformMatrix3fv(p->textureTransforms[i], 1, GL_FALSE,
-                                   glm::value_ptr(textureTransformMatrix(*transforms[i])));
-        if (p->metallic >= 0) glUniform1f(p->metallic, m.metallic);
-        if (p->roughness >= 0) glUniform1f(p->roughness, m.roughness);
-        if (p->occlusionStrength >= 0) glUniform1f(p->occlusionStrength, m.occlusionStrength);
-        const GLuint textures[kMaterialTextureUnits] = {d->baseColorTexture, d->normalTexture,
-                                                        d->emissiveTexture};
-        const GLuint sampler = key.quality == Quality::Fast ? scene.fastSampler : 0;
-        for (int i = 0; i < kMaterialTextureUnits; ++i) {
-            if (!textures[i]) continue;
-            const GLuint unit = GLuint(TextureUnit::BaseColor) + GLuint(i);
-            glActiveTexture(GL_TEXTURE0 + unit);
-            glBindTexture(GL_TEXTURE_2D, textures[i]);
-            glBindSampler(unit, sampler);
-        }
-        const std::pair<TextureUnit, GLuint> pbrTextures[] = {
-            {TextureUnit::MetalRough, key.material.metalRoughTexture ? d->metalRoughTexture : 0},
-            {TextureUnit::Occlusion, key.material.occlusionTexture ? d->occlusionTexture : 0}};
-        for (const auto& [unit, texture] : pbrTextures) {
-            if (!texture) continue;
-            glActiveTexture(textureUnit(unit));
-            glBindTexture(GL_TEXTURE_2D, texture);
-            glBindSampler(GLuint(unit), sampler);
-        }
+        bindMaterial(key, *p, *d, *model, rig, key.quality == Quality::Fast ? scene.fastSampler : 0);
         if (settings.cullBackFaces && !d->features.doubleSided)
             glEnable(GL_CULL_FACE);
         else
@@ -206,10 +216,7 @@ bool MeshPass::drawMeshes(const FrameContext& frame, PassScene& scene,
         ++scene.stats->drawCalls;
     }
     glBindVertexArray(0);
-    for (int i = 0; i < kMaterialTextureUnits; ++i)
-        glBindSampler(GLuint(TextureUnit::BaseColor) + GLuint(i), 0);
-    glBindSampler(GLuint(TextureUnit::MetalRough), 0);
-    glBindSampler(GLuint(TextureUnit::Occlusion), 0);
+    unbindMaterialSamplers();
     if (scene.shadows) scene.shadows->unbind(this);
     glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);

@@ -58,10 +58,17 @@ bool DeferredLightingPass::run(const FrameContext& frame, PassScene& scene) {
     if (key.output == ShaderOutput::Display) key.toneMap = frame.toneMap;
     key.deferredLighting = true;
     key.clustered = frame.clustered;
+    // The attribute G-buffer: this pass builds the Surface with the one material every pixel has.
+    const GpuDraw* draw = frame.attributeDraw;
+    if (draw) {
+        key.material = sampledFeatures(*draw, *scene.rig, key.rig);
+        key.attributes = true;
+    }
     QString error;
     MeshProgram* p = scene.programs->meshProgram(key, &error);
     if (!p) return fail(scene, error);
     p->program->bind();
+    if (draw) bindMaterial(key, *p, *draw, *model, *scene.rig, 0);
     scene.lights->setUniforms(this, *p, frame.shade, key.clustered);
     if (p->exposureScale >= 0) glUniform1f(p->exposureScale, frame.exposureScale);
     scene.lights->bind(this, key.clustered);
@@ -92,6 +99,7 @@ bool DeferredLightingPass::run(const FrameContext& frame, PassScene& scene) {
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
     if (scene.shadows) scene.shadows->unbind(this);
+    if (draw) unbindMaterialSamplers();
     p->program->release();
     return true;
 }

@@ -28,6 +28,7 @@
 namespace lr::render {
 
 struct GpuDraw;
+struct MeshProgram;
 
 // What the passes that draw the model's meshes share (pass_geometry.cpp): the program key of a draw and
 // the drawing of a list of draws in order, each with its material's uniforms and textures.
@@ -42,6 +43,14 @@ class MeshPass : public RenderPass {
     // `source`: whose draws these are (nullptr: the scene's model).
     bool drawMeshes(const FrameContext& frame, PassScene& scene, const DrawOrder& order, bool clustered,
                     bool blended, const GpuModel* source = nullptr);
+    // The draw's material features a lit program samples: no PBR textures under classic shading, no
+    // occlusion texture without ambient light to scale.
+    static MaterialFeatures sampledFeatures(const GpuDraw& d, const Rig& rig, const RigFeatures& shaded);
+    // The draw's material uniforms and textures for program `p` (keyed `key`), textures with `sampler`
+    // (0: each texture's own filtering).
+    void bindMaterial(const FeatureKey& key, const MeshProgram& p, const GpuDraw& d, const Model& model,
+                      const Rig& rig, GLuint sampler);
+    void unbindMaterialSamplers();
 };
 
 // Renders the depth maps of the casting lights whose map changed (shadowmaps.h): first in the chain, in
@@ -72,7 +81,7 @@ class GeometryPass final : public MeshPass {
 
 // Shades every covered G-buffer pixel once: a full-screen triangle on the far plane, depth-tested
 // GL_GREATER, scissored to the model's screen rectangle.
-class DeferredLightingPass final : public RenderPass {
+class DeferredLightingPass final : public MeshPass {
   public:
     const char* name() const override { return "deferred lighting"; }
     PassResources reads() const override {

@@ -18,22 +18,24 @@ namespace lr::render {
 // A named shader configuration (TrenchBroom's idea): which files make each stage.
 struct ShaderConfig {
     const char* name;
-    std::array<const char*, 6> vertex{}; // files under :/shaders/, in order; nullptr ends the list
-    std::array<const char*, 6> fragment{};
+    std::array<const char*, 7> vertex{}; // files under :/shaders/, in order; nullptr ends the list
+    std::array<const char*, 7> fragment{};
 };
 
 // shadows.glsl is empty unless the key casts shadows (LR_SHADOWS).
 inline constexpr ShaderConfig kMeshShader{
-    "mesh", {"mesh.vert"}, {"lighting.glsl", "shadows.glsl", "cluster.glsl", "gbuffer.glsl", "mesh.frag"}};
+    "mesh",
+    {"mesh.vert"},
+    {"lighting.glsl", "shadows.glsl", "cluster.glsl", "gbuffer.glsl", "surface.glsl", "mesh.frag"}};
 // The fast tier lights the vertices.
 inline constexpr ShaderConfig kVertexLitMeshShader{
     "mesh, vertex-lit",
     {"lighting.glsl", "shadows.glsl", "mesh.vert"},
-    {"lighting.glsl", "shadows.glsl", "cluster.glsl", "gbuffer.glsl", "mesh.frag"}};
+    {"lighting.glsl", "shadows.glsl", "cluster.glsl", "gbuffer.glsl", "surface.glsl", "mesh.frag"}};
 inline constexpr ShaderConfig kDeferredLightingShader{
     "deferred lighting",
     {"fullscreen.vert"},
-    {"lighting.glsl", "shadows.glsl", "cluster.glsl", "gbuffer.glsl", "deferred.frag"}};
+    {"lighting.glsl", "shadows.glsl", "cluster.glsl", "gbuffer.glsl", "surface.glsl", "deferred.frag"}};
 // Depth only, into a shadow map (shadowmaps.h): uLightMatrix = the light's clip from model positions.
 inline constexpr ShaderConfig kShadowDepthShader{"shadow depth", {"shadow.vert"}, {"shadow.frag"}};
 inline constexpr ShaderConfig kToneMapShader{
@@ -42,18 +44,21 @@ inline constexpr ShaderConfig kOverlayShader{"overlay", {"gizmo.vert"}, {"lighti
 // Environment lighting (LR_ENVIRONMENT, environmentgl.h): the lit configurations with environment.glsl
 // before the stage that shades, chosen only for keys with the bit, so every other program's text is
 // exactly what it was. The background pass (pass_background.cpp) draws the environment behind the model.
-inline constexpr ShaderConfig kMeshEnvironmentShader{
-    "mesh",
-    {"mesh.vert"},
-    {"lighting.glsl", "shadows.glsl", "cluster.glsl", "gbuffer.glsl", "environment.glsl", "mesh.frag"}};
+inline constexpr ShaderConfig kMeshEnvironmentShader{"mesh",
+                                                     {"mesh.vert"},
+                                                     {"lighting.glsl", "shadows.glsl", "cluster.glsl",
+                                                      "gbuffer.glsl", "environment.glsl", "surface.glsl",
+                                                      "mesh.frag"}};
 inline constexpr ShaderConfig kVertexLitMeshEnvironmentShader{
     "mesh, vertex-lit",
     {"lighting.glsl", "shadows.glsl", "mesh.vert"},
-    {"lighting.glsl", "shadows.glsl", "cluster.glsl", "gbuffer.glsl", "environment.glsl", "mesh.frag"}};
+    {"lighting.glsl", "shadows.glsl", "cluster.glsl", "gbuffer.glsl", "environment.glsl", "surface.glsl",
+     "mesh.frag"}};
 inline constexpr ShaderConfig kDeferredLightingEnvironmentShader{
     "deferred lighting",
     {"fullscreen.vert"},
-    {"lighting.glsl", "shadows.glsl", "cluster.glsl", "gbuffer.glsl", "environment.glsl", "deferred.frag"}};
+    {"lighting.glsl", "shadows.glsl", "cluster.glsl", "gbuffer.glsl", "environment.glsl", "surface.glsl",
+     "deferred.frag"}};
 inline constexpr ShaderConfig kBackgroundShader{
     "environment background", {"fullscreen.vert"}, {"lighting.glsl", "environment.glsl", "background.frag"}};
 

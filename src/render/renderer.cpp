@@ -324,10 +324,14 @@ bool Renderer::render(const ViewCamera& camera, QSize size, const RenderSettings
     if (!updateScene(frame.view)) return false;
     updateEnvironment(&frame);
     const int samples = frame.fast ? 0 : settings.msaaSamples;
+    // One opaque material: the deferred path can sample its textures once per pixel (FrameContext).
+    const bool visibleGround = m_ground->model() && rig().ground.mode == GroundMode::Visible;
+    const GpuDraw* shared =
+        settings.deferredTextures && !visibleGround ? m_model->sharedMaterialDraw() : nullptr;
+    const int minLights = samples > 1 ? kDeferredMsaaMaxLights : shared ? 0 : kDeferredMinLights;
     const bool wantDeferred =
         !frame.fast && (settings.shadingPath == ShadingPath::Deferred ||
-                        (settings.shadingPath == ShadingPath::Auto &&
-                         m_lights->count() >= (samples <= 1 ? kDeferredMinLights : kDeferredMsaaMaxLights)));
+                        (settings.shadingPath == ShadingPath::Auto && m_lights->count() >= minLights));
     const bool hdr = settings.hdrTarget;
     const GLenum colorFormat = !hdr ? GL_RGBA8 : settings.hdrFloat32 ? GL_RGBA32F : GL_RGBA16F;
     if (!ensureTargets(frame.targetSize, wantDeferred ? 0 : samples, colorFormat)) return false;
@@ -336,6 +340,7 @@ bool Renderer::render(const ViewCamera& camera, QSize size, const RenderSettings
     frame.samples = m_targets->samples;
     QString error;
     if (frame.deferred && !m_targets->createGBuffer(this, &error)) return fail(error);
+    if (frame.deferred) frame.attributeDraw = shared;
     glViewport(0, 0, frame.targetSize.width(), frame.targetSize.height());
     // Fast lights the vertices, each with every light: clusters (per fragment) do not apply.
     frame.clustered =
@@ -358,6 +363,7 @@ bool Renderer::render(const ViewCamera& camera, QSize size, const RenderSettings
     PassScene scene = passScene();
     const bool ok = m_plan->run(frame, scene) || fail(scene.error);
     m_stats.deferred = frame.deferred;
+    m_stats.deferredTextures = frame.attributeDraw != nullptr;
     m_lastFrameHdr = hdr;
     m_timer->end(this);
     glBindFramebuffer(GL_FRAMEBUFFER, targetFbo);

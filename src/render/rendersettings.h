@@ -15,9 +15,12 @@ namespace lr {
 // Forward: one pass shades every fragment of every triangle. Deferred: a G-pass writes the surfaces, then
 // one full-screen pass shades each covered pixel once (no MSAA; much cheaper on software rasterisers,
 // whose cost is whole 4x4 blocks per small triangle, but the G-pass costs about as much as a forward
-// pass without lights). Both give the same radiance. Auto: deferred when msaaSamples <= 1 and at least
-// kDeferredMinLights lights are uploaded (measured crossover on llvmpipe, DamagedHelmet at 1280x720:
-// forward ~17 + 3.3 n ms CPU, deferred ~30 + 1.1 n), else forward. From kDeferredMsaaMaxLights lights on,
+// pass without lights). Both give the same radiance. Auto: deferred when msaaSamples <= 1 and either every
+// opaque draw shares one material (deferredTextures below: the G-pass then writes only attributes and is
+// cheap; helmet_1pt exact 146 -> 127 M instructions a frame under cachegrind) or at least
+// kDeferredMinLights lights are uploaded (measured crossover on llvmpipe, DamagedHelmet at 1280x720 with
+// the G-pass sampling the textures: forward ~17 + 3.3 n ms CPU, deferred ~30 + 1.1 n), else forward.
+// From kDeferredMsaaMaxLights lights on,
 // Auto shades deferred even when MSAA was asked for, without it: forward with MSAA 4 costs ~2.6x forward
 // (64 lights: ~0.6 s a frame on llvmpipe against ~0.1 s deferred), which would freeze the editor.
 enum class ShadingPath { Auto, Forward, Deferred };
@@ -53,6 +56,11 @@ struct RenderSettings {
     // bounded range), 0 never, 1 always. Same pixels either way: it only skips exact zeros.
     int clusteredShading = -1;
     ShadingPath shadingPath = ShadingPath::Auto; // Deferred ignores msaaSamples
+    // Deferred path: when every opaque draw shares one material (GpuModel::sharedMaterialDraw) the G-pass
+    // writes only the interpolated attributes and the lighting pass samples the material's textures, once
+    // per pixel in whole 4x4 blocks (shaders/surface.glsl). False: the G-pass writes Surfaces, as for
+    // several materials. The same radiance either way (tst_renderdeferred).
+    bool deferredTextures = true;
     // The view or a light is being dragged: dense models draw their interaction proxy (lod.h) once it is
     // built; the full mesh otherwise.
     bool interactive = false;
@@ -66,7 +74,8 @@ struct RenderStats {
     int lightsInRig = 0;
     qint64 triangles = 0;
     int drawCalls = 0;
-    bool deferred = false; // the last frame took the deferred path
+    bool deferred = false;         // the last frame took the deferred path
+    bool deferredTextures = false; // ... with the attribute G-buffer (FrameContext::attributeDraw)
     double lastGpuMs =
         -1.0; // GL_TIME_ELAPSED of a recent frame (asynchronous: a frame or two old); < 0: none yet
     bool clustered = false;        // the last frame used clustered shading

@@ -99,6 +99,7 @@ std::uint64_t FeatureKey::bits() const {
     put(rig.softShadows, 1);
     put(material.shadowCatcher, 1);
     put(rig.environment, 1);
+    put(attributes, 1);
     Q_ASSERT(shift <= 64);
     return b;
 }
@@ -133,6 +134,7 @@ QString FeatureKey::describe() const {
     if (material.shadowCatcher) parts << QStringLiteral("shadow-catcher");
     parts << QStringLiteral("quality:") + toString(quality);
     if (output == ShaderOutput::GBuffer) parts << QStringLiteral("gbuffer");
+    if (attributes) parts << QStringLiteral("attributes");
     if (clustered) parts << QStringLiteral("clustered");
     if (shininessInt) parts << QStringLiteral("shininess:%1").arg(shininessInt);
     if (output == ShaderOutput::Display) parts << QStringLiteral("tone-map:") + toString(toneMap);
@@ -266,6 +268,7 @@ QByteArray shaderPrelude(const FeatureKey& key) {
     if (pbr && key.material.occlusionTexture) out += "#define LR_OCCLUSION_TEXTURE 1\n";
     out += "#define LR_QUALITY_" + macroName(EnumNames<Quality>::names[size_t(key.quality)]) + " 1\n";
     if (key.deferredLighting) out += "#define LR_DEFERRED_LIGHTING 1\n";
+    if (key.attributes) out += "#define LR_ATTRIBUTE_GBUFFER 1\n";
     if (key.clustered) out += "#define LR_CLUSTERED 1\n";
     // The tier's approximations (docs/quality.md), as the key names them (approx::forTier keeps its own).
     const std::uint8_t approximations = approx::forTier(key.approximations, key.quality);

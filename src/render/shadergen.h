@@ -88,6 +88,10 @@ struct FeatureKey {
     // The deferred lighting pass (fullscreen.vert + deferred.frag; `material` unused) rather than a mesh
     // program (mesh.vert + mesh.frag). G-buffer mesh programs ignore `rig`: the renderer leaves it empty.
     bool deferredLighting = false;
+    // The G-buffer holds the fragments' attributes (LR_ATTRIBUTE_GBUFFER, shaders/surface.glsl), not their
+    // Surface: the G-pass (output GBuffer) writes them and the deferred lighting pass, keyed with the
+    // drawn material's `material` features, builds the Surface from them and that material's textures.
+    bool attributes = false;
     // Clustered forward shading (cluster.h, shaders/cluster.glsl): each fragment loops over its cluster's
     // lights only. Chosen per frame by the renderer when the rig has many range-bounded lights.
     bool clustered = false;

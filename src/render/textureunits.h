@@ -34,8 +34,6 @@ enum class TextureUnit : GLuint {
 
 constexpr int kEnvironmentUnitsNeeded = 19;
 
-constexpr int kMaterialTextureUnits = 3; // BaseColor, Normal, Emissive
-
 constexpr GLenum textureUnit(TextureUnit unit, int offset = 0) {
     return GLenum(GL_TEXTURE0 + GLuint(unit) + GLuint(offset));
 }

@@ -34,6 +34,16 @@ using lrtest::haveDisplay; // tests/support/cli.h
         return QTest::qExec(&tc, argc, argv);                                                                \
     }
 
+// The largest per-channel |a − b| / max(1, |a|) of two images of one size (RGBA, alpha included).
+inline double maxRelativeDifference(const FloatImage& a, const FloatImage& b) {
+    double worst = 0.0;
+    for (size_t i = 0; i < a.pixels.size(); ++i)
+        for (int k = 0; k < 4; ++k)
+            worst = std::max(worst, double(std::abs(a.pixels[i][k] - b.pixels[i][k])) /
+                                        std::max(1.0, double(std::abs(a.pixels[i][k]))));
+    return worst;
+}
+
 struct Comparison {
     int covered = 0;  // pixels with a surface
     int compared = 0; // ... whose reference is well-conditioned

@@ -81,15 +81,6 @@ Material emissiveMaterial(glm::vec3 colour, float alpha, AlphaMode mode) {
     return m;
 }
 
-double maxRelativeDifference(const FloatImage& a, const FloatImage& b) {
-    double worst = 0.0;
-    for (size_t i = 0; i < a.pixels.size(); ++i)
-        for (int k = 0; k < 4; ++k)
-            worst = std::max(worst, double(std::abs(a.pixels[i][k] - b.pixels[i][k])) /
-                                        std::max(1.0, double(std::abs(a.pixels[i][k]))));
-    return worst;
-}
-
 bool near(glm::vec4 a, glm::vec4 b, float tol = 1e-5f) {
     for (int k = 0; k < 4; ++k)
         if (!(std::abs(a[k] - b[k]) <= tol)) return false;

@@ -271,6 +271,7 @@ class TestRenderPasses : public QObject {
         m_gl->setRig(rigOf({point({0.5, 1.0, 2.0}, FalloffModel::InverseSquare)}));
         RenderSettings s;
         s.msaaSamples = 0;
+        s.shadingPath = ShadingPath::Forward; // Auto would shade this one-material model deferred
         QVERIFY2(m_gl->renderFrame(sphereCamera(), QSize(64, 48), s, &error), qPrintable(error));
         const int builds = m_gl->renderer().stats().renderPlanBuilds;
         QCOMPARE(m_gl->renderer().renderPlan(), QStringLiteral("geometry (shaded) > present"));

@@ -1,0 +1,179 @@
+// The attribute G-buffer (shaders/surface.glsl, RenderSettings::deferredTextures): when every opaque draw
+// shares one material the G-pass writes the interpolated attributes and the deferred lighting pass samples
+// the textures. It must shade exactly what the forward path and the Surface G-buffer shade, through every
+// input it carries: a textured, normal-mapped, texture-transformed, double-sided material on a sphere
+// (curved: UV derivatives vary per pixel) and on a plane seen from its back with mirrored tangents.
+#include "glfixture.h"
+#include "scenes.h"
+
+#include "render/offscreen.h"
+
+#include <QTest>
+#include <cmath>
+
+using namespace lr;
+using namespace lr::render;
+using namespace lr::test;
+
+namespace {
+
+// A texture whose texels all differ (hash colours): any change of mip level or texel shows.
+QImage noise(int n, unsigned seed) {
+    QImage img(n, n, QImage::Format_RGBA8888);
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+            unsigned h = (unsigned(x) * 73856093u) ^ (unsigned(y) * 19349663u) ^ (seed * 83492791u);
+            h = (h ^ (h >> 13)) * 0x5bd1e995u;
+            img.setPixelColor(x, y, QColor(int(h & 255), int((h >> 8) & 255), int((h >> 16) & 255), 255));
+        }
+    return img;
+}
+
+// The sphere and, under it, a plane whose front faces point down (the camera above sees its back faces),
+// both with one material using every texture role.
+std::shared_ptr<Model> texturedScene() {
+    auto m = std::make_shared<Model>(makeSphere(1.0, 48, 24));
+    Mesh plane = makePlane(2.0).meshes.front();
+    for (Vertex& v : plane.vertices) {
+        const auto turn = [](glm::vec3 p) { return glm::vec3(p.x, -p.z, p.y); }; // +Z -> -Y
+        v.position = turn(v.position) + glm::vec3(0.0f, -1.1f, 0.0f);
+        v.normal = turn(v.normal);
+        v.tangent = glm::vec4(turn(glm::vec3(v.tangent)), -1.0f); // mirrored UVs
+    }
+    plane.material = 0;
+    m->meshes.push_back(plane);
+    m->bounds.min = glm::dvec3(-2.0, -1.2, -2.0);
+    m->bounds.max = glm::dvec3(2.0, 1.0, 2.0);
+    QImage normals = noise(32, 2);
+    for (int y = 0; y < normals.height(); ++y) // keep the normals in the upper hemisphere (z > 0.5)
+        for (int x = 0; x < normals.width(); ++x) {
+            QColor c = normals.pixelColor(x, y);
+            c.setBlue(200 + c.blue() % 56);
+            normals.setPixelColor(x, y, c);
+        }
+    m->textures = {{QStringLiteral("*base"), noise(64, 1)},
+                   {QStringLiteral("*normal"), normals},
+                   {QStringLiteral("*emissive"), noise(16, 3)},
+                   {QStringLiteral("*mr"), noise(32, 4)}};
+    Material& mat = m->materials[0];
+    mat.pbr = true;
+    mat.baseColor = {0.9f, 0.8f, 0.7f, 1.0f};
+    mat.emissive = {0.05f, 0.04f, 0.03f};
+    mat.specular = {0.5f, 0.5f, 0.5f};
+    mat.shininess = 40.0f;
+    mat.baseColorTexture = 0;
+    mat.normalTexture = 1;
+    mat.normalScale = 0.8f;
+    mat.emissiveTexture = 2;
+    mat.metallicRoughnessTexture = 3;
+    mat.baseColorTransform.rotation = 0.3f;
+    mat.baseColorTransform.scale = {2.0f, 1.5f};
+    mat.normalTransform.offset = {0.25f, 0.0f};
+    mat.doubleSided = true;
+    return m;
+}
+
+ViewCamera aboveCamera() {
+    ViewCamera c;
+    c.eye = {0.3, 1.8, 3.2};
+    c.target = {0.0, -0.3, 0.0};
+    c.yfovDeg = 50.0;
+    return c;
+}
+
+} // namespace
+
+class TestDeferredTextures : public QObject {
+    Q_OBJECT
+    OffscreenRenderer m_gl;
+
+    FloatImage radiance(const Rig& rig, ShadingPath path, bool deferredTextures, bool* attributes) {
+        RenderSettings s;
+        s.msaaSamples = 0;
+        s.hdrFloat32 = true;
+        s.shadingPath = path;
+        s.deferredTextures = deferredTextures;
+        m_gl.setRig(rig);
+        FloatImage out;
+        QString error;
+        if (!m_gl.renderRadiance(aboveCamera(), QSize(160, 120), s, &out, &error))
+            qFatal("%s", qPrintable(error));
+        *attributes = m_gl.renderer().stats().deferredTextures;
+        return out;
+    }
+
+  private slots:
+    void initTestCase() {
+        LR_REQUIRE_DISPLAY();
+        QString error;
+        QVERIFY2(m_gl.initialize(&error), qPrintable(error));
+        QVERIFY2(m_gl.setModel(texturedScene(), &error), qPrintable(error));
+    }
+
+    void sameRadianceAsForwardAndSurfaces_data() {
+        QTest::addColumn<int>("rigCase");
+        QTest::newRow("classic") << 0;
+        QTest::newRow("pbr") << 1;
+    }
+
+    void sameRadianceAsForwardAndSurfaces() {
+        QFETCH(int, rigCase);
+        Rig rig = rigCase == 0 ? rigOf({point({1.0, 2.0, 2.5}, FalloffModel::InverseSquare),
+                                        directional({-0.3, -1.0, -0.2}, DiffuseModel::Lambert)})
+                               : pbrRig({gltfPoint({1.0, 2.0, 2.5}, 15.0, 20.0),
+                                         gltfSpot({-1.0, 0.5, 2.0}, {0.0, -1.0, 0.0}, 30.0)},
+                                        glm::dvec3(0.05));
+        bool forwardAttr = true, attr = false, surfaceAttr = true;
+        const FloatImage forward = radiance(rig, ShadingPath::Forward, true, &forwardAttr);
+        const FloatImage attributes = radiance(rig, ShadingPath::Deferred, true, &attr);
+        const FloatImage surfaces = radiance(rig, ShadingPath::Deferred, false, &surfaceAttr);
+        QVERIFY(!forwardAttr && attr && !surfaceAttr); // each took the path it names
+        int covered = 0, backFaces = 0;
+        for (int y = 0; y < forward.height; ++y)
+            for (int x = 0; x < forward.width; ++x) {
+                covered += forward.at(x, y).a > 0.5f;
+                backFaces += forward.at(x, y).a > 0.5f && y > forward.height * 3 / 4;
+            }
+        QVERIFY2(covered > 6000 && backFaces > 500,
+                 qPrintable(QStringLiteral("%1 %2").arg(covered).arg(backFaces)));
+        const double a = maxRelativeDifference(forward, attributes),
+                     b = maxRelativeDifference(surfaces, attributes);
+        qInfo("covered %d (back faces %d); max relative difference: forward %g, surfaces %g", covered,
+              backFaces, a, b);
+        QVERIFY2(a <= 1e-6 && b <= 1e-6, qPrintable(QStringLiteral("forward %1, surfaces %2").arg(a).arg(b)));
+        // The textures matter here: without them the image changes (the comparison could fail).
+        auto plain = std::make_shared<Model>(*texturedScene());
+        plain->materials[0].baseColorTexture = -1;
+        QString error;
+        QVERIFY(m_gl.setModel(plain, &error));
+        bool unused = false;
+        QVERIFY(maxRelativeDifference(radiance(rig, ShadingPath::Deferred, true, &unused), attributes) >
+                0.05);
+        QVERIFY(m_gl.setModel(texturedScene(), &error));
+    }
+
+    // Auto shades a one-material model deferred at any light count without MSAA (the G-pass is cheap), and
+    // forward with MSAA; a second material (a visible ground, or two materials) keeps the Surface G-buffer.
+    void autoPathFollowsTheMaterials() {
+        Rig rig = rigOf({point({1.0, 2.0, 2.5}, FalloffModel::InverseSquare)});
+        bool attr = false;
+        radiance(rig, ShadingPath::Auto, true, &attr);
+        QVERIFY(m_gl.renderer().stats().deferred && attr);
+        radiance(rig, ShadingPath::Auto, false, &attr);
+        QVERIFY(!m_gl.renderer().stats().deferred && !attr); // one light: forward without the attribute path
+        auto two = std::make_shared<Model>(*texturedScene());
+        two->materials.push_back(two->materials[0]);
+        two->meshes[1].material = 1;
+        QString error;
+        QVERIFY(m_gl.setModel(two, &error));
+        radiance(rig, ShadingPath::Deferred, true, &attr);
+        QVERIFY(m_gl.renderer().stats().deferred && !attr);
+        rig.ground.mode = GroundMode::Visible;
+        QVERIFY(m_gl.setModel(texturedScene(), &error));
+        radiance(rig, ShadingPath::Deferred, true, &attr);
+        QVERIFY(m_gl.renderer().stats().deferred && !attr);
+    }
+};
+
+LR_GL_TEST_MAIN(TestDeferredTextures)
+#include "tst_deferredtextures.moc"
