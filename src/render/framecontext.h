@@ -7,6 +7,7 @@
 #include "camera.h"
 #include "core/shade.h"
 #include "environmentgl.h"
+#include "gpumodel.h"
 #include "rendersettings.h"
 
 #include <QOpenGLFunctions_3_3_Core>
@@ -15,10 +16,9 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
+#include <vector>
 
 namespace lr::render {
-
-struct GpuDraw;
 
 // Display: exposure, tone map and sRGB per fragment into an 8-bit target. Hdr: linear radiance into a
 // float target, then the tone-map pass. Both give the same pixels without MSAA.
@@ -44,9 +44,10 @@ struct FrameContext {
     bool overlays = false;                 // gizmos or grid
     int samples = 0;                       // of the scene target (> 1: MSAA)
     bool gbufferReadBack = false;          // renderGBuffer: clear the G-buffer's colour too
-    // The deferred G-buffer holds attributes (FeatureKey::attributes) and the lighting pass builds every
-    // pixel's Surface with this draw's material (GpuModel::sharedMaterialDraw); nullptr: it holds Surfaces.
-    const GpuDraw* attributeDraw = nullptr;
+    // The deferred G-buffer holds attributes (FeatureKey::attributes) and the lighting pass builds each
+    // pixel's Surface with the material its stencil value names: index + 1 into this list of every opaque
+    // material drawn, the ground's too (GpuModel::appendMaterials). Empty: the G-buffer holds Surfaces.
+    std::vector<AttributeMaterial> attributeMaterials;
     GLuint outputFbo = 0; // the caller's framebuffer
     // The rig's environment lights the frame (its source is not None and one is loaded and uploaded:
     // LR_ENVIRONMENT in every lit program); its rotation, intensity and classic diffuse model.

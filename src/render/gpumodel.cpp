@@ -65,18 +65,25 @@ void GpuModel::uploadTextures(QOpenGLFunctions_3_3_Core* gl) {
     }
 }
 
-const GpuDraw* GpuModel::sharedMaterialDraw() const {
-    const GpuDraw* first = nullptr;
+int GpuModel::materialSlot(const std::vector<AttributeMaterial>& materials, const GpuDraw& d) const {
+    for (size_t i = 0; i < materials.size(); ++i)
+        if (materials[i].source == this && materials[i].draw->material == d.material &&
+            materials[i].draw->features == d.features)
+            return int(i) + 1;
+    return 0;
+}
+
+bool GpuModel::appendMaterials(std::vector<AttributeMaterial>& out) const {
+    const size_t before = out.size();
     for (const GpuDraw& d : m_draws) {
-        if (d.features.alphaBlend) continue;
-        if (!first) {
-            if (d.features.vertexColors || d.features.alphaMask) return nullptr;
-            first = &d;
-        } else if (d.material != first->material || !(d.features == first->features)) {
-            return nullptr;
+        if (d.features.alphaBlend || materialSlot(out, d)) continue;
+        if (d.features.vertexColors || d.features.alphaMask || out.size() >= size_t(kMaxAttributeMaterials)) {
+            out.resize(before);
+            return false;
         }
+        out.push_back({&d, this});
     }
-    return first;
+    return true;
 }
 
 GLuint GpuModel::textureName(int index, bool srgb) const {

@@ -29,6 +29,18 @@ struct GpuDraw {
     glm::vec3 center{0.0f}; // of the mesh's bounds, relative to Model::origin: the blend pass sorts by it
 };
 
+class GpuModel;
+
+// A material of the attribute G-buffer (FrameContext::attributeMaterials): a draw that has it and the
+// model the draw belongs to.
+struct AttributeMaterial {
+    const GpuDraw* draw = nullptr;
+    const GpuModel* source = nullptr;
+};
+// At most this many, so that a frame runs as many lighting passes (one per material, each over the
+// model's screen rectangle, stencil-tested); more fall back to the Surface G-buffer.
+constexpr int kMaxAttributeMaterials = 8;
+
 class GpuModel {
   public:
     // Uploads every non-empty mesh. On failure (e.g. out of GPU memory) releases what it made.
@@ -37,10 +49,13 @@ class GpuModel {
 
     const Model* model() const { return m_model.get(); }
     const std::vector<GpuDraw>& draws() const { return m_draws; }
-    // The first opaque (not BLEND) draw when every opaque draw has its material and features and the
-    // deferred lighting pass can build their Surface from attributes (no vertex colours, no alpha MASK);
-    // nullptr otherwise. Selects the deferred path's attribute G-buffer (FeatureKey::attributes).
-    const GpuDraw* sharedMaterialDraw() const;
+    // Appends one entry per distinct material (index and features) of the opaque (not BLEND) draws not
+    // already in `out`, for the attribute G-buffer (FrameContext::attributeMaterials). False, `out` left
+    // as it was, when a draw has vertex colours or alpha MASK (the G-pass would have to read textures) or
+    // the list would exceed kMaxAttributeMaterials.
+    bool appendMaterials(std::vector<AttributeMaterial>& out) const;
+    // The index + 1 of `d`'s material in `materials` (its stencil value), 0 when it is not there.
+    int materialSlot(const std::vector<AttributeMaterial>& materials, const GpuDraw& d) const;
 
     // Interaction proxies of a dense model (lod.h), built on a worker thread after upload(): uploads them
     // once they are ready (with wait, blocks until then). True when the draws have them now.

@@ -39,9 +39,13 @@ bool GeometryPass::run(const FrameContext& frame, PassScene& scene) {
     if (gpass) {
         // The G-buffer's colour needs no clear for the lighting pass (it reads only pixels a surface was
         // drawn on); a read-back reads every pixel.
+        // The attribute G-buffer marks each pixel with its material's stencil value (materialSlot).
         glBindFramebuffer(GL_FRAMEBUFFER, targets.gbufferFbo);
         if (frame.gbufferReadBack) glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-        glClear(GL_DEPTH_BUFFER_BIT | (frame.gbufferReadBack ? GL_COLOR_BUFFER_BIT : 0));
+        const bool stencil = !frame.attributeMaterials.empty();
+        if (stencil) glClearStencil(0);
+        glClear(GL_DEPTH_BUFFER_BIT | (frame.gbufferReadBack ? GL_COLOR_BUFFER_BIT : 0) |
+                (stencil ? GL_STENCIL_BUFFER_BIT : 0));
     } else {
         glBindFramebuffer(GL_FRAMEBUFFER, targets.drawFbo());
         glClearColor(frame.clearColour.r, frame.clearColour.g, frame.clearColour.b, frame.clearColour.a);
@@ -92,8 +96,8 @@ FeatureKey MeshPass::meshKey(const FrameContext& frame, const PassScene& scene, 
     if (!gpass) key.rig = shaded;     // the G-pass does no lighting,
     key.rig.shading = shaded.shading; // but writes the physically based fields under PBR
     key.material = sampledFeatures(d, rig, shaded);
-    key.attributes = gpass && frame.attributeDraw;           // it then writes attributes, not Surfaces
-    key.quality = gpass ? Quality::Exact : settings.quality; // the G-buffer is the exact surface
+    key.attributes = gpass && !frame.attributeMaterials.empty(); // then it writes attributes, not Surfaces
+    key.quality = gpass ? Quality::Exact : settings.quality;     // the G-buffer is the exact surface
     key.approximations = approx::forTier(settings.approximations, key.quality);
     // B2: an integer shininess becomes a chain of products (classic: PBR has no shininess)
     if ((key.approximations & approx::kB2) && shaded.shading == ShadingModel::Classic) {
@@ -179,6 +183,11 @@ bool MeshPass::drawMeshes(const FrameContext& frame, PassScene& scene,
     }
     glFrontFace(GL_CCW);
     glCullFace(GL_BACK);
+    if (!order.empty() && order.front().first.attributes) { // the attribute G-pass's stencil values
+        glEnable(GL_STENCIL_TEST);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+        glStencilMask(0xFF);
+    }
     scene.lights->bind(this, clustered);
     if (scene.shadows) scene.shadows->bind(this);
     const bool environment = frame.environment && scene.environment;
@@ -204,6 +213,9 @@ bool MeshPass::drawMeshes(const FrameContext& frame, PassScene& scene,
                 scene.environment->setUniforms(this, p->program.get(), frame.environmentUniforms);
         }
         bindMaterial(key, *p, *d, *model, rig, key.quality == Quality::Fast ? scene.fastSampler : 0);
+        if (key.attributes)
+            glStencilFunc(GL_ALWAYS,
+                          (source ? source : scene.model)->materialSlot(frame.attributeMaterials, *d), 0xFF);
         if (settings.cullBackFaces && !d->features.doubleSided)
             glEnable(GL_CULL_FACE);
         else
@@ -217,6 +229,7 @@ bool MeshPass::drawMeshes(const FrameContext& frame, PassScene& scene,
     }
     glBindVertexArray(0);
     unbindMaterialSamplers();
+    glDisable(GL_STENCIL_TEST);
     if (scene.shadows) scene.shadows->unbind(this);
     glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);

@@ -58,25 +58,10 @@ bool DeferredLightingPass::run(const FrameContext& frame, PassScene& scene) {
     if (key.output == ShaderOutput::Display) key.toneMap = frame.toneMap;
     key.deferredLighting = true;
     key.clustered = frame.clustered;
-    // The attribute G-buffer: this pass builds the Surface with the one material every pixel has.
-    const GpuDraw* draw = frame.attributeDraw;
-    if (draw) {
-        key.material = sampledFeatures(*draw, *scene.rig, key.rig);
-        key.attributes = true;
-    }
-    QString error;
-    MeshProgram* p = scene.programs->meshProgram(key, &error);
-    if (!p) return fail(scene, error);
-    p->program->bind();
-    if (draw) bindMaterial(key, *p, *draw, *model, *scene.rig, 0);
-    scene.lights->setUniforms(this, *p, frame.shade, key.clustered);
-    if (p->exposureScale >= 0) glUniform1f(p->exposureScale, frame.exposureScale);
-    scene.lights->bind(this, key.clustered);
-    if (scene.shadows) scene.shadows->bind(this);
-    if (key.rig.environment) {
-        scene.environment->setUniforms(this, p->program.get(), frame.environmentUniforms);
-        scene.environment->bind(this);
-    }
+    // Only the model's screen rectangle: a software rasteriser runs the shader for background blocks too,
+    // even where the depth test rejects every pixel.
+    const QRect scissor = screenBounds(scene.drawnBounds, frame.projection * frame.view, frame.targetSize);
+    if (scissor.isEmpty()) return true;
     for (int i = 0; i < kGBufferTargets; ++i) {
         glActiveTexture(textureUnit(TextureUnit::GBuffer0, i));
         glBindTexture(GL_TEXTURE_2D, targets.gbuffer[i]);
@@ -87,21 +72,54 @@ bool DeferredLightingPass::run(const FrameContext& frame, PassScene& scene) {
     glDepthMask(GL_FALSE);
     glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);
-    // Only the model's screen rectangle: a software rasteriser runs the shader for background blocks too,
-    // even where the depth test rejects every pixel.
-    const QRect scissor = screenBounds(scene.drawnBounds, frame.projection * frame.view, frame.targetSize);
     glEnable(GL_SCISSOR_TEST);
     glScissor(scissor.x(), scissor.y(), scissor.width(), scissor.height());
     glBindVertexArray(scene.emptyVao);
-    if (!scissor.isEmpty()) glDrawArrays(GL_TRIANGLES, 0, 3);
+    scene.lights->bind(this, key.clustered);
+    if (scene.shadows) scene.shadows->bind(this);
+    if (key.rig.environment) scene.environment->bind(this);
+    // One full-screen triangle, or under the attribute G-buffer one per material, each where the stencil
+    // holds that material's value (the G-pass wrote it), its Surface built with that material.
+    const std::vector<AttributeMaterial>& materials = frame.attributeMaterials;
+    if (!materials.empty()) {
+        glEnable(GL_STENCIL_TEST);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+        glStencilMask(0);
+    }
+    bool ok = true;
+    for (size_t m = 0; m < std::max<size_t>(1, materials.size()); ++m) {
+        const AttributeMaterial* material = materials.empty() ? nullptr : &materials[m];
+        if (material) {
+            key.material = sampledFeatures(*material->draw, *scene.rig, key.rig);
+            key.attributes = true;
+            glStencilFunc(GL_EQUAL, int(m) + 1, 0xFF);
+        }
+        QString error;
+        MeshProgram* p = scene.programs->meshProgram(key, &error);
+        if (!p) {
+            ok = fail(scene, error);
+            continue;
+        }
+        p->program->bind();
+        if (material) bindMaterial(key, *p, *material->draw, *material->source->model(), *scene.rig, 0);
+        scene.lights->setUniforms(this, *p, frame.shade, key.clustered);
+        if (p->exposureScale >= 0) glUniform1f(p->exposureScale, frame.exposureScale);
+        if (key.rig.environment)
+            scene.environment->setUniforms(this, p->program.get(), frame.environmentUniforms);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        p->program->release();
+    }
+    if (!materials.empty()) {
+        unbindMaterialSamplers();
+        glDisable(GL_STENCIL_TEST);
+        glStencilMask(0xFF);
+    }
     glBindVertexArray(0);
     glDisable(GL_SCISSOR_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
     if (scene.shadows) scene.shadows->unbind(this);
-    if (draw) unbindMaterialSamplers();
-    p->program->release();
-    return true;
+    return ok;
 }
 
 } // namespace lr::render

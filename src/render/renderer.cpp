@@ -324,11 +324,13 @@ bool Renderer::render(const ViewCamera& camera, QSize size, const RenderSettings
     if (!updateScene(frame.view)) return false;
     updateEnvironment(&frame);
     const int samples = frame.fast ? 0 : settings.msaaSamples;
-    // One opaque material: the deferred path can sample its textures once per pixel (FrameContext).
+    // Few enough opaque materials: the deferred path samples their textures once per pixel (FrameContext).
+    std::vector<AttributeMaterial> materials;
     const bool visibleGround = m_ground->model() && rig().ground.mode == GroundMode::Visible;
-    const GpuDraw* shared =
-        settings.deferredTextures && !visibleGround ? m_model->sharedMaterialDraw() : nullptr;
-    const int minLights = samples > 1 ? kDeferredMsaaMaxLights : shared ? 0 : kDeferredMinLights;
+    if (settings.deferredTextures && m_model->model() &&
+        !(m_model->appendMaterials(materials) && (!visibleGround || m_ground->appendMaterials(materials))))
+        materials.clear();
+    const int minLights = samples > 1 ? kDeferredMsaaMaxLights : !materials.empty() ? 0 : kDeferredMinLights;
     const bool wantDeferred =
         !frame.fast && (settings.shadingPath == ShadingPath::Deferred ||
                         (settings.shadingPath == ShadingPath::Auto && m_lights->count() >= minLights));
@@ -340,7 +342,7 @@ bool Renderer::render(const ViewCamera& camera, QSize size, const RenderSettings
     frame.samples = m_targets->samples;
     QString error;
     if (frame.deferred && !m_targets->createGBuffer(this, &error)) return fail(error);
-    if (frame.deferred) frame.attributeDraw = shared;
+    if (frame.deferred) frame.attributeMaterials = std::move(materials);
     glViewport(0, 0, frame.targetSize.width(), frame.targetSize.height());
     // Fast lights the vertices, each with every light: clusters (per fragment) do not apply.
     frame.clustered =
@@ -363,7 +365,7 @@ bool Renderer::render(const ViewCamera& camera, QSize size, const RenderSettings
     PassScene scene = passScene();
     const bool ok = m_plan->run(frame, scene) || fail(scene.error);
     m_stats.deferred = frame.deferred;
-    m_stats.deferredTextures = frame.attributeDraw != nullptr;
+    m_stats.deferredTextures = !frame.attributeMaterials.empty();
     m_lastFrameHdr = hdr;
     m_timer->end(this);
     glBindFramebuffer(GL_FRAMEBUFFER, targetFbo);

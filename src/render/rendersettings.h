@@ -15,8 +15,8 @@ namespace lr {
 // Forward: one pass shades every fragment of every triangle. Deferred: a G-pass writes the surfaces, then
 // one full-screen pass shades each covered pixel once (no MSAA; much cheaper on software rasterisers,
 // whose cost is whole 4x4 blocks per small triangle, but the G-pass costs about as much as a forward
-// pass without lights). Both give the same radiance. Auto: deferred when msaaSamples <= 1 and either every
-// opaque draw shares one material (deferredTextures below: the G-pass then writes only attributes and is
+// pass without lights). Both give the same radiance. Auto: deferred when msaaSamples <= 1 and either the
+// opaque draws have few materials (deferredTextures below: the G-pass then writes only attributes and is
 // cheap; helmet_1pt exact 146 -> 127 M instructions a frame under cachegrind) or at least
 // kDeferredMinLights lights are uploaded (measured crossover on llvmpipe, DamagedHelmet at 1280x720 with
 // the G-pass sampling the textures: forward ~17 + 3.3 n ms CPU, deferred ~30 + 1.1 n), else forward.
@@ -56,10 +56,11 @@ struct RenderSettings {
     // bounded range), 0 never, 1 always. Same pixels either way: it only skips exact zeros.
     int clusteredShading = -1;
     ShadingPath shadingPath = ShadingPath::Auto; // Deferred ignores msaaSamples
-    // Deferred path: when every opaque draw shares one material (GpuModel::sharedMaterialDraw) the G-pass
-    // writes only the interpolated attributes and the lighting pass samples the material's textures, once
-    // per pixel in whole 4x4 blocks (shaders/surface.glsl). False: the G-pass writes Surfaces, as for
-    // several materials. The same radiance either way (tst_renderdeferred).
+    // Deferred path: with at most kMaxAttributeMaterials opaque materials (none with vertex colours or
+    // alpha MASK) the G-pass writes only the interpolated attributes and a stencil value per material, and
+    // the lighting pass samples each material's textures once per pixel in whole 4x4 blocks
+    // (shaders/surface.glsl). False: the G-pass writes Surfaces, as for more materials. The same radiance
+    // either way (tst_deferredtextures).
     bool deferredTextures = true;
     // The view or a light is being dragged: dense models draw their interaction proxy (lod.h) once it is
     // built; the full mesh otherwise.
@@ -75,7 +76,7 @@ struct RenderStats {
     qint64 triangles = 0;
     int drawCalls = 0;
     bool deferred = false;         // the last frame took the deferred path
-    bool deferredTextures = false; // ... with the attribute G-buffer (FrameContext::attributeDraw)
+    bool deferredTextures = false; // ... with the attribute G-buffer (FrameContext::attributeMaterials)
     double lastGpuMs =
         -1.0; // GL_TIME_ELAPSED of a recent frame (asynchronous: a frame or two old); < 0: none yet
     bool clustered = false;        // the last frame used clustered shading

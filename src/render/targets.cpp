@@ -42,9 +42,10 @@ bool Targets::create(QOpenGLFunctions_3_3_Core* gl, QSize s, int n, GLenum forma
     gl->glGenFramebuffers(1, &fbo);
     gl->glBindFramebuffer(GL_FRAMEBUFFER, fbo);
     color = makeTexture(gl, colorFormat, GL_RGBA, pixelType, s);
-    depth = makeTexture(gl, GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, GL_FLOAT, s);
+    // Depth and a stencil: the attribute G-buffer marks each pixel's material in it (FrameContext).
+    depth = makeTexture(gl, GL_DEPTH32F_STENCIL8, GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, s);
     gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color, 0);
-    gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
+    gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
     bool ok = complete(gl, "scene", s, error);
     if (ok && samples > 1) {
         gl->glGenFramebuffers(1, &msaaFbo);
@@ -54,10 +55,11 @@ bool Targets::create(QOpenGLFunctions_3_3_Core* gl, QSize s, int n, GLenum forma
         gl->glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, colorFormat, s.width(), s.height());
         gl->glGenRenderbuffers(1, &msaaDepth);
         gl->glBindRenderbuffer(GL_RENDERBUFFER, msaaDepth);
-        gl->glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT32F, s.width(),
-                                             s.height());
+        gl->glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH32F_STENCIL8, s.width(),
+                                             s.height()); // as `depth`: the resolve blits between them
         gl->glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, msaaColor);
-        gl->glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, msaaDepth);
+        gl->glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
+                                      msaaDepth);
         ok = complete(gl, "multisampled scene", s, error);
     }
     if (ok && gl->glGetError() == GL_OUT_OF_MEMORY) {
@@ -82,7 +84,7 @@ bool Targets::createGBuffer(QOpenGLFunctions_3_3_Core* gl, QString* error) {
                                    gbuffer[i], 0);
         buffers[i] = GLenum(GL_COLOR_ATTACHMENT0 + i);
     }
-    gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
+    gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
     gl->glDrawBuffers(kGBufferTargets, buffers);
     const bool ok = complete(gl, "G-buffer", size, error);
     gl->glBindFramebuffer(GL_FRAMEBUFFER, 0);

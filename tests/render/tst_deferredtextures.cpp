@@ -2,10 +2,12 @@
 // shares one material the G-pass writes the interpolated attributes and the deferred lighting pass samples
 // the textures. It must shade exactly what the forward path and the Surface G-buffer shade, through every
 // input it carries: a textured, normal-mapped, texture-transformed, double-sided material on a sphere
-// (curved: UV derivatives vary per pixel) and on a plane seen from its back with mirrored tangents.
+// (curved: UV derivatives vary per pixel) and on a plane seen from its back with mirrored tangents; with
+// one material, two (two stencil-selected lighting passes) and a visible ground (its material too).
 #include "glfixture.h"
 #include "scenes.h"
 
+#include "render/gpumodel.h"
 #include "render/offscreen.h"
 
 #include <QTest>
@@ -107,69 +109,91 @@ class TestDeferredTextures : public QObject {
         LR_REQUIRE_DISPLAY();
         QString error;
         QVERIFY2(m_gl.initialize(&error), qPrintable(error));
-        QVERIFY2(m_gl.setModel(texturedScene(), &error), qPrintable(error));
     }
 
     void sameRadianceAsForwardAndSurfaces_data() {
         QTest::addColumn<int>("rigCase");
-        QTest::newRow("classic") << 0;
-        QTest::newRow("pbr") << 1;
+        QTest::addColumn<bool>("twoMaterials"); // the plane has its own (a second lighting pass)
+        QTest::addColumn<bool>("ground");       // a visible ground: its material too
+        QTest::newRow("classic") << 0 << false << false;
+        QTest::newRow("pbr") << 1 << false << false;
+        QTest::newRow("pbr, two materials") << 1 << true << false;
+        QTest::newRow("classic, two materials and the ground") << 0 << true << true;
     }
 
     void sameRadianceAsForwardAndSurfaces() {
         QFETCH(int, rigCase);
+        QFETCH(bool, twoMaterials);
+        QFETCH(bool, ground);
+        auto scene = texturedScene();
+        if (twoMaterials) {
+            Material second = scene->materials[0];
+            second.baseColor = {0.3f, 0.9f, 0.4f, 1.0f};
+            second.normalTexture = -1;
+            second.emissiveTexture = 0;
+            scene->materials.push_back(second);
+            scene->meshes[1].material = 1;
+        }
+        QString error;
+        QVERIFY(m_gl.setModel(scene, &error));
         Rig rig = rigCase == 0 ? rigOf({point({1.0, 2.0, 2.5}, FalloffModel::InverseSquare),
                                         directional({-0.3, -1.0, -0.2}, DiffuseModel::Lambert)})
                                : pbrRig({gltfPoint({1.0, 2.0, 2.5}, 15.0, 20.0),
                                          gltfSpot({-1.0, 0.5, 2.0}, {0.0, -1.0, 0.0}, 30.0)},
                                         glm::dvec3(0.05));
+        if (ground) rig.ground.mode = GroundMode::Visible;
         bool forwardAttr = true, attr = false, surfaceAttr = true;
         const FloatImage forward = radiance(rig, ShadingPath::Forward, true, &forwardAttr);
         const FloatImage attributes = radiance(rig, ShadingPath::Deferred, true, &attr);
         const FloatImage surfaces = radiance(rig, ShadingPath::Deferred, false, &surfaceAttr);
         QVERIFY(!forwardAttr && attr && !surfaceAttr); // each took the path it names
-        int covered = 0, backFaces = 0;
+        int covered = 0, lowerQuarter = 0;             // the plane's back faces are most of the lower quarter
         for (int y = 0; y < forward.height; ++y)
             for (int x = 0; x < forward.width; ++x) {
                 covered += forward.at(x, y).a > 0.5f;
-                backFaces += forward.at(x, y).a > 0.5f && y > forward.height * 3 / 4;
+                lowerQuarter += forward.at(x, y).a > 0.5f && y > forward.height * 3 / 4;
             }
-        QVERIFY2(covered > 6000 && backFaces > 500,
-                 qPrintable(QStringLiteral("%1 %2").arg(covered).arg(backFaces)));
+        QVERIFY2(covered > 6000 && lowerQuarter > 500,
+                 qPrintable(QStringLiteral("%1 %2").arg(covered).arg(lowerQuarter)));
         const double a = maxRelativeDifference(forward, attributes),
                      b = maxRelativeDifference(surfaces, attributes);
-        qInfo("covered %d (back faces %d); max relative difference: forward %g, surfaces %g", covered,
-              backFaces, a, b);
+        qInfo("covered %d (lower quarter %d); max relative difference: forward %g, surfaces %g", covered,
+              lowerQuarter, a, b);
         QVERIFY2(a <= 1e-6 && b <= 1e-6, qPrintable(QStringLiteral("forward %1, surfaces %2").arg(a).arg(b)));
         // The textures matter here: without them the image changes (the comparison could fail).
-        auto plain = std::make_shared<Model>(*texturedScene());
-        plain->materials[0].baseColorTexture = -1;
-        QString error;
+        auto plain = std::make_shared<Model>(*scene);
+        for (Material& m : plain->materials)
+            m.baseColorTexture = -1;
         QVERIFY(m_gl.setModel(plain, &error));
         bool unused = false;
         QVERIFY(maxRelativeDifference(radiance(rig, ShadingPath::Deferred, true, &unused), attributes) >
                 0.05);
-        QVERIFY(m_gl.setModel(texturedScene(), &error));
     }
 
-    // Auto shades a one-material model deferred at any light count without MSAA (the G-pass is cheap), and
-    // forward with MSAA; a second material (a visible ground, or two materials) keeps the Surface G-buffer.
+    // Auto shades a model of few materials deferred at any light count without MSAA (the G-pass is cheap);
+    // vertex colours, or more than kMaxAttributeMaterials materials, keep the Surface G-buffer.
     void autoPathFollowsTheMaterials() {
-        Rig rig = rigOf({point({1.0, 2.0, 2.5}, FalloffModel::InverseSquare)});
+        const Rig rig = rigOf({point({1.0, 2.0, 2.5}, FalloffModel::InverseSquare)});
+        QString error;
+        QVERIFY(m_gl.setModel(texturedScene(), &error));
         bool attr = false;
         radiance(rig, ShadingPath::Auto, true, &attr);
         QVERIFY(m_gl.renderer().stats().deferred && attr);
         radiance(rig, ShadingPath::Auto, false, &attr);
         QVERIFY(!m_gl.renderer().stats().deferred && !attr); // one light: forward without the attribute path
-        auto two = std::make_shared<Model>(*texturedScene());
-        two->materials.push_back(two->materials[0]);
-        two->meshes[1].material = 1;
-        QString error;
-        QVERIFY(m_gl.setModel(two, &error));
+        auto many = std::make_shared<Model>(*texturedScene());
+        for (int i = 0; i <= kMaxAttributeMaterials; ++i) {
+            Mesh copy = many->meshes[0];
+            copy.material = int(many->materials.size());
+            many->materials.push_back(many->materials[0]);
+            many->meshes.push_back(std::move(copy));
+        }
+        QVERIFY(m_gl.setModel(many, &error));
         radiance(rig, ShadingPath::Deferred, true, &attr);
         QVERIFY(m_gl.renderer().stats().deferred && !attr);
-        rig.ground.mode = GroundMode::Visible;
-        QVERIFY(m_gl.setModel(texturedScene(), &error));
+        auto coloured = std::make_shared<Model>(*texturedScene());
+        coloured->meshes[1].hasVertexColors = true;
+        QVERIFY(m_gl.setModel(coloured, &error));
         radiance(rig, ShadingPath::Deferred, true, &attr);
         QVERIFY(m_gl.renderer().stats().deferred && !attr);
     }
