@@ -53,7 +53,7 @@ std::unique_ptr<QOpenGLShaderProgram> ProgramCache::build(const QByteArray& prel
     // Each file gets a #line with its own source-string number, so a log line "2:14(3)" points at line 14
     // of the second file listed in the message.
     QStringList legend;
-    auto assemble = [&](const std::array<const char*, 7>& files, QString* missing) {
+    auto assemble = [&](const decltype(ShaderConfig::vertex)& files, QString* missing) {
         QByteArray text = prelude;
         for (const char* name : files) {
             if (!name) break;
