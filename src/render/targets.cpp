@@ -42,8 +42,12 @@ bool Targets::create(QOpenGLFunctions_3_3_Core* gl, QSize s, int n, GLenum forma
     gl->glGenFramebuffers(1, &fbo);
     gl->glBindFramebuffer(GL_FRAMEBUFFER, fbo);
     color = makeTexture(gl, colorFormat, GL_RGBA, pixelType, s);
-    // Depth and a stencil: the attribute G-buffer marks each pixel's material in it (FrameContext).
-    depth = makeTexture(gl, GL_DEPTH32F_STENCIL8, GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, s);
+    // Depth and a stencil: the attribute G-buffer marks each pixel's material in it (FrameContext). 24-bit
+    // depth, not 32-bit float: llvmpipe stores GL_DEPTH32F_STENCIL8 in 64 bits a pixel, and its clear alone
+    // took ~10 % of helmet_1pt's frame (perf: a 64-bit `rep stos` over the target, bound by this VM's memory
+    // bandwidth; cachegrind counts it as a few instructions). With the usual [near, far] -> [0, 1] mapping
+    // both formats have the same 2^-24 steps beyond twice the near distance, where scenes lie.
+    depth = makeTexture(gl, GL_DEPTH24_STENCIL8, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, s);
     gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color, 0);
     gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
     bool ok = complete(gl, "scene", s, error);
@@ -55,7 +59,7 @@ bool Targets::create(QOpenGLFunctions_3_3_Core* gl, QSize s, int n, GLenum forma
         gl->glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, colorFormat, s.width(), s.height());
         gl->glGenRenderbuffers(1, &msaaDepth);
         gl->glBindRenderbuffer(GL_RENDERBUFFER, msaaDepth);
-        gl->glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH32F_STENCIL8, s.width(),
+        gl->glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH24_STENCIL8, s.width(),
                                              s.height()); // as `depth`: the resolve blits between them
         gl->glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, msaaColor);
         gl->glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
