@@ -204,6 +204,7 @@ QJsonObject benchJson(const BenchReport& report) {
             {QStringLiteral("first_frame_ms"), round3(r.firstFrameMs)},
             {QStringLiteral("load_ms"), round3(r.loadMs)},
             {QStringLiteral("first_draw_ms"), round3(r.firstDrawMs)},
+            {QStringLiteral("second_frame_ms"), round3(r.secondFrameMs)},
             {QStringLiteral("upload_ms"), round3(r.uploadMs)},
             {QStringLiteral("triangles_drawn"), r.trianglesDrawn},
             {QStringLiteral("variants"), r.variants},

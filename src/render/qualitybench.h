@@ -86,7 +86,10 @@ struct BenchResult {
     double firstFrameMs = 0.0; // loadMs + firstDrawMs
     double loadMs = 0.0;
     double firstDrawMs = 0.0; // upload + compile + draw + glFinish in a fresh context
-    double uploadMs = 0.0;    // of which the model upload (buffers, textures and their mipmaps)
+    // The frame after it (the first warm-up frame): a shader compiled again there, because the first
+    // frame's later passes changed a state its programs were compiled for, is a stall the median hides.
+    double secondFrameMs = 0.0;
+    double uploadMs = 0.0; // of which the model upload (buffers, textures and their mipmaps)
     bool hasErrors = false;
     ErrorFigures errors; // against the double reference (nonFinite from the float radiance)
     // With errors, when the rig has shadow casters: the shadow measure (reference.h, compareShadows).

@@ -129,12 +129,13 @@ class TestBenchCli : public QObject {
             const QJsonObject o = v.toObject();
             for (const char* key :
                  {"scene", "lights", "quality", "width", "height", "ms_median", "ms_min", "ms_max",
-                  "first_frame_ms", "max_error_levels", "mean_error_levels", "psnr_db", "nonfinite_pixels",
-                  "gpu_ms_median", "variants", "lights_uploaded", "triangles"})
+                  "first_frame_ms", "second_frame_ms", "max_error_levels", "mean_error_levels", "psnr_db",
+                  "nonfinite_pixels", "gpu_ms_median", "variants", "lights_uploaded", "triangles"})
                 QVERIFY2(o.contains(QLatin1String(key)), key);
             QCOMPARE(o.value(QStringLiteral("width")).toInt(), 64);
             QCOMPARE(o.value(QStringLiteral("height")).toInt(), 48);
             QVERIFY(o.value(QStringLiteral("ms_min")).toDouble() > 0.0);
+            QVERIFY(o.value(QStringLiteral("second_frame_ms")).toDouble() > 0.0);
             QVERIFY(o.value(QStringLiteral("ms_min")).toDouble() <=
                     o.value(QStringLiteral("ms_max")).toDouble());
             QCOMPARE(o.value(QStringLiteral("nonfinite_pixels")).toInt(), 0);
