@@ -36,6 +36,7 @@ bool GeometryPass::run(const FrameContext& frame, PassScene& scene) {
     const bool gpass = m_output == Output::GBuffer;
     const Targets& targets = *scene.targets;
     glViewport(0, 0, frame.targetSize.width(), frame.targetSize.height());
+    primeSamplerSlots(scene);
     if (gpass) {
         // The G-buffer's colour needs no clear for the lighting pass (it reads only pixels a surface was
         // drawn on); a read-back reads every pixel.
@@ -109,6 +110,29 @@ FeatureKey MeshPass::meshKey(const FrameContext& frame, const PassScene& scene, 
     if (output == ShaderOutput::Display) key.toneMap = frame.toneMap;
     key.clustered = clustered;
     return key;
+}
+
+void MeshPass::primeSamplerSlots(PassScene& scene) {
+    QString error;
+    QOpenGLShaderProgram* p = scene.programs->fixedProgram(kSlotPrimerShader, &error);
+    if (!p) return; // a cost only: every frame still renders the same image
+    p->bind();      // its samplers keep the default unit 0
+    // A fixed target and state, so that this program's own compiled variant is the same every frame.
+    glBindFramebuffer(GL_FRAMEBUFFER, scene.targets->fbo);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_BLEND);
+    glDisable(GL_SCISSOR_TEST);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, scene.slotTexture);
+    glBindSampler(0, 0);
+    glBindVertexArray(scene.emptyVao);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glEnable(GL_DEPTH_TEST);
+    p->release();
 }
 
 MaterialFeatures MeshPass::sampledFeatures(const GpuDraw& d, const Rig& rig, const RigFeatures& shaded) {

@@ -51,6 +51,13 @@ class MeshPass : public RenderPass {
     void bindMaterial(const FeatureKey& key, const MeshProgram& p, const GpuDraw& d, const Model& model,
                       const Rig& rig, GLuint sampler);
     void unbindMaterialSamplers();
+    // Mesa's state tracker binds no sampler state into a texture buffer's slot (uLights, the cluster lists)
+    // and leaves there whatever the last program bound; llvmpipe keys its compiled fragment shaders on that
+    // state too. A pass after the lit ones that samples a real texture in that slot (the environment
+    // background) thus made every lit program compile again on the second frame (helmet_1pt in an
+    // environment: 0.5-0.8 s). One draw that covers no pixel (kSlotPrimerShader) binds the same sampler
+    // state into the first 20 slots before the lit passes, so every frame's lit draws see the same key.
+    void primeSamplerSlots(PassScene& scene);
 };
 
 // Renders the depth maps of the casting lights whose map changed (shadowmaps.h): first in the chain, in

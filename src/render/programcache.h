@@ -41,6 +41,9 @@ inline constexpr ShaderConfig kShadowDepthShader{"shadow depth", {"shadow.vert"}
 inline constexpr ShaderConfig kToneMapShader{
     "tone map", {"fullscreen.vert"}, {"lighting.glsl", "tonemap.frag"}};
 inline constexpr ShaderConfig kOverlayShader{"overlay", {"gizmo.vert"}, {"lighting.glsl", "gizmo.frag"}};
+// MeshPass::primeSamplerSlots (pass_geometry.cpp): a draw that covers no pixel.
+inline constexpr ShaderConfig kSlotPrimerShader{
+    "sampler-slot primer", {"slotprimer.vert"}, {"slotprimer.frag"}};
 // Environment lighting (LR_ENVIRONMENT, environmentgl.h): the lit configurations with environment.glsl
 // before the stage that shades, chosen only for keys with the bit, so every other program's text is
 // exactly what it was. The background pass (pass_background.cpp) draws the environment behind the model.

@@ -96,6 +96,14 @@ bool Renderer::initialize(QString* error) {
     glSamplerParameteri(m_fastSampler, GL_TEXTURE_WRAP_S, GL_REPEAT);
     glSamplerParameteri(m_fastSampler, GL_TEXTURE_WRAP_T, GL_REPEAT);
     glGenVertexArrays(1, &m_emptyVao);
+    glGenTextures(1, &m_slotTexture); // MeshPass::primeSamplerSlots samples it in every slot
+    glBindTexture(GL_TEXTURE_2D, m_slotTexture);
+    const std::uint32_t white = 0xffffffffu;
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, &white);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glBindTexture(GL_TEXTURE_2D, 0);
     m_timer->initialize(this);
     m_initialized = true;
 
@@ -130,7 +138,8 @@ void Renderer::releaseResources() {
     m_timer->release(this);
     glDeleteSamplers(1, &m_fastSampler);
     glDeleteVertexArrays(1, &m_emptyVao);
-    m_fastSampler = m_emptyVao = 0;
+    glDeleteTextures(1, &m_slotTexture);
+    m_fastSampler = m_emptyVao = m_slotTexture = 0;
     m_initialized = false;
 }
 
@@ -307,6 +316,7 @@ PassScene Renderer::passScene() {
     s.ground = m_ground->model() ? m_ground.get() : nullptr;
     s.groundMode = rig().ground.mode;
     s.emptyVao = m_emptyVao;
+    s.slotTexture = m_slotTexture;
     s.fastSampler = m_fastSampler;
     s.environment = m_environmentGl.get();
     return s;

@@ -154,6 +154,7 @@ class Renderer : protected QOpenGLFunctions_3_3_Core {
     bool m_warnedCasters = false; // more than kMaxShadowCasters casting lights was logged once
     GLuint m_fastSampler = 0;     // the fast tier's texture filtering (F4)
     GLuint m_emptyVao = 0;        // full-screen triangles
+    GLuint m_slotTexture = 0;     // MeshPass::primeSamplerSlots
     int m_maxSamples = 0, m_maxTargetSize = 0;
 };
 

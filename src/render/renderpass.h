@@ -63,6 +63,7 @@ struct PassScene {
     RenderStats* stats = nullptr;
     GLuint emptyVao = 0;    // for full-screen triangles
     GLuint fastSampler = 0; // the fast tier's texture filtering (F4)
+    GLuint slotTexture = 0; // 1x1, for MeshPass::primeSamplerSlots
     // The environment's textures (environmentgl.h); used when FrameContext::environment.
     const EnvironmentGl* environment = nullptr;
     QString error; // why a pass failed
