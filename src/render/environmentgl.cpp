@@ -96,6 +96,7 @@ bool EnvironmentGl::update(QOpenGLFunctions_3_3_Core* gl, const std::shared_ptr<
         m_specular = m_irradiance = 0;
         m_loaded = env;
         m_levels = 0;
+        ++m_generation;
         if (env && error)
             *error = QStringLiteral("environment lighting needs %1 texture units; this OpenGL offers fewer")
                          .arg(kEnvironmentUnitsNeeded);
@@ -147,6 +148,7 @@ bool EnvironmentGl::update(QOpenGLFunctions_3_3_Core* gl, const std::shared_ptr<
     gl->glBindTexture(GL_TEXTURE_2D, 0);
     m_loaded = env;
     m_levels = levels;
+    ++m_generation;
     return true;
 }
 

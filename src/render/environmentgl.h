@@ -58,6 +58,7 @@ class EnvironmentGl {
     bool unitsAvailable() const { return m_unitsOk; }
     const LoadedEnvironment* loaded() const { return m_loaded.get(); }
     int specularLevels() const { return m_levels; }
+    int generation() const { return m_generation; } // changes with every upload
     // Binds the three textures to their units (active texture left at unit 0).
     void bind(QOpenGLFunctions_3_3_Core* gl) const;
     // Sets environment.glsl's uniforms on the bound program `p` (absent ones are skipped).
@@ -68,6 +69,7 @@ class EnvironmentGl {
     std::shared_ptr<const LoadedEnvironment> m_loaded;
     GLuint m_specular = 0, m_irradiance = 0, m_dfg = 0;
     int m_levels = 0;
+    int m_generation = 0;
     bool m_unitsOk = false;
 };
 

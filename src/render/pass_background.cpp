@@ -3,6 +3,7 @@
 #include "passes.h"
 #include "programcache.h"
 #include "targets.h"
+#include "textureunits.h"
 
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/matrix.hpp>
@@ -18,28 +19,96 @@ bool BackgroundPass::run(const FrameContext& frame, PassScene& scene) {
     QString error;
     QOpenGLShaderProgram* p = scene.programs->fixedProgram(kBackgroundShader, &error, defines);
     if (!p) return fail(scene, error);
-    glBindFramebuffer(GL_FRAMEBUFFER, scene.targets->drawFbo());
+    QOpenGLShaderProgram* copy = scene.programs->fixedProgram(kBackgroundCopyShader, &error);
+    if (!copy) return fail(scene, error);
+    Key key;
+    key.environment = scene.environment->generation();
+    key.fromView = frame.environmentUniforms.fromView;
+    key.scale = frame.environmentUniforms.scale;
+    key.lod = frame.environmentBackgroundLod;
+    key.exposureScale = display ? frame.exposureScale : 0.0f;
+    key.projection = glm::mat4(frame.projection);
+    key.width = frame.targetSize.width();
+    key.height = frame.targetSize.height();
+    key.format = scene.targets->colorFormat;
+    key.toneMap = display ? frame.toneMap : ToneMap::Clamp;
+    key.display = display;
+    // The whole background goes into the kept texture (always: one compiled variant of each program, where a
+    // direct draw as well would compile the environment lookup a second time for another target state), and
+    // is copied where no surface is. Rendered again only when the key changes.
+    if (!ensureCache(key)) return fail(scene, QStringLiteral("background: could not make its texture"));
+    const auto drawEnvironment = [&] {
+        p->bind();
+        scene.environment->setUniforms(this, p, frame.environmentUniforms);
+        const glm::mat4 viewFromClip(glm::inverse(frame.projection));
+        glUniformMatrix4fv(p->uniformLocation("uViewFromClip"), 1, GL_FALSE, glm::value_ptr(viewFromClip));
+        p->setUniformValue("uTargetSize", float(frame.targetSize.width()), float(frame.targetSize.height()));
+        p->setUniformValue("uBackgroundLod", frame.environmentBackgroundLod);
+        if (display) p->setUniformValue("uExposureScale", frame.exposureScale);
+        scene.environment->bind(this);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        p->release();
+    };
     glViewport(0, 0, frame.targetSize.width(), frame.targetSize.height());
-    p->bind();
-    scene.environment->setUniforms(this, p, frame.environmentUniforms);
-    const glm::mat4 viewFromClip(glm::inverse(frame.projection));
-    glUniformMatrix4fv(p->uniformLocation("uViewFromClip"), 1, GL_FALSE, glm::value_ptr(viewFromClip));
-    p->setUniformValue("uTargetSize", float(frame.targetSize.width()), float(frame.targetSize.height()));
-    p->setUniformValue("uBackgroundLod", frame.environmentBackgroundLod);
-    if (display) p->setUniformValue("uExposureScale", frame.exposureScale);
-    scene.environment->bind(this);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LEQUAL); // the triangle lies on the far plane: passes where nothing was drawn
-    glDepthMask(GL_FALSE);
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
     glBindVertexArray(scene.emptyVao);
+    if (!(m_hasCache && m_cached == key)) {
+        glBindFramebuffer(GL_FRAMEBUFFER, m_cacheFbo);
+        glDisable(GL_DEPTH_TEST);
+        drawEnvironment();
+        m_cached = key;
+        m_hasCache = true;
+        ++m_builds;
+    }
+    scene.stats->backgroundBuilds = m_builds;
+    glBindFramebuffer(GL_FRAMEBUFFER, scene.targets->drawFbo());
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL); // the triangle lies on the far plane: passes where nothing was drawn
+    glDepthMask(GL_FALSE);
+    copy->bind();
+    glActiveTexture(textureUnit(TextureUnit::BackgroundCache));
+    glBindTexture(GL_TEXTURE_2D, m_cacheTexture);
+    glActiveTexture(GL_TEXTURE0);
     glDrawArrays(GL_TRIANGLES, 0, 3);
+    copy->release();
     glBindVertexArray(0);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
-    p->release();
     return true;
+}
+
+bool BackgroundPass::ensureCache(const Key& key) {
+    if (m_cacheTexture && m_cached.width == key.width && m_cached.height == key.height &&
+        m_cached.format == key.format)
+        return true;
+    release();
+    glGenTextures(1, &m_cacheTexture);
+    glBindTexture(GL_TEXTURE_2D, m_cacheTexture);
+    glTexImage2D(GL_TEXTURE_2D, 0, GLint(key.format), key.width, key.height, 0, GL_RGBA,
+                 key.format == GL_RGBA8 ? GL_UNSIGNED_BYTE : GL_FLOAT, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glGenFramebuffers(1, &m_cacheFbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, m_cacheFbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m_cacheTexture, 0);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+        release(); // drawn each frame instead: only slower
+        return false;
+    }
+    m_cached = Key(); // nothing kept yet
+    m_cached.width = key.width, m_cached.height = key.height, m_cached.format = key.format;
+    return true;
+}
+
+void BackgroundPass::release() {
+    if (m_cacheFbo) glDeleteFramebuffers(1, &m_cacheFbo);
+    if (m_cacheTexture) glDeleteTextures(1, &m_cacheTexture);
+    m_cacheFbo = m_cacheTexture = 0;
+    m_hasCache = false;
+    m_cached = Key();
 }
 
 } // namespace lr::render

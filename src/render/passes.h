@@ -22,6 +22,8 @@
 #include "renderpass.h"
 #include "shadergen.h"
 
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
 #include <utility>
 #include <vector>
 
@@ -105,12 +107,37 @@ class DeferredLightingPass final : public MeshPass {
 // the colour path, with the frame's exposure and tone map. After the opaque surfaces, before the catcher's
 // shadows and the blended meshes (neither writes depth, both go over it). In the plan when
 // PlanKey::background.
+//
+// The whole background is rendered into a texture of the scene colour's format and copied where no surface
+// is (kBackgroundCopyShader): the same values. While nothing it depends on changes (Key; a light dragged
+// under a still camera) the environment's lookups are not repeated, only the copy.
 class BackgroundPass final : public RenderPass {
   public:
     const char* name() const override { return "background"; }
     PassResources reads() const override { return resource::SceneDepth; }
     PassResources writes() const override { return resource::SceneColor; }
     bool run(const FrameContext& frame, PassScene& scene) override;
+    void release() override;
+
+    // What the background's pixels depend on.
+    struct Key {
+        int environment = -1; // EnvironmentGl::generation()
+        glm::mat3 fromView{0.0f};
+        float scale = 0.0f, lod = -1.0f, exposureScale = 0.0f;
+        glm::mat4 projection{0.0f};
+        int width = 0, height = 0;
+        GLenum format = 0; // the scene colour's
+        ToneMap toneMap = ToneMap::Clamp;
+        bool display = false;
+        bool operator==(const Key&) const = default;
+    };
+
+  private:
+    bool ensureCache(const Key& key);
+    Key m_cached;
+    bool m_hasCache = false;
+    GLuint m_cacheTexture = 0, m_cacheFbo = 0;
+    int m_builds = 0;
 };
 
 // Meshes whose material is alphaMode BLEND, after all opaque geometry (forward or deferred): shaded

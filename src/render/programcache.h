@@ -64,6 +64,9 @@ inline constexpr ShaderConfig kDeferredLightingEnvironmentShader{
      "deferred.frag"}};
 inline constexpr ShaderConfig kBackgroundShader{
     "environment background", {"fullscreen.vert"}, {"lighting.glsl", "environment.glsl", "background.frag"}};
+// The background kept by BackgroundPass, copied where no surface is.
+inline constexpr ShaderConfig kBackgroundCopyShader{
+    "background copy", {"fullscreen.vert"}, {"backgroundcopy.frag"}};
 
 // The configuration a FeatureKey compiles with.
 const ShaderConfig& shaderConfig(const FeatureKey& key);

@@ -85,6 +85,8 @@ struct RenderStats {
     qint64 lightBytesUploaded = 0; // by the last light upload: only the texels that changed
     qint64 trianglesDrawn = 0;     // in the last frame (interaction proxies count their own)
     int renderPlanBuilds = 0; // pass chains built since initialize(): only when the kind of frame changes
+    int backgroundBuilds =
+        0; // environment backgrounds rendered into the kept image (passes.h BackgroundPass)
     // Shadows (shadowmaps.h): casting lights this frame, the maps (lights) and layers (a point light's six
     // faces each) re-rendered by this frame, and the map array's size (0 without casters).
     int shadowCasters = 0;

@@ -30,9 +30,10 @@ enum class TextureUnit : GLuint {
     // Area lights' LTC table (core/ltc.h, ltcgl.h), bound only when a rect or disk light exists; beyond
     // 16 too: GL_MAX_TEXTURE_IMAGE_UNITS is 32 on every driver this targets.
     Ltc = 19,
+    BackgroundCache = 20, // the background pass's kept environment image (passes.h BackgroundPass)
 };
 
-constexpr int kEnvironmentUnitsNeeded = 19;
+constexpr int kEnvironmentUnitsNeeded = 21; // up to BackgroundCache
 
 constexpr GLenum textureUnit(TextureUnit unit, int offset = 0) {
     return GLenum(GL_TEXTURE0 + GLuint(unit) + GLuint(offset));
@@ -56,6 +57,7 @@ inline constexpr SamplerBinding kSamplerBindings[] = {
     {"uClusterRanges", TextureUnit::ClusterRanges},
     {"uClusterIndices", TextureUnit::ClusterIndices},
     {"uHdr", TextureUnit::SceneColor},
+    {"uBackgroundCache", TextureUnit::BackgroundCache},
     {"uSceneDepth", TextureUnit::SceneDepth},
     {"uMetalRoughTex", TextureUnit::MetalRough},
     {"uOcclusionTex", TextureUnit::Occlusion},
@@ -70,6 +72,7 @@ inline constexpr SamplerBinding kSamplerBindings[] = {
 // GL 3.3 guarantees 16 texture image units per fragment stage: every unit but the environment's.
 static_assert(GLuint(TextureUnit::ShadowDepths) < 16);
 static_assert(GLuint(TextureUnit::EnvDfg) < GLuint(kEnvironmentUnitsNeeded));
+static_assert(GLuint(TextureUnit::BackgroundCache) < GLuint(kEnvironmentUnitsNeeded));
 static_assert(GLuint(TextureUnit::GBuffer0) + 4 <= GLuint(TextureUnit::ClusterRanges));
 
 } // namespace lr::render

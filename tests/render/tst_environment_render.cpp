@@ -254,6 +254,40 @@ class TestEnvironmentRender : public QObject {
             }
     }
 
+    // The background pass keeps the environment's image while nothing it depends on changes: frames with
+    // the same view, environment, exposure and tone map render it once and are identical; each of those
+    // changes renders it again (and a stale image would fail the checks of background() and
+    // intensityDoubles(), which render one renderer in turn with different settings).
+    void backgroundKept() {
+        QVERIFY(m_gl->setModel(whiteSphere()));
+        m_gl->renderer().setEnvironment(uniformEnvironment(glm::vec3(0.2f, 0.4f, 0.8f)));
+        Rig rig = environmentRig(ShadingModel::Pbr, EnvironmentBackground::Visible);
+        const ViewCamera cam = frontCamera();
+        RenderSettings s = settingsFor(Quality::Balanced);
+        const QImage first = image(rig, cam, s);
+        const int builds = m_gl->renderer().stats().backgroundBuilds;
+        QVERIFY(builds >= 1);
+        const QImage second = image(rig, cam, s);
+        QCOMPARE(m_gl->renderer().stats().backgroundBuilds, builds);
+        QCOMPARE(second, first);
+        // A light moved under the still camera: the background is not rendered again.
+        rig.lights.push_back(Light());
+        (void)image(rig, cam, s);
+        QCOMPARE(m_gl->renderer().stats().backgroundBuilds, builds);
+        rig.environment.rotation = 30.0;
+        (void)image(rig, cam, s);
+        QCOMPARE(m_gl->renderer().stats().backgroundBuilds, builds + 1);
+        s.exposureEV = 1.0;
+        const QImage brighter = image(rig, cam, s);
+        QCOMPARE(m_gl->renderer().stats().backgroundBuilds, builds + 2);
+        QVERIFY(brighter.pixelColor(2, 2).blue() > first.pixelColor(2, 2).blue());
+        s.toneMap = ToneMap::Aces;
+        (void)image(rig, cam, s);
+        QCOMPARE(m_gl->renderer().stats().backgroundBuilds, builds + 3);
+        (void)image(rig, frontCamera(), s);
+        QCOMPARE(m_gl->renderer().stats().backgroundBuilds, builds + 3);
+    }
+
     // Background: Visible shows the environment in uncovered pixels, identical on the display and HDR
     // paths; Blurred too (a uniform environment blurs to itself); Color shows the settings' colour;
     // a transparent image keeps alpha 0 there whatever the mode. The plan has the pass only when it draws.
