@@ -95,7 +95,7 @@ bool BackgroundPass::ensureCache(const Key& key) {
     glBindFramebuffer(GL_FRAMEBUFFER, m_cacheFbo);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m_cacheTexture, 0);
     if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-        release(); // drawn each frame instead: only slower
+        release(); // run() then fails with its error; the frame shows no background
         return false;
     }
     m_cached = Key(); // nothing kept yet
