@@ -53,12 +53,11 @@ bool BackgroundPass::run(const FrameContext& frame, PassScene& scene) {
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
     glBindVertexArray(scene.emptyVao);
-    if (!(m_hasCache && m_cached == key)) {
+    if (m_cached != key) {
         glBindFramebuffer(GL_FRAMEBUFFER, m_cacheFbo);
         glDisable(GL_DEPTH_TEST);
         drawEnvironment();
         m_cached = key;
-        m_hasCache = true;
         ++m_builds;
     }
     scene.stats->backgroundBuilds = m_builds;
@@ -107,7 +106,6 @@ void BackgroundPass::release() {
     if (m_cacheFbo) glDeleteFramebuffers(1, &m_cacheFbo);
     if (m_cacheTexture) glDeleteTextures(1, &m_cacheTexture);
     m_cacheFbo = m_cacheTexture = 0;
-    m_hasCache = false;
     m_cached = Key();
 }
 

@@ -121,7 +121,7 @@ class BackgroundPass final : public RenderPass {
 
     // What the background's pixels depend on.
     struct Key {
-        int environment = -1; // EnvironmentGl::generation()
+        int environment = -1; // EnvironmentGl::generation(), >= 1 once one is uploaded
         glm::mat3 fromView{0.0f};
         float scale = 0.0f, lod = -1.0f, exposureScale = 0.0f;
         glm::mat4 projection{0.0f};
@@ -134,8 +134,7 @@ class BackgroundPass final : public RenderPass {
 
   private:
     bool ensureCache(const Key& key);
-    Key m_cached;
-    bool m_hasCache = false;
+    Key m_cached; // what the texture holds (environment -1: nothing yet) and its size and format
     GLuint m_cacheTexture = 0, m_cacheFbo = 0;
     int m_builds = 0;
 };
