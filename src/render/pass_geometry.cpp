@@ -37,7 +37,56 @@ bool GeometryPass::run(const FrameContext& frame, PassScene& scene) {
     const Targets& targets = *scene.targets;
     glViewport(0, 0, frame.targetSize.width(), frame.targetSize.height());
     primeSamplerSlots(scene);
+    const ShaderOutput output = gpass                                 ? ShaderOutput::GBuffer
+                                : frame.colourPath == ColourPath::Hdr ? ShaderOutput::Radiance
+                                                                      : ShaderOutput::Display;
+    const RenderSettings& settings = *frame.settings;
+    const Rig& rig = *scene.rig;
+    const Model* model = scene.model->model();
+    const bool drawsModel = model && !scene.model->draws().empty();
+    // Fast lights the vertices, each with every light: clusters (per fragment) do not apply.
+    const bool clustered = !gpass && frame.clustered;
+    // Group the draws by program so each variant is bound once per frame. Blended (alphaMode BLEND)
+    // meshes are the blend pass's (pass_blend.cpp): after all opaque geometry, never in the G-buffer. A
+    // visible ground is one more opaque surface (in the G-buffer too); a catcher is the catcher pass's.
+    DrawOrder order, ground;
+    if (drawsModel) {
+        const RigFeatures shaded =
+            frameRigFeatures(rig, frame.farLights, settings.forceAllFeatures, frame.environment);
+        order.reserve(scene.model->draws().size());
+        for (const GpuDraw& d : scene.model->draws())
+            if (!d.features.alphaBlend)
+                order.emplace_back(meshKey(frame, scene, d, output, clustered, shaded), &d);
+        std::stable_sort(order.begin(), order.end(),
+                         [](const auto& a, const auto& b) { return a.first.bits() < b.first.bits(); });
+        if (scene.ground && scene.groundMode == GroundMode::Visible)
+            for (const GpuDraw& d : scene.ground->draws())
+                ground.emplace_back(meshKey(frame, scene, d, output, clustered, shaded, scene.ground), &d);
+    }
+    Key key;
     if (gpass) {
+        key = {frame.view,
+               frame.projection,
+               frame.targetSize.width(),
+               frame.targetSize.height(),
+               targets.generation,
+               scene.modelGeneration,
+               scene.ground ? scene.groundRevision : -1,
+               settings.interactive && scene.mutableModel->updateProxies(this),
+               settings.cullBackFaces,
+               rig.shading.shininess,
+               order,
+               ground};
+        const bool keep = drawsModel && !frame.gbufferReadBack && m_keptFrame >= 0 &&
+                          m_keptFrame + 1 == scene.frameSerial && key == m_kept;
+        m_keptFrame = -1;
+        scene.stats->gbufferKept = keep;
+        if (keep) {
+            m_keptFrame = scene.frameSerial;
+            scene.stats->drawCalls = 0;
+            scene.stats->trianglesDrawn = 0;
+            return true;
+        }
         // The G-buffer's colour needs no clear for the lighting pass (it reads only pixels a surface was
         // drawn on); a read-back reads every pixel.
         // The attribute G-buffer marks each pixel with its material's stencil value (materialSlot).
@@ -52,36 +101,15 @@ bool GeometryPass::run(const FrameContext& frame, PassScene& scene) {
         glClearColor(frame.clearColour.r, frame.clearColour.g, frame.clearColour.b, frame.clearColour.a);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     }
-    const ShaderOutput output = gpass                                 ? ShaderOutput::GBuffer
-                                : frame.colourPath == ColourPath::Hdr ? ShaderOutput::Radiance
-                                                                      : ShaderOutput::Display;
-    const RenderSettings& settings = *frame.settings;
-    const Rig& rig = *scene.rig;
-    const Model* model = scene.model->model();
     scene.stats->drawCalls = 0;
     scene.stats->trianglesDrawn = 0;
-    if (!model || scene.model->draws().empty()) return true;
-    // Fast lights the vertices, each with every light: clusters (per fragment) do not apply.
-    const bool clustered = !gpass && frame.clustered;
-    const RigFeatures shaded =
-        frameRigFeatures(rig, frame.farLights, settings.forceAllFeatures, frame.environment);
-
-    // Group the draws by program so each variant is bound once per frame. Blended (alphaMode BLEND)
-    // meshes are the blend pass's (pass_blend.cpp): after all opaque geometry, never in the G-buffer.
-    std::vector<std::pair<FeatureKey, const GpuDraw*>> order;
-    order.reserve(scene.model->draws().size());
-    for (const GpuDraw& d : scene.model->draws())
-        if (!d.features.alphaBlend)
-            order.emplace_back(meshKey(frame, scene, d, output, clustered, shaded), &d);
-    std::stable_sort(order.begin(), order.end(),
-                     [](const auto& a, const auto& b) { return a.first.bits() < b.first.bits(); });
+    if (!drawsModel) return true;
     bool ok = drawMeshes(frame, scene, order, clustered, false);
-    // A visible ground is one more opaque surface (in the G-buffer too); a catcher is the catcher pass's.
-    if (scene.ground && scene.groundMode == GroundMode::Visible) {
-        DrawOrder ground;
-        for (const GpuDraw& d : scene.ground->draws())
-            ground.emplace_back(meshKey(frame, scene, d, output, clustered, shaded, scene.ground), &d);
-        ok = drawMeshes(frame, scene, ground, clustered, false, scene.ground) && ok;
+    if (!ground.empty()) ok = drawMeshes(frame, scene, ground, clustered, false, scene.ground) && ok;
+    if (gpass && ok && !frame.gbufferReadBack) {
+        m_kept = std::move(key);
+        m_keptFrame = scene.frameSerial;
+        ++scene.stats->gbufferBuilds;
     }
     return ok;
 }

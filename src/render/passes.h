@@ -75,6 +75,12 @@ class ShadowPass final : public RenderPass {
 // Draws the model: its surfaces into the G-buffer (deferred path, renderGBuffer) or shaded into the scene
 // target (forward and clustered forward; display colours or radiance by the colour path). Meshes whose
 // material is alphaMode BLEND are left to the blend pass.
+//
+// The G-buffer is kept while nothing it holds changes (Key): when the frame before drew or kept it with the
+// same key, the G-pass draws nothing and the lighting pass shades the kept surfaces again (with the
+// scene depth and the material stencil they were drawn with). A light dragged under a still camera thus
+// costs the lighting, not the model's geometry. Any frame in between that did not keep or draw it (the
+// forward path, a read-back, a failure) ends the keeping, since the depth it shares may have changed.
 class GeometryPass final : public MeshPass {
   public:
     enum class Output { GBuffer, Shaded };
@@ -83,9 +89,24 @@ class GeometryPass final : public MeshPass {
     PassResources reads() const override;
     PassResources writes() const override;
     bool run(const FrameContext& frame, PassScene& scene) override;
+    void release() override { m_keptFrame = -1; }
+
+    // What the G-pass's pixels depend on: the view, the targets, the scene's revisions and every draw's
+    // program key (material features, shading model, attributes or surfaces) in order.
+    struct Key {
+        glm::dmat4 view{0.0}, projection{0.0};
+        int width = 0, height = 0;
+        int targets = -1, model = -1, ground = -1; // Targets::generation, PassScene's revisions
+        bool proxies = false, cullBackFaces = false;
+        double shininess = 0.0; // the rig's, for materials without their own (classic)
+        DrawOrder draws, groundDraws;
+        bool operator==(const Key&) const = default;
+    };
 
   private:
     Output m_output;
+    Key m_kept;           // what the G-buffer holds when m_keptFrame >= 0
+    int m_keptFrame = -1; // the PassScene::frameSerial that drew or kept it
 };
 
 // Shades every covered G-buffer pixel once: a full-screen triangle on the far plane, depth-tested

@@ -218,6 +218,7 @@ bool Renderer::updateGround() {
     if (!m_ground->upload(this, std::move(mesh), &error)) return fail(error);
     m_groundUploaded = g;
     m_groundGeneration = m_modelGeneration;
+    ++m_groundRevision;
     return true;
 }
 
@@ -313,6 +314,8 @@ PassScene Renderer::passScene() {
     s.shadowViews = &m_shadowViews;
     s.shadows = m_shadows.get();
     s.modelGeneration = m_modelGeneration;
+    s.groundRevision = m_groundRevision;
+    s.frameSerial = m_frameSerial;
     s.ground = m_ground->model() ? m_ground.get() : nullptr;
     s.groundMode = rig().ground.mode;
     s.emptyVao = m_emptyVao;
@@ -328,6 +331,7 @@ bool Renderer::render(const ViewCamera& camera, QSize size, const RenderSettings
     if (size.isEmpty()) return fail(QStringLiteral("render: empty size"));
     QElapsedTimer cpu;
     cpu.start();
+    ++m_frameSerial;
     FrameContext frame = frameContext(camera, size, settings, tile);
     frame.outputFbo = targetFbo;
     m_stats.lightsInRig = int(rig().lights.size());
@@ -373,6 +377,7 @@ bool Renderer::render(const ViewCamera& camera, QSize size, const RenderSettings
                     frame.environmentBackgroundLod >= 0.0f});
     m_stats.renderPlanBuilds = m_plan->builds();
     PassScene scene = passScene();
+    m_stats.gbufferKept = false; // the G-pass says otherwise when it runs and keeps
     const bool ok = m_plan->run(frame, scene) || fail(scene.error);
     m_stats.deferred = frame.deferred;
     m_stats.deferredTextures = !frame.attributeMaterials.empty();
@@ -396,6 +401,7 @@ bool Renderer::renderGBuffer(const ViewCamera& camera, QSize size, const RenderS
                              GBuffer* out, const QRect& tile) {
     if (!m_initialized) return fail(QStringLiteral("renderGBuffer before initialize"));
     if (size.isEmpty()) return fail(QStringLiteral("renderGBuffer: empty size"));
+    ++m_frameSerial;
     FrameContext frame = frameContext(camera, size, settings, tile);
     frame.gbufferReadBack = true;
     const QSize target = frame.targetSize;

@@ -87,6 +87,10 @@ struct RenderStats {
     int renderPlanBuilds = 0; // pass chains built since initialize(): only when the kind of frame changes
     int backgroundBuilds =
         0; // environment backgrounds rendered into the kept image (passes.h BackgroundPass)
+    // The deferred G-buffer (passes.h GeometryPass): drawn since initialize(), and whether the last frame
+    // kept the one before instead of drawing the model again.
+    int gbufferBuilds = 0;
+    bool gbufferKept = false;
     // Shadows (shadowmaps.h): casting lights this frame, the maps (lights) and layers (a point light's six
     // faces each) re-rendered by this frame, and the map array's size (0 without casters).
     int shadowCasters = 0;

@@ -32,7 +32,9 @@ bool complete(QOpenGLFunctions_3_3_Core* gl, const char* what, QSize size, QStri
 } // namespace
 
 bool Targets::create(QOpenGLFunctions_3_3_Core* gl, QSize s, int n, GLenum format, QString* error) {
+    static int generations = 0;
     release(gl);
+    generation = ++generations;
     size = s;
     samples = n > 1 ? n : 0;
     colorFormat = format;

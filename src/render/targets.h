@@ -21,6 +21,7 @@ struct Targets {
     GLuint fbo = 0, color = 0, depth = 0; // single-sample: textures
     GLuint gbufferFbo = 0;
     GLuint gbuffer[kGBufferTargets] = {};
+    int generation = 0; // a new number with every create(): what was drawn into the old ones is gone
 
     GLuint drawFbo() const { return samples > 1 ? msaaFbo : fbo; }
     bool create(QOpenGLFunctions_3_3_Core* gl, QSize size, int samples, GLenum colorFormat, QString* error);

@@ -4,6 +4,8 @@
 // input it carries: a textured, normal-mapped, texture-transformed, double-sided material on a sphere
 // (curved: UV derivatives vary per pixel) and on a plane seen from its back with mirrored tangents; with
 // one material, two (two stencil-selected lighting passes) and a visible ground (its material too).
+// While the view and the surfaces hold, the G-buffer is kept (passes.h GeometryPass), and what a frame that
+// keeps it shades must be what one that draws it again shades.
 #include "glfixture.h"
 #include "scenes.h"
 
@@ -89,7 +91,8 @@ class TestDeferredTextures : public QObject {
     Q_OBJECT
     OffscreenRenderer m_gl;
 
-    FloatImage radiance(const Rig& rig, ShadingPath path, bool deferredTextures, bool* attributes) {
+    FloatImage radiance(const Rig& rig, ShadingPath path, bool deferredTextures, bool* attributes,
+                        const ViewCamera& camera = aboveCamera()) {
         RenderSettings s;
         s.msaaSamples = 0;
         s.hdrFloat32 = true;
@@ -98,8 +101,7 @@ class TestDeferredTextures : public QObject {
         m_gl.setRig(rig);
         FloatImage out;
         QString error;
-        if (!m_gl.renderRadiance(aboveCamera(), QSize(160, 120), s, &out, &error))
-            qFatal("%s", qPrintable(error));
+        if (!m_gl.renderRadiance(camera, QSize(160, 120), s, &out, &error)) qFatal("%s", qPrintable(error));
         *attributes = m_gl.renderer().stats().deferredTextures;
         return out;
     }
@@ -168,6 +170,89 @@ class TestDeferredTextures : public QObject {
         bool unused = false;
         QVERIFY(maxRelativeDifference(radiance(rig, ShadingPath::Deferred, true, &unused), attributes) >
                 0.05);
+    }
+
+    // The G-buffer is kept while the view, the targets and the surfaces hold: a light moved under a still
+    // camera shades the kept surfaces, exactly as a frame that draws them again; anything the G-pass draws
+    // differently, or a frame in between that did not draw it (the forward path writes the shared depth),
+    // draws it again.
+    void keptWhileTheViewHolds_data() {
+        QTest::addColumn<bool>("deferredTextures"); // attributes, or Surfaces (the model's textures sampled)
+        QTest::newRow("attributes") << true;
+        QTest::newRow("surfaces") << false;
+    }
+
+    void keptWhileTheViewHolds() {
+        QFETCH(bool, deferredTextures);
+        auto scene = texturedScene();
+        Material second = scene->materials[0];
+        second.baseColor = {0.3f, 0.9f, 0.4f, 1.0f};
+        second.emissiveTexture = 0;
+        scene->materials.push_back(second);
+        scene->meshes[1].material = 1;
+        QString error;
+        QVERIFY(m_gl.setModel(scene, &error));
+        Rig rig = pbrRig(
+            {gltfPoint({1.0, 2.0, 2.5}, 15.0, 20.0), gltfSpot({-1.0, 0.5, 2.0}, {0.0, -1.0, 0.0}, 30.0)},
+            glm::dvec3(0.05));
+        rig.ground.mode = GroundMode::Visible;
+        ViewCamera side = aboveCamera();
+        side.eye = {-2.5, 1.2, 2.4};
+        const RenderStats& stats = m_gl.renderer().stats();
+        bool attr = false;
+        const auto frame = [&](const Rig& r, const ViewCamera& c, bool kept,
+                               ShadingPath path = ShadingPath::Deferred) {
+            const int builds = stats.gbufferBuilds;
+            FloatImage out = radiance(r, path, deferredTextures, &attr, c);
+            const bool deferred = path == ShadingPath::Deferred;
+            if (stats.gbufferKept != kept || stats.gbufferBuilds != builds + (deferred && !kept ? 1 : 0) ||
+                stats.deferred != deferred || (deferred && attr != deferredTextures))
+                qWarning("kept %d (expected %d), builds %d -> %d", stats.gbufferKept, kept, builds,
+                         stats.gbufferBuilds);
+            return std::make_pair(out, stats.gbufferKept == kept &&
+                                           stats.gbufferBuilds == builds + (deferred && !kept ? 1 : 0));
+        };
+        const auto same = [](const FloatImage& a, const FloatImage& b) {
+            return maxRelativeDifference(a, b) == 0.0;
+        };
+        const auto [first, drawn] = frame(rig, aboveCamera(), false);
+        QVERIFY(drawn);
+        const auto [again, kept] = frame(rig, aboveCamera(), true);
+        QVERIFY(kept && same(first, again));
+
+        // A light moved and brighter: kept, and exactly what a drawn G-buffer gives.
+        Rig moved = rig;
+        moved.lights[0].position = {-1.5, 1.0, 2.0};
+        moved.lights[1].intensity *= 3.0;
+        const auto [movedKept, k1] = frame(moved, aboveCamera(), true);
+        QVERIFY(k1 && !same(movedKept, first)); // the light matters here
+        QVERIFY(frame(moved, side, false).second);
+        const auto [movedDrawn, k2] = frame(moved, aboveCamera(), false);
+        QVERIFY(k2 && same(movedKept, movedDrawn));
+
+        // A forward frame of another view in between wrote the shared depth: drawn again.
+        QVERIFY(frame(rig, aboveCamera(), true).second);
+        QVERIFY(frame(rig, side, false, ShadingPath::Forward).second);
+        const auto [afterForward, k3] = frame(rig, aboveCamera(), false);
+        QVERIFY(k3 && same(afterForward, first));
+        // So does a read-back of the G-buffer.
+        GBuffer g;
+        QVERIFY2(m_gl.renderGBuffer(aboveCamera(), QSize(160, 120), RenderSettings(), &g, &error),
+                 qPrintable(error));
+        QVERIFY(frame(rig, aboveCamera(), false).second);
+
+        // What the G-pass draws differently: the shading model, the ground, the model.
+        Rig classic = rig;
+        classic.shading.model = ShadingModel::Classic;
+        QVERIFY(frame(classic, aboveCamera(), false).second);
+        QVERIFY(frame(rig, aboveCamera(), false).second);
+        Rig noGround = rig;
+        noGround.ground.mode = GroundMode::Off;
+        QVERIFY(frame(noGround, aboveCamera(), false).second);
+        QVERIFY(frame(rig, aboveCamera(), false).second);
+        QVERIFY(frame(rig, aboveCamera(), true).second);
+        QVERIFY(m_gl.setModel(texturedScene(), &error));
+        QVERIFY(frame(rig, aboveCamera(), false).second);
     }
 
     // Auto shades a model of few materials deferred at any light count without MSAA (the G-pass is cheap);
