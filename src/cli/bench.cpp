@@ -20,6 +20,7 @@
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <QTextStream>
+#include <cmath>
 
 namespace lr::cli {
 
@@ -28,7 +29,7 @@ namespace {
 const char* kUsage =
     "lightrig bench [MODEL...] [--rig RIG] [--camera-index N | --view NAME] [--lights N,...] "
     "[--light-type T,...] [--size WxH] [--shading classic|pbr] [--ground off|visible|catcher] "
-    "[--shadows on|off] [--frames N] [--msaa N] [--interactive] "
+    "[--shadows on|off] [--frames N] [--msaa N] [--interactive] [--orbit DEG] "
     "[--quality LIST] [--approximations LIST] [--json OUT.json] [--chart OUT.png] [--scaling-chart OUT.png]";
 
 const char* kBundledModel = ":/resources/models/suzanne/Suzanne.gltf";
@@ -127,6 +128,12 @@ int runBench(const QStringList& args) {
         QStringLiteral("interactive"),
         QStringLiteral("Time what the editor's viewport draws while you navigate: dense models (300k+ "
                        "triangles) as their simplified interaction proxy."));
+    const QCommandLineOption orbit(
+        QStringLiteral("orbit"),
+        QStringLiteral("Degrees the camera orbits the model between timed frames, -360..360 (default 0: a "
+                       "still camera, as while a light is dragged; then the G-buffer and the background "
+                       "are kept between frames, while orbiting they are drawn every frame)."),
+        QStringLiteral("DEG"));
     const QCommandLineOption approximations(
         QStringLiteral("approximations"),
         QStringLiteral("The balanced and fast tiers' approximations to compile in, for measuring each "
@@ -136,7 +143,7 @@ int runBench(const QStringList& args) {
     const SceneOptionSet scene;
     parser.addOption(help);
     scene.addTo(parser);
-    parser.addOptions({lights, lightType, lightRange, frames, warmup, msaa, interactive, json, chart,
+    parser.addOptions({lights, lightType, lightRange, frames, warmup, msaa, interactive, orbit, json, chart,
                        scalingChart, noErrors, noUber, approximations});
     parser.addPositionalArgument(QStringLiteral("MODEL"),
                                  QStringLiteral("Model files (default: the standard suite)."),
@@ -169,6 +176,13 @@ int runBench(const QStringList& args) {
     if (!readInt(warmup, 0, 100000, &options.warmupFrames))
         return usage(QStringLiteral("--warmup must be 0..100000"));
     if (!readInt(msaa, 0, 16, &options.msaaSamples)) return usage(QStringLiteral("--msaa must be 0..16"));
+    if (parser.isSet(orbit)) {
+        bool ok = false;
+        options.orbitDegrees = parser.value(orbit).toDouble(&ok);
+        if (!ok || !(std::abs(options.orbitDegrees) <= 360.0))
+            return usage(
+                QStringLiteral("--orbit must be degrees in -360..360, got '%1'").arg(parser.value(orbit)));
+    }
     const QStringList models = parser.positionalArguments();
     std::vector<int> counts;
     if (parser.isSet(lights)) {

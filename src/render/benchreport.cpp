@@ -207,6 +207,7 @@ QJsonObject benchJson(const BenchReport& report) {
             {QStringLiteral("second_frame_ms"), round3(r.secondFrameMs)},
             {QStringLiteral("upload_ms"), round3(r.uploadMs)},
             {QStringLiteral("triangles_drawn"), r.trianglesDrawn},
+            {QStringLiteral("gbuffer_kept_frames"), r.keptFrames},
             {QStringLiteral("variants"), r.variants},
             {QStringLiteral("triangles"), double(r.triangles)}};
         const ErrorFigures& e = r.errors;
@@ -271,6 +272,7 @@ QJsonObject benchJson(const BenchReport& report) {
                                                 {QStringLiteral("exposure_ev"), op.exposureEV},
                                                 {QStringLiteral("tonemap"), toString(op.toneMap)},
                                                 {QStringLiteral("errors"), op.errors},
+                                                {QStringLiteral("orbit_degrees"), op.orbitDegrees},
                                                 {QStringLiteral("uber_shader"), op.uberShader}}},
         {QStringLiteral("reference_ms"), round3(report.referenceMs)},
         {QStringLiteral("results"), results},

@@ -2,6 +2,7 @@
 
 #include "offscreen.h"
 #include "reference.h"
+#include "turntable.h"
 
 #include <QElapsedTimer>
 #include <QFile>
@@ -10,6 +11,7 @@
 #include <QOpenGLFunctions>
 #include <QThread>
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <ctime>
 
@@ -121,15 +123,21 @@ bool measure(const BenchScene& scene, const BenchOptions& o, Quality q, bool ube
 
     const int total = std::max(0, o.warmupFrames) + std::max(1, o.frames);
     std::vector<double> wall, gpu, cpu;
+    const glm::dvec3 center = scene.model ? scene.model->bounds.center() : glm::dvec3(0.0);
     for (int i = 0; i < total; ++i) {
         if (i % 8 == 0 && !progress.report(0.8 * i / total, what)) return false;
+        const ViewCamera camera =
+            o.orbitDegrees != 0.0
+                ? orbitCamera(scene.camera, center, std::fmod(o.orbitDegrees * (i + 1), 360.0))
+                : scene.camera;
         clock.restart();
         const std::clock_t cpu0 = std::clock();
-        if (!gl.renderFrame(scene.camera, o.size, settings, error)) return false;
+        if (!gl.renderFrame(camera, o.size, settings, error)) return false;
         const double ms = clock.nsecsElapsed() * 1e-6;
         const double cpuMs = double(std::clock() - cpu0) * 1000.0 / CLOCKS_PER_SEC;
         if (i == 0) r->secondFrameMs = ms;
         if (i < o.warmupFrames) continue;
+        r->keptFrames += stats.gbufferKept ? 1 : 0;
         wall.push_back(ms);
         cpu.push_back(cpuMs);
         // The timer result read during this frame belongs to an earlier (already timed, steady) frame.

@@ -61,7 +61,11 @@ struct BenchOptions {
     bool uberShader = true;   // one more run per scene: the exact tier with every light model compiled in
     int msaaSamples = -1;     // timed runs: -1 each tier's own (tierMsaaSamples), else this for every tier
     bool interactive = false; // time what the viewport draws while navigating (interaction proxies, lod.h)
-    bool keepImages = false;  // with errors: keep each tier's image and the reference (BenchResult::image)
+    // Degrees the camera orbits the model between timed frames (turntable.h orbitCamera): nothing kept for
+    // a still view (the G-buffer, the background) helps then, as while the user orbits. 0: a still camera,
+    // as while a light is dragged.
+    double orbitDegrees = 0.0;
+    bool keepImages = false; // with errors: keep each tier's image and the reference (BenchResult::image)
     std::uint8_t approximations = render::approx::kDefault; // the tiers' approximations (approximations.h)
 };
 
@@ -90,6 +94,7 @@ struct BenchResult {
     // frame's later passes changed a state its programs were compiled for, is a stall the median hides.
     double secondFrameMs = 0.0;
     double uploadMs = 0.0; // of which the model upload (buffers, textures and their mipmaps)
+    int keptFrames = 0;    // timed frames that kept the G-buffer of the one before (RenderStats::gbufferKept)
     bool hasErrors = false;
     ErrorFigures errors; // against the double reference (nonFinite from the float radiance)
     // With errors, when the rig has shadow casters: the shadow measure (reference.h, compareShadows).

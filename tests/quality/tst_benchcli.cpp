@@ -40,11 +40,26 @@ class TestBenchCli : public QObject {
     void help() {
         const Run r = lightrig({QStringLiteral("--help")});
         QVERIFY2(r.code == 0, qPrintable(show(r)));
-        for (const char* option :
-             {"--lights", "--quality", "--json", "--chart", "--frames", "--msaa", "--rig", "--camera-index",
-              "--view", "--size", "--exposure", "--tonemap", "--shading", "--ground", "--shadows",
-              "--environment", "--environment-intensity", "--environment-rotation",
-              "--environment-background"})
+        for (const char* option : {"--lights",
+                                   "--quality",
+                                   "--json",
+                                   "--chart",
+                                   "--frames",
+                                   "--msaa",
+                                   "--rig",
+                                   "--camera-index",
+                                   "--view",
+                                   "--size",
+                                   "--exposure",
+                                   "--tonemap",
+                                   "--shading",
+                                   "--ground",
+                                   "--shadows",
+                                   "--environment",
+                                   "--environment-intensity",
+                                   "--environment-rotation",
+                                   "--environment-background",
+                                   "--orbit"})
             QVERIFY2(r.out.contains(QLatin1String(option)), option);
     }
 
@@ -68,6 +83,8 @@ class TestBenchCli : public QObject {
         QTest::addRow("bad environment intensity")
             << QStringList{"--environment-intensity", "99"}; // issue 15
         QTest::addRow("bad environment background") << QStringList{"--environment-background", "grey"};
+        QTest::addRow("orbit past a turn") << QStringList{"--orbit", "400"};
+        QTest::addRow("orbit word") << QStringList{"--orbit", "left"};
     }
 
     void usageErrors() {
@@ -188,6 +205,35 @@ class TestBenchCli : public QObject {
         const QStringList lines = r.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
         QCOMPARE(lines.size(), 3); // heading, column titles, one result
         QVERIFY(lines[2].startsWith(QStringLiteral("scene ")) && lines[2].contains(QStringLiteral(" fast ")));
+    }
+
+    // A still camera keeps the deferred G-buffer (one material: the attribute G-buffer, deferred at any
+    // light count) on every timed frame after the first draw; --orbit turns
+    // the camera between frames, and nothing is kept (the figure three.js's re-rendered frame compares to).
+    void orbitDrawsEveryFrame() {
+        if (!haveDisplay()) QSKIP("needs an X display with OpenGL: run under xvfb-run -a");
+        const QString json = m_dir.filePath(QStringLiteral("orbit.json"));
+        const auto kept = [&](const QStringList& extra) {
+            const Run r = lightrig(
+                QStringList{QStringLiteral(LIGHTRIG_TEST_DATA "/model/shiny.obj"),
+                            QStringLiteral("--quality"), QStringLiteral("exact"), QStringLiteral("--msaa"),
+                            QStringLiteral("0"), QStringLiteral("--size"), QStringLiteral("48x32"),
+                            QStringLiteral("--frames"), QStringLiteral("3"), QStringLiteral("--no-uber"),
+                            QStringLiteral("--no-errors"), QStringLiteral("--json"), json} +
+                extra);
+            if (r.code != 0) qWarning("%s", qPrintable(show(r)));
+            QFile f(json);
+            if (!f.open(QIODevice::ReadOnly)) return -1;
+            const QJsonObject doc = QJsonDocument::fromJson(f.readAll()).object();
+            const QJsonObject result = doc.value(QStringLiteral("results")).toArray().at(0).toObject();
+            return result.value(QStringLiteral("gbuffer_kept_frames")).toInt(-1) * 1000 +
+                   int(doc.value(QStringLiteral("options"))
+                           .toObject()
+                           .value(QStringLiteral("orbit_degrees"))
+                           .toDouble());
+        };
+        QCOMPARE(kept({}), 3000);                                              // 3 kept, orbit 0
+        QCOMPARE(kept({QStringLiteral("--orbit"), QStringLiteral("15")}), 15); // none kept, orbit 15
     }
 
     // Issue 15: --environment studio: the bench says which environment it used and what loading it cost
