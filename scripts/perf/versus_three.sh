@@ -7,7 +7,11 @@
 #        ../shared/models/bench/helmet_{1pt,8pt,64pt,8spot}.glb). Needs a dev build and xvfb-run; run it on
 #        an otherwise idle machine. Prints a Markdown table: three.js A / B, LightRig's tiers, the ratios
 #        exact/three.js and fast/three.js (against the mean of A and B, and the range against each), the
-#        first frames, and the fast tier's PSNR against the double-precision reference. Each run starts after
+#        first frames, and the fast tier's PSNR against the double-precision reference. LightRig runs twice:
+#        with the still camera three.js has (after the first draw the G-buffer and the background are
+#        kept: the frame of a light being dragged) and with --orbit 1 (the camera turns a degree a frame,
+#        nothing view-dependent is kept: the frame of a user orbiting, like for like with three.js, which
+#        re-renders everything every frame). Each run starts after
 #        COOLDOWN seconds (default 20) of rest: the run after Chromium exits was otherwise up to 15 % slower.
 #        ENV=FILE.exr|.hdr (issue 15): both light the scene with that environment, shown as the background
 #        (three.js: THREE_ENV + env=…&bg=1, PMREM; LightRig: --environment FILE, its prefilter included in
@@ -23,11 +27,12 @@ rounds=${1:-1}
 scenes=("$@")
 [ ${#scenes[@]} -gt 0 ] || scenes=("$root"/../shared/models/bench/helmet_{1pt,8pt,64pt,8spot}.glb)
 out=$(mktemp -d /tmp/lightrig-versus.XXXXXX)
-three_env=() lightrig_env=()
+three_env=() lightrig_env=() orbit_env=()
 if [ -n "${ENV:-}" ]; then
     env_file=$(realpath "$ENV")
     three_env=(THREE_ENV="$env_file" THREE_OPTS="env=scenes/$(basename "$env_file")&bg=1")
     lightrig_env=(--environment "$env_file" --no-errors)
+    orbit_env=(--environment "$env_file")
 fi
 rest() { sleep "${COOLDOWN:-20}"; }
 for r in $(seq "$rounds"); do
@@ -38,6 +43,9 @@ for r in $(seq "$rounds"); do
         rest
         MESA_SHADER_CACHE_DISABLE=true xvfb-run -a "$build/lightrig" bench "$s" --quality exact,balanced,fast \
             --msaa 0 --frames 60 --no-uber "${lightrig_env[@]}" --json "$out/lightrig_${name}_${r}.json" >/dev/null
+        MESA_SHADER_CACHE_DISABLE=true xvfb-run -a "$build/lightrig" bench "$s" --quality exact,fast --orbit 1 \
+            --msaa 0 --frames 60 --no-uber --no-errors "${orbit_env[@]}" \
+            --json "$out/orbit_${name}_${r}.json" >/dev/null
         rest
         env "${three_env[@]}" PEERS_OUT=$out FRAMES=60 "$three" "$s" >"$out/three_${name}_${r}_b.json" 2>>"$out/three.err" || true
     done
@@ -51,8 +59,9 @@ def three(path):
     except (OSError, ValueError, IndexError):
         return None
 print("| scene | three.js ms (A / B) | exact | balanced | fast | exact / three.js | fast / three.js "
+      "| orbiting: exact, fast | orbiting / three.js: exact, fast "
       "| three.js first frame (load) | LightRig first draw (upload; import) | fast PSNR |")
-print("|---|---|---|---|---|---|---|---|---|---|")
+print("|---|---|---|---|---|---|---|---|---|---|---|---|")
 for path in sorted(glob.glob(os.path.join(out, "lightrig_*.json"))):
     key = os.path.basename(path)[len("lightrig_"):-len(".json")]
     q = {r["quality"]: r for r in json.load(open(path))["results"]}
@@ -63,9 +72,15 @@ for path in sorted(glob.glob(os.path.join(out, "lightrig_*.json"))):
     ms = [t["msPerFrameMedian"] for t in ab]
     mean = statistics.mean(ms)
     e, b, f = q["exact"], q["balanced"], q["fast"]
-    print("| %s | %s | %.1f | %.1f | %.1f | **%.2f** (%.2f–%.2f) | **%.2f** | %.2f s (%.2f s) | %.2f s (%.2f s; %.2f s) | %.1f dB |"
+    try:
+        o = {r["quality"]: r for r in json.load(open(os.path.join(out, "orbit_%s.json" % key)))["results"]}
+        oe, of = o["exact"]["ms_median"], o["fast"]["ms_median"]
+    except (OSError, ValueError, KeyError):
+        oe = of = float("nan")
+    print("| %s | %s | %.1f | %.1f | %.1f | **%.2f** (%.2f–%.2f) | **%.2f** | %.1f, %.1f | **%.2f**, %.2f | %.2f s (%.2f s) | %.2f s (%.2f s; %.2f s) | %.1f dB |"
           % (key, " / ".join("%.1f" % m for m in ms), e["ms_median"], b["ms_median"], f["ms_median"],
              e["ms_median"] / mean, e["ms_median"] / max(ms), e["ms_median"] / min(ms), f["ms_median"] / mean,
+             oe, of, oe / mean, of / mean,
              ab[0]["firstFrameMs"] / 1000, ab[0]["loadMs"] / 1000, e["first_draw_ms"] / 1000,
              e["upload_ms"] / 1000, e["load_ms"] / 1000, f.get("psnr_db") or float("nan")))
 PY
