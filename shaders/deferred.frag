@@ -5,6 +5,7 @@
 // LR_ATTRIBUTE_GBUFFER: the G-buffer holds the fragment's attributes instead (surface.glsl), and this pass
 // builds the Surface with the material's textures, so the texture reads too run once per pixel in whole
 // blocks instead of in every small triangle's partial ones.
+// LR_OUTPUT_GBUFFER (with LR_ATTRIBUTE_GBUFFER): no shading; the Surface is written out (the kept surfaces).
 uniform sampler2D uGBuffer0;  // decodeGBuffer's g0 .. g3 (gbuffer.glsl, generated from src/render/gbuffer.h)
 uniform sampler2D uGBuffer1;
 uniform sampler2D uGBuffer2;
@@ -15,7 +16,17 @@ uniform float uDistanceScale;
 uniform float uExposureScale;
 #endif
 
-out vec4 oColor;
+#ifdef LR_OUTPUT_GBUFFER
+// LR_ATTRIBUTE_GBUFFER and LR_OUTPUT_GBUFFER: the kept surfaces (pass_lighting.cpp). Each pixel's Surface,
+// built from its attributes and its material's textures, is written in the Surface G-buffer's layout
+// (encodeGBuffer) for the frames that shade it again under a still camera.
+layout(location = 0) out vec4 oGBuffer0;
+layout(location = 1) out vec4 oGBuffer1;
+layout(location = 2) out vec4 oGBuffer2;
+layout(location = 3) out vec4 oGBuffer3;
+#else
+layout(location = 0) out vec4 oColor;
+#endif
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
@@ -27,6 +38,14 @@ void main() {
     Surface s = decodeGBuffer(texelFetch(uGBuffer0, p, 0), texelFetch(uGBuffer1, p, 0),
                               texelFetch(uGBuffer2, p, 0), texelFetch(uGBuffer3, p, 0));
 #endif
+#ifdef LR_OUTPUT_GBUFFER
+    vec4 g0, g1, g2, g3;
+    encodeGBuffer(s, g0, g1, g2, g3);
+    oGBuffer0 = g0;
+    oGBuffer1 = g1;
+    oGBuffer2 = g2;
+    oGBuffer3 = g3;
+#else
     ShadeSettings st;
     st.ambient = uAmbient;
     st.distanceScale = uDistanceScale;
@@ -42,5 +61,6 @@ void main() {
     oColor = vec4(displayEncode(radiance, uExposureScale, LR_TONE_MAP), 1.0);
 #else
     oColor = vec4(radiance, 1.0);
+#endif
 #endif
 }

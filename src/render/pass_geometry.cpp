@@ -96,6 +96,7 @@ bool GeometryPass::run(const FrameContext& frame, PassScene& scene) {
         if (stencil) glClearStencil(0);
         glClear(GL_DEPTH_BUFFER_BIT | (frame.gbufferReadBack ? GL_COLOR_BUFFER_BIT : 0) |
                 (stencil ? GL_STENCIL_BUFFER_BIT : 0));
+        ++scene.targets->gbufferRevision; // what was built from the G-buffer before is stale now
     } else {
         glBindFramebuffer(GL_FRAMEBUFFER, targets.drawFbo());
         glClearColor(frame.clearColour.r, frame.clearColour.g, frame.clearColour.b, frame.clearColour.a);

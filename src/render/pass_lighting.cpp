@@ -40,12 +40,39 @@ QRect screenBounds(const Bounds& box, const glm::dmat4& viewProjection, QSize si
 
 } // namespace
 
+void DeferredLightingPass::release() {
+    m_surfaceKeys.clear();
+}
+
+bool DeferredLightingPass::buildSurfaces(const FrameContext& frame, PassScene& scene,
+                                         const std::vector<FeatureKey>& keys) {
+    glBindFramebuffer(GL_FRAMEBUFFER, scene.targets->surfaceFbo);
+    bool ok = true;
+    for (size_t m = 0; m < keys.size(); ++m) {
+        const AttributeMaterial& material = frame.attributeMaterials[m];
+        glStencilFunc(GL_EQUAL, int(m) + 1, 0xFF);
+        QString error;
+        MeshProgram* p = scene.programs->meshProgram(keys[m], &error);
+        if (!p) {
+            ok = fail(scene, error);
+            continue;
+        }
+        p->program->bind();
+        bindMaterial(keys[m], *p, *material.draw, *material.source->model(), *scene.rig, 0);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        p->program->release();
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, scene.targets->fbo);
+    return ok;
+}
+
 bool DeferredLightingPass::run(const FrameContext& frame, PassScene& scene) {
-    const Targets& targets = *scene.targets;
+    Targets& targets = *scene.targets;
     glBindFramebuffer(GL_FRAMEBUFFER, targets.fbo);
     glViewport(0, 0, frame.targetSize.width(), frame.targetSize.height());
     glClearColor(frame.clearColour.r, frame.clearColour.g, frame.clearColour.b, frame.clearColour.a);
     glClear(GL_COLOR_BUFFER_BIT);
+    scene.stats->surfacesKept = false;
     const Model* model = scene.model->model();
     if (!model) return true;
     const RenderSettings& settings = *frame.settings;
@@ -62,33 +89,90 @@ bool DeferredLightingPass::run(const FrameContext& frame, PassScene& scene) {
     // even where the depth test rejects every pixel.
     const QRect scissor = screenBounds(scene.drawnBounds, frame.projection * frame.view, frame.targetSize);
     if (scissor.isEmpty()) return true;
-    for (int i = 0; i < kGBufferTargets; ++i) {
-        glActiveTexture(textureUnit(TextureUnit::GBuffer0, i));
-        glBindTexture(GL_TEXTURE_2D, targets.gbuffer[i]);
+    const std::vector<AttributeMaterial>& materials = frame.attributeMaterials;
+    // The programs that build each material's Surfaces (the lighting programs' own, without the lights).
+    std::vector<FeatureKey> surfaceKeys;
+    for (const AttributeMaterial& material : materials) {
+        FeatureKey k = key;
+        k.rig = RigFeatures();
+        k.rig.shading = key.rig.shading;
+        k.material = sampledFeatures(*material.draw, *scene.rig, key.rig);
+        k.attributes = true;
+        k.output = ShaderOutput::GBuffer;
+        k.toneMap = ToneMap::Clamp;
+        k.clustered = false;
+        surfaceKeys.push_back(k);
     }
-    glActiveTexture(GL_TEXTURE0);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_GREATER); // the triangle lies on the far plane: passes where a surface was drawn
-    glDepthMask(GL_FALSE);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_BLEND);
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(scissor.x(), scissor.y(), scissor.width(), scissor.height());
-    glBindVertexArray(scene.emptyVao);
+    // Under the attribute G-buffer the Surfaces go through Targets::surfaces: built when the G-buffer was
+    // drawn again (or for other programs), kept while it is kept.
+    const int revision = targets.gbufferRevision;
+    const bool keepable =
+        !materials.empty() &&
+        (long long)frame.targetSize.width() * frame.targetSize.height() <= kKeptSurfacePixels;
+    const bool kept = keepable && targets.surfacesRevision == revision && surfaceKeys == m_surfaceKeys;
+
+    // A full-screen triangle on the far plane, depth-tested GL_GREATER: it passes where a surface was
+    // drawn; under the attribute G-buffer each material's pixels are those whose stencil holds its value
+    // (the G-pass wrote it).
+    const auto fullScreenState = [&](bool stencil) {
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_GREATER);
+        glDepthMask(GL_FALSE);
+        glDisable(GL_CULL_FACE);
+        glDisable(GL_BLEND);
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(scissor.x(), scissor.y(), scissor.width(), scissor.height());
+        if (stencil) {
+            glEnable(GL_STENCIL_TEST);
+            glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+            glStencilMask(0);
+        }
+        glBindVertexArray(scene.emptyVao);
+    };
+    const auto bindTargets = [&](const GLuint(&textures)[kGBufferTargets]) {
+        for (int i = 0; i < kGBufferTargets; ++i) {
+            glActiveTexture(textureUnit(TextureUnit::GBuffer0, i));
+            glBindTexture(GL_TEXTURE_2D, textures[i]);
+        }
+        glActiveTexture(GL_TEXTURE0);
+    };
+    bool ok = true;
+    if (keepable && !kept) {
+        fullScreenState(true);
+        bindTargets(targets.gbuffer);
+        QString error;
+        targets.surfacesRevision = -1;
+        m_surfaceKeys.clear();
+        if (!targets.createSurfaces(this, &error)) {
+            ok = fail(scene, error);
+        } else if (buildSurfaces(frame, scene, surfaceKeys)) {
+            targets.surfacesRevision = revision;
+            m_surfaceKeys = surfaceKeys;
+            ++scene.stats->surfaceBuilds;
+        } else {
+            ok = false;
+        }
+        unbindMaterialSamplers();
+        glDisable(GL_STENCIL_TEST);
+        glStencilMask(0xFF);
+        // The programs that built the Surfaces left their sampler state in slots the lighting programs'
+        // texture buffers use; a frame that keeps the Surfaces runs no such program before the lighting,
+        // and llvmpipe would compile the lighting program again for that (passes.h primeSamplerSlots).
+        primeSamplerSlots(scene);
+        glBindFramebuffer(GL_FRAMEBUFFER, targets.fbo);
+    }
+    scene.stats->surfacesKept = kept;
+    // One full-screen triangle over every material's Surfaces, or under the attribute G-buffer one per
+    // material, each where the stencil holds that material's value, its Surface built with that material.
+    const bool fromSurfaces = keepable && targets.surfacesRevision == revision;
+    fullScreenState(!materials.empty() && !fromSurfaces);
+    bindTargets(fromSurfaces ? targets.surfaces : targets.gbuffer);
     scene.lights->bind(this, key.clustered);
     if (scene.shadows) scene.shadows->bind(this);
     if (key.rig.environment) scene.environment->bind(this);
-    // One full-screen triangle, or under the attribute G-buffer one per material, each where the stencil
-    // holds that material's value (the G-pass wrote it), its Surface built with that material.
-    const std::vector<AttributeMaterial>& materials = frame.attributeMaterials;
-    if (!materials.empty()) {
-        glEnable(GL_STENCIL_TEST);
-        glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-        glStencilMask(0);
-    }
-    bool ok = true;
-    for (size_t m = 0; m < std::max<size_t>(1, materials.size()); ++m) {
-        const AttributeMaterial* material = materials.empty() ? nullptr : &materials[m];
+    const size_t draws = fromSurfaces ? 1 : std::max<size_t>(1, materials.size());
+    for (size_t m = 0; m < draws; ++m) {
+        const AttributeMaterial* material = fromSurfaces || materials.empty() ? nullptr : &materials[m];
         if (material) {
             key.material = sampledFeatures(*material->draw, *scene.rig, key.rig);
             key.attributes = true;

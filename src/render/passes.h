@@ -111,6 +111,13 @@ class GeometryPass final : public MeshPass {
 
 // Shades every covered G-buffer pixel once: a full-screen triangle on the far plane, depth-tested
 // GL_GREATER, scissored to the model's screen rectangle.
+//
+// The kept surfaces: under the attribute G-buffer each pixel's Surface is built from its attributes and
+// its material's textures, most of this pass's work. The pass writes them into a second set of targets in
+// the Surface layout (Targets::surfaces, up to kKeptSurfacePixels; one program per material, without the
+// lights) and shades those with the Surface G-buffer path's program, so while the G-pass keeps the
+// G-buffer (a still camera) the frames after the first shade the kept Surfaces without reading the
+// textures again. The same programs every frame: a still view compiles nothing of its own.
 class DeferredLightingPass final : public MeshPass {
   public:
     const char* name() const override { return "deferred lighting"; }
@@ -120,7 +127,17 @@ class DeferredLightingPass final : public MeshPass {
     }
     PassResources writes() const override { return resource::SceneColor; }
     bool run(const FrameContext& frame, PassScene& scene) override;
+    void release() override;
+
+  private:
+    // Writes each material's Surfaces into Targets::surfaces with the programs of `keys`.
+    bool buildSurfaces(const FrameContext& frame, PassScene& scene, const std::vector<FeatureKey>& keys);
+    std::vector<FeatureKey> m_surfaceKeys; // the programs that built Targets::surfaces
 };
+
+// The most pixels the kept surfaces are made for (a second set of four RGBA32F targets: 64 bytes a pixel,
+// 256 MiB at this size); beyond it every frame builds the Surfaces from the attributes.
+constexpr long long kKeptSurfacePixels = 2048LL * 2048LL;
 
 // The environment behind the model (Environment::background Visible or Blurred, an environment loaded, the
 // image not transparent): a full-screen triangle on the far plane, depth-tested LEQUAL without depth

@@ -91,6 +91,10 @@ struct RenderStats {
     // kept the one before instead of drawing the model again.
     int gbufferBuilds = 0;
     bool gbufferKept = false;
+    // The kept surfaces (passes.h DeferredLightingPass): built since initialize(), and whether the last
+    // frame shaded them.
+    int surfaceBuilds = 0;
+    bool surfacesKept = false;
     // Shadows (shadowmaps.h): casting lights this frame, the maps (lights) and layers (a point light's six
     // faces each) re-rendered by this frame, and the map array's size (0 without casters).
     int shadowCasters = 0;

@@ -29,6 +29,32 @@ bool complete(QOpenGLFunctions_3_3_Core* gl, const char* what, QSize size, QStri
     return false;
 }
 
+// Four RGBA32F textures of `size` and the depth-stencil texture `depth` in one framebuffer.
+bool createMrt(QOpenGLFunctions_3_3_Core* gl, const char* what, QSize size, GLuint depth, GLuint* fbo,
+               GLuint (&textures)[kGBufferTargets], QString* error) {
+    gl->glGenFramebuffers(1, fbo);
+    gl->glBindFramebuffer(GL_FRAMEBUFFER, *fbo);
+    GLenum buffers[kGBufferTargets];
+    for (int i = 0; i < kGBufferTargets; ++i) {
+        textures[i] = makeTexture(gl, GL_RGBA32F, GL_RGBA, GL_FLOAT, size);
+        gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GLenum(GL_COLOR_ATTACHMENT0 + i), GL_TEXTURE_2D,
+                                   textures[i], 0);
+        buffers[i] = GLenum(GL_COLOR_ATTACHMENT0 + i);
+    }
+    gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
+    gl->glDrawBuffers(kGBufferTargets, buffers);
+    const bool ok = complete(gl, what, size, error);
+    gl->glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (!ok) {
+        gl->glDeleteFramebuffers(1, fbo);
+        gl->glDeleteTextures(kGBufferTargets, textures);
+        *fbo = 0;
+        for (GLuint& t : textures)
+            t = 0;
+    }
+    return ok;
+}
+
 } // namespace
 
 bool Targets::create(QOpenGLFunctions_3_3_Core* gl, QSize s, int n, GLenum format, QString* error) {
@@ -80,40 +106,28 @@ bool Targets::create(QOpenGLFunctions_3_3_Core* gl, QSize s, int n, GLenum forma
 }
 
 bool Targets::createGBuffer(QOpenGLFunctions_3_3_Core* gl, QString* error) {
-    if (gbufferFbo) return true;
-    gl->glGenFramebuffers(1, &gbufferFbo);
-    gl->glBindFramebuffer(GL_FRAMEBUFFER, gbufferFbo);
-    GLenum buffers[kGBufferTargets];
-    for (int i = 0; i < kGBufferTargets; ++i) {
-        gbuffer[i] = makeTexture(gl, GL_RGBA32F, GL_RGBA, GL_FLOAT, size);
-        gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GLenum(GL_COLOR_ATTACHMENT0 + i), GL_TEXTURE_2D,
-                                   gbuffer[i], 0);
-        buffers[i] = GLenum(GL_COLOR_ATTACHMENT0 + i);
-    }
-    gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
-    gl->glDrawBuffers(kGBufferTargets, buffers);
-    const bool ok = complete(gl, "G-buffer", size, error);
-    gl->glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    if (!ok) {
-        gl->glDeleteFramebuffers(1, &gbufferFbo);
-        gl->glDeleteTextures(kGBufferTargets, gbuffer);
-        gbufferFbo = 0;
-        for (GLuint& t : gbuffer)
-            t = 0;
-    }
-    return ok;
+    return gbufferFbo || createMrt(gl, "G-buffer", size, depth, &gbufferFbo, gbuffer, error);
+}
+
+bool Targets::createSurfaces(QOpenGLFunctions_3_3_Core* gl, QString* error) {
+    return surfaceFbo || createMrt(gl, "kept surfaces", size, depth, &surfaceFbo, surfaces, error);
 }
 
 void Targets::release(QOpenGLFunctions_3_3_Core* gl) {
-    GLuint fbos[] = {msaaFbo, fbo, gbufferFbo};
+    GLuint fbos[] = {msaaFbo, fbo, gbufferFbo, surfaceFbo};
     GLuint rbs[] = {msaaColor, msaaDepth};
-    GLuint texs[] = {color, depth, gbuffer[0], gbuffer[1], gbuffer[2], gbuffer[3]};
-    gl->glDeleteFramebuffers(3, fbos);
+    GLuint texs[] = {color, depth};
+    gl->glDeleteFramebuffers(4, fbos);
     gl->glDeleteRenderbuffers(2, rbs);
-    gl->glDeleteTextures(6, texs);
-    msaaFbo = msaaColor = msaaDepth = fbo = color = depth = gbufferFbo = 0;
+    gl->glDeleteTextures(2, texs);
+    gl->glDeleteTextures(kGBufferTargets, gbuffer);
+    gl->glDeleteTextures(kGBufferTargets, surfaces);
+    msaaFbo = msaaColor = msaaDepth = fbo = color = depth = gbufferFbo = surfaceFbo = 0;
     for (GLuint& t : gbuffer)
         t = 0;
+    for (GLuint& t : surfaces)
+        t = 0;
+    surfacesRevision = -1;
     size = QSize();
 }
 

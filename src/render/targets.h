@@ -21,11 +21,18 @@ struct Targets {
     GLuint fbo = 0, color = 0, depth = 0; // single-sample: textures
     GLuint gbufferFbo = 0;
     GLuint gbuffer[kGBufferTargets] = {};
-    int generation = 0; // a new number with every create(): what was drawn into the old ones is gone
+    int generation = 0;      // a new number with every create(): what was drawn into the old ones is gone
+    int gbufferRevision = 0; // one more with every G-pass that draws into the G-buffer
+    // The kept surfaces (passes.h DeferredLightingPass), on demand: four RGBA32F textures in the Surface
+    // layout sharing the depth, and the G-buffer revision they were built from (-1: none).
+    GLuint surfaceFbo = 0;
+    GLuint surfaces[kGBufferTargets] = {};
+    int surfacesRevision = -1;
 
     GLuint drawFbo() const { return samples > 1 ? msaaFbo : fbo; }
     bool create(QOpenGLFunctions_3_3_Core* gl, QSize size, int samples, GLenum colorFormat, QString* error);
-    bool createGBuffer(QOpenGLFunctions_3_3_Core* gl, QString* error); // for the current size
+    bool createGBuffer(QOpenGLFunctions_3_3_Core* gl, QString* error);  // for the current size
+    bool createSurfaces(QOpenGLFunctions_3_3_Core* gl, QString* error); // for the current size
     void release(QOpenGLFunctions_3_3_Core* gl);
 };
 

@@ -215,10 +215,16 @@ class TestDeferredTextures : public QObject {
         const auto same = [](const FloatImage& a, const FloatImage& b) {
             return maxRelativeDifference(a, b) == 0.0;
         };
+        // Under the attribute G-buffer every drawn G-buffer's Surfaces are written to the kept surfaces,
+        // and the frames that keep the G-buffer shade those without building them again.
+        const int surfaceBuilds = stats.surfaceBuilds;
         const auto [first, drawn] = frame(rig, aboveCamera(), false);
-        QVERIFY(drawn);
+        QVERIFY(drawn && !stats.surfacesKept);
+        QCOMPARE(stats.surfaceBuilds, surfaceBuilds + (deferredTextures ? 1 : 0));
         const auto [again, kept] = frame(rig, aboveCamera(), true);
         QVERIFY(kept && same(first, again));
+        QCOMPARE(stats.surfacesKept, deferredTextures);
+        QCOMPARE(stats.surfaceBuilds, surfaceBuilds + (deferredTextures ? 1 : 0));
 
         // A light moved and brighter: kept, and exactly what a drawn G-buffer gives.
         Rig moved = rig;
@@ -226,9 +232,11 @@ class TestDeferredTextures : public QObject {
         moved.lights[1].intensity *= 3.0;
         const auto [movedKept, k1] = frame(moved, aboveCamera(), true);
         QVERIFY(k1 && !same(movedKept, first)); // the light matters here
+        QCOMPARE(stats.surfacesKept, deferredTextures);
+        QCOMPARE(stats.surfaceBuilds, surfaceBuilds + (deferredTextures ? 1 : 0));
         QVERIFY(frame(moved, side, false).second);
         const auto [movedDrawn, k2] = frame(moved, aboveCamera(), false);
-        QVERIFY(k2 && same(movedKept, movedDrawn));
+        QVERIFY(k2 && same(movedKept, movedDrawn) && !stats.surfacesKept); // a drawn G-buffer: not kept
 
         // A forward frame of another view in between wrote the shared depth: drawn again.
         QVERIFY(frame(rig, aboveCamera(), true).second);
