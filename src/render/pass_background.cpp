@@ -33,7 +33,12 @@ bool BackgroundPass::run(const FrameContext& frame, PassScene& scene) {
     key.format = scene.targets->colorFormat;
     key.toneMap = display ? frame.toneMap : ToneMap::Clamp;
     key.display = display;
-    // The whole background goes into the kept texture (always: one compiled variant of each program, where a
+    // The deferred path's depth is the G-buffer's, kept with it: only the pixels it leaves at the far plane
+    // are looked up. A texture of every pixel serves any depth.
+    key.depth = frame.deferred ? scene.targets->gbufferRevision : -1;
+    Key everyPixel = key;
+    everyPixel.depth = -1;
+    // The background always goes into the kept texture (one compiled variant of each program, where a
     // direct draw as well would compile the environment lookup a second time for another target state), and
     // is copied where no surface is. Rendered again only when the key changes.
     if (!ensureCache(key)) return fail(scene, QStringLiteral("background: could not make its texture"));
@@ -53,9 +58,18 @@ bool BackgroundPass::run(const FrameContext& frame, PassScene& scene) {
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
     glBindVertexArray(scene.emptyVao);
-    if (m_cached != key) {
+    if (m_cached != key && m_cached != everyPixel) {
         glBindFramebuffer(GL_FRAMEBUFFER, m_cacheFbo);
-        glDisable(GL_DEPTH_TEST);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
+                               key.depth >= 0 ? scene.targets->depth : m_cacheDepth, 0);
+        if (key.depth < 0) {
+            glDepthMask(GL_TRUE);
+            glClearDepth(1.0);
+            glClear(GL_DEPTH_BUFFER_BIT);
+        }
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LEQUAL); // the triangle lies on the far plane: passes where nothing was drawn
+        glDepthMask(GL_FALSE);
         drawEnvironment();
         m_cached = key;
         ++m_builds;
@@ -89,10 +103,15 @@ bool BackgroundPass::ensureCache(const Key& key) {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glGenTextures(1, &m_cacheDepth);
+    glBindTexture(GL_TEXTURE_2D, m_cacheDepth);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, key.width, key.height, 0, GL_DEPTH_STENCIL,
+                 GL_UNSIGNED_INT_24_8, nullptr); // the scene depth's format: the same draw state
     glBindTexture(GL_TEXTURE_2D, 0);
     glGenFramebuffers(1, &m_cacheFbo);
     glBindFramebuffer(GL_FRAMEBUFFER, m_cacheFbo);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m_cacheTexture, 0);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, m_cacheDepth, 0);
     if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
         release(); // run() then fails with its error; the frame shows no background
         return false;
@@ -105,7 +124,8 @@ bool BackgroundPass::ensureCache(const Key& key) {
 void BackgroundPass::release() {
     if (m_cacheFbo) glDeleteFramebuffers(1, &m_cacheFbo);
     if (m_cacheTexture) glDeleteTextures(1, &m_cacheTexture);
-    m_cacheFbo = m_cacheTexture = 0;
+    if (m_cacheDepth) glDeleteTextures(1, &m_cacheDepth);
+    m_cacheFbo = m_cacheTexture = m_cacheDepth = 0;
     m_cached = Key();
 }
 

@@ -146,9 +146,13 @@ constexpr long long kKeptSurfacePixels = 2048LL * 2048LL;
 // shadows and the blended meshes (neither writes depth, both go over it). In the plan when
 // PlanKey::background.
 //
-// The whole background is rendered into a texture of the scene colour's format and copied where no surface
-// is (kBackgroundCopyShader): the same values. While nothing it depends on changes (Key; a light dragged
-// under a still camera) the environment's lookups are not repeated, only the copy.
+// The background is rendered into a texture of the scene colour's format and copied where no surface is
+// (kBackgroundCopyShader): the same values. While nothing it depends on changes (Key; a light dragged
+// under a still camera) the environment's lookups are not repeated, only the copy. On the deferred path
+// it is rendered depth-tested against the G-buffer's depth, so only the pixels no surface covers are
+// looked up (an orbiting camera renders it every frame), and it stays valid while that depth does
+// (Key::depth, Targets::gbufferRevision); on the forward path every pixel is, against a depth of its own
+// cleared to the far plane. Both draws have the same state, so the lookup compiles once.
 class BackgroundPass final : public RenderPass {
   public:
     const char* name() const override { return "background"; }
@@ -167,6 +171,9 @@ class BackgroundPass final : public RenderPass {
         GLenum format = 0; // the scene colour's
         ToneMap toneMap = ToneMap::Clamp;
         bool display = false;
+        // The G-buffer revision whose depth the texture was rendered against (only where it is the far
+        // plane); -1: every pixel, valid for any depth.
+        int depth = -1;
         bool operator==(const Key&) const = default;
     };
 
@@ -174,6 +181,7 @@ class BackgroundPass final : public RenderPass {
     bool ensureCache(const Key& key);
     Key m_cached; // what the texture holds (environment -1: nothing yet) and its size and format
     GLuint m_cacheTexture = 0, m_cacheFbo = 0;
+    GLuint m_cacheDepth = 0; // cleared to the far plane for the forward path's renders
     int m_builds = 0;
 };
 

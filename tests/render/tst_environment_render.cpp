@@ -288,6 +288,40 @@ class TestEnvironmentRender : public QObject {
         QCOMPARE(m_gl->renderer().stats().backgroundBuilds, builds + 3);
     }
 
+    // On the deferred path the kept background is looked up only where the G-buffer's depth is the far
+    // plane, and kept while that depth is: a model of the same bounds but a smaller silhouette under the
+    // same view (the G-buffer drawn again) renders it again, and the pixels it uncovers show the
+    // environment as the forward path (every pixel looked up) shows it.
+    void backgroundKeptWithTheDepth() {
+        const std::shared_ptr<Model> big = whiteSphere();
+        auto small = std::make_shared<Model>(makeSphere(0.5, 48, 24));
+        small->materials = big->materials;
+        small->bounds = big->bounds; // the same clip planes
+        m_gl->renderer().setEnvironment(uniformEnvironment(glm::vec3(0.2f, 0.4f, 0.8f)));
+        const Rig rig = environmentRig(ShadingModel::Pbr, EnvironmentBackground::Visible);
+        const ViewCamera cam = frontCamera();
+        const RenderSettings deferred = settingsFor(Quality::Exact, ShadingPath::Deferred);
+        const RenderStats& stats = m_gl->renderer().stats();
+        QVERIFY(m_gl->setModel(big));
+        (void)image(rig, cam, deferred);
+        QVERIFY(stats.deferred);
+        const int builds = stats.backgroundBuilds;
+        (void)image(rig, cam, deferred);
+        QVERIFY(stats.gbufferKept);
+        QCOMPARE(stats.backgroundBuilds, builds);
+        QVERIFY(m_gl->setModel(small));
+        const QImage after = image(rig, cam, deferred);
+        QVERIFY(!stats.gbufferKept);
+        QCOMPARE(stats.backgroundBuilds, builds + 1);
+        const QImage forward = image(rig, cam, settingsFor(Quality::Exact, ShadingPath::Forward));
+        QVERIFY(!stats.deferred);
+        const auto px = projectToPixel(m_gl->renderer(), cam, kSize, glm::dvec3(0.75, 0.0, 0.0));
+        QVERIFY(px);
+        const QColor a = after.pixelColor(*px), f = forward.pixelColor(*px);
+        QVERIFY2(a == f && std::abs(a.blue() - srgb(0.8f) * 255.0) <= 1.0,
+                 qPrintable(QStringLiteral("%1 against %2").arg(a.name(), f.name())));
+    }
+
     // Background: Visible shows the environment in uncovered pixels, identical on the display and HDR
     // paths; Blurred too (a uniform environment blurs to itself); Color shows the settings' colour;
     // a transparent image keeps alpha 0 there whatever the mode. The plan has the pass only when it draws.
