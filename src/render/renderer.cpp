@@ -377,7 +377,7 @@ bool Renderer::render(const ViewCamera& camera, QSize size, const RenderSettings
                     frame.environmentBackgroundLod >= 0.0f});
     m_stats.renderPlanBuilds = m_plan->builds();
     PassScene scene = passScene();
-    m_stats.gbufferKept = false; // the G-pass says otherwise when it runs and keeps
+    m_stats.gbufferKept = m_stats.surfacesKept = false; // the passes say otherwise when they run and keep
     const bool ok = m_plan->run(frame, scene) || fail(scene.error);
     m_stats.deferred = frame.deferred;
     m_stats.deferredTextures = !frame.attributeMaterials.empty();

@@ -241,6 +241,7 @@ class TestDeferredTextures : public QObject {
         // A forward frame of another view in between wrote the shared depth: drawn again.
         QVERIFY(frame(rig, aboveCamera(), true).second);
         QVERIFY(frame(rig, side, false, ShadingPath::Forward).second);
+        QVERIFY(!stats.surfacesKept); // the forward frame kept nothing
         const auto [afterForward, k3] = frame(rig, aboveCamera(), false);
         QVERIFY(k3 && same(afterForward, first));
         // So does a read-back of the G-buffer.
