@@ -34,7 +34,7 @@ PassResources GeometryPass::writes() const {
 
 bool GeometryPass::run(const FrameContext& frame, PassScene& scene) {
     const bool gpass = m_output == Output::GBuffer;
-    const Targets& targets = *scene.targets;
+    Targets& targets = *scene.targets;
     glViewport(0, 0, frame.targetSize.width(), frame.targetSize.height());
     primeSamplerSlots(scene);
     const ShaderOutput output = gpass                                 ? ShaderOutput::GBuffer
@@ -69,7 +69,6 @@ bool GeometryPass::run(const FrameContext& frame, PassScene& scene) {
                frame.projection,
                frame.targetSize.width(),
                frame.targetSize.height(),
-               targets.generation,
                scene.modelGeneration,
                scene.ground ? scene.groundRevision : -1,
                settings.interactive && scene.mutableModel->updateProxies(this),
@@ -77,12 +76,12 @@ bool GeometryPass::run(const FrameContext& frame, PassScene& scene) {
                rig.shading.shininess,
                order,
                ground};
-        const bool keep = drawsModel && !frame.gbufferReadBack && m_keptFrame >= 0 &&
-                          m_keptFrame + 1 == scene.frameSerial && key == m_kept;
-        m_keptFrame = -1;
+        // Nothing else wrote the G-buffer or its depth since this pass drew it (a forward frame, a
+        // read-back, new targets would have counted a revision), and it would draw the same.
+        const bool keep = drawsModel && !frame.gbufferReadBack && m_keptRevision >= 0 &&
+                          m_keptRevision == targets.gbufferRevision && key == m_kept;
         scene.stats->gbufferKept = keep;
         if (keep) {
-            m_keptFrame = scene.frameSerial;
             scene.stats->drawCalls = 0;
             scene.stats->trianglesDrawn = 0;
             return true;
@@ -96,20 +95,21 @@ bool GeometryPass::run(const FrameContext& frame, PassScene& scene) {
         if (stencil) glClearStencil(0);
         glClear(GL_DEPTH_BUFFER_BIT | (frame.gbufferReadBack ? GL_COLOR_BUFFER_BIT : 0) |
                 (stencil ? GL_STENCIL_BUFFER_BIT : 0));
-        ++scene.targets->gbufferRevision; // what was built from the G-buffer before is stale now
     } else {
         glBindFramebuffer(GL_FRAMEBUFFER, targets.drawFbo());
         glClearColor(frame.clearColour.r, frame.clearColour.g, frame.clearColour.b, frame.clearColour.a);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     }
+    ++targets.gbufferRevision; // the G-buffer or the depth it shares: what was built from them is stale
     scene.stats->drawCalls = 0;
     scene.stats->trianglesDrawn = 0;
     if (!drawsModel) return true;
     bool ok = drawMeshes(frame, scene, order, clustered, false);
     if (!ground.empty()) ok = drawMeshes(frame, scene, ground, clustered, false, scene.ground) && ok;
+    m_keptRevision = -1;
     if (gpass && ok && !frame.gbufferReadBack) {
         m_kept = std::move(key);
-        m_keptFrame = scene.frameSerial;
+        m_keptRevision = targets.gbufferRevision;
         ++scene.stats->gbufferBuilds;
     }
     return ok;

@@ -159,7 +159,6 @@ bool DeferredLightingPass::run(const FrameContext& frame, PassScene& scene) {
         // texture buffers use; a frame that keeps the Surfaces runs no such program before the lighting,
         // and llvmpipe would compile the lighting program again for that (passes.h primeSamplerSlots).
         primeSamplerSlots(scene);
-        glBindFramebuffer(GL_FRAMEBUFFER, targets.fbo);
     }
     scene.stats->surfacesKept = kept;
     // One full-screen triangle over every material's Surfaces, or under the attribute G-buffer one per

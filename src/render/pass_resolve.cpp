@@ -5,7 +5,7 @@
 namespace lr::render {
 
 bool ResolvePass::run(const FrameContext& frame, PassScene& scene) {
-    const Targets& targets = *scene.targets;
+    Targets& targets = *scene.targets;
     const int w = frame.targetSize.width(), h = frame.targetSize.height();
     // The HDR path tone-maps resolved radiance; the display path resolves its colours while presenting.
     // The overlay's occlusion test reads resolved depth.
@@ -15,6 +15,7 @@ bool ResolvePass::run(const FrameContext& frame, PassScene& scene) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.msaaFbo);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, targets.fbo);
     glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, mask, GL_NEAREST);
+    if (mask & GL_DEPTH_BUFFER_BIT) ++targets.gbufferRevision; // the single-sample depth it shares
     return true;
 }
 

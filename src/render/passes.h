@@ -79,8 +79,9 @@ class ShadowPass final : public RenderPass {
 // The G-buffer is kept while nothing it holds changes (Key): when the frame before drew or kept it with the
 // same key, the G-pass draws nothing and the lighting pass shades the kept surfaces again (with the
 // scene depth and the material stencil they were drawn with). A light dragged under a still camera thus
-// costs the lighting, not the model's geometry. Any frame in between that did not keep or draw it (the
-// forward path, a read-back, a failure) ends the keeping, since the depth it shares may have changed.
+// costs the lighting, not the model's geometry. Anything since that wrote the G-buffer or the depth it
+// shares (the forward path, a read-back, new targets) counted a Targets::gbufferRevision and ends the
+// keeping.
 class GeometryPass final : public MeshPass {
   public:
     enum class Output { GBuffer, Shaded };
@@ -89,14 +90,14 @@ class GeometryPass final : public MeshPass {
     PassResources reads() const override;
     PassResources writes() const override;
     bool run(const FrameContext& frame, PassScene& scene) override;
-    void release() override { m_keptFrame = -1; }
+    void release() override { m_keptRevision = -1; }
 
-    // What the G-pass's pixels depend on: the view, the targets, the scene's revisions and every draw's
-    // program key (material features, shading model, attributes or surfaces) in order.
+    // What the G-pass's pixels depend on: the view, the target size, the scene's revisions and every
+    // draw's program key (material features, shading model, attributes or surfaces) in order.
     struct Key {
         glm::dmat4 view{0.0}, projection{0.0};
         int width = 0, height = 0;
-        int targets = -1, model = -1, ground = -1; // Targets::generation, PassScene's revisions
+        int model = -1, ground = -1; // PassScene's revisions
         bool proxies = false, cullBackFaces = false;
         double shininess = 0.0; // the rig's, for materials without their own (classic)
         DrawOrder draws, groundDraws;
@@ -105,8 +106,8 @@ class GeometryPass final : public MeshPass {
 
   private:
     Output m_output;
-    Key m_kept;           // what the G-buffer holds when m_keptFrame >= 0
-    int m_keptFrame = -1; // the PassScene::frameSerial that drew or kept it
+    Key m_kept;              // what the G-buffer holds while m_keptRevision is the targets' revision
+    int m_keptRevision = -1; // Targets::gbufferRevision after this pass last drew the G-buffer (-1: none)
 };
 
 // Shades every covered G-buffer pixel once: a full-screen triangle on the far plane, depth-tested

@@ -315,7 +315,6 @@ PassScene Renderer::passScene() {
     s.shadows = m_shadows.get();
     s.modelGeneration = m_modelGeneration;
     s.groundRevision = m_groundRevision;
-    s.frameSerial = m_frameSerial;
     s.ground = m_ground->model() ? m_ground.get() : nullptr;
     s.groundMode = rig().ground.mode;
     s.emptyVao = m_emptyVao;
@@ -331,7 +330,6 @@ bool Renderer::render(const ViewCamera& camera, QSize size, const RenderSettings
     if (size.isEmpty()) return fail(QStringLiteral("render: empty size"));
     QElapsedTimer cpu;
     cpu.start();
-    ++m_frameSerial;
     FrameContext frame = frameContext(camera, size, settings, tile);
     frame.outputFbo = targetFbo;
     m_stats.lightsInRig = int(rig().lights.size());
@@ -401,7 +399,6 @@ bool Renderer::renderGBuffer(const ViewCamera& camera, QSize size, const RenderS
                              GBuffer* out, const QRect& tile) {
     if (!m_initialized) return fail(QStringLiteral("renderGBuffer before initialize"));
     if (size.isEmpty()) return fail(QStringLiteral("renderGBuffer: empty size"));
-    ++m_frameSerial;
     FrameContext frame = frameContext(camera, size, settings, tile);
     frame.gbufferReadBack = true;
     const QSize target = frame.targetSize;

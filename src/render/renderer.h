@@ -147,7 +147,6 @@ class Renderer : protected QOpenGLFunctions_3_3_Core {
     Ground m_groundUploaded;                    // what m_ground was built for
     int m_groundGeneration = -1;                // ... over which model
     int m_groundRevision = 0;                   // one more with every upload of it
-    int m_frameSerial = 0;                      // one more with every render() or renderGBuffer()
     std::vector<render::ShadowView> m_shadowViews;
     int m_modelGeneration = 0; // every setModel: shadow maps re-render
     std::shared_ptr<const LoadedEnvironment> m_environment;

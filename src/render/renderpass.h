@@ -59,7 +59,6 @@ struct PassScene {
     ShadowMaps* shadows = nullptr;
     int modelGeneration = 0; // changes with every setModel: the maps re-render
     int groundRevision = 0;  // changes with every upload of the ground's mesh
-    int frameSerial = 0;     // one more with every render() or renderGBuffer()
     const GpuModel* ground = nullptr;
     GroundMode groundMode = GroundMode::Off;
     RenderStats* stats = nullptr;

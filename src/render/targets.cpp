@@ -58,9 +58,8 @@ bool createMrt(QOpenGLFunctions_3_3_Core* gl, const char* what, QSize size, GLui
 } // namespace
 
 bool Targets::create(QOpenGLFunctions_3_3_Core* gl, QSize s, int n, GLenum format, QString* error) {
-    static int generations = 0;
     release(gl);
-    generation = ++generations;
+    ++gbufferRevision; // new textures: nothing drawn into the old ones is there
     size = s;
     samples = n > 1 ? n : 0;
     colorFormat = format;

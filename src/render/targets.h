@@ -21,8 +21,10 @@ struct Targets {
     GLuint fbo = 0, color = 0, depth = 0; // single-sample: textures
     GLuint gbufferFbo = 0;
     GLuint gbuffer[kGBufferTargets] = {};
-    int generation = 0;      // a new number with every create(): what was drawn into the old ones is gone
-    int gbufferRevision = 0; // one more with every G-pass that draws into the G-buffer
+    // One more whenever the G-buffer or the scene depth it shares may have changed: create(), and every
+    // pass that writes them (the G-pass, the forward geometry pass, the MSAA resolve of depth). What was
+    // built from them (the kept G-buffer, Surfaces and background) is valid while it holds.
+    int gbufferRevision = 0;
     // The kept surfaces (passes.h DeferredLightingPass), on demand: four RGBA32F textures in the Surface
     // layout sharing the depth, and the G-buffer revision they were built from (-1: none).
     GLuint surfaceFbo = 0;
