@@ -3,6 +3,8 @@
 #include "importprotocol.h"
 #include "modelcodec.h"
 
+#include "core/hugepages.h"
+
 #include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QJsonDocument>
@@ -169,17 +171,13 @@ QString lastLine(const QByteArray& text) {
 }
 
 // The worker decodes every texture into fresh buffers (16 MiB for a 2048² RGBA image, several times
-// over); in a virtual machine each 4 KiB page fault is costly. glibc's hugetlb tunable (2.35+) makes
-// malloc ask for transparent huge pages (madvise) on its large mappings: importing DamagedHelmet (five
-// 2048² JPEGs) took 490-610 ms before and 227-352 ms after, four runs each on the 2-core VM. A tunable
-// the user set already is kept.
+// over), so it runs with malloc on transparent huge pages (core/hugepages.h): importing DamagedHelmet
+// (five 2048² JPEGs) took 490-610 ms before and 227-352 ms after, four runs each on the 2-core VM.
 QProcessEnvironment workerEnvironment() {
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-    const QString tunables = env.value(QStringLiteral("GLIBC_TUNABLES"));
-    if (!tunables.contains(QLatin1String("glibc.malloc.hugetlb")))
-        env.insert(QStringLiteral("GLIBC_TUNABLES"),
-                   tunables.isEmpty() ? QStringLiteral("glibc.malloc.hugetlb=1")
-                                      : tunables + QStringLiteral(":glibc.malloc.hugetlb=1"));
+    const std::string tunables =
+        withHugePageTunable(env.value(QStringLiteral("GLIBC_TUNABLES")).toStdString());
+    if (!tunables.empty()) env.insert(QStringLiteral("GLIBC_TUNABLES"), QString::fromStdString(tunables));
     return env;
 }
 

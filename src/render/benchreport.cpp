@@ -264,6 +264,7 @@ QJsonObject benchJson(const BenchReport& report) {
         {QStringLiteral("tool"), QStringLiteral("lightrig bench")},
         {QStringLiteral("gl"), report.glDescription},
         {QStringLiteral("load_average"), report.loadAverage},
+        {QStringLiteral("glibc_tunables"), report.glibcTunables},
         {QStringLiteral("options"), QJsonObject{{QStringLiteral("width"), op.size.width()},
                                                 {QStringLiteral("height"), op.size.height()},
                                                 {QStringLiteral("warmup_frames"), op.warmupFrames},

@@ -256,6 +256,7 @@ BenchStatus runQualityBench(const std::vector<BenchScene>& scenes, const BenchOp
     QFile loadavg(QStringLiteral("/proc/loadavg"));
     if (loadavg.open(QIODevice::ReadOnly))
         report->loadAverage = QString::fromLatin1(loadavg.readAll()).section(QLatin1Char(' '), 0, 2);
+    report->glibcTunables = qEnvironmentVariable("GLIBC_TUNABLES");
     if (progressFn) progressFn(1.0, QStringLiteral("done"));
     return BenchStatus::Ok;
 }

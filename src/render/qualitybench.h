@@ -123,6 +123,7 @@ struct BenchReport {
     std::vector<BenchResult> results;
     double referenceMs = 0.0; // total CPU time of the references (wall)
     QString loadAverage;      // /proc/loadavg at the end of the run (empty where unavailable)
+    QString glibcTunables;    // GLIBC_TUNABLES the run had: malloc on huge pages or not (core/hugepages.h)
 };
 
 // Where and how much a tier's image differs from the reference: each pixel the largest channel difference

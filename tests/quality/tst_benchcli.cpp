@@ -236,6 +236,37 @@ class TestBenchCli : public QObject {
         QCOMPARE(kept({QStringLiteral("--orbit"), QStringLiteral("15")}), 15); // none kept, orbit 15
     }
 
+    // lightrig re-executes itself with malloc on transparent huge pages (core/hugepages.h): the bench,
+    // started without the tunable, ran with it; a user's own value of it is kept.
+    void runsWithHugePages() {
+        if (!haveDisplay()) QSKIP("needs an X display with OpenGL: run under xvfb-run -a");
+        const QString json = m_dir.filePath(QStringLiteral("tunables.json"));
+        const auto tunables = [&](const QString& value) {
+            QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+            env.remove(QStringLiteral("GLIBC_TUNABLES"));
+            if (!value.isEmpty()) env.insert(QStringLiteral("GLIBC_TUNABLES"), value);
+            QFile::remove(json);
+            const Run r = lrtest::runLightrig(
+                {QStringLiteral("bench"), QStringLiteral(LIGHTRIG_TEST_DATA "/model/shiny.obj"),
+                 QStringLiteral("--quality"), QStringLiteral("fast"), QStringLiteral("--size"),
+                 QStringLiteral("16x16"), QStringLiteral("--frames"), QStringLiteral("1"),
+                 QStringLiteral("--no-uber"), QStringLiteral("--no-errors"), QStringLiteral("--json"), json},
+                &env);
+            if (r.code != 0) qWarning("%s", qPrintable(show(r)));
+            QFile f(json);
+            if (!f.open(QIODevice::ReadOnly)) return QStringLiteral("(no JSON)");
+            return QJsonDocument::fromJson(f.readAll())
+                .object()
+                .value(QStringLiteral("glibc_tunables"))
+                .toString();
+        };
+        QCOMPARE(tunables({}), QStringLiteral("glibc.malloc.hugetlb=1"));
+        QCOMPARE(tunables(QStringLiteral("glibc.malloc.arena_max=2")),
+                 QStringLiteral("glibc.malloc.arena_max=2:glibc.malloc.hugetlb=1"));
+        QCOMPARE(tunables(QStringLiteral("glibc.malloc.hugetlb=0")),
+                 QStringLiteral("glibc.malloc.hugetlb=0"));
+    }
+
     // Issue 15: --environment studio: the bench says which environment it used and what loading it cost
     // before its table.
     void environmentIsNamed() {
