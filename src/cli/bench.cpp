@@ -29,7 +29,7 @@ namespace {
 const char* kUsage =
     "lightrig bench [MODEL...] [--rig RIG] [--camera-index N | --view NAME] [--lights N,...] "
     "[--light-type T,...] [--size WxH] [--shading classic|pbr] [--ground off|visible|catcher] "
-    "[--shadows on|off] [--frames N] [--msaa N] [--interactive] [--orbit DEG] "
+    "[--shadows on|off] [--frames N] [--msaa N] [--interactive] [--orbit DEG] [--drag] "
     "[--quality LIST] [--approximations LIST] [--json OUT.json] [--chart OUT.png] [--scaling-chart OUT.png]";
 
 const char* kBundledModel = ":/resources/models/suzanne/Suzanne.gltf";
@@ -134,6 +134,10 @@ int runBench(const QStringList& args) {
                        "still camera, as while a light is dragged; then the G-buffer and the background "
                        "are kept between frames, while orbiting they are drawn every frame)."),
         QStringLiteral("DEG"));
+    const QCommandLineOption drag(
+        QStringLiteral("drag"),
+        QStringLiteral("Move the rig's first light a little between timed frames, as while it is dragged: "
+                       "its shadow map (if it casts) is rendered every frame, the others are kept."));
     const QCommandLineOption approximations(
         QStringLiteral("approximations"),
         QStringLiteral("The balanced and fast tiers' approximations to compile in, for measuring each "
@@ -143,8 +147,8 @@ int runBench(const QStringList& args) {
     const SceneOptionSet scene;
     parser.addOption(help);
     scene.addTo(parser);
-    parser.addOptions({lights, lightType, lightRange, frames, warmup, msaa, interactive, orbit, json, chart,
-                       scalingChart, noErrors, noUber, approximations});
+    parser.addOptions({lights, lightType, lightRange, frames, warmup, msaa, interactive, orbit, drag, json,
+                       chart, scalingChart, noErrors, noUber, approximations});
     parser.addPositionalArgument(QStringLiteral("MODEL"),
                                  QStringLiteral("Model files (default: the standard suite)."),
                                  QStringLiteral("[MODEL...]"));
@@ -162,6 +166,7 @@ int runBench(const QStringList& args) {
     options.errors = !parser.isSet(noErrors);
     options.uberShader = !parser.isSet(noUber);
     options.interactive = parser.isSet(interactive);
+    options.dragLight = parser.isSet(drag);
     if (parser.isSet(approximations) &&
         !render::approx::parseApproximations(parser.value(approximations), &options.approximations, &message))
         return usage(QStringLiteral("--approximations: ") + message);

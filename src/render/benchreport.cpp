@@ -208,6 +208,7 @@ QJsonObject benchJson(const BenchReport& report) {
             {QStringLiteral("upload_ms"), round3(r.uploadMs)},
             {QStringLiteral("triangles_drawn"), r.trianglesDrawn},
             {QStringLiteral("gbuffer_kept_frames"), r.keptFrames},
+            {QStringLiteral("shadow_maps_rendered"), r.shadowMapsRendered},
             {QStringLiteral("variants"), r.variants},
             {QStringLiteral("triangles"), double(r.triangles)}};
         const ErrorFigures& e = r.errors;
@@ -274,6 +275,7 @@ QJsonObject benchJson(const BenchReport& report) {
                                                 {QStringLiteral("tonemap"), toString(op.toneMap)},
                                                 {QStringLiteral("errors"), op.errors},
                                                 {QStringLiteral("orbit_degrees"), op.orbitDegrees},
+                                                {QStringLiteral("drag_light"), op.dragLight},
                                                 {QStringLiteral("uber_shader"), op.uberShader}}},
         {QStringLiteral("reference_ms"), round3(report.referenceMs)},
         {QStringLiteral("results"), results},

@@ -124,6 +124,7 @@ bool measure(const BenchScene& scene, const BenchOptions& o, Quality q, bool ube
     const int total = std::max(0, o.warmupFrames) + std::max(1, o.frames);
     std::vector<double> wall, gpu, cpu;
     const glm::dvec3 center = scene.model ? scene.model->bounds.center() : glm::dvec3(0.0);
+    Rig dragged = scene.rig;
     for (int i = 0; i < total; ++i) {
         if (i % 8 == 0 && !progress.report(0.8 * i / total, what)) return false;
         const ViewCamera camera =
@@ -132,17 +133,28 @@ bool measure(const BenchScene& scene, const BenchOptions& o, Quality q, bool ube
                 : scene.camera;
         clock.restart();
         const std::clock_t cpu0 = std::clock();
+        if (o.dragLight && !dragged.lights.empty()) {
+            Light& l = dragged.lights.front();
+            const double step = (i % 2 ? -0.01 : 0.01);
+            if (l.usesPosition())
+                l.position.x += step * (scene.model ? scene.model->bounds.radius() : 1.0);
+            else
+                l.direction = glm::normalize(l.direction + glm::dvec3(step, 0.0, 0.0));
+            gl.setRig(dragged);
+        }
         if (!gl.renderFrame(camera, o.size, settings, error)) return false;
         const double ms = clock.nsecsElapsed() * 1e-6;
         const double cpuMs = double(std::clock() - cpu0) * 1000.0 / CLOCKS_PER_SEC;
         if (i == 0) r->secondFrameMs = ms;
         if (i < o.warmupFrames) continue;
         r->keptFrames += stats.gbufferKept ? 1 : 0;
+        r->shadowMapsRendered += stats.shadowMapsRendered;
         wall.push_back(ms);
         cpu.push_back(cpuMs);
         // The timer result read during this frame belongs to an earlier (already timed, steady) frame.
         if (stats.lastGpuMs >= 0.0 && i > o.warmupFrames) gpu.push_back(stats.lastGpuMs);
     }
+    if (o.dragLight) gl.setRig(scene.rig); // the error figures are of the rig as given
     r->msMedian = median(wall);
     r->msMin = *std::min_element(wall.begin(), wall.end());
     r->msMax = *std::max_element(wall.begin(), wall.end());

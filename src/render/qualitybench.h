@@ -65,6 +65,10 @@ struct BenchOptions {
     // a still view (the G-buffer, the background) helps then, as while the user orbits. 0: a still camera,
     // as while a light is dragged.
     double orbitDegrees = 0.0;
+    // The rig's first light moves between timed frames (±1 % of the model's radius along x, or its
+    // direction as much for a directional light), as while the user drags it: its shadow map, if it casts,
+    // is rendered again every frame, the other lights' maps are kept.
+    bool dragLight = false;
     bool keepImages = false; // with errors: keep each tier's image and the reference (BenchResult::image)
     std::uint8_t approximations = render::approx::kDefault; // the tiers' approximations (approximations.h)
 };
@@ -95,6 +99,7 @@ struct BenchResult {
     double secondFrameMs = 0.0;
     double uploadMs = 0.0; // of which the model upload (buffers, textures and their mipmaps)
     int keptFrames = 0;    // timed frames that kept the G-buffer of the one before (RenderStats::gbufferKept)
+    int shadowMapsRendered = 0; // over the timed frames (RenderStats::shadowMapsRendered)
     bool hasErrors = false;
     ErrorFigures errors; // against the double reference (nonFinite from the float radiance)
     // With errors, when the rig has shadow casters: the shadow measure (reference.h, compareShadows).
