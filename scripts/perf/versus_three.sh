@@ -17,6 +17,10 @@
 #        (three.js: THREE_ENV + env=…&bg=1, PMREM; LightRig: --environment FILE, its prefilter included in
 #        the first frame); LightRig's errors are then skipped (--no-errors): the integrated reference at
 #        1280×720 takes minutes, and docs/performance.md measures it at 320×180 instead.
+#        SHADOWS=1 (issue 14): every light casts on both sides (three.js: shadows=1, 1024² PCFSoft maps
+#        re-rendered every frame; LightRig: --shadows on, maps cached), errors skipped as for ENV.
+#        A third LightRig run (--drag, exact) moves the first light every frame: the frame of a light
+#        being dragged, its shadow map rendered again.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 build=${LIGHTRIG_BUILD:-$root/build/dev}
@@ -27,12 +31,21 @@ rounds=${1:-1}
 scenes=("$@")
 [ ${#scenes[@]} -gt 0 ] || scenes=("$root"/../shared/models/bench/helmet_{1pt,8pt,64pt,8spot}.glb)
 out=$(mktemp -d /tmp/lightrig-versus.XXXXXX)
-three_env=() lightrig_env=() orbit_env=()
+three_env=() three_opts=() lightrig_env=() orbit_env=()
 if [ -n "${ENV:-}" ]; then
     env_file=$(realpath "$ENV")
-    three_env=(THREE_ENV="$env_file" THREE_OPTS="env=scenes/$(basename "$env_file")&bg=1")
+    three_env=(THREE_ENV="$env_file")
+    three_opts+=("env=scenes/$(basename "$env_file")&bg=1")
     lightrig_env=(--environment "$env_file" --no-errors)
     orbit_env=(--environment "$env_file")
+fi
+if [ -n "${SHADOWS:-}" ]; then
+    three_opts+=("shadows=1")
+    lightrig_env+=(--shadows on --no-errors)
+    orbit_env+=(--shadows on)
+fi
+if [ ${#three_opts[@]} -gt 0 ]; then
+    three_env+=(THREE_OPTS="$(IFS='&'; echo "${three_opts[*]}")")
 fi
 rest() { sleep "${COOLDOWN:-20}"; }
 for r in $(seq "$rounds"); do
@@ -46,6 +59,9 @@ for r in $(seq "$rounds"); do
         MESA_SHADER_CACHE_DISABLE=true xvfb-run -a "$build/lightrig" bench "$s" --quality exact,fast --orbit 1 \
             --msaa 0 --frames 60 --no-uber --no-errors "${orbit_env[@]}" \
             --json "$out/orbit_${name}_${r}.json" >/dev/null
+        MESA_SHADER_CACHE_DISABLE=true xvfb-run -a "$build/lightrig" bench "$s" --quality exact --drag \
+            --msaa 0 --frames 60 --no-uber --no-errors "${orbit_env[@]}" \
+            --json "$out/drag_${name}_${r}.json" >/dev/null
         rest
         env "${three_env[@]}" PEERS_OUT=$out FRAMES=60 "$three" "$s" >"$out/three_${name}_${r}_b.json" 2>>"$out/three.err" || true
     done
@@ -59,9 +75,9 @@ def three(path):
     except (OSError, ValueError, IndexError):
         return None
 print("| scene | three.js ms (A / B) | exact | balanced | fast | exact / three.js | fast / three.js "
-      "| orbiting: exact, fast | orbiting / three.js: exact, fast "
+      "| orbiting: exact, fast | orbiting / three.js: exact, fast | dragging: exact (/ three.js) "
       "| three.js first frame (load) | LightRig first draw (upload; import) | fast PSNR |")
-print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
 for path in sorted(glob.glob(os.path.join(out, "lightrig_*.json"))):
     key = os.path.basename(path)[len("lightrig_"):-len(".json")]
     q = {r["quality"]: r for r in json.load(open(path))["results"]}
@@ -77,10 +93,14 @@ for path in sorted(glob.glob(os.path.join(out, "lightrig_*.json"))):
         oe, of = o["exact"]["ms_median"], o["fast"]["ms_median"]
     except (OSError, ValueError, KeyError):
         oe = of = float("nan")
-    print("| %s | %s | %.1f | %.1f | %.1f | **%.2f** (%.2f–%.2f) | **%.2f** | %.1f, %.1f | **%.2f**, %.2f | %.2f s (%.2f s) | %.2f s (%.2f s; %.2f s) | %.1f dB |"
+    try:
+        de = json.load(open(os.path.join(out, "drag_%s.json" % key)))["results"][0]["ms_median"]
+    except (OSError, ValueError, KeyError, IndexError):
+        de = float("nan")
+    print("| %s | %s | %.1f | %.1f | %.1f | **%.2f** (%.2f–%.2f) | **%.2f** | %.1f, %.1f | **%.2f**, %.2f | %.1f (**%.2f**) | %.2f s (%.2f s) | %.2f s (%.2f s; %.2f s) | %.1f dB |"
           % (key, " / ".join("%.1f" % m for m in ms), e["ms_median"], b["ms_median"], f["ms_median"],
              e["ms_median"] / mean, e["ms_median"] / max(ms), e["ms_median"] / min(ms), f["ms_median"] / mean,
-             oe, of, oe / mean, of / mean,
+             oe, of, oe / mean, of / mean, de, de / mean,
              ab[0]["firstFrameMs"] / 1000, ab[0]["loadMs"] / 1000, e["first_draw_ms"] / 1000,
              e["upload_ms"] / 1000, e["load_ms"] / 1000, f.get("psnr_db") or float("nan")))
 PY
