@@ -342,7 +342,7 @@ bool Renderer::render(const ViewCamera& camera, QSize size, const RenderSettings
     if (settings.deferredTextures && m_model->model() &&
         !(m_model->appendMaterials(materials) && (!visibleGround || m_ground->appendMaterials(materials))))
         materials.clear();
-    const int minLights = samples > 1 ? kDeferredMsaaMaxLights : !materials.empty() ? 0 : kDeferredMinLights;
+    const int minLights = samples > 1 ? kDeferredMsaaMaxLights : 0;
     const bool wantDeferred =
         !frame.fast && (settings.shadingPath == ShadingPath::Deferred ||
                         (settings.shadingPath == ShadingPath::Auto && m_lights->count() >= minLights));

@@ -15,16 +15,14 @@ namespace lr {
 // Forward: one pass shades every fragment of every triangle. Deferred: a G-pass writes the surfaces, then
 // one full-screen pass shades each covered pixel once (no MSAA; much cheaper on software rasterisers,
 // whose cost is whole 4x4 blocks per small triangle, but the G-pass costs about as much as a forward
-// pass without lights). Both give the same radiance. Auto: deferred when msaaSamples <= 1 and either the
-// opaque draws have few materials (deferredTextures below: the G-pass then writes only attributes and is
-// cheap; helmet_1pt exact 146 -> 127 M instructions a frame under cachegrind) or at least
-// kDeferredMinLights lights are uploaded (measured crossover on llvmpipe, DamagedHelmet at 1280x720 with
-// the G-pass sampling the textures: forward ~17 + 3.3 n ms CPU, deferred ~30 + 1.1 n), else forward.
-// From kDeferredMsaaMaxLights lights on,
-// Auto shades deferred even when MSAA was asked for, without it: forward with MSAA 4 costs ~2.6x forward
-// (64 lights: ~0.6 s a frame on llvmpipe against ~0.1 s deferred), which would freeze the editor.
+// pass without lights). Both give the same radiance. Auto: deferred whenever msaaSamples <= 1, at any
+// light count: the G-pass keeps the G-buffer while the view holds (GeometryPass::Key), so a frame in which
+// only lights change costs the lighting pass alone (helmet_1pt exact: 3.6-4.1 ms deferred against 13-15 ms
+// forward; while the camera moves forward is cheaper at one light, 14-18 against 18 ms, and dearer from a
+// few lights on). From kDeferredMsaaMaxLights lights on, Auto shades deferred even when MSAA was asked
+// for, without it: forward with MSAA 4 costs ~2.6x forward (64 lights: ~0.6 s a frame on llvmpipe against
+// ~0.1 s deferred), which would freeze the editor.
 enum class ShadingPath { Auto, Forward, Deferred };
-constexpr int kDeferredMinLights = 6;
 constexpr int kDeferredMsaaMaxLights = 64;
 
 struct RenderSettings {
@@ -59,9 +57,13 @@ struct RenderSettings {
     // Deferred path: with at most kMaxAttributeMaterials opaque materials (none with vertex colours or
     // alpha MASK) the G-pass writes only the interpolated attributes and a stencil value per material, and
     // the lighting pass samples each material's textures once per pixel in whole 4x4 blocks
-    // (shaders/surface.glsl). False: the G-pass writes Surfaces, as for more materials. The same radiance
-    // either way (tst_deferredtextures).
-    bool deferredTextures = true;
+    // (shaders/surface.glsl), through kept Surface targets (pass_lighting.cpp). False (the default): the
+    // G-pass writes Surfaces, sampling the textures itself. The same radiance either way
+    // (tst_deferredtextures). The attribute G-buffer makes a frame of a moving camera 12-18 % cheaper on
+    // the helmet alone (nothing on the helmet over a ground) but compiles one more program per material
+    // and keeps four more full-size RGBA32F targets: the first draw took 150-600 ms longer on every bench
+    // scene (docs/performance.md, "Session 14"), the frame of a still view is the same.
+    bool deferredTextures = false;
     // The view or a light is being dragged: dense models draw their interaction proxy (lod.h) once it is
     // built; the full mesh otherwise.
     bool interactive = false;
