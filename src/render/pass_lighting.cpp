@@ -72,7 +72,6 @@ bool DeferredLightingPass::run(const FrameContext& frame, PassScene& scene) {
     glViewport(0, 0, frame.targetSize.width(), frame.targetSize.height());
     glClearColor(frame.clearColour.r, frame.clearColour.g, frame.clearColour.b, frame.clearColour.a);
     glClear(GL_COLOR_BUFFER_BIT);
-    scene.stats->surfacesKept = false;
     const Model* model = scene.model->model();
     if (!model) return true;
     const RenderSettings& settings = *frame.settings;

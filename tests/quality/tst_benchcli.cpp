@@ -25,6 +25,13 @@ QString show(const Run& r) {
     return r.show();
 }
 
+// The JSON object a run wrote to `path`, empty when it wrote none (a failed run's output is logged).
+QJsonObject writtenJson(const Run& r, const QString& path) {
+    if (r.code != 0) qWarning("%s", qPrintable(show(r)));
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? QJsonDocument::fromJson(f.readAll()).object() : QJsonObject();
+}
+
 } // namespace
 
 class TestBenchCli : public QObject {
@@ -221,10 +228,7 @@ class TestBenchCli : public QObject {
                             QStringLiteral("--frames"), QStringLiteral("3"), QStringLiteral("--no-uber"),
                             QStringLiteral("--no-errors"), QStringLiteral("--json"), json} +
                 extra);
-            if (r.code != 0) qWarning("%s", qPrintable(show(r)));
-            QFile f(json);
-            if (!f.open(QIODevice::ReadOnly)) return -1;
-            const QJsonObject doc = QJsonDocument::fromJson(f.readAll()).object();
+            const QJsonObject doc = writtenJson(r, json);
             const QJsonObject result = doc.value(QStringLiteral("results")).toArray().at(0).toObject();
             return result.value(QStringLiteral("gbuffer_kept_frames")).toInt(-1) * 1000 +
                    int(doc.value(QStringLiteral("options"))
@@ -252,13 +256,7 @@ class TestBenchCli : public QObject {
                  QStringLiteral("16x16"), QStringLiteral("--frames"), QStringLiteral("1"),
                  QStringLiteral("--no-uber"), QStringLiteral("--no-errors"), QStringLiteral("--json"), json},
                 &env);
-            if (r.code != 0) qWarning("%s", qPrintable(show(r)));
-            QFile f(json);
-            if (!f.open(QIODevice::ReadOnly)) return QStringLiteral("(no JSON)");
-            return QJsonDocument::fromJson(f.readAll())
-                .object()
-                .value(QStringLiteral("glibc_tunables"))
-                .toString();
+            return writtenJson(r, json).value(QStringLiteral("glibc_tunables")).toString();
         };
         QCOMPARE(tunables({}), QStringLiteral("glibc.malloc.hugetlb=1"));
         QCOMPARE(tunables(QStringLiteral("glibc.malloc.arena_max=2")),
@@ -337,10 +335,7 @@ class TestBenchCli : public QObject {
                             QStringLiteral("--no-uber"), QStringLiteral("--no-errors"),
                             QStringLiteral("--json"), json} +
                 extra);
-            if (r.code != 0) qWarning("%s", qPrintable(show(r)));
-            QFile f(json);
-            if (!f.open(QIODevice::ReadOnly)) return -1;
-            const QJsonObject doc = QJsonDocument::fromJson(f.readAll()).object();
+            const QJsonObject doc = writtenJson(r, json);
             if (doc.value(QStringLiteral("options"))
                     .toObject()
                     .value(QStringLiteral("drag_light"))
