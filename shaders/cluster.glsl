@@ -37,11 +37,19 @@ vec3 shadeSurfaceClustered(Surface s, ShadeSettings st, vec2 fragCoord) {
 #define lrShadeClustered(l) shadeLight(l, s, st, V)
 #endif
 #if defined(LR_HAS_SURFACE_LIGHTS) || defined(LR_HAS_LIGHT_RIM)
-    for (int i = 0; i < uGlobalLightCount; ++i)
-        sum += lrShadeClustered(loadLight(int(texelFetch(uClusterIndices, i).r)));
+    if (uGlobalLightCount > 0) {  // do-while: see shadeSurface (lighting.glsl)
+        int i = 0;
+        do {
+            sum += lrShadeClustered(loadLight(int(texelFetch(uClusterIndices, i).r)));
+        } while (++i < uGlobalLightCount);
+    }
     uvec2 range = texelFetch(uClusterRanges, clusterIndexAt(fragCoord, -s.position.z)).rg;
-    for (uint k = 0u; k < range.y; ++k)
-        sum += lrShadeClustered(loadLight(int(texelFetch(uClusterIndices, int(range.x + k)).r)));
+    if (range.y > 0u) {
+        uint k = 0u;
+        do {
+            sum += lrShadeClustered(loadLight(int(texelFetch(uClusterIndices, int(range.x + k)).r)));
+        } while (++k < range.y);
+    }
 #endif
     return sum + s.emissive;
 }

@@ -404,7 +404,9 @@ struct ShadeSettings {
 
 #ifdef LR_SHADOWS
 // The share of the light that reaches the surface, L pointing to the light (shaders/shadows.glsl).
-float lrShadow(ShadeLight l, Surface s, vec3 L);
+// `needed`: false where the caller's result does not depend on it (the light adds nothing there), which
+// lets whole blocks of such pixels skip most of the filter; the value is then unspecified.
+float lrShadow(ShadeLight l, Surface s, vec3 L, bool needed);
 #endif
 
 // Compile-time constants where the scene has a single value: the branches on them fold away.
@@ -887,7 +889,7 @@ vec3 shadeAreaLight(ShadeLight l, Surface s, ShadeSettings st, vec3 V) {
     vec2 ds = areaClassic(l, s.position, s.normal, s.shininess, V);
     vec3 direct = l.color * s.albedo * ds.x + l.specular * s.specular * ds.y;
 #ifdef LR_SHADOWS
-    direct *= lrShadow(l, s, safeNormalize(l.position - s.position, s.normal));
+    direct *= lrShadow(l, s, safeNormalize(l.position - s.position, s.normal), true);
 #endif
 #ifdef LR_HAS_LIGHT_AMBIENT
     return direct + l.ambient * s.albedo;
@@ -960,7 +962,7 @@ vec3 shadeLight(ShadeLight l, Surface s, ShadeSettings st, vec3 V) {
 #endif
 #ifdef LR_SHADOWS
     // The shadow dims the light's direct terms, not its ambient one.
-    float visibility = lrShadow(l, s, L);
+    float visibility = lrShadow(l, s, L, D > 0.0 || S > 0.0);
 #ifdef LR_HAS_LIGHT_AMBIENT
     return attenuation * (visibility * (l.color * s.albedo * D + l.specular * s.specular * S) + l.ambient * s.albedo);
 #else
@@ -1061,7 +1063,7 @@ vec3 shadeAreaLightPbr(ShadeLight l, Surface s, ShadeSettings st, vec3 V, PbrSur
     AreaPbr a = areaPbr(l, s.position, s.normal, V, p.ltc, any(greaterThan(p.cDiff, vec3(0.0))));
     vec3 direct = l.color * (p.cDiff * (vec3(1.0) - p.f0) * a.diffuse) + l.specular * (p.f0 * a.scaleI + vec3(a.biasI));
 #ifdef LR_SHADOWS
-    direct *= lrShadow(l, s, safeNormalize(l.position - s.position, s.normal));
+    direct *= lrShadow(l, s, safeNormalize(l.position - s.position, s.normal), true);
 #endif
 #ifdef LR_HAS_LIGHT_AMBIENT
     return direct + l.ambient * p.cDiff * (saturate(s.occlusion) * kInvPi);
@@ -1094,7 +1096,8 @@ vec3 shadeLightPbr(ShadeLight l, Surface s, ShadeSettings st, vec3 V, PbrSurface
 #ifdef LR_SHADOWS
     // The shadow dims the light's direct lobes, not its ambient term (and is not sampled where the light
     // adds nothing).
-    float visibility = arrives ? lrShadow(l, s, L) : 0.0;
+    bool lit = arrives && attenuation > 0.0 && (cosTerm > 0.0 || nDotL > 0.0);  // else no direct lobe
+    float visibility = arrives ? lrShadow(l, s, L, lit) : 0.0;
 #ifdef LR_HAS_LIGHT_AMBIENT
     vec3 radiance = attenuation * (visibility * (l.color * f.diffuse + l.specular * f.specular) +
                                    l.ambient * cDiff * (saturate(s.occlusion) * kInvPi));
@@ -1122,19 +1125,34 @@ vec3 pbrSceneAmbient(Surface s, ShadeSettings st, PbrSurface p) {
 #endif  // LR_PBR
 
 // Scene ambient + every light + emissive.
+//
+// Loops over a run-time count are written `if (n > 0) { int i = 0; do { ... } while (++i < n); }` here
+// and in every shader: llvmpipe runs a block of pixels (or vertices) through a loop until none is left in
+// it, and a `for` loop's test comes first in each pass, so the `for` form runs one more pass than the
+// longest lane needs, with every lane masked off (measured: docs/performance.md, session 15).
 vec3 shadeSurface(Surface s, ShadeSettings st) {
     vec3 V = viewVector(st, s.position);
 #ifdef LR_PBR
     PbrSurface p = pbrSurfaceLit(s, V);
     vec3 sum = pbrSceneAmbient(s, st, p);
 #if defined(LR_HAS_SURFACE_LIGHTS) || defined(LR_HAS_LIGHT_RIM)
-    for (int i = 0; i < uLightCount; ++i) sum += shadeLightPbr(loadLight(i), s, st, V, p);
+    if (uLightCount > 0) {
+        int i = 0;
+        do {
+            sum += shadeLightPbr(loadLight(i), s, st, V, p);
+        } while (++i < uLightCount);
+    }
 #endif
     return sum + s.emissive;
 #else
     vec3 sum = st.ambient * s.albedo;
 #if defined(LR_HAS_SURFACE_LIGHTS) || defined(LR_HAS_LIGHT_RIM)
-    for (int i = 0; i < uLightCount; ++i) sum += shadeLight(loadLight(i), s, st, V);
+    if (uLightCount > 0) {
+        int i = 0;
+        do {
+            sum += shadeLight(loadLight(i), s, st, V);
+        } while (++i < uLightCount);
+    }
 #endif
     return sum + s.emissive;
 #endif
@@ -1213,12 +1231,20 @@ VertexLight shadeVertex(vec3 P, vec3 N, float shininess, ShadeSettings st) {
 #if defined(LR_HAS_SURFACE_LIGHTS) || defined(LR_HAS_LIGHT_RIM)
 #ifdef LR_SHADOWS
     // The casting lights are shaded per pixel (shadows.glsl shadeCastingLights).
-    for (int i = 0; i < uLightCount; ++i) {
-        ShadeLight l = loadLight(i);
-        if (l.shadow == 0) shadeLightSplit(l, P, N, shininess, st, V, o);
+    if (uLightCount > 0) {
+        int i = 0;
+        do {
+            ShadeLight l = loadLight(i);
+            if (l.shadow == 0) shadeLightSplit(l, P, N, shininess, st, V, o);
+        } while (++i < uLightCount);
     }
 #else
-    for (int i = 0; i < uLightCount; ++i) shadeLightSplit(loadLight(i), P, N, shininess, st, V, o);
+    if (uLightCount > 0) {
+        int i = 0;
+        do {
+            shadeLightSplit(loadLight(i), P, N, shininess, st, V, o);
+        } while (++i < uLightCount);
+    }
 #endif
 #endif
     return o;
@@ -1303,12 +1329,20 @@ VertexLightPbr shadeVertexPbr(vec3 P, vec3 N, float roughness, ShadeSettings st)
 #endif
 #if defined(LR_HAS_SURFACE_LIGHTS) || defined(LR_HAS_LIGHT_RIM)
 #ifdef LR_SHADOWS
-    for (int i = 0; i < uLightCount; ++i) {
-        ShadeLight l = loadLight(i);
-        if (l.shadow == 0) shadeLightSplitPbr(l, s, st, V, p, o);
+    if (uLightCount > 0) {
+        int i = 0;
+        do {
+            ShadeLight l = loadLight(i);
+            if (l.shadow == 0) shadeLightSplitPbr(l, s, st, V, p, o);
+        } while (++i < uLightCount);
     }
 #else
-    for (int i = 0; i < uLightCount; ++i) shadeLightSplitPbr(loadLight(i), s, st, V, p, o);
+    if (uLightCount > 0) {
+        int i = 0;
+        do {
+            shadeLightSplitPbr(loadLight(i), s, st, V, p, o);
+        } while (++i < uLightCount);
+    }
 #endif
 #endif
     return o;

@@ -146,12 +146,31 @@ float shadowTapAt(ShadowCoord c, float ref, vec2 slope, vec2 o) {
     return shadowTap(c.uvLayer + vec3(o, 0.0), min(ref + dot(slope, o), 1.0));
 }
 
-// Balanced: 3×3 bilinear compare taps a texel apart (a 4×4-texel tent).
-float shadowPcf3x3(ShadowCoord c, float ref, vec2 slope, float texelUv) {
+// Balanced: 3×3 bilinear compare taps a texel apart (a 4×4-texel tent), a row per pass of a loop that
+// a block of pixels which needs none of them leaves after one (as shadowPcss below).
+float shadowPcf3x3(ShadowCoord c, float ref, vec2 slope, float texelUv, bool needed) {
     float v = 0.0;
-    for (int y = -1; y <= 1; ++y)
-        for (int x = -1; x <= 1; ++x) v += shadowTapAt(c, ref, slope, vec2(x, y) * texelUv);
+    int rows = needed ? 3 : 0, row = 0;
+    do {
+        float y = float(row - 1);
+        v += shadowTapAt(c, ref, slope, vec2(-1.0, y) * texelUv);
+        v += shadowTapAt(c, ref, slope, vec2(0.0, y) * texelUv);
+        v += shadowTapAt(c, ref, slope, vec2(1.0, y) * texelUv);
+    } while (++row < rows);
     return v / 9.0;
+}
+
+// kPoisson[4·g + k] (k a constant) for a group g that varies at run time: selects between constants,
+// since llvmpipe reads an array indexed by a variable lane by lane, from memory.
+#define LR_POISSON(g, k) ((g) == 0 ? kPoisson[k] : (g) == 1 ? kPoisson[4 + (k)] : (g) == 2 ? kPoisson[8 + (k)] : kPoisson[12 + (k)])
+
+// One raw tap of PCSS's blocker search at uv offset o: a blocker adds its distance to sum and 1 to n.
+void blockerTap(ShadowRecord r, ShadowCoord c, float ref, vec2 slope, vec2 o, inout float sum, inout float n) {
+    float d = texture(uShadowDepths, c.uvLayer + vec3(o, 0.0)).r;
+    if (d < ref + dot(slope, o)) {
+        sum += linearDepth(r, d);
+        n += 1.0;
+    }
 }
 
 // Exact: percentage-closer soft shadows (Fernando 2005). The blockers' mean distance dB (8 raw taps) in the
@@ -162,7 +181,12 @@ float shadowPcf3x3(ShadowCoord c, float ref, vec2 slope, float texelUv) {
 // An area light's kernels reach kAreaFilterTexels: 16 taps that far apart would band, so its Poisson disk
 // turns by a per-texel angle (interleaved gradient noise of the map position: noise instead of bands);
 // other lights' turn is 0 (their kernels are exactly as before).
-float shadowPcss(ShadowRecord r, ShadowCoord c, float ref, vec2 slope, float texelUv) {
+//
+// The taps run in groups of four inside loops whose length is 0 where the result is not used (`needed`
+// false) or known (no blocker: fully lit). A software rasteriser runs a whole block of pixels through a
+// loop until none of them is left in it, so a block where no pixel needs the filter pays one group
+// instead of all (docs/performance.md, session 15). The taps and their order are those of a plain loop.
+float shadowPcss(ShadowRecord r, ShadowCoord c, float ref, vec2 slope, float texelUv, bool needed) {
     float dR = max(c.dist, 1e-30);
     float footprint = r.kind == 1 ? r.texelScale : r.texelScale * dR;  // world size of a texel here
     float reach = max(dR - r.znear, 0.0);
@@ -172,21 +196,28 @@ float shadowPcss(ShadowRecord r, ShadowCoord c, float ref, vec2 slope, float tex
     float turn = r.maxFilter > kMaxFilterTexels ? 6.2831853 * fract(52.9829189 * fract(dot(cell, vec2(0.06711056, 0.00583715)))) : 0.0;
     mat2 spin = mat2(cos(turn), sin(turn), -sin(turn), cos(turn));
     float sum = 0.0, n = 0.0;
-    for (int i = 0; i < 16; i += 2) {  // 8 of the 16 points: the mean blocker distance needs fewer
-        vec2 o = spin * kPoisson[i] * (search * texelUv);
-        float d = texture(uShadowDepths, c.uvLayer + vec3(o, 0.0)).r;
-        if (d < ref + dot(slope, o)) {
-            sum += linearDepth(r, d);
-            n += 1.0;
-        }
-    }
-    if (n == 0.0) return 1.0;
-    float dB = max(sum / n, 1e-30);
+    // 8 of the 16 points (the even ones; the mean blocker distance needs fewer), in two groups of four.
+    int groups = needed ? 2 : 0, g = 0;
+    do {
+        float scale = search * texelUv;
+        blockerTap(r, c, ref, slope, spin * LR_POISSON(2 * g, 0) * scale, sum, n);
+        blockerTap(r, c, ref, slope, spin * LR_POISSON(2 * g, 2) * scale, sum, n);
+        blockerTap(r, c, ref, slope, spin * LR_POISSON(2 * g + 1, 0) * scale, sum, n);
+        blockerTap(r, c, ref, slope, spin * LR_POISSON(2 * g + 1, 2) * scale, sum, n);
+    } while (++g < groups);
+    float dB = max(sum / max(n, 1.0), 1e-30);
     float penumbra = 0.5 * r.emitter * max(dR - dB, 0.0) / (r.kind == 1 ? 1.0 : dB);  // world, half-width
     float radius = clamp(penumbra / footprint, 0.5, r.maxFilter);
     float v = 0.0;
-    for (int i = 0; i < 16; ++i) v += shadowTapAt(c, ref, slope, spin * kPoisson[i] * (radius * texelUv));
-    return v / 16.0;
+    groups = needed && n > 0.0 ? 4 : 0;
+    g = 0;
+    do {
+        v += shadowTapAt(c, ref, slope, spin * LR_POISSON(g, 0) * (radius * texelUv));
+        v += shadowTapAt(c, ref, slope, spin * LR_POISSON(g, 1) * (radius * texelUv));
+        v += shadowTapAt(c, ref, slope, spin * LR_POISSON(g, 2) * (radius * texelUv));
+        v += shadowTapAt(c, ref, slope, spin * LR_POISSON(g, 3) * (radius * texelUv));
+    } while (++g < groups);
+    return n == 0.0 ? 1.0 : v / 16.0;
 }
 #endif
 
@@ -195,7 +226,7 @@ float shadowPcss(ShadowRecord r, ShadowCoord c, float ref, vec2 slope, float tex
 // light's side: an effective depth bias of offset/cos θ, growing where the light grazes) and toward the
 // light by the constant bias; glPolygonOffset adds the slope-scaled term when the map is drawn.
 // An area light's map is centred on its emitter, so its caller passes L towards the centre.
-float lrShadow(ShadeLight l, Surface s, vec3 L) {
+float lrShadow(ShadeLight l, Surface s, vec3 L, bool needed) {
     if (!lrShadowsOn || l.shadow <= 0) return 1.0;
     ShadowRecord r = loadShadow(l.shadow - 1);
     ShadowCoord c0 = shadowCoord(r, s.position);
@@ -211,9 +242,9 @@ float lrShadow(ShadeLight l, Surface s, vec3 L) {
     // Filters only where some caster has an extent (LR_SHADOW_SOFT): llvmpipe would run them for point
     // emitters too, whose result it then discards.
 #if defined(LR_QUALITY_EXACT) && defined(LR_SHADOW_SOFT)
-    if (r.emitter > 0.0) return shadowPcss(r, c, ref, receiverSlope(r, P, side, c, texel), texelUv);
+    if (r.emitter > 0.0) return shadowPcss(r, c, ref, receiverSlope(r, P, side, c, texel), texelUv, needed);
 #elif defined(LR_QUALITY_BALANCED) && defined(LR_SHADOW_SOFT)
-    if (r.emitter > 0.0) return shadowPcf3x3(c, ref, receiverSlope(r, P, side, c, texel), texelUv);
+    if (r.emitter > 0.0) return shadowPcf3x3(c, ref, receiverSlope(r, P, side, c, texel), texelUv, needed);
 #endif
     return shadowTap(c.uvLayer, ref);  // a point emitter, or the fast tier: one bilinear compare tap
 }
@@ -227,14 +258,18 @@ vec3 shadeCastingLights(Surface s, ShadeSettings st) {
 #ifdef LR_PBR
     PbrSurface p = pbrSurfaceLit(s, V);
 #endif
-    for (int k = 0; k < uShadowCount; ++k) {
-        int index = int(uShadowRecords[k * LR_SHADOW_TEXELS + 6].x);
-        if (index < 0) continue;
+    if (uShadowCount > 0) {  // do-while: see shadeSurface (lighting.glsl)
+        int k = 0;
+        do {
+            int index = int(uShadowRecords[k * LR_SHADOW_TEXELS + 6].x);
+            if (index >= 0) {
 #ifdef LR_PBR
-        sum += shadeLightPbr(loadLight(index), s, st, V, p);
+                sum += shadeLightPbr(loadLight(index), s, st, V, p);
 #else
-        sum += shadeLight(loadLight(index), s, st, V);
+                sum += shadeLight(loadLight(index), s, st, V);
 #endif
+            }
+        } while (++k < uShadowCount);
     }
     return sum;
 }
