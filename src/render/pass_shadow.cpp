@@ -7,14 +7,13 @@
 namespace lr::render {
 
 bool ShadowPass::run(const FrameContext& frame, PassScene& scene) {
-    Q_UNUSED(frame);
     if (!scene.shadows || !scene.shadowViews) return true;
     QString error;
     QOpenGLShaderProgram* p = scene.programs->fixedProgram(kShadowDepthShader, &error);
     if (!p) return fail(scene, error);
-    const bool ok =
-        scene.shadows->update(this, *scene.shadowViews, *scene.model, scene.modelGeneration, p->programId(),
-                              p->uniformLocation("uLightMatrix"), scene.stats, &error);
+    const bool ok = scene.shadows->update(this, *scene.shadowViews, *scene.model, scene.modelGeneration,
+                                          p->programId(), p->uniformLocation("uLightMatrix"),
+                                          frame.settings->waitForShadowMaps, scene.stats, &error);
     // The next pass sets its own framebuffer and viewport; restore the defaults renderpass.h promises.
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);

@@ -370,7 +370,7 @@ bool Renderer::render(const ViewCamera& camera, QSize size, const RenderSettings
     const bool shadows = !m_shadowViews.empty();
     const bool catcher = m_ground->model() && rig().ground.mode == GroundMode::Catcher;
     if (!shadows)
-        m_shadows->update(this, m_shadowViews, *m_model, m_modelGeneration, 0, -1, &m_stats, &error);
+        m_shadows->update(this, m_shadowViews, *m_model, m_modelGeneration, 0, -1, false, &m_stats, &error);
     m_plan->select({frame.deferred, hdr, frame.samples > 1, frame.overlays, blend, shadows, catcher,
                     frame.environmentBackgroundLod >= 0.0f});
     m_stats.renderPlanBuilds = m_plan->builds();

@@ -64,6 +64,11 @@ struct RenderSettings {
     // and keeps four more full-size RGBA32F targets: the first draw took 150-600 ms longer on every bench
     // scene (docs/performance.md, "Session 14"), the frame of a still view is the same.
     bool deferredTextures = false;
+    // Wait for the shadow maps a frame renders (glFinish) so that RenderStats::shadowMapMs is their own
+    // time (tests/render/shadow_perf). False (the default): the rasteriser's threads draw the maps while
+    // the main thread compiles and submits the passes that read them; the first frame of a scene with
+    // casters was 40-70 ms shorter (docs/performance.md, "Session 15").
+    bool waitForShadowMaps = false;
     // The view or a light is being dragged: dense models draw their interaction proxy (lod.h) once it is
     // built; the full mesh otherwise.
     bool interactive = false;
@@ -103,7 +108,9 @@ struct RenderStats {
     int shadowMapsRendered = 0;
     int shadowLayersRendered = 0;
     qint64 shadowMapBytes = 0;
-    double shadowMapMs = 0.0; // wall time of this frame's map renders, waited for (0: none rendered)
+    // Wall time of this frame's map renders (0: none rendered): their own time under
+    // RenderSettings::waitForShadowMaps, else only their submission.
+    double shadowMapMs = 0.0;
 };
 
 } // namespace lr

@@ -275,7 +275,7 @@ void ShadowMaps::release(QOpenGLFunctions_3_3_Core* gl) {
 
 bool ShadowMaps::update(QOpenGLFunctions_3_3_Core* gl, const std::vector<ShadowView>& views,
                         const GpuModel& model, int modelGeneration, GLuint depthProgram, int matrixLocation,
-                        RenderStats* stats, QString* error) {
+                        bool wait, RenderStats* stats, QString* error) {
     stats->shadowMapsRendered = 0;
     stats->shadowLayersRendered = 0;
     stats->shadowMapMs = 0.0;
@@ -358,9 +358,7 @@ bool ShadowMaps::update(QOpenGLFunctions_3_3_Core* gl, const std::vector<ShadowV
     }
     m_modelGeneration = modelGeneration;
     if (bound) {
-        // Waited for (only in frames that render maps: the lit passes need them anyway), so the time is
-        // the maps' own.
-        gl->glFinish();
+        if (wait) gl->glFinish(); // then the time is the maps' own
         stats->shadowMapMs = double(timer.nsecsElapsed()) * 1e-6;
         gl->glBindVertexArray(0);
         gl->glDisable(GL_POLYGON_OFFSET_FILL);

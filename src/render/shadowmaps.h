@@ -118,10 +118,11 @@ class ShadowMaps {
   public:
     bool initialize(QOpenGLFunctions_3_3_Core* gl);
     void release(QOpenGLFunctions_3_3_Core* gl);
-    // Re-renders the layers whose map changed; `modelGeneration` changes with every new model. False
-    // (with error) when the array could not be made.
+    // Re-renders the layers whose map changed; `modelGeneration` changes with every new model. `wait`:
+    // finish them before returning (RenderSettings::waitForShadowMaps). False (with error) when the array
+    // could not be made.
     bool update(QOpenGLFunctions_3_3_Core* gl, const std::vector<ShadowView>& views, const GpuModel& model,
-                int modelGeneration, GLuint depthProgram, int matrixLocation, RenderStats* stats,
+                int modelGeneration, GLuint depthProgram, int matrixLocation, bool wait, RenderStats* stats,
                 QString* error);
     // Binds the array to TextureUnit::ShadowMaps (compare) and ShadowDepths (raw); nothing without maps.
     void bind(QOpenGLFunctions_3_3_Core* gl) const;

@@ -118,6 +118,7 @@ int main(int argc, char** argv) {
         RenderSettings s;
         s.quality = q;
         s.msaaSamples = 0;
+        s.waitForShadowMaps = true; // shadowMapMs: the maps' own time
         QElapsedTimer t;
         t.start();
         gl.setModel(loaded.model);
