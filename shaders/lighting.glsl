@@ -1096,8 +1096,9 @@ vec3 shadeLightPbr(ShadeLight l, Surface s, ShadeSettings st, vec3 V, PbrSurface
 #ifdef LR_SHADOWS
     // The shadow dims the light's direct lobes, not its ambient term (and is not sampled where the light
     // adds nothing).
-    bool lit = arrives && attenuation > 0.0 && (cosTerm > 0.0 || nDotL > 0.0);  // else no direct lobe
-    float visibility = arrives ? lrShadow(l, s, L, lit) : 0.0;
+    // Needed only where the light arrives with a direct lobe; elsewhere the result below is discarded or
+    // multiplied by zero.
+    float visibility = lrShadow(l, s, L, arrives && attenuation > 0.0 && (cosTerm > 0.0 || nDotL > 0.0));
 #ifdef LR_HAS_LIGHT_AMBIENT
     vec3 radiance = attenuation * (visibility * (l.color * f.diffuse + l.specular * f.specular) +
                                    l.ambient * cDiff * (saturate(s.occlusion) * kInvPi));
@@ -1229,23 +1230,16 @@ VertexLight shadeVertex(vec3 P, vec3 N, float shininess, ShadeSettings st) {
     o.added = vec3(0.0);
     vec3 V = viewVector(st, P);
 #if defined(LR_HAS_SURFACE_LIGHTS) || defined(LR_HAS_LIGHT_RIM)
-#ifdef LR_SHADOWS
-    // The casting lights are shaded per pixel (shadows.glsl shadeCastingLights).
     if (uLightCount > 0) {
         int i = 0;
         do {
             ShadeLight l = loadLight(i);
-            if (l.shadow == 0) shadeLightSplit(l, P, N, shininess, st, V, o);
-        } while (++i < uLightCount);
-    }
-#else
-    if (uLightCount > 0) {
-        int i = 0;
-        do {
-            shadeLightSplit(loadLight(i), P, N, shininess, st, V, o);
-        } while (++i < uLightCount);
-    }
+#ifdef LR_SHADOWS
+            if (l.shadow == 0)  // the casting lights are shaded per pixel (shadows.glsl shadeCastingLights)
 #endif
+                shadeLightSplit(l, P, N, shininess, st, V, o);
+        } while (++i < uLightCount);
+    }
 #endif
     return o;
 }
@@ -1328,22 +1322,16 @@ VertexLightPbr shadeVertexPbr(vec3 P, vec3 N, float roughness, ShadeSettings st)
     p.ltc = ltcLookup(p.alpha, N, V);
 #endif
 #if defined(LR_HAS_SURFACE_LIGHTS) || defined(LR_HAS_LIGHT_RIM)
-#ifdef LR_SHADOWS
     if (uLightCount > 0) {
         int i = 0;
         do {
             ShadeLight l = loadLight(i);
-            if (l.shadow == 0) shadeLightSplitPbr(l, s, st, V, p, o);
-        } while (++i < uLightCount);
-    }
-#else
-    if (uLightCount > 0) {
-        int i = 0;
-        do {
-            shadeLightSplitPbr(loadLight(i), s, st, V, p, o);
-        } while (++i < uLightCount);
-    }
+#ifdef LR_SHADOWS
+            if (l.shadow == 0)  // as in shadeVertex
 #endif
+                shadeLightSplitPbr(l, s, st, V, p, o);
+        } while (++i < uLightCount);
+    }
 #endif
     return o;
 }

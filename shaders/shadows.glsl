@@ -197,25 +197,26 @@ float shadowPcss(ShadowRecord r, ShadowCoord c, float ref, vec2 slope, float tex
     mat2 spin = mat2(cos(turn), sin(turn), -sin(turn), cos(turn));
     float sum = 0.0, n = 0.0;
     // 8 of the 16 points (the even ones; the mean blocker distance needs fewer), in two groups of four.
+    float searchScale = search * texelUv;
     int groups = needed ? 2 : 0, g = 0;
     do {
-        float scale = search * texelUv;
-        blockerTap(r, c, ref, slope, spin * LR_POISSON(2 * g, 0) * scale, sum, n);
-        blockerTap(r, c, ref, slope, spin * LR_POISSON(2 * g, 2) * scale, sum, n);
-        blockerTap(r, c, ref, slope, spin * LR_POISSON(2 * g + 1, 0) * scale, sum, n);
-        blockerTap(r, c, ref, slope, spin * LR_POISSON(2 * g + 1, 2) * scale, sum, n);
+        blockerTap(r, c, ref, slope, spin * LR_POISSON(2 * g, 0) * searchScale, sum, n);
+        blockerTap(r, c, ref, slope, spin * LR_POISSON(2 * g, 2) * searchScale, sum, n);
+        blockerTap(r, c, ref, slope, spin * LR_POISSON(2 * g + 1, 0) * searchScale, sum, n);
+        blockerTap(r, c, ref, slope, spin * LR_POISSON(2 * g + 1, 2) * searchScale, sum, n);
     } while (++g < groups);
     float dB = max(sum / max(n, 1.0), 1e-30);
     float penumbra = 0.5 * r.emitter * max(dR - dB, 0.0) / (r.kind == 1 ? 1.0 : dB);  // world, half-width
     float radius = clamp(penumbra / footprint, 0.5, r.maxFilter);
     float v = 0.0;
+    float filterScale = radius * texelUv;
     groups = needed && n > 0.0 ? 4 : 0;
     g = 0;
     do {
-        v += shadowTapAt(c, ref, slope, spin * LR_POISSON(g, 0) * (radius * texelUv));
-        v += shadowTapAt(c, ref, slope, spin * LR_POISSON(g, 1) * (radius * texelUv));
-        v += shadowTapAt(c, ref, slope, spin * LR_POISSON(g, 2) * (radius * texelUv));
-        v += shadowTapAt(c, ref, slope, spin * LR_POISSON(g, 3) * (radius * texelUv));
+        v += shadowTapAt(c, ref, slope, spin * LR_POISSON(g, 0) * filterScale);
+        v += shadowTapAt(c, ref, slope, spin * LR_POISSON(g, 1) * filterScale);
+        v += shadowTapAt(c, ref, slope, spin * LR_POISSON(g, 2) * filterScale);
+        v += shadowTapAt(c, ref, slope, spin * LR_POISSON(g, 3) * filterScale);
     } while (++g < groups);
     return n == 0.0 ? 1.0 : v / 16.0;
 }
