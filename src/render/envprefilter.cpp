@@ -54,32 +54,8 @@ std::array<glm::vec3, 9> irradianceSH(const EnvironmentImage& src) {
 }
 
 EnvironmentImage irradianceMap(const EnvironmentImage& src, int width) {
-    struct Texel {
-        glm::vec3 direction, radiance; // radiance × solid angle
-    };
-    std::vector<Texel> texels;
-    texels.reserve(src.texels.size());
-    for (int y = 0; y < src.height; ++y) {
-        const float omega = float(environment::texelSolidAngle(y, src.width, src.height));
-        for (int x = 0; x < src.width; ++x)
-            if (src.at(x, y) != glm::vec3(0.0f))
-                texels.push_back({glm::vec3(environment::texelDirection(x, y, src.width, src.height)),
-                                  src.at(x, y) * omega});
-    }
-    EnvironmentImage out;
-    out.width = width;
-    out.height = width / 2;
-    out.texels.resize(size_t(out.width) * size_t(out.height));
-    forEachRow(out.height, [&](int y) {
-        for (int x = 0; x < out.width; ++x) {
-            const glm::vec3 n(environment::texelDirection(x, y, out.width, out.height));
-            glm::vec3 e(0.0f);
-            for (const Texel& t : texels)
-                e += t.radiance * std::max(0.0f, glm::dot(n, t.direction));
-            out.at(x, y) = e;
-        }
-    });
-    return out;
+    return rowQuadrature(
+        src, width, [](double c) { return c; }, false);
 }
 
 glm::dvec3 irradianceBruteForce(const EnvironmentImage& src, const glm::dvec3& n) {

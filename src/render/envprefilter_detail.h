@@ -27,12 +27,19 @@ glm::vec3 sampleLevel(const std::vector<EnvironmentImage>& mips, float u, float 
 
 // Irradiance by exact texel quadrature: SH9 (cosine lobe folded in) over every texel of `src`.
 std::array<glm::vec3, 9> irradianceSH(const EnvironmentImage& src);
-// E(n) = Σ L Ω (n·ω)⁺ over every texel of `src`, for each texel of a width × width/2 map.
+// E(n) = Σ L Ω (n·ω)⁺ over every texel of `src`, for each texel of a width × width/2 map (rowQuadrature).
 EnvironmentImage irradianceMap(const EnvironmentImage& src, int width);
+
+// Σ L · Ω · kernel(n·ω) over the texels of `src` with n·ω > 0, for each texel n of a width × width/2 map
+// (both widths powers of 2): the texels of one row differ only by a turn about +Y, so each row's weights
+// are computed once and turned along it. `normalise`: divided by the weights' sum, weights below 1e-7 of
+// the largest dropped.
+EnvironmentImage rowQuadrature(const EnvironmentImage& src, int width,
+                               const std::function<double(double)>& kernel, bool normalise);
 
 // The GGX-convolved radiance, width × width/2, of roughness r (α = r², N = V = R, weights D·(n·l),
 // Karis 2013), by importance sampling with filtered importance sampling (Colbert & Křivánek 2007) from
-// `mips` (pyramid of the level-0 image): `samples` GGX samples per texel (Hammersley).
+// `mips` (pyramid of the level-0 image, widths powers of 2): `samples` GGX samples per texel (Hammersley).
 EnvironmentImage ggxLevel(const std::vector<EnvironmentImage>& mips, int width, double roughness,
                           int samples);
 // The same by direct quadrature over every texel of `src` (width a power of 2): exact for that source,

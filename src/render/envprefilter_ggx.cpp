@@ -9,6 +9,8 @@
 
 #include "core/lowdiscrepancy.h"
 
+#include <QtGlobal>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -64,6 +66,9 @@ int ggxSamples(double roughness) {
 EnvironmentImage ggxLevel(const std::vector<EnvironmentImage>& mips, int width, double roughness,
                           int samples) {
     const std::vector<LobeSample> lobe = lobeSamples(roughness, samples, mips[0].width, mips[0].height);
+    Q_ASSERT(std::all_of(mips.begin(), mips.end(), [](const EnvironmentImage& m) {
+        return m.width > 0 && (m.width & (m.width - 1)) == 0;
+    }));
     float weightSum = 0.0f;
     for (const LobeSample& s : lobe)
         weightSum += s.z;
@@ -106,30 +111,29 @@ EnvironmentImage ggxLevel(const std::vector<EnvironmentImage>& mips, int width, 
                                 u * float(img.width) - 0.5f, float(img.width) / float(out.width), w});
             }
         }
-        for (int x = 0; x < out.width; ++x) {
-            glm::vec3 sum(0.0f);
-            for (const Tap& tap : taps) {
+        // Tap by tap along the row, each texel summing the taps in the same order: a tap's row pointers
+        // and vertical weights hold along the row, and the pyramid's widths are powers of 2, so a column
+        // wraps by a mask (no branch in the loop).
+        std::vector<glm::vec3> row(size_t(out.width), glm::vec3(0.0f));
+        for (const Tap& tap : taps) {
+            const int w = tap.image->width, mask = w - 1;
+            const glm::vec3* r0 = &tap.image->texels[size_t(tap.y0) * size_t(w)];
+            const glm::vec3* r1 = &tap.image->texels[size_t(tap.y1) * size_t(w)];
+            const float w0 = (1.0f - tap.ay) * tap.weight, w1 = tap.ay * tap.weight;
+            for (int x = 0; x < out.width; ++x) {
                 const float px = tap.x0 + float(x) * tap.step, fx = std::floor(px), ax = px - fx;
-                const int w = tap.image->width;
-                int x0 = int(fx);
-                if (x0 < 0) x0 += w;
-                if (x0 >= w) x0 -= w;
-                if (x0 >= w) x0 -= w;
-                const int x1 = x0 + 1 == w ? 0 : x0 + 1;
-                const glm::vec3* r0 = &tap.image->texels[size_t(tap.y0) * size_t(w)];
-                const glm::vec3* r1 = &tap.image->texels[size_t(tap.y1) * size_t(w)];
-                sum += ((r0[x0] * (1.0f - ax) + r0[x1] * ax) * (1.0f - tap.ay) +
-                        (r1[x0] * (1.0f - ax) + r1[x1] * ax) * tap.ay) *
-                       tap.weight;
+                const int c0 = int(fx) & mask, c1 = (c0 + 1) & mask;
+                row[size_t(x)] +=
+                    (r0[c0] * (1.0f - ax) + r0[c1] * ax) * w0 + (r1[c0] * (1.0f - ax) + r1[c1] * ax) * w1;
             }
-            out.at(x, y) = sum;
         }
+        std::copy(row.begin(), row.end(), out.texels.begin() + std::ptrdiff_t(y) * out.width);
     });
     return out;
 }
 
-EnvironmentImage ggxLevelQuadrature(const EnvironmentImage& src, int width, double roughness) {
-    const double a2 = std::pow(roughness, 4.0);
+EnvironmentImage rowQuadrature(const EnvironmentImage& src, int width,
+                               const std::function<double(double)>& kernel, bool normalise) {
     EnvironmentImage out;
     out.width = width;
     out.height = width / 2;
@@ -141,6 +145,14 @@ EnvironmentImage ggxLevelQuadrature(const EnvironmentImage& src, int width, doub
         int offset; // row × width + column in the source
         float w;
     };
+    // Every source texel's direction and solid angle, once (they cost a sine and cosine each).
+    std::vector<glm::dvec3> directions(src.texels.size());
+    std::vector<double> omegas(size_t(src.height));
+    for (int j = 0; j < src.height; ++j) {
+        omegas[size_t(j)] = environment::texelSolidAngle(j, src.width, src.height);
+        for (int i = 0; i < src.width; ++i)
+            directions[size_t(j * src.width + i)] = environment::texelDirection(i, j, src.width, src.height);
+    }
     forEachRow(out.height, [&](int y) {
         std::vector<Weight> weights;
         for (int phase = 0; phase < phases; ++phase) {
@@ -148,20 +160,22 @@ EnvironmentImage ggxLevelQuadrature(const EnvironmentImage& src, int width, doub
             weights.clear();
             double total = 0.0, peak = 0.0;
             for (int j = 0; j < src.height; ++j) {
-                const double omega = environment::texelSolidAngle(j, src.width, src.height);
+                const double omega = omegas[size_t(j)];
                 for (int i = 0; i < src.width; ++i) {
-                    const double c = glm::dot(n, environment::texelDirection(i, j, src.width, src.height));
+                    const double c = glm::dot(n, directions[size_t(j * src.width + i)]);
                     if (c <= 0.0) continue;
-                    const double w = omega * ggxD(a2, (1.0 + c) / 2.0) * c;
+                    const double w = omega * kernel(c);
                     weights.push_back({j * src.width + i, float(w)});
                     total += w;
                     peak = std::max(peak, w);
                 }
             }
-            // Drop what cannot show (below 1e-7 of the peak), then normalise what is left.
-            std::erase_if(weights, [peak](const Weight& w) { return double(w.w) < 1e-7 * peak; });
-            for (Weight& w : weights)
-                w.w = float(double(w.w) / total);
+            if (normalise) {
+                // Drop what cannot show (below 1e-7 of the peak), then normalise what is left.
+                std::erase_if(weights, [peak](const Weight& w) { return double(w.w) < 1e-7 * peak; });
+                for (Weight& w : weights)
+                    w.w = float(double(w.w) / total);
+            }
             for (int x = phase; x < out.width; x += phases) {
                 const int shift = (x / phases) * step;
                 glm::vec3 sum(0.0f);
@@ -174,6 +188,12 @@ EnvironmentImage ggxLevelQuadrature(const EnvironmentImage& src, int width, doub
         }
     });
     return out;
+}
+
+EnvironmentImage ggxLevelQuadrature(const EnvironmentImage& src, int width, double roughness) {
+    const double a2 = std::pow(roughness, 4.0);
+    return rowQuadrature(
+        src, width, [a2](double c) { return ggxD(a2, (1.0 + c) / 2.0) * c; }, true);
 }
 
 glm::dvec3 ggxBruteForce(const EnvironmentImage& src, const glm::dvec3& n, double roughness) {
