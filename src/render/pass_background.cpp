@@ -10,8 +10,12 @@
 
 namespace lr::render {
 
+bool BackgroundPass::draws(const FrameContext& frame, const PassScene& scene) {
+    return frame.environment && frame.environmentBackgroundLod >= 0.0f && scene.environment;
+}
+
 bool BackgroundPass::run(const FrameContext& frame, PassScene& scene) {
-    if (!frame.environment || frame.environmentBackgroundLod < 0.0f || !scene.environment) return true;
+    if (!draws(frame, scene)) return true;
     const bool display = frame.colourPath == ColourPath::Display;
     const QByteArray defines = "#define LR_ENVIRONMENT_BACKGROUND 1\n" +
                                (display ? "#define LR_OUTPUT_DISPLAY 1\n" + toneMapDefine(frame.toneMap)
@@ -19,8 +23,6 @@ bool BackgroundPass::run(const FrameContext& frame, PassScene& scene) {
     QString error;
     QOpenGLShaderProgram* p = scene.programs->fixedProgram(kBackgroundShader, &error, defines);
     if (!p) return fail(scene, error);
-    QOpenGLShaderProgram* copy = scene.programs->fixedProgram(kBackgroundCopyShader, &error);
-    if (!copy) return fail(scene, error);
     Key key;
     key.environment = scene.environment->generation();
     key.fromView = frame.environmentUniforms.fromView;
@@ -38,9 +40,9 @@ bool BackgroundPass::run(const FrameContext& frame, PassScene& scene) {
     key.depth = frame.deferred ? scene.targets->gbufferRevision : -1;
     Key everyPixel = key;
     everyPixel.depth = -1;
-    // The background always goes into the kept texture (one compiled variant of each program, where a
-    // direct draw as well would compile the environment lookup a second time for another target state), and
-    // is copied where no surface is. Rendered again only when the key changes.
+    // The background always goes into the kept texture (one compiled variant of the lookup, where a direct
+    // draw as well would compile it a second time for another target state), and is copied (passes.h).
+    // Rendered again only when the key changes.
     if (!ensureCache(key)) return fail(scene, QStringLiteral("background: could not make its texture"));
     const auto drawEnvironment = [&] {
         p->bind();
@@ -61,7 +63,12 @@ bool BackgroundPass::run(const FrameContext& frame, PassScene& scene) {
     if (m_cached != key && m_cached != everyPixel) {
         glBindFramebuffer(GL_FRAMEBUFFER, m_cacheFbo);
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
-                               key.depth >= 0 ? scene.targets->depth : m_cacheDepth, 0);
+                               key.depth >= 0 ? scene.targets->depth : cacheDepth(key), 0);
+        if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+            glBindFramebuffer(GL_FRAMEBUFFER, scene.targets->fbo);
+            glBindVertexArray(0);
+            return fail(scene, QStringLiteral("background: its framebuffer is incomplete"));
+        }
         if (key.depth < 0) {
             glDepthMask(GL_TRUE);
             glClearDepth(1.0);
@@ -75,6 +82,21 @@ bool BackgroundPass::run(const FrameContext& frame, PassScene& scene) {
         ++m_builds;
     }
     scene.stats->backgroundBuilds = m_builds;
+    if (frame.deferred) {
+        // Before the lighting pass (RenderPlan::select), which shades the covered pixels over it: every
+        // pixel copied as it is, by the driver (no program; llvmpipe copies the memory).
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, m_cacheFbo);
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, scene.targets->fbo);
+        glBlitFramebuffer(0, 0, key.width, key.height, 0, 0, key.width, key.height, GL_COLOR_BUFFER_BIT,
+                          GL_NEAREST);
+        glBindFramebuffer(GL_FRAMEBUFFER, scene.targets->fbo);
+        glBindVertexArray(0);
+        glDepthFunc(GL_LESS);
+        glDepthMask(GL_TRUE);
+        return true;
+    }
+    QOpenGLShaderProgram* copy = scene.programs->fixedProgram(kBackgroundCopyShader, &error);
+    if (!copy) return fail(scene, error);
     glBindFramebuffer(GL_FRAMEBUFFER, scene.targets->drawFbo());
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL); // the triangle lies on the far plane: passes where nothing was drawn
@@ -103,15 +125,10 @@ bool BackgroundPass::ensureCache(const Key& key) {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glGenTextures(1, &m_cacheDepth);
-    glBindTexture(GL_TEXTURE_2D, m_cacheDepth);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, key.width, key.height, 0, GL_DEPTH_STENCIL,
-                 GL_UNSIGNED_INT_24_8, nullptr); // the scene depth's format: the same draw state
     glBindTexture(GL_TEXTURE_2D, 0);
     glGenFramebuffers(1, &m_cacheFbo);
     glBindFramebuffer(GL_FRAMEBUFFER, m_cacheFbo);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m_cacheTexture, 0);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, m_cacheDepth, 0);
     if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
         release(); // run() then fails with its error; the frame shows no background
         return false;
@@ -119,6 +136,17 @@ bool BackgroundPass::ensureCache(const Key& key) {
     m_cached = Key(); // nothing kept yet
     m_cached.width = key.width, m_cached.height = key.height, m_cached.format = key.format;
     return true;
+}
+
+GLuint BackgroundPass::cacheDepth(const Key& key) {
+    if (!m_cacheDepth) { // only the forward path renders against a depth of its own
+        glGenTextures(1, &m_cacheDepth);
+        glBindTexture(GL_TEXTURE_2D, m_cacheDepth);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, key.width, key.height, 0, GL_DEPTH_STENCIL,
+                     GL_UNSIGNED_INT_24_8, nullptr); // the scene depth's format: the same draw state
+        glBindTexture(GL_TEXTURE_2D, 0);
+    }
+    return m_cacheDepth;
 }
 
 void BackgroundPass::release() {

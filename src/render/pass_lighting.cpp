@@ -70,8 +70,11 @@ bool DeferredLightingPass::run(const FrameContext& frame, PassScene& scene) {
     Targets& targets = *scene.targets;
     glBindFramebuffer(GL_FRAMEBUFFER, targets.fbo);
     glViewport(0, 0, frame.targetSize.width(), frame.targetSize.height());
-    glClearColor(frame.clearColour.r, frame.clearColour.g, frame.clearColour.b, frame.clearColour.a);
-    glClear(GL_COLOR_BUFFER_BIT);
+    // Where the background pass ran first it covered every pixel; the surfaces are shaded over it.
+    if (!BackgroundPass::draws(frame, scene)) {
+        glClearColor(frame.clearColour.r, frame.clearColour.g, frame.clearColour.b, frame.clearColour.a);
+        glClear(GL_COLOR_BUFFER_BIT);
+    }
     const Model* model = scene.model->model();
     if (!model) return true;
     const RenderSettings& settings = *frame.settings;

@@ -143,17 +143,19 @@ constexpr long long kKeptSurfacePixels = 2048LL * 2048LL;
 // The environment behind the model (Environment::background Visible or Blurred, an environment loaded, the
 // image not transparent): a full-screen triangle on the far plane, depth-tested LEQUAL without depth
 // writes, so it covers exactly the pixels no opaque surface was drawn on; display colours or radiance by
-// the colour path, with the frame's exposure and tone map. After the opaque surfaces, before the catcher's
-// shadows and the blended meshes (neither writes depth, both go over it). In the plan when
-// PlanKey::background.
+// the colour path, with the frame's exposure and tone map. After the opaque surfaces (deferred: after the
+// G-pass, before the lighting), before the catcher's shadows and the blended meshes (neither writes depth,
+// both go over it). In the plan when PlanKey::background.
 //
-// The background is rendered into a texture of the scene colour's format and copied where no surface is
-// (kBackgroundCopyShader): the same values. While nothing it depends on changes (Key; a light dragged
-// under a still camera) the environment's lookups are not repeated, only the copy. On the deferred path
-// it is rendered depth-tested against the G-buffer's depth, so only the pixels no surface covers are
-// looked up (an orbiting camera renders it every frame), and it stays valid while that depth does
-// (Key::depth, Targets::gbufferRevision); on the forward path every pixel is, against a depth of its own
-// cleared to the far plane. Both draws have the same state, so the lookup compiles once.
+// The background is rendered into a texture of the scene colour's format and copied: on the forward path
+// where no surface is (kBackgroundCopyShader), on the deferred path whole (glBlitFramebuffer, no program
+// to compile) before the lighting pass shades the covered pixels over it: the same values either way. While
+// nothing it depends on changes (Key; a light dragged under a still camera) the environment's lookups are not
+// repeated, only the copy. On the deferred path it is rendered depth-tested against the G-buffer's depth, so
+// only the pixels no surface covers are looked up (an orbiting camera renders it every frame), and it stays
+// valid while that depth does (Key::depth, Targets::gbufferRevision); on the forward path every pixel is,
+// against a depth of its own cleared to the far plane. Both draws have the same state, so the lookup compiles
+// once.
 class BackgroundPass final : public RenderPass {
   public:
     const char* name() const override { return "background"; }
@@ -161,6 +163,8 @@ class BackgroundPass final : public RenderPass {
     PassResources writes() const override { return resource::SceneColor; }
     bool run(const FrameContext& frame, PassScene& scene) override;
     void release() override;
+    // Whether run() draws the background this frame (the deferred lighting then keeps the colour it left).
+    static bool draws(const FrameContext& frame, const PassScene& scene);
 
     // What the background's pixels depend on.
     struct Key {
@@ -180,6 +184,7 @@ class BackgroundPass final : public RenderPass {
 
   private:
     bool ensureCache(const Key& key);
+    GLuint cacheDepth(const Key& key); // m_cacheDepth, made at the first forward render
     Key m_cached; // what the texture holds (environment -1: nothing yet) and its size and format
     GLuint m_cacheTexture = 0, m_cacheFbo = 0;
     GLuint m_cacheDepth = 0; // cleared to the far plane for the forward path's renders

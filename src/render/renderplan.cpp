@@ -45,15 +45,17 @@ const std::vector<RenderPass*>& RenderPlan::select(const PlanKey& key) {
     m_passes.clear();
     // The shadow pass goes first (it writes shadow maps the geometry or lighting pass reads).
     if (key.shadows) m_passes.push_back(&m_shadow);
+    // The environment behind the opaque surfaces, where they left the cleared depth; before the catcher's
+    // shadows and the blended meshes, which write no depth and go over it. Deferred, it goes between the
+    // G-pass (whose depth it needs) and the lighting, which shades only the covered pixels over it.
     if (key.deferred) {
         m_passes.push_back(&m_gbuffer);
+        if (key.background) m_passes.push_back(&m_background);
         m_passes.push_back(&m_lighting);
     } else {
         m_passes.push_back(&m_shaded);
+        if (key.background) m_passes.push_back(&m_background);
     }
-    // The environment behind the opaque surfaces, where they left the cleared depth; before the catcher's
-    // shadows and the blended meshes, which write no depth and go over it.
-    if (key.background) m_passes.push_back(&m_background);
     // The catcher's shadows over the opaque surfaces and the background, before anything blended.
     if (key.catcher) m_passes.push_back(&m_catcher);
     // Blended meshes after all opaque ones, shaded forward whatever the path.

@@ -463,8 +463,10 @@ class TestEnvironmentRender : public QObject {
         QVERIFY2(at(after, n, cam).g > 3.0f, qPrintable(QString::number(double(at(after, n, cam).g))));
     }
 
-    // The background pass: after the opaque surfaces of either path (it reads their depth), before the
-    // catcher's shadows and the blended meshes (they go over it, writing no depth); only when asked for.
+    // The background pass: after the opaque surfaces' depth (forward: after the shaded geometry; deferred:
+    // after the G-pass and before the lighting, which shades the covered pixels over the copied
+    // background), before the catcher's shadows and the blended meshes (they go over it, writing no
+    // depth); only when asked for.
     void backgroundPassPlace() {
         RenderPlan plan;
         for (int bits = 0; bits < 8; ++bits) {
@@ -477,9 +479,10 @@ class TestEnvironmentRender : public QObject {
             const auto& passes = plan.select(key);
             QVERIFY2(RenderPlan::check(passes, key.msaa).isEmpty(), qPrintable(plan.describe()));
             const QString d = plan.describe();
-            const QString before = key.deferred ? QStringLiteral("deferred lighting > background")
-                                                : QStringLiteral("geometry (shaded) > background");
-            QVERIFY2(d.contains(before + QStringLiteral(" > shadow catcher > blend")), qPrintable(d));
+            const QString order = key.deferred
+                                      ? QStringLiteral("geometry (G-buffer) > background > deferred lighting")
+                                      : QStringLiteral("geometry (shaded) > background");
+            QVERIFY2(d.contains(order + QStringLiteral(" > shadow catcher > blend")), qPrintable(d));
             key.background = false;
             plan.select(key);
             QVERIFY(!plan.describe().contains(QLatin1String("background")));
