@@ -14,9 +14,10 @@
 #        re-renders everything every frame). Each run starts after
 #        COOLDOWN seconds (default 20) of rest: the run after Chromium exits was otherwise up to 15 % slower.
 #        ENV=FILE.exr|.hdr (issue 15): both light the scene with that environment, shown as the background
-#        (three.js: THREE_ENV + env=…&bg=1, PMREM; LightRig: --environment FILE, its prefilter included in
-#        the first frame); LightRig's errors are then skipped (--no-errors): the integrated reference at
-#        1280×720 takes minutes, and docs/performance.md measures it at 320×180 instead.
+#        (three.js: THREE_ENV + env=…&bg=1, PMREM; LightRig: --environment FILE; its first frame is the
+#        first draw + the environment's decoding and prefiltering, which the CLI does before it); LightRig's
+#        errors are then skipped (--no-errors): the integrated reference at 1280×720 takes minutes, and
+#        docs/performance.md measures it at 320×180 instead.
 #        SHADOWS=1 (issue 14): every light casts on both sides (three.js: shadows=1, 1024² PCFSoft maps
 #        re-rendered every frame; LightRig: --shadows on, maps cached), errors skipped as for ENV.
 #        A third LightRig run (--drag, exact) moves the first light every frame: the frame of a light
@@ -97,11 +98,14 @@ for path in sorted(glob.glob(os.path.join(out, "lightrig_*.json"))):
         de = json.load(open(os.path.join(out, "drag_%s.json" % key)))["results"][0]["ms_median"]
     except (OSError, ValueError, KeyError, IndexError):
         de = float("nan")
-    print("| %s | %s | %.1f | %.1f | %.1f | **%.2f** (%.2f–%.2f) | **%.2f** | %.1f, %.1f | **%.2f**, %.2f | %.1f (**%.2f**) | %.2f s (%.2f s) | %.2f s (%.2f s; %.2f s) | %.1f dB |"
+    first = "%.2f s (%.2f s; %.2f s)" % (e["first_draw_ms"] / 1000, e["upload_ms"] / 1000, e["load_ms"] / 1000)
+    if "environment_prefilter_ms" in e:  # ENV: the first frame also waits for the decoding and prefiltering
+        env_ms = e["environment_decode_ms"] + e["environment_prefilter_ms"]
+        first += " + environment %.2f s = **%.2f s**" % (env_ms / 1000, (e["first_draw_ms"] + env_ms) / 1000)
+    print("| %s | %s | %.1f | %.1f | %.1f | **%.2f** (%.2f–%.2f) | **%.2f** | %.1f, %.1f | **%.2f**, %.2f | %.1f (**%.2f**) | %.2f s (%.2f s) | %s | %.1f dB |"
           % (key, " / ".join("%.1f" % m for m in ms), e["ms_median"], b["ms_median"], f["ms_median"],
              e["ms_median"] / mean, e["ms_median"] / max(ms), e["ms_median"] / min(ms), f["ms_median"] / mean,
              oe, of, oe / mean, of / mean, de, de / mean,
-             ab[0]["firstFrameMs"] / 1000, ab[0]["loadMs"] / 1000, e["first_draw_ms"] / 1000,
-             e["upload_ms"] / 1000, e["load_ms"] / 1000, f.get("psnr_db") or float("nan")))
+             ab[0]["firstFrameMs"] / 1000, ab[0]["loadMs"] / 1000, first, f.get("psnr_db") or float("nan")))
 PY
 echo "raw results: $out" >&2

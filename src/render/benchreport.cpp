@@ -211,6 +211,10 @@ QJsonObject benchJson(const BenchReport& report) {
             {QStringLiteral("shadow_maps_rendered"), r.shadowMapsRendered},
             {QStringLiteral("variants"), r.variants},
             {QStringLiteral("triangles"), double(r.triangles)}};
+        if (r.environmentDecodeMs >= 0.0) {
+            o.insert(QStringLiteral("environment_decode_ms"), round3(r.environmentDecodeMs));
+            o.insert(QStringLiteral("environment_prefilter_ms"), round3(r.environmentPrefilterMs));
+        }
         const ErrorFigures& e = r.errors;
         o.insert(QStringLiteral("max_error_levels"), r.hasErrors ? QJsonValue(e.maxLevels) : QJsonValue());
         o.insert(QStringLiteral("mean_error_levels"), r.hasErrors ? QJsonValue(e.meanLevels) : QJsonValue());

@@ -1,5 +1,6 @@
 #include "qualitybench.h"
 
+#include "environmentloader.h"
 #include "offscreen.h"
 #include "reference.h"
 #include "turntable.h"
@@ -111,6 +112,10 @@ bool measure(const BenchScene& scene, const BenchOptions& o, Quality q, bool ube
     if (!gl.renderFrame(scene.camera, o.size, settings, error)) return false;
     r->firstDrawMs = clock.nsecsElapsed() * 1e-6;
     r->firstFrameMs = r->loadMs + r->firstDrawMs;
+    if (scene.environment) {
+        r->environmentDecodeMs = scene.environment->decodeSeconds * 1e3;
+        r->environmentPrefilterMs = scene.environment->prefiltered.seconds * 1e3;
+    }
     // The viewport's first frame is the full mesh; its proxies follow from a worker thread a moment later.
     if (o.interactive) gl.renderer().waitForInteractionProxies();
     const RenderStats& stats = gl.renderer().stats();

@@ -98,7 +98,11 @@ struct BenchResult {
     // frame's later passes changed a state its programs were compiled for, is a stall the median hides.
     double secondFrameMs = 0.0;
     double uploadMs = 0.0; // of which the model upload (buffers, textures and their mipmaps)
-    int keptFrames = 0;    // timed frames that kept the G-buffer of the one before (RenderStats::gbufferKept)
+    // The scene's environment, loaded before the run (LoadedEnvironment): its decoding (in the import
+    // worker, with the round trip) and prefiltering, which a first frame with it waits for on top of
+    // firstDrawMs; < 0: no environment.
+    double environmentDecodeMs = -1.0, environmentPrefilterMs = -1.0;
+    int keptFrames = 0; // timed frames that kept the G-buffer of the one before (RenderStats::gbufferKept)
     int shadowMapsRendered = 0; // over the timed frames (RenderStats::shadowMapsRendered)
     bool hasErrors = false;
     ErrorFigures errors; // against the double reference (nonFinite from the float radiance)

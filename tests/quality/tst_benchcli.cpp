@@ -163,6 +163,7 @@ class TestBenchCli : public QObject {
             QVERIFY(o.value(QStringLiteral("ms_min")).toDouble() <=
                     o.value(QStringLiteral("ms_max")).toDouble());
             QCOMPARE(o.value(QStringLiteral("nonfinite_pixels")).toInt(), 0);
+            QVERIFY(!o.contains(QStringLiteral("environment_prefilter_ms"))); // no environment
             QVERIFY(o.value(QStringLiteral("lights")).toInt() == 1 ||
                     o.value(QStringLiteral("lights")).toInt() == 4);
             scenes.insert(o.value(QStringLiteral("scene")).toString());
@@ -266,14 +267,16 @@ class TestBenchCli : public QObject {
     }
 
     // Issue 15: --environment studio: the bench says which environment it used and what loading it cost
-    // before its table.
+    // before its table, and the JSON has that cost with each result (a first frame waits for it).
     void environmentIsNamed() {
         if (!haveDisplay()) QSKIP("needs an X display with OpenGL: run under xvfb-run -a");
+        const QString json = m_dir.filePath(QStringLiteral("environment.json"));
         const Run r =
             lightrig({QStringLiteral(LIGHTRIG_TEST_DATA "/model/scene.gltf"), QStringLiteral("--environment"),
                       QStringLiteral("studio"), QStringLiteral("--quality"), QStringLiteral("fast"),
                       QStringLiteral("--size"), QStringLiteral("48x32"), QStringLiteral("--frames"),
-                      QStringLiteral("2"), QStringLiteral("--no-uber"), QStringLiteral("--no-errors")});
+                      QStringLiteral("2"), QStringLiteral("--no-uber"), QStringLiteral("--no-errors"),
+                      QStringLiteral("--json"), json});
         QVERIFY2(r.code == 0, qPrintable(show(r)));
         const QStringList lines = r.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
         QCOMPARE(lines.size(), 4); // the environment, heading, column titles, one result
@@ -281,6 +284,17 @@ class TestBenchCli : public QObject {
             lines[0].startsWith(QStringLiteral("lightrig bench: studio environment (studio), decoded in ")) &&
                 lines[0].contains(QStringLiteral(" s, prefiltered in ")),
             qPrintable(show(r)));
+        QFile f(json);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QJsonObject o = QJsonDocument::fromJson(f.readAll())
+                                  .object()
+                                  .value(QStringLiteral("results"))
+                                  .toArray()[0]
+                                  .toObject();
+        // The procedural studio is rendered, not decoded: no decoding time, some prefiltering.
+        QCOMPARE(o.value(QStringLiteral("environment_decode_ms")).toDouble(-1.0), 0.0);
+        QVERIFY2(o.value(QStringLiteral("environment_prefilter_ms")).toDouble() > 0.0,
+                 qPrintable(QJsonDocument(o).toJson()));
     }
 
     // Issue 14: procedural bench lights take --shadows and --ground like a loaded rig: with shadows on the
