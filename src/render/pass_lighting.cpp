@@ -157,12 +157,13 @@ bool DeferredLightingPass::run(const FrameContext& frame, PassScene& scene) {
         unbindMaterialSamplers();
         glDisable(GL_STENCIL_TEST);
         glStencilMask(0xFF);
-        // The programs that built the Surfaces left their sampler state in slots the lighting programs'
-        // texture buffers use; a frame that keeps the Surfaces runs no such program before the lighting,
-        // and llvmpipe would compile the lighting program again for that (passes.h primeSamplerSlots).
-        primeSamplerSlots(scene);
     }
     scene.stats->surfacesKept = kept;
+    // Whatever ran since the G-pass primed the slots (the programs that built the Surfaces, the
+    // background's lookup) left its sampler state in slots the lighting programs' texture buffers use, and
+    // a frame that keeps the Surfaces and the background runs none of them: llvmpipe would compile the
+    // lighting program again on the second frame (passes.h primeSamplerSlots). The same state every frame.
+    primeSamplerSlots(scene);
     // One full-screen triangle over every material's Surfaces, or under the attribute G-buffer one per
     // material, each where the stencil holds that material's value, its Surface built with that material.
     const bool fromSurfaces = keepable && targets.surfacesRevision == revision;
