@@ -64,7 +64,7 @@ inline constexpr ShaderConfig kDeferredLightingEnvironmentShader{
      "deferred.frag"}};
 inline constexpr ShaderConfig kBackgroundShader{
     "environment background", {"fullscreen.vert"}, {"lighting.glsl", "environment.glsl", "background.frag"}};
-// The background kept by BackgroundPass, copied where no surface is.
+// The background kept by BackgroundPass, copied where no surface is (the forward path; deferred blits it).
 inline constexpr ShaderConfig kBackgroundCopyShader{
     "background copy", {"fullscreen.vert"}, {"backgroundcopy.frag"}};
 
