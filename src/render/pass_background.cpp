@@ -16,13 +16,25 @@ bool BackgroundPass::draws(const FrameContext& frame, const PassScene& scene) {
 
 bool BackgroundPass::run(const FrameContext& frame, PassScene& scene) {
     if (!draws(frame, scene)) return true;
+    // Deferred, the lighting pass after this one keeps the colour (it counts on this pass covering every
+    // pixel): a failure leaves the clear colour there instead.
+    const auto failed = [&](const QString& message) {
+        if (frame.deferred) {
+            glBindFramebuffer(GL_FRAMEBUFFER, scene.targets->fbo);
+            glDisable(GL_SCISSOR_TEST);
+            glClearColor(frame.clearColour.r, frame.clearColour.g, frame.clearColour.b, frame.clearColour.a);
+            glClear(GL_COLOR_BUFFER_BIT);
+        }
+        glBindVertexArray(0);
+        return fail(scene, message);
+    };
     const bool display = frame.colourPath == ColourPath::Display;
     const QByteArray defines = "#define LR_ENVIRONMENT_BACKGROUND 1\n" +
                                (display ? "#define LR_OUTPUT_DISPLAY 1\n" + toneMapDefine(frame.toneMap)
                                         : QByteArray("#define LR_OUTPUT_RADIANCE 1\n"));
     QString error;
     QOpenGLShaderProgram* p = scene.programs->fixedProgram(kBackgroundShader, &error, defines);
-    if (!p) return fail(scene, error);
+    if (!p) return failed(error);
     Key key;
     key.environment = scene.environment->generation();
     key.fromView = frame.environmentUniforms.fromView;
@@ -43,7 +55,7 @@ bool BackgroundPass::run(const FrameContext& frame, PassScene& scene) {
     // The background always goes into the kept texture (one compiled variant of the lookup, where a direct
     // draw as well would compile it a second time for another target state), and is copied (passes.h).
     // Rendered again only when the key changes.
-    if (!ensureCache(key)) return fail(scene, QStringLiteral("background: could not make its texture"));
+    if (!ensureCache(key)) return failed(QStringLiteral("background: could not make its texture"));
     const auto drawEnvironment = [&] {
         p->bind();
         scene.environment->setUniforms(this, p, frame.environmentUniforms);
@@ -64,11 +76,8 @@ bool BackgroundPass::run(const FrameContext& frame, PassScene& scene) {
         glBindFramebuffer(GL_FRAMEBUFFER, m_cacheFbo);
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
                                key.depth >= 0 ? scene.targets->depth : cacheDepth(key), 0);
-        if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-            glBindFramebuffer(GL_FRAMEBUFFER, scene.targets->fbo);
-            glBindVertexArray(0);
-            return fail(scene, QStringLiteral("background: its framebuffer is incomplete"));
-        }
+        if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+            return failed(QStringLiteral("background: its framebuffer is incomplete"));
         if (key.depth < 0) {
             glDepthMask(GL_TRUE);
             glClearDepth(1.0);
@@ -87,6 +96,7 @@ bool BackgroundPass::run(const FrameContext& frame, PassScene& scene) {
         // pixel copied as it is, by the driver (no program; llvmpipe copies the memory).
         glBindFramebuffer(GL_READ_FRAMEBUFFER, m_cacheFbo);
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, scene.targets->fbo);
+        glDisable(GL_SCISSOR_TEST); // a blit is scissored
         glBlitFramebuffer(0, 0, key.width, key.height, 0, 0, key.width, key.height, GL_COLOR_BUFFER_BIT,
                           GL_NEAREST);
         glBindFramebuffer(GL_FRAMEBUFFER, scene.targets->fbo);
@@ -96,7 +106,7 @@ bool BackgroundPass::run(const FrameContext& frame, PassScene& scene) {
         return true;
     }
     QOpenGLShaderProgram* copy = scene.programs->fixedProgram(kBackgroundCopyShader, &error);
-    if (!copy) return fail(scene, error);
+    if (!copy) return failed(error);
     glBindFramebuffer(GL_FRAMEBUFFER, scene.targets->drawFbo());
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL); // the triangle lies on the far plane: passes where nothing was drawn
