@@ -114,7 +114,7 @@ EnvironmentImage ggxLevel(const std::vector<EnvironmentImage>& mips, int width, 
         // Tap by tap along the row, each texel summing the taps in the same order: a tap's row pointers
         // and vertical weights hold along the row, and the pyramid's widths are powers of 2, so a column
         // wraps by a mask (no branch in the loop).
-        std::vector<glm::vec3> row(size_t(out.width), glm::vec3(0.0f));
+        glm::vec3* row = &out.texels[size_t(y) * size_t(out.width)]; // zeros so far
         for (const Tap& tap : taps) {
             const int w = tap.image->width, mask = w - 1;
             const glm::vec3* r0 = &tap.image->texels[size_t(tap.y0) * size_t(w)];
@@ -123,11 +123,10 @@ EnvironmentImage ggxLevel(const std::vector<EnvironmentImage>& mips, int width, 
             for (int x = 0; x < out.width; ++x) {
                 const float px = tap.x0 + float(x) * tap.step, fx = std::floor(px), ax = px - fx;
                 const int c0 = int(fx) & mask, c1 = (c0 + 1) & mask;
-                row[size_t(x)] +=
+                row[x] +=
                     (r0[c0] * (1.0f - ax) + r0[c1] * ax) * w0 + (r1[c0] * (1.0f - ax) + r1[c1] * ax) * w1;
             }
         }
-        std::copy(row.begin(), row.end(), out.texels.begin() + std::ptrdiff_t(y) * out.width);
     });
     return out;
 }

@@ -100,23 +100,20 @@ bool BackgroundPass::run(const FrameContext& frame, PassScene& scene) {
         glBlitFramebuffer(0, 0, key.width, key.height, 0, 0, key.width, key.height, GL_COLOR_BUFFER_BIT,
                           GL_NEAREST);
         glBindFramebuffer(GL_FRAMEBUFFER, scene.targets->fbo);
-        glBindVertexArray(0);
-        glDepthFunc(GL_LESS);
-        glDepthMask(GL_TRUE);
-        return true;
+    } else {
+        QOpenGLShaderProgram* copy = scene.programs->fixedProgram(kBackgroundCopyShader, &error);
+        if (!copy) return failed(error);
+        glBindFramebuffer(GL_FRAMEBUFFER, scene.targets->drawFbo());
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LEQUAL); // the triangle lies on the far plane: passes where nothing was drawn
+        glDepthMask(GL_FALSE);
+        copy->bind();
+        glActiveTexture(textureUnit(TextureUnit::BackgroundCache));
+        glBindTexture(GL_TEXTURE_2D, m_cacheTexture);
+        glActiveTexture(GL_TEXTURE0);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        copy->release();
     }
-    QOpenGLShaderProgram* copy = scene.programs->fixedProgram(kBackgroundCopyShader, &error);
-    if (!copy) return failed(error);
-    glBindFramebuffer(GL_FRAMEBUFFER, scene.targets->drawFbo());
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LEQUAL); // the triangle lies on the far plane: passes where nothing was drawn
-    glDepthMask(GL_FALSE);
-    copy->bind();
-    glActiveTexture(textureUnit(TextureUnit::BackgroundCache));
-    glBindTexture(GL_TEXTURE_2D, m_cacheTexture);
-    glActiveTexture(GL_TEXTURE0);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    copy->release();
     glBindVertexArray(0);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
