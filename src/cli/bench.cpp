@@ -243,16 +243,15 @@ int runBench(const QStringList& args) {
         QElapsedTimer clock;
         clock.start();
         LoadedScene loaded;
-        if (!loadScene(path, *sceneOptions, &loaded, &message)) return failed(message);
+        // The environment loads after the first run's upload, beside its first frame (as `render`).
+        if (!loadScene(path, *sceneOptions, &loaded, &message, EnvironmentLoading::AfterUpload))
+            return failed(message);
         const double loadMs = clock.nsecsElapsed() * 1e-6;
         const QString base = QFileInfo(path).completeBaseName();
-        if (loaded.environment) // issue 15: which environment, and what loading it cost
-            out << QStringLiteral("lightrig bench: %1 (%2), %3\n")
-                       .arg(environmentName(loaded.rig.environment), loaded.environment->source,
-                            environmentTimes(*loaded.environment));
         if (!procedural) {
             scenes.push_back({base, loaded.model, loadMs, loaded.rig, loaded.camera});
             scenes.back().environment = loaded.environment;
+            scenes.back().environmentLoad = loaded.environmentLoad;
             continue;
         }
         for (LightType type : types) {
@@ -276,6 +275,7 @@ int runBench(const QStringList& args) {
                 scenes.push_back({QStringLiteral("%1 · %2").arg(base, proceduralRigName(p)), loaded.model,
                                   loadMs, std::move(rig), loaded.camera});
                 scenes.back().environment = loaded.environment;
+                scenes.back().environmentLoad = loaded.environmentLoad;
             }
         }
     }
@@ -295,6 +295,16 @@ int runBench(const QStringList& args) {
     };
     const BenchStatus status = runQualityBench(scenes, options, &report, &message, progress);
     if (status != BenchStatus::Ok) return failed(message);
+    // Issue 15: which environment each model's scenes used, and what loading it cost.
+    const EnvironmentLoad* said = nullptr;
+    for (const BenchScene& s : scenes) {
+        const std::shared_ptr<const LoadedEnvironment> e =
+            s.environmentLoad ? s.environmentLoad->loaded() : s.environment;
+        if (!e || (s.environmentLoad && s.environmentLoad.get() == said)) continue;
+        said = s.environmentLoad.get();
+        out << QStringLiteral("lightrig bench: %1 (%2), %3\n")
+                   .arg(environmentName(s.rig.environment), e->source, environmentTimes(*e));
+    }
 
     out << QStringLiteral(
                "lightrig bench: %1, %2x%3, %4 timed frames after %5 warm-up frames, load average %6\n")

@@ -137,10 +137,11 @@ void Runner::renderModel(size_t begin, size_t end) {
         LoadedScene withRig = base;
         std::shared_ptr<const LoadedEnvironment>& environment = environments[items[rigBegin].rig];
         withRig.environment = environment;
-        if (!loadSceneRig(modelPath, options, &withRig, &message)) {
+        // The environment loads after the model's upload, beside the first frame (showScene); every
+        // view of the rig shares that one load.
+        if (!loadSceneRig(modelPath, options, &withRig, &message, EnvironmentLoading::AfterUpload)) {
             fail(rigBegin, rigEnd, message);
         } else {
-            environment = withRig.environment;
             for (size_t viewBegin = rigBegin; viewBegin < rigEnd;) {
                 const size_t viewEnd =
                     runEnd(items, viewBegin, rigEnd, [](const RenderItem& item) { return item.view; });
@@ -161,6 +162,7 @@ void Runner::renderModel(size_t begin, size_t end) {
                 clock.restart();
                 viewBegin = viewEnd;
             }
+            environment = withRig.environmentLoad ? withRig.environmentLoad->loaded() : withRig.environment;
         }
         rigBegin = rigEnd;
     }

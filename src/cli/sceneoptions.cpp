@@ -199,8 +199,10 @@ QString shadowSummary(const Rig& rig) {
                         : QStringLiteral(", shadows from %1 lights").arg(casters);
 }
 
-bool loadScene(const QString& modelPath, const SceneOptions& options, LoadedScene* scene, QString* error) {
-    return loadSceneModel(modelPath, scene, error) && loadSceneRig(modelPath, options, scene, error) &&
+bool loadScene(const QString& modelPath, const SceneOptions& options, LoadedScene* scene, QString* error,
+               EnvironmentLoading loading) {
+    return loadSceneModel(modelPath, scene, error) &&
+           loadSceneRig(modelPath, options, scene, error, loading) &&
            chooseSceneCamera(modelPath, options, scene, error);
 }
 
@@ -215,7 +217,8 @@ bool loadSceneModel(const QString& modelPath, LoadedScene* scene, QString* error
     return true;
 }
 
-bool loadSceneRig(const QString& modelPath, const SceneOptions& options, LoadedScene* scene, QString* error) {
+bool loadSceneRig(const QString& modelPath, const SceneOptions& options, LoadedScene* scene, QString* error,
+                  EnvironmentLoading loading) {
     const Model& model = *scene->model;
     if (!options.rigPath.isEmpty()) {
         const RigReadResult r = readRigFile(options.rigPath);
@@ -240,9 +243,16 @@ bool loadSceneRig(const QString& modelPath, const SceneOptions& options, LoadedS
         scene->rigSource += QStringLiteral(", %1 ground").arg(toString(scene->rig.ground.mode));
     scene->rigSource += shadowSummary(scene->rig);
     applyEnvironmentOverrides(scene->rig.environment, options.environment);
-    if (!loadCliEnvironment(scene->rig.environment, environmentFolder(options.rigPath), &scene->environment,
-                            error))
+    const Environment& environment = scene->rig.environment;
+    const QString folder = environmentFolder(options.rigPath);
+    scene->environmentLoad.reset();
+    if (loading == EnvironmentLoading::AfterUpload && !environment.isNone() &&
+        !(scene->environment && environmentServes(*scene->environment, environment, folder))) {
+        scene->environment.reset();
+        scene->environmentLoad = std::make_shared<EnvironmentLoad>(environment, folder);
+    } else if (!loadCliEnvironment(environment, folder, &scene->environment, error)) {
         return false;
+    }
     if (const QString env = environmentName(scene->rig.environment); !env.isEmpty())
         scene->rigSource += QStringLiteral(", ") + env;
     return true;
@@ -280,7 +290,10 @@ bool chooseSceneCamera(const QString& modelPath, const SceneOptions& options, Lo
 
 void showScene(Renderer& renderer, const LoadedScene& scene) {
     renderer.setRig(scene.rig);
-    renderer.setEnvironment(scene.environment);
+    if (scene.environmentLoad)
+        renderer.setEnvironment(scene.environmentLoad->start());
+    else
+        renderer.setEnvironment(scene.environment);
 }
 
 bool haveDisplay() {

@@ -67,9 +67,12 @@ struct LoadedScene {
     // light casts, and the environment: "RIG.json, classic shading, catcher ground, shadows from 2 lights,
     // studio environment"
     QString rigSource;
-    // The rig's environment (after the --environment options) decoded and prefiltered; null for none.
-    // Hand it to the renderer with Renderer::setEnvironment.
+    // The rig's environment (after the --environment options) decoded and prefiltered; null for none
+    // and while it is to be loaded later (environmentLoad). showScene hands it to the renderer.
     std::shared_ptr<const LoadedEnvironment> environment;
+    // With EnvironmentLoading::AfterUpload: the environment still to be loaded (null when it is loaded
+    // already, or none). showScene starts it, so that it loads while the first frame's first passes run.
+    std::shared_ptr<EnvironmentLoad> environmentLoad;
     ViewCamera camera;
     QString cameraSource; // "camera 0 of the model", "view three-quarter"
 };
@@ -81,20 +84,28 @@ bool applyShadowsOption(Rig& rig, bool on, QString* error);
 // ", shadows from N lights" when some light casts, else empty: for the summary lines.
 QString shadowSummary(const Rig& rig);
 
+// When loadSceneRig loads the rig's environment: at once (its errors are then the rig's), or after the
+// model's upload, by showScene (its errors are then the first frame's): `render` and `bench`, whose first
+// frame then draws its G-pass while the environment is decoded and prefiltered (docs/performance.md).
+enum class EnvironmentLoading { Now, AfterUpload };
+
 // Loads the model, the rig and its environment and picks the camera. False with a one-line reason (exit 1) on
 // failure.
-bool loadScene(const QString& modelPath, const SceneOptions& options, LoadedScene* scene, QString* error);
+bool loadScene(const QString& modelPath, const SceneOptions& options, LoadedScene* scene, QString* error,
+               EnvironmentLoading loading = EnvironmentLoading::Now);
 // loadScene's three steps, for `render` with several rigs and views per model (src/cli/catalog.h): the
 // model (scene->model), then the rig and its environment (rigSource, environment), then the camera of
 // options.view / options.cameraIndex (camera, cameraSource). Each false with a one-line reason.
 bool loadSceneModel(const QString& modelPath, LoadedScene* scene, QString* error);
-bool loadSceneRig(const QString& modelPath, const SceneOptions& options, LoadedScene* scene, QString* error);
+bool loadSceneRig(const QString& modelPath, const SceneOptions& options, LoadedScene* scene, QString* error,
+                  EnvironmentLoading loading = EnvironmentLoading::Now);
 bool chooseSceneCamera(const QString& modelPath, const SceneOptions& options, LoadedScene* scene,
                        QString* error);
 // "cameraN" or "N" -> N; nullopt for anything else (a --view list entry naming a model camera).
 std::optional<int> viewCameraIndex(const QString& view);
 
-// Gives the renderer the scene's rig and its loaded environment (Renderer::setRig, setEnvironment).
+// Gives the renderer the scene's rig and its environment (Renderer::setRig, setEnvironment): the loaded
+// one, or its load (environmentLoad), started here when it was not.
 void showScene(Renderer& renderer, const LoadedScene& scene);
 
 // "WxH" with both sides in 1..maxSide.

@@ -213,6 +213,7 @@ QJsonObject benchJson(const BenchReport& report) {
             {QStringLiteral("triangles"), double(r.triangles)}};
         if (r.environmentDecodeMs >= 0.0) {
             o.insert(QStringLiteral("environment_decode_ms"), round3(r.environmentDecodeMs));
+            o.insert(QStringLiteral("environment_concurrent"), r.environmentConcurrent);
             o.insert(QStringLiteral("environment_prefilter_ms"), round3(r.environmentPrefilterMs));
         }
         const ErrorFigures& e = r.errors;

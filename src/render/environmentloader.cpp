@@ -6,6 +6,7 @@
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFileInfo>
+#include <QtConcurrent/QtConcurrentRun>
 
 namespace lr {
 
@@ -14,6 +15,24 @@ QString resolveEnvironmentFile(const QString& file, const QString& rigFolder) {
     if (QFileInfo(file).isAbsolute()) return QDir::cleanPath(file);
     return QDir::cleanPath(
         QDir(rigFolder.isEmpty() ? QDir::currentPath() : rigFolder).absoluteFilePath(file));
+}
+
+EnvironmentLoad::EnvironmentLoad(const Environment& spec, const QString& rigFolder)
+    : m_spec(spec), m_rigFolder(rigFolder) {}
+
+QFuture<EnvironmentLoadResult> EnvironmentLoad::start() {
+    if (!m_future.isValid())
+        m_future = QtConcurrent::run(
+            [spec = m_spec, folder = m_rigFolder] { return loadEnvironment(spec, folder); });
+    return m_future;
+}
+
+EnvironmentLoadResult EnvironmentLoad::result() {
+    return start().result();
+}
+
+std::shared_ptr<const LoadedEnvironment> EnvironmentLoad::loaded() const {
+    return m_future.isValid() && m_future.isFinished() ? m_future.result().environment : nullptr;
 }
 
 bool environmentServes(const LoadedEnvironment& loaded, const Environment& spec, const QString& rigFolder) {

@@ -7,6 +7,7 @@
 
 #include "core/environment.h"
 
+#include <QFuture>
 #include <QString>
 #include <QStringList>
 #include <memory>
@@ -30,6 +31,28 @@ struct EnvironmentLoadResult {
 // `rigFolder`: where a relative Environment::file is resolved (the rig file's folder; the current folder
 // for a rig that was never saved).
 EnvironmentLoadResult loadEnvironment(const Environment& spec, const QString& rigFolder);
+
+// An environment to load once, when first asked for, shared by whatever shades with it (the command line's
+// scenes, their renderers and the reference): start() runs loadEnvironment on the thread pool, so that the
+// caller overlaps it with other work (the command line starts it after the model's upload: the renderer
+// waits for it only at the first pass that samples it, Renderer::setEnvironment), and result() waits for
+// it. GUI-thread object: the work is the pool's.
+class EnvironmentLoad {
+  public:
+    EnvironmentLoad(const Environment& spec, const QString& rigFolder);
+    QFuture<EnvironmentLoadResult> start(); // the first call starts it
+    bool started() const { return m_future.isValid(); }
+    EnvironmentLoadResult result(); // starts it when not started, and waits
+    // The loaded environment when the load has finished and succeeded; null otherwise (never waits).
+    std::shared_ptr<const LoadedEnvironment> loaded() const;
+    const Environment& spec() const { return m_spec; }
+    const QString& rigFolder() const { return m_rigFolder; }
+
+  private:
+    Environment m_spec;
+    QString m_rigFolder;
+    QFuture<EnvironmentLoadResult> m_future;
+};
 
 // Whether `loaded` is what loadEnvironment(spec, rigFolder) would give: the same radiance from the same
 // resolved file (intensity, rotation, background and blur are the renderer's uniforms, never loaded).

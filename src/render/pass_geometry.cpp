@@ -22,9 +22,9 @@ const char* GeometryPass::name() const {
 }
 
 PassResources GeometryPass::reads() const {
-    return m_output == Output::GBuffer
-               ? PassResources(0)
-               : PassResources(resource::Lights | resource::Clusters | resource::ShadowMaps);
+    return m_output == Output::GBuffer ? PassResources(0)
+                                       : PassResources(resource::Lights | resource::Clusters |
+                                                       resource::ShadowMaps | resource::Environment);
 }
 
 PassResources GeometryPass::writes() const {

@@ -124,7 +124,7 @@ class DeferredLightingPass final : public MeshPass {
     const char* name() const override { return "deferred lighting"; }
     PassResources reads() const override {
         return resource::Lights | resource::Clusters | resource::GBuffer | resource::SceneDepth |
-               resource::ShadowMaps;
+               resource::ShadowMaps | resource::Environment;
     }
     PassResources writes() const override { return resource::SceneColor; }
     bool run(const FrameContext& frame, PassScene& scene) override;
@@ -159,7 +159,7 @@ constexpr long long kKeptSurfacePixels = 2048LL * 2048LL;
 class BackgroundPass final : public RenderPass {
   public:
     const char* name() const override { return "background"; }
-    PassResources reads() const override { return resource::SceneDepth; }
+    PassResources reads() const override { return resource::SceneDepth | resource::Environment; }
     PassResources writes() const override { return resource::SceneColor; }
     bool run(const FrameContext& frame, PassScene& scene) override;
     void release() override;
@@ -201,7 +201,7 @@ class BlendPass final : public MeshPass {
     const char* name() const override { return "blend"; }
     PassResources reads() const override {
         return resource::Lights | resource::Clusters | resource::SceneColor | resource::SceneDepth |
-               resource::ShadowMaps;
+               resource::ShadowMaps | resource::Environment;
     }
     PassResources writes() const override { return resource::SceneColor; }
     bool run(const FrameContext& frame, PassScene& scene) override;

@@ -49,6 +49,19 @@ struct Progress {
     }
 };
 
+// Gives the renderer the scene's environment: the loaded one, or its load (started here when first needed).
+void giveEnvironment(Renderer& renderer, const BenchScene& scene) {
+    if (scene.environmentLoad)
+        renderer.setEnvironment(scene.environmentLoad->start());
+    else
+        renderer.setEnvironment(scene.environment);
+}
+
+// The scene's environment once loaded (null before, and for none).
+std::shared_ptr<const LoadedEnvironment> sceneEnvironment(const BenchScene& scene) {
+    return scene.environmentLoad ? scene.environmentLoad->loaded() : scene.environment;
+}
+
 // The reference of one scene: G-buffer from a renderer of its own, evaluated on the thread pool while the
 // progress callback keeps the caller responsive.
 bool computeSceneReference(const BenchScene& scene, const BenchOptions& o, Progress& progress,
@@ -56,7 +69,8 @@ bool computeSceneReference(const BenchScene& scene, const BenchOptions& o, Progr
     OffscreenRenderer gl;
     if (!gl.initialize(error) || !gl.setModel(scene.model, error)) return false;
     gl.setRig(scene.rig);
-    gl.renderer().setEnvironment(scene.environment);
+    giveEnvironment(gl.renderer(), scene);
+    if (!gl.renderer().waitForEnvironment(error)) return false; // the reference integrates it
     const RenderSettings settings = tierSettings(o, Quality::Exact, false);
     GBuffer g;
     if (!gl.renderGBuffer(scene.camera, o.size, settings, &g, error)) return false;
@@ -108,13 +122,18 @@ bool measure(const BenchScene& scene, const BenchOptions& o, Quality q, bool ube
     QOpenGLContext::currentContext()->functions()->glFinish();
     r->uploadMs = clock.nsecsElapsed() * 1e-6;
     gl.setRig(scene.rig);
-    gl.renderer().setEnvironment(scene.environment);
+    // The scene's first run loads its environment now, after the upload, as `render` does: the first
+    // frame's G-pass is drawn while it is decoded and prefiltered.
+    const bool concurrent = scene.environmentLoad && !scene.environmentLoad->started();
+    giveEnvironment(gl.renderer(), scene);
     if (!gl.renderFrame(scene.camera, o.size, settings, error)) return false;
+    if (!gl.renderer().waitForEnvironment(error)) return false; // a frame that never sampled it
     r->firstDrawMs = clock.nsecsElapsed() * 1e-6;
     r->firstFrameMs = r->loadMs + r->firstDrawMs;
-    if (scene.environment) {
-        r->environmentDecodeMs = scene.environment->decodeSeconds * 1e3;
-        r->environmentPrefilterMs = scene.environment->prefiltered.seconds * 1e3;
+    if (const auto environment = sceneEnvironment(scene)) {
+        r->environmentDecodeMs = environment->decodeSeconds * 1e3;
+        r->environmentPrefilterMs = environment->prefiltered.seconds * 1e3;
+        r->environmentConcurrent = concurrent;
     }
     // The viewport's first frame is the full mesh; its proxies follow from a worker thread a moment later.
     if (o.interactive) gl.renderer().waitForInteractionProxies();
@@ -251,7 +270,8 @@ BenchStatus runQualityBench(const std::vector<BenchScene>& scenes, const BenchOp
             if (r.hasErrors && reference.environment) {
                 r.hasEnvironment = true;
                 r.environment = environmentConvergence(reference);
-                r.environmentSource = scene.environment ? scene.environment->source : QString();
+                const auto environment = sceneEnvironment(scene);
+                r.environmentSource = environment ? environment->source : QString();
             }
             if (r.hasErrors && reference.area) {
                 r.hasArea = true;

@@ -45,9 +45,12 @@ struct BenchScene {
     double loadMs = 0.0; // importing the model file (counted in each first frame)
     Rig rig;
     ViewCamera camera;
-    // The rig's environment loaded (environmentloader.h), or null: every renderer of the run shades with
-    // it and the reference integrates it (when rig.environment is not None).
+    // The rig's environment loaded (environmentloader.h), or its load (shared by the scenes of one model):
+    // every renderer of the run shades with it and the reference integrates it (when rig.environment is
+    // not None). A load not yet started starts after the first run's upload, as `render` does, so that
+    // run's first frame includes it (BenchResult::environmentConcurrent).
     std::shared_ptr<const LoadedEnvironment> environment;
+    std::shared_ptr<EnvironmentLoad> environmentLoad;
 };
 
 struct BenchOptions {
@@ -98,10 +101,12 @@ struct BenchResult {
     // frame's later passes changed a state its programs were compiled for, is a stall the median hides.
     double secondFrameMs = 0.0;
     double uploadMs = 0.0; // of which the model upload (buffers, textures and their mipmaps)
-    // The scene's environment, loaded before the run (LoadedEnvironment): its decoding (in the import
-    // worker, with the round trip) and prefiltering, which a first frame with it waits for on top of
-    // firstDrawMs; < 0: no environment.
+    // The scene's environment (LoadedEnvironment): its decoding (in the import worker, with the round
+    // trip) and prefiltering; < 0: no environment. environmentConcurrent: it loaded during this run's
+    // first frame (BenchScene::environmentLoad, started after the upload), so firstDrawMs includes it;
+    // otherwise it was loaded before and a first frame with it waits for it on top of firstDrawMs.
     double environmentDecodeMs = -1.0, environmentPrefilterMs = -1.0;
+    bool environmentConcurrent = false;
     int keptFrames = 0; // timed frames that kept the G-buffer of the one before (RenderStats::gbufferKept)
     int shadowMapsRendered = 0; // over the timed frames (RenderStats::shadowMapsRendered)
     bool hasErrors = false;

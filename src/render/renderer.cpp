@@ -54,9 +54,9 @@ Renderer::~Renderer() {
         qCWarning(lcRender) << "Renderer destroyed without its context current: GL resources leak";
 }
 
-bool Renderer::fail(const QString& message) {
+bool Renderer::fail(const QString& message, bool log) {
     m_lastError = message;
-    qCWarning(lcRender).noquote() << message;
+    if (log) qCWarning(lcRender).noquote() << message;
     return false;
 }
 
@@ -174,7 +174,23 @@ const Rig& Renderer::rig() const {
 }
 
 void Renderer::setEnvironment(std::shared_ptr<const LoadedEnvironment> environment) {
+    m_loadingEnvironment = {};
     m_environment = std::move(environment);
+}
+
+void Renderer::setEnvironment(QFuture<EnvironmentLoadResult> loading) {
+    m_environment.reset();
+    m_loadingEnvironment = std::move(loading);
+}
+
+bool Renderer::waitForEnvironment(QString* error) {
+    if (!m_loadingEnvironment.isValid()) return true;
+    const EnvironmentLoadResult r = m_loadingEnvironment.result();
+    m_loadingEnvironment = {};
+    m_environment = r.environment;
+    if (m_environment) return true;
+    if (error) *error = r.error.isEmpty() ? QStringLiteral("the environment did not load") : r.error;
+    return false;
 }
 
 QString Renderer::renderPlan() const {
@@ -243,13 +259,18 @@ bool Renderer::updateScene(const glm::dmat4& view) {
 }
 
 void Renderer::updateEnvironment(FrameContext* frame) {
-    QString error;
-    if (!m_environmentGl->update(this, m_environment, &error) && !m_warnedEnvironment) {
-        qCWarning(lcRender).noquote() << "environment lighting off:" << error;
-        m_warnedEnvironment = true;
-    }
     const Environment& spec = rig().environment;
-    frame->environment = m_environment && !spec.isNone() && m_environmentGl->ready();
+    if (m_loadingEnvironment.isValid()) {
+        // Planned with the rig's environment; the first pass that samples it waits (passScene).
+        frame->environment = !spec.isNone();
+    } else {
+        QString error;
+        if (!m_environmentGl->update(this, m_environment, &error) && !m_warnedEnvironment) {
+            qCWarning(lcRender).noquote() << "environment lighting off:" << error;
+            m_warnedEnvironment = true;
+        }
+        frame->environment = m_environment && !spec.isNone() && m_environmentGl->ready();
+    }
     if (!frame->environment) return;
     frame->environmentUniforms.fromView = environmentFromView(frame->view, spec.rotation);
     frame->environmentUniforms.scale = float(std::exp2(std::clamp(spec.intensity, -20.0, 20.0)));
@@ -321,6 +342,14 @@ PassScene Renderer::passScene() {
     s.slotTexture = m_slotTexture;
     s.fastSampler = m_fastSampler;
     s.environment = m_environmentGl.get();
+    if (m_loadingEnvironment.isValid())
+        s.resolveEnvironment = [this](PassScene& scene) {
+            if (!waitForEnvironment(&scene.error)) {
+                scene.inputError = true; // the caller reports its file
+                return false;
+            }
+            return m_environmentGl->update(this, m_environment, &scene.error);
+        };
     return s;
 }
 
@@ -376,7 +405,7 @@ bool Renderer::render(const ViewCamera& camera, QSize size, const RenderSettings
     m_stats.renderPlanBuilds = m_plan->builds();
     PassScene scene = passScene();
     m_stats.gbufferKept = m_stats.surfacesKept = false; // the passes say otherwise when they run and keep
-    const bool ok = m_plan->run(frame, scene) || fail(scene.error);
+    const bool ok = m_plan->run(frame, scene) || fail(scene.error, !scene.inputError);
     m_stats.deferred = frame.deferred;
     m_stats.deferredTextures = !frame.attributeMaterials.empty();
     m_lastFrameHdr = hdr;

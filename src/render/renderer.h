@@ -22,11 +22,13 @@
 #include "core/prepare.h"
 #include "core/quality.h"
 #include "core/rig.h"
+#include "environmentloader.h"
 #include "floatimage.h"
 #include "model/model.h"
 #include "rendersettings.h"
 
 #include <QColor>
+#include <QFuture>
 #include <QOpenGLFunctions_3_3_Core>
 #include <QRect>
 #include <QSize>
@@ -38,8 +40,6 @@ class QOpenGLContext;
 class QOpenGLShaderProgram;
 
 namespace lr {
-
-struct LoadedEnvironment;
 
 namespace render {
 class ProgramCache;
@@ -80,6 +80,15 @@ class Renderer : protected QOpenGLFunctions_3_3_Core {
     // Environment says how it is used (intensity, rotation, background); without a loaded environment a
     // rig's environment adds nothing. Cheap: textures are uploaded on the next frame.
     void setEnvironment(std::shared_ptr<const LoadedEnvironment> environment);
+    // An environment still loading (loadEnvironment on a worker thread): the next frames are planned with
+    // the rig's environment and run their passes up to the first that samples it (resource::Environment),
+    // which waits for it. A load that failed fails that frame with its error, and later frames have no
+    // environment. The command line starts it after the model's upload, so that its decoding and
+    // prefiltering run beside the first frame's G-pass (docs/performance.md, Session 17).
+    void setEnvironment(QFuture<EnvironmentLoadResult> loading);
+    // Waits for an environment still loading; false with its error when it did not load.
+    bool waitForEnvironment(QString* error = nullptr);
+    // Null for none and while one is loading.
     const std::shared_ptr<const LoadedEnvironment>& environment() const { return m_environment; }
     // The frame a `model`-space rig is anchored to: the model's bounding sphere (unit sphere without a
     // model).
@@ -117,7 +126,7 @@ class Renderer : protected QOpenGLFunctions_3_3_Core {
     void setShaderSourceOverride(const QString& name, const QByteArray& source);
 
   private:
-    bool fail(const QString& message);
+    bool fail(const QString& message, bool log = true); // log: as a warning (not for the caller's input)
     bool ensureTargets(QSize size, int samples, GLenum colorFormat);
     render::FrameContext frameContext(const ViewCamera& camera, QSize size, const RenderSettings& settings,
                                       const QRect& tile) const;
@@ -150,6 +159,7 @@ class Renderer : protected QOpenGLFunctions_3_3_Core {
     std::vector<render::ShadowView> m_shadowViews;
     int m_modelGeneration = 0; // every setModel: shadow maps re-render
     std::shared_ptr<const LoadedEnvironment> m_environment;
+    QFuture<EnvironmentLoadResult> m_loadingEnvironment;    // valid while one is loading
     std::unique_ptr<render::EnvironmentGl> m_environmentGl; // its textures
     bool m_warnedEnvironment = false;                       // an upload failure was logged once
     bool m_warnedCasters = false; // more than kMaxShadowCasters casting lights was logged once

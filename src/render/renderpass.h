@@ -12,6 +12,7 @@
 
 #include <QOpenGLFunctions_3_3_Core>
 #include <QString>
+#include <functional>
 #include <vector>
 
 namespace lr::render {
@@ -29,6 +30,10 @@ enum : unsigned {
     // The casting lights' depth maps (shadowmaps.h), written by the shadow pass when some light casts;
     // without casters nothing samples them, and the lit passes' read of them is void (RenderPlan::check).
     ShadowMaps = 1u << 7,
+    // The environment's textures (environmentgl.h), there from the start of a frame that has an
+    // environment. One still loading (Renderer::setEnvironment with a future) is waited for before the
+    // first pass that declares this read (RenderPlan::run): the passes before it run while it loads.
+    Environment = 1u << 8,
 };
 } // namespace resource
 using PassResources = unsigned;
@@ -67,7 +72,12 @@ struct PassScene {
     GLuint slotTexture = 0; // 1x1, for MeshPass::primeSamplerSlots
     // The environment's textures (environmentgl.h); used when FrameContext::environment.
     const EnvironmentGl* environment = nullptr;
-    QString error; // why a pass failed
+    // Set while the frame's environment is still loading: waits for it and uploads it, false with the
+    // reason in error when it did not load. RenderPlan::run calls it once, before the first pass reading
+    // it.
+    std::function<bool(PassScene& scene)> resolveEnvironment;
+    QString error;           // why a pass failed
+    bool inputError = false; // error is about the caller's input (an environment that did not load)
 };
 
 class RenderPass : protected QOpenGLFunctions_3_3_Core {

@@ -3,14 +3,15 @@
 #include <QLoggingCategory>
 #include <QStringList>
 #include <algorithm>
+#include <utility>
 
 Q_LOGGING_CATEGORY(lcPlan, "lightrig.render.plan", QtInfoMsg)
 
 namespace lr::render {
 
 QString describeResources(PassResources r) {
-    static const char* const names[] = {"lights",      "clusters", "g-buffer", "scene-color",
-                                        "scene-depth", "resolved", "output",   "shadow-maps"};
+    static const char* const names[] = {"lights",   "clusters", "g-buffer",    "scene-color", "scene-depth",
+                                        "resolved", "output",   "shadow-maps", "environment"};
     QStringList out;
     for (int i = 0; i < int(std::size(names)); ++i)
         if (r & (1u << i)) out << QLatin1String(names[i]);
@@ -71,8 +72,14 @@ const std::vector<RenderPass*>& RenderPlan::select(const PlanKey& key) {
 
 bool RenderPlan::run(const FrameContext& frame, PassScene& scene) {
     bool ok = true;
-    for (RenderPass* p : m_passes)
+    for (RenderPass* p : m_passes) {
+        if (scene.resolveEnvironment && (p->reads() & resource::Environment)) {
+            // The frame was planned with an environment still loading: it is needed from here on.
+            const auto resolve = std::exchange(scene.resolveEnvironment, nullptr);
+            if (!resolve(scene)) return false;
+        }
         ok = p->run(frame, scene) && ok;
+    }
     return ok;
 }
 
@@ -84,7 +91,7 @@ QString RenderPlan::describe() const {
 }
 
 QString RenderPlan::check(const std::vector<RenderPass*>& passes, bool msaa) {
-    PassResources available = resource::Lights | resource::Clusters;
+    PassResources available = resource::Lights | resource::Clusters | resource::Environment;
     // Without a shadow pass no light casts: the lit passes' shaders sample no map (nothing to wait for).
     if (std::none_of(passes.begin(), passes.end(),
                      [](const RenderPass* p) { return p->writes() & resource::ShadowMaps; }))

@@ -19,6 +19,8 @@
 #include "render/shadergen.h"
 
 #include <QTest>
+#include <QThread>
+#include <QtConcurrent/QtConcurrentRun>
 #include <cmath>
 
 using namespace lr;
@@ -487,6 +489,69 @@ class TestEnvironmentRender : public QObject {
             plan.select(key);
             QVERIFY(!plan.describe().contains(QLatin1String("background")));
         }
+    }
+
+    // An environment still loading (Renderer::setEnvironment with a future, as the command line gives it
+    // after the model's upload): the frame is the one the loaded environment gives, byte for byte, on
+    // both paths; the G-pass runs before anything waits for it (the first pass reading it is the
+    // background or the lighting). A load that fails fails that frame with its error; the next frame
+    // has no environment.
+    void loadingEnvironment() {
+        Studio studio;
+        Softbox box;
+        box.azimuth = 30.0;
+        box.elevation = 20.0;
+        box.width = box.height = 40.0;
+        box.intensity = 8.0;
+        studio.softboxes = {box};
+        const auto sky = loaded(environment::renderStudio(studio, 128));
+        const Rig rig = environmentRig(ShadingModel::Pbr, EnvironmentBackground::Visible);
+        QVERIFY(m_gl->setModel(whiteSphere(glm::vec3(0.04f))));
+        const auto later = [](std::shared_ptr<const LoadedEnvironment> e, QString error) {
+            return QtConcurrent::run([e, error] {
+                QThread::msleep(50); // still loading when the frame starts
+                EnvironmentLoadResult r;
+                r.environment = e;
+                r.error = error;
+                return r;
+            });
+        };
+        for (ShadingPath path : {ShadingPath::Forward, ShadingPath::Deferred}) {
+            const RenderSettings s = settingsFor(Quality::Exact, path);
+            m_gl->renderer().setEnvironment(sky);
+            const QImage expected = image(rig, frontCamera(), s);
+            QVERIFY(!expected.isNull());
+            m_gl->setModel(whiteSphere(glm::vec3(0.04f))); // nothing kept from that frame
+            m_gl->renderer().setEnvironment(later(sky, QString()));
+            QVERIFY(m_gl->renderer().environment() == nullptr);
+            const QImage got = image(rig, frontCamera(), s);
+            QVERIFY(m_gl->renderer().environment() == sky);
+            QCOMPARE(got, expected);
+
+            m_gl->renderer().setEnvironment(
+                later(nullptr, QStringLiteral("could not read sky.exr: truncated")));
+            m_gl->setRig(rig);
+            QString error;
+            QVERIFY(m_gl->renderImage(frontCamera(), kSize, s, 1, &error).isNull());
+            QVERIFY2(error.contains(QLatin1String("could not read sky.exr: truncated")), qPrintable(error));
+            QVERIFY(m_gl->renderer().environment() == nullptr);
+            const FloatImage dark = radiance(rig, frontCamera(), s); // no environment, no lights
+            QVERIFY(!dark.pixels.empty());
+            for (const glm::vec4& p : dark.pixels)
+                QCOMPARE(p.g, 0.0f);
+        }
+        // Where the plan waits: never in the G-pass, first in the background or the lighting.
+        RenderPlan plan;
+        for (bool deferred : {false, true}) {
+            PlanKey key;
+            key.deferred = deferred;
+            key.background = true;
+            QString first;
+            for (const RenderPass* p : plan.select(key))
+                if ((p->reads() & resource::Environment) && first.isEmpty()) first = QLatin1String(p->name());
+            QCOMPARE(first, deferred ? QStringLiteral("background") : QStringLiteral("geometry (shaded)"));
+        }
+        m_gl->renderer().setEnvironment(nullptr);
     }
 
     // Without an environment (source None, or nothing loaded) no program changes: no define, the
