@@ -9,8 +9,28 @@
 
 namespace lr::render {
 
-GLuint GpuModel::texture(QOpenGLFunctions_3_3_Core* gl, const MipChain& chain, bool srgb) {
+GLuint GpuModel::texture(QOpenGLFunctions_3_3_Core* gl, const MipChain& chain, TextureStore store) {
     if (chain.levels.empty()) return 0;
+    // The chain is RGBA8888; GL keeps the components the internal format has (BGRA order puts B, the
+    // metallic, in R and G, the roughness, in G).
+    GLint internal = GL_RGBA8;
+    GLenum format = GL_RGBA;
+    GLint swizzle[4] = {GL_RED, GL_GREEN, GL_BLUE, GL_ALPHA};
+    switch (store) {
+    case TextureStore::Srgb:
+        internal = GL_SRGB8_ALPHA8;
+        break;
+    case TextureStore::Rgba:
+        break;
+    case TextureStore::Occlusion:
+        internal = GL_R8;
+        break;
+    case TextureStore::MetalRough:
+        internal = GL_RG8;
+        format = GL_BGRA;
+        swizzle[0] = GL_ZERO, swizzle[1] = GL_GREEN, swizzle[2] = GL_RED, swizzle[3] = GL_ONE;
+        break;
+    }
     GLuint name = 0;
     gl->glGenTextures(1, &name);
     gl->glBindTexture(GL_TEXTURE_2D, name);
@@ -21,10 +41,11 @@ GLuint GpuModel::texture(QOpenGLFunctions_3_3_Core* gl, const MipChain& chain, b
     for (size_t level = 0; level < chain.levels.size(); ++level) {
         const QImage& image = chain.levels[level];
         gl->glPixelStorei(GL_UNPACK_ROW_LENGTH, int(image.bytesPerLine() / 4));
-        gl->glTexImage2D(GL_TEXTURE_2D, GLint(level), srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, image.width(),
-                         image.height(), 0, GL_RGBA, GL_UNSIGNED_BYTE, image.constBits());
+        gl->glTexImage2D(GL_TEXTURE_2D, GLint(level), internal, image.width(), image.height(), 0, format,
+                         GL_UNSIGNED_BYTE, image.constBits());
     }
     gl->glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    gl->glTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_RGBA, swizzle);
     gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
@@ -33,35 +54,46 @@ GLuint GpuModel::texture(QOpenGLFunctions_3_3_Core* gl, const MipChain& chain, b
 }
 
 void GpuModel::uploadTextures(QOpenGLFunctions_3_3_Core* gl) {
-    // Every (texture, sRGB) pair some draw samples; their mipmap chains are built on worker threads.
+    // Every (texture, store) pair some draw samples; the mipmap chains (one per image and colour space,
+    // whatever the stores) are built on worker threads.
     std::vector<TextureKey> keys;
     for (const GpuDraw& d : m_draws) {
         if (d.material < 0) continue;
         const Material& m = m_model->materials[size_t(d.material)];
-        if (d.features.baseColorTexture) keys.emplace_back(m.baseColorTexture, true);
-        if (d.features.normalMap) keys.emplace_back(m.normalTexture, false);
-        if (d.features.emissiveTexture) keys.emplace_back(m.emissiveTexture, true);
-        if (d.features.metalRoughTexture) keys.emplace_back(m.metallicRoughnessTexture, false);
-        if (d.features.occlusionTexture) keys.emplace_back(m.occlusionTexture, false);
+        if (d.features.baseColorTexture) keys.emplace_back(m.baseColorTexture, TextureStore::Srgb);
+        if (d.features.normalMap) keys.emplace_back(m.normalTexture, TextureStore::Rgba);
+        if (d.features.emissiveTexture) keys.emplace_back(m.emissiveTexture, TextureStore::Srgb);
+        if (d.features.metalRoughTexture)
+            keys.emplace_back(m.metallicRoughnessTexture, TextureStore::MetalRough);
+        if (d.features.occlusionTexture) keys.emplace_back(m.occlusionTexture, TextureStore::Occlusion);
     }
     std::sort(keys.begin(), keys.end());
     keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+    using ChainKey = std::pair<int, bool>; // (texture index, sRGB)
+    QList<ChainKey> chainKeys;
+    for (const TextureKey& k : keys)
+        if (const ChainKey c{k.first, k.second == TextureStore::Srgb}; !chainKeys.contains(c))
+            chainKeys.push_back(c);
     const Model* model = m_model.get();
-    const QList<MipChain> chains = QtConcurrent::blockingMapped(
-        QList<TextureKey>(keys.begin(), keys.end()), [model](const TextureKey& k) {
-            return buildMipChain(model->textures[size_t(k.first)].image, k.second);
-        });
-    for (size_t i = 0; i < keys.size(); ++i)
-        m_textures.emplace(keys[i], texture(gl, chains[qsizetype(i)], keys[i].second));
+    const QList<MipChain> chains = QtConcurrent::blockingMapped(chainKeys, [model](const ChainKey& k) {
+        return buildMipChain(model->textures[size_t(k.first)].image, k.second);
+    });
+    for (const TextureKey& k : keys)
+        m_textures.emplace(
+            k, texture(gl, chains[chainKeys.indexOf(ChainKey{k.first, k.second == TextureStore::Srgb})],
+                       k.second));
     for (GpuDraw& d : m_draws) {
         if (d.material < 0) continue;
         const Material& m = m_model->materials[size_t(d.material)];
-        if (d.features.baseColorTexture) d.baseColorTexture = textureName(m.baseColorTexture, true);
-        if (d.features.normalMap) d.normalTexture = textureName(m.normalTexture, false);
-        if (d.features.emissiveTexture) d.emissiveTexture = textureName(m.emissiveTexture, true);
+        if (d.features.baseColorTexture)
+            d.baseColorTexture = textureName(m.baseColorTexture, TextureStore::Srgb);
+        if (d.features.normalMap) d.normalTexture = textureName(m.normalTexture, TextureStore::Rgba);
+        if (d.features.emissiveTexture)
+            d.emissiveTexture = textureName(m.emissiveTexture, TextureStore::Srgb);
         if (d.features.metalRoughTexture)
-            d.metalRoughTexture = textureName(m.metallicRoughnessTexture, false);
-        if (d.features.occlusionTexture) d.occlusionTexture = textureName(m.occlusionTexture, false);
+            d.metalRoughTexture = textureName(m.metallicRoughnessTexture, TextureStore::MetalRough);
+        if (d.features.occlusionTexture)
+            d.occlusionTexture = textureName(m.occlusionTexture, TextureStore::Occlusion);
     }
 }
 
@@ -86,8 +118,8 @@ bool GpuModel::appendMaterials(std::vector<AttributeMaterial>& out) const {
     return true;
 }
 
-GLuint GpuModel::textureName(int index, bool srgb) const {
-    const auto it = m_textures.find({index, srgb});
+GLuint GpuModel::textureName(int index, TextureStore store) const {
+    const auto it = m_textures.find({index, store});
     return it == m_textures.end() ? 0 : it->second;
 }
 

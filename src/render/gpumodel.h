@@ -62,15 +62,20 @@ class GpuModel {
     bool updateProxies(QOpenGLFunctions_3_3_Core* gl, bool wait = false);
 
   private:
-    using TextureKey = std::pair<int, bool>; // (texture index, sRGB)
+    // How an image is stored for the role a draw samples it in: colours as sRGB8_ALPHA8, normals as
+    // RGBA8; the occlusion (read in R) as R8 and the metallic-roughness (G, B) as RG8, swizzled back to
+    // G and B: the shaders read the same texel values from a quarter and a half of the memory (the first
+    // frame's upload is mostly fresh memory faulted in, docs/performance.md).
+    enum class TextureStore { Srgb, Rgba, Occlusion, MetalRough };
+    using TextureKey = std::pair<int, TextureStore>; // (texture index, store)
     void uploadTextures(QOpenGLFunctions_3_3_Core* gl);
-    static GLuint texture(QOpenGLFunctions_3_3_Core* gl, const MipChain& chain, bool srgb);
+    static GLuint texture(QOpenGLFunctions_3_3_Core* gl, const MipChain& chain, TextureStore store);
     static void setAttributes(QOpenGLFunctions_3_3_Core* gl); // of the bound vertex array
-    GLuint textureName(int index, bool srgb) const;
+    GLuint textureName(int index, TextureStore store) const;
 
     std::shared_ptr<const Model> m_model;
     std::vector<GpuDraw> m_draws;
-    std::map<std::pair<int, bool>, GLuint> m_textures; // (texture index, sRGB) -> GL name
+    std::map<TextureKey, GLuint> m_textures; // -> GL name
     QFuture<std::vector<MeshLod>> m_proxies;
     bool m_proxiesUploaded = false;
 };
