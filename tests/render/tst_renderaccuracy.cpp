@@ -147,14 +147,16 @@ class TestRenderAccuracy : public QObject {
     }
 
     // The physically based material inputs (mesh.frag surfaceHere): metallic = factor × B, roughness =
-    // factor × G of the metal-rough texture (linear), occlusion = 1 + strength·(R − 1); none: 1.
+    // factor × G of the metal-rough texture (linear), occlusion = 1 + strength·(R − 1); none: 1. Every
+    // channel differs, so that a texture store (GpuModel::TextureStore: R8, RG8 swizzled) reading the
+    // wrong one fails; one image serving both roles (glTF's packed occlusion-roughness-metallic) too.
     void pbrMaterialInputs() {
         QString error;
         auto model = planeScene();
         QImage mr(8, 8, QImage::Format_RGBA8888);
-        mr.fill(QColor(0, 128, 255)); // linear: G = 128/255 roughness, B = 1 metal
+        mr.fill(QColor(77, 128, 191, 30)); // linear: G = 128/255 roughness, B = 191/255 metal
         QImage ao(8, 8, QImage::Format_RGBA8888);
-        ao.fill(QColor(51, 0, 0)); // R = 0.2
+        ao.fill(QColor(51, 200, 150, 90)); // R = 0.2
         model->textures.push_back({QStringLiteral("*0"), mr});
         model->textures.push_back({QStringLiteral("*1"), ao});
         Material& m = model->materials[0];
@@ -167,9 +169,19 @@ class TestRenderAccuracy : public QObject {
         GBuffer g;
         QVERIFY2(m_gl.renderGBuffer(cam, QSize(16, 16), floatSettings(), &g, &error), qPrintable(error));
         const glm::vec4 got = g.material.at(8, 8);
-        QVERIFY(near(got.x, 0.5, 1e-6));
+        QVERIFY(near(got.x, 0.5 * 191 / 255.0, 1e-3));
         QVERIFY(near(got.y, 0.8 * 128 / 255.0, 1e-3));
         QVERIFY(near(got.z, 1.0 + 0.5 * (0.2 - 1.0), 1e-3));
+        // One image for both: occlusion from its R, roughness from its G, metallic from its B.
+        m.occlusionTexture = 0;
+        QVERIFY(m_gl.setModel(model, &error));
+        QVERIFY2(m_gl.renderGBuffer(cam, QSize(16, 16), floatSettings(), &g, &error), qPrintable(error));
+        const glm::vec4 packed = g.material.at(8, 8);
+        QVERIFY(near(packed.x, 0.5 * 191 / 255.0, 1e-3));
+        QVERIFY(near(packed.y, 0.8 * 128 / 255.0, 1e-3));
+        QVERIFY(near(packed.z, 1.0 + 0.5 * (77 / 255.0 - 1.0), 1e-3));
+        m.occlusionTexture = 1;
+        QVERIFY(m_gl.setModel(model, &error));
         // Without ambient light occlusion changes nothing, so it is not read: the G-buffer holds 1.
         m_gl.setRig(pbrRigCases()[0].make());
         QVERIFY2(m_gl.renderGBuffer(cam, QSize(16, 16), floatSettings(), &g, &error), qPrintable(error));
