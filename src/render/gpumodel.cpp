@@ -55,7 +55,8 @@ GLuint GpuModel::texture(QOpenGLFunctions_3_3_Core* gl, const MipChain& chain, T
 
 void GpuModel::uploadTextures(QOpenGLFunctions_3_3_Core* gl) {
     // Every (texture, store) pair some draw samples; the mipmap chains (one per image and colour space,
-    // whatever the stores) are built on worker threads.
+    // whatever the stores) are built on worker threads, each uploaded as soon as it is ready while the
+    // next ones are still being built.
     std::vector<TextureKey> keys;
     for (const GpuDraw& d : m_draws) {
         if (d.material < 0) continue;
@@ -75,13 +76,14 @@ void GpuModel::uploadTextures(QOpenGLFunctions_3_3_Core* gl) {
         if (const ChainKey c{k.first, k.second == TextureStore::Srgb}; !chainKeys.contains(c))
             chainKeys.push_back(c);
     const Model* model = m_model.get();
-    const QList<MipChain> chains = QtConcurrent::blockingMapped(chainKeys, [model](const ChainKey& k) {
+    const QFuture<MipChain> chains = QtConcurrent::mapped(chainKeys, [model](const ChainKey& k) {
         return buildMipChain(model->textures[size_t(k.first)].image, k.second);
     });
-    for (const TextureKey& k : keys)
+    for (const TextureKey& k : keys) // in chainKeys' order: resultAt waits for that chain alone
         m_textures.emplace(
-            k, texture(gl, chains[chainKeys.indexOf(ChainKey{k.first, k.second == TextureStore::Srgb})],
-                       k.second));
+            k,
+            texture(gl, chains.resultAt(chainKeys.indexOf(ChainKey{k.first, k.second == TextureStore::Srgb})),
+                    k.second));
     for (GpuDraw& d : m_draws) {
         if (d.material < 0) continue;
         const Material& m = m_model->materials[size_t(d.material)];
