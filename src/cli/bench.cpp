@@ -299,7 +299,7 @@ int runBench(const QStringList& args) {
     const EnvironmentLoad* said = nullptr;
     for (const BenchScene& s : scenes) {
         const std::shared_ptr<const LoadedEnvironment> e =
-            s.environmentLoad ? s.environmentLoad->loaded() : s.environment;
+            loadedEnvironment(s.environmentLoad, s.environment);
         if (!e || (s.environmentLoad && s.environmentLoad.get() == said)) continue;
         said = s.environmentLoad.get();
         out << QStringLiteral("lightrig bench: %1 (%2), %3\n")

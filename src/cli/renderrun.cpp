@@ -162,7 +162,7 @@ void Runner::renderModel(size_t begin, size_t end) {
                 clock.restart();
                 viewBegin = viewEnd;
             }
-            environment = withRig.environmentLoad ? withRig.environmentLoad->loaded() : withRig.environment;
+            environment = loadedEnvironment(withRig.environmentLoad, withRig.environment);
         }
         rigBegin = rigEnd;
     }

@@ -35,6 +35,11 @@ std::shared_ptr<const LoadedEnvironment> EnvironmentLoad::loaded() const {
     return m_future.isValid() && m_future.isFinished() ? m_future.result().environment : nullptr;
 }
 
+std::shared_ptr<const LoadedEnvironment> loadedEnvironment(const std::shared_ptr<EnvironmentLoad>& load,
+                                                           std::shared_ptr<const LoadedEnvironment> loaded) {
+    return load ? load->loaded() : loaded;
+}
+
 bool environmentServes(const LoadedEnvironment& loaded, const Environment& spec, const QString& rigFolder) {
     return loaded.spec.sameRadiance(spec) && (spec.source != EnvironmentSource::Image ||
                                               loaded.source == resolveEnvironmentFile(spec.file, rigFolder));

@@ -54,6 +54,11 @@ class EnvironmentLoad {
     QFuture<EnvironmentLoadResult> m_future;
 };
 
+// For what holds an environment either loaded or as its load (the command line's scenes): the loaded one,
+// or the load's once it has finished and succeeded; null otherwise (never waits).
+std::shared_ptr<const LoadedEnvironment> loadedEnvironment(const std::shared_ptr<EnvironmentLoad>& load,
+                                                           std::shared_ptr<const LoadedEnvironment> loaded);
+
 // Whether `loaded` is what loadEnvironment(spec, rigFolder) would give: the same radiance from the same
 // resolved file (intensity, rotation, background and blur are the renderer's uniforms, never loaded).
 bool environmentServes(const LoadedEnvironment& loaded, const Environment& spec, const QString& rigFolder);

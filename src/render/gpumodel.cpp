@@ -71,19 +71,18 @@ void GpuModel::uploadTextures(QOpenGLFunctions_3_3_Core* gl) {
     std::sort(keys.begin(), keys.end());
     keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
     using ChainKey = std::pair<int, bool>; // (texture index, sRGB)
+    const auto chainOf = [](const TextureKey& k) {
+        return ChainKey{k.first, k.second == TextureStore::Srgb};
+    };
     QList<ChainKey> chainKeys;
     for (const TextureKey& k : keys)
-        if (const ChainKey c{k.first, k.second == TextureStore::Srgb}; !chainKeys.contains(c))
-            chainKeys.push_back(c);
+        if (!chainKeys.contains(chainOf(k))) chainKeys.push_back(chainOf(k));
     const Model* model = m_model.get();
     const QFuture<MipChain> chains = QtConcurrent::mapped(chainKeys, [model](const ChainKey& k) {
         return buildMipChain(model->textures[size_t(k.first)].image, k.second);
     });
     for (const TextureKey& k : keys) // in chainKeys' order: resultAt waits for that chain alone
-        m_textures.emplace(
-            k,
-            texture(gl, chains.resultAt(chainKeys.indexOf(ChainKey{k.first, k.second == TextureStore::Srgb})),
-                    k.second));
+        m_textures.emplace(k, texture(gl, chains.resultAt(chainKeys.indexOf(chainOf(k))), k.second));
     for (GpuDraw& d : m_draws) {
         if (d.material < 0) continue;
         const Material& m = m_model->materials[size_t(d.material)];

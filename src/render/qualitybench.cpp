@@ -59,7 +59,7 @@ void giveEnvironment(Renderer& renderer, const BenchScene& scene) {
 
 // The scene's environment once loaded (null before, and for none).
 std::shared_ptr<const LoadedEnvironment> sceneEnvironment(const BenchScene& scene) {
-    return scene.environmentLoad ? scene.environmentLoad->loaded() : scene.environment;
+    return loadedEnvironment(scene.environmentLoad, scene.environment);
 }
 
 // The reference of one scene: G-buffer from a renderer of its own, evaluated on the thread pool while the

@@ -48,6 +48,18 @@ std::shared_ptr<const LoadedEnvironment> uniformEnvironment(glm::vec3 radiance) 
     return loaded(std::move(image));
 }
 
+// The procedural studio with one square softbox (size degrees of arc a side).
+Studio oneSoftbox(double azimuth, double elevation, double size, double intensity) {
+    Softbox box;
+    box.azimuth = azimuth;
+    box.elevation = elevation;
+    box.width = box.height = size;
+    box.intensity = intensity;
+    Studio studio;
+    studio.softboxes = {box};
+    return studio;
+}
+
 Rig environmentRig(ShadingModel shading, EnvironmentBackground background = EnvironmentBackground::Color) {
     Rig r;
     r.shading.model = shading;
@@ -371,14 +383,9 @@ class TestEnvironmentRender : public QObject {
     // The studio's softbox, seen straight on with no model: the centre pixel looks at it. Rotating the
     // environment by 90° moves it where core's rotateAboutUp says (and away from where it was).
     void rotationMovesSoftbox() {
-        Studio studio;
+        Studio studio = oneSoftbox(180.0, 10.0, 30.0, 10.0);
         studio.zenith = studio.horizon = studio.floor = glm::dvec3(0.05);
-        Softbox box;
-        box.azimuth = 180.0;
-        box.elevation = 10.0;
-        box.width = box.height = 30.0;
-        box.intensity = 10.0;
-        studio.softboxes = {box};
+        const Softbox& box = studio.softboxes[0];
         m_gl->setModel(nullptr);
         m_gl->renderer().setEnvironment(loaded(environment::renderStudio(studio, 256)));
         Rig rig = environmentRig(ShadingModel::Pbr, EnvironmentBackground::Visible);
@@ -433,14 +440,8 @@ class TestEnvironmentRender : public QObject {
     // camera's axis at its centre; turned 90°, the highlight leaves the centre for the point whose
     // reflection vector is the turned direction.
     void rotationMovesHighlight() {
-        Studio studio;
+        Studio studio = oneSoftbox(0.0, 0.0, 30.0, 10.0); // +Z: behind the camera, which looks along −Z
         studio.zenith = studio.horizon = studio.floor = glm::dvec3(0.02);
-        Softbox box;
-        box.azimuth = 0.0; // +Z: behind the camera, which looks along −Z
-        box.elevation = 0.0;
-        box.width = box.height = 30.0;
-        box.intensity = 10.0;
-        studio.softboxes = {box};
         auto mirror = whiteSphere();
         mirror->materials[0].metallic = 1.0f;
         mirror->materials[0].roughness = 0.0f;
@@ -497,14 +498,7 @@ class TestEnvironmentRender : public QObject {
     // background or the lighting). A load that fails fails that frame with its error; the next frame
     // has no environment.
     void loadingEnvironment() {
-        Studio studio;
-        Softbox box;
-        box.azimuth = 30.0;
-        box.elevation = 20.0;
-        box.width = box.height = 40.0;
-        box.intensity = 8.0;
-        studio.softboxes = {box};
-        const auto sky = loaded(environment::renderStudio(studio, 128));
+        const auto sky = loaded(environment::renderStudio(oneSoftbox(30.0, 20.0, 40.0, 8.0), 128));
         const Rig rig = environmentRig(ShadingModel::Pbr, EnvironmentBackground::Visible);
         QVERIFY(m_gl->setModel(whiteSphere(glm::vec3(0.04f))));
         const auto later = [](std::shared_ptr<const LoadedEnvironment> e, QString error) {
