@@ -84,7 +84,7 @@ class Renderer : protected QOpenGLFunctions_3_3_Core {
     // the rig's environment and run their passes up to the first that samples it (resource::Environment),
     // which waits for it. A load that failed fails that frame with its error, and later frames have no
     // environment. The command line starts it after the model's upload, so that its decoding and
-    // prefiltering run beside the first frame's G-pass (docs/performance.md, Session 17).
+    // prefiltering run beside the first frame's G-pass (docs/performance.md, "Where the time goes").
     void setEnvironment(QFuture<EnvironmentLoadResult> loading);
     // Waits for an environment still loading; false with its error when it did not load.
     bool waitForEnvironment(QString* error = nullptr);

@@ -62,12 +62,12 @@ struct RenderSettings {
     // (tst_deferredtextures). The attribute G-buffer makes a frame of a moving camera 12-18 % cheaper on
     // the helmet alone (nothing on the helmet over a ground) but compiles one more program per material
     // and keeps four more full-size RGBA32F targets: the first draw took 150-600 ms longer on every bench
-    // scene (docs/performance.md, "Session 14"), the frame of a still view is the same.
+    // scene (docs/performance.md, "Where the time goes"), the frame of a still view is the same.
     bool deferredTextures = false;
     // Wait for the shadow maps a frame renders (glFinish) so that RenderStats::shadowMapMs is their own
     // time (tests/render/shadow_perf). False (the default): the rasteriser's threads draw the maps while
     // the main thread compiles and submits the passes that read them; the first frame of a scene with
-    // casters was 40-70 ms shorter (docs/performance.md, "Session 15").
+    // casters was 40-70 ms shorter (docs/performance.md, "Where the time goes").
     bool waitForShadowMaps = false;
     // The view or a light is being dragged: dense models draw their interaction proxy (lod.h) once it is
     // built; the full mesh otherwise.
