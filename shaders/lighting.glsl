@@ -16,7 +16,7 @@
 //   LR_LIGHT_TEXELS: RGBA32F texels per light in the light buffer (layout in shadetypes.glsl, loadLight);
 //   LR_QUALITY_EXACT / LR_QUALITY_BALANCED / LR_QUALITY_FAST: the quality tier (docs/quality.md);
 //   LR_SHININESS_INT + powShininessInt(): balanced tier, the material's shininess is this integer;
-//   LR_PBR: the rig is physically based (the glTF BRDF block, lightArrival, shadeLightPbr); with it
+//   LR_PBR: the rig is physically based (the glTF BRDF block, shadeLightPbr); with it
 //   LR_METAL_ROUGH_TEXTURE / LR_OCCLUSION_TEXTURE (mesh.frag) and the BRDF's approximations LR_B5, LR_B6;
 //   LR_SHADOWS: some light casts (shadows.glsl); LR_SHADOW_CATCHER: the ground's catcher (mesh.frag).
 // Code for absent features is not compiled, so a scene pays only for what it uses.

@@ -31,6 +31,62 @@ vec3 shadeAreaLight(ShadeLight l, Surface s, ShadeSettings st, vec3 V) {
 }
 #endif
 
+#ifdef LR_HAS_SURFACE_LIGHTS
+// The direction to a light and its attenuation (falloff × cone; 1 for a directional light) at the surface
+// point P with normal N; false when the light adds nothing there (shade.h lightArrival). One definition for
+// both shadings and every tier: the tiers differ only in how L and d are computed.
+// LR_ARRIVAL_INVERSESQRT: L and d from one inversesqrt, without branches; exact where 1e-15 < |toLight| <
+// 1e15, and outside it L falls back to N and d to 0 or the largest float. Physically based keys use it in
+// every tier unless LR_FAR_LIGHTS (the renderer compiles it only when no positional light can be 1e15 from
+// a visible surface: LightSet::update bounds it; below 1e-15 the light is on the surface, since float
+// positions of a visible surface beyond the near plane cannot differ by less unless they are equal);
+// classic keys use it in the balanced tier (B4). Otherwise L = safeNormalize (rescaled first, exact at any
+// distance) and |toLight| = dot(toLight, L): no squared intermediate to overflow or underflow.
+#if (defined(LR_PBR) && !defined(LR_FAR_LIGHTS)) || (!defined(LR_PBR) && defined(LR_B4))
+#define LR_ARRIVAL_INVERSESQRT 1
+#endif
+bool lightArrival(ShadeLight l, vec3 P, vec3 N, ShadeSettings st, out vec3 L, out float attenuation) {
+    L = -l.direction;
+    attenuation = 1.0;
+#ifdef LR_HAS_POSITIONAL
+    if (lightTypeOf(l) != LR_LIGHT_DIRECTIONAL) {
+        vec3 toLight = l.position - P;
+#ifdef LR_B3
+        // B3 early-out: beyond a bounded falloff's range (squared distances, before any sqrt) the light
+        // adds exactly zero.
+        float d2 = dot(toLight, toLight);
+        if (l.range > 1e-18 && lightIsBounded(l) && d2 * (st.distanceScale * st.distanceScale) >= l.range * l.range)
+            return false;
+#endif
+#ifdef LR_ARRIVAL_INVERSESQRT
+        float t2 = dot(toLight, toLight);
+        float inv = inversesqrt(t2);
+        bool inRange = t2 > 1e-30 && t2 < 1e30;
+        L = inRange ? toLight * inv : N;
+        float d = (inRange ? t2 * inv : (!(t2 <= 1.0) ? kFloatMax : 0.0)) * st.distanceScale;
+#else
+        L = safeNormalize(toLight, N);  // a light on the surface shines along the normal
+        float d = dot(toLight, L) * st.distanceScale;
+#endif
+        d = abs(d) <= kFloatMax ? d : kFloatMax;  // an overflowing distance: every falloff gives its limit
+#ifdef LR_HAS_LIGHT_SPOT
+        float cosTheta = dot(-L, l.direction);
+#ifdef LR_B3
+        // ... and outside the cone (cosine space, before the falloff and the cone are evaluated).
+        if (lightTypeOf(l) == LR_LIGHT_SPOT && cosTheta < l.cosOuter) return false;
+#endif
+#endif
+        attenuation = evalFalloff(l, d);
+#ifdef LR_HAS_LIGHT_SPOT
+        if (lightTypeOf(l) == LR_LIGHT_SPOT) attenuation *= evalCone(l, cosTheta);
+#endif
+        return attenuation > 0.0;
+    }
+#endif
+    return true;
+}
+#endif
+
 // Radiance one light adds at the surface (linear, HDR).
 vec3 shadeLight(ShadeLight l, Surface s, ShadeSettings st, vec3 V) {
     vec3 N = s.normal;
@@ -41,49 +97,9 @@ vec3 shadeLight(ShadeLight l, Surface s, ShadeSettings st, vec3 V) {
     if (lightIsArea(l)) return shadeAreaLight(l, s, st, V);
 #endif
 #ifdef LR_HAS_SURFACE_LIGHTS
-    vec3 L = -l.direction;
-    float attenuation = 1.0;
-#ifdef LR_HAS_POSITIONAL
-    if (lightTypeOf(l) != LR_LIGHT_DIRECTIONAL) {
-        vec3 toLight = l.position - s.position;
-#ifdef LR_B3
-        // B3 early-out: beyond a bounded falloff's range (squared distances, before any sqrt) the light
-        // adds exactly zero.
-        float d2 = dot(toLight, toLight);
-        if (l.range > 1e-18 && lightIsBounded(l) && d2 * (st.distanceScale * st.distanceScale) >= l.range * l.range)
-            return vec3(0.0);
-#endif
-#ifdef LR_B4
-        // B4 L and d from one inversesqrt, without branches. Outside 1e-15 < |toLight| < 1e15 (a light
-        // within 1e-15 of the surface, or farther than rig files allow) L falls back to N and d to 0 or the
-        // largest float, where the exact tier rescales first.
-        float t2 = dot(toLight, toLight);
-        float inv = inversesqrt(t2);
-        bool inRange = t2 > 1e-30 && t2 < 1e30;
-        L = inRange ? toLight * inv : N;
-        float d = (inRange ? t2 * inv : (!(t2 <= 1.0) ? kFloatMax : 0.0)) * st.distanceScale;
-        if (!(abs(d) <= kFloatMax)) d = kFloatMax;
-#else
-        L = safeNormalize(toLight, N);  // a light on the surface shines along the normal
-        // |toLight| as dot(toLight, L): no squared intermediate to overflow or underflow, one sqrt fewer;
-        // an overflowing distance becomes the largest float (every falloff then gives its limit).
-        float d = dot(toLight, L) * st.distanceScale;
-        if (!(abs(d) <= kFloatMax)) d = kFloatMax;
-#endif
-#ifdef LR_HAS_LIGHT_SPOT
-        float cosTheta = dot(-L, l.direction);
-#ifdef LR_B3
-        // ... and outside the cone (cosine space, before the falloff and the cone are evaluated).
-        if (lightTypeOf(l) == LR_LIGHT_SPOT && cosTheta < l.cosOuter) return vec3(0.0);
-#endif
-#endif
-        attenuation = evalFalloff(l, d);
-#ifdef LR_HAS_LIGHT_SPOT
-        if (lightTypeOf(l) == LR_LIGHT_SPOT) attenuation *= evalCone(l, cosTheta);
-#endif
-        if (!(attenuation > 0.0)) return vec3(0.0);
-    }
-#endif
+    vec3 L;
+    float attenuation;
+    if (!lightArrival(l, s.position, N, st, L, attenuation)) return vec3(0.0);
     float nDotL = dot(N, L);
     float D = diffuseOf(l) == LR_DIFFUSE_LAMBERT ? diffuseLambert(nDotL) : diffuseHalfLambert(nDotL);
     float S = 0.0;
@@ -113,56 +129,6 @@ vec3 shadeLight(ShadeLight l, Surface s, ShadeSettings st, vec3 V) {
 }
 
 #ifdef LR_PBR
-// The direction to a light and its attenuation (falloff × cone; 1 for a directional light) at the surface;
-// false when the light adds nothing there (shade.h lightArrival). The classic shadeLight() above inlines
-// the same steps, except that its exact tier normalises with safeNormalize at any distance (classic keys
-// carry no LR_FAR_LIGHTS bit); folding it into this function is left for when the classic path gets the
-// bit too.
-bool lightArrival(ShadeLight l, Surface s, ShadeSettings st, out vec3 L, out float attenuation) {
-    vec3 N = s.normal;
-    L = -l.direction;
-    attenuation = 1.0;
-#ifdef LR_HAS_POSITIONAL
-    if (lightTypeOf(l) != LR_LIGHT_DIRECTIONAL) {
-        vec3 toLight = l.position - s.position;
-#ifdef LR_B3
-        float d2 = dot(toLight, toLight);
-        if (l.range > 1e-18 && lightIsBounded(l) && d2 * (st.distanceScale * st.distanceScale) >= l.range * l.range)
-            return false;
-#endif
-#ifndef LR_FAR_LIGHTS
-        // L and d from one inversesqrt (the classic B4, here in every tier). Exact where 1e-15 < |toLight|
-        // < 1e15: the renderer compiles this only when no positional light can be 1e15 from a visible
-        // surface (LightSet::update bounds it), and below 1e-15 the light is on the surface (float positions
-        // of a visible surface, beyond the near plane, cannot differ by less unless they are equal): L = N,
-        // d = 0, as safeNormalize.
-        float t2 = dot(toLight, toLight);
-        float inv = inversesqrt(t2);
-        bool inRange = t2 > 1e-30 && t2 < 1e30;
-        L = inRange ? toLight * inv : N;
-        float d = (inRange ? t2 * inv : (!(t2 <= 1.0) ? kFloatMax : 0.0)) * st.distanceScale;
-#else
-        // LR_FAR_LIGHTS: rescaled first, exact at any distance.
-        L = safeNormalize(toLight, N);  // a light on the surface shines along the normal
-        float d = dot(toLight, L) * st.distanceScale;
-#endif
-        d = abs(d) <= kFloatMax ? d : kFloatMax;
-#ifdef LR_HAS_LIGHT_SPOT
-        float cosTheta = dot(-L, l.direction);
-#ifdef LR_B3
-        if (lightTypeOf(l) == LR_LIGHT_SPOT && cosTheta < l.cosOuter) return false;
-#endif
-#endif
-        attenuation = evalFalloff(l, d);
-#ifdef LR_HAS_LIGHT_SPOT
-        if (lightTypeOf(l) == LR_LIGHT_SPOT) attenuation *= evalCone(l, cosTheta);
-#endif
-        return attenuation > 0.0;
-    }
-#endif
-    return true;
-}
-
 // What shadeSurface() computes once per surface under PBR, before the lights.
 struct PbrSurface {
     vec3 cDiff, f0;
@@ -221,7 +187,7 @@ vec3 shadeLightPbr(ShadeLight l, Surface s, ShadeSettings st, vec3 V, PbrSurface
 #ifdef LR_HAS_SURFACE_LIGHTS
     vec3 L;
     float attenuation;
-    bool arrives = lightArrival(l, s, st, L, attenuation);
+    bool arrives = lightArrival(l, s.position, s.normal, st, L, attenuation);
     float nDotL = dot(N, L);
     float cosTerm = diffuseOf(l) == LR_DIFFUSE_LAMBERT ? diffuseLambert(nDotL) : diffuseHalfLambert(nDotL);
     PbrLobes f = pbrLobes(N, L, V, cDiff, f0, alpha, cosTerm);

@@ -35,21 +35,9 @@ void shadeLightSplit(ShadeLight l, vec3 P, vec3 N, float shininess, ShadeSetting
     }
 #endif
 #ifdef LR_HAS_SURFACE_LIGHTS
-    vec3 L = -l.direction;
-    float attenuation = 1.0;
-#ifdef LR_HAS_POSITIONAL
-    if (lightTypeOf(l) != LR_LIGHT_DIRECTIONAL) {
-        vec3 toLight = l.position - P;
-        L = safeNormalize(toLight, N);
-        float d = dot(toLight, L) * st.distanceScale;
-        if (!(abs(d) <= kFloatMax)) d = kFloatMax;
-        attenuation = evalFalloff(l, d);
-#ifdef LR_HAS_LIGHT_SPOT
-        if (lightTypeOf(l) == LR_LIGHT_SPOT) attenuation *= evalCone(l, dot(-L, l.direction));
-#endif
-        if (!(attenuation > 0.0)) return;
-    }
-#endif
+    vec3 L;
+    float attenuation;
+    if (!lightArrival(l, P, N, st, L, attenuation)) return;
     float nDotL = dot(N, L);
     float D = diffuseOf(l) == LR_DIFFUSE_LAMBERT ? diffuseLambert(nDotL) : diffuseHalfLambert(nDotL);
     float S = 0.0;
@@ -129,7 +117,7 @@ void shadeLightSplitPbr(ShadeLight l, Surface s, ShadeSettings st, vec3 V, PbrSu
 #ifdef LR_HAS_SURFACE_LIGHTS
     vec3 L;
     float attenuation;
-    if (!lightArrival(l, s, st, L, attenuation)) return;
+    if (!lightArrival(l, s.position, s.normal, st, L, attenuation)) return;
     float nDotL = dot(N, L);
     float cosTerm = diffuseOf(l) == LR_DIFFUSE_LAMBERT ? diffuseLambert(nDotL) : diffuseHalfLambert(nDotL);
     vec3 H = safeNormalize(L + V, N);
