@@ -1,5 +1,5 @@
 // Clustered forward shading (src/render/cluster.h bins the lights on the CPU). Included after
-// lighting.glsl when the feature key asks for it (LR_CLUSTERED): the fragment finds its cluster from
+// shade.glsl when the feature key asks for it (LR_CLUSTERED): the fragment finds its cluster from
 // gl_FragCoord.xy (screen tile) and its view-space depth (exponential slice), then shades the lights
 // evaluated everywhere (directional, rim, unbounded falloffs) and those listed for its cluster, in the
 // buffer's order. Lights left out of a cluster contribute exactly zero there (their falloff is 0 beyond
@@ -37,7 +37,7 @@ vec3 shadeSurfaceClustered(Surface s, ShadeSettings st, vec2 fragCoord) {
 #define lrShadeClustered(l) shadeLight(l, s, st, V)
 #endif
 #if defined(LR_HAS_SURFACE_LIGHTS) || defined(LR_HAS_LIGHT_RIM)
-    if (uGlobalLightCount > 0) {  // do-while: see shadeSurface (lighting.glsl)
+    if (uGlobalLightCount > 0) {  // do-while: see shadeSurface (shade.glsl)
         int i = 0;
         do {
             sum += lrShadeClustered(loadLight(int(texelFetch(uClusterIndices, i).r)));

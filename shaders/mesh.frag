@@ -13,7 +13,7 @@ in vec3 vLitDiffuse;  // per-vertex lighting (mesh.vert), interpolated
 in vec3 vLitSpecular;
 in vec3 vLitAdded;
 #ifdef LR_PBR
-in vec3 vLitFresnel;  // B of the PBR split (lighting.glsl shadeVertexPbr); vLitSpecular is A,
+in vec3 vLitFresnel;  // B of the PBR split (shadevertex.glsl shadeVertexPbr); vLitSpecular is A,
 in vec3 vLitAmbient;  // vLitDiffuse E
 #endif
 #endif

@@ -1,6 +1,6 @@
 // Mesh vertex stage: positions relative to Model::origin, transformed to view space with a model-view
 // matrix built in double precision on the CPU (precision holds far from the world origin). In the fast
-// quality tier it also lights the vertex (lighting.glsl is then compiled into this stage too).
+// quality tier it also lights the vertex (the shading files and shadevertex.glsl are then compiled into this stage too).
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec2 aUv;
@@ -24,7 +24,7 @@ out vec4 vTangent;  // view space xyz, handedness w
 out vec4 vColor;
 #endif
 #ifdef LR_QUALITY_FAST
-// Fast tier (F1, Gouraud): the lighting at this vertex (lighting.glsl shadeVertex), interpolated.
+// Fast tier (F1, Gouraud): the lighting at this vertex (shadevertex.glsl shadeVertex), interpolated.
 uniform vec3 uAmbient;
 uniform float uDistanceScale;
 uniform float uShininess;
@@ -32,7 +32,7 @@ out vec3 vLitDiffuse;   // multiplies the albedo
 out vec3 vLitSpecular;  // multiplies ks
 out vec3 vLitAdded;     // rim lights
 #ifdef LR_PBR
-// PBR: vLitSpecular = A, vLitDiffuse = E of lighting.glsl's split (shadeVertexPbr), and these two.
+// PBR: vLitSpecular = A, vLitDiffuse = E of shadevertex.glsl's split (shadeVertexPbr), and these two.
 uniform float uRoughness;
 #ifdef LR_METAL_ROUGH_TEXTURE
 uniform sampler2D uMetalRoughTex;

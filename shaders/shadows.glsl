@@ -1,10 +1,10 @@
 // Shadows (docs/lighting-models.md "Shadows"; src/render/shadowmaps.h builds the maps and the records).
 // Compiled only into programs whose rig has a casting light (LR_SHADOWS); otherwise this file is empty and
-// a program's text is what it was before shadows. After lighting.glsl, which calls lrShadow() (declared
+// a program's text is what it was before shadows. After shade.glsl, which calls lrShadow() (declared
 // there) on the direct terms of every light that has a shadow slot.
 //
 // Each caster has LR_SHADOW_TEXELS vec4s in uShadowRecords (lightset.cpp; uniforms, as a texelFetch costs
-// a software rasteriser much more), and its light's type texel says its slot (lighting.glsl loadLight):
+// a software rasteriser much more), and its light's type texel says its slot (shadetypes.glsl loadLight):
 //   0-3: the view -> light matrix (columns): light clip space (perspective, orthographic), or the
 //        light-centred, world-aligned frame (cube: the face is chosen here)
 //   4: layer, kind (0 perspective, 1 orthographic, 2 cube), near, far
@@ -251,7 +251,7 @@ float lrShadow(ShadeLight l, Surface s, vec3 L, bool needed) {
 }
 
 #ifdef LR_QUALITY_FAST
-// The fast tier lights the vertices with the lights that cast no shadow (lighting.glsl shadeVertex skips
+// The fast tier lights the vertices with the lights that cast no shadow (shadevertex.glsl shadeVertex skips
 // the others) and the casting lights here, per pixel, so a shadow keeps its shape on large triangles.
 vec3 shadeCastingLights(Surface s, ShadeSettings st) {
     vec3 V = viewVector(st, s.position);
@@ -259,7 +259,7 @@ vec3 shadeCastingLights(Surface s, ShadeSettings st) {
 #ifdef LR_PBR
     PbrSurface p = pbrSurfaceLit(s, V);
 #endif
-    if (uShadowCount > 0) {  // do-while: see shadeSurface (lighting.glsl)
+    if (uShadowCount > 0) {  // do-while: see shadeSurface (shade.glsl)
         int k = 0;
         do {
             int index = int(uShadowRecords[k * LR_SHADOW_TEXELS + 6].x);

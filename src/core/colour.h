@@ -1,7 +1,7 @@
 // Colour, written once: the sRGB transfer functions, the tone-map operators, the exposure scale and the
 // display transform (linear radiance -> ×2^EV -> tone map -> sRGB), templated on the scalar like
 // lighting.h. The GLSL twins (same names, same guards) are toneMap, linearToSrgb and displayEncode in
-// shaders/lighting.glsl; the renderer's uniforms (uExposureScale, uBackground) come from here, and so do
+// shaders/colour.glsl; the renderer's uniforms (uExposureScale, uBackground) come from here, and so do
 // the CPU reference (render/reference.h), the mip chains' sRGB tables and the editor's colour swatches.
 // lighting.h re-exports toneMap, linearToSrgb and srgbToLinear as lighting::* for the formula tests.
 #pragma once

@@ -1,4 +1,4 @@
-// Polygon integrals of area lights (lighting_area.h), templated on the scalar; shaders/lighting.glsl has
+// Polygon integrals of area lights (lighting_area.h), templated on the scalar; shaders/area.glsl has
 // the twin (same names, guards and order). Vectors are relative to the surface point, in a local frame
 // whose z is the clipping hemisphere's pole.
 //

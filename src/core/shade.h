@@ -1,6 +1,6 @@
 // Whole-surface shading: one light's contribution and the sum over a rig, templated on the scalar.
 // This is the reference the GPU is tested and benchmarked against (evaluated in double), and the exact
-// twin of shaders/lighting.glsl's shadeLight()/shadeSurface().
+// twin of shaders/shade.glsl's shadeLight()/shadeSurface().
 #pragma once
 
 #include "lighting.h"

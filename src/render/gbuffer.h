@@ -30,7 +30,7 @@ enum class GBufferUse { Both, Classic, Pbr };
 
 struct GBufferSlot {
     GBufferUse use;
-    const char* member;                         // the GLSL Surface member (shaders/lighting.glsl)
+    const char* member;                         // the GLSL Surface member (shaders/shadetypes.glsl)
     int target;                                 // 0 .. kGBufferTargets - 1
     int channel;                                // first channel (0 = r/x)
     int width;                                  // channels
@@ -66,7 +66,7 @@ lighting::Surface<float> decodeGBuffer(const GBufferTexels& texels,
                                        ShadingModel model = ShadingModel::Classic);
 
 // GLSL: `void encodeGBuffer(Surface s, out vec4 g0, ..., out vec4 g3)` and
-// `Surface decodeGBuffer(vec4 g0, ..., vec4 g3)`, after lighting.glsl (which defines Surface).
+// `Surface decodeGBuffer(vec4 g0, ..., vec4 g3)`, after shadetypes.glsl (which defines Surface).
 QByteArray gbufferGlsl();
 
 // The read-back of the targets (image order) and the depth buffer (GL order: bottom row first; < 1 where

@@ -1,4 +1,4 @@
-// Packing prepared lights into the light buffer's RGBA32F texels (layout in shaders/lighting.glsl).
+// Packing prepared lights into the light buffer's RGBA32F texels (layout in shaders/shadetypes.glsl).
 // No GL here.
 #pragma once
 

@@ -20,7 +20,7 @@ namespace lr::render {
 struct MeshProgram;
 struct ShadowView;
 
-// Where lighting.glsl's single-inversesqrt light direction stops being exact is |toLight| = 1e15; a
+// Where shade.glsl's single-inversesqrt light direction stops being exact is |toLight| = 1e15; a
 // decade of margin covers the float rounding of the view-space positions.
 inline constexpr double kFarLightDistance = 1e14;
 
@@ -46,7 +46,7 @@ class LightSet {
     int count() const { return m_count; }
     // Whether an uploaded point or spot light may be kFarLightDistance or more from the model's bounding
     // sphere in view space (or its bound is not finite): physically based programs then rescale the
-    // direction to the light before normalising it (LR_FAR_LIGHTS, shaders/lighting.glsl lightArrival).
+    // direction to the light before normalising it (LR_FAR_LIGHTS, shaders/shade.glsl lightArrival).
     bool farLights() const { return m_farLights; }
 
     // Bins the uploaded lights for this projection and target; false when clustering is off for this

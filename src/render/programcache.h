@@ -18,29 +18,34 @@ namespace lr::render {
 // A named shader configuration (TrenchBroom's idea): which files make each stage.
 struct ShaderConfig {
     const char* name;
-    std::array<const char*, 7> vertex{}; // files under :/shaders/, in order; nullptr ends the list
-    std::array<const char*, 7> fragment{};
+    std::array<const char*, 13> vertex{}; // files under :/shaders/, in order; nullptr ends the list
+    std::array<const char*, 13> fragment{};
 };
 
-// shadows.glsl is empty unless the key casts shadows (LR_SHADOWS).
+// The shading files, each the twin of a core header (colour.h, lighting.h, shadetypes.h, lighting_area.h,
+// shade.h): a program lists only those it needs. shadows.glsl is empty unless the key casts shadows
+// (LR_SHADOWS), area.glsl unless the rig has an area light; shadevertex.glsl (the fast tier) is listed only
+// by the vertex-lit programs.
+#define LR_SHADING_FILES "colour.glsl", "lighting.glsl", "shadetypes.glsl", "area.glsl", "shade.glsl"
 inline constexpr ShaderConfig kMeshShader{
     "mesh",
     {"mesh.vert"},
-    {"lighting.glsl", "shadows.glsl", "cluster.glsl", "gbuffer.glsl", "surface.glsl", "mesh.frag"}};
+    {LR_SHADING_FILES, "shadows.glsl", "cluster.glsl", "gbuffer.glsl", "surface.glsl", "mesh.frag"}};
 // The fast tier lights the vertices.
 inline constexpr ShaderConfig kVertexLitMeshShader{
     "mesh, vertex-lit",
-    {"lighting.glsl", "shadows.glsl", "mesh.vert"},
-    {"lighting.glsl", "shadows.glsl", "cluster.glsl", "gbuffer.glsl", "surface.glsl", "mesh.frag"}};
+    {LR_SHADING_FILES, "shadevertex.glsl", "shadows.glsl", "mesh.vert"},
+    {LR_SHADING_FILES, "shadevertex.glsl", "shadows.glsl", "cluster.glsl", "gbuffer.glsl", "surface.glsl",
+     "mesh.frag"}};
 inline constexpr ShaderConfig kDeferredLightingShader{
     "deferred lighting",
     {"fullscreen.vert"},
-    {"lighting.glsl", "shadows.glsl", "cluster.glsl", "gbuffer.glsl", "surface.glsl", "deferred.frag"}};
+    {LR_SHADING_FILES, "shadows.glsl", "cluster.glsl", "gbuffer.glsl", "surface.glsl", "deferred.frag"}};
 // Depth only, into a shadow map (shadowmaps.h): uLightMatrix = the light's clip from model positions.
 inline constexpr ShaderConfig kShadowDepthShader{"shadow depth", {"shadow.vert"}, {"shadow.frag"}};
 inline constexpr ShaderConfig kToneMapShader{
-    "tone map", {"fullscreen.vert"}, {"lighting.glsl", "tonemap.frag"}};
-inline constexpr ShaderConfig kOverlayShader{"overlay", {"gizmo.vert"}, {"lighting.glsl", "gizmo.frag"}};
+    "tone map", {"fullscreen.vert"}, {"colour.glsl", "tonemap.frag"}};
+inline constexpr ShaderConfig kOverlayShader{"overlay", {"gizmo.vert"}, {"gizmo.frag"}};
 // MeshPass::primeSamplerSlots (pass_geometry.cpp): a draw that covers no pixel.
 inline constexpr ShaderConfig kSlotPrimerShader{
     "sampler-slot primer", {"slotprimer.vert"}, {"slotprimer.frag"}};
@@ -49,21 +54,24 @@ inline constexpr ShaderConfig kSlotPrimerShader{
 // exactly what it was. The background pass (pass_background.cpp) draws the environment behind the model.
 inline constexpr ShaderConfig kMeshEnvironmentShader{"mesh",
                                                      {"mesh.vert"},
-                                                     {"lighting.glsl", "shadows.glsl", "cluster.glsl",
+                                                     {LR_SHADING_FILES, "shadows.glsl", "cluster.glsl",
                                                       "gbuffer.glsl", "environment.glsl", "surface.glsl",
                                                       "mesh.frag"}};
 inline constexpr ShaderConfig kVertexLitMeshEnvironmentShader{
     "mesh, vertex-lit",
-    {"lighting.glsl", "shadows.glsl", "mesh.vert"},
-    {"lighting.glsl", "shadows.glsl", "cluster.glsl", "gbuffer.glsl", "environment.glsl", "surface.glsl",
-     "mesh.frag"}};
+    {LR_SHADING_FILES, "shadevertex.glsl", "shadows.glsl", "mesh.vert"},
+    {LR_SHADING_FILES, "shadevertex.glsl", "shadows.glsl", "cluster.glsl", "gbuffer.glsl", "environment.glsl",
+     "surface.glsl", "mesh.frag"}};
 inline constexpr ShaderConfig kDeferredLightingEnvironmentShader{
     "deferred lighting",
     {"fullscreen.vert"},
-    {"lighting.glsl", "shadows.glsl", "cluster.glsl", "gbuffer.glsl", "environment.glsl", "surface.glsl",
+    {LR_SHADING_FILES, "shadows.glsl", "cluster.glsl", "gbuffer.glsl", "environment.glsl", "surface.glsl",
      "deferred.frag"}};
+#undef LR_SHADING_FILES
 inline constexpr ShaderConfig kBackgroundShader{
-    "environment background", {"fullscreen.vert"}, {"lighting.glsl", "environment.glsl", "background.frag"}};
+    "environment background",
+    {"fullscreen.vert"},
+    {"colour.glsl", "lighting.glsl", "environment.glsl", "background.frag"}};
 // The background kept by BackgroundPass, copied where no surface is (the forward path; deferred blits it).
 inline constexpr ShaderConfig kBackgroundCopyShader{
     "background copy", {"fullscreen.vert"}, {"backgroundcopy.frag"}};

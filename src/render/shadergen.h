@@ -157,7 +157,7 @@ MaterialFeatures materialFeatures(const Model& model, const Mesh& mesh);
 // v' = −sin·u + cos·v, then offset), column-major for glUniformMatrix3fv.
 glm::mat3 textureTransformMatrix(const TextureTransform& t);
 
-// Texels (RGBA32F) per light in the light buffer; the layout is documented in shaders/lighting.glsl.
+// Texels (RGBA32F) per light in the light buffer; layout: shaders/shadetypes.glsl loadLight.
 constexpr int kLightTexels = 8;
 
 // "#version 330 core" plus the enum values and the key's feature defines (the same for both stages).

@@ -88,7 +88,7 @@ class TestQualityReference : public QObject {
     // Physically based shading (issue 13): every tier against the same double reference, on the spheres
     // of metallic 0/1 × roughness 0/0.4/1. Balanced with B5 (Schlick as a spherical Gaussian) and B6
     // (Filament's visibility) on as well as with the shipped set; fast is the per-vertex split of
-    // lighting.glsl (shadeVertexPbr), bounded as the classic fast tier is.
+    // shadevertex.glsl (shadeVertexPbr), bounded as the classic fast tier is.
     void pbrTiersAgainstReference_data() {
         QTest::addColumn<int>("rigIndex");
         const auto cases = pbrRigCases();
@@ -161,7 +161,7 @@ class TestQualityReference : public QObject {
                  qPrintable(fast.summary()));
     }
 
-    // F1-PBR's split (lighting.glsl shadeVertexPbr / shadePixelPbr) is exact algebra: where the lights'
+    // F1-PBR's split (shadevertex.glsl shadeVertexPbr / shadePixelPbr) is exact algebra: where the lights'
     // D·Vis and Schlick weight are the same at every vertex — directional lights on a plane seen from
     // far away through a narrow lens (V varies by < 0.002 rad) — fast must equal exact, with F0, c_diff,
     // occlusion, the light's and the scene's ambient, rim and emissive applied per pixel.

@@ -1,7 +1,7 @@
 // Area lights on the GPU (issue 16): a rect and a disk light on the test plane and the PBR spheres, under
 // classic and physically based shading, forward, deferred and clustered, each quality tier, against
 // lighting::shadeSurface<double> (core/lighting_area.h: the same LTC and form factors in double). This
-// checks shaders/lighting.glsl's area twin; the LTC's own error against the definition is tests/formulas'
+// checks shaders/area.glsl, the area twin; the LTC's own error against the definition is tests/formulas'
 // formulas_area (and the Monte Carlo reference's).
 //
 // Tolerance (per channel, linear radiance): exact |gpu − ref| <= 2e-4 · max(1, |ref|) (float polygon
