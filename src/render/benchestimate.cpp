@@ -5,6 +5,7 @@
 #include <QElapsedTimer>
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace lr {
 
@@ -54,36 +55,48 @@ bool benchIsHeavy(const std::vector<BenchScene>& scenes, const BenchOptions& opt
 
 std::optional<BenchEstimate> estimateBench(const std::vector<BenchScene>& scenes, const BenchOptions& options,
                                            QString* error) {
-    if (scenes.empty()) return BenchEstimate{};
-    const auto heaviest = std::max_element(scenes.begin(), scenes.end(), [&](const auto& a, const auto& b) {
-        return benchFrameWork(a, options.size) < benchFrameWork(b, options.size);
-    });
     BenchEstimate e;
-    e.scene = heaviest->name;
+    const int runs = int(options.tiers.size()) + (options.uberShader ? 1 : 0);
+    // Each run: the first frame, the warm-up and timed frames, and (with errors) the image and radiance.
+    const int perRun =
+        1 + std::max(0, options.warmupFrames) + std::max(1, options.frames) + (options.errors ? 2 : 0);
     e.probeSize = probeSize(options.size);
     // The exact tier, single sample, without the environment (which costs per pixel, not per light).
     RenderSettings settings;
     settings.quality = Quality::Exact;
     settings.msaaSamples = 0;
     settings.approximations = options.approximations;
-    OffscreenRenderer gl;
-    if (!gl.initialize(error) || !gl.setModel(heaviest->model, error)) return std::nullopt;
-    gl.setRig(heaviest->rig);
-    if (!gl.renderFrame(heaviest->camera, e.probeSize, settings, error)) return std::nullopt; // compiles
-    QElapsedTimer clock;
-    clock.start();
-    if (!gl.renderFrame(heaviest->camera, e.probeSize, settings, error)) return std::nullopt;
-    const double probeSeconds = clock.nsecsElapsed() * 1e-9;
-    const double probeWork = std::max(1.0, benchFrameWork(*heaviest, e.probeSize));
-    const double perWork = probeSeconds / probeWork;
-    e.frameSeconds = perWork * benchFrameWork(*heaviest, options.size);
-    const int runs = int(options.tiers.size()) + (options.uberShader ? 1 : 0);
-    // Each run: the first frame, the warm-up and timed frames, and (with errors) the image and radiance.
-    const int perRun =
-        1 + std::max(0, options.warmupFrames) + std::max(1, options.frames) + (options.errors ? 2 : 0);
+    // Seconds per light·pixel, probed on the heaviest scene of each set of light types (an area light
+    // shades at several times a point light's cost).
+    std::map<unsigned, double> perWork;
+    const auto typesOf = [](const BenchScene& s) {
+        unsigned mask = 0;
+        for (const Light& l : s.rig.lights)
+            if (l.enabled) mask |= 1u << unsigned(l.type);
+        return mask;
+    };
+    for (const BenchScene& s : scenes) {
+        const unsigned types = typesOf(s);
+        if (perWork.count(types)) continue;
+        const BenchScene* heaviest = &s;
+        for (const BenchScene& t : scenes)
+            if (typesOf(t) == types &&
+                benchFrameWork(t, options.size) > benchFrameWork(*heaviest, options.size))
+                heaviest = &t;
+        OffscreenRenderer gl;
+        if (!gl.initialize(error) || !gl.setModel(heaviest->model, error)) return std::nullopt;
+        gl.setRig(heaviest->rig);
+        if (!gl.renderFrame(heaviest->camera, e.probeSize, settings, error)) return std::nullopt; // compiles
+        QElapsedTimer clock;
+        clock.start();
+        if (!gl.renderFrame(heaviest->camera, e.probeSize, settings, error)) return std::nullopt;
+        perWork[types] = clock.nsecsElapsed() * 1e-9 / std::max(1.0, benchFrameWork(*heaviest, e.probeSize));
+        const double frame = perWork[types] * benchFrameWork(*heaviest, options.size);
+        if (frame > e.frameSeconds) e.frameSeconds = frame, e.scene = heaviest->name;
+    }
     for (const BenchScene& s : scenes) {
         e.frames += runs * perRun;
-        e.framesSeconds += runs * perRun * perWork * benchFrameWork(s, options.size);
+        e.framesSeconds += runs * perRun * perWork[typesOf(s)] * benchFrameWork(s, options.size);
         const double reference = benchReferenceWork(s, options.size);
         if (!options.errors) continue;
         if (reference > options.maxReferenceWork)

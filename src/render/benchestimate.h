@@ -8,8 +8,8 @@
 //
 // - benchReferenceWork: the reference's work in point-light·pixels (area lights weighted); a scene over
 //   BenchOptions::maxReferenceWork gets no reference and no error figures (qualitybench.h), with a note.
-// - estimateBench: one frame of the heaviest scene rendered at a small size of the same aspect, timed, and
-//   scaled to every frame of every run by pixels and lights.
+// - estimateBench: one frame of the heaviest scene of each set of light types rendered at a small size of
+//   the same aspect, timed, and scaled to every frame of every run by pixels and lights.
 #pragma once
 
 #include "qualitybench.h"
@@ -34,7 +34,7 @@ double benchReferenceWork(const BenchScene& scene, QSize size);
 bool benchIsHeavy(const std::vector<BenchScene>& scenes, const BenchOptions& options);
 
 struct BenchEstimate {
-    QString scene;            // the scene probed (the heaviest)
+    QString scene;            // the scene with the slowest frame
     QSize probeSize;          // its probe frame
     double frameSeconds = 0;  // one exact-tier frame of that scene at the bench's size
     double framesSeconds = 0; // every frame of every run of every scene
@@ -43,9 +43,9 @@ struct BenchEstimate {
     int referencesSkipped = 0;
 };
 
-// Renders 2 frames of the heaviest scene at a small size (at most 64×64 pixels, the bench's aspect) in a
-// fresh OffscreenRenderer and scales the second's time. Needs what runQualityBench needs (a GUI thread with
-// OpenGL); nullopt with *error when the probe cannot render.
+// Renders 2 frames of the heaviest scene of each set of light types at a small size (at most 64×64 pixels,
+// the bench's aspect) in a fresh OffscreenRenderer and scales the second's time. Needs what runQualityBench
+// needs (a GUI thread with OpenGL); nullopt with *error when the probe cannot render.
 std::optional<BenchEstimate> estimateBench(const std::vector<BenchScene>& scenes, const BenchOptions& options,
                                            QString* error);
 // One paragraph for stderr: the time, what it is made of, and the options that bound it.
