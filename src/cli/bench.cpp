@@ -10,6 +10,7 @@
 #include "sceneoptions.h"
 
 #include "core/proceduralrig.h"
+#include "render/benchestimate.h"
 #include "render/benchreport.h"
 #include "render/benchscaling.h"
 #include "render/qualitybench.h"
@@ -21,6 +22,7 @@
 #include <QJsonDocument>
 #include <QTextStream>
 #include <cmath>
+#include <limits>
 
 namespace lr::cli {
 
@@ -117,6 +119,10 @@ int runBench(const QStringList& args) {
     const QCommandLineOption noErrors(
         QStringLiteral("no-errors"),
         QStringLiteral("Skip the double-precision reference and the error figures."));
+    const QCommandLineOption fullReference(
+        QStringLiteral("full-reference"),
+        QStringLiteral("Compute the reference however long it takes (default: a scene over 1e10 "
+                       "light·pixels, area lights weighted, gets no reference and no error figures)."));
     const QCommandLineOption noUber(QStringLiteral("no-uber"),
                                     QStringLiteral("Skip the über-shader comparison."));
     const QCommandLineOption msaa(
@@ -148,7 +154,7 @@ int runBench(const QStringList& args) {
     parser.addOption(help);
     scene.addTo(parser);
     parser.addOptions({lights, lightType, lightRange, frames, warmup, msaa, interactive, orbit, drag, json,
-                       chart, scalingChart, noErrors, noUber, approximations});
+                       chart, scalingChart, noErrors, fullReference, noUber, approximations});
     parser.addPositionalArgument(QStringLiteral("MODEL"),
                                  QStringLiteral("Model files (default: the standard suite)."),
                                  QStringLiteral("[MODEL...]"));
@@ -164,6 +170,7 @@ int runBench(const QStringList& args) {
     options.exposureEV = sceneOptions->exposureEV;
     options.toneMap = sceneOptions->toneMap;
     options.errors = !parser.isSet(noErrors);
+    if (parser.isSet(fullReference)) options.maxReferenceWork = std::numeric_limits<double>::infinity();
     options.uberShader = !parser.isSet(noUber);
     options.interactive = parser.isSet(interactive);
     options.dragLight = parser.isSet(drag);
@@ -293,6 +300,14 @@ int runBench(const QStringList& args) {
         last = run;
         return true;
     };
+    // Issue 41: 65,535 lights ran for hours with no word of it; beyond the standard suite's scale a probe
+    // frame says how long before the first run starts.
+    if (benchIsHeavy(scenes, options)) {
+        const std::optional<BenchEstimate> estimate = estimateBench(scenes, options, &message);
+        if (!estimate) return failed(message);
+        err << name << ": " << describeBenchEstimate(*estimate, options) << '\n';
+        err.flush();
+    }
     const BenchStatus status = runQualityBench(scenes, options, &report, &message, progress);
     if (status != BenchStatus::Ok) return failed(message);
     // Issue 15: which environment each model's scenes used, and what loading it cost.
@@ -315,6 +330,8 @@ int runBench(const QStringList& args) {
                .arg(options.warmupFrames)
                .arg(report.loadAverage.isEmpty() ? QStringLiteral("unknown") : report.loadAverage);
     out << benchTable(report);
+    for (const QString& note : report.notes)
+        out << QStringLiteral("note: ") << note << '\n';
     if (parser.isSet(json) &&
         !writeOutputFile(parser.value(json), QJsonDocument(benchJson(report)).toJson(QJsonDocument::Indented),
                          &message))

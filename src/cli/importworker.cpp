@@ -8,6 +8,7 @@
 
 #include "model/environmentdecode.h"
 #include "model/gltfexport.h"
+#include "model/importbudget.h"
 #include "model/importprotocol.h"
 #include "model/modelcodec.h"
 #include "model/modelloader.h"
@@ -24,6 +25,7 @@
 #include <limits>
 #include <mutex>
 #include <new>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 #include <vector>
@@ -58,6 +60,28 @@ bool writeFrame(char type, const char* payload, std::size_t size) {
     const quint64 length = size;
     std::memcpy(header + 1, &length, sizeof length);
     return writeAll(header, sizeof header) && writeAll(payload, size);
+}
+
+// Every file the import reads raises this worker's address-space limit (soft, up to the hard limit its
+// parent set) to the budget for all of them, and tells the parent, which moves its deadline
+// (model/importbudget.h).
+void followInputBudget(BudgetKind kind, std::mutex& writing) {
+    setImportInputListener([kind, &writing](qint64 total) {
+        const std::lock_guard lock(writing);
+        static qint64 largest = 0;
+        if (total <= largest) return;
+        largest = total;
+        rlimit as{};
+        if (::getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_max != RLIM_INFINITY) {
+            const qint64 wanted = importBudget(kind, total, qint64(as.rlim_max), 0).memoryBytes;
+            if (wanted > 0 && rlim_t(wanted) > as.rlim_cur) {
+                as.rlim_cur = rlim_t(wanted);
+                ::setrlimit(RLIMIT_AS, &as);
+            }
+        }
+        const quint64 n = quint64(total);
+        writeFrame(ip::kInputBytes, reinterpret_cast<const char*>(&n), sizeof n);
+    });
 }
 
 // Async-signal-safe: only write(2) and re-raising with the default action (SA_RESETHAND).
@@ -137,13 +161,23 @@ bool sendShared(int fd, const Model& model) {
     return writeFrame(ip::kShared, reinterpret_cast<const char*>(&size), sizeof size);
 }
 
-// An environment image: the 'V' frame (importprotocol.h) or the decoder's error.
+// An environment image: the 'V' frame (importprotocol.h) or the decoder's error. The texels go out
+// from the image itself (encodeEnvironmentReply's layout without its copy: half the worker's memory).
 [[noreturn]] void sendEnvironment(const QString& path) {
     const EnvironmentDecodeResult result = decodeEnvironmentFile(path);
     bool sent;
     if (result.ok()) {
-        const QByteArray reply = encodeEnvironmentReply(result.image, result.warnings);
-        sent = writeFrame(ip::kEnvironment, reply.constData(), std::size_t(reply.size()));
+        EnvironmentImage empty;
+        empty.width = result.image.width;
+        empty.height = result.image.height;
+        const QByteArray head = encodeEnvironmentReply(empty, result.warnings);
+        const auto* texels = reinterpret_cast<const char*>(result.image.texels.data());
+        const std::size_t texelBytes = result.image.texels.size() * sizeof(glm::vec3);
+        char header[ip::kFrameHeaderSize] = {ip::kEnvironment};
+        const quint64 length = quint64(head.size()) + texelBytes;
+        std::memcpy(header + 1, &length, sizeof length);
+        sent = writeAll(header, sizeof header) && writeAll(head.constData(), std::size_t(head.size())) &&
+               writeAll(texels, texelBytes);
     } else {
         QByteArray payload(1, char(g_allocationFailed ? ip::kErrorOutOfMemory : 0));
         payload += result.error.toUtf8().left(ip::kMaxErrorBytes);
@@ -228,9 +262,11 @@ int runImportWorker(const QStringList&) {
         return Usage;
     }
     const int sharedFd = request.value(QStringLiteral("sharedFd")).toInt(-1);
+    std::mutex writing;
+    const bool environment = request.value(QStringLiteral("kind")).toString() == QLatin1String("environment");
+    followInputBudget(environment ? BudgetKind::Environment : BudgetKind::Model, writing);
     if (const QByteArray mode = qgetenv(ip::kTestCrashVariable); !mode.isEmpty()) testCrash(mode, sharedFd);
-    if (request.value(QStringLiteral("kind")).toString() == QLatin1String("environment"))
-        sendEnvironment(path);
+    if (environment) sendEnvironment(path);
     if (request.value(QStringLiteral("kind")).toString() == QLatin1String("gltf-export")) sendGltf(path);
 
     ModelLoadOptions options;
@@ -238,7 +274,6 @@ int runImportWorker(const QStringList&) {
         request.value(QStringLiteral("allowTexturesOutsideFolder")).toBool(false);
     options.maxDataUriBytes =
         qint64(request.value(QStringLiteral("maxDataUriBytes")).toDouble(double(options.maxDataUriBytes)));
-    std::mutex writing;
     double lastSent = -1.0;
     options.progress = [&](double fraction) {
         const std::lock_guard lock(writing);

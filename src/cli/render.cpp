@@ -12,6 +12,7 @@
 #include "catalog.h"
 #include "cli.h"
 #include "outputfiles.h"
+#include "renderestimate.h"
 #include "renderrun.h"
 #include "sceneoptions.h"
 
@@ -64,6 +65,9 @@ int runRender(const QStringList& args) {
     frames.setFlags(QCommandLineOption::HiddenFromHelp);
     QCommandLineOption msaa(QStringLiteral("msaa"), QStringLiteral("MSAA samples."), QStringLiteral("N"));
     msaa.setFlags(QCommandLineOption::HiddenFromHelp);
+    const QCommandLineOption noMemoryCheck(
+        QStringLiteral("no-memory-check"),
+        QStringLiteral("Render even when --size and --supersample need more memory than the machine has."));
     const QCommandLineOption turntable(
         QStringLiteral("turntable"),
         QStringLiteral("Render N frames around the model, frame k at k·360/N degrees about the up axis."),
@@ -86,7 +90,7 @@ int runRender(const QStringList& args) {
     parser.addOption(help);
     parser.addOption(output);
     scene.addTo(parser);
-    parser.addOptions({supersample, transparent, frames, msaa, turntable, rotate, summary});
+    parser.addOptions({supersample, transparent, frames, msaa, turntable, rotate, summary, noMemoryCheck});
     parser.addPositionalArgument(QStringLiteral("MODEL"),
                                  QStringLiteral("Model files Assimp reads (glTF, OBJ, FBX, ...)."),
                                  QStringLiteral("MODEL..."));
@@ -152,6 +156,10 @@ int runRender(const QStringList& args) {
     }
     const std::optional<std::vector<RenderItem>> items = planRender(request, &message);
     if (!items) return usage(message);
+    // Issue 41: said, and refused beyond the machine's memory, before a byte of the image is allocated.
+    if (!checkRenderMemory(estimateRender(request.options.size, ss, samples), parser.isSet(noMemoryCheck),
+                           err))
+        return Usage;
 
     if (!displayAvailable()) {
         err << name << ": lightrig render needs an X display; run it under xvfb-run -a\n";

@@ -109,19 +109,69 @@ EnvironmentImage renderStudio(const Studio& studio, int width) {
     return img;
 }
 
-void applySpots(EnvironmentImage* image, const std::vector<EnvironmentSpot>& spots) {
-    if (!image || image->isNull() || spots.empty()) return;
+// Each spot visits only the texels it may cover: the rows within its angle of its centre's latitude and,
+// in each, the columns within the azimuth where the cap meets that row (solved from
+// cos(lat)·r·cos(Δφ) + sin(lat)·a.y >= cos(angle), widened by a texel either side). Each of them gets the
+// exact test of texelDirection(x, y) · axis >= cos(angle), with the same factors in the same order: the
+// result is bit for bit the same as testing every texel, in O(texels + spots × covered texels)
+// instead of O(spots × texels) (64 spots on a 1024×512 image took 23 s to validate).
+std::size_t applySpots(EnvironmentImage* image, const std::vector<EnvironmentSpot>& spots) {
+    if (!image || image->isNull() || spots.empty()) return 0;
+    const int w = image->width, h = image->height;
+    const auto columns = static_cast<size_t>(w), rows = static_cast<size_t>(h);
+    std::vector<double> cosPhi(columns), sinPhi(columns), cosLat(rows), sinLat(rows);
+    for (int x = 0; x < w; ++x) { // as equirectDirection((x + 0.5) / w, ...)
+        const double phi = ((x + 0.5) / w - 0.5) * 2.0 * kPi;
+        cosPhi[size_t(x)] = std::cos(phi);
+        sinPhi[size_t(x)] = std::sin(phi);
+    }
+    for (int y = 0; y < h; ++y) {
+        const double lat = (0.5 - (y + 0.5) / h) * kPi;
+        cosLat[size_t(y)] = std::cos(lat);
+        sinLat[size_t(y)] = std::sin(lat);
+    }
+    std::size_t visited = 0;
     for (const EnvironmentSpot& spot : spots) {
         const double len = glm::length(spot.direction);
         if (!(len > 0.0) || !std::isfinite(len)) continue;
         const glm::dvec3 axis = spot.direction / len;
-        const double cosAngle = std::cos(std::clamp(spot.angle, 0.0, 180.0) * (kPi / 180.0));
+        const double angle = std::clamp(spot.angle, 0.0, 180.0) * (kPi / 180.0);
+        const double cosAngle = std::cos(angle);
         const float factor = float(std::clamp(spot.factor, 0.0, 1.0));
-        for (int y = 0; y < image->height; ++y)
-            for (int x = 0; x < image->width; ++x)
-                if (glm::dot(texelDirection(x, y, image->width, image->height), axis) >= cosAngle)
-                    image->at(x, y) *= factor;
+        const double axisLat = std::asin(std::clamp(axis.y, -1.0, 1.0));
+        const double axisPhi = std::atan2(axis.z, axis.x), r = std::hypot(axis.x, axis.z);
+        const double top = axisLat + angle, bottom = axisLat - angle; // latitudes, radians
+        const int y0 = std::clamp(int(std::floor((0.5 - top / kPi) * h)) - 1, 0, h - 1);
+        const int y1 = std::clamp(int(std::ceil((0.5 - bottom / kPi) * h)) + 1, 0, h - 1);
+        const auto test = [&](int x, int y) {
+            ++visited;
+            const glm::dvec3 d{cosLat[size_t(y)] * cosPhi[size_t(x)], sinLat[size_t(y)],
+                               cosLat[size_t(y)] * sinPhi[size_t(x)]};
+            if (glm::dot(d, axis) >= cosAngle) image->at(x, y) *= factor;
+        };
+        for (int y = y0; y <= y1; ++y) {
+            const double across = cosLat[size_t(y)] * r;
+            const double c = across > 1e-12 ? (cosAngle - sinLat[size_t(y)] * axis.y) / across : -2.0;
+            if (c > 1.0 + 1e-9) continue; // the cap misses this row
+            if (c <= -1.0) {              // the whole row (or a row the azimuth does not decide)
+                for (int x = 0; x < w; ++x)
+                    test(x, y);
+                continue;
+            }
+            const double half = std::acos(std::min(c, 1.0));               // radians of azimuth either side
+            const double centre = (axisPhi / (2.0 * kPi) + 0.5) * w - 0.5; // the column of axisPhi
+            const int reach = int(std::ceil(half / (2.0 * kPi) * w)) + 1;
+            if (2 * reach + 1 >= w) {
+                for (int x = 0; x < w; ++x)
+                    test(x, y);
+                continue;
+            }
+            const int first = int(std::floor(centre)) - reach;
+            for (int i = 0; i <= 2 * reach + 1; ++i)
+                test(((first + i) % w + w) % w, y);
+        }
     }
+    return visited;
 }
 
 } // namespace lr::environment

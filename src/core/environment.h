@@ -146,8 +146,9 @@ glm::dvec3 softboxDirection(double azimuthDegrees, double elevationDegrees);
 // The procedural studio as an equirectangular image `width` × width/2 (rotation 0, 0 EV).
 EnvironmentImage renderStudio(const Studio& studio, int width = 1024);
 // Multiplies the radiance of every texel whose centre is within spot.angle of spot.direction by
-// spot.factor, for each spot.
-void applySpots(EnvironmentImage* image, const std::vector<EnvironmentSpot>& spots);
+// spot.factor, for each spot. Returns how many texels it tested: a few more than the spots cover, in
+// O(texels + spots × covered texels) time.
+std::size_t applySpots(EnvironmentImage* image, const std::vector<EnvironmentSpot>& spots);
 
 } // namespace environment
 } // namespace lr

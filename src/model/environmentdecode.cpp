@@ -13,9 +13,13 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QRegularExpression>
+#include <cerrno>
 #include <cmath>
 #include <cstring>
 #include <exception>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace lr {
 
@@ -70,6 +74,20 @@ QString sizeProblem(qint64 w, qint64 h) {
     return {};
 }
 
+// A header's size against the file's: more texels than such a file could hold is refused before any
+// pixel memory is allocated (maxEnvironmentDecodedBytes).
+QString expansionProblem(qint64 w, qint64 h, qint64 fileBytes) {
+    const qint64 decoded = w * h * qint64(sizeof(glm::vec3));
+    if (decoded <= maxEnvironmentDecodedBytes(fileBytes)) return {};
+    return QStringLiteral("the header claims %1×%2 texels (%3 MiB decoded) but the file holds only %4 bytes "
+                          "(at most %5 bytes decoded per byte of file are accepted)")
+        .arg(w)
+        .arg(h)
+        .arg(decoded >> 20)
+        .arg(fileBytes)
+        .arg(kMaxEnvironmentExpansion);
+}
+
 int linesPerChunk(Imf::Compression c) {
     switch (c) {
     case Imf::NO_COMPRESSION:
@@ -113,6 +131,7 @@ QString decodeExr(QByteArrayView bytes, EnvironmentImage* image) {
                 .arg(w)
                 .arg(h)
                 .arg(bytes.size());
+        if (QString why = expansionProblem(w, h, bytes.size()); !why.isEmpty()) return why;
         stream.seekg(0);
     }
     Imf::InputFile file(stream, 1);
@@ -198,6 +217,7 @@ QString decodeHdr(QByteArrayView bytes, EnvironmentImage* image) {
             .arg(w)
             .arg(h)
             .arg(bytes.size());
+    if (QString why = expansionProblem(w, h, bytes.size()); !why.isEmpty()) return why;
     if (QString why = checkRgbeData(bytes.sliced(lineEnd + 1), w, h); !why.isEmpty()) return why;
     stb::HdrResult r = stb::decodeHdr(bytes.data(), size_t(bytes.size()));
     if (!r.error.empty())
@@ -210,19 +230,41 @@ QString decodeHdr(QByteArrayView bytes, EnvironmentImage* image) {
     return {};
 }
 
-// Values that are NaN, infinite or negative become 0; returns how many texels had one.
-qint64 sanitise(EnvironmentImage* image) {
-    qint64 bad = 0;
+// Values that are NaN or infinite become 0, negative ones 0, those above kMaxEnvironmentRadiance that
+// limit; counted by texel.
+struct Sanitised {
+    qint64 nonFinite = 0, negative = 0, bright = 0;
+    double mostNegative = 0.0, mean = 0.0; // the mean of every finite value in [0, limit]
+};
+Sanitised sanitise(EnvironmentImage* image) {
+    Sanitised s;
+    double sum = 0.0;
+    qint64 counted = 0;
     for (glm::vec3& t : image->texels) {
-        bool any = false;
-        for (int c = 0; c < 3; ++c)
-            if (!(std::isfinite(t[c]) && t[c] >= 0.0f)) {
-                t[c] = 0.0f;
-                any = true;
+        bool nonFinite = false, negative = false, bright = false;
+        for (int c = 0; c < 3; ++c) {
+            float& v = t[c];
+            if (!std::isfinite(v)) {
+                v = 0.0f;
+                nonFinite = true;
+            } else if (v < 0.0f) {
+                s.mostNegative = std::min(s.mostNegative, double(v));
+                v = 0.0f;
+                negative = true;
+            } else if (v > kMaxEnvironmentRadiance) {
+                v = kMaxEnvironmentRadiance;
+                bright = true;
+            } else {
+                sum += v;
+                ++counted;
             }
-        bad += any;
+        }
+        s.nonFinite += nonFinite;
+        s.negative += negative;
+        s.bright += bright;
     }
-    return bad;
+    s.mean = counted > 0 ? sum / double(counted) : 0.0;
+    return s;
 }
 
 } // namespace
@@ -249,10 +291,25 @@ EnvironmentDecodeResult decodeEnvironment(QByteArrayView bytes, const QString& p
         r.error = QStringLiteral("could not read %1: %2").arg(path, r.reason);
         return r;
     }
-    if (const qint64 bad = sanitise(&r.image); bad > 0)
-        r.warnings << QStringLiteral("%1: %2 texels were NaN, infinite or negative and were set to 0")
+    const Sanitised s = sanitise(&r.image);
+    if (s.nonFinite > 0)
+        r.warnings << QStringLiteral("%1: %2 texels were NaN or infinite and were set to 0")
                           .arg(name)
-                          .arg(bad);
+                          .arg(s.nonFinite);
+    // Lossy compression rings slightly below 0 around bright edges (studio.exr: 3 texels, the lowest
+    // -3e-6 in an image of mean 0.26; each of the eight shared DWAB HDRIs has a few, down to -3e-4): set
+    // to 0 without a word. A negative that matters is a broken file.
+    if (s.negative > 0 && -s.mostNegative > kNegativeTolerance * s.mean)
+        r.warnings << QStringLiteral("%1: %2 texels were negative (down to %3) and were set to 0")
+                          .arg(name)
+                          .arg(s.negative)
+                          .arg(s.mostNegative, 0, 'g', 3);
+    if (s.bright > 0)
+        r.warnings << QStringLiteral("%1: %2 texels were brighter than %3 and were clamped to it (brighter "
+                                     "values overflow when the environment is filtered)")
+                          .arg(name)
+                          .arg(s.bright)
+                          .arg(double(kMaxEnvironmentRadiance), 0, 'g', 3);
     if (r.image.width != 2 * r.image.height)
         r.warnings << QStringLiteral("%1: %2×%3 is not 2:1; it is stretched over the sphere as an "
                                      "equirectangular image")
@@ -260,6 +317,15 @@ EnvironmentDecodeResult decodeEnvironment(QByteArrayView bytes, const QString& p
                           .arg(r.image.width)
                           .arg(r.image.height);
     return r;
+}
+
+QString environmentFileProblem(const QString& path) {
+    struct stat st {};
+    if (::stat(QFile::encodeName(path).constData(), &st) != 0)
+        return errno == ENOENT ? QStringLiteral("no such file")
+                               : QString::fromLocal8Bit(std::strerror(errno));
+    if (!S_ISREG(st.st_mode)) return QStringLiteral("not a regular file (a folder, FIFO, socket or device)");
+    return {};
 }
 
 EnvironmentDecodeResult decodeEnvironmentFile(const QString& path) {
@@ -270,7 +336,21 @@ EnvironmentDecodeResult decodeEnvironmentFile(const QString& path) {
         r.error = QStringLiteral("could not read %1: %2").arg(path, reason);
         return r;
     };
-    if (!file.open(QIODevice::ReadOnly)) return fail(file.errorString());
+    // Opened without blocking (a FIFO with no writer would wait) and checked to be a regular file before
+    // a byte is read: /dev/zero was read until the worker's memory ran out.
+    const int fd = ::open(QFile::encodeName(path).constData(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0)
+        return fail(errno == ENOENT ? QStringLiteral("no such file")
+                                    : QString::fromLocal8Bit(std::strerror(errno)));
+    struct stat st {};
+    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        ::close(fd);
+        return fail(QStringLiteral("not a regular file (a folder, FIFO, socket or device)"));
+    }
+    if (!file.open(fd, QIODevice::ReadOnly, QFileDevice::AutoCloseHandle)) {
+        ::close(fd);
+        return fail(file.errorString());
+    }
     if (file.size() > kMaxEnvironmentFileBytes)
         return fail(QStringLiteral("%1 bytes is larger than the limit of %2 GiB")
                         .arg(file.size())
@@ -289,9 +369,14 @@ QString checkEnvironmentImage(const EnvironmentImage& image) {
             .arg(image.width)
             .arg(image.height);
     for (const glm::vec3& t : image.texels)
-        for (int c = 0; c < 3; ++c)
+        for (int c = 0; c < 3; ++c) {
             if (!(std::isfinite(t[c]) && t[c] >= 0.0f))
                 return QStringLiteral("a texel value %1 (not finite and >= 0)").arg(double(t[c]));
+            if (t[c] > kMaxEnvironmentRadiance)
+                return QStringLiteral("a texel value %1 (above the limit of %2)")
+                    .arg(double(t[c]))
+                    .arg(double(kMaxEnvironmentRadiance));
+        }
     return {};
 }
 

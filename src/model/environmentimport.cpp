@@ -78,12 +78,18 @@ bool decodeEnvironmentReply(QByteArrayView payload, EnvironmentImage* image, QSt
 
 EnvironmentDecodeResult importEnvironmentIsolated(const QString& path, const ImportLimits& limits) {
     EnvironmentDecodeResult r;
+    if (QString problem = environmentFileProblem(path); !problem.isEmpty()) { // a FIFO: no worker waits on it
+        r.reason = problem;
+        r.error = QStringLiteral("could not read %1: %2").arg(path, problem);
+        return r;
+    }
     const auto keepGoing = [&limits](double) { return !(limits.cancel && limits.cancel->load()); };
     QJsonObject request;
     request.insert(QStringLiteral("kind"), QStringLiteral("environment"));
     request.insert(QStringLiteral("path"), path);
     const qint64 maxBytes = ip::kEnvironmentHeaderSize + ip::kMaxErrorBytes + kMaxEnvironmentTexels * 12;
-    isolated::WorkerOutcome run = isolated::runWorker(request, limits, -1, keepGoing, maxBytes);
+    isolated::WorkerOutcome run =
+        isolated::runWorker(request, limits, -1, keepGoing, maxBytes, BudgetKind::Environment);
     if (!run.ok() && run.fromWorker) {
         // The worker's own message, "could not read PATH: REASON"; keep the reason alone too.
         r.error = run.failure;

@@ -16,6 +16,7 @@
 //   'G'  the GLB Assimp's exporter made of the model (last frame); the parent parses it as untrusted
 //   'E'  failure: u8 flags (kErrorCancelled | kErrorOutOfMemory) + UTF-8 message (last frame)
 //   'O'  (empty) written by the worker's crash handler when an allocation had failed before the crash
+//   'B'  the bytes of input read so far (u64; importbudget.h): the parent scales the deadline to it
 // The worker points its own fd 1 at stderr before importing, so stray library output cannot corrupt
 // the frames; the parent keeps only the tail of stderr for its messages.
 #pragma once
@@ -31,6 +32,7 @@ inline constexpr char kOutOfMemory = 'O';
 inline constexpr char kShared = 'S';
 inline constexpr char kEnvironment = 'V';
 inline constexpr char kGltf = 'G';
+inline constexpr char kInputBytes = 'B';
 inline constexpr int kEnvironmentHeaderSize = 12;
 inline constexpr int kFrameHeaderSize = 9;
 

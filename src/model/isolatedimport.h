@@ -4,8 +4,10 @@
 // before anything uses it. Whatever goes wrong becomes ModelLoadResult::error:
 //   "could not import models/spider.fbx: the importer crashed (signal 11)" (the path as given)
 //   "could not import models/spider.fbx: the importer aborted (signal 6)"
-//   "could not import models/spider.fbx: the importer ran out of its 8 GiB memory limit"
-//   "could not import models/spider.fbx: the importer did not finish within 120 s"
+//   "could not import models/spider.fbx: the importer ran out of its 1.0 GiB memory limit (for 36.7 KB
+//    of input)"
+//   "could not import models/spider.fbx: the importer did not finish within 10 s (its limit for 221
+//    bytes of input)"
 //   "could not import models/spider.fbx: the importer sent a malformed reply (<reason>)"
 // and the caller keeps whatever it had.
 #pragma once
@@ -20,6 +22,10 @@ namespace lr {
 struct ImportLimits {
     int timeoutMs = 120'000;        // wall-clock limit for the whole import; <= 0: none
     qint64 memoryBytes = 8ll << 30; // the worker's address-space limit (RLIMIT_AS); <= 0: none
+    // Both limits above are the most any import gets; with this set (the default) the worker gets less,
+    // in proportion to the bytes it reads (importbudget.h: 10 s and 1 GiB for a small model), so that a
+    // small hostile file is refused in seconds, not minutes.
+    bool scaleWithInput = true;
     // Set to true (from any thread) to stop the import; the worker is killed within ~50 ms.
     const std::atomic<bool>* cancel = nullptr;
     // The model comes back through a memfd (Linux) rather than the worker's stdout: fewer copies.

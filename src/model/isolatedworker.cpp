@@ -7,6 +7,7 @@
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
+#include <QFileInfo>
 #include <QJsonDocument>
 #include <QMutex>
 #include <QProcess>
@@ -57,6 +58,7 @@ class FrameReader {
         return f;
     }
     bool sawOutOfMemory() const { return m_outOfMemory; }
+    qint64 inputBytes() const { return m_inputBytes; }
     bool midFrame() const { return m_inPayload || !m_header.isEmpty(); }
     QByteArray& payload() { return m_payload; }
     char type() const { return m_type; }
@@ -110,6 +112,7 @@ class FrameReader {
             ok = m_length >= 12 && m_length <= quint64(m_maxReplyBytes);
             break;
         case ip::kShared:
+        case ip::kInputBytes:
             ok = m_length == sizeof(quint64);
             break;
         default:
@@ -138,6 +141,12 @@ class FrameReader {
         case ip::kOutOfMemory:
             m_outOfMemory = true;
             break;
+        case ip::kInputBytes: {
+            quint64 n;
+            std::memcpy(&n, m_payload.constData(), sizeof n);
+            m_inputBytes = std::max(m_inputBytes, qint64(std::min<quint64>(n, 1ull << 40)));
+            break;
+        }
         case ip::kError:
             m_state = State::Error;
             break;
@@ -158,11 +167,19 @@ class FrameReader {
     bool m_inPayload = false;
     double m_childFraction = 0.0;
     bool m_outOfMemory = false;
+    qint64 m_inputBytes = 0;
     QString m_problem;
 };
 
 QString seconds(int ms) {
     return QString::number(ms / 1000.0, 'g', 4);
+}
+
+// " (its limit for 221 bytes of input)" when the limit was scaled down to the input, else nothing.
+QString ofInput(const ImportLimits& limits, bool scaled, const QString& what, qint64 input) {
+    if (!limits.scaleWithInput || !scaled) return {};
+    return QStringLiteral(" (%1for %2 of input)")
+        .arg(what.isEmpty() ? QString() : what + QLatin1Char(' '), formatInputBytes(input));
 }
 
 QString lastLine(const QByteArray& text) {
@@ -235,7 +252,7 @@ ExitingWorker::~ExitingWorker() {
 }
 
 WorkerOutcome runWorker(const QJsonObject& request, const ImportLimits& limits, int sharedFd,
-                        const std::function<bool(double)>& keepGoing, qint64 maxReplyBytes) {
+                        const std::function<bool(double)>& keepGoing, qint64 maxReplyBytes, BudgetKind kind) {
     QElapsedTimer timer;
     timer.start();
     WorkerOutcome out;
@@ -255,15 +272,23 @@ WorkerOutcome runWorker(const QJsonObject& request, const ImportLimits& limits, 
     worker.setProgram(executable);
     worker.setArguments({QString::fromLatin1(ip::kSubcommand)});
     worker.setProcessEnvironment(workerEnvironment());
-    const qint64 memory = limits.memoryBytes;
-    worker.setChildProcessModifier([memory, sharedFd] {
+    // The budget for the request's file alone; the worker raises its own (soft) memory limit, and says
+    // so, as it reads more files, up to limits.memoryBytes (the hard limit).
+    const qint64 fileBytes = QFileInfo(request.value(QStringLiteral("path")).toString()).size();
+    const auto budgetFor = [&](qint64 input) {
+        return limits.scaleWithInput ? importBudget(kind, input, limits.memoryBytes, limits.timeoutMs)
+                                     : ImportBudget{limits.memoryBytes, limits.timeoutMs};
+    };
+    ImportBudget budget = budgetFor(fileBytes);
+    const qint64 memory = limits.memoryBytes, softMemory = budget.memoryBytes;
+    worker.setChildProcessModifier([memory, softMemory, sharedFd] {
         // Runs in the child between fork and exec: async-signal-safe calls only.
         if (sharedFd >= 0) ::fcntl(sharedFd, F_SETFD, 0); // this child alone inherits the memfd
         const rlimit noCore{0, 0};
         ::setrlimit(RLIMIT_CORE, &noCore);
 #ifndef LIGHTRIG_ISOLATED_ASAN // AddressSanitizer reserves terabytes of address space
         if (memory > 0) {
-            const rlimit as{rlim_t(memory), rlim_t(memory)};
+            const rlimit as{rlim_t(softMemory), rlim_t(memory)};
             ::setrlimit(RLIMIT_AS, &as);
         }
 #endif
@@ -281,6 +306,7 @@ WorkerOutcome runWorker(const QJsonObject& request, const ImportLimits& limits, 
     worker.closeWriteChannel();
 
     FrameReader reader(memory > 0 ? std::min(memory, maxReplyBytes) : maxReplyBytes);
+    qint64 input = fileBytes;
     QByteArray stderrTail;
     enum class Stop { None, TimedOut, Cancelled } stop = Stop::None;
     for (;;) {
@@ -293,7 +319,8 @@ WorkerOutcome runWorker(const QJsonObject& request, const ImportLimits& limits, 
             reader.consume(worker); // whatever arrived with the exit
             break;
         }
-        if (limits.timeoutMs > 0 && timer.elapsed() > limits.timeoutMs) {
+        if (reader.inputBytes() > input) budget = budgetFor(input = reader.inputBytes());
+        if (budget.timeoutMs > 0 && timer.elapsed() > budget.timeoutMs) {
             stop = Stop::TimedOut;
             break;
         }
@@ -308,11 +335,15 @@ WorkerOutcome runWorker(const QJsonObject& request, const ImportLimits& limits, 
         if (stop == Stop::Cancelled) return fail(QStringLiteral("cancelled"), true);
         if (stop == Stop::TimedOut)
             return fail(
-                QStringLiteral("the importer did not finish within %1 s").arg(seconds(limits.timeoutMs)));
+                QStringLiteral("the importer did not finish within %1 s%2")
+                    .arg(seconds(budget.timeoutMs), ofInput(limits, budget.timeoutMs != limits.timeoutMs,
+                                                            QStringLiteral("its limit"), input)));
         return fail(QStringLiteral("the importer sent a malformed reply (%1)").arg(reader.problem()));
     }
+    const qint64 softNow = budgetFor(std::max(input, reader.inputBytes())).memoryBytes;
     const QString outOfMemory =
-        QStringLiteral("the importer ran out of its %1 memory limit").arg(formatMemoryLimit(memory));
+        QStringLiteral("the importer ran out of its %1 memory limit%2")
+            .arg(formatMemoryLimit(softNow), ofInput(limits, softNow != memory, QString(), input));
     if (reader.state() == FrameReader::State::Error) {
         const QByteArray& p = reader.payload();
         const auto flags = quint8(p.at(0));

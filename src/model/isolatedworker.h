@@ -5,6 +5,7 @@
 // and validate.
 #pragma once
 
+#include "importbudget.h"
 #include "isolatedimport.h"
 
 #include <QByteArray>
@@ -40,8 +41,11 @@ struct WorkerOutcome {
 
 // Runs the worker with `request` (the sharedFd, when >= 0, is inherited by the worker alone).
 // keepGoing(fraction) is called every 50 ms at most; returning false cancels. `maxReplyBytes` bounds a
-// reply frame (and the memory limit, when set, bounds it too).
+// reply frame (and the memory limit, when set, bounds it too). With limits.scaleWithInput, the worker's
+// time and memory are importBudget(kind, input) for the request's file and whatever else it reports
+// reading ('B' frames), within the limits' values.
 WorkerOutcome runWorker(const QJsonObject& request, const ImportLimits& limits, int sharedFd,
-                        const std::function<bool(double)>& keepGoing, qint64 maxReplyBytes);
+                        const std::function<bool(double)>& keepGoing, qint64 maxReplyBytes,
+                        BudgetKind kind = BudgetKind::Model);
 
 } // namespace lr::isolated

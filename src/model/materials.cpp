@@ -2,6 +2,7 @@
 // ("*N" or by file name, compressed or raw aiTexel), data URIs, and files beside the model. The
 // physically based values (metal-rough factors, occlusion, alpha mode, texture transforms, or their
 // conversion from specular/shininess) are read in materials_pbr.cpp.
+#include "importbudget.h"
 #include "importdetail.h"
 
 #include <QByteArray>
@@ -229,6 +230,7 @@ class TextureLoader {
     }
 
     static QImage readFile(const QString& path, QString* problem) {
+        noteImportInput(path); // the worker's budget grows with what is read (importbudget.h)
         QImageReader reader(path);
         reader.setAutoTransform(false);
         QImage image = reader.read();

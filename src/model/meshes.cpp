@@ -2,6 +2,9 @@
 // would poison a frame: non-finite positions, out-of-range indices, zero-area triangles, bad normals.
 #include "importdetail.h"
 
+#include "core/rigjson.h"
+
+#include <algorithm>
 #include <array>
 #include <assimp/scene.h>
 #include <cmath>
@@ -56,8 +59,15 @@ glm::dvec3 anyPerpendicular(const glm::dvec3& n) {
 }
 
 struct Counts {
-    std::size_t nonTriangles = 0, badIndices = 0, nonFinite = 0, degenerate = 0, normalsFixed = 0;
+    std::size_t nonTriangles = 0, badIndices = 0, nonFinite = 0, farAway = 0, degenerate = 0,
+                normalsFixed = 0;
 };
+
+// Vertex positions (after the node transforms) farther out than this are dropped with their triangles:
+// the rig format's own limit on lengths (kMaxRigLength). A glTF node scale of 1e38 loaded "with 0
+// warnings" into an empty view: the camera's framing overflowed.
+constexpr double kMaxCoordinate = kMaxRigLength;
+enum PositionState : char { kBadPosition = 0, kGoodPosition = 1, kFarPosition = 2 };
 
 struct Instance {
     Mesh mesh;
@@ -79,7 +89,10 @@ void addInstance(const aiMesh* am, const glm::dmat4& world, const QString& nodeN
     for (std::uint32_t i = 0; i < n; ++i) {
         const aiVector3D& v = am->mVertices[i];
         pos[i] = glm::dvec3(world * glm::dvec4(v.x, v.y, v.z, 1.0));
-        posOk[i] = isFinite(pos[i]);
+        const glm::dvec3 a = glm::abs(pos[i]);
+        posOk[i] = !isFinite(pos[i])                            ? kBadPosition
+                   : std::max({a.x, a.y, a.z}) > kMaxCoordinate ? kFarPosition
+                                                                : kGoodPosition;
     }
 
     std::vector<std::uint32_t> tri;
@@ -97,6 +110,10 @@ void addInstance(const aiMesh* am, const glm::dmat4& world, const QString& nodeN
         }
         if (!posOk[a] || !posOk[b] || !posOk[c]) {
             ++counts.nonFinite;
+            continue;
+        }
+        if (posOk[a] == kFarPosition || posOk[b] == kFarPosition || posOk[c] == kFarPosition) {
+            ++counts.farAway;
             continue;
         }
         const glm::dvec3 e1 = pos[b] - pos[a], e2 = pos[c] - pos[a];
@@ -251,6 +268,12 @@ bool convertMeshes(const aiScene* scene, const QString& displayName, Model& mode
     };
     warn(counts.nonFinite, "triangle", "with NaN or infinite vertex positions dropped");
     warn(counts.badIndices, "triangle", "with out-of-range vertex indices dropped");
+    if (counts.farAway)
+        model.warnings << QStringLiteral(
+                              "%1: %2 with vertex positions beyond ±%3 (after the nodes' scales and "
+                              "positions) dropped")
+                              .arg(displayName, plural(counts.farAway, "triangle"))
+                              .arg(kMaxCoordinate, 0, 'g', 3);
     warn(counts.degenerate, "zero-area triangle", "dropped");
     warn(counts.nonTriangles, "polygon", "that could not be triangulated dropped");
     warn(counts.normalsFixed, "zero-length or invalid normal", "recomputed from the faces");

@@ -1,5 +1,7 @@
 #include "modelfolder.h"
 
+#include "importbudget.h"
+
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -132,6 +134,7 @@ Assimp::IOStream* QtIOSystem::Open(const char* file, const char* mode) {
     if (path.isEmpty()) return nullptr;
     auto qfile = std::make_unique<QFile>(path);
     if (!QFileInfo(path).isFile() || !qfile->open(QIODevice::ReadOnly)) return nullptr;
+    noteImportInput(path); // the worker's budget grows with what is read (importbudget.h)
     return new QtIOStream(std::move(qfile));
 }
 

@@ -1,5 +1,6 @@
 #include "qualitybench.h"
 
+#include "benchestimate.h"
 #include "environmentloader.h"
 #include "offscreen.h"
 #include "reference.h"
@@ -249,7 +250,19 @@ BenchStatus runQualityBench(const std::vector<BenchScene>& scenes, const BenchOp
     for (const BenchScene& scene : scenes) {
         ReferenceImage reference;
         double referenceMs = 0.0;
-        if (options.errors) {
+        const double referenceWork = benchReferenceWork(scene, options.size);
+        const bool referenced = options.errors && referenceWork <= options.maxReferenceWork;
+        if (options.errors && !referenced) {
+            report->notes.append(
+                QStringLiteral("%1: no reference and no error figures: it would evaluate %2 light·pixels "
+                               "(more than %3; a smaller --size or fewer --lights bring it under, "
+                               "--full-reference computes it anyway)")
+                    .arg(scene.name)
+                    .arg(referenceWork, 0, 'g', 2)
+                    .arg(options.maxReferenceWork, 0, 'g', 2));
+            progress.done += 1.0;
+        }
+        if (referenced) {
             QElapsedTimer clock;
             clock.start();
             if (!computeSceneReference(scene, options, progress, &reference, &message))
@@ -263,8 +276,8 @@ BenchStatus runQualityBench(const std::vector<BenchScene>& scenes, const BenchOp
             const bool uber = run >= int(options.tiers.size());
             const Quality q = uber ? Quality::Exact : options.tiers[size_t(run)];
             BenchResult r;
-            if (!measure(scene, options, q, uber, options.errors ? &reference : nullptr, progress, &r,
-                         &message, &report->glDescription))
+            if (!measure(scene, options, q, uber, referenced ? &reference : nullptr, progress, &r, &message,
+                         &report->glDescription))
                 return failed(QStringLiteral("%1 (%2)").arg(scene.name, toString(q)));
             r.referenceMs = referenceMs;
             if (r.hasErrors && reference.environment) {

@@ -33,6 +33,7 @@
 #include <QImage>
 #include <QSize>
 #include <QString>
+#include <QStringList>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -60,7 +61,12 @@ struct BenchOptions {
     std::vector<Quality> tiers{Quality::Exact, Quality::Balanced, Quality::Fast};
     double exposureEV = 0.0;
     ToneMap toneMap = ToneMap::Clamp;
-    bool errors = true;       // compute the reference and the error figures
+    bool errors = true; // compute the reference and the error figures
+    // A scene whose reference would cost more (benchestimate.h benchReferenceWork: light·pixels, area
+    // lights weighted) gets none, and no error figures: a note in BenchReport::notes says so. The default
+    // (~2 minutes on llvmpipe's 2-core host) admits the standard suite; 65,535 point lights at 1280x720
+    // (6e10, ~15 minutes) are over it.
+    double maxReferenceWork = 1e10;
     bool uberShader = true;   // one more run per scene: the exact tier with every light model compiled in
     int msaaSamples = -1;     // timed runs: -1 each tier's own (tierMsaaSamples), else this for every tier
     bool interactive = false; // time what the viewport draws while navigating (interaction proxies, lod.h)
@@ -138,6 +144,7 @@ struct BenchReport {
     double referenceMs = 0.0; // total CPU time of the references (wall)
     QString loadAverage;      // /proc/loadavg at the end of the run (empty where unavailable)
     QString glibcTunables;    // GLIBC_TUNABLES the run had: malloc on huge pages or not (core/hugepages.h)
+    QStringList notes;        // what the run left out and why (a reference over maxReferenceWork)
 };
 
 // Where and how much a tier's image differs from the reference: each pixel the largest channel difference

@@ -88,8 +88,8 @@ class TestEnvironmentDecode : public QObject {
     void sanitised() {
         const EnvironmentDecodeResult r = decodeEnvironment(readData("nonfinite.exr"), "sky.exr");
         QVERIFY2(r.ok(), qPrintable(r.error));
-        QCOMPARE(r.warnings,
-                 QStringList{"sky.exr: 3 texels were NaN, infinite or negative and were set to 0"});
+        QCOMPARE(r.warnings, (QStringList{"sky.exr: 2 texels were NaN or infinite and were set to 0",
+                                          "sky.exr: 1 texels were negative (down to -1) and were set to 0"}));
         QCOMPARE(r.image.at(1, 0), glm::vec3(0.0f, 2.0f, 3.0f));
         QCOMPARE(r.image.at(2, 0), glm::vec3(1.0f, 0.0f, 3.0f));
         QCOMPARE(r.image.at(3, 1), glm::vec3(1.0f, 2.0f, 0.0f));
@@ -134,6 +134,35 @@ class TestEnvironmentDecode : public QObject {
         expectError(decodeEnvironment(lying, "lying.hdr"), "lying.hdr",
                     "the header claims 2000×1000 texels but the file holds only");
     }
+    // Issue 41: a 457-byte DWAB header claiming 64 Mpx made the worker allocate 793 MB before it found the
+    // data missing. A header claiming more than 256 decoded bytes per byte of file is refused first.
+    void headerClaimsMoreThanTheFileCanHold() {
+        QByteArray exr = withExrSize(readData("tiny.exr"), 4096, 2048);
+        const QByteArray key("compression\0compression\0", 24);
+        const qsizetype at = exr.indexOf(key);
+        QVERIFY(at >= 0);
+        exr[at + key.size() + 4] = char(9); // DWAB: 256 scanlines a chunk, so 8 chunk offsets suffice
+        expectError(decodeEnvironment(exr, "lying.exr"), "lying.exr",
+                    QStringLiteral("the header claims 4096×2048 texels (96 MiB decoded) but the file holds "
+                                   "only %1 bytes (at most 256 bytes decoded per byte of file are accepted)")
+                        .arg(exr.size()));
+    }
+    // Issue 41: radiance of 1e35 ... 3.4e38 is finite but overflowed to inf when filtered.
+    void overflowingRadianceIsClamped() {
+        QByteArray hdr = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 2\n";
+        hdr += QByteArray("\x96\x96\x96\xff\x80\x40\x20\x81", 8); // 1.2e38 grey, then (1, 0.5, 0.25)
+        const EnvironmentDecodeResult r = decodeEnvironment(hdr, "sun.hdr");
+        QVERIFY2(r.ok(), qPrintable(r.error));
+        QCOMPARE(r.warnings.first(), QStringLiteral("sun.hdr: 1 texels were brighter than 1e+10 and were "
+                                                    "clamped to it (brighter values overflow when the "
+                                                    "environment is filtered)"));
+        QCOMPARE(r.image.at(0, 0), glm::vec3(kMaxEnvironmentRadiance));
+        QCOMPARE(r.image.at(1, 0), glm::vec3(1.0f, 0.5f, 0.25f));
+        QVERIFY(checkEnvironmentImage(r.image).isEmpty());
+        EnvironmentImage bright = r.image;
+        bright.texels[0].r = 1e35f;
+        QVERIFY(checkEnvironmentImage(bright).contains("above the limit"));
+    }
     void garbage() {
         expectError(decodeEnvironment(QByteArray(4096, '\x5a'), "junk.exr"), "junk.exr",
                     "not an OpenEXR or Radiance");
@@ -157,6 +186,9 @@ class TestEnvironmentDecode : public QObject {
             QCOMPARE(r.image.width, 1024);
             QCOMPARE(r.image.height, 512);
             QVERIFY(checkEnvironmentImage(r.image).isEmpty());
+            // Issue 41: studio.exr warned "3 texels were NaN, infinite or negative" on every load; they
+            // are DWAB's ringing (down to -3e-6), set to 0 without a word.
+            QVERIFY2(r.warnings.isEmpty(), qPrintable(r.warnings.join('\n')));
         }
         expectError(decodeBuiltinEnvironment("nope"), "builtin:nope",
                     "no bundled environment is called \"nope\"");

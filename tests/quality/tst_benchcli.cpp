@@ -402,6 +402,55 @@ class TestBenchCli : public QObject {
                      qPrintable(QJsonDocument(o).toJson()));
         }
     }
+    // Issue 41: `bench --lights 65535` ran 7 minutes without finishing its first run and without a word on
+    // how long it would take. Beyond the standard suite's scale it now probes one frame and says before the
+    // first run what the whole bench will take and which options bound it.
+    void manyLightsSayTheirEstimateFirst() {
+        if (!haveDisplay()) QSKIP("needs an X display with OpenGL: run under xvfb-run -a");
+        const Run r = lightrig({QStringLiteral(LIGHTRIG_TEST_DATA "/model/tetra.stl"),
+                                QStringLiteral("--lights"), QStringLiteral("65535"), QStringLiteral("--size"),
+                                QStringLiteral("32x18"), QStringLiteral("--frames"), QStringLiteral("1"),
+                                QStringLiteral("--warmup"), QStringLiteral("0"), QStringLiteral("--quality"),
+                                QStringLiteral("exact"), QStringLiteral("--no-uber")});
+        QVERIFY2(r.code == 0, qPrintable(show(r)));
+        const qsizetype estimate = r.err.indexOf(QStringLiteral("lightrig bench: estimated "));
+        QVERIFY2(estimate >= 0, qPrintable(show(r)));
+        QVERIFY2(estimate < r.err.indexOf(QStringLiteral("[1/1] tetra · 65535 point: exact")),
+                 qPrintable(show(r)));
+        QVERIFY2(r.err.contains(QStringLiteral("for 4 frames: one frame of tetra · 65535 point at 32x18")),
+                 qPrintable(show(r)));
+        QVERIFY2(r.err.contains(QStringLiteral("--size, --frames")), qPrintable(show(r)));
+        // The standard suite's scale says nothing more than before.
+        const Run small =
+            lightrig({QStringLiteral(LIGHTRIG_TEST_DATA "/model/tetra.stl"), QStringLiteral("--lights"),
+                      QStringLiteral("256"), QStringLiteral("--size"), QStringLiteral("32x18"),
+                      QStringLiteral("--frames"), QStringLiteral("1"), QStringLiteral("--quality"),
+                      QStringLiteral("fast"), QStringLiteral("--no-uber")});
+        QVERIFY2(small.code == 0 && !small.err.contains(QStringLiteral("estimated")),
+                 qPrintable(show(small)));
+    }
+
+    // 65,535 area lights: the reference integrates each by Monte Carlo at every pixel (hours even at 32x18).
+    // Over the reference budget a scene gets no reference and no error figures, and the report says so.
+    void referenceOverItsBudgetIsSkippedWithANote() {
+        if (!haveDisplay()) QSKIP("needs an X display with OpenGL: run under xvfb-run -a");
+        const QString json = m_dir.filePath(QStringLiteral("skipped.json"));
+        const Run r =
+            lightrig({QStringLiteral(LIGHTRIG_TEST_DATA "/model/tetra.stl"), QStringLiteral("--lights"),
+                      QStringLiteral("65535"), QStringLiteral("--light-type"), QStringLiteral("rect"),
+                      QStringLiteral("--size"), QStringLiteral("32x18"), QStringLiteral("--frames"),
+                      QStringLiteral("1"), QStringLiteral("--warmup"), QStringLiteral("0"),
+                      QStringLiteral("--quality"), QStringLiteral("exact"), QStringLiteral("--no-uber"),
+                      QStringLiteral("--json"), json});
+        QVERIFY2(r.code == 0, qPrintable(show(r)));
+        QVERIFY2(
+            r.out.contains(QStringLiteral("note: tetra · 65535 rect: no reference and no error figures")),
+            qPrintable(show(r)));
+        QVERIFY2(r.out.contains(QStringLiteral("--full-reference")), qPrintable(show(r)));
+        const QJsonArray results = writtenJson(r, json).value(QStringLiteral("results")).toArray();
+        QCOMPARE(results.size(), 1);
+        QVERIFY(results[0].toObject().value(QStringLiteral("max_error_levels")).isNull());
+    }
 };
 
 QTEST_GUILESS_MAIN(TestBenchCli)
