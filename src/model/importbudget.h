@@ -20,8 +20,9 @@ struct ImportBudget {
 };
 
 // Model: 1 GiB + 64 bytes per byte of input; environment: 512 MiB + twice the largest image a file of
-// that size may decode to (maxEnvironmentDecodedBytes); both 10 s + 1 s per MiB of input. Memory is
-// rounded up to whole MiB; each is capped by the hard limit (a hard limit <= 0, none, stays none: 0).
+// that size may decode to (maxEnvironmentDecodedBytes); both 9 s + 1 s per MiB of input (under 10 s for a
+// file under 1 MiB). Memory is rounded up to whole MiB; each is capped by the hard limit (a hard limit <= 0,
+// none, stays none: 0).
 ImportBudget importBudget(BudgetKind kind, qint64 inputBytes, qint64 hardMemoryBytes, int hardTimeoutMs);
 
 // "12 KB", "3.4 MB": an input size as the messages write it.
