@@ -1,14 +1,14 @@
 // `lightrig render MODEL... [--rig RIG.json]... -o OUT.png|PATTERN|FOLDER [--size WxH] [--camera-index N |
 //  --view NAME[,NAME...]] [--turntable N [--rotate camera|lights]] [--summary FILE|-] [--quality Q]
 //  [--supersample N] [--transparent] [--exposure EV] [--tonemap ...] [--shading classic|pbr] [--ground ...]
-//  [--shadows on|off] [--environment ...]`
+//  [--shadows on|off] [--msaa N] [--environment ...]`
 // renders images with the same Renderer as the viewport (OffscreenRenderer) and writes each atomically: one
 // model, rig and view into OUT.png as always, or a catalog (several models, rigs, views: catalog.h names the
 // files) and turntables (N frames around the model, render/turntable.h), rendered by renderrun.h.
 // Exit status: 0 written; 1 bad model, rig, camera or path, or no OpenGL (one line on stderr each; with
-// several items the others still render); 2 usage error (nothing rendered). Hidden: --frames N times N more
-// frames (glFinish each) and prints the median, --msaa N overrides the samples (default 4; 0 for --quality
-// fast).
+// several items the others still render); 2 usage error (nothing rendered). --msaa N overrides the samples
+// (default 4; 0 for --quality fast). Hidden: --frames N times N more frames (glFinish each) and prints the
+// median.
 #include "catalog.h"
 #include "cli.h"
 #include "outputfiles.h"
@@ -29,8 +29,10 @@ namespace {
 const char* kUsage =
     "lightrig render MODEL... [--rig RIG.json]... -o OUT.png|PATTERN|FOLDER [--size WxH] [--camera-index N | "
     "--view NAME[,NAME...]] [--turntable N [--rotate camera|lights]] [--summary FILE|-] [--quality Q] "
-    "[--supersample N] [--transparent] [--exposure EV] [--tonemap clamp|reinhard|aces] "
-    "[--shading classic|pbr] [--ground off|visible|catcher] [--shadows on|off]";
+    "[--supersample N] [--transparent] [--exposure EV] [--tonemap clamp|reinhard|aces|neutral|agx] "
+    "[--shading classic|pbr] [--ground off|visible|catcher] [--shadows on|off] [--msaa N] "
+    "[--environment FILE|builtin:NAME|studio|none] [--environment-intensity EV] "
+    "[--environment-rotation DEGREES] [--environment-background visible|blurred|color]";
 
 } // namespace
 
@@ -62,8 +64,10 @@ int runRender(const QStringList& args) {
     QCommandLineOption frames(QStringLiteral("frames"), QStringLiteral("Time N more frames."),
                               QStringLiteral("N"));
     frames.setFlags(QCommandLineOption::HiddenFromHelp);
-    QCommandLineOption msaa(QStringLiteral("msaa"), QStringLiteral("MSAA samples."), QStringLiteral("N"));
-    msaa.setFlags(QCommandLineOption::HiddenFromHelp);
+    const QCommandLineOption msaa(QStringLiteral("msaa"),
+                                  QStringLiteral("Multisample antialiasing samples per pixel, 0..32 (default "
+                                                 "4; 0 for --quality fast)."),
+                                  QStringLiteral("N"));
     const QCommandLineOption turntable(
         QStringLiteral("turntable"),
         QStringLiteral("Render N frames around the model, frame k at k·360/N degrees about the up axis."),
@@ -152,6 +156,21 @@ int runRender(const QStringList& args) {
     }
     const std::optional<std::vector<RenderItem>> items = planRender(request, &message);
     if (!items) return usage(message);
+    // Before anything is written: no image, nor the summary, may be a file this call reads or writes.
+    std::vector<NamedFile> inputs, outputs;
+    for (const QString& m : request.models)
+        inputs.push_back({m, QStringLiteral("the model")});
+    for (const QString& rig : request.rigs)
+        inputs.push_back({rig, QStringLiteral("the rig")});
+    inputs.push_back({environmentFileOf(request.options.environment), QStringLiteral("the environment")});
+    for (const RenderItem& item : *items)
+        outputs.push_back({item.file, QStringLiteral("the image")});
+    if (!request.summary.isEmpty() && request.summary != QLatin1String("-"))
+        outputs.push_back({request.summary, QStringLiteral("the --summary file")});
+    if (!checkDistinctFiles(inputs, outputs, &message)) {
+        err << name << ": " << message << '\n';
+        return Failed;
+    }
 
     if (!displayAvailable()) {
         err << name << ": lightrig render needs an X display; run it under xvfb-run -a\n";

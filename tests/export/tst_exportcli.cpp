@@ -12,6 +12,7 @@
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
+#include <csignal>
 
 using namespace lrtest;
 
@@ -76,6 +77,23 @@ class TestExportCli : public QObject {
         const QString suzanne = QStringLiteral(LIGHTRIG_SOURCE_DIR "/resources/models/suzanne/");
         for (const QString& f : QDir(suzanne).entryList(QDir::Files))
             QVERIFY(copyWritable(suzanne + f, path(f)));
+        // Issue 41: texture URIs written on Windows (win/): `.\normal.png` and `D:\maps\normal.png` name
+        // the normal.png beside the model; unreachable.gltf also names files that are nowhere.
+        QVERIFY(QDir(m_dir.path()).mkpath(QStringLiteral("win")));
+        QVERIFY(copyWritable(kData + QStringLiteral("normal.png"), path(QStringLiteral("win/normal.png"))));
+        QJsonObject scene = QJsonDocument::fromJson(readFile(kData + QStringLiteral("scene.gltf"))).object();
+        QJsonArray textures = scene.value(QStringLiteral("textures")).toArray();
+        textures.append(QJsonObject{{QStringLiteral("source"), 1}});
+        scene.insert(QStringLiteral("textures"), textures);
+        const auto image = [](const char* uri) {
+            return QJsonObject{{QStringLiteral("uri"), QLatin1String(uri)}};
+        };
+        scene.insert(QStringLiteral("images"),
+                     QJsonArray{image(".\\normal.png"), image("D:\\maps\\normal.png")});
+        QVERIFY(writeFile(path(QStringLiteral("win/fixable.gltf")), QJsonDocument(scene).toJson()));
+        scene.insert(QStringLiteral("images"),
+                     QJsonArray{image("textures\\gone.png"), image("D:\\maps\\nowhere.png")});
+        QVERIFY(writeFile(path(QStringLiteral("win/unreachable.gltf")), QJsonDocument(scene).toJson()));
     }
 
     void exportsPassTheValidator_data() {
@@ -108,6 +126,14 @@ class TestExportCli : public QObject {
                                                 << path(QStringLiteral("elsewhere/deeper/suzanne.gltf"));
         QTest::newRow("obj written elsewhere") << QStringList{} << path(QStringLiteral("quad.obj"))
                                                << path(QStringLiteral("elsewhere/quad.glb"));
+        QTest::newRow("windows texture paths, written elsewhere")
+            << QStringList{} << path(QStringLiteral("win/fixable.gltf"))
+            << path(QStringLiteral("elsewhere/win.gltf"));
+        QTest::newRow("windows texture paths, same folder")
+            << QStringList{} << path(QStringLiteral("win/fixable.gltf"))
+            << path(QStringLiteral("win/out.gltf"));
+        QTest::newRow("windows texture paths, glb")
+            << QStringList{} << path(QStringLiteral("win/fixable.gltf")) << path(QStringLiteral("win.glb"));
         const QString helmet = QStringLiteral(LIGHTRIG_SHARED_MODELS "/bench/helmet_8spot.glb");
         if (QFile::exists(helmet))
             QTest::newRow("helmet 8 spots")
@@ -143,6 +169,29 @@ class TestExportCli : public QObject {
             QCOMPARE(reports.last().value(QStringLiteral("errors")).toInt(), 0);
     }
 
+    // Issue 41: texture files a viewer will not find are said on stderr (they were silent), naming the
+    // image and why; the references stay (a file put there later is found).
+    void unreachableFilesAreNotes() {
+        const CliRun run =
+            runLightrig({QStringLiteral("export"), path(QStringLiteral("win/unreachable.gltf")),
+                         QStringLiteral("-o"), path(QStringLiteral("unreachable.gltf"))});
+        QVERIFY2(run.code == 0, qPrintable(run.show()));
+        const QStringList notes = run.errorLines().filter(QStringLiteral("lightrig export: note: images["));
+        QVERIFY2(notes.size() == 2, qPrintable(run.show()));
+        QVERIFY2(notes[0].contains(QLatin1String("images[0].uri")) &&
+                     notes[0].contains(QLatin1String("no such file")),
+                 qPrintable(notes[0]));
+        QVERIFY2(notes[1].contains(QLatin1String("images[1].uri")) &&
+                     notes[1].contains(QLatin1String("Windows drive path")),
+                 qPrintable(notes[1]));
+        const QJsonArray images = QJsonDocument::fromJson(readFile(path(QStringLiteral("unreachable.gltf"))))
+                                      .object()
+                                      .value(QStringLiteral("images"))
+                                      .toArray();
+        QCOMPARE(images[0].toObject().value(QStringLiteral("uri")).toString(),
+                 QStringLiteral("win/textures/gone.png"));
+    }
+
     void lossyConversionsOnStderr() {
         const CliRun run =
             runLightrig({QStringLiteral("export"), path(QStringLiteral("Suzanne.gltf")),
@@ -153,6 +202,66 @@ class TestExportCli : public QObject {
         for (const char* what : {"classic intensities", "rim light", "ambient", "falloff", "spot cone"})
             QVERIFY2(!lossy.filter(QLatin1String(what)).isEmpty(), what);
         QVERIFY(run.out.contains(QStringLiteral("%1 lossy conversions").arg(lossy.size())));
+    }
+
+    // Issue 41: export over its own source (M.glb -o M.glb replaced the model's 8 lights with the rig's 3)
+    // or over its rig is refused before anything is written, whatever the spelling.
+    void outputThatIsAnInputIsRefused_data() {
+        QTest::addColumn<QString>("model");
+        QTest::addColumn<QString>("out");
+        QTest::addColumn<QString>("mentions");
+        QTest::newRow("same path") << path(QStringLiteral("scene.gltf")) << path(QStringLiteral("scene.gltf"))
+                                   << QStringLiteral("the model");
+        QTest::newRow("spelled ./") << path(QStringLiteral("scene.gltf"))
+                                    << m_dir.path() + QStringLiteral("/./scene.gltf")
+                                    << QStringLiteral("the model");
+        QTest::newRow("a link to it") << path(QStringLiteral("scene.gltf"))
+                                      << path(QStringLiteral("link.gltf")) << QStringLiteral("the model");
+        QTest::newRow("the rig") << path(QStringLiteral("scene.gltf")) << path(QStringLiteral("rig.gltf"))
+                                 << QStringLiteral("the rig");
+    }
+    void outputThatIsAnInputIsRefused() {
+        QFETCH(QString, model);
+        QFETCH(QString, out);
+        QFETCH(QString, mentions);
+        QVERIFY(copyWritable(QStringLiteral(LIGHTRIG_SOURCE_DIR "/resources/presets/default.json"),
+                             path(QStringLiteral("rig.gltf"))));
+        QFile::remove(path(QStringLiteral("link.gltf")));
+        QVERIFY(QFile::link(path(QStringLiteral("scene.gltf")), path(QStringLiteral("link.gltf"))));
+        const QByteArray source = readFile(model), rig = readFile(path(QStringLiteral("rig.gltf")));
+        const CliRun run = runLightrig({QStringLiteral("export"), model, QStringLiteral("--rig"),
+                                        path(QStringLiteral("rig.gltf")), QStringLiteral("-o"), out});
+        QVERIFY2(run.code == 1, qPrintable(run.show()));
+        QVERIFY2(run.errorLines().size() == 1 && run.errorLines().first().contains(mentions),
+                 qPrintable(run.show()));
+        QCOMPARE(readFile(model), source);
+        QCOMPARE(readFile(path(QStringLiteral("rig.gltf"))), rig);
+    }
+
+    // Issue 41: `render` died of SIGPIPE once in 5,200 renders (not reproduced). LightRig ignores SIGPIPE
+    // from its start, so a worker that exits before it read its request cannot kill it: the worker (a
+    // script here that exits at once) inherits the ignored disposition LightRig had when it started it;
+    // Qt ignored SIGPIPE only at its first write to a worker, after the first worker had started.
+    void workerThatExitsEarlyDoesNotKillLightRig() {
+        const QString script = path(QStringLiteral("early-exit-worker.sh"));
+        const QString mask = path(QStringLiteral("worker-sigign.txt"));
+        QVERIFY(writeFile(
+            script,
+            QStringLiteral("#!/bin/sh\ngrep SigIgn /proc/self/status > '%1'\nexit 3\n").arg(mask).toUtf8()));
+        QVERIFY(QFile::setPermissions(script, QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner));
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(QStringLiteral("LIGHTRIG_IMPORT_WORKER"), script);
+        const CliRun run = runLightrig({QStringLiteral("export"), path(QStringLiteral("scene.gltf")),
+                                        QStringLiteral("-o"), path(QStringLiteral("never-early.glb"))},
+                                       &env);
+        QVERIFY2(run.code == 1, qPrintable(run.show())); // an error, not a signal
+        QVERIFY(!QFile::exists(path(QStringLiteral("never-early.glb"))));
+        const QByteArray line = readFile(mask).trimmed(); // "SigIgn:\t0000000000001000"
+        QVERIFY2(line.startsWith("SigIgn:"), line.constData());
+        bool ok = false;
+        const qulonglong ignored = line.mid(7).trimmed().toULongLong(&ok, 16);
+        QVERIFY(ok);
+        QVERIFY2(ignored & (1ull << (SIGPIPE - 1)), line.constData());
     }
 
     void badInputWritesNothing_data() {
