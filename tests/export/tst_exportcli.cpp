@@ -12,7 +12,7 @@
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
-#include <csignal>
+#include <unistd.h>
 
 using namespace lrtest;
 
@@ -238,30 +238,26 @@ class TestExportCli : public QObject {
         QCOMPARE(readFile(path(QStringLiteral("rig.gltf"))), rig);
     }
 
-    // Issue 41: `render` died of SIGPIPE once in 5,200 renders (not reproduced). LightRig ignores SIGPIPE
-    // from its start, so a worker that exits before it read its request cannot kill it: the worker (a
-    // script here that exits at once) inherits the ignored disposition LightRig had when it started it;
-    // Qt ignored SIGPIPE only at its first write to a worker, after the first worker had started.
-    void workerThatExitsEarlyDoesNotKillLightRig() {
-        const QString script = path(QStringLiteral("early-exit-worker.sh"));
-        const QString mask = path(QStringLiteral("worker-sigign.txt"));
-        QVERIFY(writeFile(
-            script,
-            QStringLiteral("#!/bin/sh\ngrep SigIgn /proc/self/status > '%1'\nexit 3\n").arg(mask).toUtf8()));
-        QVERIFY(QFile::setPermissions(script, QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner));
-        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-        env.insert(QStringLiteral("LIGHTRIG_IMPORT_WORKER"), script);
-        const CliRun run = runLightrig({QStringLiteral("export"), path(QStringLiteral("scene.gltf")),
-                                        QStringLiteral("-o"), path(QStringLiteral("never-early.glb"))},
-                                       &env);
-        QVERIFY2(run.code == 1, qPrintable(run.show())); // an error, not a signal
-        QVERIFY(!QFile::exists(path(QStringLiteral("never-early.glb"))));
-        const QByteArray line = readFile(mask).trimmed(); // "SigIgn:\t0000000000001000"
-        QVERIFY2(line.startsWith("SigIgn:"), line.constData());
-        bool ok = false;
-        const qulonglong ignored = line.mid(7).trimmed().toULongLong(&ok, 16);
-        QVERIFY(ok);
-        QVERIFY2(ignored & (1ull << (SIGPIPE - 1)), line.constData());
+    // Issue 41: `render` died of SIGPIPE once in 5,200 renders (not reproduced: a write to an import worker
+    // that had exited). LightRig ignores SIGPIPE from main() on, so a write to a pipe whose reader is gone
+    // fails instead of killing it. Here the pipe is its stdout, read end closed before it starts: its help
+    // is the first thing it writes (Qt ignores SIGPIPE only from its first write to a child process, and
+    // resets it for the child, so lightrig starts with the default action).
+    void aPipeWithoutReaderDoesNotKillLightRig() {
+        int fds[2];
+        QVERIFY(::pipe(fds) == 0);
+        ::close(fds[0]);
+        const int writeEnd = fds[1];
+        QProcess p;
+        p.setProgram(lightrigExecutable());
+        p.setArguments({QStringLiteral("export"), QStringLiteral("--help")});
+        p.setChildProcessModifier([writeEnd] { ::dup2(writeEnd, STDOUT_FILENO); });
+        p.start();
+        const bool finished = p.waitForFinished(60000);
+        ::close(writeEnd);
+        QVERIFY(finished);
+        QVERIFY2(p.exitStatus() == QProcess::NormalExit,
+                 qPrintable(QStringLiteral("killed by signal %1").arg(p.exitCode())));
     }
 
     void badInputWritesNothing_data() {

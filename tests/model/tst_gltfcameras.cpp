@@ -10,6 +10,7 @@
 #include <QJsonObject>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QtEndian>
 
 using namespace lr;
 
@@ -56,10 +57,22 @@ class TestGltfCameras : public QObject {
         scene.insert(QStringLiteral("nodes"), sceneNodes);
         scenes[0] = scene;
         root.insert(QStringLiteral("scenes"), scenes);
+        QByteArray bin; // a GLB's buffer 0 is its BIN chunk: the data: URI's bytes move there
+        if (glb) {
+            QJsonArray buffers = root.value(QStringLiteral("buffers")).toArray();
+            QJsonObject buffer = buffers[0].toObject();
+            const QString uri = buffer.take(QStringLiteral("uri")).toString();
+            const QByteArray data = QByteArray::fromBase64(uri.section(QLatin1Char(','), 1).toLatin1());
+            buffers[0] = buffer;
+            root.insert(QStringLiteral("buffers"), buffers);
+            const QByteArray padded = data + QByteArray((4 - data.size() % 4) % 4, '\0');
+            const quint32 length = qToLittleEndian(quint32(padded.size()));
+            bin = QByteArray(reinterpret_cast<const char*>(&length), 4) + QByteArray("BIN\0", 4) + padded;
+        }
         const QByteArray json = QJsonDocument(root).toJson(QJsonDocument::Compact);
         const QString file =
             m_dir.filePath(glb ? QStringLiteral("cameras.glb") : QStringLiteral("cameras.gltf"));
-        QVERIFY(lrtest::writeFile(file, glb ? writeGlb(json, {}) : json));
+        QVERIFY(lrtest::writeFile(file, glb ? writeGlb(json, bin) : json));
 
         const ModelLoadResult r = loadModel(file);
         QVERIFY2(r.ok(), qPrintable(r.error));
