@@ -1,6 +1,7 @@
 #include "gltfexportdialog.h"
 
 #include "core/atomicwrite.h"
+#include "documentfiles.h"
 #include "editor/document.h"
 #include "errordialog.h"
 #include "mainwindow.h"
@@ -24,12 +25,30 @@
 #include <QListWidget>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QSettings>
 #include <QStatusBar>
 #include <QToolButton>
 #include <QVBoxLayout>
 #include <QtConcurrent>
 
 namespace lr {
+
+namespace {
+
+const QString kLastExportFolder = QStringLiteral("export/lastGltfDir");
+
+// Where an export is proposed (issue 41: it was the model's folder, often a download or a shared library):
+// the folder of the last export, else the rig file's folder, else the folder rigs were last opened or
+// saved in (DocumentFiles::lastFolder, the home folder at first).
+QString exportFolder(const QString& rigPath) {
+    const QString last = QSettings().value(kLastExportFolder).toString();
+    if (!last.isEmpty() && QFileInfo(last).isDir()) return last;
+    if (!rigPath.isEmpty() && !rigPath.startsWith(QLatin1String(":/")))
+        return QFileInfo(rigPath).absolutePath();
+    return DocumentFiles::lastFolder(DocumentFiles::FileKind::Rig);
+}
+
+} // namespace
 
 GltfExportDialog::GltfExportDialog(const std::vector<LossyConversion>& losses, const QString& suggestedPath,
                                    QWidget* parent)
@@ -48,7 +67,9 @@ GltfExportDialog::GltfExportDialog(const std::vector<LossyConversion>& losses, c
     file->addWidget(m_path);
     file->addWidget(browse);
     auto* form = new QFormLayout;
-    form->addRow(tr("&File:"), file);
+    auto* fileLabel = new QLabel(tr("&File:"), this); // a buddy: the & is a mnemonic, not shown
+    fileLabel->setBuddy(m_path);
+    form->addRow(fileLabel, file);
     form->addRow(QString(), m_lightsOnly);
     for (const LossyConversion& loss : losses)
         m_losses->addItem(describeLoss(loss));
@@ -105,17 +126,25 @@ void exportGltfInteractive(MainWindow* window) {
     request.frame = scene->frame();
     request.fileFromWorld = glm::transpose(upAxisRotation(scene->upAxis()));
     const ViewCamera view =
-        window->viewport()->camera().withClipPlanes(request.frame.center, request.frame.radius);
+        window->viewport()->camera().withExportClipPlanes(request.frame.center, request.frame.radius);
     request.camera = makeGltfCamera(QStringLiteral("LightRig view"), view.eye, view.forward(), view.trueUp(),
                                     view.yfovDeg, view.znear, view.zfar, request.fileFromWorld);
-    const QFileInfo model(scene->path());
     const QString suggested =
-        model.absoluteDir().filePath(model.completeBaseName() + QStringLiteral("-lightrig.glb"));
+        QDir(exportFolder(window->document()->filePath()))
+            .filePath(QFileInfo(scene->path()).completeBaseName() + QStringLiteral("-lightrig.glb"));
     GltfExportDialog dialog(convertRigToGltf(rig, request.frame, request.fileFromWorld).losses, suggested,
                             window);
     if (dialog.exec() != QDialog::Accepted) return;
     request.outputPath = dialog.path();
     request.lightsOnly = dialog.lightsOnly();
+    if (const QFileInfo out(request.outputPath), source(request.modelPath);
+        out.exists() && out.canonicalFilePath() == source.canonicalFilePath()) {
+        showError(window, {title,
+                           QApplication::translate("lr::GltfExportDialog", "Nothing was exported."),
+                           {QStringLiteral("cannot write %1: it is the open model, which the export reads")
+                                .arg(request.outputPath)}});
+        return;
+    }
 
     // Off the GUI thread (an Assimp export runs the import worker); the window stays painted meanwhile.
     QApplication::setOverrideCursor(Qt::WaitCursor);
@@ -137,6 +166,7 @@ void exportGltfInteractive(MainWindow* window) {
                   {title, QApplication::translate("lr::GltfExportDialog", "Nothing was exported."), {error}});
         return;
     }
+    QSettings().setValue(kLastExportFolder, QFileInfo(request.outputPath).absolutePath());
     window->statusBar()->showMessage(
         QApplication::translate("lr::GltfExportDialog", "Wrote %1: %2 lights, %3 lossy conversions")
             .arg(QDir::toNativeSeparators(request.outputPath))

@@ -2,7 +2,10 @@
 // viewport's view as its first camera and the environment as a note, or the lights alone. The dialog lists
 // every lossy conversion (core/gltflights.h's table, as `lightrig export` prints them) before anything is
 // written; the export (model/gltfexport.h) then runs off the GUI thread and is written atomically, and a
-// failure is an error box naming the file and the reason.
+// failure is an error box naming the file and the reason. It proposes MODEL-lightrig.glb in the folder of
+// the last export, else the rig file's folder, else the folder rigs were last opened or saved in (never the
+// model's folder unless the user exported there: it is often a download or a shared library); the view
+// camera's planes enclose the model with margin (ViewCamera::withExportClipPlanes).
 #pragma once
 
 #include "core/gltflights.h"

@@ -236,6 +236,17 @@ int runBench(const QStringList& args) {
         err << name << ": " << QString(reason).replace(QLatin1Char('\n'), QLatin1String(" | ")) << '\n';
         return int(Failed);
     };
+    std::vector<NamedFile> inputs, outputs;
+    for (const QString& m : models)
+        inputs.push_back({m, QStringLiteral("the model")});
+    for (const QString& rig : parser.values(scene.rig))
+        inputs.push_back({rig, QStringLiteral("the rig")});
+    inputs.push_back({environmentFileOf(sceneOptions->environment), QStringLiteral("the environment")});
+    for (const auto& [option, what] :
+         {std::pair{&json, "the --json file"}, std::pair{&chart, "the --chart image"},
+          std::pair{&scalingChart, "the --scaling-chart image"}})
+        if (parser.isSet(*option)) outputs.push_back({parser.value(*option), QLatin1String(what)});
+    if (!checkDistinctFiles(inputs, outputs, &message)) return failed(message);
     if (parser.isSet(json) && !checkOutputPath(parser.value(json), &message)) return failed(message);
     if (parser.isSet(chart) && !checkOutputPath(parser.value(chart), &message)) return failed(message);
     if (parser.isSet(scalingChart) && !checkOutputPath(parser.value(scalingChart), &message))

@@ -139,6 +139,15 @@ int runCompare(const QStringList& args) {
         err << name << ": " << QString(reason).replace(QLatin1Char('\n'), QLatin1String(" | ")) << '\n';
         return int(Failed);
     };
+    std::vector<NamedFile> written;
+    for (const Output& o : outputs)
+        written.push_back({o.path, QStringLiteral("the --%1 image").arg(o.option->names().last())});
+    if (!checkDistinctFiles({{positional[0], QStringLiteral("the model")},
+                             {positional[1], QStringLiteral("rig A")},
+                             {positional[2], QStringLiteral("rig B")},
+                             {environmentFileOf(options->environment), QStringLiteral("the environment")}},
+                            written, &message))
+        return failed(message);
     if (!displayAvailable())
         return failed(QStringLiteral("lightrig compare needs an X display; run it under xvfb-run -a"));
     for (const Output& o : outputs)
@@ -150,14 +159,14 @@ int runCompare(const QStringList& args) {
     for (int i = 0; i < 2; ++i) {
         const RigReadResult r = readRigFile(rigPaths[i]);
         if (r.ok()) continue;
-        QString reason = r.errors.value(0, QStringLiteral("%1: cannot read the rig").arg(rigPaths[i]));
-        if (r.errors.size() > 1) reason += QStringLiteral(" (and %1 more errors)").arg(r.errors.size() - 1);
-        return failed(QStringLiteral("rig %1: %2").arg(QLatin1String(labels[i]), reason));
+        return failed(
+            QStringLiteral("rig %1: %2").arg(QLatin1String(labels[i]), rigErrorLine(r, rigPaths[i])));
     }
     // The model once; then each rig with the same overrides and its environment resolved against its own
     // folder; the camera (chosen with rig A) serves both.
     LoadedScene loaded[2];
     if (!loadSceneModel(modelPath, &loaded[0], &message)) return failed(message);
+    if (!checkDistinctFiles(textureFilesOf(*loaded[0].model), written, &message)) return failed(message);
     loaded[1].model = loaded[0].model;
     for (int i = 0; i < 2; ++i) {
         SceneOptions o = *options;
@@ -210,8 +219,16 @@ int runCompare(const QStringList& args) {
     out << "A: " << loaded[0].rigSource << '\n' << "B: " << loaded[1].rigSource << '\n';
     out << "camera: " << loaded[0].cameraSource << ", " << a.width() << 'x' << a.height() << '\n';
     out << figuresLine(figures) << '\n';
+    // All or none: every image is encoded first, then written (writeOutputFiles puts back the ones
+    // written when a later one fails).
+    std::vector<OutputBytes> files;
     for (const Output& o : outputs) {
-        if (!writeOutputImage(o.image, o.path, o.format, &message)) return failed(message);
+        const QByteArray bytes = encodeImage(o.image, o.format, &message);
+        if (bytes.isEmpty()) return failed(QStringLiteral("cannot write %1: %2").arg(o.path, message));
+        files.push_back({o.path, bytes});
+    }
+    if (!writeOutputFiles(files, &message)) return failed(message);
+    for (const Output& o : outputs) {
         out << QStringLiteral("wrote %1 (%2x%3): %4\n")
                    .arg(o.path)
                    .arg(o.image.width())

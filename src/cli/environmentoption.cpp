@@ -82,6 +82,13 @@ std::optional<EnvironmentOverrides> EnvironmentOptionSet::read(const QCommandLin
     return o;
 }
 
+QString environmentFileOf(const EnvironmentOverrides& o) {
+    if (!o.source || *o.source == QLatin1String("none") || *o.source == QLatin1String("studio") ||
+        o.source->startsWith(QLatin1String(kBuiltinEnvironmentPrefix)))
+        return {};
+    return *o.source;
+}
+
 void applyEnvironmentOverrides(Environment& e, const EnvironmentOverrides& o) {
     if (o.source) {
         if (*o.source == QLatin1String("none")) {

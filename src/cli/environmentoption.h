@@ -38,6 +38,10 @@ struct EnvironmentOptionSet {
 // defaults when it has none); every other setting of the rig (spots included) is kept.
 void applyEnvironmentOverrides(Environment& environment, const EnvironmentOverrides& overrides);
 
+// The file --environment names, or empty for builtin:NAME, studio, none or no --environment (the files a
+// command reads, outputfiles.h checkDistinctFiles).
+QString environmentFileOf(const EnvironmentOverrides& overrides);
+
 // Where a rig's relative environment file is found: the rig file's folder, or the current folder for a
 // rig that is not a file (the default rule's, a built-in preset).
 QString environmentFolder(const QString& rigPath);

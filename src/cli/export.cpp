@@ -48,7 +48,7 @@ std::optional<GltfCamera> chooseCamera(const Model& model, std::optional<int> in
         camera = *standardView(name, model.bounds, 16.0 / 9.0);
         name = QStringLiteral("LightRig %1 view").arg(name);
     }
-    camera = camera.withClipPlanes(model.bounds.center(), model.bounds.radius());
+    camera = camera.withExportClipPlanes(model.bounds.center(), model.bounds.radius());
     return makeGltfCamera(name, camera.eye, camera.forward(), camera.trueUp(), camera.yfovDeg, camera.znear,
                           camera.zfar);
 }
@@ -129,6 +129,10 @@ int runExport(const QStringList& args) {
     QString message;
     if (!checkOutputPath(outPath, &message)) return failed(message);
     const QString modelPath = positional.first();
+    if (!checkDistinctFiles(
+            {{modelPath, QStringLiteral("the model")}, {parser.value(rig), QStringLiteral("the rig")}},
+            {{outPath, QStringLiteral("the output")}}, &message))
+        return failed(message);
     const ModelLoadResult loaded = importModelIsolated(modelPath);
     if (!loaded.ok())
         return failed(loaded.error.isEmpty() ? QStringLiteral("could not import %1").arg(modelPath)

@@ -1,14 +1,14 @@
 // `lightrig render MODEL... [--rig RIG.json]... -o OUT.png|PATTERN|FOLDER [--size WxH] [--camera-index N |
 //  --view NAME[,NAME...]] [--turntable N [--rotate camera|lights]] [--summary FILE|-] [--quality Q]
 //  [--supersample N] [--transparent] [--exposure EV] [--tonemap ...] [--shading classic|pbr] [--ground ...]
-//  [--shadows on|off] [--environment ...]`
+//  [--shadows on|off] [--msaa N] [--environment ...]`
 // renders images with the same Renderer as the viewport (OffscreenRenderer) and writes each atomically: one
 // model, rig and view into OUT.png as always, or a catalog (several models, rigs, views: catalog.h names the
 // files) and turntables (N frames around the model, render/turntable.h), rendered by renderrun.h.
 // Exit status: 0 written; 1 bad model, rig, camera or path, or no OpenGL (one line on stderr each; with
-// several items the others still render); 2 usage error (nothing rendered). Hidden: --frames N times N more
-// frames (glFinish each) and prints the median, --msaa N overrides the samples (default 4; 0 for --quality
-// fast).
+// several items the others still render); 2 usage error (nothing rendered). --msaa N overrides the samples
+// (default 4; 0 for --quality fast). Hidden: --frames N times N more frames (glFinish each) and prints the
+// median.
 #include "catalog.h"
 #include "cli.h"
 #include "outputfiles.h"
@@ -30,8 +30,10 @@ namespace {
 const char* kUsage =
     "lightrig render MODEL... [--rig RIG.json]... -o OUT.png|PATTERN|FOLDER [--size WxH] [--camera-index N | "
     "--view NAME[,NAME...]] [--turntable N [--rotate camera|lights]] [--summary FILE|-] [--quality Q] "
-    "[--supersample N] [--transparent] [--exposure EV] [--tonemap clamp|reinhard|aces] "
-    "[--shading classic|pbr] [--ground off|visible|catcher] [--shadows on|off]";
+    "[--supersample N] [--transparent] [--exposure EV] [--tonemap clamp|reinhard|aces|neutral|agx] "
+    "[--shading classic|pbr] [--ground off|visible|catcher] [--shadows on|off] [--msaa N] "
+    "[--environment FILE|builtin:NAME|studio|none] [--environment-intensity EV] "
+    "[--environment-rotation DEGREES] [--environment-background visible|blurred|color]";
 
 } // namespace
 
@@ -63,8 +65,10 @@ int runRender(const QStringList& args) {
     QCommandLineOption frames(QStringLiteral("frames"), QStringLiteral("Time N more frames."),
                               QStringLiteral("N"));
     frames.setFlags(QCommandLineOption::HiddenFromHelp);
-    QCommandLineOption msaa(QStringLiteral("msaa"), QStringLiteral("MSAA samples."), QStringLiteral("N"));
-    msaa.setFlags(QCommandLineOption::HiddenFromHelp);
+    const QCommandLineOption msaa(QStringLiteral("msaa"),
+                                  QStringLiteral("Multisample antialiasing samples per pixel, 0..32 (default "
+                                                 "4; 0 for --quality fast)."),
+                                  QStringLiteral("N"));
     const QCommandLineOption noMemoryCheck(
         QStringLiteral("no-memory-check"),
         QStringLiteral("Render even when --size and --supersample need more memory than the machine has."));
@@ -156,6 +160,21 @@ int runRender(const QStringList& args) {
     }
     const std::optional<std::vector<RenderItem>> items = planRender(request, &message);
     if (!items) return usage(message);
+    // Before anything is written: no image, nor the summary, may be a file this call reads or writes.
+    std::vector<NamedFile> inputs, outputs;
+    for (const QString& m : request.models)
+        inputs.push_back({m, QStringLiteral("the model")});
+    for (const QString& rig : request.rigs)
+        inputs.push_back({rig, QStringLiteral("the rig")});
+    inputs.push_back({environmentFileOf(request.options.environment), QStringLiteral("the environment")});
+    for (const RenderItem& item : *items)
+        outputs.push_back({item.file, QStringLiteral("the image")});
+    if (!request.summary.isEmpty() && request.summary != QLatin1String("-"))
+        outputs.push_back({request.summary, QStringLiteral("the --summary file")});
+    if (!checkDistinctFiles(inputs, outputs, &message)) {
+        err << name << ": " << message << '\n';
+        return Failed;
+    }
     // Issue 41: said, and refused beyond the machine's memory, before a byte of the image is allocated.
     if (!checkRenderMemory(estimateRender(request.options.size, ss, samples), parser.isSet(noMemoryCheck),
                            err))

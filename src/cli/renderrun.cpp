@@ -129,6 +129,12 @@ void Runner::renderModel(size_t begin, size_t end) {
     LoadedScene base;
     QString message;
     if (!loadSceneModel(modelPath, &base, &message)) return fail(begin, end, message);
+    // Its textures are known now: an image that is one of them is not written (issue 41).
+    const std::vector<NamedFile> textures = textureFilesOf(*base.model);
+    for (size_t i = begin; i < end && !textures.empty(); ++i)
+        if (!finished[i] &&
+            !checkDistinctFiles(textures, {{items[i].file, QStringLiteral("the image")}}, &message))
+            fail(i, i + 1, message);
     bool warned = false;
     for (size_t rigBegin = begin; rigBegin < end;) {
         const size_t rigEnd = runEnd(items, rigBegin, end, [](const RenderItem& item) { return item.rig; });

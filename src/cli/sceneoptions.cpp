@@ -56,13 +56,33 @@ void SceneOptionSet::addTo(QCommandLineParser& parser) const {
     parser.addOptions(environment.options());
 }
 
-std::optional<QSize> parseSize(const QString& text, int maxSide) {
-    static const QRegularExpression re(QStringLiteral("^(\\d{1,6})[xX](\\d{1,6})$"));
+std::optional<QSize> parseSize(const QString& text, int maxSide, QString* why) {
+    static const QRegularExpression re(QStringLiteral("^(\\d+)[xX](\\d+)$"));
     const QRegularExpressionMatch m = re.match(text.trimmed());
-    if (!m.hasMatch()) return std::nullopt;
-    const int w = m.captured(1).toInt(), h = m.captured(2).toInt();
-    if (w < 1 || h < 1 || w > maxSide || h > maxSide) return std::nullopt;
-    return QSize(w, h);
+    QString reason = QStringLiteral("expected WxH with sides 1..%1").arg(maxSide);
+    const auto refuse = [&] {
+        if (why) *why = reason;
+        return std::nullopt;
+    };
+    if (!m.hasMatch()) return refuse();
+    int side[2] = {0, 0};
+    for (int i = 0; i < 2; ++i) {
+        const QString digits = m.captured(i + 1);
+        bool ok = false;
+        const qulonglong v = digits.toULongLong(&ok);
+        if (!ok || v > qulonglong(maxSide)) { // past 2^64 too
+            reason = QStringLiteral("the %1 %2 is larger than the limit %3")
+                         .arg(i == 0 ? QStringLiteral("width") : QStringLiteral("height"), digits)
+                         .arg(maxSide);
+            return refuse();
+        }
+        side[i] = int(v);
+    }
+    if (side[0] < 1 || side[1] < 1) {
+        reason = QStringLiteral("each side must be at least 1");
+        return refuse();
+    }
+    return QSize(side[0], side[1]);
 }
 
 std::optional<int> viewCameraIndex(const QString& view) {
@@ -112,9 +132,9 @@ std::optional<SceneOptions> SceneOptionSet::read(const QCommandLineParser& p, QS
                            .arg(standardViewNames().join(QStringLiteral(", ")), o.view));
     }
     if (p.isSet(size)) {
-        const auto s = parseSize(p.value(size));
-        if (!s)
-            return bad(QStringLiteral("--size must be WxH with sides 1..32768, got '%1'").arg(p.value(size)));
+        QString why;
+        const auto s = parseSize(p.value(size), 32768, &why);
+        if (!s) return bad(QStringLiteral("--size: %1, got '%2'").arg(why, p.value(size)));
         o.size = *s;
     }
     if (p.isSet(quality)) {
@@ -217,15 +237,19 @@ bool loadSceneModel(const QString& modelPath, LoadedScene* scene, QString* error
     return true;
 }
 
+QString rigErrorLine(const RigReadResult& r, const QString& rigPath) {
+    QString line = r.errors.value(0, QStringLiteral("%1: cannot read the rig").arg(rigPath));
+    if (r.errorCount() > 1) line += QStringLiteral(" (and %1 more errors)").arg(r.errorCount() - 1);
+    return line;
+}
+
 bool loadSceneRig(const QString& modelPath, const SceneOptions& options, LoadedScene* scene, QString* error,
                   EnvironmentLoading loading) {
     const Model& model = *scene->model;
     if (!options.rigPath.isEmpty()) {
         const RigReadResult r = readRigFile(options.rigPath);
         if (!r.ok()) {
-            *error = r.errors.value(0, QStringLiteral("%1: cannot read the rig").arg(options.rigPath));
-            if (r.errors.size() > 1)
-                *error += QStringLiteral(" (and %1 more errors)").arg(r.errors.size() - 1);
+            *error = rigErrorLine(r, options.rigPath);
             return false;
         }
         scene->rig = options.shading ? withShading(*r.rig, *options.shading) : *r.rig;

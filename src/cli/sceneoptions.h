@@ -16,6 +16,7 @@
 
 #include "core/quality.h"
 #include "core/rig.h"
+#include "core/rigjson.h"
 #include "model/model.h"
 #include "render/camera.h"
 #include "render/renderer.h"
@@ -104,12 +105,18 @@ bool chooseSceneCamera(const QString& modelPath, const SceneOptions& options, Lo
 // "cameraN" or "N" -> N; nullopt for anything else (a --view list entry naming a model camera).
 std::optional<int> viewCameraIndex(const QString& view);
 
+// A rig that does not read, in one line: its first error and "(and N more errors)", N counting the errors
+// not listed too (issue 41: 16,384 errors read "(and 200 more errors)").
+QString rigErrorLine(const RigReadResult& result, const QString& rigPath);
+
 // Gives the renderer the scene's rig and its environment (Renderer::setRig, setEnvironment): the loaded
 // one, or its load (environmentLoad), started here when it was not.
 void showScene(Renderer& renderer, const LoadedScene& scene);
 
 // "WxH" with both sides in 1..maxSide.
-std::optional<QSize> parseSize(const QString& text, int maxSide = 32768);
+// *why (when given) tells a side past maxSide ("the width 1234567890 is larger than the limit 32768")
+// from text that is not WxH at all.
+std::optional<QSize> parseSize(const QString& text, int maxSide = 32768, QString* why = nullptr);
 
 // DISPLAY, WAYLAND_DISPLAY or an explicit QT_QPA_PLATFORM: a platform that may offer OpenGL.
 bool haveDisplay();

@@ -262,8 +262,7 @@ GltfRewriteResult rewriteGltfJson(const QByteArray& s, const GltfAdditions& add)
                 "extras is not an object: the note (environment, ambient) is not written");
     }
     // Buffers and images: the BIN chunk as a data: URI, file URIs rebased to the output's folder.
-    const bool rebase = !add.sourceFolder.isEmpty() && !add.outputFolder.isEmpty() &&
-                        QDir(add.sourceFolder).absolutePath() != QDir(add.outputFolder).absolutePath();
+    const bool rebase = !add.sourceFolder.isEmpty() && !add.outputFolder.isEmpty();
     int rebased = 0;
     for (const QString& key : {QStringLiteral("buffers"), QStringLiteral("images")}) {
         const json::Value* array = root.find(key);
@@ -281,7 +280,11 @@ GltfRewriteResult rewriteGltfJson(const QByteArray& s, const GltfAdditions& add)
                     add.embedBinAsUri.left(qsizetype(std::min(n, double(add.embedBinAsUri.size()))));
                 value = "\"data:application/octet-stream;base64," + data.toBase64() + '"';
             } else if (rebase && uri && uri->kind == K::String) {
-                const QString moved = rebaseUri(uri->string, add.sourceFolder, add.outputFolder);
+                QString problem;
+                const QString moved = rebaseUri(uri->string, add.sourceFolder, add.outputFolder, &problem);
+                if (!problem.isEmpty())
+                    r.notes
+                        << QStringLiteral("%1[%2].uri \"%3\": %4").arg(key).arg(i).arg(uri->string, problem);
                 if (moved != uri->string) {
                     value = json::quote(moved);
                     ++rebased;

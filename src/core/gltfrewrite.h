@@ -45,8 +45,9 @@ struct GltfAdditions {
     std::optional<GltfCamera> camera;
     QJsonObject note;         // extras.lightrig (skipped when empty)
     QByteArray embedBinAsUri; // non-empty: buffers[0] gets this as a data: URI (GLB in, .gltf out)
-    // Both set and different: relative file URIs of buffers and images are rewritten to name the same files
-    // from the output's folder (an export written elsewhere than its source).
+    // Both set: relative file URIs of buffers and images are rewritten to name the same files from the
+    // output's folder (an export written elsewhere than its source), Windows paths fixed (rebaseUri), and a
+    // file a viewer will not find is a note.
     QString sourceFolder, outputFolder;
 };
 
@@ -66,7 +67,11 @@ QByteArray lightsOnlyGltfJson(const GltfAdditions& additions);
 // The URIs of buffers and images that name files (not data: URIs).
 QStringList externalUris(const QByteArray& json);
 // A relative file URI as seen from `outputFolder` instead of `sourceFolder` (percent-encoded as glTF wants);
-// data: URIs, URIs with a scheme and absolute paths are returned as they are.
-QString rebaseUri(const QString& uri, const QString& sourceFolder, const QString& outputFolder);
+// data: URIs, URIs with a scheme and absolute paths are returned as they are. Issue 41: Windows separators
+// (`.\tex.png`) become '/', a Windows drive path (`D:\maps\tex.png`) the file of that name beside the
+// model when there is one; *problem (when given) says why a viewer will not find the file (a drive path
+// without that file, a missing file), else is cleared. Same folder: unchanged but for those two fixes.
+QString rebaseUri(const QString& uri, const QString& sourceFolder, const QString& outputFolder,
+                  QString* problem = nullptr);
 
 } // namespace lr

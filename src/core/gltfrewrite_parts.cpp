@@ -2,7 +2,9 @@
 #include "gltfrewrite.h"
 
 #include <QDir>
+#include <QFileInfo>
 #include <QJsonDocument>
+#include <QRegularExpression>
 #include <QUrl>
 #include <QtEndian>
 
@@ -114,12 +116,36 @@ QByteArray lightsOnlyGltfJson(const GltfAdditions& add) {
     return QJsonDocument(root).toJson(QJsonDocument::Compact);
 }
 
-QString rebaseUri(const QString& uri, const QString& sourceFolder, const QString& outputFolder) {
+QString rebaseUri(const QString& uri, const QString& sourceFolder, const QString& outputFolder,
+                  QString* problem) {
+    if (problem) problem->clear();
+    static const QRegularExpression drive(QStringLiteral("^[A-Za-z]:[\\\\/]"));
+    const bool windowsDrive = drive.match(uri).hasMatch();
     const QUrl url(uri);
-    if (uri.startsWith(QLatin1String("data:")) || !url.scheme().isEmpty() || uri.startsWith(QLatin1Char('/')))
-        return uri;
-    const QString file = QDir(sourceFolder).absoluteFilePath(QUrl::fromPercentEncoding(uri.toUtf8()));
-    const QString moved = QDir(outputFolder).relativeFilePath(QDir::cleanPath(file));
+    if (uri.startsWith(QLatin1String("data:")) || (!url.scheme().isEmpty() && !windowsDrive)) return uri;
+    // Windows separators: `.\tex.png` names tex.png (percent-encoded, the backslash stayed in the name).
+    QString path = QUrl::fromPercentEncoding(uri.toUtf8()).replace(QLatin1Char('\\'), QLatin1Char('/'));
+    const QDir source(sourceFolder);
+    if (windowsDrive) {
+        // Another machine's absolute path: the file of that name beside the model, when there is one.
+        const QString name = path.section(QLatin1Char('/'), -1);
+        if (name.isEmpty() || !QFileInfo::exists(source.absoluteFilePath(name))) {
+            if (problem)
+                *problem =
+                    QStringLiteral("a Windows drive path, and no file %1 lies beside the model; viewers "
+                                   "will not find it")
+                        .arg(name);
+            return uri;
+        }
+        path = name;
+    }
+    const QString file = QDir::cleanPath(source.absoluteFilePath(path));
+    if (problem && !QFileInfo::exists(file))
+        *problem = QStringLiteral("no such file beside the model (%1); viewers will not find it").arg(file);
+    if (uri.startsWith(QLatin1Char('/'))) return uri;
+    const bool sameFolder = QDir(sourceFolder).absolutePath() == QDir(outputFolder).absolutePath();
+    if (sameFolder && !windowsDrive && !uri.contains(QLatin1Char('\\'))) return uri; // byte for byte
+    const QString moved = QDir(outputFolder).relativeFilePath(file);
     return QString::fromUtf8(QUrl::toPercentEncoding(moved, "/"));
 }
 

@@ -59,7 +59,10 @@ struct RigReadResult {
     std::optional<Rig> rig; // set only when errors is empty
     QStringList errors;     // "FILE: lights[2].falloff.range: must be a finite number > 0, got -5"
     QStringList warnings;   // unknown keys and the like, same format
+    int unlistedErrors = 0; // errors past the listed ones (errors ends "FILE: N more errors not listed")
     bool ok() const { return rig.has_value(); }
+    // Every error found, listed or not (the "N more errors not listed" line is not one).
+    int errorCount() const { return int(errors.size()) - (unlistedErrors ? 1 : 0) + unlistedErrors; }
 };
 
 // displayName is the FILE part of messages (usually the file name as the user gave it).

@@ -65,6 +65,7 @@ RigReadResult Checker::result(std::optional<Rig> rig) const {
     RigReadResult r;
     r.errors = m_errors;
     r.warnings = m_warnings;
+    r.unlistedErrors = m_droppedErrors;
     if (m_droppedErrors)
         r.errors << QStringLiteral("%1: %2 more errors not listed").arg(m_file).arg(m_droppedErrors);
     if (m_droppedWarnings)

@@ -200,7 +200,18 @@ QString checkRgbeData(QByteArrayView data, qint64 w, qint64 h) {
 
 // Radiance RGBE: the header parsed here (limits, a lower bound on the data size), the pixels by stb.
 QString decodeHdr(QByteArrayView bytes, EnvironmentImage* image) {
-    const qsizetype end = QByteArrayView(bytes).indexOf("\n\n");
+    qsizetype end = bytes.indexOf("\n\n");
+    // A header written with CRLF line ends (Windows tools): its lines read with LF, as stb reads them;
+    // the pixels after the resolution line are not touched.
+    QByteArray lf;
+    if (const qsizetype crlf = bytes.indexOf("\r\n\r\n"); crlf >= 0 && (end < 0 || crlf < end)) {
+        if (const qsizetype resolutionEnd = bytes.indexOf('\n', crlf + 4); resolutionEnd >= 0) {
+            lf = bytes.first(resolutionEnd + 1).toByteArray().replace("\r\n", "\n");
+            lf += bytes.sliced(resolutionEnd + 1);
+            bytes = lf;
+            end = bytes.indexOf("\n\n");
+        }
+    }
     if (end < 0) return QStringLiteral("its Radiance header does not end");
     const qsizetype lineEnd = bytes.indexOf('\n', end + 2);
     const QByteArrayView resolution =

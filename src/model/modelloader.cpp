@@ -1,5 +1,6 @@
 #include "modelloader.h"
 
+#include "gltfcameras.h"
 #include "importdetail.h"
 
 #include <QElapsedTimer>
@@ -131,6 +132,7 @@ ModelLoadResult import(const QString& path, const ModelLoadOptions& options) {
     }
     detail::convertMaterials(scene, folder, options.maxDataUriBytes, detail::materialSource(path), *model);
     detail::convertLightsAndCameras(scene, gltf, name, *model);
+    if (gltf) sortCamerasAsGltf(gltfJsonOf(folder.modelFile()), model->cameras); // glTF's numbering
     if (!progress.report(1.0)) return failure(path, QStringLiteral("cancelled"), true);
     model->loadMs = double(timer.nsecsElapsed()) / 1e6;
     ModelLoadResult result;

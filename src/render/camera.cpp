@@ -86,6 +86,16 @@ ViewCamera ViewCamera::withClipPlanes(const glm::dvec3& center, double radius) c
     return c;
 }
 
+ViewCamera ViewCamera::withExportClipPlanes(const glm::dvec3& center, double radius) const {
+    ViewCamera c = *this;
+    if (znear > 0.0) return c;
+    const double r = radius > 0.0 && std::isfinite(radius) ? radius * 1.5 : 1.5;
+    const double depth = glm::dot(center - eye, forward());
+    c.zfar = depth + r > 0.0 ? depth + r : r;
+    c.znear = std::max(depth - r, c.zfar * 1e-4);
+    return c;
+}
+
 void ViewCamera::orbit(double yawDeg, double pitchDeg) {
     const glm::dvec3 worldUp = safeNormalize(up, glm::dvec3(0, 1, 0));
     glm::dvec3 offset = eye - target;

@@ -33,6 +33,11 @@ struct ViewCamera {
 
     // This camera with near/far planes that enclose the sphere (when znear <= 0; explicit planes are kept).
     ViewCamera withClipPlanes(const glm::dvec3& center, double radius) const;
+    // For a camera another program uses as written (an exported glTF camera, issue 41): planes that enclose
+    // the sphere grown by half its radius again, the near plane no closer than 1/10,000 of the far one (a
+    // viewer's depth buffer); planes tight on the sphere clipped the model in three.js. Explicit planes
+    // (znear > 0, a file's own camera) are kept.
+    ViewCamera withExportClipPlanes(const glm::dvec3& center, double radius) const;
 
     // Interaction. Angles in degrees; pan offsets in fractions of the viewport height.
     void orbit(double yawDeg, double pitchDeg);

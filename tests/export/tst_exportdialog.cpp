@@ -3,7 +3,9 @@
 // only" writes no meshes, and a failure is an error box that names the reason with nothing written.
 #include "app/errordialog.h"
 #include "app/gltfexportdialog.h"
+#include "app/scene.h"
 #include "app/startwindow.h"
+#include "app/viewport.h"
 #include "core/gltfrewrite.h"
 #include "support/files.h"
 
@@ -12,6 +14,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
 #include <QMenuBar>
@@ -69,6 +72,59 @@ class TestExportDialog : public QObject {
         m_window->document()->undoStack()->setClean();
         m_window.reset();
         setErrorPresenter({});
+    }
+
+    // Issue 41: the path's label is a mnemonic (a buddy), not "&File:" with the ampersand shown.
+    void fileLabelIsAMnemonic() {
+        GltfExportDialog dialog({}, QStringLiteral("/tmp/x.glb"));
+        QLabel* label = nullptr;
+        for (QLabel* l : dialog.findChildren<QLabel*>())
+            if (l->text() == QStringLiteral("&File:")) label = l;
+        QVERIFY(label);
+        QCOMPARE(label->buddy(), dialog.pathEdit());
+    }
+
+    // Issue 41: the export is not proposed inside the model's folder; once exported somewhere, that folder
+    // is proposed next time (QSettings "export/lastGltfDir").
+    void proposesTheLastExportFolderNotTheModels() {
+        QVERIFY(QDir(m_dir.path()).mkpath(QStringLiteral("exports")));
+        const QString out = m_dir.filePath(QStringLiteral("exports/first.glb"));
+        QString first, second;
+        runExport([&](GltfExportDialog* d) {
+            first = d->path();
+            d->pathEdit()->setText(out);
+        });
+        QVERIFY2(m_errors.isEmpty(), qPrintable(m_errors.value(0).details.join(QLatin1Char('\n'))));
+        QVERIFY(QFile::exists(out));
+        QVERIFY(first.endsWith(QStringLiteral("/Suzanne-lightrig.glb")));
+        QVERIFY2(QFileInfo(first).absolutePath() != QFileInfo(m_window->scene()->path()).absolutePath(),
+                 qPrintable(first));
+        runExport([&](GltfExportDialog* d) {
+            second = d->path();
+            d->pathEdit()->setText(m_dir.filePath(QStringLiteral("exports/second.glb")));
+        });
+        QCOMPARE(QFileInfo(second).absolutePath(), m_dir.filePath(QStringLiteral("exports")));
+    }
+
+    // Issue 41: the exported view camera's planes enclose the model's bounding sphere with half its radius
+    // to spare (planes at depth ± 1.02 r clipped it in three.js), the near plane no closer than 1/10,000
+    // of the far one.
+    void exportedCameraEnclosesTheModel() {
+        const QString out = m_dir.filePath(QStringLiteral("exports/camera.gltf"));
+        runExport([&](GltfExportDialog* d) { d->pathEdit()->setText(out); });
+        QVERIFY(m_errors.isEmpty());
+        const QJsonObject root = QJsonDocument::fromJson(lrtest::readFile(out)).object();
+        const QJsonObject p = root[QStringLiteral("cameras")][0][QStringLiteral("perspective")].toObject();
+        const double znear = p[QStringLiteral("znear")].toDouble(),
+                     zfar = p[QStringLiteral("zfar")].toDouble();
+        const ViewCamera view = m_window->viewport()->camera();
+        const SceneFrame frame = m_window->scene()->frame();
+        const double depth = glm::dot(frame.center - view.eye, view.forward());
+        QVERIFY2(zfar >= depth + 1.4 * frame.radius,
+                 qPrintable(QStringLiteral("%1 %2").arg(zfar).arg(depth)));
+        QVERIFY2(znear <= std::max(depth - 1.4 * frame.radius, zfar * 1.01e-4),
+                 qPrintable(QStringLiteral("%1 %2").arg(znear).arg(depth)));
+        QVERIFY(znear >= zfar * 0.99e-4);
     }
 
     void listsLossesAndWritesTheModel() {

@@ -85,6 +85,23 @@ class TestEnvironmentDecode : public QObject {
         QCOMPARE(rle.warnings.size(), 1);
         QVERIFY2(rle.warnings[0].startsWith("rle.hdr: 16×2 is not 2:1"), qPrintable(rle.warnings[0]));
     }
+    // Issue 41: a header with CRLF line ends (written on Windows) decodes as the LF one; it was refused as
+    // "its Radiance header does not end". The pixels after the resolution line are binary and kept.
+    void hdrWithCrlfHeader() {
+        for (const QString file : {"tiny.hdr", "rle.hdr"}) {
+            const QByteArray lf = readData(file);
+            const qsizetype blank = lf.indexOf("\n\n");
+            const qsizetype headerEnd = lf.indexOf('\n', blank + 2) + 1;
+            QVERIFY(blank > 0 && headerEnd > blank);
+            const QByteArray crlf = lf.first(headerEnd).replace("\n", "\r\n") + lf.sliced(headerEnd);
+            const EnvironmentDecodeResult want = decodeEnvironment(lf, file);
+            const EnvironmentDecodeResult got = decodeEnvironment(crlf, file);
+            QVERIFY2(got.ok(), qPrintable(got.error));
+            QCOMPARE(got.image.width, want.image.width);
+            QCOMPARE(got.image.height, want.image.height);
+            QVERIFY(got.image.texels == want.image.texels);
+        }
+    }
     void sanitised() {
         const EnvironmentDecodeResult r = decodeEnvironment(readData("nonfinite.exr"), "sky.exr");
         QVERIFY2(r.ok(), qPrintable(r.error));

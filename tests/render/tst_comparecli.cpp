@@ -6,6 +6,7 @@
 #include "core/imagecompare.h"
 #include "glfixture.h"
 #include "support/cli.h"
+#include "support/files.h"
 
 #include <QDir>
 #include <QFile>
@@ -141,6 +142,48 @@ class TestCompareCli : public QObject {
         QCOMPARE(s.size(), QSize(96, 36));
         QCOMPARE(s.copy(0, 0, 48, 36), ia);
         QCOMPARE(s.copy(48, 0, 48, 36), ib);
+    }
+
+    // Issue 41: exit 1 means nothing was written. The side-by-side image's name leaves no room for the
+    // temporary beside it (NAME_MAX), so its write fails after the other two were written: they get their
+    // previous bytes back.
+    void failedWrite_leavesEveryOutputAsItWas() {
+        LR_REQUIRE_DISPLAY();
+        const QString diff = path(QStringLiteral("kept-diff.png")), a = path(QStringLiteral("kept-a.png"));
+        const QString tooLong = path(QString(240, QLatin1Char('x')) + QStringLiteral(".png"));
+        write(QStringLiteral("kept-diff.png"), "previous diff");
+        write(QStringLiteral("kept-a.png"), "previous a");
+        const Run r =
+            compare({suzanne(), path(QStringLiteral("a.json")), path(QStringLiteral("b.json")),
+                     QStringLiteral("-o"), diff, QStringLiteral("-a"), a, QStringLiteral("--side-by-side"),
+                     tooLong, QStringLiteral("--size"), QStringLiteral("32x24")});
+        QVERIFY2(r.code == 1, qPrintable(r.show()));
+        QVERIFY2(r.err.contains(QStringLiteral("cannot write ") + tooLong), qPrintable(r.show()));
+        QCOMPARE(lrtest::readFile(diff), QByteArray("previous diff"));
+        QCOMPARE(lrtest::readFile(a), QByteArray("previous a"));
+        QVERIFY(!QFile::exists(tooLong));
+        QCOMPARE(QDir(m_dir.path()).entryList({QStringLiteral("*.tmp")}, QDir::Files), QStringList());
+    }
+
+    // Issue 41: two outputs that are one file (another spelling), or an output that is an input, are
+    // refused before anything is written.
+    void outputThatIsAnInputOrAnotherOutput_isRefused() {
+        const QString a = path(QStringLiteral("one.png"));
+        write(QStringLiteral("one.png"), "previous");
+        Run r = compare({suzanne(), path(QStringLiteral("a.json")), path(QStringLiteral("b.json")),
+                         QStringLiteral("-a"), a, QStringLiteral("-b"),
+                         m_dir.path() + QStringLiteral("/./one.png"), QStringLiteral("--size"),
+                         QStringLiteral("32x24")});
+        QVERIFY2(r.code == 1 && r.err.contains(QLatin1String("it is also the --image-a image")),
+                 qPrintable(r.show()));
+        QCOMPARE(lrtest::readFile(a), QByteArray("previous"));
+        QVERIFY(QFile::link(path(QStringLiteral("a.json")), path(QStringLiteral("rig-a.png"))));
+        const QByteArray rigA = lrtest::readFile(path(QStringLiteral("a.json")));
+        r = compare({suzanne(), path(QStringLiteral("a.json")), path(QStringLiteral("b.json")),
+                     QStringLiteral("-o"), path(QStringLiteral("rig-a.png")), QStringLiteral("--size"),
+                     QStringLiteral("32x24")});
+        QVERIFY2(r.code == 1 && r.err.contains(QLatin1String("it is rig A")), qPrintable(r.show()));
+        QCOMPARE(lrtest::readFile(path(QStringLiteral("a.json"))), rigA);
     }
 
     void badRig_exit1NamingTheRigAndWritingNothing() {

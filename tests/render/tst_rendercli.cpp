@@ -7,6 +7,7 @@
 #include "glfixture.h"
 #include "model/isolatedimport.h"
 #include "support/cli.h"
+#include "support/files.h"
 
 #include <QDir>
 #include <QFile>
@@ -15,6 +16,7 @@
 #include <QTest>
 #include <sys/stat.h>
 #include <tuple>
+#include <unistd.h>
 
 namespace {
 
@@ -147,6 +149,38 @@ class TestRenderCli : public QObject {
         QVERIFY(!QFile::exists(QStringLiteral("/tmp/never-written.png")));
     }
 
+    // Issue 41: --help lists --msaa and its usage line the environment options; a side of 10 digits is
+    // "larger than the limit", not a syntax error.
+    void helpAndSizeMessages() {
+        const Run help = lightrig({QStringLiteral("--help")});
+        QCOMPARE(help.code, 0);
+        const QString usage = help.lines().value(0);
+        for (const char* option : {"[--msaa N]", "[--environment FILE|builtin:NAME|studio|none]",
+                                   "[--environment-background visible|blurred|color]", "neutral|agx"})
+            QVERIFY2(usage.contains(QLatin1String(option)), option);
+        QVERIFY2(help.out.contains(QLatin1String("--msaa <N>")), qPrintable(help.out));
+        const Run big = lightrig({suzanne(), QStringLiteral("-o"), QStringLiteral("/tmp/never-written.png"),
+                                  QStringLiteral("--size"), QStringLiteral("1234567890x10")});
+        QCOMPARE(big.code, 2);
+        QVERIFY2(big.err.contains(QLatin1String("the width 1234567890 is larger than the limit 32768")),
+                 qPrintable(big.show()));
+    }
+
+    // Issue 41: a rig of 1,000 errors says "(and 999 more errors)", not the 200 it lists.
+    void everyRigErrorIsCounted() {
+        LR_REQUIRE_DISPLAY();
+        QByteArray lights;
+        for (int i = 0; i < 1000; ++i)
+            lights += QByteArray(i ? "," : "") + "{\"type\": \"laser\"}";
+        QVERIFY(
+            lrtest::writeFile(path(QStringLiteral("many.json")),
+                              "{\"format\": \"lightrig\", \"version\": 1, \"lights\": [" + lights + "]}"));
+        const Run r = lightrig({suzanne(), QStringLiteral("--rig"), path(QStringLiteral("many.json")),
+                                QStringLiteral("-o"), path(QStringLiteral("never-many.png"))});
+        QCOMPARE(r.code, 1);
+        QVERIFY2(r.err.contains(QLatin1String("(and 999 more errors)")), qPrintable(r.show()));
+    }
+
     void failuresExit1AndWriteNothing_data() {
         QTest::addColumn<QStringList>("args");
         QTest::addColumn<QString>("mentions");
@@ -252,6 +286,67 @@ class TestRenderCli : public QObject {
         QVERIFY2(r.err.contains(QLatin1String("needs an X display; run it under xvfb-run -a")),
                  qPrintable(r.show()));
         QVERIFY(!QFile::exists(path(QStringLiteral("nodisplay.png"))));
+    }
+
+    // Issue 41: an output that is one of the inputs (the model, the rig) or another output (an image and
+    // --summary) is refused before anything is written, whatever its spelling: "./", a symbolic link or a
+    // hard link name the same file.
+    void outputThatIsAnInputIsRefused_data() {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<QString>("mentions");
+        QDir(m_dir.path()).mkpath(QStringLiteral("same"));
+        const QString dir = path(QStringLiteral("same/"));
+        const QString model = dir + QStringLiteral("Suzanne.gltf"), rig = dir + QStringLiteral("rig.json");
+        const QString image = dir + QStringLiteral("image.png");
+        const QString o = QStringLiteral("-o"), summary = QStringLiteral("--summary");
+        QTest::newRow("summary is the rig")
+            << QStringList{model, QStringLiteral("--rig"), rig, o, image, summary, rig}
+            << QStringLiteral("the rig");
+        QTest::newRow("summary is the model, spelled ./")
+            << QStringList{model, o, image, summary, dir + QStringLiteral("./Suzanne.gltf")}
+            << QStringLiteral("the model");
+        QTest::newRow("summary is the image")
+            << QStringList{model, o, image, summary, dir + QStringLiteral("../same/image.png")}
+            << QStringLiteral("the image");
+        QTest::newRow("image is a link to the rig")
+            << QStringList{model, QStringLiteral("--rig"), rig, o, dir + QStringLiteral("rig-link.png")}
+            << QStringLiteral("the rig");
+        QTest::newRow("summary is a hard link to the model")
+            << QStringList{model, o, image, summary, dir + QStringLiteral("model-hardlink.json")}
+            << QStringLiteral("the model");
+        QTest::newRow("image is the model's texture") // known once the model is imported
+            << QStringList{model, o, dir + QStringLiteral("Suzanne_BaseColor.png")}
+            << QStringLiteral("the model's texture");
+    }
+    void outputThatIsAnInputIsRefused() {
+        QFETCH(QStringList, args);
+        QFETCH(QString, mentions);
+        if (mentions.contains(QLatin1String("texture"))) LR_REQUIRE_DISPLAY();
+        const QString dir = path(QStringLiteral("same/"));
+        const QString suzanneDir = QStringLiteral(LIGHTRIG_SOURCE_DIR "/resources/models/suzanne/");
+        for (const QString& f : QDir(suzanneDir).entryList(QDir::Files))
+            QVERIFY(lrtest::copyWritable(suzanneDir + f, dir + f));
+        QVERIFY(lrtest::writeFile(dir + QStringLiteral("rig.json"), lr::writeRigJson(lr::pbrDefaultRig())));
+        QVERIFY(lrtest::writeFile(dir + QStringLiteral("image.png"), "previous"));
+        QFile::remove(dir + QStringLiteral("rig-link.png"));
+        QFile::remove(dir + QStringLiteral("model-hardlink.json"));
+        QVERIFY(QFile::link(dir + QStringLiteral("rig.json"), dir + QStringLiteral("rig-link.png")));
+        QVERIFY(::link(QFile::encodeName(dir + QStringLiteral("Suzanne.gltf")).constData(),
+                       QFile::encodeName(dir + QStringLiteral("model-hardlink.json")).constData()) == 0);
+        const QByteArray model = lrtest::readFile(dir + QStringLiteral("Suzanne.gltf"));
+        const QByteArray rig = lrtest::readFile(dir + QStringLiteral("rig.json"));
+        const Run r = lightrig(args + QStringList{QStringLiteral("--size"), QStringLiteral("32x24")});
+        QVERIFY2(r.code == 1, qPrintable(r.show()));
+        QVERIFY2(r.errorLines().size() == 1 &&
+                     r.errorLines().first().contains(QLatin1String("cannot write")) &&
+                     r.errorLines().first().contains(mentions),
+                 qPrintable(r.show()));
+        QCOMPARE(lrtest::readFile(dir + QStringLiteral("Suzanne.gltf")), model);
+        QCOMPARE(lrtest::readFile(dir + QStringLiteral("rig.json")), rig);
+        QCOMPARE(lrtest::readFile(dir + QStringLiteral("image.png")), QByteArray("previous"));
+        QCOMPARE(lrtest::readFile(dir + QStringLiteral("Suzanne_BaseColor.png")),
+                 lrtest::readFile(
+                     QStringLiteral(LIGHTRIG_SOURCE_DIR "/resources/models/suzanne/Suzanne_BaseColor.png")));
     }
 
     void writesPngAndJpeg() {
