@@ -97,10 +97,14 @@ EnvironmentLight lightFromEnvironment(const EnvironmentImage& image, double rota
                            .arg(peak / mean, 0, 'f', 2)
                            .arg(options.minContrast));
 
-    // The region: connected texels of at least half the peak, within the cap around the peak.
+    // The region: connected texels that stand out from the environment as the peak does (minContrast ×
+    // the mean) and are at least spotFraction of the peak, within the cap around the peak. A light's
+    // dimmer housing or falloff belongs to it (issue 41: on studio.exr a threshold of half the peak left
+    // the panel's bright frame as a ring around the dimmed hole).
     const glm::dvec3 peakDir = texelDirection(px, py, w, h);
     const double cosCap = std::cos(radians(std::clamp(options.maxSpotDegrees, 0.1, 90.0)));
-    const double threshold = std::clamp(options.spotFraction, 0.01, 1.0) * peak;
+    const double threshold = std::min(
+        peak, std::max(options.minContrast * mean, std::clamp(options.spotFraction, 0.0, 1.0) * peak));
     std::vector<unsigned char> seen(size_t(w) * size_t(h), 0);
     std::vector<std::pair<int, int>> stack{{px, py}}, region;
     seen[size_t(py) * size_t(w) + size_t(px)] = 1;

@@ -3,7 +3,8 @@
 // dimmed spot (EnvironmentSpot) so the environment does not light the model twice.
 //
 // The spot: the brightest texel within `searchDegrees` of the clicked direction, grown (4-connected, across
-// the image's left/right seam) over the texels of at least `spotFraction` of its luminance, no farther than
+// the image's left/right seam) over the texels that stand out as it does (at least `minContrast` × the
+// environment's mean luminance) and have at least `spotFraction` of its luminance, no farther than
 // `maxSpotDegrees` from it. The dimmed spot is the cone around the region's centroid that holds the region,
 // keyed to that same luminance (EnvironmentSpot::threshold), so it dims the footprint and nothing of the
 // darker surroundings; the light is exactly what that spot removes (issue 41). By the definition above
@@ -25,7 +26,7 @@ namespace lr {
 struct EnvironmentLightOptions {
     double searchDegrees = 15.0;  // where the brightest texel is looked for, around the click
     double maxSpotDegrees = 30.0; // the region's cap, around its brightest texel
-    double spotFraction = 0.5;    // the region: texels of at least this × the peak's luminance
+    double spotFraction = 0.01;   // the region: texels of at least this × the peak's luminance
     double minContrast = 2.0;     // peak / the environment's mean luminance
 };
 
