@@ -35,6 +35,32 @@ vec3 envRadiance(vec3 dirView, float lod) {
     return uEnvScale * textureLod(uEnvSpecular, envUv(d), l).rgb;
 }
 
+#ifdef LR_ENVIRONMENT_BACKGROUND
+// The sharp background (chain level 0) filtered with a cubic B-spline instead of bilinearly: magnified,
+// a bilinear lookup's kinks at every texel border turn a bright edge into stair steps once tone mapped; the
+// B-spline is smooth across texels (four bilinear taps, Sigg & Hadwiger 2005, GPU Gems 2 ch. 20).
+vec3 envRadianceSmooth(vec3 dirView) {
+    vec3 d = safeNormalize(uEnvFromView * dirView, vec3(0.0, 1.0, 0.0));
+    vec2 size = vec2(textureSize(uEnvSpecular, 0));
+    vec2 p = envUv(d) * size - 0.5;
+    vec2 i = floor(p);
+    vec2 f = p - i;
+    vec2 f2 = f * f, f3 = f2 * f;
+    vec2 w0 = (1.0 - 3.0 * f + 3.0 * f2 - f3) / 6.0;
+    vec2 w1 = (4.0 - 6.0 * f2 + 3.0 * f3) / 6.0;
+    vec2 w2 = (1.0 + 3.0 * f + 3.0 * f2 - 3.0 * f3) / 6.0;
+    vec2 w3 = f3 / 6.0;
+    vec2 g0 = w0 + w1, g1 = w2 + w3;
+    vec2 h0 = (i - 0.5 + w1 / g0) / size;  // texel centres at (i + 0.5) / size
+    vec2 h1 = (i + 1.5 + w3 / g1) / size;
+    vec3 c = g0.y * (g0.x * textureLod(uEnvSpecular, vec2(h0.x, h0.y), 0.0).rgb +
+                     g1.x * textureLod(uEnvSpecular, vec2(h1.x, h0.y), 0.0).rgb) +
+             g1.y * (g0.x * textureLod(uEnvSpecular, vec2(h0.x, h1.y), 0.0).rgb +
+                     g1.x * textureLod(uEnvSpecular, vec2(h1.x, h1.y), 0.0).rgb);
+    return uEnvScale * c;
+}
+#endif
+
 #endif
 
 #if defined(LR_ENVIRONMENT) && defined(LR_SHADING)

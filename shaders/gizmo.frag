@@ -4,8 +4,11 @@
 // 4 rect (square; also the size handles of a selected rect or disk light), 5 disk (disc in a square frame);
 // +8: selected (white outline). Lines of shape 16 (kGridShape, gizmos.h) are the ground grid: hidden parts
 // are dropped (the model occludes its ground) and the grid fades out with distance from the eye between
-// uGridFade.x and uGridFade.y, as Blender's does.
+// uGridFade.x and uGridFade.y, as Blender's does. uHalo: the lines drawn dark, a pixel aside, under
+// their own colour (pass_overlay.cpp), so a white gizmo stays visible on a bright environment; the
+// icons have a dark rim of their own (a selected one a white ring inside it).
 uniform sampler2D uSceneDepth;
+uniform bool uHalo;
 uniform bool uHasDepth;
 uniform bool uPoints;
 uniform vec2 uGridFade;
@@ -39,10 +42,14 @@ void main() {
             inside = r < 0.8;
         }
         if (inside) c = vec4(c.rgb, 1.0);
-        else if (r > 0.8) c = selected ? vec4(1.0, 1.0, 1.0, 1.0) : vec4(0.0, 0.0, 0.0, 0.85);
+        else if (r > 0.8) c = selected && r < 0.92 ? vec4(1.0, 1.0, 1.0, 1.0) : vec4(0.0, 0.0, 0.0, 0.85);
         else c = vec4(0.0, 0.0, 0.0, 0.35);
     }
     bool grid = !uPoints && vShape == 16;
+    if (uHalo) {
+        if (grid) discard;
+        c = vec4(0.0, 0.0, 0.0, 0.55 * c.a);
+    }
     if (uHasDepth) {
         float sceneDepth = texelFetch(uSceneDepth, ivec2(gl_FragCoord.xy), 0).r;
         if (gl_FragCoord.z > sceneDepth + 1e-6) {

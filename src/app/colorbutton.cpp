@@ -51,7 +51,8 @@ void ColorButton::pick() {
     const double scale = m_mixed ? 1.0 : hdrScale(m_color);
     QColorDialog dialog(initial, this);
     dialog.setObjectName(QStringLiteral("colorDialog"));
-    dialog.setWindowTitle(tr("Light colour"));
+    // The dialog's numbers and hex are sRGB; the rig's (and this button's) are linear: both say which.
+    dialog.setWindowTitle(tr("Colour (sRGB; the rig stores linear RGB)"));
     // Live preview: every colour the dialog shows is announced, so the viewport can follow it.
     emit previewStarted();
     connect(&dialog, &QColorDialog::currentColorChanged, this, [this, scale](const QColor& c) {
@@ -80,13 +81,14 @@ void ColorButton::updateSwatch() {
         setText(tr("(mixed)"));
         setToolTip(tr("The selected lights have different colours"));
     } else {
-        setText(QStringLiteral("%1, %2, %3")
-                    .arg(m_color.r, 0, 'g', 3)
-                    .arg(m_color.g, 0, 'g', 3)
-                    .arg(m_color.b, 0, 'g', 3));
-        setToolTip(
-            tr("Linear RGB %1. Click to choose a colour%2")
-                .arg(text(), hdrScale(m_color) > 1.0 ? tr(" (its HDR brightness is kept)") : QString()));
+        const QString linear = QStringLiteral("%1, %2, %3")
+                                   .arg(m_color.r, 0, 'g', 3)
+                                   .arg(m_color.g, 0, 'g', 3)
+                                   .arg(m_color.b, 0, 'g', 3);
+        setText(tr("linear %1").arg(linear));
+        setToolTip(tr("Linear RGB %1 (sRGB %2 in the colour dialog). Click to choose a colour%3")
+                       .arg(linear, toDisplay(m_color).name(),
+                            hdrScale(m_color) > 1.0 ? tr(" (its HDR brightness is kept)") : QString()));
     }
 }
 

@@ -1,7 +1,8 @@
 // A button showing a linear-RGB colour swatch; clicking opens QColorDialog. HDR colours (components > 1,
 // e.g. the book's red light of 15) keep their brightness: the dialog edits the colour divided by its
 // largest component (when > 1) and the result is scaled back, so OK without a change changes nothing.
-// While the dialog is open every colour it shows is announced (colorPreviewed) for a live preview.
+// While the dialog is open every colour it shows is announced (colorPreviewed) for a live preview. The
+// button reads "linear 1, 0.9, 0.8" and the dialog's title says its values are sRGB (issue 41).
 #pragma once
 
 #include <QToolButton>

@@ -4,6 +4,7 @@
 #include "editor/document.h"
 #include "editor/environmentvalue.h"
 #include "environmentloading.h"
+#include "logslider.h"
 #include "model/environmentdecode.h"
 #include "numberedit.h"
 #include "softboxeditor.h"
@@ -18,6 +19,7 @@
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QToolButton>
+#include <algorithm>
 #include <cmath>
 
 namespace lr {
@@ -100,10 +102,17 @@ EnvironmentBox::EnvironmentBox(Document* document, QWidget* parent)
         form->addRow(label, row);
         return row;
     };
-    QWidget* intensityRow =
-        numberRow("environmentIntensity", "environmentIntensitySlider", tr("In&tensity"), -envlimits::kMaxEv,
-                  envlimits::kMaxEv, int(-envlimits::kMaxEv * kEvSteps), int(envlimits::kMaxEv * kEvSteps),
-                  &m_intensity, &m_intensitySlider);
+    QWidget* intensityRow = numberRow("environmentIntensity", nullptr, tr("In&tensity"), -envlimits::kMaxEv,
+                                      envlimits::kMaxEv, 0, 0, &m_intensity, nullptr);
+    // The intensity's slider drags in EV like the lights' (logslider.h): 40 px per EV, arrows ±⅓ EV (issue
+    // 41: an absolute slider over ±20 EV moved several EV per few pixels). The handle shows where the value
+    // lies in the range.
+    m_intensitySlider = named(new EvDragSlider, "environmentIntensitySlider");
+    m_intensitySlider->setRange(int(-envlimits::kMaxEv * kEvSteps), int(envlimits::kMaxEv * kEvSteps));
+    m_intensitySlider->setToolTip(tr("Drag to change the intensity: %1 px per EV; Shift: finer, Ctrl: whole "
+                                     "EV. Arrow keys: ±⅓ EV. Type an exact value in the field.")
+                                      .arg(EvDragSlider::kPixelsPerEv));
+    static_cast<QHBoxLayout*>(intensityRow->layout())->addWidget(m_intensitySlider, 1);
     m_intensity->setSuffix(tr(" EV"));
     m_intensity->setToolTip(tr("Radiance × 2^EV: +1 doubles the environment's light"));
     QWidget* rotationRow = numberRow("environmentRotation", "environmentRotationSlider", tr("&Rotation"), 0.0,
@@ -160,7 +169,7 @@ EnvironmentBox::EnvironmentBox(Document* document, QWidget* parent)
     });
     connect(m_file, &QComboBox::activated, this, [this](int i) {
         const QString file = m_file->itemData(i).toString();
-        edit([file](Environment& e) { e.file = file; });
+        setImage(file);
     });
     connect(m_browse, &QToolButton::clicked, this, &EnvironmentBox::browse);
     auto continuous = [this](NumberEdit* field, QSlider* slider, double scale,
@@ -175,7 +184,17 @@ EnvironmentBox::EnvironmentBox(Document* document, QWidget* parent)
         });
         connect(slider, &QSlider::sliderReleased, this, &EnvironmentBox::finishGesture);
     };
-    continuous(m_intensity, m_intensitySlider, kEvSteps, [](Environment& e, double v) { e.intensity = v; });
+    continuous(m_intensity, nullptr, kEvSteps, [](Environment& e, double v) { e.intensity = v; });
+    const auto setEv = [](Environment& e, double ev) {
+        e.intensity = std::clamp(std::round(ev * 100.0) / 100.0, -envlimits::kMaxEv, envlimits::kMaxEv);
+    };
+    connect(m_intensitySlider, &EvDragSlider::dragStarted, this,
+            [this] { m_dragStartEv = m_doc->rig().environment.intensity; });
+    connect(m_intensitySlider, &EvDragSlider::dragged, this,
+            [this, setEv](double ev) { edit([&](Environment& e) { setEv(e, m_dragStartEv + ev); }, true); });
+    connect(m_intensitySlider, &EvDragSlider::dragFinished, this, &EnvironmentBox::finishGesture);
+    connect(m_intensitySlider, &EvDragSlider::stepped, this,
+            [this, setEv](double ev) { edit([&](Environment& e) { setEv(e, e.intensity + ev); }); });
     continuous(m_rotation, m_rotationSlider, 1.0, [](Environment& e, double v) { e.rotation = v; });
     continuous(m_blur, nullptr, 1.0, [](Environment& e, double v) { e.blur = v; });
     connect(m_background, &QComboBox::activated, this,
@@ -209,6 +228,10 @@ void EnvironmentBox::setLoading(EnvironmentLoading* loading) {
     m_loading = loading;
     connect(loading, &EnvironmentLoading::loadingChanged, this, &EnvironmentBox::showStatus);
     connect(loading, &EnvironmentLoading::loaded, this, &EnvironmentBox::showStatus);
+    connect(loading, &EnvironmentLoading::refused, this, [this](const QString& error) {
+        m_message->setText(tr("Kept the environment: %1").arg(error));
+        showStatus();
+    });
     showStatus();
 }
 
@@ -296,10 +319,24 @@ void EnvironmentBox::chooseImageFile(const QString& absolutePath) {
         file = QFileInfo(m_doc->filePath())
                    .absoluteDir()
                    .relativeFilePath(QFileInfo(absolutePath).absoluteFilePath());
-    edit([&](Environment& e) {
+    setImage(file);
+}
+
+void EnvironmentBox::setImage(const QString& file) {
+    auto change = [file](Environment& e) {
         e.source = EnvironmentSource::Image;
         e.file = file;
-    });
+    };
+    Environment tried = m_doc->rig().environment;
+    change(tried);
+    if (!m_loading || tried == m_doc->rig().environment) {
+        edit(change);
+        return;
+    }
+    // Tried first: the rig (and the view) take the image only once it has loaded (issue 41).
+    m_message->clear();
+    m_loading->tryEnvironment(tried, [this, change] { edit(change); });
+    load(); // the list shows the rig's file until then
 }
 
 void EnvironmentBox::browse() {

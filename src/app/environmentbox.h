@@ -22,6 +22,7 @@ class QToolButton;
 namespace lr {
 
 class ColorButton;
+class EvDragSlider;
 class Document;
 class EnvironmentLoading;
 class NumberEdit;
@@ -39,6 +40,8 @@ class EnvironmentBox : public QGroupBox {
     // Shows its loads' state (loading, the last error).
     void setLoading(EnvironmentLoading* loading);
     // The file dialog's result: stored relative to the rig's folder when the rig has a file, else absolute.
+    // With a loading set, the image is tried first: the rig takes it only once it loads (a file that
+    // cannot be read leaves the rig and the view as they were and says why).
     void chooseImageFile(const QString& absolutePath);
     SoftboxEditor* softboxEditor() const { return m_softboxes; }
     // Whether the rig format has the environment's classic diffuse model (Environment::diffuse).
@@ -50,6 +53,7 @@ class EnvironmentBox : public QGroupBox {
     void edit(const std::function<void(Environment&)>& change, bool continuous = false);
     void finishGesture();
     void browse();
+    void setImage(const QString& file);
     void showStatus();
 
     Document* m_doc;
@@ -58,7 +62,9 @@ class EnvironmentBox : public QGroupBox {
     QComboBox *m_source, *m_file, *m_background, *m_diffuse;
     QToolButton* m_browse;
     NumberEdit *m_intensity, *m_rotation, *m_blur;
-    QSlider *m_intensitySlider, *m_rotationSlider;
+    EvDragSlider* m_intensitySlider;
+    QSlider* m_rotationSlider;
+    double m_dragStartEv = 0.0;
     ColorButton *m_zenith, *m_horizon, *m_floor;
     QWidget *m_imageRow, *m_studio;
     SoftboxEditor* m_softboxes;

@@ -128,6 +128,11 @@ void MainWindow::connectStatus() {
         m_status->showMessage(tr("Environment not drawn: %1").arg(error), 8000);
         showError(this, {tr("Environment"), tr("Could not load the environment; it is not drawn."), {error}});
     });
+    connect(m_environment, &EnvironmentLoading::refused, this, [this](const QString& error) {
+        m_status->showMessage(tr("Environment kept: %1").arg(error), 8000);
+        showError(this,
+                  {tr("Environment"), tr("Could not load the environment; the rig keeps its own."), {error}});
+    });
     connect(m_environment, &EnvironmentLoading::warnings, this,
             [this](const QStringList& w) { m_status->showMessage(w.join(QLatin1String("; ")), 8000); });
     connect(m_files, &DocumentFiles::modelLoadStarted, this,

@@ -137,17 +137,26 @@ void ModelTreeModel::build() {
                 .arg(mesh.material)
                 .arg(material.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(material)));
     }
+    // A material no mesh uses and the file does not name is an importer's placeholder (Assimp adds an
+    // unnamed default material to every glTF scene): not listed (issue 41: DamagedHelmet's "material 1").
+    std::vector<char> used(model.materials.size(), 0);
+    for (const Mesh& mesh : model.meshes)
+        if (mesh.material >= 0 && size_t(mesh.material) < used.size()) used[size_t(mesh.material)] = 1;
+    int listed = 0;
     for (size_t i = 0; i < model.materials.size(); ++i) {
         const Material& m = model.materials[i];
+        if (!used[i] && m.name.isEmpty()) continue;
+        const QString kind = m.pbr ? tr("physically based (from the file)") : tr("converted (classic file)");
         const int id = add(Materials, m.name.isEmpty() ? tr("material %1").arg(i) : m.name,
-                           m.pbr ? tr("physically based (from the file)") : tr("converted (classic file)"));
+                           used[i] ? kind : tr("%1, no mesh uses it").arg(kind));
         addMaterial(id, m);
+        ++listed;
     }
     for (const Texture& t : model.textures)
         add(Textures, t.name, QStringLiteral("%1×%2").arg(t.image.width()).arg(t.image.height()));
     for (int i = 0; i < model.warnings.size(); ++i)
         add(Warnings, model.warnings[i], QString(), model.warnings[i]);
-    const int counts[] = {int(model.meshes.size()), int(model.materials.size()), int(model.textures.size()),
+    const int counts[] = {int(model.meshes.size()), listed, int(model.textures.size()),
                           int(model.warnings.size())};
     for (int b = 0; b < BranchCount; ++b)
         m_nodes[size_t(b)].value = QString::number(counts[b]);

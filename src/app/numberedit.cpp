@@ -3,6 +3,7 @@
 #include <QLineEdit>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace lr {
 
@@ -84,7 +85,20 @@ QValidator::State NumberEdit::validate(QString& input, int& /*pos*/) const {
     return refuse(tr("%1 is out of range: %2").arg(t, rule()));
 }
 
+void NumberEdit::setBlank(bool blank) {
+    if (blank == m_blank) return;
+    m_blank = blank;
+    // Changing the suffix re-renders the text (textFromValue).
+    if (blank) {
+        m_suffix = suffix();
+        setSuffix(QString());
+    } else {
+        setSuffix(std::exchange(m_suffix, QString()));
+    }
+}
+
 QString NumberEdit::textFromValue(double value) const {
+    if (m_blank) return QString();
     QString s = locale().toString(value, 'g', 7);
     s.remove(locale().groupSeparator());
     return s;

@@ -16,6 +16,9 @@ class NumberEdit : public QDoubleSpinBox {
     void setLimits(double min, double max, bool minExclusive = false);
     void setWhat(const QString& what) { m_what = what; }
     void setValueQuietly(double v); // no valueEdited
+    // Shows nothing (no number, no suffix) until cleared: an optional value the light does not have.
+    void setBlank(bool blank);
+    bool isBlank() const { return m_blank; }
     // "must be a number > 0 and ≤ 1e+30" — the rule the reason texts state.
     QString rule() const;
     // Whether `v` is allowed (finite and in range).
@@ -35,6 +38,8 @@ class NumberEdit : public QDoubleSpinBox {
     bool m_minExclusive = false;
     double m_min = -1e30;
     bool m_quiet = false;
+    bool m_blank = false;
+    QString m_suffix; // while blank
     QString m_what;
 };
 

@@ -292,6 +292,11 @@ void PropertiesDock::refresh() {
                                 .arg(rows.size())
                                 .arg(light.name.toHtmlEscaped()));
     updateVisibility(rows);
+    // The intensity's unit (issue 41): the one all selected lights share, none when they differ.
+    QString unit = intensitySuffix(light.type, m_doc->rig().shading.model);
+    for (int r : rows)
+        if (intensitySuffix(m_doc->light(r).type, m_doc->rig().shading.model) != unit) unit.clear();
+    if (NumberEdit* e = m_parts[LightProperty::Intensity].number) e->setSuffix(unit);
     for (const LightPropertyInfo& row : lightProperties()) {
         const Field& f = m_parts[row.id];
         loadValue(row, f, light);
@@ -349,7 +354,10 @@ void PropertiesDock::loadValue(const LightPropertyInfo& row, const Field& f, con
         const bool noneAllowed = validateLightValue(light, row.id, QVariant()).isEmpty();
         f.check->setVisible(noneAllowed);
         setCheck(f.check, value.isValid());
-        if (value.isValid()) f.number->setValueQuietly(value.toDouble());
+        // Without a value the field is blank (not the previous light's number); switching it on offers
+        // the row's initial value.
+        f.number->setBlank(!value.isValid());
+        f.number->setValueQuietly(value.isValid() ? value.toDouble() : propertyField(row.id).initial);
         f.number->setEnabled(value.isValid() || !noneAllowed);
         break;
     }

@@ -1,5 +1,7 @@
 #include "propertyfields.h"
 
+#include <QCoreApplication>
+
 namespace lr {
 
 namespace {
@@ -60,6 +62,25 @@ PropertyField propertyField(LightProperty property) {
 QString propertyFieldName(LightProperty property) {
     const LightPropertyInfo* row = lightPropertyInfo(property);
     return row ? QString::fromLatin1(row->key) : QString();
+}
+
+QString intensitySuffix(LightType type, ShadingModel shading) {
+    const auto tr = [](const char* t) { return QCoreApplication::translate("lr::PropertiesDock", t); };
+    if (shading == ShadingModel::Pbr) {
+        switch (type) {
+        case LightType::Point:
+        case LightType::Spot:
+            return tr(" cd");
+        case LightType::Directional:
+            return tr(" lx");
+        case LightType::Rect:
+        case LightType::Disk:
+            return tr(" nits");
+        case LightType::Rim:
+            break;
+        }
+    }
+    return tr(" (classic)");
 }
 
 bool propertyShown(const Light& light, LightProperty property) {

@@ -38,6 +38,10 @@ const QList<LightProperty>& propertyRows();
 PropertyField propertyField(LightProperty property);
 // The object name of a property's field widget ("coneOuter": the row's key), used by tests and style sheets.
 QString propertyFieldName(LightProperty property);
+// The intensity's unit as a field suffix (docs/rig-format.md): under physically based shading " cd"
+// (candela: point, spot), " lx" (lux: directional), " nits" (cd/m²: rect, disk), " (classic)" for the rim
+// light's unitless term; under classic shading " (classic)" for every light.
+QString intensitySuffix(LightType type, ShadingModel shading);
 // Whether the dock shows `property` for this light (LightPropertyInfo::isShown).
 bool propertyShown(const Light& light, LightProperty property);
 

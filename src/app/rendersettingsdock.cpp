@@ -178,6 +178,8 @@ void RenderSettingsDock::loadRig() {
     m_ui->viewerModel->setCurrentIndex(int(rig.shading.viewer));
     m_ui->shininess->setValueQuietly(rig.shading.shininess);
     m_ui->ambient->setColor(rig.ambient);
+    // Its unit (issue 41): an irradiance in lux on the diffuse lobe under physically based shading.
+    m_ui->ambientLabel->setText(classic ? tr("&Ambient") : tr("&Ambient (lux)"));
     m_ui->groundMode->setCurrentIndex(int(rig.ground.mode));
     m_ui->groundColor->setColor(rig.ground.color);
     // A catcher shows only shadows: its colour means nothing then, nor with no ground.

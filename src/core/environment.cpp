@@ -77,6 +77,27 @@ SoftboxFrame frameOf(const Softbox& b) {
     return f;
 }
 
+bool inside(const SoftboxFrame& f, const glm::dvec3& d) {
+    const double z = glm::dot(d, f.c);
+    return z > 0.0 && std::abs(glm::dot(d, f.right)) <= f.tanHalfW * z &&
+           std::abs(glm::dot(d, f.up)) <= f.tanHalfH * z;
+}
+
+// The share (0 ... 1) of texel (x, y) the softbox covers: 0 or 1 where its corners and centre agree, else
+// the share of a 4 × 4 grid of samples (the edge crosses it).
+double coverage(const SoftboxFrame& f, int x, int y, int w, int h) {
+    const bool centre = inside(f, texelDirection(x, y, w, h));
+    bool same = true;
+    for (int c = 0; c < 4 && same; ++c)
+        same = inside(f, equirectDirection(double(x + (c & 1)) / w, double(y + (c >> 1)) / h)) == centre;
+    if (same) return centre ? 1.0 : 0.0;
+    int n = 0;
+    for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 4; ++i)
+            n += inside(f, equirectDirection((x + (i + 0.5) / 4.0) / w, (y + (j + 0.5) / 4.0) / h));
+    return n / 16.0;
+}
+
 } // namespace
 
 EnvironmentImage renderStudio(const Studio& studio, int width) {
@@ -97,24 +118,33 @@ EnvironmentImage renderStudio(const Studio& studio, int width) {
             const glm::dvec3 sky = glm::mix(studio.horizon, studio.zenith, s);
             const double t = std::clamp((lat + blend) / (2.0 * blend), 0.0, 1.0);
             glm::dvec3 L = glm::mix(studio.floor, sky, t);
+            // Each softbox over what is below it, by the share of the texel it covers (4 × 4 samples where
+            // its edge crosses the texel): antialiased, so a magnified background shows no stair steps.
             for (const SoftboxFrame& f : boxes) {
-                const double z = glm::dot(d, f.c);
-                if (z <= 0.0) continue;
-                if (std::abs(glm::dot(d, f.right)) <= f.tanHalfW * z &&
-                    std::abs(glm::dot(d, f.up)) <= f.tanHalfH * z)
-                    L = f.radiance;
+                const double cover = coverage(f, x, y, img.width, img.height);
+                if (cover > 0.0) L = glm::mix(L, f.radiance, cover);
             }
             img.at(x, y) = glm::vec3(L);
         }
     return img;
 }
 
-// Each spot visits only the texels it may cover: the rows within its angle of its centre's latitude and,
-// in each, the columns within the azimuth where the cap meets that row (solved from
-// cos(lat)·r·cos(Δφ) + sin(lat)·a.y >= cos(angle), widened by a texel either side). Each of them gets the
-// exact test of texelDirection(x, y) · axis >= cos(angle), with the same factors in the same order: the
-// result is bit for bit the same as testing every texel, in O(texels + spots × covered texels)
-// instead of O(spots × texels) (64 spots on a 1024×512 image took 23 s to validate).
+SpotCover::SpotCover(const EnvironmentSpot& spot) {
+    const double len = glm::length(spot.direction);
+    m_valid = len > 0.0 && std::isfinite(len);
+    if (!m_valid) return;
+    m_axis = spot.direction / len;
+    m_cosAngle = std::cos(std::clamp(spot.angle, 0.0, 180.0) * (kPi / 180.0));
+    m_threshold = std::isfinite(spot.threshold) ? std::max(spot.threshold, 0.0) : 0.0;
+}
+
+// Each spot visits only the texels its cap may cover: the rows within its angle of its centre's latitude
+// and, in each, the columns within the azimuth where the cap meets that row (solved from
+// cos(lat)·r·cos(Δφ) + sin(lat)·a.y >= cos(angle), widened by a texel either side). Each of them gets
+// SpotCover's exact test (texelDirection(x, y) · axis >= cos(angle), and the threshold) with the same
+// factors in the same order: the result is bit for bit the same as testing every texel, in
+// O(texels + spots × covered texels) instead of O(spots × texels) (64 spots on a 1024×512 image took 23 s
+// to validate).
 std::size_t applySpots(EnvironmentImage* image, const std::vector<EnvironmentSpot>& spots) {
     if (!image || image->isNull() || spots.empty()) return 0;
     const int w = image->width, h = image->height;
@@ -132,6 +162,7 @@ std::size_t applySpots(EnvironmentImage* image, const std::vector<EnvironmentSpo
     }
     std::size_t visited = 0;
     for (const EnvironmentSpot& spot : spots) {
+        const SpotCover cover(spot);
         const double len = glm::length(spot.direction);
         if (!(len > 0.0) || !std::isfinite(len)) continue;
         const glm::dvec3 axis = spot.direction / len;
@@ -147,7 +178,7 @@ std::size_t applySpots(EnvironmentImage* image, const std::vector<EnvironmentSpo
             ++visited;
             const glm::dvec3 d{cosLat[size_t(y)] * cosPhi[size_t(x)], sinLat[size_t(y)],
                                cosLat[size_t(y)] * sinPhi[size_t(x)]};
-            if (glm::dot(d, axis) >= cosAngle) image->at(x, y) *= factor;
+            if (cover.covers(d, image->at(x, y))) image->at(x, y) *= factor;
         };
         for (int y = y0; y <= y1; ++y) {
             const double across = cosLat[size_t(y)] * r;

@@ -48,11 +48,14 @@ struct Studio {
 
 // A spot of the environment dimmed after a light was taken from it ("Lights from the environment"): every
 // direction within `angle` degrees of `direction` (world, unit; before rotation — in the image's own
-// frame) has its radiance multiplied by `factor` (0 ... 1).
+// frame) whose radiance has a luminance (environment::luminance) of at least `threshold` has its radiance
+// multiplied by `factor` (0 ... 1). The threshold keeps the dimming to the light's own footprint (a
+// softbox, not the sky around it); 0 dims the whole cone.
 struct EnvironmentSpot {
     glm::dvec3 direction{0.0, 1.0, 0.0};
     double angle = 5.0;
     double factor = 0.0;
+    double threshold = 0.0;
     bool operator==(const EnvironmentSpot&) const = default;
 };
 
@@ -145,9 +148,29 @@ std::array<double, 9> shBasis9(const glm::dvec3& d);
 glm::dvec3 softboxDirection(double azimuthDegrees, double elevationDegrees);
 // The procedural studio as an equirectangular image `width` × width/2 (rotation 0, 0 EV).
 EnvironmentImage renderStudio(const Studio& studio, int width = 1024);
-// Multiplies the radiance of every texel whose centre is within spot.angle of spot.direction by
-// spot.factor, for each spot. Returns how many texels it tested: a few more than the spots cover, in
-// O(texels + spots × covered texels) time.
+// Rec. 709 luminance of linear RGB: 0.2126 R + 0.7152 G + 0.0722 B.
+inline double luminance(const glm::vec3& c) {
+    return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
+}
+// Which texels a spot dims: those whose centre is within spot.angle of spot.direction and whose radiance
+// has a luminance of at least spot.threshold (nothing for a zero or non-finite direction).
+class SpotCover {
+  public:
+    explicit SpotCover(const EnvironmentSpot& spot);
+    bool covers(const glm::dvec3& texelDirection, const glm::vec3& radiance) const {
+        const glm::dvec3& d = texelDirection;
+        return m_valid && m_axis.x * d.x + m_axis.y * d.y + m_axis.z * d.z >= m_cosAngle &&
+               luminance(radiance) >= m_threshold;
+    }
+
+  private:
+    bool m_valid = false;
+    glm::dvec3 m_axis{0.0};
+    double m_cosAngle = 1.0, m_threshold = 0.0;
+};
+// Multiplies the radiance of every texel a spot covers (SpotCover) by spot.factor, for each spot in turn.
+// Returns how many texels it tested: a few more than the spots' caps hold, in O(texels + spots × covered
+// texels) time.
 std::size_t applySpots(EnvironmentImage* image, const std::vector<EnvironmentSpot>& spots);
 
 } // namespace environment

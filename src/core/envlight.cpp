@@ -15,10 +15,6 @@ QString tr(const char* text) {
     return QCoreApplication::translate("lr::EnvironmentLight", text);
 }
 
-double luminance(const glm::vec3& c) {
-    return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
-}
-
 double radians(double degrees) {
     return degrees * (kPi / 180.0);
 }
@@ -101,10 +97,14 @@ EnvironmentLight lightFromEnvironment(const EnvironmentImage& image, double rota
                            .arg(peak / mean, 0, 'f', 2)
                            .arg(options.minContrast));
 
-    // The region: connected texels of at least half the peak, within the cap around the peak.
+    // The region: connected texels that stand out from the environment as the peak does (minContrast ×
+    // the mean) and are at least spotFraction of the peak, within the cap around the peak. A light's
+    // dimmer housing or falloff belongs to it (issue 41: on studio.exr a threshold of half the peak left
+    // the panel's bright frame as a ring around the dimmed hole).
     const glm::dvec3 peakDir = texelDirection(px, py, w, h);
     const double cosCap = std::cos(radians(std::clamp(options.maxSpotDegrees, 0.1, 90.0)));
-    const double threshold = 0.5 * peak;
+    const double threshold = std::min(
+        peak, std::max(options.minContrast * mean, std::clamp(options.spotFraction, 0.0, 1.0) * peak));
     std::vector<unsigned char> seen(size_t(w) * size_t(h), 0);
     std::vector<std::pair<int, int>> stack{{px, py}}, region;
     seen[size_t(py) * size_t(w) + size_t(px)] = 1;
@@ -124,35 +124,55 @@ EnvironmentLight lightFromEnvironment(const EnvironmentImage& image, double rota
         }
     }
 
-    // Σ L·Ω (per channel) and the luminance-weighted centroid.
-    glm::dvec3 sum(0.0), centroid(0.0);
-    double omegaSum = 0.0;
-    for (const auto& [x, y] : region) {
-        const double omega = texelSolidAngle(y, w, h);
-        const glm::dvec3 L(image.at(x, y));
-        sum += L * omega;
-        centroid += luminance(image.at(x, y)) * omega * texelDirection(x, y, w, h);
-        omegaSum += omega;
-    }
+    // The dimmed spot: the cone around the region's luminance-weighted centroid that just holds the
+    // region's texel centres, keyed to the region's threshold so that it dims the footprint and not the
+    // sky around it (issue 41).
+    glm::dvec3 centroid(0.0);
+    for (const auto& [x, y] : region)
+        centroid += luminance(image.at(x, y)) * texelSolidAngle(y, w, h) * texelDirection(x, y, w, h);
     const double centroidLength = glm::length(centroid);
     const glm::dvec3 towards = centroidLength > 0.0 ? centroid / centroidLength : peakDir;
     double radius = 0.0;
     for (const auto& [x, y] : region)
         radius = std::max(radius, angleBetween(towards, texelDirection(x, y, w, h)));
-    const double halfTexel = kPi / h; // a texel's diagonal half-extent at most (at the equator ~0.7 × this)
+    EnvironmentSpot spot;
+    spot.direction = towards;
+    spot.angle = std::min(90.0, radius * (180.0 / kPi) + 1e-6); // a hair more: the centres are inside
+    spot.factor = 0.0;
+    spot.threshold = threshold;
+
+    // The light is exactly what the spot removes: Σ L·Ω (per channel) over the texels it covers (the
+    // region, and any texel as bright within its cone), and their luminance-weighted centroid.
+    const SpotCover cover(spot);
+    glm::dvec3 sum(0.0), lit(0.0);
+    double omegaSum = 0.0;
+    int texels = 0;
+    const auto [ry0, ry1] = capRows(towards, radians(spot.angle) + kPi / h, h);
+    for (int y = ry0; y <= ry1; ++y) {
+        const double omega = texelSolidAngle(y, w, h);
+        for (int x = 0; x < w; ++x) {
+            const glm::dvec3 dir = texelDirection(x, y, w, h);
+            if (!cover.covers(dir, image.at(x, y))) continue;
+            const glm::dvec3 L(image.at(x, y));
+            sum += L * omega;
+            lit += luminance(image.at(x, y)) * omega * dir;
+            omegaSum += omega;
+            ++texels;
+        }
+    }
+    const double litLength = glm::length(lit);
+    const glm::dvec3 from = litLength > 0.0 ? lit / litLength : towards;
 
     const double scale = std::exp2(intensityEv);
     const double largest = std::max({sum.x, sum.y, sum.z});
     EnvironmentLight out;
     out.found = true;
-    out.direction = -rotateAboutUp(towards, rotationDegrees);
+    out.direction = -rotateAboutUp(from, rotationDegrees);
     out.color = sum / largest;
     out.intensity = largest * scale / (shading == ShadingModel::Classic ? kPi : 1.0);
     out.solidAngle = omegaSum;
-    out.texels = int(region.size());
-    out.spot.direction = towards;
-    out.spot.angle = std::min(90.0, (radius + halfTexel) * (180.0 / kPi) + options.marginDegrees);
-    out.spot.factor = 0.0;
+    out.texels = texels;
+    out.spot = spot;
     return out;
 }
 

@@ -28,9 +28,10 @@ constexpr int kMaxShadowResolution = 4096;
 constexpr double kMaxShadowBias = 16.0;  // bias and normal offset, shadow-map texels, >= 0
 constexpr double kMaxShadowAngle = 10.0; // a directional light's angular diameter, degrees, >= 0
 // The rig's "environment" (docs/rig-format.md; lr::Environment in environment.h).
-constexpr double kMaxEnvironmentEV = 20.0;        // intensity, EV: -20 ... 20
-constexpr double kMaxSoftboxAngle = 170.0;        // a softbox's width and height, degrees: (0, 170]
-constexpr double kMaxEnvironmentSpotAngle = 90.0; // a dimmed spot's angle, degrees: (0, 90]
+constexpr double kMaxEnvironmentEV = 20.0;            // intensity, EV: -20 ... 20
+constexpr double kMaxSoftboxAngle = 170.0;            // a softbox's width and height, degrees: (0, 170]
+constexpr double kMaxEnvironmentSpotAngle = 90.0;     // a dimmed spot's angle, degrees: (0, 90]
+constexpr double kMaxEnvironmentSpotThreshold = 1e30; // a dimmed spot's luminance threshold: 0 ... 1e30
 constexpr int kMaxEnvironmentSoftboxes = 32;
 constexpr int kMaxEnvironmentSpots = 64;
 constexpr int kMaxEnvironmentPathLength = 4096; // "file", in characters

@@ -75,6 +75,7 @@ std::optional<EnvironmentSpot> readSpot(Checker& c, const Value& v, const QStrin
     };
     number("angle", s.angle, positive(kMaxEnvironmentSpotAngle));
     number("factor", s.factor, nonNegative(1.0));
+    number("threshold", s.threshold, nonNegative(kMaxEnvironmentSpotThreshold));
     return o.result(s);
 }
 
@@ -207,9 +208,12 @@ std::optional<QByteArray> writeEnvironment(const Environment& e) {
     }
     if (!e.spots.empty()) {
         std::vector<QByteArray> spots;
-        for (const EnvironmentSpot& s : e.spots)
-            spots.push_back(inlineObject(
-                {{"direction", vec(s.direction)}, {"angle", num(s.angle)}, {"factor", num(s.factor)}}));
+        for (const EnvironmentSpot& s : e.spots) {
+            std::vector<std::pair<const char*, QByteArray>> keys = {
+                {"direction", vec(s.direction)}, {"angle", num(s.angle)}, {"factor", num(s.factor)}};
+            if (s.threshold > 0.0) keys.push_back({"threshold", num(s.threshold)});
+            spots.push_back(inlineObject(keys));
+        }
         f.push_back({"spots", list(spots, "    ")});
     }
     return block(f, "  ");

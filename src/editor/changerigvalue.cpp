@@ -1,5 +1,7 @@
 #include "editor/changerigvalue.h"
 
+#include "editor/environmentvalue.h"
+
 #include <QCoreApplication>
 
 namespace lr {
@@ -43,7 +45,15 @@ std::unique_ptr<ChangeRigValue> ChangeRigValue::create(Document* doc, RigPropert
 ChangeRigValue::ChangeRigValue(Document* doc, RigProperty property, QVariant before, QVariant after)
     : RigCommand(doc), m_property(property), m_before(std::move(before)), m_after(std::move(after)),
       m_session(doc->continuousEditSession()) {
-    setText(tr("Change %1").arg(rigPropertyName(property)));
+    setText(describe());
+}
+
+QString ChangeRigValue::describe() const {
+    // The environment's fields each name themselves in the history ("Change environment intensity").
+    if (m_property == RigProperty::Environment && m_before.canConvert<Environment>() &&
+        m_after.canConvert<Environment>())
+        return environmentChangeText(m_before.value<Environment>(), m_after.value<Environment>());
+    return tr("Change %1").arg(rigPropertyName(m_property));
 }
 
 void ChangeRigValue::undo() {
@@ -59,6 +69,7 @@ bool ChangeRigValue::mergeWith(const QUndoCommand* other) {
     const auto* o = static_cast<const ChangeRigValue*>(other);
     if (m_session == 0 || o->m_session != m_session || o->m_property != m_property) return false;
     m_after = o->m_after;
+    setText(describe());
     setObsolete(settingsWith(Rig{}, m_property, m_before) == settingsWith(Rig{}, m_property, m_after));
     return true;
 }

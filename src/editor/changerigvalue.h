@@ -21,6 +21,7 @@ class ChangeRigValue : public RigCommand {
 
   private:
     ChangeRigValue(Document* document, RigProperty property, QVariant before, QVariant after);
+    QString describe() const; // the history's text
     RigProperty m_property;
     QVariant m_before, m_after;
     int m_session;

@@ -2,6 +2,8 @@
 
 #include "core/rigjson.h"
 
+#include <QCoreApplication>
+#include <QStringList>
 #include <cmath>
 
 namespace lr {
@@ -47,6 +49,8 @@ QString checkSpot(const EnvironmentSpot& s, int index) {
         return at + QStringLiteral("direction must be a finite, non-zero vector");
     QString e = range(at + QStringLiteral("angle"), s.angle, 0.0, envlimits::kMaxSpotAngle, true);
     if (e.isEmpty()) e = range(at + QStringLiteral("factor"), s.factor, 0.0, 1.0);
+    if (e.isEmpty())
+        e = range(at + QStringLiteral("threshold"), s.threshold, 0.0, kMaxEnvironmentSpotThreshold);
     return e;
 }
 } // namespace
@@ -85,6 +89,26 @@ QString validateEnvironment(const Environment& env) {
     for (size_t i = 0; i < env.spots.size(); ++i)
         if (QString e = checkSpot(env.spots[i], int(i)); !e.isEmpty()) return e;
     return {};
+}
+
+QString environmentChangeText(const Environment& a, const Environment& b) {
+    const auto tr = [](const char* text) { return QCoreApplication::translate("lr::ChangeRigValue", text); };
+    QStringList changed;
+    if (a.source != b.source) changed << tr("Change environment source");
+    if (a.file != b.file) changed << tr("Change environment image");
+    if (a.intensity != b.intensity) changed << tr("Change environment intensity");
+    if (a.rotation != b.rotation) changed << tr("Change environment rotation");
+    if (a.background != b.background) changed << tr("Change environment background");
+    if (a.blur != b.blur) changed << tr("Change environment blur");
+    if (a.diffuse != b.diffuse) changed << tr("Change environment diffuse model");
+    if (a.studio.zenith != b.studio.zenith) changed << tr("Change studio zenith colour");
+    if (a.studio.horizon != b.studio.horizon) changed << tr("Change studio horizon colour");
+    if (a.studio.floor != b.studio.floor) changed << tr("Change studio floor colour");
+    if (a.studio.softboxes != b.studio.softboxes) changed << tr("Change studio softboxes");
+    if (a.spots != b.spots) changed << tr("Change environment dimmed spots");
+    // Switching the source fills in its image or first softbox: still a change of source.
+    if (a.source != b.source) return changed.first();
+    return changed.size() == 1 ? changed.first() : tr("Change environment");
 }
 
 } // namespace lr

@@ -24,4 +24,8 @@ inline constexpr int kMaxFileLength = kMaxEnvironmentPathLength;
 // Empty when valid, else the first problem.
 QString validateEnvironment(const Environment& environment);
 
+// The history's text for an edit from `before` to `after`, naming the one field that changed ("Change
+// environment intensity", "Change studio softboxes"); "Change environment" when several did.
+QString environmentChangeText(const Environment& before, const Environment& after);
+
 } // namespace lr

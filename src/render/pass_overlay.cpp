@@ -6,10 +6,12 @@
 #include "targets.h"
 #include "textureunits.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <utility>
 
 namespace lr::render {
 
@@ -83,6 +85,16 @@ bool OverlayPass::run(const FrameContext& frame, PassScene& scene) {
         p->setUniformValue("uPoints", points);
         glDrawArrays(mode, 0, GLsizei(v.size()));
     };
+    // The lines' dark halo first: the same lines a pixel aside in four directions (the grid has none).
+    p->setUniformValue("uHalo", true);
+    const float px = 2.0f / float(std::max(frame.targetSize.width(), 1)),
+                py = 2.0f / float(std::max(frame.targetSize.height(), 1));
+    for (const auto& [dx, dy] : {std::pair{px, 0.0f}, {-px, 0.0f}, {0.0f, py}, {0.0f, -py}}) {
+        p->setUniformValue("uHaloOffset", dx, dy);
+        draw(g.lines, GL_LINES, false);
+    }
+    p->setUniformValue("uHalo", false);
+    p->setUniformValue("uHaloOffset", 0.0f, 0.0f);
     draw(g.lines, GL_LINES, false);
     draw(g.points, GL_POINTS, true);
     glBindVertexArray(0);

@@ -17,10 +17,12 @@
 #include "editor/environmentvalue.h"
 #include "render/environmentloader.h"
 
+#include <QApplication>
 #include <QComboBox>
 #include <QDir>
 #include <QLabel>
 #include <QListWidget>
+#include <QMouseEvent>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QSlider>
@@ -48,6 +50,18 @@ void drag(QSlider* slider, std::initializer_list<int> values) {
     for (int v : values)
         slider->setValue(v);
     slider->setSliderDown(false);
+}
+
+// A left-button drag by the mouse: press at `from`, move `dx` pixels in a few steps, release.
+void mouseDrag(QWidget* w, QPoint from, int dx, int steps = 4) {
+    const auto send = [w](QEvent::Type type, QPoint p, Qt::MouseButton button, Qt::MouseButtons buttons) {
+        QMouseEvent e(type, QPointF(p), QPointF(w->mapToGlobal(p)), button, buttons, Qt::NoModifier);
+        QApplication::sendEvent(w, &e);
+    };
+    send(QEvent::MouseButtonPress, from, Qt::LeftButton, Qt::LeftButton);
+    for (int i = 1; i <= steps; ++i)
+        send(QEvent::MouseMove, from + QPoint(dx * i / steps, 0), Qt::NoButton, Qt::LeftButton);
+    send(QEvent::MouseButtonRelease, from + QPoint(dx, 0), Qt::LeftButton, Qt::NoButton);
 }
 
 void type(NumberEdit* field, double value) {
@@ -88,52 +102,56 @@ class TestEnvironmentBox : public QObject {
         const Rig before = doc.rig();
         QUndoStack* stack = doc.undoStack();
         int steps = 0;
-        auto stepped = [&](const char* what) {
+        // One more undo step, named for the field it changed (issue 41: every edit was "Change environment").
+        auto stepped = [&](const char* what, const char* text) {
             ++steps;
             if (stack->count() != steps)
                 qWarning("%s: %d undo steps, expected %d", what, int(stack->count()), steps);
-            return stack->count() == steps && stack->text(steps - 1) == QLatin1String("Change environment") &&
+            else if (stack->text(steps - 1) != QLatin1String(text))
+                qWarning("%s: the history says \"%s\", expected \"%s\"", what,
+                         qPrintable(stack->text(steps - 1)), text);
+            return stack->count() == steps && stack->text(steps - 1) == QLatin1String(text) &&
                    doc.rig().lights == before.lights;
         };
 
         activate(source, int(EnvironmentSource::Studio));
         QCOMPARE(int(doc.rig().environment.source), int(EnvironmentSource::Studio));
         QCOMPARE(doc.rig().environment.studio.softboxes.size(), size_t(1)); // a key softbox to start from
-        QVERIFY(stepped("source"));
+        QVERIFY(stepped("source", "Change environment source"));
         QVERIFY(intensity->isEnabled() && box->softboxEditor()->isVisibleTo(box));
         QVERIFY(!file->isVisibleTo(box));
 
         type(intensity, 1.5);
         QCOMPARE(doc.rig().environment.intensity, 1.5);
-        QVERIFY(stepped("intensity"));
+        QVERIFY(stepped("intensity", "Change environment intensity"));
         QCOMPARE(intensitySlider->value(), 15); // the slider follows the field (tenths of EV)
-        drag(intensitySlider, {16, 20, 25, 30});
+        mouseDrag(intensitySlider, intensitySlider->rect().center(), 60); // 40 px per EV
         QCOMPARE(doc.rig().environment.intensity, 3.0);
-        QVERIFY(stepped("intensity drag")); // the whole drag: one step
+        QVERIFY(stepped("intensity drag", "Change environment intensity")); // the whole drag: one step
         QCOMPARE(intensity->value(), 3.0);
 
         drag(rotationSlider, {10, 45, 90, 135});
         QCOMPARE(doc.rig().environment.rotation, 135.0);
-        QVERIFY(stepped("rotation drag"));
+        QVERIFY(stepped("rotation drag", "Change environment rotation"));
         type(rotation, 200.0);
         QCOMPARE(doc.rig().environment.rotation, 200.0);
-        QVERIFY(stepped("rotation"));
+        QVERIFY(stepped("rotation", "Change environment rotation"));
         QCOMPARE(rotationSlider->value(), 200);
 
         QVERIFY(!blur->isEnabled()); // blur means something only for a blurred background
         activate(background, int(EnvironmentBackground::Blurred));
         QCOMPARE(int(doc.rig().environment.background), int(EnvironmentBackground::Blurred));
-        QVERIFY(stepped("background"));
+        QVERIFY(stepped("background", "Change environment background"));
         QVERIFY(blur->isEnabled());
         type(blur, 0.6);
         QCOMPARE(doc.rig().environment.blur, 0.6);
-        QVERIFY(stepped("blur"));
+        QVERIFY(stepped("blur", "Change environment blur"));
 
         // Classic diffuse: enabled only under classic shading (and where the rig format has it).
         QCOMPARE(diffuse->isEnabled(), EnvironmentBox::hasClassicDiffuse());
         if (EnvironmentBox::hasClassicDiffuse()) {
             activate(diffuse, int(DiffuseModel::HalfLambert));
-            QVERIFY(stepped("classic diffuse"));
+            QVERIFY(stepped("classic diffuse", "Change environment diffuse model"));
         }
         QVERIFY(doc.setRigValue(RigProperty::ShadingModel, QStringLiteral("pbr")));
         ++steps;
@@ -142,11 +160,11 @@ class TestEnvironmentBox : public QObject {
         ++steps;
 
         emit zenith->colorPicked(glm::dvec3(0.1, 0.2, 0.9));
-        QVERIFY(stepped("zenith"));
+        QVERIFY(stepped("zenith", "Change studio zenith colour"));
         emit horizon->colorPicked(glm::dvec3(0.9, 0.8, 0.7));
-        QVERIFY(stepped("horizon"));
+        QVERIFY(stepped("horizon", "Change studio horizon colour"));
         emit floor->colorPicked(glm::dvec3(0.05));
-        QVERIFY(stepped("floor"));
+        QVERIFY(stepped("floor", "Change studio floor colour"));
         QCOMPARE(doc.rig().environment.studio.zenith, glm::dvec3(0.1, 0.2, 0.9));
         QCOMPARE(doc.rig().environment.studio.horizon, glm::dvec3(0.9, 0.8, 0.7));
         QCOMPARE(doc.rig().environment.studio.floor, glm::dvec3(0.05));
@@ -157,7 +175,7 @@ class TestEnvironmentBox : public QObject {
         auto* remove = child<QPushButton>(boxes, "removeSoftbox");
         QVERIFY(add && remove);
         add->click();
-        QVERIFY(stepped("add softbox"));
+        QVERIFY(stepped("add softbox", "Change studio softboxes"));
         QCOMPARE(doc.rig().environment.studio.softboxes.size(), size_t(2));
         QCOMPARE(boxes->list()->count(), 2);
         QCOMPARE(boxes->currentRow(), 1); // the new one is selected
@@ -173,28 +191,28 @@ class TestEnvironmentBox : public QObject {
             QVERIFY(field);
             type(field, value);
             QCOMPARE(doc.rig().environment.studio.softboxes[1].*member, value);
-            QVERIFY(stepped(name));
+            QVERIFY(stepped(name, "Change studio softboxes"));
             value += 3.0;
         }
         emit child<ColorButton>(boxes, "softboxColor")->colorPicked(glm::dvec3(1.0, 0.5, 0.25));
-        QVERIFY(stepped("softbox colour"));
+        QVERIFY(stepped("softbox colour", "Change studio softboxes"));
         QCOMPARE(doc.rig().environment.studio.softboxes[1].color, glm::dvec3(1.0, 0.5, 0.25));
         QCOMPARE(doc.rig().environment.studio.softboxes[0], Softbox{}); // only the selected one changed
         boxes->setCurrentRow(0);
         remove->click();
-        QVERIFY(stepped("remove softbox"));
+        QVERIFY(stepped("remove softbox", "Change studio softboxes"));
         QCOMPARE(doc.rig().environment.studio.softboxes.size(), size_t(1));
         QCOMPARE(doc.rig().environment.studio.softboxes[0].color, glm::dvec3(1.0, 0.5, 0.25));
 
         // An image: a bundled one to start with, the list offers the others.
         activate(source, int(EnvironmentSource::Image));
-        QVERIFY(stepped("image source"));
+        QVERIFY(stepped("image source", "Change environment source"));
         QCOMPARE(doc.rig().environment.file, bundledEnvironmentFiles().first());
         QVERIFY(file->isVisibleTo(box) && !box->softboxEditor()->isVisibleTo(box));
         QCOMPARE(file->count(), int(bundledEnvironmentFiles().size()));
         activate(file, 1);
         QCOMPARE(doc.rig().environment.file, bundledEnvironmentFiles().at(1));
-        QVERIFY(stepped("bundled file"));
+        QVERIFY(stepped("bundled file", "Change environment image"));
         const Rig after = doc.rig();
 
         // Everything undoes back to the rig before, the box showing it at each step; redo restores it all.
@@ -216,6 +234,34 @@ class TestEnvironmentBox : public QObject {
         QVERIFY(box->softboxEditor()->isVisibleTo(box));
         QCOMPARE(zenith->color(), glm::dvec3(0.1, 0.2, 0.9));
         QCOMPARE(boxes->list()->count(), 1);
+    }
+
+    // Issue 41 item 14: the intensity slider jumped +9.3 EV in 44 px. It steps like the lights' intensity
+    // (logslider.h): a drag of 44 px is 1.1 EV, an arrow key ⅓ EV, each one undo step.
+    void intensitySliderStepsInEv() {
+        Document doc;
+        Environment e;
+        e.source = EnvironmentSource::Studio;
+        e.studio.softboxes = {Softbox{}};
+        QVERIFY(doc.setRigValue(RigProperty::Environment, QVariant::fromValue(e)));
+        EnvironmentBox box(&doc);
+        box.resize(420, 600);
+        box.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&box));
+        auto* slider = child<QSlider>(&box, "environmentIntensitySlider");
+        QVERIFY(slider && slider->width() > 100);
+        const int steps = doc.undoStack()->count();
+        mouseDrag(slider, slider->rect().center(), 44); // the handle sits at the centre (0 EV)
+        QVERIFY2(std::abs(doc.rig().environment.intensity - 1.1) < 0.02,
+                 qPrintable(QStringLiteral("44 px moved %1 EV").arg(doc.rig().environment.intensity)));
+        QCOMPARE(doc.undoStack()->count(), steps + 1);
+        const double dragged = doc.rig().environment.intensity;
+        slider->setFocus();
+        QTest::keyClick(slider, Qt::Key_Right);
+        QVERIFY2(std::abs(doc.rig().environment.intensity - (dragged + 1.0 / 3.0)) < 0.01,
+                 qPrintable(QString::number(doc.rig().environment.intensity)));
+        QCOMPARE(doc.undoStack()->count(), steps + 2);
+        QCOMPARE(doc.undoStack()->text(steps + 1), QStringLiteral("Change environment intensity"));
     }
 
     void outOfRangeIsRefusedWithTheField() {

@@ -11,11 +11,13 @@
 #include "app/viewsettings.h"
 #include "core/rigjson.h"
 #include "editor/document.h"
+#include "model/modelloader.h"
 
 #include <QAbstractItemModelTester>
 #include <QApplication>
 #include <QClipboard>
 #include <QComboBox>
+#include <QFileInfo>
 #include <QListWidget>
 #include <QSettings>
 #include <QStandardPaths>
@@ -157,6 +159,34 @@ class TestModelDock : public QObject {
                  QStringLiteral("missing (texture 7)"));
         tree.setModel(nullptr);
         QCOMPARE(tree.rowCount(tree.branchIndex(ModelTreeModel::Materials)), 0);
+    }
+
+    void treeModel_leavesOutAnImportersPlaceholderMaterial() {
+        // Issue 41: DamagedHelmet's Model dock listed a spurious "material 1", the unnamed default material
+        // Assimp adds to every glTF scene, which no mesh uses. A named material no mesh uses stays, marked.
+        ModelTreeModel tree;
+        auto model = detailedModel();
+        model->materials.push_back(Material{}); // unnamed, unused
+        tree.setModel(model);
+        const QModelIndex materials = tree.branchIndex(ModelTreeModel::Materials);
+        const auto listed = rows(tree, materials);
+        QCOMPARE(tree.rowCount(materials), 2);
+        QVERIFY(!listed.contains(QStringLiteral("material 2")));
+        QCOMPARE(tree.index(int(ModelTreeModel::Materials), 1).data().toString(), QStringLiteral("2"));
+        QVERIFY2(listed.value(QStringLiteral("old plastic")).contains(QLatin1String("no mesh uses it")),
+                 qPrintable(listed.value(QStringLiteral("old plastic"))));
+        QVERIFY(!listed.value(QStringLiteral("painted metal")).contains(QLatin1String("no mesh")));
+
+        const QString helmet = QStringLiteral(LIGHTRIG_SHARED_MODELS
+                                              "/gltf/khronos/DamagedHelmet/glTF-Binary/DamagedHelmet.glb");
+        if (!QFileInfo::exists(helmet)) QSKIP("DamagedHelmet.glb is not in ../shared/models");
+        const ModelLoadResult loaded = loadModel(helmet);
+        QVERIFY2(loaded.ok(), qPrintable(loaded.error));
+        tree.setModel(loaded.model);
+        QStringList names;
+        for (int r = 0; r < tree.rowCount(materials); ++r)
+            names << tree.index(r, 0, materials).data().toString();
+        QCOMPARE(names, QStringList{QStringLiteral("Material_MR")});
     }
 
     void dock_followsTheScene_opensOnWarnings_copies() {

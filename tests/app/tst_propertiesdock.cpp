@@ -1,19 +1,23 @@
 // The Properties dock shows exactly the fields a light's type and models use, for every combination of
 // type × falloff model × cone model; edits apply to every selected light as one undo step; invalid input
 // is refused with a reason and never stored.
+#include "app/colorbutton.h"
 #include "app/numberedit.h"
 #include "app/propertiesdock.h"
 #include "app/propertyfields.h"
 #include "app/vec3edit.h"
 #include "editor/document.h"
 
+#include <QApplication>
 #include <QCheckBox>
+#include <QColorDialog>
 #include <QComboBox>
 #include <QLineEdit>
 #include <QSet>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTest>
+#include <QTimer>
 
 using namespace lr;
 
@@ -237,6 +241,75 @@ class TestPropertiesDock : public QObject {
         QCOMPARE(doc.undoStack()->count(), before + 1);
         doc.undoStack()->undo();
         QVERIFY(doc.light(0).intensity != 7.5 && doc.light(1).intensity != 7.5);
+    }
+
+    // Issue 41: no intensity showed its unit; a disabled Temperature field showed another light's value.
+    void intensityShowsItsUnit() {
+        Document doc;
+        PropertiesDock dock(&doc);
+        dock.show();
+        QVERIFY(doc.setRigValue(RigProperty::ShadingModel, QStringLiteral("pbr")));
+        const std::pair<LightType, const char*> units[] = {
+            {LightType::Point, " cd"},  {LightType::Spot, " cd"},   {LightType::Directional, " lx"},
+            {LightType::Rect, " nits"}, {LightType::Disk, " nits"}, {LightType::Rim, " (classic)"}};
+        for (const auto& [type, unit] : units)
+            QVERIFY(doc.addLight(type));
+        auto* intensity = dock.findChild<QWidget*>("intensity")->findChild<NumberEdit*>();
+        QVERIFY(intensity);
+        for (int row = 0; row < int(std::size(units)); ++row) {
+            doc.setSelectedRows({row}, row);
+            QCOMPARE(intensity->suffix(), QString::fromUtf8(units[row].second));
+            QVERIFY2(intensity->text().endsWith(QString::fromUtf8(units[row].second)),
+                     qPrintable(intensity->text()));
+        }
+        doc.setSelectedRows({2, 3}, 2); // lux and nits: no one unit
+        QCOMPARE(intensity->suffix(), QString());
+        doc.setSelectedRows({0, 1}, 0);
+        QCOMPARE(intensity->suffix(), QStringLiteral(" cd"));
+        QVERIFY(doc.setRigValue(RigProperty::ShadingModel, QStringLiteral("classic")));
+        QCOMPARE(intensity->suffix(), QStringLiteral(" (classic)"));
+    }
+
+    void temperatureFieldIsItsLightsOwn() {
+        Document doc;
+        PropertiesDock dock(&doc);
+        dock.show();
+        QVERIFY(doc.addLight(LightType::Point));
+        QVERIFY(doc.addLight(LightType::Spot));
+        // Light 0 has 3000 K, light 1 none: its disabled field is blank, not 3000.
+        QVERIFY(doc.setLightValue({0}, LightProperty::Temperature, 3000.0));
+        auto* temperature = dock.findChild<QWidget*>("temperature")->findChild<NumberEdit*>();
+        QVERIFY(temperature);
+        doc.setSelectedRows({0}, 0);
+        QVERIFY2(temperature->text().contains(QLatin1String("3000")), qPrintable(temperature->text()));
+        doc.setSelectedRows({1}, 1);
+        QVERIFY(!temperature->isEnabled());
+        QVERIFY2(temperature->text().trimmed().isEmpty(), qPrintable(temperature->text()));
+        // Switching it on offers the row's initial value, not the other light's.
+        auto* has = dock.findChild<QWidget*>("temperature")->findChild<QCheckBox*>();
+        QVERIFY(has);
+        has->click();
+        QCOMPARE(doc.light(1).temperature.value_or(0.0), propertyField(LightProperty::Temperature).initial);
+        QVERIFY(temperature->isEnabled() && temperature->text().contains(QLatin1String(" K")));
+    }
+
+    // Issue 41: colour fields showed linear values and the colour dialog sRGB hex, neither labelled.
+    void colourFieldsSayLinear_theDialogSaysSrgb() {
+        ColorButton button;
+        button.setColor(glm::dvec3(1.0, 0.5, 0.25));
+        QVERIFY2(button.text().startsWith(QLatin1String("linear ")), qPrintable(button.text()));
+        QVERIFY2(button.toolTip().contains(ColorButton::toDisplay(glm::dvec3(1.0, 0.5, 0.25)).name()),
+                 qPrintable(button.toolTip()));
+        QString title;
+        QTimer::singleShot(0, [&] {
+            if (auto* d = qobject_cast<QColorDialog*>(QApplication::activeModalWidget())) {
+                title = d->windowTitle();
+                d->reject();
+            }
+        });
+        button.click();
+        QVERIFY2(title.contains(QLatin1String("sRGB")) && title.contains(QLatin1String("linear")),
+                 qPrintable(title));
     }
 
     // Issue 11: typing x, y and z of a position made three "Change position" steps; one edit of a vector

@@ -3,6 +3,7 @@
 // of the disc's texels (lux; ÷ π under classic shading; × 2^EV), its colour, the rig's rotation applied, a
 // dimmed spot that covers the disc, and "nothing bright here" for a uniform sky.
 #include "core/envlight.h"
+#include "core/rigjson.h"
 
 #include <QTest>
 #include <cmath>
@@ -37,6 +38,20 @@ EnvironmentImage discImage(const glm::dvec3& centre, double radius, glm::dvec3* 
             }
     return img;
 }
+// What dimming `spot` removes from `img`: Σ (L − L')·Ω per channel, and which texels it changed.
+glm::dvec3 removedBy(const EnvironmentImage& img, const EnvironmentSpot& spot, std::vector<char>* dimmed) {
+    EnvironmentImage after = img;
+    environment::applySpots(&after, {spot});
+    glm::dvec3 removed(0.0);
+    dimmed->assign(img.texels.size(), 0);
+    for (int y = 0; y < img.height; ++y)
+        for (int x = 0; x < img.width; ++x) {
+            const glm::dvec3 d = glm::dvec3(img.at(x, y)) - glm::dvec3(after.at(x, y));
+            removed += d * environment::texelSolidAngle(y, img.width, img.height);
+            (*dimmed)[size_t(y) * img.width + x] = after.at(x, y) != img.at(x, y);
+        }
+    return removed;
+}
 } // namespace
 
 class TestEnvLight : public QObject {
@@ -68,10 +83,11 @@ class TestEnvLight : public QObject {
                  qPrintable(QStringLiteral("%1 lux, the disc's Σ L·Ω %2").arg(l.intensity).arg(sum.x)));
         QCOMPARE(l.color.x, 1.0);
         QVERIFY(std::abs(l.color.y - 0.5) < 1e-9 && std::abs(l.color.z - 0.25) < 1e-9);
-        // The dimmed spot covers every disc texel and no texel far beyond.
+        // The dimmed spot just holds the disc's texel centres (all within 4°), keyed above the sky.
         QVERIFY(degreesBetween(l.spot.direction, d) < 0.3);
-        QVERIFY2(l.spot.angle >= 4.0 && l.spot.angle <= 4.0 + 2.0 + 2.0,
+        QVERIFY2(l.spot.angle >= 4.0 - 180.0 / kH && l.spot.angle <= 4.0 + 180.0 / kH,
                  qPrintable(QString::number(l.spot.angle)));
+        QVERIFY(l.spot.threshold > environment::luminance(kSky));
         QCOMPARE(l.spot.factor, 0.0);
         EnvironmentImage dimmed = img;
         environment::applySpots(&dimmed, {l.spot});
@@ -140,7 +156,83 @@ class TestEnvLight : public QObject {
         const double expected = 20.0 * 4.0 * std::asin(std::sin(a) * std::sin(a));
         QVERIFY2(std::abs(l.intensity - expected) < 0.05 * expected,
                  qPrintable(QStringLiteral("%1 lux, expected about %2").arg(l.intensity).arg(expected)));
-        QVERIFY(std::abs(l.color.y - 0.9) < 1e-6 && std::abs(l.color.z - 0.8) < 1e-6);
+        // Its colour, but for the sky in the antialiased edge texels the light takes with the softbox.
+        QVERIFY2(std::abs(l.color.y - 0.9) < 0.01 && std::abs(l.color.z - 0.8) < 0.01,
+                 qPrintable(QStringLiteral("%1, %2").arg(l.color.y).arg(l.color.z)));
+    }
+
+    void dimmedSpotIsExactlyTheSoftbox() {
+        // Issue 41: "Dim the spot" on the procedural studio blacked out a disc far larger than the softbox,
+        // sky included. The dimmed texels must be the softbox's own (nothing of the sky), and the energy
+        // they lose must be the new light's: Σ ΔL·Ω = colour × lux at 0 EV under PBR.
+        Studio studio;
+        Softbox box;
+        box.azimuth = 45.0;
+        box.elevation = 35.0;
+        box.width = 40.0;
+        box.height = 30.0;
+        box.color = glm::dvec3(1.0, 0.9, 0.8);
+        box.intensity = 6.0;
+        studio.softboxes = {box};
+        const EnvironmentImage img = environment::renderStudio(studio, 512);
+        Studio bare = studio;
+        bare.softboxes.clear();
+        const EnvironmentImage sky = environment::renderStudio(bare, 512);
+        const EnvironmentLight l = lightFromEnvironment(
+            img, 0.0, 0.0, ShadingModel::Pbr, environment::softboxDirection(box.azimuth, box.elevation));
+        QVERIFY2(l.found, qPrintable(l.reason));
+        std::vector<char> dimmed;
+        const glm::dvec3 removed = removedBy(img, l.spot, &dimmed);
+        const glm::dvec3 taken = l.color * l.intensity;
+        for (int c = 0; c < 3; ++c)
+            QVERIFY2(std::abs(removed[c] - taken[c]) <= 1e-6 * taken[c],
+                     qPrintable(QStringLiteral("channel %1: dimming removes %2, the light takes %3")
+                                    .arg(c)
+                                    .arg(removed[c], 0, 'g', 9)
+                                    .arg(taken[c], 0, 'g', 9)));
+        const glm::vec3 full(box.color * box.intensity);
+        int skyDimmed = 0, boxKept = 0, boxTexels = 0;
+        for (int y = 0; y < img.height; ++y)
+            for (int x = 0; x < img.width; ++x) {
+                const bool isDimmed = dimmed[size_t(y) * img.width + x];
+                const bool touched = img.at(x, y) != sky.at(x, y); // the softbox covers some of it
+                const bool inside = img.at(x, y) == full;          // the softbox covers all of it
+                skyDimmed += isDimmed && !touched;
+                boxKept += inside && !isDimmed;
+                boxTexels += inside;
+            }
+        QVERIFY(boxTexels > 100);
+        QVERIFY2(skyDimmed == 0, qPrintable(QStringLiteral("%1 sky texels dimmed").arg(skyDimmed)));
+        QVERIFY2(boxKept == 0,
+                 qPrintable(QStringLiteral("%1 of %2 softbox texels kept").arg(boxKept).arg(boxTexels)));
+        // The same under classic shading (÷ π) and at another EV (× 2^EV): still what the spot removes.
+        const EnvironmentLight classic = lightFromEnvironment(
+            img, 0.0, 2.0, ShadingModel::Classic, environment::softboxDirection(box.azimuth, box.elevation));
+        QVERIFY(classic.spot == l.spot);
+        QVERIFY(std::abs(classic.intensity * kPi / 4.0 - l.intensity) <= 1e-9 * l.intensity);
+    }
+
+    void aSpotDimsOnlyWhatReachesItsThreshold() {
+        EnvironmentImage img;
+        img.width = 8;
+        img.height = 4;
+        img.texels.assign(32, glm::vec3(1.0f));
+        img.at(3, 1) = glm::vec3(5.0f);
+        EnvironmentSpot spot;
+        spot.direction = environment::texelDirection(3, 1, 8, 4);
+        spot.angle = 90.0;
+        spot.threshold = 2.0; // the cone holds many texels; only the bright one is dimmed
+        environment::applySpots(&img, {spot});
+        QCOMPARE(img.at(3, 1), glm::vec3(0.0f));
+        QCOMPARE(img.at(4, 1), glm::vec3(1.0f));
+        // The rig file keeps it.
+        Rig rig = defaultRig();
+        rig.environment.source = EnvironmentSource::Studio;
+        rig.environment.spots = {spot};
+        const RigReadResult read = readRigJson(writeRigJson(rig), QStringLiteral("spot.json"));
+        QVERIFY2(read.ok(), qPrintable(read.errors.join(QLatin1Char('\n'))));
+        QCOMPARE(read.rig->environment.spots.size(), size_t(1));
+        QCOMPARE(read.rig->environment.spots[0].threshold, 2.0);
     }
 };
 

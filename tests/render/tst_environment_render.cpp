@@ -410,6 +410,86 @@ class TestEnvironmentRender : public QObject {
         QVERIFY(centre(rig, boxDir) < 0.1f);
     }
 
+    // Issue 41 item 14: the background and the studio's softboxes had stair-stepped edges. Magnified (about
+    // five pixels per texel of the 1024-wide chain), a softbox's straight edge (a great circle: a straight
+    // line on screen) must stay straight where the radiance crosses 1 (the clamp tone map's white), not
+    // step from texel row to texel row.
+    void softboxEdgeIsStraightWhenMagnified() {
+        Studio studio = oneSoftbox(0.0, 40.0, 40.0, 4.0);
+        studio.zenith = studio.horizon = studio.floor = glm::dvec3(0.05);
+        studio.softboxes[0].height = 30.0;
+        m_gl->setModel(nullptr);
+        m_gl->renderer().setEnvironment(loaded(environment::renderStudio(studio)));
+        const Rig rig = environmentRig(ShadingModel::Pbr, EnvironmentBackground::Visible);
+        const glm::dvec3 c = environment::softboxDirection(0.0, 40.0);
+        const glm::dvec3 right = glm::normalize(glm::cross(glm::dvec3(0, 1, 0), c));
+        ViewCamera cam;
+        cam.eye = glm::dvec3(0.0);
+        cam.target = glm::normalize(c + right * std::tan(20.0 * environment::kPi / 180.0));
+        cam.yfovDeg = 8.0;
+        RenderSettings s = settingsFor(Quality::Exact);
+        s.hdrTarget = true;
+        const FloatImage f = radiance(rig, cam, s);
+        std::vector<std::pair<double, double>> edge; // (row, x where the radiance crosses 1)
+        for (int y = 0; y < kSize.height(); ++y)
+            for (int x = 0; x + 1 < kSize.width(); ++x) {
+                const float a = f.at(x, y).g, b = f.at(x + 1, y).g;
+                if ((a - 1.0f) * (b - 1.0f) <= 0.0f && a != b) {
+                    edge.emplace_back(y, x + (1.0 - a) / (b - a));
+                    break;
+                }
+            }
+        QVERIFY2(edge.size() > size_t(kSize.height() * 9 / 10), qPrintable(QString::number(edge.size())));
+        double sy = 0, sx = 0, syy = 0, sxy = 0;
+        for (const auto& [y, x] : edge) {
+            sy += y;
+            sx += x;
+            syy += y * y;
+            sxy += x * y;
+        }
+        const double n = double(edge.size());
+        const double slope = (n * sxy - sy * sx) / (n * syy - sy * sy), offset = (sx - slope * sy) / n;
+        double worst = 0.0;
+        for (const auto& [y, x] : edge)
+            worst = std::max(worst, std::abs(x - (offset + slope * y)));
+        qInfo("edge: %d rows, slope %.4f px/row, largest step off the line %.3f px", int(edge.size()), slope,
+              worst);
+        QVERIFY2(worst < 0.5,
+                 qPrintable(QStringLiteral("the edge strays %1 px from a straight line").arg(worst)));
+    }
+
+    // Issue 41 item 14: a white light's gizmo lines vanished against a bright environment. They are drawn
+    // over a dark halo: away from the light's icon (which has its own dark rim), pixels of the white
+    // background turn dark beside the lines.
+    void whiteGizmoLinesShowOnABrightBackground() {
+        m_gl->setModel(nullptr);
+        m_gl->renderer().setEnvironment(uniformEnvironment(glm::vec3(3.0f)));
+        Rig rig = environmentRig(ShadingModel::Pbr, EnvironmentBackground::Visible);
+        // A white spot light aiming across the view: its cone and axis are lines in its own colour.
+        Light l = spot({-1.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, ConeModel::Smooth, 20.0, 30.0, 1.0);
+        l.color = glm::dvec3(1.0);
+        rig.lights = {l};
+        m_gl->setRig(rig);
+        const QSize size(320, 240);
+        RenderSettings s = settingsFor(Quality::Balanced);
+        s.showGizmos = true;
+        QString error;
+        const QImage img = m_gl->renderImage(frontCamera(), size, s, 1, &error);
+        QVERIFY2(!img.isNull(), qPrintable(error));
+        const auto icon = projectToPixel(m_gl->renderer(), frontCamera(), size, l.position);
+        QVERIFY(icon);
+        int dark = 0, white = 0;
+        for (int y = 0; y < size.height(); ++y)
+            for (int x = 0; x < size.width(); ++x) {
+                if (std::hypot(x - icon->x(), y - icon->y()) < 30.0) continue; // the icon
+                const int g = qGray(img.pixel(x, y));
+                dark += g < 140;
+                white += g > 250;
+            }
+        QVERIFY2(white > size.width() * size.height() / 2, "the background is white");
+        QVERIFY2(dark > 200, qPrintable(QStringLiteral("%1 dark pixels beside the lines").arg(dark)));
+    }
+
     // A tiled render (each tile its own projection) shows the same background as one whole frame.
     void backgroundAcrossTiles() {
         Studio studio;
