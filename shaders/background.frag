@@ -1,7 +1,8 @@
 // The environment behind the model (pass_background.cpp): a full-screen triangle on the far plane, drawn
 // where no surface was (depth test LEQUAL against the cleared depth 1). Each pixel looks up the
 // environment along its view ray: Visible at the chain's level 0 (B-spline filtered: no stair steps when
-// magnified), Blurred at lod = blur · 5 (a GGX roughness). The same exposure, tone map and encoding as every lit fragment of the frame.
+// magnified), Blurred at lod = blur · 5 (a GGX roughness). The same exposure, tone map and encoding as
+// every lit fragment of the frame.
 uniform mat4 uViewFromClip;  // the inverse of the frame's (tile's) projection
 uniform vec2 uTargetSize;    // pixels
 uniform float uBackgroundLod;
