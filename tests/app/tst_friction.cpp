@@ -207,7 +207,7 @@ class TestFriction : public QObject {
         QCOMPARE(QFileInfo(suggested).absolutePath(), rigDir);
 
         QSignalSpy back(m_window->files(), &DocumentFiles::modelLoaded);
-        QVERIFY(m_window->files()->openModel(MainWindow::bundledModelPath()));
+        QVERIFY(m_window->files()->openModel(MainWindow::suzannePath()));
         QVERIFY(back.wait(60000));
         QCOMPARE(DocumentFiles::lastFolder(DocumentFiles::FileKind::Model), QFileInfo(model).absolutePath());
     }

@@ -464,7 +464,7 @@ class TestMainWindow : public QObject {
         QVERIFY(glm::length(viewport()->camera().eye - model.cameras[0].position) < 1e-9);
 
         QSignalSpy back(m_window->files(), &DocumentFiles::modelLoaded);
-        QVERIFY(m_window->files()->openModel(MainWindow::bundledModelPath()));
+        QVERIFY(m_window->files()->openModel(MainWindow::suzannePath()));
         QVERIFY(back.wait(60000));
     }
 
@@ -507,9 +507,10 @@ class TestMainWindow : public QObject {
         QSignalSpy first(w.files(), &DocumentFiles::modelLoadFinished);
         EditorOptions options;
         options.restoreSession = false;
+        options.modelPath = MainWindow::suzannePath();
         w.openInitial(options);
         QVERIFY(first.count() > 0 || first.wait(60000));
-        QCOMPARE(w.scene()->path(), MainWindow::bundledModelPath());
+        QCOMPARE(w.scene()->path(), MainWindow::suzannePath());
         QVERIFY(w.document()->rig() == defaultRig());
         QVERIFY(w.files()->rigFollowsModel());
 
