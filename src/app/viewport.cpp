@@ -39,9 +39,7 @@ Viewport::Viewport(Document* document, Scene* scene, ViewSettings* settings, QWi
       m_snapshots(std::make_unique<SnapshotRenderer>(scene)) {
     setObjectName(QStringLiteral("Viewport"));
     setMinimumSize(200, 150);
-    // A click or the wheel takes the keyboard focus (issue 41: after an edit in a dock, the number keys
-    // went on typing into that field while the user dollied the view).
-    setFocusPolicy(Qt::WheelFocus);
+    setFocusPolicy(Qt::StrongFocus); // a click takes the keyboard focus; the wheel too (wheelEvent)
     setMouseTracking(true);
     if (auto c = standardView(QStringLiteral("three-quarter"), Bounds{glm::dvec3(-1), glm::dvec3(1)}, 1.5))
         m_camera = *c;
@@ -453,6 +451,9 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event) {
 }
 
 void Viewport::wheelEvent(QWheelEvent* event) {
+    // Issue 41: after an edit in a dock, the number keys went on typing into that field while the user
+    // dollied the view. Qt gives a wheel focus only to spontaneous events of WheelFocus widgets: take it.
+    if (!hasFocus()) setFocus(Qt::OtherFocusReason);
     const double notches = event->angleDelta().y() / 120.0;
     if (notches != 0.0) {
         setNavigating(true);

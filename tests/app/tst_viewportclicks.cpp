@@ -89,7 +89,7 @@ class TestViewportClicks : public QObject {
     // A plain click on the model moves no light and adds no step; Ctrl+click places the highlight.
     void plainClickOnTheModel_movesNoLight() {
         QVERIFY(test::spotInFrontOfTheModel(*m_window));
-        doc()->setSelection({0});
+        doc()->setSelectedRows({0});
         QPoint onModel, background;
         modelAndBackground(&onModel, &background);
         const Light before = doc()->light(0);
@@ -107,7 +107,7 @@ class TestViewportClicks : public QObject {
 
     // A name typed into the Properties dock's field (the focus stays there), then the viewport used.
     QLineEdit* editName(const QString& text) {
-        auto* field = m_window->propertiesDock()->findChild<QWidget*>(QStringLiteral("name"));
+        QWidget* field = m_window->propertiesDock()->field(LightProperty::Name);
         if (!field) return nullptr;
         auto* name = qobject_cast<QLineEdit*>(field) ? qobject_cast<QLineEdit*>(field)
                                                      : field->findChild<QLineEdit*>();
@@ -124,7 +124,7 @@ class TestViewportClicks : public QObject {
     // chooses the first standard view instead of typing into the field.
     void wheelOverTheViewport_numberKeysGoToTheView() {
         QVERIFY(test::spotInFrontOfTheModel(*m_window));
-        doc()->setSelection({0});
+        doc()->setSelectedRows({0});
         QLineEdit* name = editName(QStringLiteral("Key"));
         QVERIFY(name);
         QCOMPARE(doc()->light(0).name, QStringLiteral("Key"));
@@ -144,7 +144,7 @@ class TestViewportClicks : public QObject {
     // there clears it.
     void focusClick_keepsTheSelection() {
         QVERIFY(test::spotInFrontOfTheModel(*m_window));
-        doc()->setSelection({0});
+        doc()->setSelectedRows({0});
         QPoint onModel, background;
         modelAndBackground(&onModel, &background);
         QVERIFY(editName(QStringLiteral("Fill")));

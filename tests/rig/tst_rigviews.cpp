@@ -66,9 +66,8 @@ class TestRigViews : public QObject {
                                      << QStringLiteral("view.eye: missing");
         QTest::newRow("eye is target") << QByteArray(R"("view": {"eye": [1, 1, 1], "target": [1, 1, 1]},)")
                                        << QStringLiteral("view.target: must differ from \"eye\"");
-        QTest::newRow("eye not finite")
-            << QByteArray(R"("view": {"eye": [1e999, 0, 0], "target": [0, 0, 0]},)")
-            << QStringLiteral("view.eye: ");
+        QTest::newRow("eye too far") << QByteArray(R"("view": {"eye": [2e12, 0, 0], "target": [0, 0, 0]},)")
+                                     << QStringLiteral("view.eye[0]: must be a finite number");
         QTest::newRow("up along the view")
             << QByteArray(R"("view": {"eye": [0, 5, 0], "target": [0, 0, 0], "up": [0, 1, 0]},)")
             << QStringLiteral("view.up: must not be parallel");
