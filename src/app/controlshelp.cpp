@@ -20,8 +20,10 @@ QList<ControlBinding> mouseBindings() {
         {QObject::tr("Wheel"), QObject::tr("Dolly towards or away from the target")},
         {QObject::tr("Click a light"), QObject::tr("Select it")},
         {QObject::tr("Ctrl+click a light"), QObject::tr("Add it to the selection, or take it out")},
-        {QObject::tr("Click the background"), QObject::tr("Clear the selection")},
-        {QObject::tr("Click the model"),
+        {QObject::tr("Click the background"),
+         QObject::tr("Clear the selection (not the click that moves the keyboard focus to the viewport)")},
+        {QObject::tr("Click the model"), QObject::tr("Nothing: no light moves, the selection stays")},
+        {QObject::tr("Ctrl+click the model"),
          QObject::tr("Place the highlight: move each selected light, keeping its distance, so its mirror "
                      "reflection lands on that point (spot, rect and disk lights also turn to face it; "
                      "directional and rim lights only turn). One undo step; with no light selected it "

@@ -125,6 +125,7 @@ bool DocumentFiles::openRig(const QString& requested) {
     if (!error.isEmpty()) return refuse(error);
     rememberFolder(FileKind::Rig, path);
     m_recent->add(path);
+    emit rigOpened(path);
     emit statusMessage(warnings.isEmpty()
                            ? tr("Opened %1").arg(QDir::toNativeSeparators(path))
                            : tr("Opened %1 with %n warning(s): %2", nullptr, int(warnings.size()))
@@ -164,6 +165,7 @@ bool DocumentFiles::saveAs(const QString& requested) {
     }
     rememberFolder(FileKind::Rig, path);
     m_recent->add(path);
+    emit rigOpened(path);
     emit statusMessage(tr("Saved %1").arg(QDir::toNativeSeparators(path)));
     return true;
 }

@@ -80,6 +80,7 @@ class DocumentFiles : public QObject {
     void modelLoadFailed(const QString& path, const QString& error); // after modelLoadFinished; not on cancel
     void modelLoadFinished(); // loaded, failed or cancelled (before a failure is reported: no bar behind it)
     void statusMessage(const QString& text);
+    void rigOpened(const QString& path); // openRig loaded it (the Document holds it now)
 
   private:
     struct Load;

@@ -14,8 +14,9 @@
 #include "render/camera.h"
 #include "scene.h"
 #include "screenshotdialog.h"
-#include "screenshotexport.h"
+#include "screenshotjob.h"
 #include "turntableexport.h"
+#include "viewbookmarks.h"
 #include "viewport.h"
 #include "viewsettings.h"
 
@@ -59,6 +60,13 @@ void EditorActions::createFileMenu() {
     newRig = add(tr("&New rig"), QKeySequence::New, [files] { files->newRig(); });
     openRig = add(tr("&Open rig…"), QKeySequence::Open, [files] { files->openRig(); });
     openModel = add(tr("Open &model…"), QKeySequence(tr("Ctrl+Shift+O")), [files] { files->openModel(); });
+    // Issue 41: the bundled models (their rig follows, as for any model opened on an untouched rig).
+    QMenu* samples = menu->addMenu(tr("Open &sample"));
+    samples->setObjectName(QStringLiteral("samplesMenu"));
+    connect(samples->addAction(tr("Avocado: product shot (physically based)")), &QAction::triggered, files,
+            [files] { files->openModel(MainWindow::bundledModelPath()); });
+    connect(samples->addAction(tr("Suzanne: classic shading")), &QAction::triggered, files,
+            [files] { files->openModel(MainWindow::suzannePath()); });
     recentMenu = menu->addMenu(tr("Open &recent"));
     m_window->recentFiles()->attachMenu(recentMenu);
     connect(m_window->recentFiles(), &RecentFiles::openRequested, files, &DocumentFiles::openFile);
@@ -122,6 +130,10 @@ void EditorActions::createViewMenu() {
         connect(a, &QAction::triggered, viewport, [viewport, name] { viewport->setStandardView(name); });
     }
     modelCamerasMenu = menu->addMenu(tr("&Model cameras"));
+    viewBookmarks =
+        new ViewBookmarks(m_window->document(), viewport, menu->addMenu(tr("Sa&ved views")), m_window);
+    connect(viewBookmarks, &ViewBookmarks::statusMessage, m_window->statusBar(),
+            [this](const QString& t) { m_window->statusBar()->showMessage(t, 8000); });
     lookThroughLight = menu->addAction(tr("&Look through light"));
     lookThroughLight->setShortcut(QKeySequence(Qt::Key_L));
     lookThroughLight->setToolTip(tr("View the scene from the selected spot light, along its axis"));
@@ -188,6 +200,11 @@ void EditorActions::updateEnabled() {
 }
 
 void EditorActions::exportScreenshotInteractive() {
+    if (m_window->findChild<ScreenshotJob*>()) {
+        m_window->statusBar()->showMessage(tr("A screenshot is being exported; wait for it or cancel it"),
+                                           8000);
+        return;
+    }
     const QString base = m_window->document()->filePath().isEmpty()
                              ? QDir::home().filePath(QStringLiteral("lightrig.png"))
                              : QFileInfo(m_window->document()->filePath())
@@ -197,21 +214,31 @@ void EditorActions::exportScreenshotInteractive() {
     ScreenshotDialog dialog(m_window->viewport()->size() * m_window->viewport()->devicePixelRatio(), base,
                             m_window);
     if (dialog.exec() != QDialog::Accepted) return;
-    const ScreenshotOptions o = dialog.options();
-    const ScreenshotExportResult result = exportScreenshotWithProgress(m_window, m_window->viewport(), o);
-    if (result.cancelled) {
-        m_window->statusBar()->showMessage(
-            tr("Screenshot export cancelled; %1 not written").arg(QDir::toNativeSeparators(o.path)), 8000);
-        return;
-    }
-    if (!result.ok()) {
-        showError(m_window,
-                  {tr("Export screenshot"), tr("Could not export the screenshot."), {result.error}});
-        return;
-    }
-    m_window->statusBar()->showMessage(
-        tr("Wrote %1 (%2×%3)").arg(QDir::toNativeSeparators(o.path)).arg(o.size.width()).arg(o.size.height()),
-        8000);
+    // In the background (issue 41): the window keeps taking edits, which do not change the image.
+    auto* job = new ScreenshotJob(m_window->viewport(), dialog.options(), m_window);
+    exportScreenshot->setEnabled(false);
+    connect(job, &ScreenshotJob::finished, this, [this, job] {
+        job->deleteLater();
+        exportScreenshot->setEnabled(true);
+        const ScreenshotOptions& o = job->options();
+        const ScreenshotExportResult result = job->result();
+        if (result.cancelled) {
+            m_window->statusBar()->showMessage(
+                tr("Screenshot export cancelled; %1 not written").arg(QDir::toNativeSeparators(o.path)),
+                8000);
+        } else if (!result.ok()) {
+            showError(m_window,
+                      {tr("Export screenshot"), tr("Could not export the screenshot."), {result.error}});
+        } else {
+            m_window->statusBar()->showMessage(tr("Wrote %1 (%2×%3)")
+                                                   .arg(QDir::toNativeSeparators(o.path))
+                                                   .arg(o.size.width())
+                                                   .arg(o.size.height()),
+                                               8000);
+        }
+    });
+    showInStatusBar(m_window, job);
+    job->start();
 }
 
 } // namespace lr

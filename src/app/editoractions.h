@@ -10,6 +10,7 @@ class QMenu;
 namespace lr {
 
 class MainWindow;
+class ViewBookmarks;
 
 class EditorActions : public QObject {
     Q_OBJECT
@@ -37,6 +38,7 @@ class EditorActions : public QObject {
     QMenu* recentMenu = nullptr;
     QMenu* standardViewsMenu = nullptr;
     QMenu* modelCamerasMenu = nullptr;
+    ViewBookmarks* viewBookmarks = nullptr; // View › Saved views (issue 41, viewbookmarks.h)
 
     void exportScreenshotInteractive();
 

@@ -21,6 +21,7 @@
 #include "rendersettingsdock.h"
 #include "scene.h"
 #include "sessionsettings.h"
+#include "viewbookmarks.h"
 #include "viewport.h"
 #include "viewsettings.h"
 
@@ -51,6 +52,12 @@ MainWindow::MainWindow(QWidget* parent)
     createDocks();
     m_actions = new EditorActions(this);
     connectStatus();
+    // Issue 41: the camera is saved with the rig (its "view") and comes back when the rig is opened.
+    m_doc->currentView = [this] { return std::optional<RigView>(rigViewOf(m_viewport->camera())); };
+    connect(m_files, &DocumentFiles::rigOpened, this, [this] {
+        if (const auto& view = m_doc->rig().view)
+            m_viewport->showSavedView(viewCameraOf(*view), m_scene->isEmpty() || m_files->isLoadingModel());
+    });
     connect(m_doc, &Document::fileChanged, this, &MainWindow::updateTitle);
     connect(m_doc, &Document::modifiedChanged, this, &MainWindow::updateTitle);
     updateTitle();
@@ -60,18 +67,23 @@ MainWindow::MainWindow(QWidget* parent)
 MainWindow::~MainWindow() = default;
 
 QString MainWindow::bundledModelPath() {
+    return QStringLiteral(":/resources/models/avocado/Avocado.gltf");
+}
+
+QString MainWindow::suzannePath() {
     return QStringLiteral(":/resources/models/suzanne/Suzanne.gltf");
 }
 
 void MainWindow::createDocks() {
     m_lightsDock = new LightsDock(m_doc, this);
-    // New lights go around the model as seen now (editor/placement.h), and the view follows them.
+    // New lights go around the model as seen now (editor/placement.h); the camera stays where it is (it is
+    // no part of the undo step), the status bar says when the new light is out of view.
     m_lightsDock->setPlacementView([this] {
         const ViewCamera& c = m_viewport->camera();
         return PlacementView{m_scene->frame(), c.eye - c.target, c.trueUp()};
     });
     connect(m_lightsDock, &LightsDock::lightAdded, m_viewport,
-            [this](int row) { m_viewport->keepLightsInView({row}); });
+            [this](int row) { m_viewport->reportLightsOutOfView({row}); });
     m_propertiesDock = new PropertiesDock(m_doc, this);
     m_renderDock = new RenderSettingsDock(m_doc, m_viewSettings, this);
     m_renderDock->setSceneFrameProvider([this] { return m_scene->frame(); }); // for the space switch

@@ -54,9 +54,14 @@ class MainWindow : public QMainWindow {
     AbCompare* compare() const { return m_compare; } // View › Compare A/B (issue 17)
 
     // Startup: the model and rig from the command line, else the last session's (when restoring), else the
-    // bundled model lit by the default preset. Restores geometry and dock layout when options allow it.
+    // bundled model lit by its sample rig (core/defaultrig.h). Restores geometry and dock layout when options
+    // allow it.
     void openInitial(const EditorOptions& options);
-    static QString bundledModelPath(); // ":/resources/models/suzanne/Suzanne.gltf"
+    // The bundled model the editor opens on (issue 41): the Avocado (CC0), physically based, on a ground in
+    // studio.exr with a soft key (resources/models/avocado/showcase.json).
+    static QString bundledModelPath(); // ":/resources/models/avocado/Avocado.gltf"
+    // The classic showcase, still bundled (File › Open sample): Suzanne, lit by the classic default rig.
+    static QString suzannePath(); // ":/resources/models/suzanne/Suzanne.gltf"
 
   protected:
     void closeEvent(QCloseEvent* event) override;

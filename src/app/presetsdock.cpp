@@ -145,8 +145,11 @@ bool PresetsDock::applyPreset(const PresetEntry& entry) {
         showError(this, {tr("Apply preset"), tr("Could not read the preset %1.").arg(entry.name), r.errors});
         return false;
     }
+    Rig rig = *r.rig; // the lights and settings of the preset; the rig's saved views stay
+    rig.view = m_doc->rig().view;
+    rig.views = m_doc->rig().views;
     QString error;
-    if (!m_doc->replaceRig(*r.rig, tr("Apply preset %1").arg(entry.name), &error)) {
+    if (!m_doc->replaceRig(rig, tr("Apply preset %1").arg(entry.name), &error)) {
         showError(this, {tr("Apply preset"), tr("Could not apply the preset %1.").arg(entry.name), {error}});
         return false;
     }

@@ -21,8 +21,11 @@ ScreenshotDialog::ScreenshotDialog(const QSize& viewportSize, const QString& sug
     o.transparent = s.value(QStringLiteral("transparent"), o.transparent).toBool();
     o.gizmos = s.value(QStringLiteral("gizmos"), o.gizmos).toBool();
     o.format = s.value(QStringLiteral("format"), o.format).toByteArray();
+    // The file last exported to, while its folder is there (issue 41: the dialog forgot it); else the
+    // suggestion (the rig's name beside the rig).
+    const QString last = s.value(QStringLiteral("path")).toString();
     s.endGroup();
-    o.path = suggestedPath;
+    o.path = !last.isEmpty() && QFileInfo(QFileInfo(last).absolutePath()).isDir() ? last : suggestedPath;
     setOptions(o);
     connect(m_ui->format, &QComboBox::currentIndexChanged, this, &ScreenshotDialog::syncFormat);
     connect(m_ui->path, &QLineEdit::textEdited, this, [this](const QString& p) {
@@ -108,6 +111,7 @@ void ScreenshotDialog::accept() {
     s.setValue(QStringLiteral("transparent"), o.transparent);
     s.setValue(QStringLiteral("gizmos"), o.gizmos);
     s.setValue(QStringLiteral("format"), o.format);
+    s.setValue(QStringLiteral("path"), QFileInfo(o.path).absoluteFilePath());
     s.endGroup();
     QDialog::accept();
 }

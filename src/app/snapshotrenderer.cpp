@@ -41,6 +41,7 @@ QImage SnapshotRenderer::render(const Rig& rig, const ViewCamera& camera, QSize 
                                 const RenderSettings& settings, int supersample, QString* error,
                                 const TileProgress& progress, int tileSize) {
     const int call = ++m_renders;
+    m_rigOwner = 0;
     QOpenGLContext* previous = QOpenGLContext::currentContext();
     QSurface* previousSurface = previous ? previous->surface() : nullptr;
     QImage image;
@@ -73,6 +74,50 @@ QImage SnapshotRenderer::render(const Rig& rig, const ViewCamera& camera, QSize 
     }
     if (previous && previousSurface) previous->makeCurrent(previousSurface);
     return image;
+}
+
+std::unique_ptr<SnapshotJob> SnapshotRenderer::begin(const Rig& rig, const ViewCamera& camera, QSize size,
+                                                     const RenderSettings& settings, int supersample,
+                                                     int tileSize, QString* error) {
+    QOpenGLContext* previous = QOpenGLContext::currentContext();
+    QSurface* previousSurface = previous ? previous->surface() : nullptr;
+    auto job = std::make_unique<SnapshotJob>();
+    bool ok = prepare(error);
+    if (ok) {
+        job->rig = rig;
+        job->model = m_keepAlive;
+        job->environment = m_scene->environment();
+        job->id = ++m_jobs;
+        const int tileLimit = m_offscreen->maxTileSize();
+        if (tileSize > 0) m_offscreen->setMaxTileSize(tileSize);
+        ok = m_offscreen->beginImage(&job->tiles, camera, size, settings, supersample, error);
+        if (tileSize > 0) m_offscreen->setMaxTileSize(tileLimit);
+    }
+    if (previous && previousSurface) previous->makeCurrent(previousSurface);
+    return ok ? std::move(job) : nullptr;
+}
+
+bool SnapshotRenderer::renderNext(SnapshotJob* job, QString* error) {
+    if (job->tiles.finished()) return true;
+    QOpenGLContext* previous = QOpenGLContext::currentContext();
+    QSurface* previousSurface = previous ? previous->surface() : nullptr;
+    bool ok = m_offscreen && m_offscreen->makeCurrent();
+    if (!ok && error) *error = QObject::tr("could not make the offscreen OpenGL context current");
+    // Put back what this job draws if something rendered through this object since its last tile.
+    if (ok && m_uploaded != job->model.get()) {
+        m_keepAlive = job->model;
+        ok = m_offscreen->setModel(job->model, error);
+        m_uploaded = ok ? job->model.get() : nullptr;
+    }
+    if (ok && m_offscreen->renderer().environment() != job->environment)
+        m_offscreen->renderer().setEnvironment(job->environment);
+    if (ok && m_rigOwner != job->id) {
+        m_offscreen->setRig(job->rig);
+        m_rigOwner = job->id;
+    }
+    if (ok) ok = m_offscreen->renderNextTile(&job->tiles, error);
+    if (previous && previousSurface) previous->makeCurrent(previousSurface);
+    return ok;
 }
 
 } // namespace lr

@@ -13,6 +13,18 @@
 namespace lr {
 
 class Scene;
+struct LoadedEnvironment;
+
+// A screenshot rendered a tile at a time (SnapshotRenderer::begin / renderNext): the rig, the camera, the
+// settings, the model and the environment as they were when it began, so edits made meanwhile do not
+// change it.
+struct SnapshotJob {
+    Rig rig;
+    std::shared_ptr<const Model> model;
+    std::shared_ptr<const LoadedEnvironment> environment;
+    TiledImage tiles;
+    int id = 0; // which job last set the offscreen renderer's rig (SnapshotRenderer::m_rigOwner)
+};
 
 class SnapshotRenderer {
   public:
@@ -25,8 +37,18 @@ class SnapshotRenderer {
     QImage render(const Rig& rig, const ViewCamera& camera, QSize size, const RenderSettings& settings,
                   int supersample, QString* error, const TileProgress& progress = {}, int tileSize = 0);
 
+    // A job of tiles of at most tileSize rendered pixels a side (0: as large as the driver allows); nullptr
+    // and *error when it cannot start. renderNext renders its next tile (thumbnails may render through this
+    // object between two calls): false and *error on failure.
+    std::unique_ptr<SnapshotJob> begin(const Rig& rig, const ViewCamera& camera, QSize size,
+                                       const RenderSettings& settings, int supersample, int tileSize,
+                                       QString* error);
+    bool renderNext(SnapshotJob* job, QString* error);
+
   private:
     bool prepare(QString* error);
+    int m_rigOwner = 0; // the job whose rig the offscreen renderer holds (0: another render's)
+    int m_jobs = 0;
 
     const Scene* m_scene;
     std::unique_ptr<OffscreenRenderer> m_offscreen;

@@ -143,9 +143,14 @@ void TurntableDialog::accept() {
                                .arg(file.completeBaseName(), file.suffix()));
         return;
     }
-    const QFileInfo dir(file.absolutePath());
+    // A folder that does not exist yet is created by the export (issue 41): its nearest existing parent
+    // must be a writable folder.
+    QString existing = file.absolutePath();
+    while (!QFileInfo::exists(existing) && QFileInfo(existing).dir().path() != existing)
+        existing = QFileInfo(existing).dir().path();
+    const QFileInfo dir(existing);
     if (!dir.isDir() || !dir.isWritable()) {
-        m_message->setText(tr("%1: the folder does not exist or is not writable").arg(dir.filePath()));
+        m_message->setText(tr("%1: not a writable folder").arg(dir.filePath()));
         return;
     }
     QSettings s;

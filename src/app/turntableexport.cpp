@@ -25,6 +25,11 @@ TurntableExportResult exportTurntableWithProgress(QWidget* parent, Viewport* vie
                                                   const ViewCamera& camera, const glm::dvec3& center,
                                                   const TurntableOptions& options) {
     TurntableExportResult result;
+    const QString folder = QFileInfo(options.shot.path).absolutePath();
+    if (!QDir().mkpath(folder)) { // the dialog allows a folder that does not exist yet
+        result.error = QObject::tr("%1: could not create the folder").arg(QDir::toNativeSeparators(folder));
+        return result;
+    }
     const int frames = std::max(1, options.frames);
     constexpr int kSteps = 1000; // progress steps per frame
     QProgressDialog dialog(parent);

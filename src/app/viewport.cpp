@@ -11,6 +11,7 @@
 #include "snapshotrenderer.h"
 #include "viewsettings.h"
 
+#include <QFocusEvent>
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QSurfaceFormat>
@@ -38,7 +39,7 @@ Viewport::Viewport(Document* document, Scene* scene, ViewSettings* settings, QWi
       m_snapshots(std::make_unique<SnapshotRenderer>(scene)) {
     setObjectName(QStringLiteral("Viewport"));
     setMinimumSize(200, 150);
-    setFocusPolicy(Qt::StrongFocus);
+    setFocusPolicy(Qt::StrongFocus); // a click takes the keyboard focus; the wheel too (wheelEvent)
     setMouseTracking(true);
     if (auto c = standardView(QStringLiteral("three-quarter"), Bounds{glm::dvec3(-1), glm::dvec3(1)}, 1.5))
         m_camera = *c;
@@ -176,7 +177,12 @@ std::shared_ptr<const LoadedEnvironment> Viewport::renderedEnvironment() const {
 
 void Viewport::onModelChanged() {
     m_modelDirty = true;
-    m_rigDirty = true; // a model-space rig moves with the model's bounds
+    m_rigDirty = true;                        // a model-space rig moves with the model's bounds
+    if (std::exchange(m_holdCamera, false)) { // a rig's saved view came first (openInitial)
+        m_cameraFramed = true;
+        update();
+        return;
+    }
     const Bounds& b = m_scene->model()->bounds;
     if (!m_cameraFramed) {
         if (auto c = standardView(QStringLiteral("three-quarter"), b, aspect())) m_camera = *c;
@@ -188,6 +194,13 @@ void Viewport::onModelChanged() {
 
 void Viewport::setCamera(const ViewCamera& camera) {
     m_camera = camera;
+    update();
+}
+
+void Viewport::showSavedView(const ViewCamera& camera, bool holdForModel) {
+    m_camera = camera;
+    m_holdCamera = holdForModel;
+    if (!holdForModel) m_cameraFramed = true;
     update();
 }
 
@@ -251,15 +264,12 @@ bool Viewport::onScreen(int row) const {
     return p && QRectF(rect()).contains(*p);
 }
 
-void Viewport::keepLightsInView(const QList<int>& rows) {
-    bool missing = false;
+void Viewport::reportLightsOutOfView(const QList<int>& rows) {
     for (int row : rows)
-        missing |= row >= 0 && row < m_doc->lightCount() && !onScreen(row);
-    if (!missing) return;
-    QList<int> framed = rows; // and the lights in view now, so bringing one in does not push another out
-    for (int row = 0; row < m_doc->lightCount(); ++row)
-        if (!framed.contains(row) && onScreen(row)) framed.append(row);
-    frameModelAndLights(framed);
+        if (row >= 0 && row < m_doc->lightCount() && !onScreen(row))
+            return emit statusMessage(
+                tr("%1 is outside the view: press F to frame it, or Shift+F for all lights")
+                    .arg(m_doc->light(row).name));
 }
 
 void Viewport::frameModelAndLights(const QList<int>& rows) {
@@ -328,7 +338,14 @@ void Viewport::lookThroughLight(int row) {
     emit statusMessage(tr("Looking through %1").arg(l.name));
 }
 
+void Viewport::focusInEvent(QFocusEvent* event) {
+    // Qt gives the focus before it delivers the press that caused it (mousePressEvent reads this).
+    m_focusedByClick = event->reason() == Qt::MouseFocusReason;
+    QOpenGLWidget::focusInEvent(event);
+}
+
 void Viewport::mousePressEvent(QMouseEvent* event) {
+    m_pressFocused = std::exchange(m_focusedByClick, false);
     m_pressPos = m_lastPos = event->position() - documentRect().topLeft();
     m_moved = false;
     m_shiftPress = false;
@@ -406,10 +423,9 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event) {
     } else if (nav == Navigation::Orbit && !m_moved &&
                (m_pickEnvironment || event->modifiers().testFlags(Qt::ControlModifier | Qt::AltModifier))) {
         emit environmentClicked(pos); // the background (a light would have been a gizmo press)
-    } else if (nav == Navigation::Orbit && !m_moved && !(event->modifiers() & Qt::ControlModifier)) {
-        // A plain click that hit no gizmo: on the model with lights selected it places their highlight
-        // there; on the model with nothing selected it only says so; on the background it clears the
-        // selection.
+    } else if (nav == Navigation::Orbit && !m_moved && (event->modifiers() & Qt::ControlModifier)) {
+        // Ctrl+click that hit no gizmo: on the model with lights selected it places their highlight there
+        // (one undo step); with nothing selected it only says so; on the background nothing.
         QString message;
         switch (m_interaction->placeHighlight(projector(), pos, &message)) {
         case GizmoInteraction::Highlight::Placed:
@@ -420,18 +436,24 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event) {
             emit statusMessage(message);
             break;
         case GizmoInteraction::Highlight::NothingSelected:
-            emit statusMessage(tr("Select a light, then click the model to place its highlight there "
+            emit statusMessage(tr("Select a light, then Ctrl+click the model to place its highlight there "
                                   "(Shift+click aims it instead)"));
             break;
         case GizmoInteraction::Highlight::Missed:
-            m_doc->setSelection({});
             break;
         }
+    } else if (nav == Navigation::Orbit && !m_moved && !m_pressFocused) {
+        // A plain click that hit no gizmo never moves a light. On the background it clears the selection,
+        // unless it was the click that gave the viewport the keyboard focus (from a dock's field, say).
+        if (!intersectModel(*m_scene->model(), projector().ray(pos))) m_doc->setSelection({});
     }
     event->accept();
 }
 
 void Viewport::wheelEvent(QWheelEvent* event) {
+    // Issue 41: after an edit in a dock, the number keys went on typing into that field while the user
+    // dollied the view. Qt gives a wheel focus only to spontaneous events of WheelFocus widgets: take it.
+    if (!hasFocus()) setFocus(Qt::OtherFocusReason);
     const double notches = event->angleDelta().y() / 120.0;
     if (notches != 0.0) {
         setNavigating(true);
@@ -505,6 +527,18 @@ QImage Viewport::renderScreenshot(const ScreenshotOptions& options, const Rig& r
                                        progress ? options.tileSize : 0);
     if (image.isNull() && error && error->isEmpty()) *error = tr("rendering failed");
     return image;
+}
+
+std::unique_ptr<SnapshotJob> Viewport::beginScreenshot(const ScreenshotOptions& options, QString* error) {
+    RenderSettings s = renderSettings(options.gizmos);
+    s.transparentBackground = options.transparent;
+    if (!options.gizmos) s.selectedLights.clear();
+    return m_snapshots->begin(m_doc->renderRig(), renderCamera(), options.size, s, options.supersample,
+                              options.tileSize, error);
+}
+
+bool Viewport::renderScreenshotTile(SnapshotJob* job, QString* error) {
+    return m_snapshots->renderNext(job, error);
 }
 
 QString Viewport::exportScreenshot(const ScreenshotOptions& options) {

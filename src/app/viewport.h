@@ -2,7 +2,8 @@
 // the Document's rig (solo applied), with light gizmos. Camera: orbit (left drag), pan (middle drag or
 // Shift+left drag), dolly (wheel), frame (F), standard views, the model file's cameras, look through a spot
 // light. Lights: click a gizmo to select it, drag it (Ctrl/Alt: along the view axis), drag a selected spot's
-// cone edge, Shift+click the model to aim the selected lights (GizmoInteraction). GL resources are released
+// cone edge, Shift+click the model to aim the selected lights, Ctrl+click it to place their highlight
+// (GizmoInteraction); a plain click on the model moves no light. GL resources are released
 // when the context goes away (QOpenGLContext::aboutToBeDestroyed).
 #pragma once
 
@@ -24,6 +25,7 @@ struct LoadedEnvironment;
 struct Rig;
 class Scene;
 class SnapshotRenderer;
+struct SnapshotJob;
 class ViewSettings;
 struct RenderSettings;
 struct ScreenshotOptions;
@@ -43,6 +45,9 @@ class Viewport : public QOpenGLWidget {
     // The camera as drawn: automatic clip planes enclose the model and every light's gizmo.
     ViewCamera renderCamera() const;
     void setCamera(const ViewCamera& camera);
+    // The camera a rig was saved with (Rig::view). With holdForModel (the model is still loading) the
+    // next model keeps it instead of being framed.
+    void showSavedView(const ViewCamera& camera, bool holdForModel);
     ScreenProjector projector() const; // widget pixels, the current camera
     std::optional<QPointF> lightScreenPosition(int row) const;
     GizmoInteraction* interaction() const { return m_interaction.get(); }
@@ -62,6 +67,10 @@ class Viewport : public QOpenGLWidget {
     // The same for another rig and camera: a turntable's frames (turntableexport.h).
     QImage renderScreenshot(const ScreenshotOptions& options, const Rig& rig, const ViewCamera& camera,
                             QString* error, const std::function<bool(int done, int total)>& progress = {});
+    // The same a tile at a time (screenshotjob.h): begin fixes the rig as drawn, the camera and the settings
+    // now; each renderScreenshotTile call renders the next tile. nullptr / false and *error on failure.
+    std::unique_ptr<SnapshotJob> beginScreenshot(const ScreenshotOptions& options, QString* error);
+    bool renderScreenshotTile(SnapshotJob* job, QString* error);
     // Renders and writes it at once (screenshotexport.h: atomic): error text, "" on success.
     QString exportScreenshot(const ScreenshotOptions& options);
 
@@ -74,9 +83,8 @@ class Viewport : public QOpenGLWidget {
     // The model and every light within kFramedLightRadii bounding radii of it (farther lights would leave
     // the model a dot). What a newly loaded model starts with, so the presets' key and fill are in view.
     void frameAllLights();
-    // Frames the model, these lights and those on screen when one of these is off-screen (a light just
-    // added); else nothing.
-    void keepLightsInView(const QList<int>& rows);
+    // Says in the status bar when one of these lights (one just added) is off-screen; the camera stays.
+    void reportLightsOutOfView(const QList<int>& rows);
     void setStandardView(const QString& name);
     void setModelCamera(int index);
     void lookThroughLight(int row);
@@ -95,6 +103,7 @@ class Viewport : public QOpenGLWidget {
     void initializeGL() override;
     void resizeGL(int w, int h) override;
     void paintGL() override;
+    void focusInEvent(QFocusEvent* event) override;
     void mousePressEvent(QMouseEvent* event) override;
     void mouseMoveEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;
@@ -122,6 +131,7 @@ class Viewport : public QOpenGLWidget {
     AbCompare* m_compare = nullptr;
     ViewCamera m_camera;
     bool m_cameraFramed = false;
+    bool m_holdCamera = false; // showSavedView while the model loads: the next model is not framed
     bool m_modelDirty = true;
     bool m_rigDirty = true;
     Navigation m_nav = Navigation::None;
@@ -133,6 +143,8 @@ class Viewport : public QOpenGLWidget {
     QTimer* m_settle = nullptr;
     void setNavigating(bool on);
     bool m_shiftPress = false;
+    bool m_focusedByClick = false; // focusInEvent by a mouse press, not yet seen by mousePressEvent
+    bool m_pressFocused = false;   // the current press is the one that gave the viewport the focus
     bool m_pickEnvironment = false;
     int m_framesRendered = 0;
     QString m_error;

@@ -2,6 +2,8 @@
 
 #include "rigjson.h"
 
+#include <QDir>
+#include <QFileInfo>
 #include <QtDebug>
 
 namespace lr {
@@ -11,6 +13,22 @@ bool isClassicShowcase(const QString& modelPath) {
     p.replace(QLatin1Char('\\'), QLatin1Char('/'));
     return p == QLatin1String(":/resources/models/suzanne/Suzanne.gltf") ||
            p.endsWith(QLatin1String("/resources/models/suzanne/Suzanne.gltf"));
+}
+
+std::optional<Rig> sampleRig(const QString& modelPath) {
+    QString p = modelPath;
+    p.replace(QLatin1Char('\\'), QLatin1Char('/'));
+    if (!p.startsWith(QLatin1String(":/resources/models/")) &&
+        !p.contains(QLatin1String("/resources/models/")))
+        return std::nullopt;
+    const QString rigPath = QFileInfo(p).dir().filePath(QStringLiteral("showcase.json"));
+    if (!QFileInfo::exists(rigPath)) return std::nullopt;
+    RigReadResult r = readRigFile(rigPath);
+    if (!r.ok()) {
+        qWarning().noquote() << "LightRig: the sample rig is unusable:" << r.errors.join(QLatin1Char('\n'));
+        return std::nullopt;
+    }
+    return *r.rig;
 }
 
 ShadingModel defaultShadingFor(bool hasPbrMaterials, const QString& modelPath) {
@@ -38,6 +56,9 @@ DefaultRigChoice chooseDefaultRig(bool hasPbrMaterials, const Rig& modelLights, 
     if (!modelLights.lights.empty()) {
         c.rig = withShading(modelLights, shading);
         c.source = QStringLiteral("the model's lights");
+    } else if (auto sample = sampleRig(modelPath)) {
+        c.rig = withShading(*sample, shading);
+        c.source = QStringLiteral("the sample's rig");
     } else if (shading == ShadingModel::Pbr) {
         c.rig = pbrDefaultRig();
         c.source = QStringLiteral("the physically based default rig");

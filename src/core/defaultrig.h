@@ -4,6 +4,8 @@
 //     with the model's own lights when it has some (KHR_lights_punctual semantics already: inverse-square
 //     with the range window, smooth cone of exponent 2, candela / lux), else the physically based default
 //     studio rig (the "pbr-three-point" preset);
+//   - a bundled sample model (resources/models/NAME/) with a "showcase.json" beside it: that rig (issue 41:
+//     the editor opens on the Avocado sample lit as a product shot), in the shading chosen as above;
 //   - otherwise classic shading, as before: the model's own lights when it has some, else the "default"
 //     preset. The bundled Suzanne is the classic showcase: it keeps the classic default (its pixels and the
 //     render baselines do not change) although glTF gives it metal-rough values.
@@ -32,6 +34,9 @@ ShadingModel defaultShadingFor(bool hasPbrMaterials, const QString& modelPath);
 
 // The bundled model (":/resources/models/suzanne/Suzanne.gltf", or that file in a source tree).
 bool isClassicShowcase(const QString& modelPath);
+
+// The rig beside a bundled sample model (resources/models/NAME/showcase.json), when there is one.
+std::optional<Rig> sampleRig(const QString& modelPath);
 
 // The physically based default studio rig: the "pbr-three-point" preset (a built-in fallback, made
 // physically based, if it were ever unreadable).

@@ -118,6 +118,19 @@ struct Ground {
 };
 inline constexpr double kGroundExtent = 10.0;
 
+// A camera view saved with the rig (docs/rig-format.md "view" and "views", issue 41): where the eye is,
+// what it looks at, the up hint and the vertical field of view, in world units (as the viewport's camera).
+// A bookmark has a name; the rig's own "view" (the camera when it was saved) has none.
+struct RigView {
+    QString name;
+    glm::dvec3 eye{0.0, 0.0, 5.0};
+    glm::dvec3 target{0.0};
+    glm::dvec3 up{0.0, 1.0, 0.0};
+    double yfovDeg = 45.0;
+    bool operator==(const RigView&) const = default;
+};
+constexpr int kMaxRigViews = 64; // named views in a rig
+
 struct Rig {
     QString name;
     RigSpace space = RigSpace::World;
@@ -126,6 +139,8 @@ struct Rig {
     Ground ground;
     Environment environment; // issue 15: none by default
     std::vector<Light> lights;
+    std::optional<RigView> view; // the camera as the rig was last saved (restored on open)
+    std::vector<RigView> views;  // named view bookmarks, names unique
     bool operator==(const Rig&) const = default;
 };
 

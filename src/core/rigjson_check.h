@@ -130,6 +130,12 @@ int formatVersionFor(const Rig& rig);
 // text (nullopt for the default environment, which is not written).
 std::optional<Environment> readEnvironment(Checker& c, const json::Value& v, const QString& path);
 std::optional<QByteArray> writeEnvironment(const Environment& environment);
+// rigjson_views.cpp: the rig's "view" (named: false) or one of its "views" (named: true), and the "views"
+// array (names unique, at most kMaxRigViews); nullopt when invalid (errors reported). writeView: canonical,
+// on one line.
+std::optional<RigView> readView(Checker& c, const json::Value& v, const QString& path, bool named);
+std::optional<std::vector<RigView>> readViews(Checker& c, const json::Value& v, const QString& path);
+QByteArray writeView(const RigView& view, bool named);
 // Errors for keys of "falloff" or "cone" written on the light itself or in the other object. `light`
 // describes the light ("a point light") when `o` is the light object, with whether its type has a
 // falloff and a cone, so that the message can say "a directional light has no range".

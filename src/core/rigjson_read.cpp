@@ -268,6 +268,10 @@ RigReadResult readRigJson(const QByteArray& data, const QString& displayName) {
         if (const auto ground = readGround(c, *g, QStringLiteral("ground"))) rig.ground = *ground;
     if (const Value* e = top.take("environment"))
         if (auto env = rigjson::readEnvironment(c, *e, QStringLiteral("environment"))) rig.environment = *env;
+    if (const Value* v = top.take("view"))
+        if (auto view = rigjson::readView(c, *v, QStringLiteral("view"), false)) rig.view = *view;
+    if (const Value* v = top.take("views"))
+        if (auto views = rigjson::readViews(c, *v, QStringLiteral("views"))) rig.views = std::move(*views);
     if (const Value* lights = top.take("lights")) {
         if (lights->kind != Value::Kind::Array) {
             c.expected(*lights, QStringLiteral("lights"), QStringLiteral("an array of lights [...]"));

@@ -166,6 +166,14 @@ QByteArray writeRigJson(const Rig& rig) {
             {"ground", inlineObject({{"mode", name(rig.ground.mode)}, {"color", vec(rig.ground.color)}})});
     if (const auto environment = rigjson::writeEnvironment(rig.environment))
         top.push_back({"environment", *environment});
+    if (rig.view) top.push_back({"view", rigjson::writeView(*rig.view, false)});
+    if (!rig.views.empty()) {
+        QByteArray views = "[\n";
+        for (size_t i = 0; i < rig.views.size(); ++i)
+            views +=
+                "    " + rigjson::writeView(rig.views[i], true) + (i + 1 < rig.views.size() ? ",\n" : "\n");
+        top.push_back({"views", views + "  ]"});
+    }
     top.push_back({"lights", lights});
     return blockObject(top, "") + '\n';
 }

@@ -72,8 +72,11 @@ QString Document::save() {
 
 QString Document::saveAs(const QString& filePath) {
     QString error;
-    if (!saveRigFile(m_rig, filePath, &error))
+    Rig rig = m_rig;
+    if (currentView) rig.view = currentView();
+    if (!saveRigFile(rig, filePath, &error))
         return error.isEmpty() ? tr("%1: could not be saved").arg(filePath) : error;
+    m_rig.view = rig.view; // the view as saved (no signal: nothing the views show changed)
     m_undoStack.setClean();
     if (filePath != m_filePath) {
         m_filePath = filePath;

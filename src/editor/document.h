@@ -18,6 +18,8 @@
 #include <QStringList>
 #include <QUndoStack>
 #include <QVariant>
+#include <functional>
+#include <optional>
 #include <vector>
 
 namespace lr {
@@ -77,6 +79,9 @@ class Document : public QObject {
     // Atomic; on success the undo stack is marked clean. Return the error text, empty on success.
     QString save();
     QString saveAs(const QString& filePath);
+    // The camera view written as the rig's "view" on save (Rig::view; the viewport's camera). Moving the
+    // camera is no edit: it does not mark the rig modified. Unset: the rig's view is written as it is.
+    std::function<std::optional<RigView>()> currentView;
     // A new untitled document with this rig (default: empty rig), empty undo stack, clean.
     void newRig(const Rig& rig = Rig{});
 

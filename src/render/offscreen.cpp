@@ -131,55 +131,74 @@ void OffscreenRenderer::releaseTarget() {
     m_targetSize = QSize();
 }
 
+bool OffscreenRenderer::beginImage(TiledImage* job, const ViewCamera& camera, QSize size,
+                                   const RenderSettings& settings, int supersample, QString* error) {
+    if (size.isEmpty() || size.width() > 65536 || size.height() > 65536)
+        return fail(error,
+                    QStringLiteral("image size %1x%2 is out of range").arg(size.width()).arg(size.height()));
+    job->camera = camera;
+    job->settings = settings;
+    job->size = size;
+    job->supersample = std::clamp(supersample, 1, 4);
+    job->full = size * job->supersample;
+    job->image = QImage(size, QImage::Format_RGBA8888);
+    if (job->image.isNull())
+        return fail(
+            error,
+            QStringLiteral("not enough memory for a %1x%2 image").arg(size.width()).arg(size.height()));
+    const int ss = job->supersample;
+    job->tile = std::max(ss, maxTileSize() / ss * ss); // tiles map to whole output pixels
+    job->tilesTotal = ((job->full.width() + job->tile - 1) / job->tile) *
+                      ((job->full.height() + job->tile - 1) / job->tile);
+    job->tilesDone = 0;
+    job->pixelsTotal = qint64(job->full.width()) * job->full.height();
+    job->pixelsDone = 0;
+    return true;
+}
+
+bool OffscreenRenderer::renderNextTile(TiledImage* job, QString* error) {
+    if (job->finished()) return true;
+    if (!makeCurrent()) return fail(error, QStringLiteral("no OpenGL context"));
+    const int columns = (job->full.width() + job->tile - 1) / job->tile;
+    const int tx = (job->tilesDone % columns) * job->tile, ty = (job->tilesDone / columns) * job->tile;
+    const QRect rect(tx, ty, std::min(job->tile, job->full.width() - tx),
+                     std::min(job->tile, job->full.height() - ty));
+    if (!ensureTarget(rect.size(), error)) return false;
+    const bool whole = rect.size() == job->full;
+    if (!m_renderer.render(job->camera, job->full, job->settings, m_fbo, whole ? QRect() : rect))
+        return fail(error, m_renderer.lastError());
+    QImage part(rect.size(), QImage::Format_RGBA8888);
+    m_gl.glBindFramebuffer(GL_READ_FRAMEBUFFER, m_fbo);
+    m_gl.glReadBuffer(GL_COLOR_ATTACHMENT0);
+    m_gl.glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    m_gl.glPixelStorei(GL_PACK_ROW_LENGTH, int(part.bytesPerLine() / 4));
+    m_gl.glReadPixels(0, 0, rect.width(), rect.height(), GL_RGBA, GL_UNSIGNED_BYTE, part.bits());
+    m_gl.glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+    m_gl.glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    part = downsampleLinear(std::move(part).mirrored(), job->supersample); // GL rows run bottom-up
+    const QPoint at(tx / job->supersample, ty / job->supersample);
+    for (int y = 0; y < part.height(); ++y)
+        std::memcpy(job->image.scanLine(at.y() + y) + size_t(at.x()) * 4, part.constScanLine(y),
+                    size_t(part.width()) * 4);
+    ++job->tilesDone;
+    job->pixelsDone += qint64(rect.width()) * rect.height();
+    return true;
+}
+
 QImage OffscreenRenderer::renderImage(const ViewCamera& camera, QSize size, const RenderSettings& settings,
                                       int supersample, QString* error, const TileProgress& progress) {
     if (!makeCurrent()) return fail(error, QStringLiteral("no OpenGL context")), QImage();
-    if (size.isEmpty() || size.width() > 65536 || size.height() > 65536)
-        return fail(error,
-                    QStringLiteral("image size %1x%2 is out of range").arg(size.width()).arg(size.height())),
-               QImage();
-    const int ss = std::clamp(supersample, 1, 4);
-    const QSize full = size * ss;
-    QImage out(size, QImage::Format_RGBA8888);
-    if (out.isNull())
-        return fail(error, QStringLiteral("not enough memory for a %1x%2 image")
-                               .arg(size.width())
-                               .arg(size.height())),
-               QImage();
-    const int tile = std::max(ss, maxTileSize() / ss * ss); // tiles map to whole output pixels
-    const int total = ((full.width() + tile - 1) / tile) * ((full.height() + tile - 1) / tile);
-    int done = 0;
+    TiledImage job;
+    if (!beginImage(&job, camera, size, settings, supersample, error)) return QImage();
     const auto keepGoing = [&] {
         if (!progress) return true;
-        if (!progress(done, total)) return fail(error, QStringLiteral("cancelled"));
+        if (!progress(job.tilesDone, job.tilesTotal)) return fail(error, QStringLiteral("cancelled"));
         return makeCurrent() || fail(error, QStringLiteral("no OpenGL context")); // it may have switched
     };
     if (!keepGoing()) return QImage();
-    for (int ty = 0; ty < full.height(); ty += tile) {
-        for (int tx = 0; tx < full.width(); tx += tile) {
-            const QRect rect(tx, ty, std::min(tile, full.width() - tx), std::min(tile, full.height() - ty));
-            if (!ensureTarget(rect.size(), error)) return QImage();
-            const bool whole = rect.size() == full;
-            if (!m_renderer.render(camera, full, settings, m_fbo, whole ? QRect() : rect))
-                return fail(error, m_renderer.lastError()), QImage();
-            QImage part(rect.size(), QImage::Format_RGBA8888);
-            m_gl.glBindFramebuffer(GL_READ_FRAMEBUFFER, m_fbo);
-            m_gl.glReadBuffer(GL_COLOR_ATTACHMENT0);
-            m_gl.glPixelStorei(GL_PACK_ALIGNMENT, 4);
-            m_gl.glPixelStorei(GL_PACK_ROW_LENGTH, int(part.bytesPerLine() / 4));
-            m_gl.glReadPixels(0, 0, rect.width(), rect.height(), GL_RGBA, GL_UNSIGNED_BYTE, part.bits());
-            m_gl.glPixelStorei(GL_PACK_ROW_LENGTH, 0);
-            m_gl.glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-            part = downsampleLinear(std::move(part).mirrored(), ss); // GL rows run bottom-up
-            const QPoint at(tx / ss, ty / ss);
-            for (int y = 0; y < part.height(); ++y)
-                std::memcpy(out.scanLine(at.y() + y) + size_t(at.x()) * 4, part.constScanLine(y),
-                            size_t(part.width()) * 4);
-            ++done;
-            if (!keepGoing()) return QImage();
-        }
-    }
-    return out;
+    while (!job.finished())
+        if (!renderNextTile(&job, error) || !keepGoing()) return QImage();
+    return std::move(job.image);
 }
 
 bool OffscreenRenderer::renderFrame(const ViewCamera& camera, QSize size, const RenderSettings& settings,

@@ -23,6 +23,20 @@ namespace lr {
 // returning false cancels. It may run the event loop (other contexts may be current when it returns).
 using TileProgress = std::function<bool(int done, int total)>;
 
+// A tiled image render in progress (OffscreenRenderer::beginImage / renderNextTile): what it draws, fixed at
+// its start, the image so far and how much of the work is done. Progress is in rendered pixels (edge tiles
+// are smaller), so a share of pixelsDone / pixelsTotal is a share of the work.
+struct TiledImage {
+    ViewCamera camera;
+    RenderSettings settings;
+    QSize size, full; // output pixels; rendered pixels (size × supersample)
+    int supersample = 1, tile = 0;
+    int tilesDone = 0, tilesTotal = 0;
+    qint64 pixelsDone = 0, pixelsTotal = 0;
+    QImage image; // RGBA8888, straight alpha; complete when tilesDone == tilesTotal
+    bool finished() const { return tilesDone >= tilesTotal; }
+};
+
 class OffscreenRenderer {
   public:
     OffscreenRenderer();
@@ -44,6 +58,12 @@ class OffscreenRenderer {
     // A null image on failure, *error saying why ("cancelled" when progress returned false).
     QImage renderImage(const ViewCamera& camera, QSize size, const RenderSettings& settings, int supersample,
                        QString* error, const TileProgress& progress = {});
+    // The same in steps a caller drives (from the event loop, say): beginImage checks the size and allocates
+    // the image (tiles of at most maxTileSize() at the time), renderNextTile renders the next tile into it.
+    // False and *error on failure. renderImage is these two in a loop.
+    bool beginImage(TiledImage* job, const ViewCamera& camera, QSize size, const RenderSettings& settings,
+                    int supersample, QString* error);
+    bool renderNextTile(TiledImage* job, QString* error);
     // One frame into an internal target of `size` (one tile), waited for with glFinish: for timing.
     bool renderFrame(const ViewCamera& camera, QSize size, const RenderSettings& settings, QString* error);
     // Linear radiance before exposure and tone mapping (RGBA32F target, one tile: size <= maxTileSize()).

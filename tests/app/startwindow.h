@@ -1,5 +1,6 @@
 // The editor's main window as the app tests start it (tst_mainwindow, tst_friction, tst_newuser,
-// tst_screenshotexport each had a copy): no session restore, the bundled model imported through the worker,
+// tst_screenshotexport each had a copy): no session restore, the bundled Suzanne (the classic showcase the
+// tests were written for; the editor itself opens on the Avocado sample) imported through the worker,
 // the window shown, exposed and active, and a first frame rendered. Replace the file dialogs before calling
 // it when a test must not see one.
 #pragma once
@@ -51,6 +52,7 @@ inline QString startMainWindow(MainWindow& window) {
     QSignalSpy loaded(window.files(), &DocumentFiles::modelLoadFinished);
     EditorOptions options;
     options.restoreSession = false;
+    options.modelPath = MainWindow::suzannePath();
     window.openInitial(options);
     window.show();
     if (!QTest::qWaitForWindowExposed(&window)) return QStringLiteral("the main window was never exposed");
@@ -61,6 +63,15 @@ inline QString startMainWindow(MainWindow& window) {
     if (!QTest::qWaitFor([&] { return window.viewport()->hasRenderedFrame(); }, 30000))
         return QStringLiteral("the viewport rendered no frame in 30 s");
     return {};
+}
+
+// With LIGHTRIG_SHOTS=FOLDER set, saves the window as FOLDER/NAME.png (the screenshots, looked at by
+// a person); otherwise nothing.
+inline void shot(QWidget& window, const QString& name) {
+    const QString dir = qEnvironmentVariable("LIGHTRIG_SHOTS");
+    if (dir.isEmpty()) return;
+    QTest::qWait(300); // a settled frame
+    window.grab().save(dir + QLatin1Char('/') + name + QStringLiteral(".png"));
 }
 
 } // namespace lr::test

@@ -275,7 +275,7 @@ class TestAreaGizmos : public QObject {
         QStringList help;
         for (const ControlBinding& b : mouseBindings())
             help << b.input + QLatin1Char('=') + b.effect;
-        QVERIFY(help.filter(QStringLiteral("Click the model=Place the highlight")).size() == 1);
+        QVERIFY(help.filter(QStringLiteral("Ctrl+click the model=Place the highlight")).size() == 1);
         QVERIFY(help.filter(QStringLiteral("Shift+click the model=Aim")).size() == 1);
     }
 };

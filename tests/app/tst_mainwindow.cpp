@@ -149,15 +149,19 @@ class TestMainWindow : public QObject {
         QCOMPARE(doc()->filePath(), path);
         QVERIFY(m_window->windowTitle().contains(QLatin1String("spot.json")));
         QVERIFY(!m_window->isWindowModified());
+        // Issue 41: the file also holds the camera as it was saved (the rig's "view").
+        Rig withView = saved;
+        withView.view = doc()->rig().view;
+        QVERIFY(withView.view.has_value());
 
         // Reopen: the same rig, and the file holds exactly its canonical form.
         doc()->newRig(Rig{});
         QVERIFY(m_window->files()->openRig(path));
         QCOMPARE(doc()->lightCount(), 1);
-        QVERIFY(doc()->rig() == saved);
+        QVERIFY(doc()->rig() == withView);
         QFile f(path);
         QVERIFY(f.open(QIODevice::ReadOnly));
-        QCOMPARE(f.readAll(), json(saved));
+        QCOMPARE(f.readAll(), json(withView));
         QVERIFY(!m_window->isWindowModified());
     }
 
@@ -464,7 +468,7 @@ class TestMainWindow : public QObject {
         QVERIFY(glm::length(viewport()->camera().eye - model.cameras[0].position) < 1e-9);
 
         QSignalSpy back(m_window->files(), &DocumentFiles::modelLoaded);
-        QVERIFY(m_window->files()->openModel(MainWindow::bundledModelPath()));
+        QVERIFY(m_window->files()->openModel(MainWindow::suzannePath()));
         QVERIFY(back.wait(60000));
     }
 
@@ -507,9 +511,10 @@ class TestMainWindow : public QObject {
         QSignalSpy first(w.files(), &DocumentFiles::modelLoadFinished);
         EditorOptions options;
         options.restoreSession = false;
+        options.modelPath = MainWindow::suzannePath();
         w.openInitial(options);
         QVERIFY(first.count() > 0 || first.wait(60000));
-        QCOMPARE(w.scene()->path(), MainWindow::bundledModelPath());
+        QCOMPARE(w.scene()->path(), MainWindow::suzannePath());
         QVERIFY(w.document()->rig() == defaultRig());
         QVERIFY(w.files()->rigFollowsModel());
 

@@ -1,7 +1,9 @@
-// "Export screenshot" with progress and Cancel (app/screenshotexport.h) on a real main window under Xvfb:
-// a large export advances tile by tile while the viewport keeps repainting; Cancel during the render or
-// during the writing leaves an existing file byte for byte as it was (and no temporary file); a thumbnail
-// rendered through the same offscreen renderer between tiles does not change the exported pixels.
+// "Export screenshot" in the background (app/screenshotjob.h, issue 41 item 12) on a real main window under
+// Xvfb: a large export advances tile by tile, its progress rising to 100 in proportion to the pixels
+// rendered, while the event loop runs (timers fire, the viewport repaints, an edit is applied) and the
+// image stays what it was when the export began; Cancel during the render or during the writing leaves an
+// existing file byte for byte as it was (and no temporary file); a thumbnail rendered through the same
+// offscreen renderer between tiles does not change the exported pixels; the dialog keeps its last file.
 #include "app/commandline.h"
 #include "app/documentfiles.h"
 #include "app/editorapp.h"
@@ -9,6 +11,7 @@
 #include "app/mainwindow.h"
 #include "app/screenshotdialog.h"
 #include "app/screenshotexport.h"
+#include "app/screenshotjob.h"
 #include "app/viewport.h"
 #include "editor/document.h"
 #include "model/isolatedimport.h"
@@ -19,13 +22,14 @@
 #include <QElapsedTimer>
 #include <QFile>
 #include <QImageReader>
-#include <QProgressDialog>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
+#include <QToolButton>
 #include <functional>
 
 using namespace lr;
@@ -38,18 +42,25 @@ class TestScreenshotExport : public QObject {
     QList<ErrorReport> m_errors;
 
     Viewport* viewport() { return m_window->viewport(); }
-    QProgressDialog* progressDialog() {
-        return m_window->findChild<QProgressDialog*>(QStringLiteral("screenshotProgress"));
-    }
-    // Runs `tick` on every pass of the event loop while the export runs (between tiles, while writing).
-    ScreenshotExportResult exportWhile(const ScreenshotOptions& o, const std::function<void()>& tick) {
+    // Starts a background export with its status-bar progress and runs the event loop until it finished,
+    // `tick` on every pass (between tiles, while writing); the job's percentages in *percents.
+    ScreenshotExportResult exportWhile(const ScreenshotOptions& o,
+                                       const std::function<void(ScreenshotJob&)>& tick,
+                                       QList<int>* percents = nullptr) {
+        ScreenshotJob job(viewport(), o);
+        connect(&job, &ScreenshotJob::progressChanged, this, [percents](int p) {
+            if (percents) percents->append(p);
+        });
+        QSignalSpy done(&job, &ScreenshotJob::finished);
         QTimer timer;
         timer.setInterval(0);
-        connect(&timer, &QTimer::timeout, this, tick);
+        connect(&timer, &QTimer::timeout, this, [&] { tick(job); });
+        showInStatusBar(m_window.get(), &job);
+        job.start();
         timer.start();
-        const ScreenshotExportResult r = exportScreenshotWithProgress(m_window.get(), viewport(), o);
+        if (!done.wait(240000)) qWarning("the export did not finish in 240 s");
         timer.stop();
-        return r;
+        return job.result();
     }
     static QByteArray bytes(const QString& path) {
         QFile f(path);
@@ -72,58 +83,93 @@ class TestScreenshotExport : public QObject {
         setErrorPresenter({});
         QVERIFY(m_errors.isEmpty());
     }
-    void largeExportAdvancesPerTile_andTheWindowRepaints();
+    void largeExportAdvancesPerTile_andTheWindowTakesEdits();
     void cancelWhileRendering_leavesTheFileAsItWas();
     void cancelWhileWriting_leavesTheFileAsItWas();
     void thumbnailBetweenTiles_doesNotChangeTheImage();
+    void dialogRemembersTheLastPath();
 };
 
-void TestScreenshotExport::largeExportAdvancesPerTile_andTheWindowRepaints() {
+void TestScreenshotExport::largeExportAdvancesPerTile_andTheWindowTakesEdits() {
     ScreenshotOptions o;
     o.path = m_dir.filePath(QStringLiteral("large.png"));
-    o.size = QSize(4096, 4096);
-    o.supersample = 1;
-    o.tileSize = 512; // 8 x 8 tiles
-    QList<int> values;
-    int maximum = -1;
+    o.size = QSize(1000, 600); // 2000×1200 rendered in 7 × 4 tiles, the last column and row smaller
+    o.supersample = 2;
+    o.tileSize = 320;
+    QString error;
+    const QImage expected = // the scene as the export begins, in the same tiles
+        viewport()->renderScreenshot(o, &error, [](int, int) { return true; });
+    QVERIFY2(!expected.isNull(), qPrintable(error));
+    QList<int> percents, barValues;
+    int timerTicks = 0, tilesWhenEdited = -1;
+    bool shotTaken = false;
+    QTimer other; // an unrelated timer keeps firing while the export runs
+    other.setInterval(0);
+    connect(&other, &QTimer::timeout, this, [&] { ++timerTicks; });
+    other.start();
     QSignalSpy frames(viewport(), &Viewport::frameRendered);
-    QElapsedTimer clock;
-    clock.start();
-    const ScreenshotExportResult r = exportWhile(o, [&] {
-        QProgressDialog* d = progressDialog();
-        if (!d || d->maximum() == 0) return; // not yet, or writing (busy indicator)
-        maximum = d->maximum();
-        if (values.isEmpty() || values.last() != d->value()) values << d->value();
-        viewport()->update(); // the window keeps painting between tiles
-    });
+    Document* doc = m_window->document();
+    const Rig before = doc->rig();
+    const ScreenshotExportResult r = exportWhile(
+        o,
+        [&](ScreenshotJob& job) {
+            if (auto* bar = m_window->findChild<QProgressBar*>(QStringLiteral("screenshotProgress")))
+                if (barValues.isEmpty() || barValues.last() != bar->value()) barValues << bar->value();
+            if (tilesWhenEdited < 0 && job.percent() > 0 && job.isRunning() && !job.isWriting()) {
+                // An edit in the middle of the export: applied now, not drawn into the image.
+                QList<int> all;
+                for (int row = 0; row < doc->lightCount(); ++row)
+                    all << row;
+                QVERIFY(doc->setLightsEnabled(all, false));
+                tilesWhenEdited = job.percent();
+            }
+            if (job.percent() >= 40 && !shotTaken) {
+                shotTaken = true;
+                test::shot(*m_window, QStringLiteral("editor2-export-in-background"));
+            }
+            viewport()->update();
+        },
+        &percents);
+    other.stop();
     QVERIFY2(r.ok(), qPrintable(r.error));
-    QCOMPARE(r.tiles, 64);
-    QCOMPARE(maximum, 64);
-    qInfo("4096x4096 in 64 tiles, rendered and written in %lld ms; progress values seen: %lld, viewport "
-          "frames during the export: %lld",
-          qlonglong(clock.elapsed()), qlonglong(values.size()), qlonglong(frames.size()));
-    QVERIFY(std::is_sorted(values.begin(), values.end()));
-    QCOMPARE(values.last(), 64);
-    QVERIFY2(values.size() >= 16, "the dialog advanced tile by tile");
+    QCOMPARE(r.tiles, 28);
+    QVERIFY2(tilesWhenEdited > 0 && tilesWhenEdited < ScreenshotJob::kRenderedPercent,
+             qPrintable(QString::number(tilesWhenEdited)));
+    QVERIFY(doc->rig() != before); // the edit was applied while the export ran
+    QVERIFY2(timerTicks >= 28, qPrintable(QString::number(timerTicks)));
     QVERIFY2(frames.size() >= 2, "the viewport repainted while the screenshot rendered");
-    QCOMPARE(QImageReader(o.path).size(), o.size);
-    QVERIFY(!progressDialog()); // gone with the export
+    QVERIFY(std::is_sorted(percents.begin(), percents.end()));
+    QVERIFY2(percents.size() >= 25, qPrintable(QString::number(percents.size()))); // tile by tile
+    QCOMPARE(percents.first(), 0);
+    QCOMPARE(percents.last(), 100);
+    // Honest: after the first tile (320×320 of 2000×1200 rendered pixels) its share of the pixels.
+    QVERIFY(percents.contains(int(ScreenshotJob::kRenderedPercent * (320.0 * 320) / (2000.0 * 1200))));
+    QVERIFY(std::is_sorted(barValues.begin(), barValues.end()));
+    QVERIFY(barValues.size() >= 10);
+    QVERIFY(!m_window->findChild<QProgressBar*>(QStringLiteral("screenshotProgress")) || QTest::qWaitFor([&] {
+        return !m_window->findChild<QProgressBar*>(QStringLiteral("screenshotProgress"));
+    }));
+    QImageReader reader(o.path);
+    QCOMPARE(reader.size(), o.size);
+    QVERIFY(reader.read().convertToFormat(QImage::Format_RGBA8888) ==
+            expected.convertToFormat(QImage::Format_RGBA8888));
+    doc->undoStack()->undo();
 }
 
 void TestScreenshotExport::cancelWhileRendering_leavesTheFileAsItWas() {
     ScreenshotOptions o;
     o.path = m_dir.filePath(QStringLiteral("large.png")); // written by the previous test
-    o.size = QSize(4096, 4096);
+    o.size = QSize(2048, 2048);
     o.supersample = 1;
-    o.tileSize = 512;
+    o.tileSize = 256; // 64 tiles
     const QByteArray before = bytes(o.path);
     QVERIFY(!before.isEmpty());
-    const ScreenshotExportResult r = exportWhile(o, [&] {
-        QProgressDialog* d = progressDialog();
-        if (!d || d->maximum() == 0 || d->value() < 3 || d->wasCanceled()) return;
-        QPushButton* cancel = d->findChild<QPushButton*>(); // what the user clicks
-        QVERIFY(cancel);
-        cancel->click();
+    const ScreenshotExportResult r = exportWhile(o, [&](ScreenshotJob& job) {
+        if (job.isRunning() && !job.isWriting() && job.percent() >= 4) {
+            auto* cancel = m_window->findChild<QToolButton*>(QStringLiteral("screenshotCancel"));
+            QVERIFY(cancel); // what the user clicks
+            cancel->click();
+        }
     });
     QVERIFY(r.cancelled);
     QVERIFY(r.error.isEmpty());
@@ -140,11 +186,10 @@ void TestScreenshotExport::cancelWhileWriting_leavesTheFileAsItWas() {
     o.tileSize = 1024;
     const QByteArray before = bytes(o.path);
     bool sawWriting = false;
-    const ScreenshotExportResult r = exportWhile(o, [&] {
-        QProgressDialog* d = progressDialog();
-        if (d && d->maximum() == 0 && !d->wasCanceled()) { // the busy indicator: encoding the file
+    const ScreenshotExportResult r = exportWhile(o, [&](ScreenshotJob& job) {
+        if (job.isWriting() && !sawWriting) { // encoding the file
             sawWriting = true;
-            d->cancel();
+            job.cancel();
         }
     });
     QVERIFY(sawWriting);
@@ -190,6 +235,21 @@ void TestScreenshotExport::thumbnailBetweenTiles_doesNotChangeTheImage() {
     const QImage cancelled = viewport()->renderScreenshot(o, &error, [](int done, int) { return done < 2; });
     QVERIFY(cancelled.isNull());
     QCOMPARE(error, QStringLiteral("cancelled"));
+}
+
+// Issue 41 item 16: the dialog offers the file last exported to, not the suggestion, while its folder exists.
+void TestScreenshotExport::dialogRemembersTheLastPath() {
+    const QString chosen = m_dir.filePath(QStringLiteral("chosen.png"));
+    {
+        ScreenshotDialog dialog(QSize(640, 360), m_dir.filePath(QStringLiteral("suggested.png")));
+        ScreenshotOptions o = dialog.options();
+        o.path = chosen;
+        dialog.setOptions(o);
+        dialog.accept();
+        QCOMPARE(dialog.result(), int(QDialog::Accepted));
+    }
+    ScreenshotDialog again(QSize(640, 360), m_dir.filePath(QStringLiteral("other.png")));
+    QCOMPARE(again.options().path, chosen);
 }
 
 QTEST_MAIN(TestScreenshotExport)

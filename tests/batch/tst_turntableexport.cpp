@@ -15,6 +15,8 @@
 
 #include <QAction>
 #include <QDir>
+#include <QFile>
+#include <QFileInfo>
 #include <QImageReader>
 #include <QProgressDialog>
 #include <QPushButton>
@@ -139,6 +141,30 @@ class TestTurntableExport : public QObject {
         dialog.accept();
         QCOMPARE(dialog.result(), int(QDialog::Accepted));
         QCOMPARE(dialog.options().frames, 1);
+    }
+
+    // Issue 41 item 16: a folder that does not exist yet is accepted by the dialog and created by the export.
+    void exportCreatesItsFolder() {
+        const QString folder = m_dir.filePath(QStringLiteral("new/turns"));
+        TurntableOptions o = options(QStringLiteral("new/turns/frame_##.png"), 2);
+        TurntableDialog dialog(QSize(640, 360), o.shot.path);
+        dialog.setOptions(o);
+        dialog.accept();
+        QVERIFY2(dialog.result() == QDialog::Accepted, qPrintable(dialog.message()));
+        QVERIFY(!QFileInfo::exists(folder)); // the dialog creates nothing
+        const TurntableExportResult r = exportWhile(o, [] {});
+        QVERIFY2(r.ok(), qPrintable(r.error));
+        QCOMPARE(r.written.size(), 2);
+        for (const QString& file : r.written)
+            QCOMPARE(QImageReader(file).size(), QSize(96, 64));
+        // Under a file, no folder can be made: the dialog says so.
+        QFile blocker(m_dir.filePath(QStringLiteral("a-file")));
+        QVERIFY(blocker.open(QIODevice::WriteOnly));
+        blocker.close();
+        o.shot.path = m_dir.filePath(QStringLiteral("a-file/sub/frame_##.png"));
+        dialog.setOptions(o);
+        dialog.accept();
+        QVERIFY2(dialog.message().contains(QStringLiteral("a-file")), qPrintable(dialog.message()));
     }
 };
 

@@ -1,0 +1,161 @@
+// Issue 41 item 13, through the main window under Xvfb: adding a light leaves the camera where it is (the
+// camera is no part of the undo step); a plain click on the model moves no light (Ctrl+click places the
+// highlight); the click that moves the keyboard focus from a dock's field to the viewport keeps the
+// selection; the wheel over the viewport takes the focus too, so number keys then choose standard views
+// instead of typing into the field last edited.
+#include "app/gizmointeraction.h"
+#include "app/lightsdock.h"
+#include "app/numberedit.h"
+#include "app/picking.h"
+#include "app/propertiesdock.h"
+#include "startwindow.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QLineEdit>
+#include <QLineF>
+#include <QTest>
+#include <QUndoStack>
+#include <QWheelEvent>
+#include <glm/geometric.hpp>
+
+using namespace lr;
+
+class TestViewportClicks : public QObject {
+    Q_OBJECT
+
+    std::unique_ptr<MainWindow> m_window;
+
+    Document* doc() { return m_window->document(); }
+    Viewport* viewport() { return m_window->viewport(); }
+
+    // A point on the model near the centre and one on the background, neither on a light's gizmo.
+    void modelAndBackground(QPoint* onModel, QPoint* background) {
+        const ScreenProjector proj = viewport()->projector();
+        const Model& model = *m_window->scene()->model();
+        std::optional<QPoint> m, b;
+        for (int y = 4; y < viewport()->height() && !(m && b); y += 7)
+            for (int x = 4; x < viewport()->width() && !(m && b); x += 7) {
+                const QPoint q(x, y);
+                if (viewport()->interaction()->pickLight(proj, q) >= 0) continue;
+                const bool hit = intersectModel(model, proj.ray(q)).has_value();
+                if (hit && !m && QLineF(q, viewport()->rect().center()).length() < 80) m = q;
+                if (!hit && !b) b = q;
+            }
+        QVERIFY(m && b);
+        *onModel = *m;
+        *background = *b;
+    }
+
+    static bool sameCamera(const ViewCamera& a, const ViewCamera& b) {
+        return glm::length(a.eye - b.eye) < 1e-12 && glm::length(a.target - b.target) < 1e-12 &&
+               glm::length(a.up - b.up) < 1e-12 && a.yfovDeg == b.yfovDeg;
+    }
+
+  private slots:
+    void initTestCase() {
+        test::prepareEditorTest(QStringLiteral("lightrig-viewportclicks-test"));
+        m_window = std::make_unique<MainWindow>();
+        const QString started = test::startMainWindow(*m_window);
+        QVERIFY2(started.isEmpty(), qPrintable(started));
+    }
+
+    void cleanupTestCase() {
+        doc()->undoStack()->setClean();
+        m_window.reset();
+    }
+
+    // A light added while the camera is close in lands outside the view: the camera does not follow it
+    // (it did, outside undo); the status bar says so instead.
+    void addLight_leavesTheCamera() {
+        doc()->newRig(Rig{});
+        viewport()->frameAll();
+        ViewCamera close = viewport()->camera();
+        close.eye = close.target + (close.eye - close.target) * 0.15; // inside the placement radius
+        viewport()->setCamera(close);
+        const ViewCamera before = viewport()->camera();
+        auto* add = m_window->findChild<QAction*>(QStringLiteral("addLight_spot"));
+        QVERIFY(add);
+        add->trigger();
+        QCOMPARE(doc()->lightCount(), 1);
+        const auto at = viewport()->lightScreenPosition(0);
+        QVERIFY2(!at || !QRectF(viewport()->rect()).contains(*at), "the new light must be off-screen here");
+        QVERIFY(sameCamera(viewport()->camera(), before));
+        doc()->undoStack()->undo();
+        QCOMPARE(doc()->lightCount(), 0);
+        QVERIFY(sameCamera(viewport()->camera(), before));
+    }
+
+    // A plain click on the model moves no light and adds no step; Ctrl+click places the highlight.
+    void plainClickOnTheModel_movesNoLight() {
+        QVERIFY(test::spotInFrontOfTheModel(*m_window));
+        doc()->setSelectedRows({0});
+        QPoint onModel, background;
+        modelAndBackground(&onModel, &background);
+        const Light before = doc()->light(0);
+        const int steps = doc()->undoStack()->count();
+        QTest::mouseClick(viewport(), Qt::LeftButton, Qt::NoModifier, onModel);
+        QCOMPARE(doc()->undoStack()->count(), steps);
+        QVERIFY(doc()->light(0).position == before.position);
+        QVERIFY(doc()->light(0).direction == before.direction);
+        QCOMPARE(doc()->selectedRows(), QList<int>{0});
+        QTest::mouseClick(viewport(), Qt::LeftButton, Qt::ControlModifier, onModel);
+        QCOMPARE(doc()->undoStack()->count(), steps + 1);
+        QVERIFY(doc()->light(0).position != before.position);
+        QCOMPARE(doc()->selectedRows(), QList<int>{0});
+    }
+
+    // A name typed into the Properties dock's field (the focus stays there), then the viewport used.
+    QLineEdit* editName(const QString& text) {
+        QWidget* field = m_window->propertiesDock()->field(LightProperty::Name);
+        if (!field) return nullptr;
+        auto* name = qobject_cast<QLineEdit*>(field) ? qobject_cast<QLineEdit*>(field)
+                                                     : field->findChild<QLineEdit*>();
+        if (!name) return nullptr;
+        name->setFocus(Qt::MouseFocusReason);
+        if (!QTest::qWaitFor([name] { return name->hasFocus(); })) return nullptr;
+        name->selectAll();
+        QTest::keyClicks(name, text);
+        QTest::keyClick(name, Qt::Key_Return);
+        return name;
+    }
+
+    // Turning the wheel over the viewport after editing a field moves the keyboard focus there: "1" then
+    // chooses the first standard view instead of typing into the field.
+    void wheelOverTheViewport_numberKeysGoToTheView() {
+        QVERIFY(test::spotInFrontOfTheModel(*m_window));
+        doc()->setSelectedRows({0});
+        QLineEdit* name = editName(QStringLiteral("Key"));
+        QVERIFY(name);
+        QCOMPARE(doc()->light(0).name, QStringLiteral("Key"));
+        const QPointF at(viewport()->width() / 2, viewport()->height() / 2);
+        QWheelEvent wheel(at, viewport()->mapToGlobal(at), QPoint(), QPoint(0, 120), Qt::NoButton,
+                          Qt::NoModifier, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(viewport(), &wheel);
+        QTRY_VERIFY(viewport()->hasFocus());
+        const ViewCamera before = viewport()->camera();
+        QTest::keyClick(QApplication::focusWidget(), Qt::Key_1);
+        QCOMPARE(name->text(), QStringLiteral("Key"));
+        QCOMPARE(doc()->light(0).name, QStringLiteral("Key"));
+        QVERIFY(!sameCamera(viewport()->camera(), before)); // the first standard view
+    }
+
+    // Clicking the viewport's background to focus it (from a field) keeps the selection; a second click
+    // there clears it.
+    void focusClick_keepsTheSelection() {
+        QVERIFY(test::spotInFrontOfTheModel(*m_window));
+        doc()->setSelectedRows({0});
+        QPoint onModel, background;
+        modelAndBackground(&onModel, &background);
+        QVERIFY(editName(QStringLiteral("Fill")));
+        QTest::mouseClick(viewport(), Qt::LeftButton, Qt::NoModifier, background);
+        QTRY_VERIFY(viewport()->hasFocus());
+        QCOMPARE(doc()->selectedRows(), QList<int>{0}); // the focus click
+        test::shot(*m_window, QStringLiteral("editor2-focus-click-keeps-selection"));
+        QTest::mouseClick(viewport(), Qt::LeftButton, Qt::NoModifier, background);
+        QVERIFY(doc()->selectedRows().isEmpty());
+    }
+};
+
+QTEST_MAIN(TestViewportClicks)
+#include "tst_viewportclicks.moc"
