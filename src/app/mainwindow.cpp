@@ -31,6 +31,8 @@
 #include <QFileInfo>
 #include <QMimeData>
 #include <QUndoView>
+#include <cmath>
+#include <glm/trigonometric.hpp>
 
 namespace lr {
 
@@ -77,10 +79,17 @@ QString MainWindow::suzannePath() {
 void MainWindow::createDocks() {
     m_lightsDock = new LightsDock(m_doc, this);
     // New lights go around the model as seen now (editor/placement.h); the camera stays where it is (it is
-    // no part of the undo step), the status bar says when the new light is out of view.
+    // no part of the undo step): a light is pulled in to land in view where it can, else the status bar says
+    // it is out of view.
     m_lightsDock->setPlacementView([this] {
         const ViewCamera& c = m_viewport->camera();
-        return PlacementView{m_scene->frame(), c.eye - c.target, c.trueUp()};
+        PlacementView v{m_scene->frame(), c.eye - c.target, c.trueUp()};
+        v.hasCamera = true;
+        v.eye = c.eye;
+        v.forward = c.forward();
+        v.tanHalfFovY = std::tan(glm::radians(c.yfovDeg) / 2.0);
+        v.aspect = m_viewport->height() > 0 ? double(m_viewport->width()) / m_viewport->height() : 1.0;
+        return v;
     });
     connect(m_lightsDock, &LightsDock::lightAdded, m_viewport,
             [this](int row) { m_viewport->reportLightsOutOfView({row}); });

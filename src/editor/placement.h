@@ -18,15 +18,24 @@ namespace lr {
 
 class Document;
 
-constexpr double kPlacementDistance = 3.0; // bounding radii from the model's centre
-constexpr double kPlacementRange = 8.0;    // bounding radii
-constexpr double kAreaPlacementSize = 1.0; // a new rect's width and height, a new disk's diameter: radii
+constexpr double kPlacementDistance = 3.0;    // bounding radii from the model's centre
+constexpr double kMinPlacementDistance = 1.6; // pulled in no closer than this to land in view
+constexpr double kPlacementRange = 8.0;       // bounding radii
+constexpr double kAreaPlacementSize = 1.0;    // a new rect's width and height, a new disk's diameter: radii
 
 // What the placement needs to know about the scene and the view (world units).
 struct PlacementView {
     SceneFrame frame;                       // the model's bounding sphere
     glm::dvec3 towardViewer{0.0, 0.0, 1.0}; // from the model towards the camera (need not be unit length)
     glm::dvec3 up{0.0, 1.0, 0.0};           // the camera's up
+    // The camera's frustum, when known (the editor's view): a new light that would land outside it is pulled
+    // in along its direction from the model's centre, no closer than kMinPlacementDistance radii, so that it
+    // shows without the camera moving (issue 41: adding a light moved the camera, outside undo).
+    bool hasCamera = false;
+    glm::dvec3 eye{0.0, 0.0, 5.0};
+    glm::dvec3 forward{0.0, 0.0, -1.0}; // unit, eye -> target
+    double tanHalfFovY = 0.41421356;    // tan(yfov / 2)
+    double aspect = 1.0;                // width / height
 };
 
 // Under physically based shading (rig.shading.model == Pbr) a new light is KHR_lights_punctual-like: an

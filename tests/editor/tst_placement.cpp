@@ -314,6 +314,39 @@ class TestPlacement : public QObject {
         QVERIFY(doc.light(0) == makeLight(LightType::Spot, doc.light(0).name)); // classic: as before
     }
 
+    // Issue 41: adding a light no longer moves the camera, so with the view known a light that would land
+    // outside it is placed where it shows (still outside the model, still lighting it); with the view far
+    // enough the usual place is kept.
+    void newLightsLandInTheViewWithoutMovingIt() {
+        const Rig rig;
+        PlacementView view = bigView();
+        const glm::dvec3 toward = glm::normalize(view.towardViewer);
+        view.hasCamera = true;
+        view.forward = -toward;
+        view.tanHalfFovY = std::tan(glm::radians(45.0) / 2.0);
+        view.aspect = 16.0 / 9.0;
+        const auto shows = [&](const glm::dvec3& p) {
+            const glm::dvec3 d = p - view.eye;
+            const double z = glm::dot(d, view.forward);
+            const glm::dvec3 right = glm::normalize(glm::cross(view.forward, view.up));
+            const glm::dvec3 up = glm::cross(right, view.forward);
+            return z > 0.0 && std::abs(glm::dot(d, up)) <= z * view.tanHalfFovY &&
+                   std::abs(glm::dot(d, right)) <= z * view.tanHalfFovY * view.aspect;
+        };
+        for (double eyeRadii : {2.2, 6.0}) { // a close view (the usual place is behind it) and a far one
+            view.eye = kBigModel.center + toward * (eyeRadii * kBigModel.radius);
+            for (int index = 0; index < 4; ++index) {
+                const Light l = placeNewLight(rig, LightType::Point, QStringLiteral("L"), view, index);
+                const glm::dvec3 at = worldPosition(rig, l);
+                const double radii = glm::length(at - kBigModel.center) / kBigModel.radius;
+                QVERIFY2(shows(at), qPrintable(QStringLiteral("eye %1, light %2").arg(eyeRadii).arg(index)));
+                QVERIFY(radii >= kMinPlacementDistance - 1e-6);
+                QVERIFY(attenuationAt(rig, l, kBigModel.center) > 0.3);
+                if (eyeRadii > 5.0) QCOMPARE(std::round(radii * 1e6) / 1e6, kPlacementDistance);
+            }
+        }
+    }
+
     void successiveLightsDoNotStack() {
         const Rig rig;
         const Light a = placeNewLight(rig, LightType::Point, QStringLiteral("A"), bigView(), 0);
