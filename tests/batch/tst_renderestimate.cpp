@@ -14,21 +14,12 @@ namespace {
 
 // `lightrig ARGS...` under `ulimit -v KIB`; killed (code -1) after timeoutMs.
 lrtest::CliRun lightrigLimited(qint64 kib, const QStringList& args, int timeoutMs = 60000) {
-    QProcess p;
-    p.start(QStringLiteral("/bin/sh"),
-            QStringList{QStringLiteral("-c"), QStringLiteral("ulimit -v %1 && exec \"$0\" \"$@\"").arg(kib),
-                        lrtest::lightrigExecutable()} +
-                args);
-    lrtest::CliRun r;
-    if (!p.waitForFinished(timeoutMs)) {
-        p.kill();
-        p.waitForFinished();
-    } else if (p.exitStatus() == QProcess::NormalExit) {
-        r.code = p.exitCode();
-    }
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
+    return lrtest::runProgram(QStringLiteral("/bin/sh"),
+                              QStringList{QStringLiteral("-c"),
+                                          QStringLiteral("ulimit -v %1 && exec \"$0\" \"$@\"").arg(kib),
+                                          lrtest::lightrigExecutable()} +
+                                  args,
+                              nullptr, timeoutMs);
 }
 
 const QString kModel = QStringLiteral(LIGHTRIG_TEST_DATA "/model/tetra.stl");

@@ -20,8 +20,13 @@ QString lightrigExecutable() {
 }
 
 CliRun runLightrig(const QStringList& args, const QProcessEnvironment* env, int timeoutMs) {
+    return runProgram(lightrigExecutable(), args, env, timeoutMs);
+}
+
+CliRun runProgram(const QString& program, const QStringList& args, const QProcessEnvironment* env,
+                  int timeoutMs) {
     QProcess p;
-    p.setProgram(lightrigExecutable());
+    p.setProgram(program);
     p.setArguments(args);
     if (env) p.setProcessEnvironment(*env);
     p.start();

@@ -21,6 +21,9 @@ QString lightrigExecutable(); // the build's lightrig (LIGHTRIG_EXECUTABLE)
 // `lightrig ARGS...` with `env` (the test's own environment when null), waiting up to timeoutMs; a run that
 // does not finish is killed and reads as code -1.
 CliRun runLightrig(const QStringList& args, const QProcessEnvironment* env = nullptr, int timeoutMs = 120000);
+// The same for any program (a shell that sets limits before it runs lightrig, say).
+CliRun runProgram(const QString& program, const QStringList& args, const QProcessEnvironment* env = nullptr,
+                  int timeoutMs = 120000);
 
 // The test's environment without a display (DISPLAY, WAYLAND_DISPLAY, QT_QPA_PLATFORM removed).
 QProcessEnvironment environmentWithoutDisplay();
