@@ -6,8 +6,8 @@
 #include "editor/document.h"
 #include "environmentloading.h"
 #include "errordialog.h"
-#include "render/environmentloader.h"
 #include "scene.h"
+#include "scene/environmentloader.h"
 
 #include <QAction>
 #include <QActionGroup>

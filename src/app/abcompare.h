@@ -9,7 +9,7 @@
 // Swap puts B on the left; Leave compare goes back to the normal view (B is kept for the next time). A
 // snapshot or an opened rig starts in Wipe. Nothing here is saved with the rig or is an undo step.
 // B's environment: a snapshot shares the Scene's when that was loaded for the same spec, else it is loaded
-// in the background (render/environmentloader.h) as is an opened rig's, relative to its file; B is drawn
+// in the background (scene/environmentloader.h) as is an opened rig's, relative to its file; B is drawn
 // without it until then.
 #pragma once
 

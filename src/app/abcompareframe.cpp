@@ -1,8 +1,8 @@
 #include "abcompareframe.h"
 
 #include "abcompare.h"
-#include "render/environmentloader.h"
 #include "render/renderer.h"
+#include "scene/environmentloader.h"
 
 #include <QEvent>
 #include <QLabel>

@@ -10,8 +10,8 @@
 // after one lost their anti-aliased edges).
 #pragma once
 
-#include "render/camera.h"
 #include "render/rendersettings.h"
+#include "scene/camera.h"
 
 #include <QObject>
 #include <QOpenGLFunctions_3_3_Core>

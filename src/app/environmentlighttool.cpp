@@ -2,8 +2,8 @@
 
 #include "editor/document.h"
 #include "editor/environmentlight.h"
-#include "render/environmentloader.h"
 #include "scene.h"
+#include "scene/environmentloader.h"
 #include "viewport.h"
 
 #include <QAction>

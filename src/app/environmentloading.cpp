@@ -1,8 +1,8 @@
 #include "environmentloading.h"
 
 #include "editor/document.h"
-#include "render/environmentloader.h"
 #include "scene.h"
+#include "scene/environmentloader.h"
 
 #include <QDir>
 #include <QFileInfo>

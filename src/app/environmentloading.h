@@ -1,6 +1,6 @@
 // Loads the document's environment in the background (issue 15): whenever the rig's environment changes in
 // what needs re-filtering (Environment::sameRadiance false) or the rig file's folder changes (a relative
-// image path then names another file), lr::loadEnvironment (render/environmentloader.h; blocking: decode in
+// image path then names another file), lr::loadEnvironment (scene/environmentloader.h; blocking: decode in
 // the import worker, prefilter) runs on QtConcurrent's pool, never on the window's thread. At most one load
 // runs at a time; edits made meanwhile supersede it (the newest request starts when it ends, stale results
 // are dropped). A finished current load goes to the Scene, which the viewport and the snapshots render from.

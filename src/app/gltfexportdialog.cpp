@@ -6,8 +6,8 @@
 #include "errordialog.h"
 #include "mainwindow.h"
 #include "model/gltfexport.h"
-#include "render/camera.h"
 #include "scene.h"
+#include "scene/camera.h"
 #include "viewport.h"
 
 #include <QApplication>

@@ -1,6 +1,6 @@
 #include "scene.h"
 
-#include "render/environmentloader.h"
+#include "scene/environmentloader.h"
 
 #include <QCryptographicHash>
 #include <QFileInfo>

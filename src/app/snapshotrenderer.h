@@ -3,9 +3,9 @@
 // on first use) that follows the Scene's model; the pixels match the viewport's (same Renderer).
 #pragma once
 
-#include "render/camera.h"
 #include "render/offscreen.h"
 #include "render/renderer.h"
+#include "scene/camera.h"
 
 #include <QImage>
 #include <memory>

@@ -8,7 +8,7 @@
 #pragma once
 
 #include "core/rig.h"
-#include "render/camera.h"
+#include "scene/camera.h"
 
 #include <QStringList>
 #include <glm/vec3.hpp>

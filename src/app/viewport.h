@@ -8,7 +8,7 @@
 #pragma once
 
 #include "picking.h"
-#include "render/camera.h"
+#include "scene/camera.h"
 
 #include <QOpenGLWidget>
 #include <QTimer>

@@ -1,7 +1,7 @@
 #include "environmentoption.h"
 
 #include "core/rigjson.h"
-#include "render/environmentloader.h"
+#include "scene/environmentloader.h"
 
 #include <QDir>
 #include <QFileInfo>

@@ -8,7 +8,7 @@
 
 #include "core/rig.h"
 #include "core/rigjson.h"
-#include "render/environmentloader.h"
+#include "scene/environmentloader.h"
 
 #include <QCommandLineOption>
 #include <QCommandLineParser>
@@ -46,7 +46,7 @@ QString environmentFileOf(const EnvironmentOverrides& overrides);
 // rig that is not a file (the default rule's, a built-in preset).
 QString environmentFolder(const QString& rigPath);
 
-// Decodes and prefilters the environment (render/environmentloader.h). *loaded stays null for source none.
+// Decodes and prefilters the environment (scene/environmentloader.h). *loaded stays null for source none.
 // False with the loader's reason, which names the file, on failure. An environment *loaded already holds is
 // kept when it serves (environmentServes): render's catalogs load a rig's environment once, not per model.
 bool loadCliEnvironment(const Environment& environment, const QString& rigFolder,

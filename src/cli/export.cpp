@@ -9,7 +9,7 @@
 #include "core/defaultrig.h"
 #include "core/rigjson.h"
 #include "model/gltfexport.h"
-#include "render/camera.h"
+#include "scene/camera.h"
 
 #include <QCommandLineParser>
 #include <QTextStream>

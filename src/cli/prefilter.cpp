@@ -5,7 +5,7 @@
 #include "cli.h"
 
 #include "model/environmentdecode.h"
-#include "render/envprefilter.h"
+#include "scene/envprefilter.h"
 
 #include <QCommandLineParser>
 #include <QElapsedTimer>

@@ -18,8 +18,8 @@
 #include "core/rig.h"
 #include "core/rigjson.h"
 #include "model/model.h"
-#include "render/camera.h"
 #include "render/renderer.h"
+#include "scene/camera.h"
 
 #include <QCommandLineOption>
 #include <QCommandLineParser>

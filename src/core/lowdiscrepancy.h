@@ -1,4 +1,4 @@
-// Low-discrepancy points shared by the environment's integrators (core/envbrdf, render/envprefilter_ggx).
+// Low-discrepancy points shared by the environment's integrators (core/envbrdf, scene/envprefilter_ggx).
 #pragma once
 
 #include <cstdint>

@@ -2,7 +2,7 @@
 
 #include "core/envbrdf.h"
 #include "core/rig.h"
-#include "environmentloader.h"
+#include "scene/environmentloader.h"
 #include "textureunits.h"
 
 #include <QOpenGLShaderProgram>

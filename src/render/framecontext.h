@@ -1,14 +1,16 @@
-// One frame, computed once by Renderer before any pass runs: the camera's matrices, the target, the colour
-// path and its exposure, the shading path and whether the lights were binned into clusters. Passes read
-// it and nothing else of the frame: no pass leaves state for another except through the targets their
-// reads() and writes() declare (renderpass.h).
+// One frame, computed once by Renderer and the lit inputs (litinput.h) before any pass runs: the scene
+// description it draws, the camera's matrices, the target, the colour path and its exposure, the shading
+// path, the lit programs' feature bits and whether the lights were binned into clusters. Passes read it and
+// nothing else of the frame: no pass leaves state for another except through the targets their reads() and
+// writes() declare (renderpass.h).
 #pragma once
 
-#include "camera.h"
 #include "core/shade.h"
 #include "environmentgl.h"
 #include "gpumodel.h"
 #include "rendersettings.h"
+#include "scene/camera.h"
+#include "shadergen.h"
 
 #include <QOpenGLFunctions_3_3_Core>
 #include <QRect>
@@ -18,6 +20,10 @@
 #include <glm/vec4.hpp>
 #include <vector>
 
+namespace lr {
+class SceneDescription;
+}
+
 namespace lr::render {
 
 // Display: exposure, tone map and sRGB per fragment into an 8-bit target. Hdr: linear radiance into a
@@ -25,6 +31,7 @@ namespace lr::render {
 enum class ColourPath { Display, Hdr };
 
 struct FrameContext {
+    const SceneDescription* scene = nullptr; // what is drawn: the model, the rig, the ground, the environment
     const RenderSettings* settings = nullptr;
     ViewCamera camera;                     // with its clip planes (Renderer::effectiveCamera)
     glm::dmat4 view{1.0}, projection{1.0}; // projection of the tile when there is one
@@ -41,9 +48,13 @@ struct FrameContext {
     bool deferred = false;                 // G-pass + deferred lighting
     bool clustered = false;                // the lights were binned for this frame
     bool farLights = false;                // LightSet::farLights(): PBR programs rescale L (LR_FAR_LIGHTS)
-    bool overlays = false;                 // gizmos or grid
-    int samples = 0;                       // of the scene target (> 1: MSAA)
-    bool gbufferReadBack = false;          // renderGBuffer: clear the G-buffer's colour too
+    int lightCount = 0;                    // the lights uploaded (enabled, able to reach the scene)
+    // The lit programs' rig features this frame (the lights' rigFeatures(), the far-lights bound, the
+    // environment; every feature for the über-shader): every lit pass builds its keys from these.
+    RigFeatures features;
+    bool overlays = false;        // gizmos or grid
+    int samples = 0;              // of the scene target (> 1: MSAA)
+    bool gbufferReadBack = false; // renderGBuffer: clear the G-buffer's colour too
     // The deferred G-buffer holds attributes (FeatureKey::attributes) and the lighting pass builds each
     // pixel's Surface with the material its stencil value names: index + 1 into this list of every opaque
     // material drawn, the ground's too (GpuModel::appendMaterials). Empty: the G-buffer holds Surfaces.

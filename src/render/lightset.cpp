@@ -4,7 +4,7 @@
 #include "ltcgl.h"
 #include "programcache.h"
 #include "shadergen.h"
-#include "shadowmaps.h"
+#include "shadowplan.h"
 #include "textureunits.h"
 
 #include <algorithm>

@@ -1,5 +1,6 @@
 // The background pass: the environment behind the model (passes.h BackgroundPass).
-#include "environmentgl.h"
+#include "input_environment.h"
+#include "litinput.h"
 #include "passes.h"
 #include "programcache.h"
 #include "targets.h"
@@ -10,13 +11,8 @@
 
 namespace lr::render {
 
-bool BackgroundPass::draws(const FrameContext& frame, const PassScene& scene) {
-    return frame.environment && frame.environmentBackgroundLod >= 0.0f && scene.environment;
-}
-
 bool BackgroundPass::run(const FrameContext& frame, PassScene& scene) {
-    if (!draws(frame, scene)) return true;
-    // Deferred, the lighting pass after this one keeps the colour (it counts on this pass covering every
+    // Deferred, the lighting pass after this one reads the colour (it counts on this pass covering every
     // pixel): a failure leaves the clear colour there instead.
     const auto failed = [&](const QString& message) {
         if (frame.deferred) {
@@ -28,6 +24,10 @@ bool BackgroundPass::run(const FrameContext& frame, PassScene& scene) {
         glBindVertexArray(0);
         return fail(scene, message);
     };
+    const EnvironmentInput* input = scene.inputs->find<EnvironmentInput>();
+    if (!input || !frame.environment || frame.environmentBackgroundLod < 0.0f)
+        return failed(QStringLiteral("background: the frame has no environment"));
+    const EnvironmentGl& environment = input->textures();
     const bool display = frame.colourPath == ColourPath::Display;
     const QByteArray defines = "#define LR_ENVIRONMENT_BACKGROUND 1\n" +
                                (display ? "#define LR_OUTPUT_DISPLAY 1\n" + toneMapDefine(frame.toneMap)
@@ -36,7 +36,7 @@ bool BackgroundPass::run(const FrameContext& frame, PassScene& scene) {
     QOpenGLShaderProgram* p = scene.programs->fixedProgram(kBackgroundShader, &error, defines);
     if (!p) return failed(error);
     Key key;
-    key.environment = scene.environment->generation();
+    key.environment = environment.generation();
     key.fromView = frame.environmentUniforms.fromView;
     key.scale = frame.environmentUniforms.scale;
     key.lod = frame.environmentBackgroundLod;
@@ -58,20 +58,20 @@ bool BackgroundPass::run(const FrameContext& frame, PassScene& scene) {
     if (!ensureCache(key)) return failed(QStringLiteral("background: could not make its texture"));
     const auto drawEnvironment = [&] {
         p->bind();
-        scene.environment->setUniforms(this, p, frame.environmentUniforms);
+        environment.setUniforms(this, p, frame.environmentUniforms);
         const glm::mat4 viewFromClip(glm::inverse(frame.projection));
         glUniformMatrix4fv(p->uniformLocation("uViewFromClip"), 1, GL_FALSE, glm::value_ptr(viewFromClip));
         p->setUniformValue("uTargetSize", float(frame.targetSize.width()), float(frame.targetSize.height()));
         p->setUniformValue("uBackgroundLod", frame.environmentBackgroundLod);
         if (display) p->setUniformValue("uExposureScale", frame.exposureScale);
-        scene.environment->bind(this);
+        environment.bind(this);
         glDrawArrays(GL_TRIANGLES, 0, 3);
         p->release();
     };
     glViewport(0, 0, frame.targetSize.width(), frame.targetSize.height());
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
-    glBindVertexArray(scene.emptyVao);
+    glBindVertexArray(scene.targets->emptyVao);
     if (m_cached != key && m_cached != everyPixel) {
         glBindFramebuffer(GL_FRAMEBUFFER, m_cacheFbo);
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,

@@ -17,8 +17,7 @@ bool BlendPass::run(const FrameContext& frame, PassScene& scene) {
     const bool clustered = frame.clustered && settings.quality != Quality::Fast;
     const ShaderOutput output =
         frame.colourPath == ColourPath::Hdr ? ShaderOutput::Radiance : ShaderOutput::Display;
-    const RigFeatures shaded =
-        frameRigFeatures(*scene.rig, frame.farLights, settings.forceAllFeatures, frame.environment);
+    const RigFeatures& shaded = frame.features;
     const glm::dmat4 modelView = frame.view * glm::translate(glm::dmat4(1.0), model->origin);
 
     // Back to front: the farthest centre (most negative view z) first. Ties keep the model's order.

@@ -1,11 +1,11 @@
 // The geometry pass: the model's draws grouped by shader variant, into the G-buffer or shaded.
-#include "environmentgl.h"
 #include "gpumodel.h"
-#include "lightset.h"
+#include "input_ground.h"
+#include "litinput.h"
 #include "passes.h"
 #include "programcache.h"
+#include "scene/scenedescription.h"
 #include "shadergen.h"
-#include "shadowmaps.h"
 #include "targets.h"
 #include "textureunits.h"
 
@@ -22,9 +22,7 @@ const char* GeometryPass::name() const {
 }
 
 PassResources GeometryPass::reads() const {
-    return m_output == Output::GBuffer ? PassResources(0)
-                                       : PassResources(resource::Lights | resource::Clusters |
-                                                       resource::ShadowMaps | resource::Environment);
+    return m_output == Output::GBuffer ? PassResources(0) : PassResources(resource::kLitInputs);
 }
 
 PassResources GeometryPass::writes() const {
@@ -41,8 +39,11 @@ bool GeometryPass::run(const FrameContext& frame, PassScene& scene) {
                                 : frame.colourPath == ColourPath::Hdr ? ShaderOutput::Radiance
                                                                       : ShaderOutput::Display;
     const RenderSettings& settings = *frame.settings;
-    const Rig& rig = *scene.rig;
+    const Rig& rig = frame.scene->rig();
     const Model* model = scene.model->model();
+    const GroundInput* groundInput = scene.inputs->find<GroundInput>();
+    const GpuModel* groundModel = groundInput ? groundInput->gpu() : nullptr;
+    m_keptThisRun = false;
     const bool drawsModel = model && !scene.model->draws().empty();
     // Fast lights the vertices, each with every light: clusters (per fragment) do not apply.
     const bool clustered = !gpass && frame.clustered;
@@ -51,17 +52,16 @@ bool GeometryPass::run(const FrameContext& frame, PassScene& scene) {
     // visible ground is one more opaque surface (in the G-buffer too); a catcher is the catcher pass's.
     DrawOrder order, ground;
     if (drawsModel) {
-        const RigFeatures shaded =
-            frameRigFeatures(rig, frame.farLights, settings.forceAllFeatures, frame.environment);
+        const RigFeatures& shaded = frame.features;
         order.reserve(scene.model->draws().size());
         for (const GpuDraw& d : scene.model->draws())
             if (!d.features.alphaBlend)
                 order.emplace_back(meshKey(frame, scene, d, output, clustered, shaded), &d);
         std::stable_sort(order.begin(), order.end(),
                          [](const auto& a, const auto& b) { return a.first.bits() < b.first.bits(); });
-        if (scene.ground && scene.groundMode == GroundMode::Visible)
-            for (const GpuDraw& d : scene.ground->draws())
-                ground.emplace_back(meshKey(frame, scene, d, output, clustered, shaded, scene.ground), &d);
+        if (groundModel && groundInput->mode() == GroundMode::Visible)
+            for (const GpuDraw& d : groundModel->draws())
+                ground.emplace_back(meshKey(frame, scene, d, output, clustered, shaded, groundModel), &d);
     }
     Key key;
     if (gpass) {
@@ -69,19 +69,20 @@ bool GeometryPass::run(const FrameContext& frame, PassScene& scene) {
                frame.projection,
                frame.targetSize.width(),
                frame.targetSize.height(),
-               scene.modelGeneration,
-               scene.ground ? scene.groundRevision : -1,
-               settings.interactive && scene.mutableModel->updateProxies(this),
+               frame.scene->modelGeneration(),
+               groundModel ? groundInput->revision() : -1,
+               settings.interactive && scene.model->updateProxies(this),
                settings.cullBackFaces,
                rig.shading.shininess,
                order,
                ground};
         // Nothing else wrote the G-buffer or its depth since this pass drew it (a forward frame, a
-        // read-back, new targets would have counted a revision), and it would draw the same.
-        const bool keep = drawsModel && !frame.gbufferReadBack && m_keptRevision >= 0 &&
-                          m_keptRevision == targets.gbufferRevision && key == m_kept;
+        // read-back, new targets would be Targets::gbufferWriter), and it would draw the same.
+        const bool keep = drawsModel && !frame.gbufferReadBack && m_keptValid &&
+                          targets.gbufferWriter == this && key == m_kept;
         scene.stats->gbufferKept = keep;
         if (keep) {
+            m_keptThisRun = true;
             scene.stats->drawCalls = 0;
             scene.stats->trianglesDrawn = 0;
             return true;
@@ -100,16 +101,17 @@ bool GeometryPass::run(const FrameContext& frame, PassScene& scene) {
         glClearColor(frame.clearColour.r, frame.clearColour.g, frame.clearColour.b, frame.clearColour.a);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     }
-    ++targets.gbufferRevision; // the G-buffer or the depth it shares: what was built from them is stale
+    // RenderPlan::runPass counts a revision of the G-buffer and depth after this run: what was built from
+    // them is stale.
     scene.stats->drawCalls = 0;
     scene.stats->trianglesDrawn = 0;
     if (!drawsModel) return true;
     bool ok = drawMeshes(frame, scene, order, clustered, false);
-    if (!ground.empty()) ok = drawMeshes(frame, scene, ground, clustered, false, scene.ground) && ok;
-    m_keptRevision = -1;
+    if (!ground.empty()) ok = drawMeshes(frame, scene, ground, clustered, false, groundModel) && ok;
+    m_keptValid = false;
     if (gpass && ok && !frame.gbufferReadBack) {
         m_kept = std::move(key);
-        m_keptRevision = targets.gbufferRevision;
+        m_keptValid = true;
         ++scene.stats->gbufferBuilds;
     }
     return ok;
@@ -119,7 +121,7 @@ FeatureKey MeshPass::meshKey(const FrameContext& frame, const PassScene& scene, 
                              ShaderOutput output, bool clustered, const RigFeatures& shaded,
                              const GpuModel* source) const {
     const RenderSettings& settings = *frame.settings;
-    const Rig& rig = *scene.rig;
+    const Rig& rig = frame.scene->rig();
     const Model* model = (source ? source : scene.model)->model();
     const bool gpass = output == ShaderOutput::GBuffer;
     FeatureKey key;
@@ -154,9 +156,9 @@ void MeshPass::primeSamplerSlots(PassScene& scene) {
     glDisable(GL_SCISSOR_TEST);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, scene.slotTexture);
+    glBindTexture(GL_TEXTURE_2D, scene.targets->slotTexture);
     glBindSampler(0, 0);
-    glBindVertexArray(scene.emptyVao);
+    glBindVertexArray(scene.targets->emptyVao);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -217,12 +219,12 @@ bool MeshPass::drawMeshes(const FrameContext& frame, PassScene& scene,
                           const std::vector<std::pair<FeatureKey, const GpuDraw*>>& order, bool clustered,
                           bool blended, const GpuModel* source) {
     const RenderSettings& settings = *frame.settings;
-    const Rig& rig = *scene.rig;
+    const Rig& rig = frame.scene->rig();
     const Model* model = (source ? source : scene.model)->model();
     const glm::dmat4 modelView = frame.view * glm::translate(glm::dmat4(1.0), model->origin);
     const glm::mat4 mv(modelView), proj(frame.projection);
     const glm::mat3 normalMatrix(glm::transpose(glm::inverse(glm::dmat3(modelView))));
-    const bool useProxies = !source && settings.interactive && scene.mutableModel->updateProxies(this);
+    const bool useProxies = !source && settings.interactive && scene.model->updateProxies(this);
 
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
@@ -241,10 +243,7 @@ bool MeshPass::drawMeshes(const FrameContext& frame, PassScene& scene,
         glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
         glStencilMask(0xFF);
     }
-    scene.lights->bind(this, clustered);
-    if (scene.shadows) scene.shadows->bind(this);
-    const bool environment = frame.environment && scene.environment;
-    if (environment) scene.environment->bind(this);
+    scene.inputs->bind(this, frame, clustered);
     bool ok = true;
     MeshProgram* current = nullptr;
     for (const auto& [key, d] : order) {
@@ -260,12 +259,10 @@ bool MeshPass::drawMeshes(const FrameContext& frame, PassScene& scene,
             glUniformMatrix4fv(p->modelView, 1, GL_FALSE, glm::value_ptr(mv));
             glUniformMatrix3fv(p->normalMatrix, 1, GL_FALSE, glm::value_ptr(normalMatrix));
             glUniformMatrix4fv(p->projection, 1, GL_FALSE, glm::value_ptr(proj));
-            scene.lights->setUniforms(this, *p, frame.shade, clustered);
+            scene.inputs->setUniforms(this, *p, key, frame);
             if (p->exposureScale >= 0) glUniform1f(p->exposureScale, frame.exposureScale);
-            if (environment && key.rig.environment)
-                scene.environment->setUniforms(this, p->program.get(), frame.environmentUniforms);
         }
-        bindMaterial(key, *p, *d, *model, rig, key.quality == Quality::Fast ? scene.fastSampler : 0);
+        bindMaterial(key, *p, *d, *model, rig, key.quality == Quality::Fast ? scene.targets->fastSampler : 0);
         if (key.attributes)
             glStencilFunc(GL_ALWAYS,
                           (source ? source : scene.model)->materialSlot(frame.attributeMaterials, *d), 0xFF);
@@ -283,7 +280,7 @@ bool MeshPass::drawMeshes(const FrameContext& frame, PassScene& scene,
     glBindVertexArray(0);
     unbindMaterialSamplers();
     glDisable(GL_STENCIL_TEST);
-    if (scene.shadows) scene.shadows->unbind(this);
+    scene.inputs->unbind(this);
     glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);

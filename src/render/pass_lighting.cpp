@@ -1,11 +1,10 @@
 // The deferred lighting pass: the G-buffer's surfaces shaded once per covered pixel.
-#include "environmentgl.h"
 #include "gpumodel.h"
-#include "lightset.h"
+#include "litinput.h"
 #include "passes.h"
 #include "programcache.h"
+#include "scene/scenedescription.h"
 #include "shadergen.h"
-#include "shadowmaps.h"
 #include "targets.h"
 #include "textureunits.h"
 
@@ -58,7 +57,7 @@ bool DeferredLightingPass::buildSurfaces(const FrameContext& frame, PassScene& s
             continue;
         }
         p->program->bind();
-        bindMaterial(keys[m], *p, *material.draw, *material.source->model(), *scene.rig, 0);
+        bindMaterial(keys[m], *p, *material.draw, *material.source->model(), frame.scene->rig(), 0);
         glDrawArrays(GL_TRIANGLES, 0, 3);
         p->program->release();
     }
@@ -70,17 +69,18 @@ bool DeferredLightingPass::run(const FrameContext& frame, PassScene& scene) {
     Targets& targets = *scene.targets;
     glBindFramebuffer(GL_FRAMEBUFFER, targets.fbo);
     glViewport(0, 0, frame.targetSize.width(), frame.targetSize.height());
-    // Where the background pass ran first it covered every pixel; the surfaces are shaded over it.
-    if (!BackgroundPass::draws(frame, scene)) {
+    // Where the background pass ran first it covered every pixel (reads() declares its colour); the
+    // surfaces are shaded over it.
+    if (!m_overBackground) {
         glClearColor(frame.clearColour.r, frame.clearColour.g, frame.clearColour.b, frame.clearColour.a);
         glClear(GL_COLOR_BUFFER_BIT);
     }
     const Model* model = scene.model->model();
     if (!model) return true;
     const RenderSettings& settings = *frame.settings;
+    const Rig& rig = frame.scene->rig();
     FeatureKey key;
-    key.rig = frameRigFeatures(*scene.rig, frame.farLights, settings.forceAllFeatures,
-                               frame.environment && scene.environment);
+    key.rig = frame.features;
     key.quality = settings.quality; // never Fast: the fast tier is always forward
     key.approximations = approx::forTier(settings.approximations, key.quality);
     key.output = frame.colourPath == ColourPath::Hdr ? ShaderOutput::Radiance : ShaderOutput::Display;
@@ -89,7 +89,8 @@ bool DeferredLightingPass::run(const FrameContext& frame, PassScene& scene) {
     key.clustered = frame.clustered;
     // Only the model's screen rectangle: a software rasteriser runs the shader for background blocks too,
     // even where the depth test rejects every pixel.
-    const QRect scissor = screenBounds(scene.drawnBounds, frame.projection * frame.view, frame.targetSize);
+    const QRect scissor =
+        screenBounds(frame.scene->drawnBounds(), frame.projection * frame.view, frame.targetSize);
     if (scissor.isEmpty()) return true;
     const std::vector<AttributeMaterial>& materials = frame.attributeMaterials;
     // The programs that build each material's Surfaces (the lighting programs' own, without the lights).
@@ -98,7 +99,7 @@ bool DeferredLightingPass::run(const FrameContext& frame, PassScene& scene) {
         FeatureKey k = key;
         k.rig = RigFeatures();
         k.rig.shading = key.rig.shading;
-        k.material = sampledFeatures(*material.draw, *scene.rig, key.rig);
+        k.material = sampledFeatures(*material.draw, rig, key.rig);
         k.attributes = true;
         k.output = ShaderOutput::GBuffer;
         k.toneMap = ToneMap::Clamp;
@@ -129,7 +130,7 @@ bool DeferredLightingPass::run(const FrameContext& frame, PassScene& scene) {
             glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
             glStencilMask(0);
         }
-        glBindVertexArray(scene.emptyVao);
+        glBindVertexArray(scene.targets->emptyVao);
     };
     const auto bindTargets = [&](const GLuint(&textures)[kGBufferTargets]) {
         for (int i = 0; i < kGBufferTargets; ++i) {
@@ -169,14 +170,12 @@ bool DeferredLightingPass::run(const FrameContext& frame, PassScene& scene) {
     const bool fromSurfaces = keepable && targets.surfacesRevision == revision;
     fullScreenState(!materials.empty() && !fromSurfaces);
     bindTargets(fromSurfaces ? targets.surfaces : targets.gbuffer);
-    scene.lights->bind(this, key.clustered);
-    if (scene.shadows) scene.shadows->bind(this);
-    if (key.rig.environment) scene.environment->bind(this);
+    scene.inputs->bind(this, frame, key.clustered);
     const size_t draws = fromSurfaces ? 1 : std::max<size_t>(1, materials.size());
     for (size_t m = 0; m < draws; ++m) {
         const AttributeMaterial* material = fromSurfaces || materials.empty() ? nullptr : &materials[m];
         if (material) {
-            key.material = sampledFeatures(*material->draw, *scene.rig, key.rig);
+            key.material = sampledFeatures(*material->draw, rig, key.rig);
             key.attributes = true;
             glStencilFunc(GL_EQUAL, int(m) + 1, 0xFF);
         }
@@ -187,11 +186,9 @@ bool DeferredLightingPass::run(const FrameContext& frame, PassScene& scene) {
             continue;
         }
         p->program->bind();
-        if (material) bindMaterial(key, *p, *material->draw, *material->source->model(), *scene.rig, 0);
-        scene.lights->setUniforms(this, *p, frame.shade, key.clustered);
+        if (material) bindMaterial(key, *p, *material->draw, *material->source->model(), rig, 0);
+        scene.inputs->setUniforms(this, *p, key, frame);
         if (p->exposureScale >= 0) glUniform1f(p->exposureScale, frame.exposureScale);
-        if (key.rig.environment)
-            scene.environment->setUniforms(this, p->program.get(), frame.environmentUniforms);
         glDrawArrays(GL_TRIANGLES, 0, 3);
         p->program->release();
     }
@@ -204,7 +201,7 @@ bool DeferredLightingPass::run(const FrameContext& frame, PassScene& scene) {
     glDisable(GL_SCISSOR_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
-    if (scene.shadows) scene.shadows->unbind(this);
+    scene.inputs->unbind(this);
     return ok;
 }
 

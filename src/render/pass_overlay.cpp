@@ -3,6 +3,7 @@
 #include "gpumodel.h"
 #include "passes.h"
 #include "programcache.h"
+#include "scene/scenedescription.h"
 #include "targets.h"
 #include "textureunits.h"
 
@@ -46,9 +47,11 @@ bool OverlayPass::run(const FrameContext& frame, PassScene& scene) {
     options.lights = settings.showGizmos;
     // A visible ground lies where the grid would (under the model's bounds): it replaces the grid, which
     // would otherwise flicker against it in the depth test. A catcher shows nothing of itself: grid kept.
-    options.grid = settings.showGrid && scene.rig->ground.mode != GroundMode::Visible;
+    const SceneDescription& described = *frame.scene;
+    options.grid = settings.showGrid && described.rig().ground.mode != GroundMode::Visible;
     options.selected = settings.selectedLights;
-    const GizmoGeometry g = buildGizmos(*scene.rig, scene.frame, scene.bounds, frame.view, options);
+    const GizmoGeometry g =
+        buildGizmos(described.rig(), described.frame(), described.bounds(), frame.view, options);
     if (g.lines.empty() && g.points.empty()) return true;
     QString error;
     QOpenGLShaderProgram* p = scene.programs->fixedProgram(kOverlayShader, &error);
@@ -61,9 +64,10 @@ bool OverlayPass::run(const FrameContext& frame, PassScene& scene) {
     p->setUniformValue("uHasDepth", scene.model->model() != nullptr);
     // The grid (gizmos.cpp: under the bounds, 1.5 radii each way) fades from the eye's distance to its
     // centre to one extent beyond: full in front, gone at the far edge of an oblique view.
-    const double radius =
-        scene.frame.radius > 0.0 && std::isfinite(scene.frame.radius) ? scene.frame.radius : 1.0;
-    const glm::dvec3 gridCentre(scene.bounds.center().x, scene.bounds.min.y, scene.bounds.center().z);
+    const SceneFrame sphere = described.frame();
+    const Bounds bounds = described.bounds();
+    const double radius = sphere.radius > 0.0 && std::isfinite(sphere.radius) ? sphere.radius : 1.0;
+    const glm::dvec3 gridCentre(bounds.center().x, bounds.min.y, bounds.center().z);
     const double fadeStart = glm::length(glm::dvec3(frame.view * glm::dvec4(gridCentre, 1.0)));
     p->setUniformValue("uGridFade", float(fadeStart), float(fadeStart + 1.5 * radius));
     glUniformMatrix4fv(p->uniformLocation("uProjection"), 1, GL_FALSE,

@@ -11,11 +11,11 @@ bool ResolvePass::run(const FrameContext& frame, PassScene& scene) {
     // The overlay's occlusion test reads resolved depth.
     const GLbitfield mask = (frame.colourPath == ColourPath::Hdr ? GL_COLOR_BUFFER_BIT : 0) |
                             (frame.overlays ? GL_DEPTH_BUFFER_BIT : 0);
+    m_resolvedDepth = targets.samples > 1 && (mask & GL_DEPTH_BUFFER_BIT);
     if (targets.samples <= 1 || !mask) return true;
     glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.msaaFbo);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, targets.fbo);
     glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, mask, GL_NEAREST);
-    if (mask & GL_DEPTH_BUFFER_BIT) ++targets.gbufferRevision; // the single-sample depth it shares
     return true;
 }
 

@@ -24,7 +24,7 @@ bool ToneMapPass::run(const FrameContext& frame, PassScene& scene) {
     glActiveTexture(textureUnit(TextureUnit::SceneColor));
     glBindTexture(GL_TEXTURE_2D, scene.targets->color);
     glActiveTexture(GL_TEXTURE0);
-    glBindVertexArray(scene.emptyVao);
+    glBindVertexArray(scene.targets->emptyVao);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);
     p->release();

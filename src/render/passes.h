@@ -6,13 +6,15 @@
 //   geometry (G-buffer)  pass_geometry.cpp    lights                        G-buffer, scene depth
 //   geometry (shaded)    pass_geometry.cpp    lights, clusters              scene colour, scene depth
 //   deferred lighting    pass_lighting.cpp    G-buffer, scene depth, ...    scene colour
+//                                             (scene colour: the background, when the plan has one)
 //   background           pass_background.cpp  scene depth                   scene colour (the environment
 //                                                                           where no surface is)
 //   blend                pass_blend.cpp       lights, clusters, scene       scene colour (alphaMode BLEND)
 //                                             colour and depth
 //   shadow catcher       pass_catcher.cpp     lights, shadow maps, scene    scene colour (the ground's
 //                                             colour and depth              shadows only)
-// Every lit pass also reads the shadow maps.
+// Every lit pass also reads the lit inputs it samples (resource::kLitInputs: lights, clusters, shadow maps,
+// environment); shadow maps and environment only where the frame has them.
 //   resolve              pass_resolve.cpp     scene colour, scene depth     resolved (single-sample)
 //   present              pass_resolve.cpp     scene colour                  output (display path)
 //   tone map             pass_tonemap.cpp     resolved                      output (HDR path)
@@ -62,8 +64,8 @@ class MeshPass : public RenderPass {
     void primeSamplerSlots(PassScene& scene);
 };
 
-// Renders the depth maps of the casting lights whose map changed (shadowmaps.h): first in the chain, in
-// the plan when some light casts (PlanKey::shadows).
+// Renders the depth maps of the casting lights whose map changed (input_shadows.h): first in the chain, in
+// the plan when some light casts (PlanBit::Shadows).
 class ShadowPass final : public RenderPass {
   public:
     const char* name() const override { return "shadow"; }
@@ -80,8 +82,7 @@ class ShadowPass final : public RenderPass {
 // same key, the G-pass draws nothing and the lighting pass shades the kept surfaces again (with the
 // scene depth and the material stencil they were drawn with). A light dragged under a still camera thus
 // costs the lighting, not the model's geometry. Anything since that wrote the G-buffer or the depth it
-// shares (the forward path, a read-back, new targets) counted a Targets::gbufferRevision and ends the
-// keeping.
+// shares (the forward path, a read-back, new targets) is Targets::gbufferWriter and ends the keeping.
 class GeometryPass final : public MeshPass {
   public:
     enum class Output { GBuffer, Shaded };
@@ -90,7 +91,8 @@ class GeometryPass final : public MeshPass {
     PassResources reads() const override;
     PassResources writes() const override;
     bool run(const FrameContext& frame, PassScene& scene) override;
-    void release() override { m_keptRevision = -1; }
+    void release() override { m_keptValid = false; }
+    bool keptOutputs() const override { return m_keptThisRun; }
 
     // What the G-pass's pixels depend on: the view, the target size, the scene's revisions and every
     // draw's program key (material features, shading model, attributes or surfaces) in order.
@@ -106,8 +108,9 @@ class GeometryPass final : public MeshPass {
 
   private:
     Output m_output;
-    Key m_kept;              // what the G-buffer holds while m_keptRevision is the targets' revision
-    int m_keptRevision = -1; // Targets::gbufferRevision after this pass last drew the G-buffer (-1: none)
+    Key m_kept;                 // what the G-buffer holds while this pass is Targets::gbufferWriter
+    bool m_keptValid = false;   // m_kept was drawn for keeping (not a read-back)
+    bool m_keptThisRun = false; // the last run() kept the G-buffer
 };
 
 // Shades every covered G-buffer pixel once: a full-screen triangle on the far plane, depth-tested
@@ -119,21 +122,26 @@ class GeometryPass final : public MeshPass {
 // lights) and shades those with the Surface G-buffer path's program, so while the G-pass keeps the
 // G-buffer (a still camera) the frames after the first shade the kept Surfaces without reading the
 // textures again. The same programs every frame: a still view compiles nothing of its own.
+//
+// After a background pass (setOverBackground; RenderPlan::select) it reads the scene colour the background
+// left and shades the covered pixels over it; else it clears the colour first.
 class DeferredLightingPass final : public MeshPass {
   public:
     const char* name() const override { return "deferred lighting"; }
     PassResources reads() const override {
-        return resource::Lights | resource::Clusters | resource::GBuffer | resource::SceneDepth |
-               resource::ShadowMaps | resource::Environment;
+        return resource::kLitInputs | resource::GBuffer | resource::SceneDepth |
+               (m_overBackground ? resource::SceneColor : 0u);
     }
     PassResources writes() const override { return resource::SceneColor; }
     bool run(const FrameContext& frame, PassScene& scene) override;
     void release() override;
+    void setOverBackground(bool over) { m_overBackground = over; }
 
   private:
     // Writes each material's Surfaces into Targets::surfaces with the programs of `keys`.
     bool buildSurfaces(const FrameContext& frame, PassScene& scene, const std::vector<FeatureKey>& keys);
     std::vector<FeatureKey> m_surfaceKeys; // the programs that built Targets::surfaces
+    bool m_overBackground = false;
 };
 
 // The most pixels the kept surfaces are made for (a second set of four RGBA32F targets: 64 bytes a pixel,
@@ -145,7 +153,7 @@ constexpr long long kKeptSurfacePixels = 2048LL * 2048LL;
 // writes, so it covers exactly the pixels no opaque surface was drawn on; display colours or radiance by
 // the colour path, with the frame's exposure and tone map. After the opaque surfaces (deferred: after the
 // G-pass, before the lighting), before the catcher's shadows and the blended meshes (neither writes depth,
-// both go over it). In the plan when PlanKey::background.
+// both go over it). In the plan when PlanBit::Background.
 //
 // The background is rendered into a texture of the scene colour's format and copied: on the forward path
 // where no surface is (kBackgroundCopyShader), on the deferred path whole (glBlitFramebuffer, no program
@@ -155,7 +163,7 @@ constexpr long long kKeptSurfacePixels = 2048LL * 2048LL;
 // only the pixels no surface covers are looked up (an orbiting camera renders it every frame), and it stays
 // valid while that depth does (Key::depth, Targets::gbufferRevision); on the forward path every pixel is,
 // against a depth of its own cleared to the far plane. Both draws have the same state, so the lookup compiles
-// once.
+// once. When it cannot draw, on the deferred path it clears the scene colour, which the lighting pass reads.
 class BackgroundPass final : public RenderPass {
   public:
     const char* name() const override { return "background"; }
@@ -163,8 +171,6 @@ class BackgroundPass final : public RenderPass {
     PassResources writes() const override { return resource::SceneColor; }
     bool run(const FrameContext& frame, PassScene& scene) override;
     void release() override;
-    // Whether run() draws the background this frame (the deferred lighting then keeps the colour it left).
-    static bool draws(const FrameContext& frame, const PassScene& scene);
 
     // What the background's pixels depend on.
     struct Key {
@@ -195,13 +201,12 @@ class BackgroundPass final : public RenderPass {
 // forward, sorted back to front by the view depth of their bounds' centre each frame, depth-tested
 // against the opaque surfaces without writing depth, composited "over" the scene colour (premultiplied;
 // display colours or radiance by the colour path). Never in the G-buffer. In the plan when the model has
-// blended meshes (PlanKey::blend).
+// blended meshes (PlanBit::Blend).
 class BlendPass final : public MeshPass {
   public:
     const char* name() const override { return "blend"; }
     PassResources reads() const override {
-        return resource::Lights | resource::Clusters | resource::SceneColor | resource::SceneDepth |
-               resource::ShadowMaps | resource::Environment;
+        return resource::kLitInputs | resource::SceneColor | resource::SceneDepth;
     }
     PassResources writes() const override { return resource::SceneColor; }
     bool run(const FrameContext& frame, PassScene& scene) override;
@@ -210,12 +215,12 @@ class BlendPass final : public MeshPass {
 // The ground as a shadow catcher (Rig::ground Catcher): invisible except for its shadows. Shaded forward
 // after the opaque surfaces of either path, depth-tested without writing depth, it writes black with
 // alpha = the shadow's opacity (premultiplied "over"): over an opaque background it darkens it, in a
-// transparent image the shadow is the alpha. In the plan when the ground catches (PlanKey::catcher).
+// transparent image the shadow is the alpha. In the plan when the ground catches (PlanBit::Catcher).
 class CatcherPass final : public MeshPass {
   public:
     const char* name() const override { return "shadow catcher"; }
     PassResources reads() const override {
-        return resource::Lights | resource::SceneColor | resource::SceneDepth | resource::ShadowMaps;
+        return resource::Lights | resource::ShadowMaps | resource::SceneColor | resource::SceneDepth;
     }
     PassResources writes() const override { return resource::SceneColor; }
     bool run(const FrameContext& frame, PassScene& scene) override;
@@ -229,6 +234,11 @@ class ResolvePass final : public RenderPass {
     PassResources reads() const override { return resource::SceneColor | resource::SceneDepth; }
     PassResources writes() const override { return resource::Resolved; }
     bool run(const FrameContext& frame, PassScene& scene) override;
+    // Only a resolve of depth changes the single-sample depth the G-buffer shares.
+    bool keptOutputs() const override { return !m_resolvedDepth; }
+
+  private:
+    bool m_resolvedDepth = false;
 };
 
 // Display path: the scene's display colours to the output (resolving MSAA on the way).

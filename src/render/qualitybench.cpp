@@ -1,9 +1,9 @@
 #include "qualitybench.h"
 
 #include "benchestimate.h"
-#include "environmentloader.h"
 #include "offscreen.h"
 #include "reference.h"
+#include "scene/environmentloader.h"
 #include "turntable.h"
 
 #include <QElapsedTimer>
@@ -77,8 +77,7 @@ bool computeSceneReference(const BenchScene& scene, const BenchOptions& o, Progr
     if (!gl.renderGBuffer(scene.camera, o.size, settings, &g, error)) return false;
     const glm::dmat4 view = gl.renderer().effectiveCamera(scene.camera).view();
     std::optional<ReferenceScene> referenceScene =
-        makeReferenceScene(*scene.model, scene.rig, gl.renderer().sceneFrame(), view, settings, error,
-                           gl.renderer().environment());
+        makeReferenceScene(gl.renderer().scene(), view, settings, error); // what the raster drew
     if (!referenceScene) return false;
     ReferenceJob job(std::move(g), std::move(*referenceScene));
     QFuture<void> future = job.start();

@@ -27,8 +27,8 @@
 #include "core/rig.h"
 #include "model/model.h"
 #include "render/approximations.h"
-#include "render/camera.h"
 #include "render/reference.h"
+#include "scene/camera.h"
 
 #include <QImage>
 #include <QSize>

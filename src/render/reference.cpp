@@ -97,6 +97,13 @@ makeReferenceScene(const Model& model, const Rig& rig, const SceneFrame& frame, 
     return s;
 }
 
+std::optional<ReferenceScene> makeReferenceScene(const SceneDescription& scene, const glm::dmat4& view,
+                                                 const RenderSettings& settings, QString* error) {
+    static const Model none;
+    return makeReferenceScene(scene.model() ? *scene.model() : none, scene.rig(), scene.frame(), view,
+                              settings, error, scene.environment());
+}
+
 EnvironmentConvergence environmentConvergence(const ReferenceImage& r) {
     return r.environment ? convergenceOf(r, r.environmentError, r.environmentSamples)
                          : EnvironmentConvergence{};

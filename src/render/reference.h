@@ -25,10 +25,11 @@
 #include "core/envintegrate.h"
 #include "core/imagecompare.h"
 #include "core/prepare.h"
-#include "environmentloader.h"
 #include "floatimage.h"
-#include "referencetrace.h"
 #include "renderer.h"
+#include "scene/environmentloader.h"
+#include "scene/referencetrace.h"
+#include "scene/scenedescription.h"
 
 #include <QFuture>
 #include <QImage>
@@ -72,6 +73,9 @@ std::optional<ReferenceScene>
 makeReferenceScene(const Model& model, const Rig& rig, const SceneFrame& frame, const glm::dmat4& view,
                    const RenderSettings& settings, QString* error = nullptr,
                    const std::shared_ptr<const LoadedEnvironment>& environment = {});
+// The same for what a renderer draws (Renderer::scene()): its model, rig, scene frame and environment.
+std::optional<ReferenceScene> makeReferenceScene(const SceneDescription& scene, const glm::dmat4& view,
+                                                 const RenderSettings& settings, QString* error = nullptr);
 
 struct ReferenceImage {
     int width = 0, height = 0;

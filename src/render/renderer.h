@@ -1,10 +1,11 @@
 // LightRig's OpenGL 3.3 core renderer, shared by the viewport, screenshots, the command line and the
 // tests so that all of them produce the same pixels.
 //
-// Structure: the GPU scene (GpuModel) and the light set (LightSet) are separate; each frame Renderer
-// computes a FrameContext once (framecontext.h), uploads and bins the lights, and runs the RenderPlan
-// (renderplan.h): a chain of passes in their own files (passes.h), rebuilt only when the kind of frame
-// changes.
+// Structure: what is drawn is a scene description (scene/scenedescription.h, no GL: the model, the rig, the
+// ground, the environment), the same one the reference and the traced renderers read. Each frame Renderer
+// computes a FrameContext once (framecontext.h), lets every lit input (litinput.h: lights, shadow maps,
+// environment, ground) prepare itself from the description, and runs the RenderPlan (renderplan.h): a
+// chain of passes in their own files (passes.h), rebuilt only when the kind of frame changes.
 //
 // Frame: the model is shaded with every light of the rig that can reach it (view space, a texture buffer
 // of kLightTexels RGBA32F texels per light, any number of lights). By default each fragment is exposed
@@ -18,14 +19,15 @@
 // Every call needs the context that was current at initialize() to be current.
 #pragma once
 
-#include "camera.h"
 #include "core/prepare.h"
 #include "core/quality.h"
 #include "core/rig.h"
-#include "environmentloader.h"
 #include "floatimage.h"
 #include "model/model.h"
 #include "rendersettings.h"
+#include "scene/camera.h"
+#include "scene/environmentloader.h"
+#include "scene/scenedescription.h"
 
 #include <QColor>
 #include <QFuture>
@@ -44,12 +46,12 @@ namespace lr {
 namespace render {
 class ProgramCache;
 class GpuModel;
-class LightSet;
+class LitInputs;
 class RenderPlan;
 class GpuTimer;
-class ShadowMaps;
-class EnvironmentGl;
-struct ShadowView;
+struct AttributeMaterial;
+struct InputFrame;
+struct PlanKey;
 struct Targets;
 struct FrameContext;
 struct PassScene;
@@ -75,7 +77,9 @@ class Renderer : protected QOpenGLFunctions_3_3_Core {
     bool waitForInteractionProxies();
     const Model* model() const;
     void setRig(const Rig& rig); // cheap: no GL work here; light data is refreshed on the next frame
-    const Rig& rig() const;
+    const Rig& rig() const { return m_scene.rig(); }
+    // What is drawn (the model uploaded, the rig, the ground, the environment), as every renderer reads it.
+    const SceneDescription& scene() const { return m_scene; }
     // The rig's environment decoded and prefiltered (environmentloader.h), or nullptr: none. The rig's
     // Environment says how it is used (intensity, rotation, background); without a loaded environment a
     // rig's environment adds nothing. Cheap: textures are uploaded on the next frame.
@@ -89,14 +93,14 @@ class Renderer : protected QOpenGLFunctions_3_3_Core {
     // Waits for an environment still loading; false with its error when it did not load.
     bool waitForEnvironment(QString* error = nullptr);
     // Null for none and while one is loading.
-    const std::shared_ptr<const LoadedEnvironment>& environment() const { return m_environment; }
+    const std::shared_ptr<const LoadedEnvironment>& environment() const { return m_scene.environment(); }
     // The frame a `model`-space rig is anchored to: the model's bounding sphere (unit sphere without a
     // model).
-    SceneFrame sceneFrame() const;
-    Bounds bounds() const;
+    SceneFrame sceneFrame() const { return m_scene.frame(); }
+    Bounds bounds() const { return m_scene.bounds(); }
     // The model's bounds grown by the ground (Rig::ground) when it is drawn: the camera's automatic clip
     // planes enclose this.
-    Bounds drawnBounds() const;
+    Bounds drawnBounds() const { return m_scene.drawnBounds(); }
 
     // Renders into targetFbo (0: the default framebuffer), which must be at least `size` (or tile.size()).
     // `tile`, when valid, is the part of a size-pixel image to draw (image coordinates, top-left origin);
@@ -131,41 +135,26 @@ class Renderer : protected QOpenGLFunctions_3_3_Core {
     render::FrameContext frameContext(const ViewCamera& camera, QSize size, const RenderSettings& settings,
                                       const QRect& tile) const;
     render::PassScene passScene();
-    // Per frame: the ground's mesh (rebuilt when the model or the ground changed), the shadow views.
-    bool updateGround();
-    // Per frame, for render() and renderGBuffer() alike: the ground, the shadow views and the light set
-    // for `view`; false when the ground could not be uploaded (m_lastError says why).
-    bool updateScene(const glm::dmat4& view);
-    // Per frame: uploads Renderer::environment() when it changed and fills the frame's environment fields
-    // (lighting when the rig's source is not None and the textures are ready; the background by its mode).
-    void updateEnvironment(render::FrameContext* frame);
+    // Per frame, for render() and renderGBuffer() alike: every lit input prepares itself from the scene
+    // description (filling `frame` and its bits of `plan`), then the frame's feature bits; false when one
+    // failed (m_lastError says why).
+    bool prepareInputs(render::FrameContext& frame, render::PlanKey& plan, render::InputFrame& inputs);
+    // The deferred path's opaque materials, the visible ground's too (FrameContext::attributeMaterials);
+    // empty when there are more than the attribute G-buffer takes.
+    std::vector<render::AttributeMaterial> attributeMaterials() const;
 
     bool m_initialized = false;
     QOpenGLContext* m_context = nullptr;
     QString m_lastError;
     RenderStats m_stats;
     bool m_lastFrameHdr = false;
+    SceneDescription m_scene; // what is drawn
     std::unique_ptr<render::ProgramCache> m_programs;
-    std::unique_ptr<render::GpuModel> m_model;  // the GPU scene
-    std::unique_ptr<render::LightSet> m_lights; // the rig's lights
+    std::unique_ptr<render::GpuModel> m_model;   // the GPU scene
+    std::unique_ptr<render::LitInputs> m_inputs; // lights, shadow maps, environment, ground
     std::unique_ptr<render::Targets> m_targets;
     std::unique_ptr<render::RenderPlan> m_plan;
     std::unique_ptr<render::GpuTimer> m_timer;
-    std::unique_ptr<render::ShadowMaps> m_shadows;
-    std::unique_ptr<render::GpuModel> m_ground; // the ground's mesh; empty when the ground is off
-    Ground m_groundUploaded;                    // what m_ground was built for
-    int m_groundGeneration = -1;                // ... over which model
-    int m_groundRevision = 0;                   // one more with every upload of it
-    std::vector<render::ShadowView> m_shadowViews;
-    int m_modelGeneration = 0; // every setModel: shadow maps re-render
-    std::shared_ptr<const LoadedEnvironment> m_environment;
-    QFuture<EnvironmentLoadResult> m_loadingEnvironment;    // valid while one is loading
-    std::unique_ptr<render::EnvironmentGl> m_environmentGl; // its textures
-    bool m_warnedEnvironment = false;                       // an upload failure was logged once
-    bool m_warnedCasters = false; // more than kMaxShadowCasters casting lights was logged once
-    GLuint m_fastSampler = 0;     // the fast tier's texture filtering (F4)
-    GLuint m_emptyVao = 0;        // full-screen triangles
-    GLuint m_slotTexture = 0;     // MeshPass::primeSamplerSlots
     int m_maxSamples = 0, m_maxTargetSize = 0;
 };
 

@@ -1,5 +1,8 @@
 #include "renderplan.h"
 
+#include "litinput.h"
+#include "targets.h"
+
 #include <QLoggingCategory>
 #include <QStringList>
 #include <algorithm>
@@ -44,41 +47,49 @@ const std::vector<RenderPass*>& RenderPlan::select(const PlanKey& key) {
     m_hasKey = true;
     ++m_builds;
     m_passes.clear();
+    const bool deferred = key.has(PlanBit::Deferred), hdr = key.has(PlanBit::Hdr);
+    const bool msaa = key.has(PlanBit::Msaa), overlays = key.has(PlanBit::Overlays);
+    const bool background = key.has(PlanBit::Background);
     // The shadow pass goes first (it writes shadow maps the geometry or lighting pass reads).
-    if (key.shadows) m_passes.push_back(&m_shadow);
+    if (key.has(PlanBit::Shadows)) m_passes.push_back(&m_shadow);
     // The environment behind the opaque surfaces, where they left the cleared depth; before the catcher's
     // shadows and the blended meshes, which write no depth and go over it. Deferred, it goes between the
-    // G-pass (whose depth it needs) and the lighting, which shades only the covered pixels over it.
-    if (key.deferred) {
+    // G-pass (whose depth it needs) and the lighting, which then reads the colour it left and shades only
+    // the covered pixels over it.
+    m_lighting.setOverBackground(background);
+    if (deferred) {
         m_passes.push_back(&m_gbuffer);
-        if (key.background) m_passes.push_back(&m_background);
+        if (background) m_passes.push_back(&m_background);
         m_passes.push_back(&m_lighting);
     } else {
         m_passes.push_back(&m_shaded);
-        if (key.background) m_passes.push_back(&m_background);
+        if (background) m_passes.push_back(&m_background);
     }
     // The catcher's shadows over the opaque surfaces and the background, before anything blended.
-    if (key.catcher) m_passes.push_back(&m_catcher);
+    if (key.has(PlanBit::Catcher)) m_passes.push_back(&m_catcher);
     // Blended meshes after all opaque ones, shaded forward whatever the path.
-    if (key.blend) m_passes.push_back(&m_blend);
-    if (key.msaa && (key.hdr || key.overlays)) m_passes.push_back(&m_resolve);
-    m_passes.push_back(key.hdr ? static_cast<RenderPass*>(&m_toneMap) : &m_present);
-    if (key.overlays) m_passes.push_back(&m_overlay);
-    const QString problem = check(m_passes, key.msaa);
+    if (key.has(PlanBit::Blend)) m_passes.push_back(&m_blend);
+    if (msaa && (hdr || overlays)) m_passes.push_back(&m_resolve);
+    m_passes.push_back(hdr ? static_cast<RenderPass*>(&m_toneMap) : &m_present);
+    if (overlays) m_passes.push_back(&m_overlay);
+    const QString problem = check(m_passes, msaa);
     if (!problem.isEmpty()) qCWarning(lcPlan).noquote() << "render plan" << describe() << ":" << problem;
     qCDebug(lcPlan).noquote() << "render plan:" << describe();
     return m_passes;
 }
 
+bool RenderPlan::runPass(RenderPass& pass, const FrameContext& frame, PassScene& scene) {
+    const bool ok = pass.run(frame, scene);
+    if ((pass.writes() & resource::kDepthSharing) && !pass.keptOutputs()) scene.targets->wroteDepth(&pass);
+    return ok;
+}
+
 bool RenderPlan::run(const FrameContext& frame, PassScene& scene) {
     bool ok = true;
     for (RenderPass* p : m_passes) {
-        if (scene.resolveEnvironment && (p->reads() & resource::Environment)) {
-            // The frame was planned with an environment still loading: it is needed from here on.
-            const auto resolve = std::exchange(scene.resolveEnvironment, nullptr);
-            if (!resolve(scene)) return false;
-        }
-        ok = p->run(frame, scene) && ok;
+        // An input still making what this pass reads (an environment loading) finishes it first.
+        if (!scene.inputs->resolve(p->reads(), &scene.error, &scene.inputError)) return false;
+        ok = runPass(*p, frame, scene) && ok;
     }
     return ok;
 }
@@ -90,12 +101,12 @@ QString RenderPlan::describe() const {
     return names.join(QStringLiteral(" > "));
 }
 
-QString RenderPlan::check(const std::vector<RenderPass*>& passes, bool msaa) {
-    PassResources available = resource::Lights | resource::Clusters | resource::Environment;
-    // Without a shadow pass no light casts: the lit passes' shaders sample no map (nothing to wait for).
-    if (std::none_of(passes.begin(), passes.end(),
-                     [](const RenderPass* p) { return p->writes() & resource::ShadowMaps; }))
-        available |= resource::ShadowMaps;
+QString RenderPlan::check(const std::vector<RenderPass*>& passes, bool msaa, PassResources provided) {
+    PassResources written = 0;
+    for (const RenderPass* p : passes)
+        written |= p->writes();
+    // A lit input that no input provides and no pass writes is not in this frame: reading it is void.
+    PassResources available = provided | (resource::kLitInputs & ~(provided | written));
     QStringList problems;
     for (const RenderPass* p : passes) {
         if (const PassResources missing = p->reads() & ~available)

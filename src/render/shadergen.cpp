@@ -1,6 +1,6 @@
 #include "shadergen.h"
 
-#include "shadowmaps.h"
+#include "shadowplan.h"
 
 #include <QStringList>
 #include <cmath>

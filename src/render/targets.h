@@ -21,18 +21,35 @@ struct Targets {
     GLuint fbo = 0, color = 0, depth = 0; // single-sample: textures
     GLuint gbufferFbo = 0;
     GLuint gbuffer[kGBufferTargets] = {};
-    // One more whenever the G-buffer or the scene depth it shares may have changed: create(), and every
-    // pass that writes them (the G-pass, the forward geometry pass, the MSAA resolve of depth). What was
-    // built from them (the kept G-buffer, Surfaces and background) is valid while it holds.
+    // The G-buffer and the scene depth it shares as the passes left them: one more revision whenever they
+    // may have changed (create(), and RenderPlan::runPass after every pass whose declared writes include
+    // resource::kDepthSharing and that did not keep them: the G-pass, the forward geometry pass, the MSAA
+    // resolve), and the pass that wrote them last (nullptr after create()). What was built from them (the
+    // kept G-buffer, Surfaces and background) is valid while the revision holds.
     int gbufferRevision = 0;
+    const void* gbufferWriter = nullptr;
+    void wroteDepth(const void* pass) {
+        ++gbufferRevision;
+        gbufferWriter = pass;
+    }
     // The kept surfaces (passes.h DeferredLightingPass), on demand: four RGBA32F textures in the Surface
     // layout sharing the depth, and the G-buffer revision they were built from (-1: none).
     GLuint surfaceFbo = 0;
     GLuint surfaces[kGBufferTargets] = {};
     int surfacesRevision = -1;
 
+    // What every frame uses whatever the size (createCommon, releaseCommon): an empty vertex array for
+    // full-screen triangles, the fast tier's texture filtering (F4), a 1x1 texture for
+    // MeshPass::primeSamplerSlots.
+    GLuint emptyVao = 0, fastSampler = 0, slotTexture = 0;
+    void createCommon(QOpenGLFunctions_3_3_Core* gl);
+    void releaseCommon(QOpenGLFunctions_3_3_Core* gl);
+
     GLuint drawFbo() const { return samples > 1 ? msaaFbo : fbo; }
     bool create(QOpenGLFunctions_3_3_Core* gl, QSize size, int samples, GLenum colorFormat, QString* error);
+    // create() unless the targets already have this size, sample count and format; without multisampling
+    // (and a warning) when a multisampled target cannot be made.
+    bool ensure(QOpenGLFunctions_3_3_Core* gl, QSize size, int samples, GLenum colorFormat, QString* error);
     bool createGBuffer(QOpenGLFunctions_3_3_Core* gl, QString* error);  // for the current size
     bool createSurfaces(QOpenGLFunctions_3_3_Core* gl, QString* error); // for the current size
     void release(QOpenGLFunctions_3_3_Core* gl);

@@ -5,8 +5,8 @@
 // (src/app/turntableexport.h). Plain math, no GL.
 #pragma once
 
-#include "camera.h"
 #include "core/rig.h"
+#include "scene/camera.h"
 
 #include <QString>
 #include <glm/vec3.hpp>

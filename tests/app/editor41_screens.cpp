@@ -16,7 +16,7 @@
 #include "app/propertiesdock.h"
 #include "app/rendersettingsdock.h"
 #include "editor/environmentlight.h"
-#include "render/environmentloader.h"
+#include "scene/environmentloader.h"
 #include "startwindow.h"
 
 #include <QDir>

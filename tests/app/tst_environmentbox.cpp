@@ -15,7 +15,7 @@
 #include "core/defaultrig.h"
 #include "editor/document.h"
 #include "editor/environmentvalue.h"
-#include "render/environmentloader.h"
+#include "scene/environmentloader.h"
 
 #include <QApplication>
 #include <QComboBox>

@@ -10,7 +10,7 @@
 #include "app/environmentloading.h"
 #include "app/errordialog.h"
 #include "core/envlight.h"
-#include "render/environmentloader.h"
+#include "scene/environmentloader.h"
 #include "startwindow.h"
 
 #include <QAction>

@@ -1,8 +1,8 @@
 // The CPU light binning of clustered shading (src/render/cluster.h): conservative (every point inside a
 // light's sphere finds the light in its cluster) and tight (a light lands only near the clusters its
 // sphere actually reaches), for lights in front of, around and behind the camera.
-#include "render/camera.h"
 #include "render/cluster.h"
+#include "scene/camera.h"
 
 #include <QTest>
 #include <random>

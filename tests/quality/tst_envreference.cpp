@@ -7,9 +7,9 @@
 #include "qualityscenes.h"
 
 #include "render/benchreport.h"
-#include "render/environmentloader.h"
 #include "render/gbuffer.h"
 #include "render/qualitybench.h"
+#include "scene/environmentloader.h"
 
 #include <QJsonArray>
 #include <QTest>

@@ -1,4 +1,4 @@
-// The traced visibility of the double-precision reference (src/render/referencetrace.h, issue 14) on
+// The traced visibility of the double-precision reference (src/scene/referencetrace.h, issue 14) on
 // analytic scenes built in code: a sphere above a plane against the closed-form shadow outline (point and
 // directional light), a cube resting on the ground (no peter-panning), a light inside the model, a
 // directional light parallel to the ground, and the penumbra of a disk light behind a straight edge
@@ -7,7 +7,7 @@
 // nothing behind its plane. No OpenGL: the tracer takes world points directly.
 #include "shadowscenes.h"
 
-#include "render/referencetrace.h"
+#include "scene/referencetrace.h"
 
 #include <QTest>
 #include <cmath>

@@ -4,7 +4,7 @@
 
 #include "core/rig.h"
 #include "model/model.h"
-#include "render/camera.h"
+#include "scene/camera.h"
 
 #include <QString>
 #include <functional>

@@ -6,9 +6,9 @@
 #include "core/rig.h"
 #include "model/ground.h"
 #include "model/model.h"
-#include "render/camera.h"
 #include "render/floatimage.h"
 #include "render/renderer.h"
+#include "scene/camera.h"
 
 #include <QPoint>
 #include <QSize>

@@ -11,12 +11,12 @@
 #include "shadowscenes.h"
 
 #include "core/envbrdf.h"
-#include "render/environmentloader.h"
-#include "render/envprefilter.h"
 #include "render/offscreen.h"
 #include "render/programcache.h"
 #include "render/renderplan.h"
 #include "render/shadergen.h"
+#include "scene/environmentloader.h"
+#include "scene/envprefilter.h"
 
 #include <QTest>
 #include <QThread>
@@ -554,19 +554,18 @@ class TestEnvironmentRender : public QObject {
         RenderPlan plan;
         for (int bits = 0; bits < 8; ++bits) {
             PlanKey key;
-            key.deferred = bits & 1;
-            key.msaa = bits & 2;
-            key.hdr = bits & 4;
-            key.catcher = key.blend = true;
-            key.background = true;
+            key.set(PlanBit::Deferred, bits & 1).set(PlanBit::Msaa, bits & 2).set(PlanBit::Hdr, bits & 4);
+            key.set(PlanBit::Catcher).set(PlanBit::Blend);
+            key.set(PlanBit::Background);
             const auto& passes = plan.select(key);
-            QVERIFY2(RenderPlan::check(passes, key.msaa).isEmpty(), qPrintable(plan.describe()));
+            QVERIFY2(RenderPlan::check(passes, key.has(PlanBit::Msaa)).isEmpty(),
+                     qPrintable(plan.describe()));
             const QString d = plan.describe();
-            const QString order = key.deferred
+            const QString order = key.has(PlanBit::Deferred)
                                       ? QStringLiteral("geometry (G-buffer) > background > deferred lighting")
                                       : QStringLiteral("geometry (shaded) > background");
             QVERIFY2(d.contains(order + QStringLiteral(" > shadow catcher > blend")), qPrintable(d));
-            key.background = false;
+            key.set(PlanBit::Background, false);
             plan.select(key);
             QVERIFY(!plan.describe().contains(QLatin1String("background")));
         }
@@ -618,8 +617,7 @@ class TestEnvironmentRender : public QObject {
         RenderPlan plan;
         for (bool deferred : {false, true}) {
             PlanKey key;
-            key.deferred = deferred;
-            key.background = true;
+            key.set(PlanBit::Deferred, deferred).set(PlanBit::Background);
             QString first;
             for (const RenderPass* p : plan.select(key))
                 if ((p->reads() & resource::Environment) && first.isEmpty()) first = QLatin1String(p->name());

@@ -1,10 +1,10 @@
-// The environment prefilter (render/envprefilter.h) against exact and brute-force integrals: a uniform
+// The environment prefilter (scene/envprefilter.h) against exact and brute-force integrals: a uniform
 // environment gives E = π·L from SH and the irradiance map and every specular level stays L (energy); the
 // irradiance map (quadrature over the 128 × 64 pyramid level) matches quadrature over the full image; the
 // GGX levels (filtered importance sampling) match a brute-force convolution of a small image; level 0 is
 // the source where sizes match; resampling and halving keep ∫ L dω. The measured errors are printed.
-#include "render/envprefilter.h"
-#include "render/envprefilter_detail.h"
+#include "scene/envprefilter.h"
+#include "scene/envprefilter_detail.h"
 
 #include <QTest>
 #include <cmath>

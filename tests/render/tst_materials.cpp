@@ -408,14 +408,15 @@ class TestMaterials : public QObject {
     void blendPassSitsAfterTheSurfaces() {
         RenderPlan plan;
         for (int bits = 0; bits < 32; ++bits) {
-            const PlanKey key{bool(bits & 1), bool(bits & 2), bool(bits & 4), bool(bits & 8),
-                              bool(bits & 16)};
+            const PlanKey key{unsigned(bits)}; // deferred, hdr, msaa, overlays, blend: PlanBit's first five
             const auto& passes = plan.select(key);
-            QVERIFY2(RenderPlan::check(passes, key.msaa).isEmpty(), qPrintable(plan.describe()));
-            QCOMPARE(plan.describe().contains(QLatin1String("blend")), key.blend);
-            if (key.blend) {
-                const QString expected = key.deferred ? QStringLiteral("deferred lighting > blend")
-                                                      : QStringLiteral("geometry (shaded) > blend");
+            QVERIFY2(RenderPlan::check(passes, key.has(PlanBit::Msaa)).isEmpty(),
+                     qPrintable(plan.describe()));
+            QCOMPARE(plan.describe().contains(QLatin1String("blend")), key.has(PlanBit::Blend));
+            if (key.has(PlanBit::Blend)) {
+                const QString expected = key.has(PlanBit::Deferred)
+                                             ? QStringLiteral("deferred lighting > blend")
+                                             : QStringLiteral("geometry (shaded) > blend");
                 QVERIFY2(plan.describe().contains(expected), qPrintable(plan.describe()));
             }
         }

@@ -1,9 +1,9 @@
 // GL-free parts of the renderer: camera math (orbit, pan, dolly, framing, standard views, tiles, clip
 // planes), the shader feature key (what compiles and what does not) and the light texel packing.
 #include "core/prepare.h"
-#include "render/camera.h"
 #include "render/lightpack.h"
 #include "render/shadergen.h"
+#include "scene/camera.h"
 
 #include <QTest>
 #include <glm/ext/matrix_transform.hpp>

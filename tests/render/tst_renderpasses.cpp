@@ -10,6 +10,7 @@
 #include "render/offscreen.h"
 #include "render/renderplan.h"
 #include "render/shadergen.h"
+#include "render/targets.h"
 #include "render/textureunits.h"
 
 #include <QSet>
@@ -36,23 +37,27 @@ class TestRenderPasses : public QObject {
     void everyPlanIsConsistent() {
         RenderPlan plan;
         for (int bits = 0; bits < 16; ++bits) {
-            const PlanKey key{bool(bits & 1), bool(bits & 2), bool(bits & 4), bool(bits & 8)};
+            PlanKey key;
+            key.set(PlanBit::Deferred, bits & 1).set(PlanBit::Hdr, bits & 2).set(PlanBit::Msaa, bits & 4);
+            key.set(PlanBit::Overlays, bits & 8);
+            const bool deferred = key.has(PlanBit::Deferred), hdr = key.has(PlanBit::Hdr);
+            const bool msaa = key.has(PlanBit::Msaa), overlays = key.has(PlanBit::Overlays);
             const auto& passes = plan.select(key);
             const QString where = plan.describe();
-            QVERIFY2(RenderPlan::check(passes, key.msaa).isEmpty(),
-                     qPrintable(where + ": " + RenderPlan::check(passes, key.msaa)));
-            QCOMPARE(QString::fromLatin1(passes.front()->name()), key.deferred
-                                                                      ? QStringLiteral("geometry (G-buffer)")
-                                                                      : QStringLiteral("geometry (shaded)"));
-            QCOMPARE(where.contains(QLatin1String("deferred lighting")), key.deferred);
-            QCOMPARE(where.contains(QLatin1String("tone map")), key.hdr);
-            QCOMPARE(where.contains(QLatin1String("present")), !key.hdr);
-            QCOMPARE(QString::fromLatin1(passes.back()->name()) == QLatin1String("overlay"), key.overlays);
-            QCOMPARE(where.contains(QLatin1String("resolve")), key.msaa && (key.hdr || key.overlays));
+            QVERIFY2(RenderPlan::check(passes, msaa).isEmpty(),
+                     qPrintable(where + ": " + RenderPlan::check(passes, msaa)));
+            QCOMPARE(QString::fromLatin1(passes.front()->name()),
+                     deferred ? QStringLiteral("geometry (G-buffer)") : QStringLiteral("geometry (shaded)"));
+            QCOMPARE(where.contains(QLatin1String("deferred lighting")), deferred);
+            QCOMPARE(where.contains(QLatin1String("tone map")), hdr);
+            QCOMPARE(where.contains(QLatin1String("present")), !hdr);
+            QCOMPARE(QString::fromLatin1(passes.back()->name()) == QLatin1String("overlay"), overlays);
+            QCOMPARE(where.contains(QLatin1String("resolve")), msaa && (hdr || overlays));
         }
         QCOMPARE(plan.builds(), 16);
-        plan.select(PlanKey{true, true, false, true});
-        plan.select(PlanKey{true, true, false, true});
+        const PlanKey twice = PlanKey().set(PlanBit::Deferred).set(PlanBit::Hdr).set(PlanBit::Overlays);
+        plan.select(twice);
+        plan.select(twice);
         QCOMPARE(plan.builds(), 17); // the same key twice: one build
     }
 
@@ -103,6 +108,69 @@ class TestRenderPasses : public QObject {
         QVERIFY(RenderPlan::check({&shaded, &toneMap}, false).isEmpty());
         QVERIFY(RenderPlan::check({&overlay}, false).contains(QLatin1String("overlay reads")));
         QVERIFY(RenderPlan::check({&shaded}, false).contains(QLatin1String("nothing writes the output")));
+    }
+
+    // The cross-pass dependencies are declared reads that check() verifies: the deferred lighting over a
+    // background reads the colour the background left; a lit pass reads shadow maps only after the pass
+    // that writes them, and a lit input the frame has not got (no caster, no environment) is no read.
+    void crossPassDependenciesAreDeclared() {
+        GeometryPass gbuffer(GeometryPass::Output::GBuffer), shaded(GeometryPass::Output::Shaded);
+        DeferredLightingPass lighting;
+        BackgroundPass background;
+        ShadowPass shadow;
+        PresentPass present;
+        QVERIFY(RenderPlan::check({&gbuffer, &lighting, &present}, false).isEmpty());
+        lighting.setOverBackground(true);
+        const QString e = RenderPlan::check({&gbuffer, &lighting, &present}, false);
+        QVERIFY2(e.contains(QLatin1String("deferred lighting reads scene-color")), qPrintable(e));
+        QVERIFY(RenderPlan::check({&gbuffer, &background, &lighting, &present}, false).isEmpty());
+        const QString late = RenderPlan::check({&shaded, &shadow, &present}, false);
+        QVERIFY2(late.contains(QLatin1String("geometry (shaded) reads shadow-maps")), qPrintable(late));
+        QVERIFY(RenderPlan::check({&shadow, &shaded, &present}, false).isEmpty());
+        QVERIFY(
+            RenderPlan::check({&shaded, &present}, false, resource::Lights | resource::Clusters).isEmpty());
+        // The background reads the environment: without an input providing it, nothing does.
+        const QString noEnvironment =
+            RenderPlan::check({&gbuffer, &background, &lighting, &present}, false, resource::Lights);
+        QVERIFY2(noEnvironment.isEmpty(), qPrintable(noEnvironment)); // void: no input has it this frame
+        const QString noLights = RenderPlan::check({&shaded, &present}, false, 0);
+        QVERIFY2(noLights.isEmpty(), qPrintable(noLights)); // a frame without lights reads none
+    }
+
+    // The G-buffer's revision is counted in one place, RenderPlan::runPass, from the declared writes: a
+    // pass writing the G-buffer or the depth it shares counts one (and is the last writer) unless it kept
+    // them; a pass writing neither counts none.
+    void theDepthRevisionFollowsTheDeclaredWrites() {
+        struct FakePass final : RenderPass {
+            PassResources w = 0;
+            bool keep = false;
+            const char* name() const override { return "fake"; }
+            PassResources reads() const override { return 0; }
+            PassResources writes() const override { return w; }
+            bool run(const FrameContext&, PassScene&) override { return true; }
+            bool keptOutputs() const override { return keep; }
+        };
+        Targets targets;
+        PassScene scene;
+        scene.targets = &targets;
+        const FrameContext frame;
+        FakePass depth, colour, kept;
+        depth.w = resource::GBuffer | resource::SceneDepth;
+        colour.w = resource::SceneColor;
+        kept.w = resource::SceneDepth;
+        kept.keep = true;
+        const int start = targets.gbufferRevision;
+        QVERIFY(RenderPlan::runPass(depth, frame, scene));
+        QCOMPARE(targets.gbufferRevision, start + 1);
+        QCOMPARE(targets.gbufferWriter, static_cast<const void*>(&depth));
+        RenderPlan::runPass(colour, frame, scene);
+        RenderPlan::runPass(kept, frame, scene);
+        QCOMPARE(targets.gbufferRevision, start + 1);
+        QCOMPARE(targets.gbufferWriter, static_cast<const void*>(&depth));
+        kept.keep = false;
+        RenderPlan::runPass(kept, frame, scene);
+        QCOMPARE(targets.gbufferRevision, start + 2);
+        QCOMPARE(targets.gbufferWriter, static_cast<const void*>(&kept));
     }
 
     void textureUnitsAreDistinct() {

@@ -7,10 +7,10 @@
 #include "shadowscenes.h"
 
 #include "render/offscreen.h"
-#include "render/referencetrace.h"
 #include "render/renderplan.h"
 #include "render/shadergen.h"
 #include "render/shadowmaps.h"
+#include "scene/referencetrace.h"
 
 #include <QTest>
 #include <algorithm>

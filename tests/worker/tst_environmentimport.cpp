@@ -1,11 +1,11 @@
 // Environment images through the import worker (model/environmentdecode.h importEnvironmentIsolated):
 // the round trip gives what decoding in process gives; the worker's errors name the file; the parent
 // refuses a reply with a NaN or the wrong byte count, and reports a crash; and the loader
-// (render/environmentloader.h) resolves builtin, relative and absolute files and names the file it could
+// (scene/environmentloader.h) resolves builtin, relative and absolute files and names the file it could
 // not read. Runs against LIGHTRIG_EXECUTABLE.
 #include "model/environmentdecode.h"
 #include "model/importprotocol.h"
-#include "render/environmentloader.h"
+#include "scene/environmentloader.h"
 
 #include <QDir>
 #include <QFile>

@@ -5,6 +5,8 @@
 
 #include "model/model.h"
 
+#include <QRect>
+#include <QSize>
 #include <QString>
 #include <QStringList>
 #include <glm/mat4x4.hpp>
@@ -30,6 +32,8 @@ struct ViewCamera {
     glm::dmat4 projection(double aspect) const; // needs znear > 0 (use withClipPlanes first)
     // Projection of the sub-rectangle [x0,x1]×[y0,y1] (NDC, -1..1) of the full image: for tiled rendering.
     glm::dmat4 projection(double aspect, double x0, double y0, double x1, double y1) const;
+    // The projection of a `size`-pixel image, or of its part `tile` (pixels, top-left origin) when valid.
+    glm::dmat4 projection(QSize size, const QRect& tile) const;
 
     // This camera with near/far planes that enclose the sphere (when znear <= 0; explicit planes are kept).
     ViewCamera withClipPlanes(const glm::dvec3& center, double radius) const;

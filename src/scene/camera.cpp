@@ -65,6 +65,15 @@ glm::dmat4 ViewCamera::projection(double aspect) const {
     return glm::perspective(fovy, a, n, zfar);
 }
 
+glm::dmat4 ViewCamera::projection(QSize size, const QRect& tile) const {
+    const double aspect = double(size.width()) / double(std::max(1, size.height()));
+    if (!tile.isValid()) return projection(aspect);
+    const double w = size.width(), h = size.height();
+    const double x0 = 2.0 * tile.left() / w - 1.0, x1 = 2.0 * (tile.left() + tile.width()) / w - 1.0;
+    const double y1 = 1.0 - 2.0 * tile.top() / h, y0 = 1.0 - 2.0 * (tile.top() + tile.height()) / h;
+    return projection(aspect, x0, y0, x1, y1);
+}
+
 glm::dmat4 ViewCamera::projection(double aspect, double x0, double y0, double x1, double y1) const {
     glm::dmat4 crop(1.0);
     crop[0][0] = 2.0 / (x1 - x0);
