@@ -2,7 +2,8 @@
 # Renders the same matrix of scenes with two lightrig executables and compares the PNGs byte for byte: the
 # check that a refactoring moved no pixel. Every bundled preset on the bundled Suzanne and on a physically
 # based model (tests/data/model/pbr.gltf, or the helmet when ../shared is there), in every quality tier,
-# with the rig's own settings and again with shadows, a ground and the studio environment forced on.
+# with the rig's own settings, again with shadows, a ground and the studio environment forced on, and with
+# shadows over a shadow catcher in a transparent image.
 #   scripts/perf/identical_sweep.sh BEFORE_LIGHTRIG AFTER_LIGHTRIG [OUT_DIR]
 # PRESETS="default three-point" and TIERS="exact" narrow the matrix (default: every preset, every tier).
 # Prints one line per image that differs and a summary `N identical, M differ`; exit 0 only when all match.
@@ -21,7 +22,8 @@ export LIBGL_ALWAYS_SOFTWARE=1 QT_QPA_PLATFORM=xcb
 models=("$root/resources/models/suzanne/Suzanne.gltf" "$root/tests/data/model/pbr.gltf")
 helmet="$root/../shared/models/bench/helmet_8spot.glb"
 [ -f "$helmet" ] && models+=("$helmet")
-extras=("" "--shadows on --ground visible --environment $root/resources/environments/studio.exr")
+extras=("" "--shadows on --ground visible --environment $root/resources/environments/studio.exr"
+        "--shadows on --ground catcher --transparent")
 same=0
 differ=0
 for model in "${models[@]}"; do
@@ -29,7 +31,7 @@ for model in "${models[@]}"; do
     for preset in ${PRESETS:-$(cd "$root/resources/presets" && ls *.json | sed 's/\.json$//')}; do
         rig="$root/resources/presets/$preset.json"
         for quality in ${TIERS:-fast balanced exact}; do
-            for e in 0 1; do
+            for e in "${!extras[@]}"; do
                 name="$(basename "${model%.*}")_$(basename "${rig%.json}")_${quality}_$e.png"
                 # shellcheck disable=SC2086
                 for side in before after; do
