@@ -1,6 +1,6 @@
-// Analytic scenes for the shadow tests (tst_shadows.cpp): meshes built here, the ground from the model's
-// bounds (src/model/ground.h), and the probes: world points projected to pixels with the renderer's own
-// camera, so no pixel position is hard-coded.
+// Analytic scenes for the shadow tests (tst_shadows.cpp, tst_shadowshapes.cpp): meshes built here, the
+// ground from the model's bounds (src/model/ground.h), and the probes: world points projected to pixels
+// with the renderer's own camera, so no pixel position is hard-coded.
 #pragma once
 
 #include "core/rig.h"
