@@ -3,9 +3,9 @@
 // lit by the environment alone, a white sphere, a camera in front of it, and a fixture that renders.
 #pragma once
 
-#include "render/environmentloader.h"
-#include "render/envprefilter.h"
 #include "render/offscreen.h"
+#include "scene/environmentloader.h"
+#include "scene/envprefilter.h"
 
 #include <QImage>
 #include <QSize>

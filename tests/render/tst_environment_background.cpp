@@ -8,9 +8,9 @@
 #include "scenes.h"
 #include "shadowscenes.h"
 
-#include "render/envprefilter.h"
 #include "render/offscreen.h"
 #include "render/renderplan.h"
+#include "scene/envprefilter.h"
 
 #include <QTest>
 #include <cmath>

@@ -8,8 +8,8 @@
 #include "shadowscenes.h"
 
 #include "render/offscreen.h"
-#include "render/referencetrace.h"
 #include "render/shadowmaps.h"
+#include "scene/referencetrace.h"
 
 #include <QTest>
 #include <algorithm>
