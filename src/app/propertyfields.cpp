@@ -66,20 +66,8 @@ QString propertyFieldName(LightProperty property) {
 
 QString intensitySuffix(LightType type, ShadingModel shading) {
     const auto tr = [](const char* t) { return QCoreApplication::translate("lr::PropertiesDock", t); };
-    if (shading == ShadingModel::Pbr) {
-        switch (type) {
-        case LightType::Point:
-        case LightType::Spot:
-            return tr(" cd");
-        case LightType::Directional:
-            return tr(" lx");
-        case LightType::Rect:
-        case LightType::Disk:
-            return tr(" nits");
-        case LightType::Rim:
-            break;
-        }
-    }
+    const char* unit = traitsOf(type).pbrUnit;
+    if (shading == ShadingModel::Pbr && unit) return QLatin1Char(' ') + QString::fromLatin1(unit);
     return tr(" (classic)");
 }
 

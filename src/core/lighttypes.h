@@ -42,6 +42,9 @@ struct LightTypeTraits {
     std::array<double, 3> defaultDirection;
     double defaultRange;
     double benchIntensity; // summed intensity of a procedural bench rig of lights of this type
+    // The unit of its intensity under physically based shading (KHR_lights_punctual: candela, lux; an area
+    // light's luminance in nits), as the Properties dock shows it; nullptr: none (its term is classic).
+    const char* pbrUnit;
 };
 
 inline constexpr std::array<LightTypeTraits, size_t(enumCount<LightType>())> kLightTypeTraits{{
@@ -63,7 +66,8 @@ inline constexpr std::array<LightTypeTraits, size_t(enumCount<LightType>())> kLi
      .gltfType = "point",
      .defaultDirection = {0, 0, 0},
      .defaultRange = 8.0,
-     .benchIntensity = 6.0},
+     .benchIntensity = 6.0,
+     .pbrUnit = "cd"},
     {.type = LightType::Spot,
      .label = "Spot",
      .usesPosition = true,
@@ -82,7 +86,8 @@ inline constexpr std::array<LightTypeTraits, size_t(enumCount<LightType>())> kLi
      .gltfType = "spot",
      .defaultDirection = {0, 0, 0},
      .defaultRange = 8.0,
-     .benchIntensity = 6.0},
+     .benchIntensity = 6.0,
+     .pbrUnit = "cd"},
     {.type = LightType::Directional,
      .label = "Directional",
      .usesPosition = false,
@@ -101,7 +106,8 @@ inline constexpr std::array<LightTypeTraits, size_t(enumCount<LightType>())> kLi
      .gltfType = "directional",
      .defaultDirection = {-1, -1, -1},
      .defaultRange = -1.0,
-     .benchIntensity = 1.6},
+     .benchIntensity = 1.6,
+     .pbrUnit = "lx"},
     {.type = LightType::Rim,
      .label = "Rim",
      .usesPosition = false,
@@ -120,7 +126,8 @@ inline constexpr std::array<LightTypeTraits, size_t(enumCount<LightType>())> kLi
      .gltfType = nullptr,
      .defaultDirection = {0, 0, -1},
      .defaultRange = -1.0,
-     .benchIntensity = 0.8},
+     .benchIntensity = 0.8,
+     .pbrUnit = nullptr},
     {.type = LightType::Rect,
      .label = "Rect",
      .usesPosition = true,
@@ -139,7 +146,8 @@ inline constexpr std::array<LightTypeTraits, size_t(enumCount<LightType>())> kLi
      .gltfType = nullptr,
      .defaultDirection = {0, 0, 0},
      .defaultRange = -1.0,
-     .benchIntensity = 20.0},
+     .benchIntensity = 20.0,
+     .pbrUnit = "nits"},
     {.type = LightType::Disk,
      .label = "Disk",
      .usesPosition = true,
@@ -158,7 +166,8 @@ inline constexpr std::array<LightTypeTraits, size_t(enumCount<LightType>())> kLi
      .gltfType = nullptr,
      .defaultDirection = {0, 0, 0},
      .defaultRange = -1.0,
-     .benchIntensity = 25.0},
+     .benchIntensity = 25.0,
+     .pbrUnit = "nits"},
 }};
 
 constexpr int kLightTypeCount = int(kLightTypeTraits.size());

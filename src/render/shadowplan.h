@@ -43,10 +43,13 @@ inline constexpr double kAreaMapFilterTexels = 128.0;
 enum class ShadowKind { Perspective = 0, Orthographic = 1, Cube = 2 };
 // The map a casting light of this type gets: spot perspective, directional orthographic, point a cube;
 // an area light's depends on where the model is (areaShadowKind), this says Cube (it may need one).
+// Read from the type's traits: without a position it is orthographic; an area light or a positioned light
+// without a cone lights every way round (a cube); a cone fits one perspective map.
 constexpr ShadowKind shadowKindOf(LightType type) {
-    return type == LightType::Directional                      ? ShadowKind::Orthographic
-           : type == LightType::Point || traitsOf(type).isArea ? ShadowKind::Cube
-                                                               : ShadowKind::Perspective;
+    const LightTypeTraits& t = traitsOf(type);
+    return !t.usesPosition && !t.isArea ? ShadowKind::Orthographic
+           : t.isArea || !t.usesCone    ? ShadowKind::Cube
+                                        : ShadowKind::Perspective;
 }
 // An area light at world `position` over a model sphere (centre c, radius r) at `resolution`: a
 // perspective map when the light is outside the sphere and the sphere's half-angle is within a cube
