@@ -14,6 +14,7 @@
 #include "outputfiles.h"
 #include "renderestimate.h"
 #include "renderrun.h"
+#include "rendertraced.h"
 #include "sceneoptions.h"
 
 #include "render/imagefile.h"
@@ -21,6 +22,7 @@
 #include <QCommandLineParser>
 #include <QFileInfo>
 #include <QTextStream>
+#include <cmath>
 #include <optional>
 
 namespace lr::cli {
@@ -33,7 +35,23 @@ const char* kUsage =
     "[--supersample N] [--transparent] [--exposure EV] [--tonemap clamp|reinhard|aces|neutral|agx] "
     "[--shading classic|pbr] [--ground off|visible|catcher] [--shadows on|off] [--msaa N] "
     "[--environment FILE|builtin:NAME|studio|none] [--environment-intensity EV] "
-    "[--environment-rotation DEGREES] [--environment-background visible|blurred|color]";
+    "[--environment-rotation DEGREES] [--environment-background visible|blurred|color] "
+    "[--samples N] [--bounces B] [--threads T] [--firefly-clamp X]";
+
+// A whole number in [lo, hi] from an option's value, or a usage message naming the option.
+std::optional<int> wholeNumber(const QCommandLineParser& parser, const QCommandLineOption& option, int lo, int hi,
+                               QString* message) {
+    bool ok = false;
+    const QString text = parser.value(option);
+    const int v = text.toInt(&ok);
+    if (ok && v >= lo && v <= hi) return v;
+    *message = QStringLiteral("--%1 must be a whole number in %2..%3, got '%4'")
+                   .arg(option.names().constLast())
+                   .arg(lo)
+                   .arg(hi)
+                   .arg(text);
+    return std::nullopt;
+}
 
 } // namespace
 
@@ -85,6 +103,22 @@ int runRender(const QStringList& args) {
                                      QStringLiteral("Write one JSON line per image (file, model, rig, view, "
                                                     "status, seconds, error) to FILE, or to stdout for -."),
                                      QStringLiteral("FILE|-"));
+    const QCommandLineOption samplesOption(
+        QStringLiteral("samples"), QStringLiteral("--quality path: samples per pixel, 1..1000000 (default 64)."),
+        QStringLiteral("N"));
+    const QCommandLineOption bouncesOption(
+        QStringLiteral("bounces"),
+        QStringLiteral("--quality path: surface interactions per path, 0..1024 (default 8; 1 is direct light "
+                       "only)."),
+        QStringLiteral("B"));
+    const QCommandLineOption threadsOption(
+        QStringLiteral("threads"), QStringLiteral("--quality path: worker threads, 1..1024 (default: every core)."),
+        QStringLiteral("T"));
+    const QCommandLineOption clampOption(
+        QStringLiteral("firefly-clamp"),
+        QStringLiteral("--quality path: clamp each sample's largest channel to X (linear radiance > 0); biased, "
+                       "off by default."),
+        QStringLiteral("X"));
     SceneOptionSet scene;
     scene.rig.setDescription(QStringLiteral("Rig file (.json); repeat it for several rigs. Default: the "
                                             "model's own lights when it has some, else the default rig."));
@@ -95,6 +129,7 @@ int runRender(const QStringList& args) {
     parser.addOption(output);
     scene.addTo(parser);
     parser.addOptions({supersample, transparent, frames, msaa, turntable, rotate, summary, noMemoryCheck});
+    parser.addOptions({samplesOption, bouncesOption, threadsOption, clampOption});
     parser.addPositionalArgument(QStringLiteral("MODEL"),
                                  QStringLiteral("Model files Assimp reads (glTF, OBJ, FBX, ...)."),
                                  QStringLiteral("MODEL..."));
@@ -113,8 +148,35 @@ int runRender(const QStringList& args) {
     if (request.format.isEmpty())
         return usage(QStringLiteral("the output must end in .png, .jpg or .jpeg: %1").arg(request.output));
     QString message;
-    const std::optional<SceneOptions> options = scene.read(parser, &message, false, true);
+    const std::optional<SceneOptions> options = scene.read(parser, &message, false, true, true);
     if (!options) return usage(message);
+    TracedRenderOptions traced;
+    for (const QCommandLineOption* o : {&samplesOption, &bouncesOption, &threadsOption, &clampOption})
+        if (parser.isSet(*o) && !options->pathTraced)
+            return usage(QStringLiteral("--%1 needs --quality path").arg(o->names().constLast()));
+    if (options->pathTraced) {
+        for (const QCommandLineOption* o :
+             std::initializer_list<const QCommandLineOption*>{&supersample, &msaa, &turntable, &frames})
+            if (parser.isSet(*o))
+                return usage(QStringLiteral("--%1 does not apply to --quality path (it takes --samples)")
+                                 .arg(o->names().constLast()));
+        const auto number = [&](const QCommandLineOption& o, int lo, int hi, int* v) {
+            if (!parser.isSet(o)) return true;
+            const std::optional<int> n = wholeNumber(parser, o, lo, hi, &message);
+            if (n) *v = *n;
+            return n.has_value();
+        };
+        if (!number(samplesOption, 1, 1000000, &traced.samples) || !number(bouncesOption, 0, 1024, &traced.bounces) ||
+            !number(threadsOption, 1, 1024, &traced.threads))
+            return usage(message);
+        if (parser.isSet(clampOption)) {
+            bool ok = false;
+            traced.fireflyClamp = parser.value(clampOption).toDouble(&ok);
+            if (!ok || !std::isfinite(traced.fireflyClamp) || !(traced.fireflyClamp > 0.0))
+                return usage(QStringLiteral("--firefly-clamp must be a linear radiance > 0, got '%1'")
+                                 .arg(parser.value(clampOption)));
+        }
+    }
     request.options = *options;
     for (const QString& rig : parser.values(scene.rig)) {
         if (rig.isEmpty()) return usage(QStringLiteral("--rig needs a file name"));
@@ -174,6 +236,12 @@ int runRender(const QStringList& args) {
     if (!checkDistinctFiles(inputs, outputs, &message)) {
         err << name << ": " << message << '\n';
         return Failed;
+    }
+    if (request.options.pathTraced) { // on the CPU: no OpenGL, no display
+        if (items->size() != 1)
+            return usage(QStringLiteral("--quality path renders one model, rig and view per call (%1 asked)")
+                             .arg(items->size()));
+        return runRenderTraced(request, items->front(), traced);
     }
     // Issue 41: said, and refused beyond the machine's memory, before a byte of the image is allocated.
     if (!checkRenderMemory(estimateRender(request.options.size, ss, samples), parser.isSet(noMemoryCheck),

@@ -93,7 +93,7 @@ std::optional<int> viewCameraIndex(const QString& view) {
 }
 
 std::optional<SceneOptions> SceneOptionSet::read(const QCommandLineParser& p, QString* usageError,
-                                                 bool qualityList, bool viewList) const {
+                                                 bool qualityList, bool viewList, bool pathQuality) const {
     SceneOptions o;
     auto bad = [&](const QString& message) {
         *usageError = message;
@@ -137,7 +137,9 @@ std::optional<SceneOptions> SceneOptionSet::read(const QCommandLineParser& p, QS
         if (!s) return bad(QStringLiteral("--size: %1, got '%2'").arg(why, p.value(size)));
         o.size = *s;
     }
-    if (p.isSet(quality)) {
+    if (p.isSet(quality) && pathQuality && p.value(quality) == QLatin1String("path")) {
+        o.pathTraced = true;
+    } else if (p.isSet(quality)) {
         const QStringList names =
             qualityList ? p.value(quality).split(QLatin1Char(',')) : QStringList{p.value(quality)};
         o.qualities.clear();
@@ -145,7 +147,10 @@ std::optional<SceneOptions> SceneOptionSet::read(const QCommandLineParser& p, QS
             const auto q = fromString<Quality>(name.trimmed());
             if (!q)
                 return bad(QStringLiteral("--quality must be %1%2, got '%3'")
-                               .arg(allowedNames<Quality>(),
+                               .arg(pathQuality ? QString(allowedNames<Quality>())
+                                                          .replace(QStringLiteral(" or "), QStringLiteral(", ")) +
+                                                      QStringLiteral(" or \"path\"")
+                                                : allowedNames<Quality>(),
                                     qualityList ? QStringLiteral(" (or a comma list)") : QString(),
                                     p.value(quality)));
             if (std::find(o.qualities.begin(), o.qualities.end(), *q) == o.qualities.end())

@@ -41,6 +41,7 @@ struct SceneOptions {
     QSize size{1280, 720};
     Quality quality = Quality::Exact;               // the first of `qualities`
     std::vector<Quality> qualities{Quality::Exact}; // --quality A,B,... where a list is allowed (bench)
+    bool pathTraced = false; // --quality path (render only: src/trace, not a raster tier)
     double exposureEV = 0.0;
     ToneMap toneMap = ToneMap::Clamp;
     std::optional<ShadingModel> shading; // --shading; unset: the rig's own (or the default rule's)
@@ -55,9 +56,11 @@ struct SceneOptionSet {
     SceneOptionSet();
     void addTo(QCommandLineParser& parser) const;
     // The parsed values, or a usage error message (exit 2). qualityList: --quality takes a comma list;
-    // viewList: --view takes comma lists and may repeat (SceneOptions::views).
+    // viewList: --view takes comma lists and may repeat (SceneOptions::views); pathQuality: --quality path
+    // is allowed (SceneOptions::pathTraced).
     std::optional<SceneOptions> read(const QCommandLineParser& parser, QString* usageError,
-                                     bool qualityList = false, bool viewList = false) const;
+                                     bool qualityList = false, bool viewList = false,
+                                     bool pathQuality = false) const;
 };
 
 struct LoadedScene {

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <embree3/rtcore.h>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 #include <limits>
@@ -14,13 +13,6 @@
 namespace lr {
 
 namespace {
-
-RTCDevice device(void* p) {
-    return static_cast<RTCDevice>(p);
-}
-RTCScene scene(void* p) {
-    return static_cast<RTCScene>(p);
-}
 
 // PCG hash (Jarzynski & Olano 2020): a well-mixed 32-bit value from a 32-bit state.
 std::uint32_t pcgHash(std::uint32_t v) {
@@ -102,111 +94,43 @@ ShadowEmitter shadowEmitter(const Rig& rig, const SceneFrame& frame, const Light
 }
 
 ShadowTracer::ShadowTracer(const Model& model, bool ground) {
-    m_origin = model.bounds.center();
     m_epsilon = kShadowRayEpsilon * model.bounds.radius();
-    RTCDevice dev = rtcNewDevice(nullptr);
-    if (!dev) {
-        m_error = QStringLiteral("Embree could not start (rtcNewDevice failed)");
-        return;
-    }
-    m_device = dev;
-    std::vector<glm::vec3> vertices;
-    std::vector<std::uint32_t> indices;
-    for (const Mesh& mesh : model.meshes) {
-        const auto base = std::uint32_t(vertices.size());
-        for (const Vertex& v : mesh.vertices)
-            vertices.push_back(glm::vec3(model.origin - m_origin + glm::dvec3(v.position)));
-        for (std::uint32_t i : mesh.indices)
-            indices.push_back(base + i);
-    }
+    std::vector<const Model*> models{&model};
     if (ground) {
         const GroundPlane g = groundPlane(model.bounds);
-        const auto base = std::uint32_t(vertices.size());
+        m_groundQuad.origin = (g.corners[0] + g.corners[2]) * 0.5;
+        Mesh quad;
         for (const glm::dvec3& c : g.corners)
-            vertices.push_back(glm::vec3(c - m_origin));
-        indices.insert(indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+            quad.vertices.push_back({glm::vec3(c - m_groundQuad.origin)});
+        quad.indices = {0, 1, 2, 0, 2, 3};
+        m_groundQuad.meshes.push_back(std::move(quad));
+        models.push_back(&m_groundQuad);
     }
-    m_triangles = std::int64_t(indices.size() / 3);
-    RTCScene sc = rtcNewScene(dev);
-    rtcSetSceneFlags(sc, RTC_SCENE_FLAG_ROBUST);
-    rtcSetSceneBuildQuality(sc, RTC_BUILD_QUALITY_HIGH);
-    if (m_triangles > 0) {
-        RTCGeometry geom = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_TRIANGLE);
-        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
-            geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), vertices.size()));
-        auto* ix = static_cast<std::uint32_t*>(
-            rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                    3 * sizeof(std::uint32_t), size_t(m_triangles)));
-        if (v && ix) {
-            for (size_t i = 0; i < vertices.size(); ++i)
-                std::copy_n(&vertices[i].x, 3, v + 3 * i);
-            std::copy(indices.begin(), indices.end(), ix);
-            rtcCommitGeometry(geom);
-            rtcAttachGeometry(sc, geom);
-        }
-        rtcReleaseGeometry(geom);
-    }
-    rtcCommitScene(sc);
-    if (const RTCError e = rtcGetDeviceError(dev); e != RTC_ERROR_NONE) {
-        m_error = QStringLiteral("Embree could not build the shadow-ray scene (error %1, %2 triangles)")
-                      .arg(int(e))
-                      .arg(m_triangles);
-        rtcReleaseScene(sc);
-        return;
-    }
-    m_scene = sc;
+    m_scene = std::make_unique<EmbreeScene>(models, model.bounds.center());
 }
 
-ShadowTracer::~ShadowTracer() {
-    if (m_scene) rtcReleaseScene(scene(m_scene));
-    if (m_device) rtcReleaseDevice(device(m_device));
-}
+ShadowTracer::~ShadowTracer() = default;
 
 bool ShadowTracer::occluded(const glm::dvec3& origin, const glm::dvec3& dir, double distance) const {
-    if (!m_scene) return false;
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    RTCRay ray{};
-    const glm::vec3 o(origin - m_origin);
-    ray.org_x = o.x, ray.org_y = o.y, ray.org_z = o.z;
-    ray.dir_x = float(dir.x), ray.dir_y = float(dir.y), ray.dir_z = float(dir.z);
-    ray.tnear = 0.0f;
-    ray.tfar = distance < double(std::numeric_limits<float>::max()) ? float(distance)
-                                                                    : std::numeric_limits<float>::infinity();
-    ray.mask = ~0u;
-    rtcOccluded1(scene(m_scene), &context, &ray);
-    return ray.tfar < 0.0f; // Embree sets tfar to -inf on a hit
+    return ok() && m_scene->occluded(origin, dir, distance);
 }
 
 glm::dvec3 ShadowTracer::geometricNormal(const glm::dvec3& eye, const glm::dvec3& point,
                                          const glm::dvec3& fallback) const {
     const glm::dvec3 toPoint = point - eye;
     const double len = glm::length(toPoint);
-    if (!m_scene || !(len > 0.0) || !std::isfinite(len)) return fallback;
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    RTCRayHit rh{};
-    const glm::vec3 o(eye - m_origin);
+    if (!ok() || !(len > 0.0) || !std::isfinite(len)) return fallback;
     const glm::dvec3 d = toPoint / len;
-    rh.ray.org_x = o.x, rh.ray.org_y = o.y, rh.ray.org_z = o.z;
-    rh.ray.dir_x = float(d.x), rh.ray.dir_y = float(d.y), rh.ray.dir_z = float(d.z);
     const double slack = std::max(1e-3 * len, 10.0 * m_epsilon); // the G-buffer's float position
-    rh.ray.tnear = float(std::max(0.0, len - slack));
-    rh.ray.tfar = float(len + slack);
-    rh.ray.mask = ~0u;
-    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(scene(m_scene), &context, &rh);
-    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return fallback;
-    glm::dvec3 n(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
-    const double nl = glm::length(n);
-    if (!(nl > 0.0) || !std::isfinite(nl)) return fallback;
-    n /= nl;
+    const EmbreeHit hit = m_scene->intersect(eye, d, std::max(0.0, len - slack), len + slack);
+    if (!hit.hit) return fallback;
+    const glm::dvec3 n = hit.normal;
     return glm::dot(n, eye - point) >= 0.0 ? n : -n;
 }
 
 double ShadowTracer::visibility(const glm::dvec3& point, const glm::dvec3& normal, const ShadowEmitter& e,
                                 std::uint32_t seed, int samples) const {
-    if (!e.casts || !m_scene) return 1.0;
+    if (!e.casts || !ok()) return 1.0;
     const glm::dvec3 origin = point + normal * m_epsilon;
     glm::dvec3 w = e.toLight;
     if (!e.directional) {

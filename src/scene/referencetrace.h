@@ -1,7 +1,8 @@
 // The traced visibility of the double-precision reference (issue 14; docs/quality.md, "Shadows"): shadow
 // rays against the model's triangles (and the ground plane's two, groundPlane() in src/model/ground.h),
-// through Embree 3 (Debian's libembree-dev). The scene is built once per reference job and is read-only
-// afterwards, so the job's row tasks trace in parallel.
+// through Embree 3 (Debian's libembree-dev; the scene is embreescene.h's, which the path tracer shares).
+// The scene is built once per reference job and is read-only afterwards, so the job's row tasks trace in
+// parallel.
 //
 // Method, per surface point and casting light:
 // - the ray origin is the point lifted along the geometric normal of the triangle the camera sees there
@@ -20,6 +21,7 @@
 #pragma once
 
 #include "core/prepare.h"
+#include "embreescene.h"
 #include "model/model.h"
 
 #include <QString>
@@ -61,10 +63,10 @@ class ShadowTracer {
     ShadowTracer(const ShadowTracer&) = delete;
     ShadowTracer& operator=(const ShadowTracer&) = delete;
 
-    bool ok() const { return m_scene != nullptr; }
-    QString error() const { return m_error; }
+    bool ok() const { return m_scene && m_scene->ok(); }
+    QString error() const { return m_scene ? m_scene->error() : QString(); }
     double epsilon() const { return m_epsilon; } // world units
-    std::int64_t triangles() const { return m_triangles; }
+    std::int64_t triangles() const { return m_scene ? m_scene->triangles() : 0; }
 
     // The unit geometric normal of the triangle the eye sees at `point` (both world), turned towards the
     // eye; `fallback` when the eye's ray hits nothing near the point.
@@ -78,12 +80,9 @@ class ShadowTracer {
                       std::uint32_t seed, int samples = kShadowSamples) const;
 
   private:
-    void* m_device = nullptr; // RTCDevice, RTCScene: opaque here, so Embree stays PRIVATE to this target
-    void* m_scene = nullptr;
-    glm::dvec3 m_origin{0.0}; // world position of the Embree scene's origin (the model's centre)
+    Model m_groundQuad; // the ground plane's two triangles, when asked for
+    std::unique_ptr<EmbreeScene> m_scene;
     double m_epsilon = 0.0;
-    std::int64_t m_triangles = 0;
-    QString m_error;
 };
 
 } // namespace lr

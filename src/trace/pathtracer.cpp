@@ -1,0 +1,104 @@
+#include "pathtracer.h"
+
+#include "core/colour.h"
+#include "core/lighting.h"
+
+#include <QThread>
+#include <QtConcurrent/QtConcurrentMap>
+#include <algorithm>
+#include <numeric>
+
+namespace lr::trace {
+
+PathTracer::PathTracer(std::shared_ptr<const TraceScene> scene, const ViewCamera& camera, QSize size,
+                       TraceSettings settings, int threads)
+    : m_scene(std::move(scene)), m_camera(camera, size), m_size(size), m_settings(settings) {
+    m_pool.setMaxThreadCount(threads > 0 ? threads : std::max(1, QThread::idealThreadCount()));
+    const size_t pixels = size_t(std::max(0, size.width())) * size_t(std::max(0, size.height()));
+    m_sum.assign(pixels, glm::dvec4(0.0));
+    m_count.assign(pixels, 0);
+    m_tilesX = (std::max(0, size.width()) + kTileSize - 1) / kTileSize;
+    m_tilesY = (std::max(0, size.height()) + kTileSize - 1) / kTileSize;
+}
+
+PathTracer::~PathTracer() {
+    cancel();
+    m_pool.waitForDone();
+}
+
+void PathTracer::restart() {
+    std::fill(m_sum.begin(), m_sum.end(), glm::dvec4(0.0));
+    std::fill(m_count.begin(), m_count.end(), 0);
+    m_nonFinite.store(0);
+    m_cancel.store(false);
+}
+
+int PathTracer::samplesDone() const {
+    return m_count.empty() ? 0 : *std::min_element(m_count.begin(), m_count.end());
+}
+
+void PathTracer::renderTile(int tile, int samples) {
+    const int x0 = (tile % m_tilesX) * kTileSize, y0 = (tile / m_tilesX) * kTileSize;
+    const int x1 = std::min(x0 + kTileSize, m_size.width()), y1 = std::min(y0 + kTileSize, m_size.height());
+    std::int64_t nonFinite = 0;
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x) {
+            const size_t p = size_t(y) * size_t(m_size.width()) + size_t(x);
+            glm::dvec4 sum = m_sum[p];
+            for (int k = 0; k < samples; ++k) {
+                Sampler sampler(std::uint32_t(p), std::uint32_t(m_count[p] + k), m_settings.seed);
+                const double jx = m_settings.jitter ? sampler.next() : 0.5;
+                const double jy = m_settings.jitter ? sampler.next() : 0.5;
+                const glm::dvec3 dir = m_camera.direction(x + jx, y + jy);
+                const PathSample s = tracePath(*m_scene, m_camera.origin(), dir, sampler, m_settings);
+                nonFinite += s.finite ? 0 : 1;
+                sum += glm::dvec4(s.radiance, s.alpha);
+            }
+            m_sum[p] = sum;
+            m_count[p] += samples;
+        }
+    m_nonFinite += nonFinite;
+}
+
+bool PathTracer::render(int samples) {
+    if (samples <= 0 || m_sum.empty()) return !m_cancel.load();
+    std::vector<int> tiles(size_t(m_tilesX) * size_t(m_tilesY));
+    std::iota(tiles.begin(), tiles.end(), 0);
+    QtConcurrent::blockingMap(&m_pool, tiles, [this, samples](int tile) {
+        if (!m_cancel.load(std::memory_order_relaxed)) renderTile(tile, samples);
+    });
+    return !m_cancel.load();
+}
+
+FloatImage PathTracer::image() const {
+    FloatImage out;
+    out.width = m_size.width();
+    out.height = m_size.height();
+    out.pixels.resize(m_sum.size());
+    for (size_t i = 0; i < m_sum.size(); ++i)
+        out.pixels[i] = m_count[i] > 0 ? glm::vec4(m_sum[i] / double(m_count[i])) : glm::vec4(0.0f);
+    return out;
+}
+
+QImage PathTracer::display(double exposureEV, ToneMap toneMap) const {
+    QImage out(m_size, QImage::Format_RGBA8888);
+    if (out.isNull()) return out;
+    const FloatImage img = image();
+    const double scale = colour::exposureScale(exposureEV);
+    for (int y = 0; y < m_size.height(); ++y) {
+        uchar* row = out.scanLine(y);
+        for (int x = 0; x < m_size.width(); ++x) {
+            const glm::vec4& p = img.at(x, y);
+            const double alpha = m_settings.transparent ? lighting::saturate(double(p.a)) : 1.0;
+            glm::dvec3 rgb(p);
+            if (m_settings.transparent && alpha > 0.0) rgb /= alpha; // the covered share's own colour
+            const glm::dvec3 c = colour::displayColour(rgb, scale, toneMap);
+            for (int k = 0; k < 3; ++k)
+                row[4 * x + k] = uchar(std::lround(lighting::saturate(c[k]) * 255.0));
+            row[4 * x + 3] = uchar(std::lround(alpha * 255.0));
+        }
+    }
+    return out;
+}
+
+} // namespace lr::trace

@@ -1,0 +1,70 @@
+// The progressive path tracer of one view: samples accumulate per pixel in a float buffer, pass after
+// pass, over square tiles on worker threads (a QThreadPool of its own). Sample k of pixel p draws its
+// random numbers from (p, k, seed) alone (sampler.h), so the image is the same whatever the thread count
+// or the tiling, and a pass cancelled half-way keeps its finished tiles (each pixel counts its own
+// samples; the next pass goes on from there). What the editor's progressive view and the benchmark need:
+// render(n) for n more samples per pixel, cancel() from any thread (a running render() returns within
+// one tile's time), restart(), samplesDone(), image().
+#pragma once
+
+#include "camerarays.h"
+#include "integrator.h"
+#include "tracescene.h"
+
+#include "core/types.h"
+#include "scene/floatimage.h"
+
+#include <QImage>
+#include <QSize>
+#include <QThreadPool>
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace lr::trace {
+
+inline constexpr int kTileSize = 16;
+
+class PathTracer {
+  public:
+    // threads: worker threads (0: QThread::idealThreadCount()).
+    PathTracer(std::shared_ptr<const TraceScene> scene, const ViewCamera& camera, QSize size,
+               TraceSettings settings = {}, int threads = 0);
+    ~PathTracer();
+
+    // Adds `samples` samples to every pixel (blocking). False when cancel() stopped it: finished tiles
+    // keep their samples.
+    bool render(int samples);
+    void cancel() { m_cancel.store(true); }
+    // Forgets every sample (and a pending cancel).
+    void restart();
+    // The fewest samples any pixel has.
+    int samplesDone() const;
+    std::int64_t nonFiniteSamples() const { return m_nonFinite.load(); }
+    QSize size() const { return m_size; }
+    int threads() const { return m_pool.maxThreadCount(); }
+
+    // The mean of each pixel's samples: linear radiance (rgb) and coverage (alpha; with a transparent
+    // background the radiance is of the covered share, unpremultiplied by display()).
+    FloatImage image() const;
+    // For display: × 2^exposureEV, tone map, sRGB, 8 bits (core/colour.h displayColour, as the raster's
+    // tone-map pass); RGBA8888, straight alpha.
+    QImage display(double exposureEV, ToneMap toneMap) const;
+
+  private:
+    void renderTile(int tile, int samples);
+
+    std::shared_ptr<const TraceScene> m_scene;
+    CameraRays m_camera;
+    QSize m_size;
+    TraceSettings m_settings;
+    QThreadPool m_pool;
+    std::vector<glm::dvec4> m_sum; // per pixel: radiance, alpha
+    std::vector<int> m_count;      // per pixel: samples taken
+    std::atomic<bool> m_cancel{false};
+    std::atomic<std::int64_t> m_nonFinite{0};
+    int m_tilesX = 0, m_tilesY = 0;
+};
+
+} // namespace lr::trace
