@@ -39,8 +39,8 @@ const char* kUsage =
     "[--samples N] [--bounces B] [--threads T] [--firefly-clamp X]";
 
 // A whole number in [lo, hi] from an option's value, or a usage message naming the option.
-std::optional<int> wholeNumber(const QCommandLineParser& parser, const QCommandLineOption& option, int lo, int hi,
-                               QString* message) {
+std::optional<int> wholeNumber(const QCommandLineParser& parser, const QCommandLineOption& option, int lo,
+                               int hi, QString* message) {
     bool ok = false;
     const QString text = parser.value(option);
     const int v = text.toInt(&ok);
@@ -104,20 +104,22 @@ int runRender(const QStringList& args) {
                                                     "status, seconds, error) to FILE, or to stdout for -."),
                                      QStringLiteral("FILE|-"));
     const QCommandLineOption samplesOption(
-        QStringLiteral("samples"), QStringLiteral("--quality path: samples per pixel, 1..1000000 (default 64)."),
-        QStringLiteral("N"));
+        QStringLiteral("samples"),
+        QStringLiteral("--quality path: samples per pixel, 1..1000000 (default 64)."), QStringLiteral("N"));
     const QCommandLineOption bouncesOption(
         QStringLiteral("bounces"),
         QStringLiteral("--quality path: surface interactions per path, 0..1024 (default 8; 1 is direct light "
                        "only)."),
         QStringLiteral("B"));
     const QCommandLineOption threadsOption(
-        QStringLiteral("threads"), QStringLiteral("--quality path: worker threads, 1..1024 (default: every core)."),
+        QStringLiteral("threads"),
+        QStringLiteral("--quality path: worker threads, 1..1024 (default: every core)."),
         QStringLiteral("T"));
     const QCommandLineOption clampOption(
         QStringLiteral("firefly-clamp"),
-        QStringLiteral("--quality path: clamp each sample's largest channel to X (linear radiance > 0); biased, "
-                       "off by default."),
+        QStringLiteral(
+            "--quality path: clamp each sample's largest channel to X (linear radiance > 0); biased, "
+            "off by default."),
         QStringLiteral("X"));
     SceneOptionSet scene;
     scene.rig.setDescription(QStringLiteral("Rig file (.json); repeat it for several rigs. Default: the "
@@ -166,7 +168,8 @@ int runRender(const QStringList& args) {
             if (n) *v = *n;
             return n.has_value();
         };
-        if (!number(samplesOption, 1, 1000000, &traced.samples) || !number(bouncesOption, 0, 1024, &traced.bounces) ||
+        if (!number(samplesOption, 1, 1000000, &traced.samples) ||
+            !number(bouncesOption, 0, 1024, &traced.bounces) ||
             !number(threadsOption, 1, 1024, &traced.threads))
             return usage(message);
         if (parser.isSet(clampOption)) {

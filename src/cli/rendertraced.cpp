@@ -70,7 +70,8 @@ int runRenderTraced(const RenderRequest& request, const RenderItem& item, const 
                .arg(traced.bounces)
                .arg(tracer.threads())
                .arg(traceSeconds, 0, 'f', 2)
-               .arg(double(image.width()) * image.height() * tracer.samplesDone() / std::max(1e-9, traceSeconds),
+               .arg(double(image.width()) * image.height() * tracer.samplesDone() /
+                        std::max(1e-9, traceSeconds),
                     0, 'f', 0)
                .arg(scene->triangles())
                .arg(loaded.rigSource, loaded.cameraSource)

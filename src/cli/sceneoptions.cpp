@@ -147,10 +147,11 @@ std::optional<SceneOptions> SceneOptionSet::read(const QCommandLineParser& p, QS
             const auto q = fromString<Quality>(name.trimmed());
             if (!q)
                 return bad(QStringLiteral("--quality must be %1%2, got '%3'")
-                               .arg(pathQuality ? QString(allowedNames<Quality>())
-                                                          .replace(QStringLiteral(" or "), QStringLiteral(", ")) +
-                                                      QStringLiteral(" or \"path\"")
-                                                : allowedNames<Quality>(),
+                               .arg(pathQuality
+                                        ? QString(allowedNames<Quality>())
+                                                  .replace(QStringLiteral(" or "), QStringLiteral(", ")) +
+                                              QStringLiteral(" or \"path\"")
+                                        : allowedNames<Quality>(),
                                     qualityList ? QStringLiteral(" (or a comma list)") : QString(),
                                     p.value(quality)));
             if (std::find(o.qualities.begin(), o.qualities.end(), *q) == o.qualities.end())

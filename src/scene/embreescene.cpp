@@ -16,12 +16,13 @@ RTCScene scene(void* p) {
 
 float farOf(double distance) {
     return distance < double(std::numeric_limits<float>::max()) ? float(distance)
-                                                                 : std::numeric_limits<float>::infinity();
+                                                                : std::numeric_limits<float>::infinity();
 }
 
 } // namespace
 
-EmbreeScene::EmbreeScene(const std::vector<const Model*>& models, const glm::dvec3& origin) : m_origin(origin) {
+EmbreeScene::EmbreeScene(const std::vector<const Model*>& models, const glm::dvec3& origin)
+    : m_origin(origin) {
     RTCDevice dev = rtcNewDevice(nullptr);
     if (!dev) {
         m_error = QStringLiteral("Embree could not start (rtcNewDevice failed)");
@@ -41,8 +42,8 @@ EmbreeScene::EmbreeScene(const std::vector<const Model*>& models, const glm::dve
             const size_t count = mesh.indices.size() / 3;
             if (count == 0 || mesh.vertices.empty()) continue;
             RTCGeometry geom = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_TRIANGLE);
-            auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                                  3 * sizeof(float), mesh.vertices.size()));
+            auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
+                geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.vertices.size()));
             auto* ix = static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(
                 geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(std::uint32_t), count));
             if (v && ix) {
@@ -74,7 +75,8 @@ EmbreeScene::~EmbreeScene() {
     if (m_device) rtcReleaseDevice(static_cast<RTCDevice>(m_device));
 }
 
-bool EmbreeScene::occluded(const glm::dvec3& origin, const glm::dvec3& dir, double distance, double tnear) const {
+bool EmbreeScene::occluded(const glm::dvec3& origin, const glm::dvec3& dir, double distance,
+                           double tnear) const {
     if (!m_scene) return false;
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);

@@ -64,7 +64,8 @@ BsdfSample Bsdf::sample(double u0, double u1, double u2) const {
         // D(h) (n · h): cos²θh = (1 − u) / (1 + (α² − 1) u).
         const double a2 = m_alpha * m_alpha;
         const double cos2 = (1.0 - u1) / (1.0 + (a2 - 1.0) * u1);
-        const double cosT = std::sqrt(std::clamp(cos2, 0.0, 1.0)), sinT = std::sqrt(std::max(0.0, 1.0 - cos2));
+        const double cosT = std::sqrt(std::clamp(cos2, 0.0, 1.0)),
+                     sinT = std::sqrt(std::max(0.0, 1.0 - cos2));
         const double phi = 2.0 * std::numbers::pi * u2;
         const glm::dvec3 h = sinT * std::cos(phi) * m_t + sinT * std::sin(phi) * m_b + cosT * m_n;
         l = 2.0 * glm::dot(m_v, h) * h - m_v;

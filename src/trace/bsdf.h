@@ -25,7 +25,8 @@ struct BsdfSample {
 class Bsdf {
   public:
     // n: the shading normal (unit, on the side of v); v: unit, towards the viewer.
-    Bsdf(const glm::dvec3& n, const glm::dvec3& v, const glm::dvec3& baseColor, double metallic, double roughness);
+    Bsdf(const glm::dvec3& n, const glm::dvec3& v, const glm::dvec3& baseColor, double metallic,
+         double roughness);
 
     // f · (n · l) for a unit direction l, as core's pbrLobes (Lambert's cosine).
     glm::dvec3 eval(const glm::dvec3& l) const;

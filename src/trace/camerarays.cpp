@@ -10,7 +10,7 @@ CameraRays::CameraRays(const ViewCamera& camera, QSize size)
     : m_eye(camera.eye), m_width(std::max(1, size.width())), m_height(std::max(1, size.height())) {
     ViewCamera c = camera;
     if (!(c.znear > 0.0)) c.znear = 1e-3 * std::max(1e-9, c.distance()); // only the directions matter
-    c.zfar = 0.0;                                                         // infinite
+    c.zfar = 0.0;                                                        // infinite
     m_inverse = glm::inverse(c.projection(m_width / m_height) * c.view());
 }
 

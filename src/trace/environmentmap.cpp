@@ -36,7 +36,8 @@ EnvironmentMap::EnvironmentMap(const EnvironmentImage& image, double intensityEV
             const size_t i = size_t(y) * size_t(m_width) + size_t(x);
             glm::vec3 c = image.texels[i];
             for (int k = 0; k < 3; ++k)
-                c[k] = std::isfinite(c[k]) && c[k] > 0.0f ? float(std::min(double(c[k]) * scale, 3.0e37)) : 0.0f;
+                c[k] =
+                    std::isfinite(c[k]) && c[k] > 0.0f ? float(std::min(double(c[k]) * scale, 3.0e37)) : 0.0f;
             m_radiance[i] = c;
             const double w = std::max(0.0, environment::luminance(c)) * omega;
             m_texelWeight[i] = std::isfinite(w) ? w : 0.0;

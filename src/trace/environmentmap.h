@@ -33,11 +33,11 @@ class EnvironmentMap {
 
     int m_width = 0, m_height = 0;
     double m_rotation = 0.0;
-    std::vector<glm::vec3> m_radiance;    // scaled, sanitised
-    std::vector<double> m_rowCdf;         // m_height + 1 entries, 0 ... 1
-    std::vector<double> m_columnCdf;      // per row, m_width + 1 entries each
-    std::vector<double> m_texelWeight;    // luminance × solid angle, per texel
-    double m_total = 0.0;                 // sum of m_texelWeight
+    std::vector<glm::vec3> m_radiance; // scaled, sanitised
+    std::vector<double> m_rowCdf;      // m_height + 1 entries, 0 ... 1
+    std::vector<double> m_columnCdf;   // per row, m_width + 1 entries each
+    std::vector<double> m_texelWeight; // luminance × solid angle, per texel
+    double m_total = 0.0;              // sum of m_texelWeight
 };
 
 } // namespace lr::trace

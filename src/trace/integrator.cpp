@@ -33,7 +33,8 @@ void basisAround(const glm::dvec3& w, glm::dvec3* t, glm::dvec3* b) {
 }
 
 double cosineTerm(DiffuseModel model, double nDotL) {
-    return model == DiffuseModel::Lambert ? lighting::diffuseLambert(nDotL) : lighting::diffuseHalfLambert(nDotL);
+    return model == DiffuseModel::Lambert ? lighting::diffuseLambert(nDotL)
+                                          : lighting::diffuseHalfLambert(nDotL);
 }
 
 // Where the shadow ray of a point, spot or directional light goes: a uniform point of the disk of the
@@ -48,7 +49,8 @@ glm::dvec3 shadowTarget(const TraceLight& light, const glm::dvec3& p, const glm:
         if (!(e.halfAngle > 0.0)) return toLight;
         basisAround(toLight, &t, &b);
         const double cosT = 1.0 - s.next() * (1.0 - std::cos(e.halfAngle));
-        const double sinT = std::sqrt(std::max(0.0, 1.0 - cosT * cosT)), phi = 2.0 * std::numbers::pi * s.next();
+        const double sinT = std::sqrt(std::max(0.0, 1.0 - cosT * cosT)),
+                     phi = 2.0 * std::numbers::pi * s.next();
         return cosT * toLight + sinT * (std::cos(phi) * t + std::sin(phi) * b);
     }
     glm::dvec3 target = light.shade.position;
@@ -111,7 +113,8 @@ glm::dvec3 directLight(const Vertex& v) {
         double distance = kInfinity;
         const glm::dvec3 w = shadowTarget(light, s.position, L, v.sampler, &distance);
         const glm::dvec3 origin = scene.offset(s, w);
-        if (scene.unoccluded(origin, w, std::isfinite(distance) ? distance * (1.0 - 1e-9) : distance, v.sampler))
+        if (scene.unoccluded(origin, w, std::isfinite(distance) ? distance * (1.0 - 1e-9) : distance,
+                             v.sampler))
             sum += c;
     }
     if (scene.hasEnvironment()) {
@@ -186,8 +189,10 @@ double catcherLight(const TraceScene& scene, const glm::dvec3& p, Sampler& sampl
     }
     glm::dvec3 w;
     double pdf;
-    if (scene.hasEnvironment() && scene.environment().sample(sampler.next(), sampler.next(), sampler.next(), &w, &pdf)) {
-        const double e = luminance(scene.environment().radiance(w)) * lighting::saturate(glm::dot(up, w)) / pdf;
+    if (scene.hasEnvironment() &&
+        scene.environment().sample(sampler.next(), sampler.next(), sampler.next(), &w, &pdf)) {
+        const double e =
+            luminance(scene.environment().radiance(w)) * lighting::saturate(glm::dot(up, w)) / pdf;
         if (e > 0.0 && std::isfinite(e)) {
             all += e;
             if (scene.unoccluded(origin, w, kInfinity, sampler)) lit += e;
@@ -210,7 +215,8 @@ PathSample tracePath(const TraceScene& scene, const glm::dvec3& cameraOrigin, co
         if (depth > 0) {
             const TraceLight* nearest = nullptr;
             for (const TraceLight& light : scene.lights())
-                if (double t; traitsOf(light.shade.type).isArea && hitAreaLight(light, origin, dir, &t) && t < tMax)
+                if (double t;
+                    traitsOf(light.shade.type).isArea && hitAreaLight(light, origin, dir, &t) && t < tMax)
                     tMax = t, nearest = &light;
             if (nearest) {
                 const double cosL = std::abs(glm::dot(dir, nearest->shade.direction));
@@ -226,8 +232,8 @@ PathSample tracePath(const TraceScene& scene, const glm::dvec3& cameraOrigin, co
                 if (settings.transparent) {
                     out.alpha = 1.0 - share;
                 } else {
-                    const glm::dvec3 behind = scene.environmentVisible() ? scene.environment().radiance(dir)
-                                                                         : settings.background;
+                    const glm::dvec3 behind =
+                        scene.environmentVisible() ? scene.environment().radiance(dir) : settings.background;
                     out.radiance = behind * share;
                 }
                 break;
@@ -238,7 +244,8 @@ PathSample tracePath(const TraceScene& scene, const glm::dvec3& cameraOrigin, co
                 if (settings.transparent)
                     out.alpha = 0.0;
                 else
-                    out.radiance = scene.environmentVisible() ? scene.environment().radiance(dir) : settings.background;
+                    out.radiance =
+                        scene.environmentVisible() ? scene.environment().radiance(dir) : settings.background;
             } else if (scene.hasEnvironment()) {
                 out.radiance += beta * scene.environment().radiance(dir) *
                                 powerHeuristic(prevPdf, scene.environment().pdf(dir));
@@ -250,7 +257,8 @@ PathSample tracePath(const TraceScene& scene, const glm::dvec3& cameraOrigin, co
             double w = 1.0;
             if (depth > 0) {
                 const double cosL = std::abs(glm::dot(dir, hit.normal));
-                const double pdfLight = scene.emissive().areaDensity(hit.part, hit.triangle) * hit.t * hit.t / cosL;
+                const double pdfLight =
+                    scene.emissive().areaDensity(hit.part, hit.triangle) * hit.t * hit.t / cosL;
                 w = powerHeuristic(prevPdf, pdfLight);
             }
             out.radiance += beta * s.emissive * w;

@@ -21,9 +21,9 @@ struct TraceSettings {
     // The largest channel of one sample's radiance is clamped here when > 0: removes fireflies, biased
     // (darker highlights). 0: off (the default).
     double fireflyClamp = 0.0;
-    bool transparent = false;               // escaped camera rays (and the catcher's shadow) go to alpha
+    bool transparent = false;                   // escaped camera rays (and the catcher's shadow) go to alpha
     glm::dvec3 background{0.019, 0.019, 0.023}; // linear; the raster's default rgb(38, 38, 42)
-    bool jitter = true;                     // a uniform point of the pixel per sample, else its centre
+    bool jitter = true;                         // a uniform point of the pixel per sample, else its centre
     std::uint32_t seed = 0;
 };
 
@@ -33,7 +33,7 @@ struct PathSample {
     bool finite = true;
 };
 
-PathSample tracePath(const TraceScene& scene, const glm::dvec3& origin, const glm::dvec3& dir, Sampler& sampler,
-                     const TraceSettings& settings);
+PathSample tracePath(const TraceScene& scene, const glm::dvec3& origin, const glm::dvec3& dir,
+                     Sampler& sampler, const TraceSettings& settings);
 
 } // namespace lr::trace

@@ -20,9 +20,8 @@ bool hitAreaLight(const TraceLight& light, const glm::dvec3& origin, const glm::
     if (!(d > 0.0) || !std::isfinite(d)) return false;
     const glm::dvec3 q = origin + d * dir - l.position;
     const double x = glm::dot(q, l.axisX), y = glm::dot(q, l.axisY);
-    const bool inside = l.type == LightType::Disk
-                            ? x * x + y * y <= l.halfWidth * l.halfWidth
-                            : std::abs(x) <= l.halfWidth && std::abs(y) <= l.halfHeight;
+    const bool inside = l.type == LightType::Disk ? x * x + y * y <= l.halfWidth * l.halfWidth
+                                                  : std::abs(x) <= l.halfWidth && std::abs(y) <= l.halfHeight;
     if (!inside) return false;
     *t = d;
     return true;

@@ -29,10 +29,11 @@ std::shared_ptr<const TraceScene> TraceScene::build(const SceneDescription& scen
     const Rig& rig = scene.rig();
     if (!scene.model()) return fail(QStringLiteral("the path tracer needs a model"));
     if (rig.shading.model != ShadingModel::Pbr)
-        return fail(QStringLiteral(
-            "the path-traced quality renders physically based rigs only, and the rig%1 uses classic shading "
-            "(its Phong, Blinn-Phong and half-Lambert models are not reflectance functions a path can follow); "
-            "render it with --shading pbr, or with a raster quality")
+        return fail(QStringLiteral("the path-traced quality renders physically based rigs only, and the "
+                                   "rig%1 uses classic shading "
+                                   "(its Phong, Blinn-Phong and half-Lambert models are not reflectance "
+                                   "functions a path can follow); "
+                                   "render it with --shading pbr, or with a raster quality")
                         .arg(rig.name.isEmpty() ? QString() : QStringLiteral(" \"%1\"").arg(rig.name)));
     std::shared_ptr<TraceScene> t(new TraceScene);
     t->m_model = scene.sharedModel();
@@ -94,8 +95,9 @@ std::shared_ptr<const TraceScene> TraceScene::build(const SceneDescription& scen
     for (const Light& light : rig.lights) {
         if (!light.enabled) continue;
         if (light.type == LightType::Rim) {
-            t->m_warnings << QStringLiteral("the rim light \"%1\" is left out of the path-traced image (a rim "
-                                            "light is not a physical emitter)")
+            t->m_warnings << QStringLiteral(
+                                 "the rim light \"%1\" is left out of the path-traced image (a rim "
+                                 "light is not a physical emitter)")
                                  .arg(light.name);
             continue;
         }
@@ -136,8 +138,8 @@ double TraceScene::alphaAt(const EmbreeHit& hit, Sampler& sampler, bool* pass) c
     if (part.mesh->hasVertexColors) {
         const Mesh& m = *part.mesh;
         const size_t i = size_t(hit.triangle) * 3;
-        a *= m.vertices[m.indices[i]].color.a * (1.0 - hit.u - hit.v) + m.vertices[m.indices[i + 1]].color.a * hit.u +
-             m.vertices[m.indices[i + 2]].color.a * hit.v;
+        a *= m.vertices[m.indices[i]].color.a * (1.0 - hit.u - hit.v) +
+             m.vertices[m.indices[i + 1]].color.a * hit.u + m.vertices[m.indices[i + 2]].color.a * hit.v;
     }
     if (mat.alphaMode == AlphaMode::Mask)
         *pass = !(a >= mat.alphaCutoff); // glTF: opaque where alpha >= cutoff (NaN passes)
@@ -166,7 +168,8 @@ bool TraceScene::unoccluded(const glm::dvec3& origin, const glm::dvec3& dir, dou
     return !intersect(origin, dir, distance, sampler).hit;
 }
 
-SurfacePoint TraceScene::surface(const EmbreeHit& hit, const glm::dvec3& origin, const glm::dvec3& dir) const {
+SurfacePoint TraceScene::surface(const EmbreeHit& hit, const glm::dvec3& origin,
+                                 const glm::dvec3& dir) const {
     SurfacePoint s;
     const PartInfo& part = m_parts[hit.part];
     const Mesh& m = *part.mesh;
@@ -180,14 +183,17 @@ SurfacePoint TraceScene::surface(const EmbreeHit& hit, const glm::dvec3& origin,
     if (!std::isfinite(s.position.x + s.position.y + s.position.z)) s.position = origin + hit.t * dir;
     const bool back = glm::dot(hit.normal, dir) > 0.0;
     s.geometric = back ? -hit.normal : hit.normal;
-    const glm::dvec3 interpolated = w0 * glm::dvec3(a.normal) + w1 * glm::dvec3(b.normal) + w2 * glm::dvec3(c.normal);
+    const glm::dvec3 interpolated =
+        w0 * glm::dvec3(a.normal) + w1 * glm::dvec3(b.normal) + w2 * glm::dvec3(c.normal);
     glm::dvec3 n = lighting::safeNormalize(interpolated, hit.normal);
     const glm::vec2 uv = a.uv * float(w0) + b.uv * float(w1) + c.uv * float(w2);
     const MaterialTextures* mt = part.material >= 0 ? &m_materials[size_t(part.material)] : nullptr;
     if (mt && !mt->normal.isNull()) {
         const Material& mat = *mt->material;
-        const glm::dvec4 tan = w0 * glm::dvec4(a.tangent) + w1 * glm::dvec4(b.tangent) + w2 * glm::dvec4(c.tangent);
-        const glm::dvec3 t = lighting::safeNormalize(glm::dvec3(tan) - n * glm::dot(n, glm::dvec3(tan)), glm::dvec3(0.0));
+        const glm::dvec4 tan =
+            w0 * glm::dvec4(a.tangent) + w1 * glm::dvec4(b.tangent) + w2 * glm::dvec4(c.tangent);
+        const glm::dvec3 t =
+            lighting::safeNormalize(glm::dvec3(tan) - n * glm::dot(n, glm::dvec3(tan)), glm::dvec3(0.0));
         const glm::dvec3 bt = glm::cross(n, t) * (tan.w < 0.0 ? -1.0 : 1.0);
         glm::dvec3 mp = glm::dvec3(mt->normal.sample(transformUv(mat.normalTransform, uv))) * 2.0 - 1.0;
         mp *= glm::dvec3(mat.normalScale, mat.normalScale, 1.0);
@@ -201,7 +207,8 @@ SurfacePoint TraceScene::surface(const EmbreeHit& hit, const glm::dvec3& origin,
     const Material& mat = *mt->material;
     glm::dvec4 base(mat.baseColor);
     if (!mt->base.isNull()) base *= glm::dvec4(mt->base.sample(transformUv(mat.baseColorTransform, uv)));
-    if (m.hasVertexColors) base *= w0 * glm::dvec4(a.color) + w1 * glm::dvec4(b.color) + w2 * glm::dvec4(c.color);
+    if (m.hasVertexColors)
+        base *= w0 * glm::dvec4(a.color) + w1 * glm::dvec4(b.color) + w2 * glm::dvec4(c.color);
     s.baseColor = glm::dvec3(base);
     s.metallic = mat.metallic;
     s.roughness = mat.roughness;
@@ -211,7 +218,8 @@ SurfacePoint TraceScene::surface(const EmbreeHit& hit, const glm::dvec3& origin,
         s.roughness *= mr.g;
     }
     if (!mt->occlusion.isNull())
-        s.occlusion = 1.0 + mat.occlusionStrength * (mt->occlusion.sample(transformUv(mat.occlusionTransform, uv)).r - 1.0);
+        s.occlusion = 1.0 + mat.occlusionStrength *
+                                (mt->occlusion.sample(transformUv(mat.occlusionTransform, uv)).r - 1.0);
     s.emissive = glm::dvec3(mat.emissive);
     if (!mt->emissive.isNull())
         s.emissive *= glm::dvec3(mt->emissive.sample(transformUv(mat.emissiveTransform, uv)));

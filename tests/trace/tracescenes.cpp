@@ -120,7 +120,8 @@ double meanChannel(const FloatImage& image, int c) {
 
 bool allFinite(const FloatImage& image) {
     for (const glm::vec4& p : image.pixels)
-        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z) || !std::isfinite(p.w)) return false;
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z) || !std::isfinite(p.w))
+            return false;
     return true;
 }
 

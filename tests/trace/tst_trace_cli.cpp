@@ -24,15 +24,16 @@ class TraceCli : public QObject {
         QTemporaryDir dir;
         const QString out = dir.filePath(QStringLiteral("traced.png"));
         const QProcessEnvironment env = environmentWithoutDisplay();
-        const CliRun run = runLightrig({QStringLiteral("render"), model(), QStringLiteral("--quality"),
-                                        QStringLiteral("path"), QStringLiteral("--samples"), QStringLiteral("4"),
-                                        QStringLiteral("--bounces"), QStringLiteral("3"), QStringLiteral("--size"),
-                                        QStringLiteral("48x32"), QStringLiteral("--ground"), QStringLiteral("visible"),
-                                        QStringLiteral("--environment"), QStringLiteral("studio"),
-                                        QStringLiteral("-o"), out},
-                                       &env);
+        const CliRun run = runLightrig(
+            {QStringLiteral("render"), model(), QStringLiteral("--quality"), QStringLiteral("path"),
+             QStringLiteral("--samples"), QStringLiteral("4"), QStringLiteral("--bounces"),
+             QStringLiteral("3"), QStringLiteral("--size"), QStringLiteral("48x32"),
+             QStringLiteral("--ground"), QStringLiteral("visible"), QStringLiteral("--environment"),
+             QStringLiteral("studio"), QStringLiteral("-o"), out},
+            &env);
         QVERIFY2(run.code == 0, qPrintable(run.show()));
-        QVERIFY2(run.out.contains(QLatin1String("path traced, 4 samples per pixel, 3 bounces")), qPrintable(run.show()));
+        QVERIFY2(run.out.contains(QLatin1String("path traced, 4 samples per pixel, 3 bounces")),
+                 qPrintable(run.show()));
         const QImage image(out);
         QCOMPARE(image.size(), QSize(48, 32));
         // Not one flat colour: the model and the ground were traced.
@@ -46,11 +47,11 @@ class TraceCli : public QObject {
     void transparentCatcher() {
         QTemporaryDir dir;
         const QString out = dir.filePath(QStringLiteral("catcher.png"));
-        const CliRun run = runLightrig({QStringLiteral("render"), model(), QStringLiteral("--quality"),
-                                        QStringLiteral("path"), QStringLiteral("--samples"), QStringLiteral("2"),
-                                        QStringLiteral("--size"), QStringLiteral("32x24"), QStringLiteral("--ground"),
-                                        QStringLiteral("catcher"), QStringLiteral("--transparent"),
-                                        QStringLiteral("-o"), out});
+        const CliRun run = runLightrig(
+            {QStringLiteral("render"), model(), QStringLiteral("--quality"), QStringLiteral("path"),
+             QStringLiteral("--samples"), QStringLiteral("2"), QStringLiteral("--size"),
+             QStringLiteral("32x24"), QStringLiteral("--ground"), QStringLiteral("catcher"),
+             QStringLiteral("--transparent"), QStringLiteral("-o"), out});
         QVERIFY2(run.code == 0, qPrintable(run.show()));
         const QImage image = QImage(out).convertToFormat(QImage::Format_RGBA8888);
         QVERIFY(image.hasAlphaChannel());
@@ -66,23 +67,32 @@ class TraceCli : public QObject {
         QTest::addColumn<int>("code");
         QTest::addColumn<QString>("message");
         const QStringList path{QStringLiteral("--quality"), QStringLiteral("path")};
-        QTest::newRow("samples 0") << (path + QStringList{QStringLiteral("--samples"), QStringLiteral("0")}) << 2
-                                   << QStringLiteral("--samples must be a whole number in 1..1000000, got '0'");
-        QTest::newRow("samples word") << (path + QStringList{QStringLiteral("--samples"), QStringLiteral("many")})
-                                      << 2 << QStringLiteral("--samples must be a whole number in 1..1000000, got 'many'");
-        QTest::newRow("bounces negative") << (path + QStringList{QStringLiteral("--bounces"), QStringLiteral("-1")})
-                                          << 2 << QStringLiteral("--bounces must be a whole number in 0..1024, got '-1'");
-        QTest::newRow("threads 0") << (path + QStringList{QStringLiteral("--threads"), QStringLiteral("0")}) << 2
-                                   << QStringLiteral("--threads must be a whole number in 1..1024");
-        QTest::newRow("clamp 0") << (path + QStringList{QStringLiteral("--firefly-clamp"), QStringLiteral("0")}) << 2
+        QTest::newRow("samples 0") << (path + QStringList{QStringLiteral("--samples"), QStringLiteral("0")})
+                                   << 2
+                                   << QStringLiteral(
+                                          "--samples must be a whole number in 1..1000000, got '0'");
+        QTest::newRow("samples word")
+            << (path + QStringList{QStringLiteral("--samples"), QStringLiteral("many")}) << 2
+            << QStringLiteral("--samples must be a whole number in 1..1000000, got 'many'");
+        QTest::newRow("bounces negative")
+            << (path + QStringList{QStringLiteral("--bounces"), QStringLiteral("-1")}) << 2
+            << QStringLiteral("--bounces must be a whole number in 0..1024, got '-1'");
+        QTest::newRow("threads 0") << (path + QStringList{QStringLiteral("--threads"), QStringLiteral("0")})
+                                   << 2 << QStringLiteral("--threads must be a whole number in 1..1024");
+        QTest::newRow("clamp 0") << (path +
+                                     QStringList{QStringLiteral("--firefly-clamp"), QStringLiteral("0")})
+                                 << 2
                                  << QStringLiteral("--firefly-clamp must be a linear radiance > 0, got '0'");
-        QTest::newRow("samples without path") << QStringList{QStringLiteral("--samples"), QStringLiteral("4")} << 2
-                                              << QStringLiteral("--samples needs --quality path");
-        QTest::newRow("supersample with path") << (path + QStringList{QStringLiteral("--supersample"), QStringLiteral("2")})
-                                               << 2 << QStringLiteral("--supersample does not apply to --quality path");
-        QTest::newRow("unknown quality") << QStringList{QStringLiteral("--quality"), QStringLiteral("traced")} << 2
-                                         << QStringLiteral("\"exact\", \"balanced\", \"fast\" or \"path\"");
-        QTest::newRow("classic rig") << (path + QStringList{QStringLiteral("--shading"), QStringLiteral("classic")})
+        QTest::newRow("samples without path") << QStringList{QStringLiteral("--samples"), QStringLiteral("4")}
+                                              << 2 << QStringLiteral("--samples needs --quality path");
+        QTest::newRow("supersample with path")
+            << (path + QStringList{QStringLiteral("--supersample"), QStringLiteral("2")}) << 2
+            << QStringLiteral("--supersample does not apply to --quality path");
+        QTest::newRow("unknown quality")
+            << QStringList{QStringLiteral("--quality"), QStringLiteral("traced")} << 2
+            << QStringLiteral("\"exact\", \"balanced\", \"fast\" or \"path\"");
+        QTest::newRow("classic rig") << (path +
+                                         QStringList{QStringLiteral("--shading"), QStringLiteral("classic")})
                                      << 1 << QStringLiteral("uses classic shading");
     }
     void badValues() {
@@ -91,9 +101,10 @@ class TraceCli : public QObject {
         QFETCH(QString, message);
         QTemporaryDir dir;
         const QString out = dir.filePath(QStringLiteral("never.png"));
-        const CliRun run = runLightrig(QStringList{QStringLiteral("render"), model(), QStringLiteral("--size"),
-                                                   QStringLiteral("16x16"), QStringLiteral("-o"), out} +
-                                       args);
+        const CliRun run =
+            runLightrig(QStringList{QStringLiteral("render"), model(), QStringLiteral("--size"),
+                                    QStringLiteral("16x16"), QStringLiteral("-o"), out} +
+                        args);
         QVERIFY2(run.code == code, qPrintable(run.show()));
         QVERIFY2(run.err.contains(message), qPrintable(run.show()));
         QVERIFY(!QFile::exists(out));

@@ -20,8 +20,9 @@ constexpr double kPi = std::numbers::pi;
 // f(ωi, ωo)·cos θi of core's BRDF (grey material, channel x), in the frame whose normal is +Z.
 double brdfCos(const glm::dvec3& wi, const glm::dvec3& wo, double base, double metallic, double roughness) {
     const glm::dvec3 n(0, 0, 1), b(base);
-    const auto f = lighting::pbrLobes(n, wi, wo, lighting::pbrDiffuseColor(b, metallic), lighting::pbrF0(b, metallic),
-                                      lighting::pbrAlpha(roughness), lighting::diffuseLambert(wi.z));
+    const auto f =
+        lighting::pbrLobes(n, wi, wo, lighting::pbrDiffuseColor(b, metallic), lighting::pbrF0(b, metallic),
+                           lighting::pbrAlpha(roughness), lighting::diffuseLambert(wi.z));
     return f.diffuse.x + f.specular.x;
 }
 
@@ -56,7 +57,10 @@ class TraceClosedForm : public QObject {
         trace::PathTracer one(traced, camera, QSize(24, 24), settings, 2);
         one.render(16);
         const double direct = meanChannel(one.image(), 1);
-        qInfo().noquote() << QStringLiteral("furnace: all bounces %1, one bounce %2, sky %3").arg(mean).arg(direct).arg(sky.y);
+        qInfo().noquote() << QStringLiteral("furnace: all bounces %1, one bounce %2, sky %3")
+                                 .arg(mean)
+                                 .arg(direct)
+                                 .arg(sky.y);
         QVERIFY2(direct < 0.97 * sky.y, qPrintable(QString::number(direct)));
     }
 
@@ -87,8 +91,9 @@ class TraceClosedForm : public QObject {
             const glm::dvec3 wo = fromAngles(muO, 0.0);
             for (int i = 0; i < M; ++i)
                 for (int p = 0; p < P; ++p)
-                    row[size_t(i)] += brdfCos(fromAngles((i + 0.5) * dMu, (p + 0.5) * dPhi), wo, a, 0.0, roughness) *
-                                      dMu * dPhi;
+                    row[size_t(i)] +=
+                        brdfCos(fromAngles((i + 0.5) * dMu, (p + 0.5) * dPhi), wo, a, 0.0, roughness) * dMu *
+                        dPhi;
             return row;
         };
         const auto direct = [&](double muO) {
@@ -248,22 +253,24 @@ class TraceClosedForm : public QObject {
         QVERIFY(covered > 200);
         // Where the interpolated normal sees a light the faceted sphere hides (the shadow terminator),
         // the traced shadow ray is blocked: a few pixels.
-        QVERIFY2(matching >= covered * 97 / 100, qPrintable(QStringLiteral("%1 of %2").arg(matching).arg(covered)));
+        QVERIFY2(matching >= covered * 97 / 100,
+                 qPrintable(QStringLiteral("%1 of %2").arg(matching).arg(covered)));
         QVERIFY2(relative / covered < 5e-3, qPrintable(QString::number(relative / covered)));
     }
 
     // The image does not depend on the thread count, and cancel() stops a pass.
     void deterministicAndCancellable() {
-        Model plane = quadsModel({{glm::dvec3(-2, 0, 2), glm::dvec3(2, 0, 2), glm::dvec3(2, 0, -2),
-                                   glm::dvec3(-2, 0, -2)}},
-                                 pbrMaterial(glm::vec3(0.8f), 0.0f, 0.5f));
+        Model plane = quadsModel(
+            {{glm::dvec3(-2, 0, 2), glm::dvec3(2, 0, 2), glm::dvec3(2, 0, -2), glm::dvec3(-2, 0, -2)}},
+            pbrMaterial(glm::vec3(0.8f), 0.0f, 0.5f));
         merge(plane, makeSphere(0.5, 32, 16, glm::dvec3(0.0, 0.5, 0.0)));
         auto scene = describe(plane, pbrRig(true), uniformEnvironment(glm::vec3(1.0f)));
         QString error;
         const auto traced = trace::TraceScene::build(*scene, &error);
         QVERIFY2(traced, qPrintable(error));
         const ViewCamera camera = lookAt({2.0, 2.0, 3.0}, glm::dvec3(0.0), 40.0);
-        trace::PathTracer one(traced, camera, QSize(40, 30), {}, 1), three(traced, camera, QSize(40, 30), {}, 3);
+        trace::PathTracer one(traced, camera, QSize(40, 30), {}, 1),
+            three(traced, camera, QSize(40, 30), {}, 3);
         one.render(2);
         three.render(1);
         three.render(1);

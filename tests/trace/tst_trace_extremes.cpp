@@ -80,8 +80,8 @@ class TraceExtremes : public QObject {
         rig.lights = {rect, disk};
         Model m = floorQuad(pbrMaterial(glm::vec3(0.8f), 0.0f, 0.5f));
         // An emissive mesh of one zero-area triangle and one proper one.
-        Model lamp = quadsModel({{glm::dvec3(-0.2, 0.8, 0.2), glm::dvec3(0.2, 0.8, 0.2), glm::dvec3(0.2, 0.8, -0.2),
-                                  glm::dvec3(-0.2, 0.8, -0.2)}},
+        Model lamp = quadsModel({{glm::dvec3(-0.2, 0.8, 0.2), glm::dvec3(0.2, 0.8, 0.2),
+                                  glm::dvec3(0.2, 0.8, -0.2), glm::dvec3(-0.2, 0.8, -0.2)}},
                                 pbrMaterial(glm::vec3(0.0f), 0.0f, 1.0f));
         lamp.meshes.front().indices.insert(lamp.meshes.front().indices.begin(), {0, 0, 0});
         lamp.materials.front().emissive = glm::vec3(3.0f);
