@@ -182,12 +182,11 @@ float evalCone(ShadeLight l, float cosTheta) {
 }
 
 #ifdef LR_B3
-// Whether the light's falloff is exactly zero at d >= range (range-power and range-quadratic always,
-// the inverse falloffs when they have a range, i.e. range >= 0).
+// Whether the light's falloff is exactly zero at d >= range (a required range always, an optional one when
+// the light has it, i.e. range >= 0): LR_FALLOFF_BOUNDED comes from core/fallofftraits.h's table.
 bool lightIsBounded(ShadeLight l) {
     int m = falloffOf(l);
-    return m == LR_FALLOFF_RANGE_POWER || m == LR_FALLOFF_RANGE_QUADRATIC ||
-           ((m == LR_FALLOFF_INVERSE_POLYNOMIAL || m == LR_FALLOFF_INVERSE_SQUARE) && l.range >= 0.0);
+    return LR_FALLOFF_BOUNDED(m, l.range);
 }
 #endif
 

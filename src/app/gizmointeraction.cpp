@@ -1,5 +1,6 @@
 #include "gizmointeraction.h"
 
+#include "core/fallofftraits.h"
 #include "editor/changelightvalues.h"
 #include "render/gizmos.h"
 #include "scene.h"
@@ -24,11 +25,7 @@ double spotGizmoLength(const Rig& rig, const SceneFrame& frame, const Light& lig
     // radius.
     const double radius = frame.radius > 0.0 && std::isfinite(frame.radius) ? frame.radius : 1.0;
     const Falloff& f = light.falloff;
-    const bool bounded =
-        f.model == FalloffModel::RangePower || f.model == FalloffModel::RangeQuadratic ||
-        ((f.model == FalloffModel::InversePolynomial || f.model == FalloffModel::InverseSquare) &&
-         f.hasRange());
-    const double range = bounded ? f.range / distanceScale(rig, frame) : -1.0;
+    const double range = falloffBounded(f) ? f.range / distanceScale(rig, frame) : -1.0;
     return range > 0.0 && std::isfinite(range) && range < radius * 1e4 ? std::min(range, radius * 3.0)
                                                                        : radius;
 }

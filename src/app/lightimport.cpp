@@ -1,5 +1,7 @@
 #include "lightimport.h"
 
+#include "core/fallofftraits.h"
+
 namespace lr {
 
 std::vector<Light> lightsInRigSpace(const Rig& worldLights, const Rig& target, const SceneFrame& frame) {
@@ -12,18 +14,8 @@ std::vector<Light> lightsInRigSpace(const Rig& worldLights, const Rig& target, c
     for (Light l : worldLights.lights) {
         if (l.usesPosition())
             l.position = worldToRig(target, frame, rigToWorld(worldLights, frame, l.position));
-        if (l.usesFalloff() && s != 1.0) {
-            Falloff& f = l.falloff;
-            // The shader measures d in rig units (d_rig = s * d_world): keep a(d) the same function of
-            // d_world.
-            if (f.hasRange()) f.range *= s;
-            if (f.model == FalloffModel::InversePolynomial) {
-                f.linear /= s;
-                f.quadratic /= s * s;
-            } else if (f.model == FalloffModel::InverseSquare) {
-                l.intensity *= s * s;
-            }
-        }
+        // The shader measures d in rig units (d_rig = s * d_world): keep a(d) the same function of d_world.
+        if (l.usesFalloff() && s != 1.0) scaleFalloffLengths(l.falloff, l.intensity, s);
         out.push_back(l);
     }
     return out;

@@ -1,5 +1,7 @@
 #include "prepare.h"
 
+#include "fallofftraits.h"
+
 #include <glm/gtc/constants.hpp>
 #include <glm/trigonometric.hpp>
 
@@ -33,11 +35,7 @@ bool lightReaches(const Rig& rig, const SceneFrame& frame, const Light& light, c
     if (!light.enabled) return false;
     if (!light.usesFalloff()) return true;
     const Falloff& f = light.falloff;
-    const bool bounded =
-        f.model == FalloffModel::RangePower || f.model == FalloffModel::RangeQuadratic ||
-        ((f.model == FalloffModel::InversePolynomial || f.model == FalloffModel::InverseSquare) &&
-         f.hasRange());
-    if (!bounded) return true;
+    if (!falloffBounded(f)) return true;
     const double worldRange = f.range / distanceScale(rig, frame);
     const double d = glm::length(rigToWorld(rig, frame, light.position) - center);
     return d < worldRange + radius; // the falloff is exactly zero at d >= range

@@ -1,5 +1,6 @@
 // The "falloff" and "cone" objects of point and spot lights (docs/rig-format.md): which keys each model
 // uses, their defaults and ranges.
+#include "fallofftraits.h"
 #include "rigjson_check.h"
 
 namespace lr::rigjson {
@@ -20,8 +21,8 @@ void rejectMisplaced(ObjectView& o, bool inFalloff, bool inCone, const QString& 
             .arg(light, QLatin1String(key), QLatin1String(where));
     };
     if (!inFalloff)
-        for (const char* key : {"range", "constant", "linear", "quadratic"})
-            o.reject(key, reason(key, "falloff", hasFalloff));
+        for (const FalloffField& field : kFalloffFields)
+            if (!field.sharedKey) o.reject(field.json, reason(field.json, "falloff", hasFalloff));
     if (!inCone)
         for (const char* key : {"inner", "outer"})
             o.reject(key, reason(key, "cone", hasCone));
@@ -37,43 +38,23 @@ std::optional<Falloff> readFalloff(Checker& c, const Value& v, const QString& pa
         model = c.enumValue<FalloffModel>(*m, o.path("model"));
     else
         c.error(o.path("model"), QStringLiteral("missing; one of %1").arg(allowedNames<FalloffModel>()));
-    const auto range = [&](const Value& x, const QString& p) {
-        return c.number(x, p, rigjson::positive(kMaxRigLength));
-    };
-    const auto exponent = [&](const Value& x, const QString& p) {
-        return c.number(x, p, rigjson::positive(kMaxRigExponent));
-    };
-    const auto term = [&](const Value& x, const QString& p) {
-        return c.number(x, p, rigjson::nonNegative(kMaxRigLength));
-    };
     const QString name = model ? quoted(toString(*model)) : QString();
-    const bool any = !model; // unknown model: check the values of every falloff field, allow all
-    const bool needsRange = model == FalloffModel::RangePower || model == FalloffModel::RangeQuadratic;
-    const bool optionalRange =
-        model == FalloffModel::InversePolynomial || model == FalloffModel::InverseSquare;
-    const bool polynomial = any || model == FalloffModel::InversePolynomial;
-
-    if (needsRange && !v.find(u"range"))
+    // An unknown model: check the values of every field, allow all of them.
+    const FalloffTraits* traits = model ? &falloffTraitsOf(*model) : nullptr;
+    if (traits && traits->range == RangeRule::Required && !v.find(u"range"))
         c.error(o.path("range"), QStringLiteral("missing; the %1 falloff needs a range > 0").arg(name));
-    if (any || needsRange || optionalRange)
-        o.read("range", f.range, range);
-    else
-        o.reject("range", QStringLiteral("the %1 falloff has no range").arg(name));
-    if (any || model == FalloffModel::RangePower)
-        o.read("exponent", f.exponent, exponent);
-    else
-        o.reject("exponent",
-                 QStringLiteral("the %1 falloff has no exponent (only \"range-power\" has one)").arg(name));
-    for (auto [key, out] :
-         {std::pair{"constant", &f.constant}, {"linear", &f.linear}, {"quadratic", &f.quadratic}}) {
-        if (polynomial)
-            o.read(key, *out, term);
-        else
-            o.reject(key, QStringLiteral("the %1 falloff has no %2 term (only \"inverse-polynomial\" has)")
-                              .arg(name, QLatin1String(key)));
+    for (const FalloffField& field : kFalloffFields) {
+        if (!traits || falloffUses(traits->model, field.key)) {
+            const Interval limits{field.min, !field.minExclusive, field.max, true};
+            o.read(field.json, f.*field.member,
+                   [&](const Value& x, const QString& p) { return c.number(x, p, limits); });
+        } else {
+            QString reason = QString::fromLatin1(field.absent).arg(name);
+            if (reason.contains(QLatin1String("%2"))) reason = reason.arg(falloffModelsWith(field.key));
+            o.reject(field.json, reason);
+        }
     }
-    if (model == FalloffModel::InversePolynomial && f.constant == 0.0 && f.linear == 0.0 &&
-        f.quadratic == 0.0)
+    if (traits && traits->needsPositiveTerm && f.constant == 0.0 && f.linear == 0.0 && f.quadratic == 0.0)
         c.error(path, QStringLiteral(
                           "constant, linear and quadratic are all 0: the light would be infinitely bright"));
     rejectMisplaced(o, true, false);

@@ -1,6 +1,7 @@
 // writeRigJson: the canonical form of a rig file (docs/rig-format.md, "Canonical form"). Fixed key order,
 // only the fields a light's type and models use, shortest round-trip numbers, two-space indentation,
 // one light key per line, small objects and vectors on one line, a final newline.
+#include "fallofftraits.h"
 #include "rigjson.h"
 #include "rigjson_check.h"
 #include "rigjson_json.h"
@@ -48,25 +49,12 @@ QByteArray blockObject(const Fields& fields, const QByteArray& indent) {
 
 QByteArray falloff(const Falloff& f) {
     Fields fields{{"model", name(f.model)}};
-    switch (f.model) {
-    case FalloffModel::None:
-        break;
-    case FalloffModel::RangePower:
-        fields.push_back({"range", num(f.range)});
-        fields.push_back({"exponent", num(f.exponent)});
-        break;
-    case FalloffModel::InversePolynomial:
-        fields.push_back({"constant", num(f.constant)});
-        fields.push_back({"linear", num(f.linear)});
-        fields.push_back({"quadratic", num(f.quadratic)});
-        if (f.hasRange()) fields.push_back({"range", num(f.range)});
-        break;
-    case FalloffModel::RangeQuadratic:
-        fields.push_back({"range", num(f.range)});
-        break;
-    case FalloffModel::InverseSquare:
-        if (f.hasRange()) fields.push_back({"range", num(f.range)});
-        break;
+    const FalloffTraits& t = falloffTraitsOf(f.model);
+    for (int k = 0; k < t.keyCount; ++k) {
+        const FalloffField& field = falloffField(t.keys[size_t(k)]);
+        // An optional range is written only when the falloff has one.
+        if (field.key == FalloffKey::Range && t.range == RangeRule::Optional && !f.hasRange()) continue;
+        fields.push_back({field.json, num(f.*field.member)});
     }
     return inlineObject(fields);
 }

@@ -1,5 +1,6 @@
 #include "editor/changerigspace.h"
 
+#include "core/fallofftraits.h"
 #include "editor/lightproperty.h"
 
 #include <QCoreApplication>
@@ -28,13 +29,7 @@ std::optional<Rig> convertRigSpace(const Rig& rig, RigSpace space, const SceneFr
         // An area light's size too (its luminance is per unit area and solid angle: unchanged).
         for (double* size : {&l.area.width, &l.area.height, &l.area.radius})
             *size *= k;
-        Falloff& fo = l.falloff;
-        if (fo.hasRange()) fo.range *= k;
-        if (fo.model == FalloffModel::InverseSquare) l.intensity *= k * k; // 1/d² in the new units
-        if (fo.model == FalloffModel::InversePolynomial) {
-            fo.linear /= k;
-            fo.quadratic /= k * k;
-        }
+        scaleFalloffLengths(l.falloff, l.intensity, k); // the range, the terms, 1/d²'s intensity
         if (const QString e = validateLight(l); !e.isEmpty()) {
             if (error) *error = tr("cannot switch to %1 space: %2: %3").arg(toString(space), l.name, e);
             return std::nullopt;

@@ -9,6 +9,7 @@
 
 #include "core/rig.h"
 #include "editor/lightproperty.h"
+#include "editor/rigproperty.h"
 
 #include <QHash>
 #include <QList>

@@ -25,13 +25,14 @@
 //   ShadowResolution     int (also a whole double), a power of two 256 ... 4096
 //   AreaTwoSided         bool
 //   everything else      double
-// Enums from types.h, RigSpace/SpecularModel/ViewerModel/GroundMode likewise for rig values (GroundColor:
-// glm::dvec3 linear albedo, components 0 ... 1; Environment: lr::Environment). (Qt 6 needs no
-// Q_DECLARE_METATYPE for glm::dvec3 in a QVariant; declaring it here would clash with earlier implicit uses.)
+// Enums from types.h. The rig's own values are editor/rigproperty.h's; the conversions of QVariants and
+// displayColor are editor/propertyvalue.h's. (Qt 6 needs no Q_DECLARE_METATYPE for glm::dvec3 in a
+// QVariant; declaring it here would clash with earlier implicit uses.)
 #pragma once
 
 #include "core/rig.h"
 #include "core/rigjson.h"
+#include "editor/propertyvalue.h"
 
 #include <QColor>
 #include <QMetaType>
@@ -80,24 +81,6 @@ enum class LightProperty {
     Any           // not a property: "several or all values of the light changed" (in RigChange only)
 };
 constexpr int kLightPropertyCount = int(LightProperty::Any);
-
-// ShadingModel: classic or physically based (core/rig.h Shading::model); the classic-only values (specular
-// model, viewer, shininess) stay editable but mean nothing under Pbr.
-// GroundMode and GroundColor: the rig's ground plane (core/rig.h Ground; issue 14).
-enum class RigProperty {
-    Name,
-    Space,
-    Ambient,
-    SpecularModel,
-    ViewerModel,
-    Shininess,
-    ShadingModel,
-    GroundMode,
-    GroundColor,
-    Environment, // issue 15: the whole lr::Environment (editor/environmentvalue.h checks it)
-    Any
-};
-constexpr int kRigPropertyCount = int(RigProperty::Any);
 
 // Limits the editor enforces: the rig format's own (core/rigjson.h), so a saved rig always loads again.
 constexpr int kMaxLightNameLength = kMaxRigNameLength;  // characters
@@ -172,7 +155,6 @@ const LightPropertyInfo* lightPropertyInfo(LightProperty property);
 
 // Human-readable name for undo texts and messages: "intensity", "cone outer angle".
 QString lightPropertyName(LightProperty property);
-QString rigPropertyName(RigProperty property);
 
 // Whether the property means anything for this light (its row's usedBy flag of the light's type). Commands
 // only touch lights where the property applies.
@@ -180,7 +162,6 @@ bool lightPropertyApplies(const Light& light, LightProperty property);
 
 // The light's current value, in the types listed above.
 QVariant lightValue(const Light& light, LightProperty property);
-QVariant rigValue(const Rig& rig, RigProperty property);
 
 // Context-free check of type and range: empty string when valid, else a reason such as
 // "intensity must be a finite number between 0 and 1e+06, got -1".
@@ -188,7 +169,6 @@ QString validateLightValue(LightProperty property, const QVariant& value);
 // Also checks the light's other values (a smooth cone's inner <= outer, "no range" only for the falloff
 // models that allow it, at least one positive inverse-polynomial coefficient).
 QString validateLightValue(const Light& light, LightProperty property, const QVariant& value);
-QString validateRigValue(RigProperty property, const QVariant& value);
 // "N lights would cast shadows; at most 16 can ...": empty when `casters` is within kMaxShadowCasters.
 QString checkShadowCasterCount(int casters);
 // Every value of a light / a rig (used for rigs that come from elsewhere: presets, model imports); a rig
@@ -200,10 +180,5 @@ QString validateRig(const Rig& rig);
 // light consistent: a falloff model that needs a range gets one, a cone's inner angle follows its outer angle
 // down, a direction is normalised.
 Light withLightValue(const Light& light, LightProperty property, const QVariant& value);
-void applyRigValue(Rig& rig, RigProperty property, const QVariant& value);
-
-// Linear RGB (HDR) <-> a displayable sRGB QColor. HDR colours are scaled down by their largest component.
-QColor displayColor(const glm::dvec3& linear);
-glm::dvec3 linearFromDisplayColor(const QColor& color);
 
 } // namespace lr

@@ -2,6 +2,7 @@
 // their nodes. Conventions and the Assimp 5.2.5 quirks they undo are documented in modelloader.h.
 #include "importdetail.h"
 
+#include "core/fallofftraits.h"
 #include "core/prepare.h"
 #include "core/rigjson.h"
 
@@ -141,12 +142,11 @@ bool applyRigLimits(const aiColor3D& raw, const QString& where, Light& light, QS
         warnings << QStringLiteral("%1: name shortened to %2 characters").arg(where).arg(kMaxRigNameLength);
         light.name.truncate(kMaxRigNameLength);
     }
-    for (double* length :
-         {&light.falloff.range, &light.falloff.constant, &light.falloff.linear, &light.falloff.quadratic})
-        if (*length > kMaxRigLength) {
+    for (const FalloffField& field : kFalloffFields) // the rig format's limits (core/fallofftraits.h)
+        if (double& value = light.falloff.*field.member; value > field.max) {
             warnings << QStringLiteral("%1: falloff value %2 clamped to %3")
-                            .arg(where, number(*length), number(kMaxRigLength));
-            *length = kMaxRigLength;
+                            .arg(where, number(value), number(field.max));
+            value = field.max;
         }
     if (light.usesPosition() &&
         glm::any(glm::greaterThan(glm::abs(light.position), glm::dvec3(kMaxRigLength)))) {

@@ -1,5 +1,7 @@
 #include "cluster.h"
 
+#include "core/fallofftraits.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -11,17 +13,15 @@ LightBounds lightBounds(const lighting::ShadeLight<double>& l, double distanceSc
     if (!traitsOf(l.type).boundable) return b;
     if (!(distanceScale > 0.0) || !std::isfinite(distanceScale)) return b;
     double range = 0.0;
-    switch (l.falloff) {
-    case FalloffModel::None:
+    switch (falloffTraitsOf(l.falloff).range) {
+    case RangeRule::None:
         return b;
-    case FalloffModel::RangePower:
-    case FalloffModel::RangeQuadratic:
+    case RangeRule::Required:
         // zero for !(d < range): range <= 0 or NaN lights nothing
         if (std::isinf(l.range) && l.range > 0.0) return b;
         range = l.range > 0.0 ? l.range : 0.0;
         break;
-    case FalloffModel::InversePolynomial:
-    case FalloffModel::InverseSquare:
+    case RangeRule::Optional:
         // windowed by the range when range >= 0; unbounded below 0
         if (l.range < 0.0 || (std::isinf(l.range) && l.range > 0.0)) return b;
         range = l.range > 0.0 ? l.range : 0.0;

@@ -1,5 +1,6 @@
 #include "gizmos.h"
 
+#include "core/fallofftraits.h"
 #include "core/lighting.h"
 
 #include <glm/trigonometric.hpp>
@@ -74,11 +75,7 @@ glm::vec4 displayColor(const Light& l, float alpha) {
 // The finite world range of a point or spot light, or a negative value when it has none.
 double worldRange(const Rig& rig, const SceneFrame& frame, const Light& l) {
     const Falloff& f = l.falloff;
-    const bool bounded =
-        f.model == FalloffModel::RangePower || f.model == FalloffModel::RangeQuadratic ||
-        ((f.model == FalloffModel::InversePolynomial || f.model == FalloffModel::InverseSquare) &&
-         f.hasRange());
-    if (!bounded) return -1.0;
+    if (!falloffBounded(f)) return -1.0;
     const double r = f.range / distanceScale(rig, frame);
     return std::isfinite(r) ? r : -1.0;
 }

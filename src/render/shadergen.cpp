@@ -2,6 +2,8 @@
 
 #include "shadowplan.h"
 
+#include "core/fallofftraits.h"
+
 #include <QStringList>
 #include <cmath>
 
@@ -57,6 +59,22 @@ void defineAllEnums(QByteArray& out) {
     defineEnum<SpecularModel>(out, "SPECULAR");
     defineEnum<ViewerModel>(out, "VIEWER");
     defineEnum<ToneMap>(out, "TONEMAP");
+}
+
+// LR_FALLOFF_BOUNDED(m, range): whether falloff model m is exactly zero at d >= range, from the traits
+// table (core/fallofftraits.h): a required range always, an optional one when range >= 0.
+void defineFalloffBounded(QByteArray& out) {
+    QList<QByteArray> required, optional;
+    for (const FalloffTraits& t : kFalloffTraits) {
+        const QByteArray test =
+            "(m) == LR_FALLOFF_" + macroName(EnumNames<FalloffModel>::names[size_t(t.model)]);
+        if (t.range == RangeRule::Required) required << test;
+        if (t.range == RangeRule::Optional) optional << test;
+    }
+    QList<QByteArray> terms = required;
+    if (!optional.isEmpty()) terms << "((" + optional.join(" || ") + ") && (range) >= 0.0)";
+    out += "#define LR_FALLOFF_BOUNDED(m, range) (" +
+           (terms.isEmpty() ? QByteArray("false") : terms.join(" || ")) + ")\n";
 }
 
 } // namespace
@@ -224,6 +242,7 @@ glm::mat3 textureTransformMatrix(const TextureTransform& t) {
 QByteArray basicPrelude() {
     QByteArray out = "#version 330 core\n";
     defineAllEnums(out);
+    defineFalloffBounded(out);
     return out;
 }
 
