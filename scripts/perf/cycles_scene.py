@@ -2,7 +2,7 @@
 # scene `lightrig render MODEL --quality path --ground visible --environment FILE` traces, rebuilt in
 # Cycles as like for like as Blender allows, then rendered once.
 #   blender -b --factory-startup --python scripts/perf/cycles_scene.py -- MODEL.glb ENV.exr OUT.png
-#       [--size WxH] [--samples N] [--bounces B] [--time-limit S] [--threads T] [--exr OUT.exr]
+#       [--size WxH] [--samples N] [--bounces B] [--time-limit S] [--threads T] [--seed S] [--exr OUT.exr]
 #       [--ground visible|off] [--calibrate]
 # What is matched, and how (docs/path-tracing.md, "Against Cycles", lists what cannot be):
 #  - Lights: the glTF importer reads KHR_lights_punctual with convert_lighting_mode='COMPAT', i.e. a point
@@ -35,7 +35,7 @@ def parse(argv):
     if len(args) < 3:
         sys.exit("usage: blender -b --python cycles_scene.py -- MODEL.glb ENV.exr OUT.png [options]")
     o = {"model": args[0], "env": args[1], "out": args[2], "size": "480x270", "samples": "64",
-         "bounces": "8", "time-limit": "0", "threads": "0", "exr": "", "ground": "visible"}
+         "bounces": "8", "time-limit": "0", "threads": "0", "seed": "0", "exr": "", "ground": "visible"}
     flags = {"calibrate": False}
     i = 3
     while i < len(args):
@@ -82,7 +82,7 @@ def film(scene, o):
     c.use_adaptive_sampling = False
     c.use_denoising = False
     c.use_preview_denoising = False
-    c.seed = 0
+    c.seed = int(o["seed"])
     c.use_animated_seed = False
     c.sample_clamp_direct = 0.0
     c.sample_clamp_indirect = 0.0
