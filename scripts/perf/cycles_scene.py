@@ -3,7 +3,9 @@
 # Cycles as like for like as Blender allows, then rendered once.
 #   blender -b --factory-startup --python scripts/perf/cycles_scene.py -- MODEL.glb ENV.exr OUT.png
 #       [--size WxH] [--samples N] [--bounces B] [--time-limit S] [--threads T] [--seed S] [--exr OUT.exr]
-#       [--ground visible|off] [--calibrate]
+#       [--ground visible|off] [--ground-bsdf principled|lambert] [--lights on|off] [--calibrate]
+# (--lights off deletes the model's lights, ENV "none" makes the world black: each source alone, for
+# finding where a difference comes from.)
 # What is matched, and how (docs/path-tracing.md, "Against Cycles", lists what cannot be):
 #  - Lights: the glTF importer reads KHR_lights_punctual with convert_lighting_mode='COMPAT', i.e. a point
 #    or spot light's W = cd × 4π (and a sun's W/m² = lux), not the default 'SPEC' (cd × 4π / 683). LightRig
@@ -35,7 +37,7 @@ def parse(argv):
     if len(args) < 3:
         sys.exit("usage: blender -b --python cycles_scene.py -- MODEL.glb ENV.exr OUT.png [options]")
     o = {"model": args[0], "env": args[1], "out": args[2], "size": "480x270", "samples": "64",
-         "bounces": "8", "time-limit": "0", "threads": "0", "seed": "0", "exr": "", "ground": "visible"}
+         "bounces": "8", "time-limit": "0", "threads": "0", "seed": "0", "exr": "", "ground": "visible", "lights": "on", "ground-bsdf": "principled"}
     flags = {"calibrate": False}
     i = 3
     while i < len(args):
@@ -148,7 +150,20 @@ def model_bounds(objects):
     return lo, hi
 
 
-def ground(scene, lo, hi):
+def lambert(albedo):
+    m = bpy.data.materials.new("lambert")
+    m.use_nodes = True
+    nt = m.node_tree
+    nt.nodes.clear()
+    d = nt.nodes.new("ShaderNodeBsdfDiffuse")
+    d.inputs["Color"].default_value = (albedo, albedo, albedo, 1.0)
+    d.inputs["Roughness"].default_value = 0.0  # Lambert, not Oren-Nayar
+    out = nt.nodes.new("ShaderNodeOutputMaterial")
+    nt.links.new(d.outputs["BSDF"], out.inputs["Surface"])
+    return m
+
+
+def ground(scene, lo, hi, bsdf):
     # Blender is Z up (the importer turns glTF's +Y into +Z): LightRig's plane at the lowest y is at lowest z.
     radius = 0.5 * (hi - lo).length
     half = 0.5 * 10.0 * radius
@@ -159,7 +174,7 @@ def ground(scene, lo, hi):
                       (c.x - half, c.y + half, z)], [], [(0, 1, 2, 3)])
     ob = bpy.data.objects.new("ground", mesh)
     scene.collection.objects.link(ob)
-    mesh.materials.append(principled("ground", (0.8, 0.8, 0.8), 1.0, 0.0))
+    mesh.materials.append(principled("ground", (0.8, 0.8, 0.8), 1.0, 0.0) if bsdf == "principled" else lambert(0.8))
     print(f"cycles_scene: ground {2 * half:.4f} m square at z {z:.4f}, centre ({c.x:.4f}, {c.y:.4f}), "
           f"model radius {radius:.4f}")
 
@@ -234,12 +249,15 @@ def main():
     bpy.ops.import_scene.gltf(filepath=o["model"], convert_lighting_mode="COMPAT", import_shading="NORMALS")
     imported = [ob for ob in bpy.data.objects if ob not in before]
     for ob in imported:
-        if ob.type == "LIGHT":
+        if ob.type == "LIGHT" and o["lights"] == "off":
+            bpy.data.objects.remove(ob)
+        elif ob.type == "LIGHT":
             ob.data.shadow_soft_size = 0.0
             ob.data.cycles.max_bounces = 1024
             ob.data.cycles.use_multiple_importance_sampling = True
             print(f"cycles_scene: light {ob.name}: {ob.data.type}, {ob.data.energy:.4f} W "
                   f"(= {ob.data.energy / (4 * math.pi):.4f} cd), colour {tuple(round(c, 4) for c in ob.data.color)}")
+    imported = [ob for ob in bpy.data.objects if ob not in before]
     cams = [ob for ob in imported if ob.type == "CAMERA"]
     if not cams:
         sys.exit("cycles_scene.py: the model has no camera; LightRig's framing would have to be exported")
@@ -248,10 +266,14 @@ def main():
           f"vertical fov {math.degrees(cams[0].data.angle_y):.3f} deg")
     match_materials()
     film(scene, o)
-    world(scene, o["env"])
+    if o["env"] == "none":
+        scene.world = bpy.data.worlds.new("black")
+        scene.world.color = (0, 0, 0)
+    else:
+        world(scene, o["env"])
     if o["ground"] == "visible":
         lo, hi = model_bounds([ob for ob in imported if ob.type == "MESH"])
-        ground(scene, lo, hi)
+        ground(scene, lo, hi, o["ground-bsdf"])
     scene.render.filepath = o["out"]
     t = time.time()
     bpy.ops.render.render(write_still=True)

@@ -7,6 +7,11 @@
 #   MODEL=…glb (default ../shared/models/bench/helmet_1pt.glb)  ENV=…exr (default resources/environments/studio.exr)
 #   SIZE=WxH (320x180)  SPP=N (1024: both images of the side by side, and each renderer's own reference for
 #   the equal-time part)  BOUNCES=B (8, LightRig's count: Cycles gets B - 1)  THREADS=T (2)
+#   GROUND_BSDF=lambert|principled (Cycles' ground: lambert, a Diffuse BSDF of albedo 0.8 at roughness 0, is
+#   within 1 % of LightRig's glTF ground of roughness 1 where it is lit alone; principled, Principled BSDF
+#   0.8 / roughness 1 / specular 0.5, is what Blender's glTF importer would make of such a material, and
+#   its Disney diffuse with retro-reflection plus a specular layer added on top reads 10 to 45 % brighter at
+#   this grazing view, docs/path-tracing.md)
 #   TIMES="5 20 60" (equal time: seconds of tracing; empty skips it)  SIDE=0 skips the side by side and
 #   reuses OUTDIR's references.
 # Prints Markdown: the side by side's PSNR (8-bit sRGB, the images each writes; LightRig writes 8 bits
@@ -22,6 +27,7 @@ lightrig=${LIGHTRIG_BUILD:-$root/build/dev}/lightrig
 model=$(realpath "${MODEL:-$root/../shared/models/bench/helmet_1pt.glb}")
 envmap=$(realpath "${ENV:-$root/resources/environments/studio.exr}")
 size=${SIZE:-320x180} spp=${SPP:-1024} bounces=${BOUNCES:-8} threads=${THREADS:-2}
+ground_bsdf=${GROUND_BSDF:-lambert}
 times=${TIMES-5 20 60}
 out=${1:-$(mktemp -d /tmp/lightrig-cycles.XXXXXX)}
 mkdir -p "$out"
@@ -39,7 +45,7 @@ lr() { # lr OUT.png SAMPLES SEED: LightRig's image; prints its tracing seconds a
 cy() { # cy OUT.png SAMPLES SEED TIME_LIMIT: Cycles' image; prints its tracing seconds and samples reached
     blender -b --factory-startup --python "$root/scripts/perf/cycles_scene.py" -- "$model" "$envmap" "$1" \
         --size "$size" --samples "$2" --seed "$3" --time-limit "$4" --bounces "$bounces" --threads "$threads" \
-        >"$1.log" 2>&1
+        --ground-bsdf "$ground_bsdf" >"$1.log" 2>&1
     # Tracing time: from the first status line that counts samples to "Finished" (the sync before it, BVH
     # and images, is left out, as LightRig's figure leaves out its loading); samples: the most counted.
     local s n
@@ -60,7 +66,7 @@ mean() { # mean IMG.png [X0 Y0 X1 Y1]: mean linear R G B (sRGB decoded) of the i
 
 echo "## LightRig against Cycles: $(date -u +%F), $(uname -m), $(nproc) cores"
 echo
-echo "Load before: $(uptime | sed 's/.*load average/load average/'). Model $(basename "$model"), environment $(basename "$envmap"), $size, $bounces bounces, $threads threads. $(blender --version 2>/dev/null | head -1), Cycles CPU."
+echo "Load before: $(uptime | sed 's/.*load average/load average/'). Model $(basename "$model"), environment $(basename "$envmap"), $size, $bounces bounces, $threads threads, Cycles' ground $ground_bsdf. $(blender --version 2>/dev/null | head -1), Cycles CPU."
 echo
 if [ "${SIDE:-1}" != 0 ]; then
     read -r lr_s lr_rate < <(lr "$out/lightrig_ref.png" "$spp" 0)
