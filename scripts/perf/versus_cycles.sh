@@ -70,7 +70,7 @@ echo "Load before: $(uptime | sed 's/.*load average/load average/'). Model $(bas
 echo
 if [ "${SIDE:-1}" != 0 ]; then
     read -r lr_s lr_rate < <(lr "$out/lightrig_ref.png" "$spp" 0)
-    read -r cy_s cy_n < <(cy "$out/cycles_ref.png" "$spp" 0 0)
+    read -r cy_s _ < <(cy "$out/cycles_ref.png" "$spp" 0 0)
     echo "$lr_rate" >"$out/lightrig_rate"
     echo "| image | samples per pixel | seconds (tracing) |"
     echo "|---|---|---|"
