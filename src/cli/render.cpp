@@ -36,7 +36,7 @@ const char* kUsage =
     "[--shading classic|pbr] [--ground off|visible|catcher] [--shadows on|off] [--msaa N] "
     "[--environment FILE|builtin:NAME|studio|none] [--environment-intensity EV] "
     "[--environment-rotation DEGREES] [--environment-background visible|blurred|color] "
-    "[--samples N] [--bounces B] [--threads T] [--firefly-clamp X]";
+    "[--samples N] [--bounces B] [--threads T] [--firefly-clamp X] [--seed S]";
 
 // A whole number in [lo, hi] from an option's value, or a usage message naming the option.
 std::optional<int> wholeNumber(const QCommandLineParser& parser, const QCommandLineOption& option, int lo,
@@ -121,6 +121,12 @@ int runRender(const QStringList& args) {
             "--quality path: clamp each sample's largest channel to X (linear radiance > 0); biased, "
             "off by default."),
         QStringLiteral("X"));
+    const QCommandLineOption seedOption(
+        QStringLiteral("seed"),
+        QStringLiteral(
+            "--quality path: the random sequence, 0..2147483647 (default 0); another seed gives an "
+            "independent image of the same scene (for error estimates against a reference)."),
+        QStringLiteral("S"));
     SceneOptionSet scene;
     scene.rig.setDescription(QStringLiteral("Rig file (.json); repeat it for several rigs. Default: the "
                                             "model's own lights when it has some, else the default rig."));
@@ -131,7 +137,7 @@ int runRender(const QStringList& args) {
     parser.addOption(output);
     scene.addTo(parser);
     parser.addOptions({supersample, transparent, frames, msaa, turntable, rotate, summary, noMemoryCheck});
-    parser.addOptions({samplesOption, bouncesOption, threadsOption, clampOption});
+    parser.addOptions({samplesOption, bouncesOption, threadsOption, clampOption, seedOption});
     parser.addPositionalArgument(QStringLiteral("MODEL"),
                                  QStringLiteral("Model files Assimp reads (glTF, OBJ, FBX, ...)."),
                                  QStringLiteral("MODEL..."));
@@ -153,7 +159,8 @@ int runRender(const QStringList& args) {
     const std::optional<SceneOptions> options = scene.read(parser, &message, false, true, true);
     if (!options) return usage(message);
     TracedRenderOptions traced;
-    for (const QCommandLineOption* o : {&samplesOption, &bouncesOption, &threadsOption, &clampOption})
+    for (const QCommandLineOption* o :
+         {&samplesOption, &bouncesOption, &threadsOption, &clampOption, &seedOption})
         if (parser.isSet(*o) && !options->pathTraced)
             return usage(QStringLiteral("--%1 needs --quality path").arg(o->names().constLast()));
     if (options->pathTraced) {
@@ -170,7 +177,8 @@ int runRender(const QStringList& args) {
         };
         if (!number(samplesOption, 1, 1000000, &traced.samples) ||
             !number(bouncesOption, 0, 1024, &traced.bounces) ||
-            !number(threadsOption, 1, 1024, &traced.threads))
+            !number(threadsOption, 1, 1024, &traced.threads) ||
+            !number(seedOption, 0, 2147483647, &traced.seed))
             return usage(message);
         if (parser.isSet(clampOption)) {
             bool ok = false;

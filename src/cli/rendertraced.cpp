@@ -46,6 +46,7 @@ int runRenderTraced(const RenderRequest& request, const RenderItem& item, const 
     trace::TraceSettings settings;
     settings.bounces = traced.bounces;
     settings.fireflyClamp = traced.fireflyClamp;
+    settings.seed = std::uint32_t(traced.seed);
     settings.transparent = request.transparent;
     trace::PathTracer tracer(scene, loaded.camera, request.options.size, settings, traced.threads);
     clock.restart();

@@ -1,4 +1,5 @@
-// `lightrig render MODEL --quality path [--samples N] [--bounces B] [--threads T] [--firefly-clamp X]`:
+// `lightrig render MODEL --quality path [--samples N] [--bounces B] [--threads T] [--firefly-clamp X]
+// [--seed S]`:
 // the path-traced image (src/trace) of one model, rig and view, on the CPU: no OpenGL context and no
 // display needed. The scene options (rig, --shading, --ground, --environment..., camera, size, exposure,
 // tone map, --transparent) mean what they mean for the raster qualities.
@@ -13,6 +14,7 @@ struct TracedRenderOptions {
     int bounces = 8;           // surface interactions per path
     int threads = 0;           // 0: every core
     double fireflyClamp = 0.0; // 0: off
+    int seed = 0;              // the sampler's seed (trace::TraceSettings::seed)
 };
 
 // Renders the one item (exit 0 written, 1 the model, rig, scene or output failed).

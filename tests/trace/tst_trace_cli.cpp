@@ -1,6 +1,7 @@
 // `lightrig render --quality path` (issue 36): renders on the CPU without a display, writes the image
-// with the scene options' size, and refuses bad --samples, --bounces, --threads and --firefly-clamp
-// values, the path options without --quality path, and a classic-shading rig, each with a clear message.
+// with the scene options' size, gives the same image for the same --seed and another for another seed,
+// and refuses bad --samples, --bounces, --threads, --firefly-clamp and --seed values, the path options
+// without --quality path, and a classic-shading rig, each with a clear message.
 #include "support/cli.h"
 
 #include <QImage>
@@ -44,6 +45,37 @@ class TraceCli : public QObject {
         QVERIFY(colours.size() > 20);
     }
 
+    // --seed picks the random sequence: the same seed gives the same image, another an independent one
+    // (what an error estimate against a reference image needs: scripts/perf/versus_cycles.sh).
+    void seed() {
+        QTemporaryDir dir;
+        const auto render = [&](const QString& seed, const QString& name) {
+            const QString out = dir.filePath(name);
+            QStringList args{QStringLiteral("render"),
+                             model(),
+                             QStringLiteral("--quality"),
+                             QStringLiteral("path"),
+                             QStringLiteral("--samples"),
+                             QStringLiteral("1"),
+                             QStringLiteral("--size"),
+                             QStringLiteral("24x16"),
+                             QStringLiteral("--environment"),
+                             QStringLiteral("studio"),
+                             QStringLiteral("-o"),
+                             out};
+            if (!seed.isEmpty()) args << QStringLiteral("--seed") << seed;
+            const CliRun run = runLightrig(args);
+            if (run.code != 0) qWarning("%s", qPrintable(run.show()));
+            return QImage(out).convertToFormat(QImage::Format_RGBA8888);
+        };
+        const QImage a = render({}, QStringLiteral("default.png"));
+        const QImage b = render(QStringLiteral("0"), QStringLiteral("zero.png"));
+        const QImage c = render(QStringLiteral("7"), QStringLiteral("seven.png"));
+        QVERIFY(!a.isNull() && !c.isNull());
+        QCOMPARE(a, b); // the default seed is 0
+        QVERIFY(a != c);
+    }
+
     void transparentCatcher() {
         QTemporaryDir dir;
         const QString out = dir.filePath(QStringLiteral("catcher.png"));
@@ -83,6 +115,9 @@ class TraceCli : public QObject {
                                      QStringList{QStringLiteral("--firefly-clamp"), QStringLiteral("0")})
                                  << 2
                                  << QStringLiteral("--firefly-clamp must be a linear radiance > 0, got '0'");
+        QTest::newRow("seed -1") << (path + QStringList{QStringLiteral("--seed"), QStringLiteral("-1")}) << 2
+                                 << QStringLiteral(
+                                        "--seed must be a whole number in 0..2147483647, got '-1'");
         QTest::newRow("samples without path") << QStringList{QStringLiteral("--samples"), QStringLiteral("4")}
                                               << 2 << QStringLiteral("--samples needs --quality path");
         QTest::newRow("supersample with path")
