@@ -19,8 +19,8 @@
 # PSNR of each renderer's image after T seconds (seed 1) against its own SPP-sample image (seed 0). LightRig
 # has no time limit yet: it gets the sample count its last run's rate fits in T seconds (refitted while its
 # tracing time is off T by more than 15 %), and its real tracing time is printed beside. Cycles gets scene.cycles.time_limit = T; its tracing time is read from its log.
-# Needs: a dev build, blender (Debian's, 3.4) with python3-numpy (its glTF importer imports numpy),
-# oiiotool (openimageio-tools).
+# Needs a dev build; installs blender (Debian's, 3.4), python3-numpy (its glTF importer imports numpy) and
+# oiiotool (openimageio-tools) when they are missing.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 lightrig=${LIGHTRIG_BUILD:-$root/build/dev}/lightrig
@@ -31,9 +31,10 @@ ground_bsdf=${GROUND_BSDF:-lambert}
 times=${TIMES-5 20 60}
 out=${1:-$(mktemp -d /tmp/lightrig-cycles.XXXXXX)}
 mkdir -p "$out"
-for tool in blender oiiotool; do
-    command -v $tool >/dev/null || { echo "versus_cycles.sh: $tool not found" >&2; exit 1; }
-done
+# The peers come from Debian like the rest (scripts/setup.sh installs only what is missing).
+# shellcheck source=../setup.sh
+source "$root/scripts/setup.sh"
+lightrig_install_packages blender python3-numpy openimageio-tools
 [ -x "$lightrig" ] || { echo "versus_cycles.sh: $lightrig not built" >&2; exit 1; }
 w=${size%x*} h=${size#*x}
 
