@@ -144,6 +144,10 @@ std::optional<SceneOptions> SceneOptionSet::read(const QCommandLineParser& p, QS
             qualityList ? p.value(quality).split(QLatin1Char(',')) : QStringList{p.value(quality)};
         o.qualities.clear();
         for (const QString& name : names) {
+            if (qualityList && pathQuality && name.trimmed() == QLatin1String("path")) {
+                o.pathTraced = true; // bench's path tier beside the raster tiers
+                continue;
+            }
             const auto q = fromString<Quality>(name.trimmed());
             if (!q)
                 return bad(QStringLiteral("--quality must be %1%2, got '%3'")
@@ -157,7 +161,7 @@ std::optional<SceneOptions> SceneOptionSet::read(const QCommandLineParser& p, QS
             if (std::find(o.qualities.begin(), o.qualities.end(), *q) == o.qualities.end())
                 o.qualities.push_back(*q);
         }
-        o.quality = o.qualities.front();
+        if (!o.qualities.empty()) o.quality = o.qualities.front();
     }
     if (p.isSet(exposure)) {
         bool ok = false;
