@@ -139,6 +139,7 @@ std::optional<SceneOptions> SceneOptionSet::read(const QCommandLineParser& p, QS
     }
     if (p.isSet(quality) && pathQuality && p.value(quality) == QLatin1String("path")) {
         o.pathTraced = true;
+        if (qualityList) o.qualities.clear(); // bench: the path tier alone
     } else if (p.isSet(quality)) {
         const QStringList names =
             qualityList ? p.value(quality).split(QLatin1Char(',')) : QStringList{p.value(quality)};

@@ -106,6 +106,24 @@ class TestBenchPath : public QObject {
         QVERIFY(steps[3].toObject().value(QStringLiteral("noise")).toDouble() <
                 steps[1].toObject().value(QStringLiteral("noise")).toDouble());
     }
+
+    // `--quality path` alone runs no raster tier (nor the über-shader run): only the path tier.
+    void pathAlone() {
+        if (!haveDisplay()) QSKIP("needs an X display with OpenGL: run under xvfb-run -a");
+        QTemporaryDir dir;
+        const QString json = dir.filePath(QStringLiteral("bench.json"));
+        const CliRun r = bench({QStringLiteral(LIGHTRIG_TEST_DATA "/model/scene.gltf"),
+                                QStringLiteral("--quality"), QStringLiteral("path"), QStringLiteral("--size"),
+                                QStringLiteral("24x16"), QStringLiteral("--path-samples"),
+                                QStringLiteral("4"), QStringLiteral("--converged-samples"),
+                                QStringLiteral("16"), QStringLiteral("--json"), json});
+        QVERIFY2(r.code == 0, qPrintable(r.show()));
+        QFile f(json);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QJsonObject doc = QJsonDocument::fromJson(f.readAll()).object();
+        QCOMPARE(doc.value(QStringLiteral("results")).toArray().size(), 0);
+        QCOMPARE(doc.value(QStringLiteral("path")).toArray().size(), 1);
+    }
 };
 
 QTEST_MAIN(TestBenchPath)
