@@ -5,6 +5,7 @@
 // bundled Suzanne lit by 1, 8, 64 and 256 procedural lights of each type (area lights: 1, 4 and 16;
 // core/proceduralrig.h).
 // Exit status: 0 measured; 1 a model, rig or output failed, or no OpenGL; 2 usage error.
+#include "benchtraced.h"
 #include "cli.h"
 #include "outputfiles.h"
 #include "sceneoptions.h"
@@ -14,6 +15,7 @@
 #include "render/benchreport.h"
 #include "render/benchscaling.h"
 #include "render/qualitybench.h"
+#include "render/tracebench.h"
 
 #include <QCommandLineParser>
 #include <QDir>
@@ -32,7 +34,8 @@ const char* kUsage =
     "lightrig bench [MODEL...] [--rig RIG] [--camera-index N | --view NAME] [--lights N,...] "
     "[--light-type T,...] [--size WxH] [--shading classic|pbr] [--ground off|visible|catcher] "
     "[--shadows on|off] [--frames N] [--msaa N] [--interactive] [--orbit DEG] [--drag] "
-    "[--quality LIST] [--approximations LIST] [--json OUT.json] [--chart OUT.png] [--scaling-chart OUT.png]";
+    "[--quality LIST[,path] [--path-samples N] [--converged-samples N] [--bounces B] [--threads T]] "
+    "[--approximations LIST] [--json OUT.json] [--chart OUT.png] [--scaling-chart OUT.png]";
 
 const char* kBundledModel = ":/resources/models/suzanne/Suzanne.gltf";
 
@@ -79,6 +82,9 @@ int runBench(const QStringList& args) {
         "type). With lights that cast shadows, the reference traces their visibility and two more columns "
         "give each tier's shadow error: the share of pixels off the traced shadow outside the penumbra band "
         "(shadow off) and their mean error (shadow err; docs/quality.md).\n"
+        "With path in --quality (e.g. exact,balanced,fast,path): a converged path-traced image per scene, "
+        "the path tracer's seconds per sample and PSNR after 1, 4, 16, ... samples, and two more columns "
+        "with each tier's error against the traced image (path PSNR, path err; docs/path-tracing.md).\n"
         "Needs OpenGL 3.3: run it with a display, e.g. under xvfb-run -a.\n"
         "Exit status: 0 measured, 1 bad model, rig or output path, 2 usage error."));
     parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
@@ -151,8 +157,10 @@ int runBench(const QStringList& args) {
                        "physically based rigs only), or none (default b1,b2,b4, what the tiers ship with)."),
         QStringLiteral("LIST"));
     const SceneOptionSet scene;
+    const PathBenchOptionSet pathSet;
     parser.addOption(help);
     scene.addTo(parser);
+    pathSet.addTo(parser);
     parser.addOptions({lights, lightType, lightRange, frames, warmup, msaa, interactive, orbit, drag, json,
                        chart, scalingChart, noErrors, fullReference, noUber, approximations});
     parser.addPositionalArgument(QStringLiteral("MODEL"),
@@ -162,8 +170,11 @@ int runBench(const QStringList& args) {
     const CommandUsage usage{name, kUsage, out, err};
     if (const std::optional<int> done = usage.parse(parser, args, help)) return *done;
     QString message;
-    const std::optional<SceneOptions> sceneOptions = scene.read(parser, &message, true);
+    const std::optional<SceneOptions> sceneOptions = scene.read(parser, &message, true, false, true);
     if (!sceneOptions) return usage(message);
+    const std::optional<PathBenchOptions> pathOptions =
+        pathSet.read(parser, sceneOptions->pathTraced, &message);
+    if (!pathOptions) return usage(message);
     BenchOptions options;
     options.size = sceneOptions->size;
     if (parser.isSet(scene.quality)) options.tiers = sceneOptions->qualities; // default: every tier
@@ -171,7 +182,8 @@ int runBench(const QStringList& args) {
     options.toneMap = sceneOptions->toneMap;
     options.errors = !parser.isSet(noErrors);
     if (parser.isSet(fullReference)) options.maxReferenceWork = std::numeric_limits<double>::infinity();
-    options.uberShader = !parser.isSet(noUber);
+    options.uberShader = !parser.isSet(noUber) && !options.tiers.empty();
+    options.keepImages = sceneOptions->pathTraced; // the path tier compares each tier's image
     options.interactive = parser.isSet(interactive);
     options.dragLight = parser.isSet(drag);
     if (parser.isSet(approximations) &&
@@ -321,6 +333,14 @@ int runBench(const QStringList& args) {
     }
     const BenchStatus status = runQualityBench(scenes, options, &report, &message, progress);
     if (status != BenchStatus::Ok) return failed(message);
+    if (sceneOptions->pathTraced) {
+        err << QStringLiteral("lightrig bench: path tier: %1 converged images of %2 samples, then 1 … %3\n")
+                   .arg(scenes.size())
+                   .arg(pathOptions->convergedSamples)
+                   .arg(pathOptions->samples);
+        err.flush();
+        runPathBench(scenes, *pathOptions, &report);
+    }
     // Issue 15: which environment each model's scenes used, and what loading it cost.
     const EnvironmentLoad* said = nullptr;
     for (const BenchScene& s : scenes) {

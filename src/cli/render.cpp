@@ -36,7 +36,8 @@ const char* kUsage =
     "[--shading classic|pbr] [--ground off|visible|catcher] [--shadows on|off] [--msaa N] "
     "[--environment FILE|builtin:NAME|studio|none] [--environment-intensity EV] "
     "[--environment-rotation DEGREES] [--environment-background visible|blurred|color] "
-    "[--samples N] [--bounces B] [--threads T] [--firefly-clamp X] [--seed S]";
+    "[--samples N] [--time-limit S] [--noise-threshold T] [--bounces B] [--threads T] [--firefly-clamp X] "
+    "[--seed S]";
 
 // A whole number in [lo, hi] from an option's value, or a usage message naming the option.
 std::optional<int> wholeNumber(const QCommandLineParser& parser, const QCommandLineOption& option, int lo,
@@ -105,7 +106,19 @@ int runRender(const QStringList& args) {
                                      QStringLiteral("FILE|-"));
     const QCommandLineOption samplesOption(
         QStringLiteral("samples"),
-        QStringLiteral("--quality path: samples per pixel, 1..1000000 (default 64)."), QStringLiteral("N"));
+        QStringLiteral("--quality path: samples per pixel, 1..1000000 (default 64; with --time-limit or "
+                       "--noise-threshold and no --samples, 1000000)."),
+        QStringLiteral("N"));
+    const QCommandLineOption timeLimitOption(
+        QStringLiteral("time-limit"),
+        QStringLiteral("--quality path: stop after S seconds of tracing (> 0), or at the samples or noise "
+                       "target if sooner."),
+        QStringLiteral("S"));
+    const QCommandLineOption noiseOption(
+        QStringLiteral("noise-threshold"),
+        QStringLiteral("--quality path: stop once the estimated relative noise (the RMS standard error of "
+                       "the pixel means over the mean luminance) is at most T (> 0; 0.01: 1 %)."),
+        QStringLiteral("T"));
     const QCommandLineOption bouncesOption(
         QStringLiteral("bounces"),
         QStringLiteral("--quality path: surface interactions per path, 0..1024 (default 8; 1 is direct light "
@@ -137,7 +150,8 @@ int runRender(const QStringList& args) {
     parser.addOption(output);
     scene.addTo(parser);
     parser.addOptions({supersample, transparent, frames, msaa, turntable, rotate, summary, noMemoryCheck});
-    parser.addOptions({samplesOption, bouncesOption, threadsOption, clampOption, seedOption});
+    parser.addOptions(
+        {samplesOption, timeLimitOption, noiseOption, bouncesOption, threadsOption, clampOption, seedOption});
     parser.addPositionalArgument(QStringLiteral("MODEL"),
                                  QStringLiteral("Model files Assimp reads (glTF, OBJ, FBX, ...)."),
                                  QStringLiteral("MODEL..."));
@@ -159,8 +173,8 @@ int runRender(const QStringList& args) {
     const std::optional<SceneOptions> options = scene.read(parser, &message, false, true, true);
     if (!options) return usage(message);
     TracedRenderOptions traced;
-    for (const QCommandLineOption* o :
-         {&samplesOption, &bouncesOption, &threadsOption, &clampOption, &seedOption})
+    for (const QCommandLineOption* o : {&samplesOption, &timeLimitOption, &noiseOption, &bouncesOption,
+                                        &threadsOption, &clampOption, &seedOption})
         if (parser.isSet(*o) && !options->pathTraced)
             return usage(QStringLiteral("--%1 needs --quality path").arg(o->names().constLast()));
     if (options->pathTraced) {
@@ -180,13 +194,22 @@ int runRender(const QStringList& args) {
             !number(threadsOption, 1, 1024, &traced.threads) ||
             !number(seedOption, 0, 2147483647, &traced.seed))
             return usage(message);
-        if (parser.isSet(clampOption)) {
+        // A positive finite number, or the usage error "--NAME must be WHAT > 0, got 'VALUE'".
+        const auto positive = [&](const QCommandLineOption& o, const char* what, double* v) {
+            if (!parser.isSet(o)) return true;
             bool ok = false;
-            traced.fireflyClamp = parser.value(clampOption).toDouble(&ok);
-            if (!ok || !std::isfinite(traced.fireflyClamp) || !(traced.fireflyClamp > 0.0))
-                return usage(QStringLiteral("--firefly-clamp must be a linear radiance > 0, got '%1'")
-                                 .arg(parser.value(clampOption)));
-        }
+            *v = parser.value(o).toDouble(&ok);
+            if (ok && std::isfinite(*v) && *v > 0.0) return true;
+            message = QStringLiteral("--%1 must be %2 > 0, got '%3'")
+                          .arg(o.names().constLast(), QLatin1String(what), parser.value(o));
+            return false;
+        };
+        if (!positive(clampOption, "a linear radiance", &traced.fireflyClamp) ||
+            !positive(timeLimitOption, "a number of seconds", &traced.timeLimit) ||
+            !positive(noiseOption, "a relative noise", &traced.noiseThreshold))
+            return usage(message);
+        if (!parser.isSet(samplesOption) && (traced.timeLimit > 0.0 || traced.noiseThreshold > 0.0))
+            traced.samples = 1000000;
     }
     request.options = *options;
     for (const QString& rig : parser.values(scene.rig)) {

@@ -5,9 +5,11 @@
 
 #include "scene/scenedescription.h"
 #include "trace/pathtracer.h"
+#include "trace/progressive.h"
 
 #include <QElapsedTimer>
 #include <QTextStream>
+#include <cmath>
 
 namespace lr::cli {
 
@@ -49,9 +51,9 @@ int runRenderTraced(const RenderRequest& request, const RenderItem& item, const 
     settings.seed = std::uint32_t(traced.seed);
     settings.transparent = request.transparent;
     trace::PathTracer tracer(scene, loaded.camera, request.options.size, settings, traced.threads);
-    clock.restart();
-    tracer.render(traced.samples);
-    const double traceSeconds = clock.nsecsElapsed() * 1e-9;
+    const trace::RenderOutcome outcome =
+        trace::renderToTarget(tracer, {traced.samples, traced.timeLimit, traced.noiseThreshold});
+    const double traceSeconds = outcome.seconds;
     if (tracer.nonFiniteSamples() > 0)
         err << name << ": warning: " << tracer.nonFiniteSamples()
             << " samples were not finite and were left out of their pixels' means\n";
@@ -62,12 +64,14 @@ int runRenderTraced(const RenderRequest& request, const RenderItem& item, const 
         err << name << ": " << message << '\n';
         return Failed;
     }
+    const QString noise = std::isfinite(outcome.noise) ? QString::number(outcome.noise, 'g', 3)
+                                                       : QStringLiteral("unknown (under 2 samples)");
     out << QStringLiteral("wrote %1 (%2x%3): path traced, %4 samples per pixel, %5 bounces, %6 threads, %7 s "
-                          "(%8 samples/s); %9 triangles, %10, %11, load %12 s\n")
+                          "(%8 samples/s), noise %13, stopped by %14; %9 triangles, %10, %11, load %12 s\n")
                .arg(item.file)
                .arg(image.width())
                .arg(image.height())
-               .arg(tracer.samplesDone())
+               .arg(outcome.samples)
                .arg(traced.bounces)
                .arg(tracer.threads())
                .arg(traceSeconds, 0, 'f', 2)
@@ -76,7 +80,8 @@ int runRenderTraced(const RenderRequest& request, const RenderItem& item, const 
                     0, 'f', 0)
                .arg(scene->triangles())
                .arg(loaded.rigSource, loaded.cameraSource)
-               .arg(loadSeconds, 0, 'f', 2);
+               .arg(loadSeconds, 0, 'f', 2)
+               .arg(noise, QLatin1String(trace::stopReasonName(outcome.reason)));
     return Ok;
 }
 

@@ -139,11 +139,16 @@ std::optional<SceneOptions> SceneOptionSet::read(const QCommandLineParser& p, QS
     }
     if (p.isSet(quality) && pathQuality && p.value(quality) == QLatin1String("path")) {
         o.pathTraced = true;
+        if (qualityList) o.qualities.clear(); // bench: the path tier alone
     } else if (p.isSet(quality)) {
         const QStringList names =
             qualityList ? p.value(quality).split(QLatin1Char(',')) : QStringList{p.value(quality)};
         o.qualities.clear();
         for (const QString& name : names) {
+            if (qualityList && pathQuality && name.trimmed() == QLatin1String("path")) {
+                o.pathTraced = true; // bench's path tier beside the raster tiers
+                continue;
+            }
             const auto q = fromString<Quality>(name.trimmed());
             if (!q)
                 return bad(QStringLiteral("--quality must be %1%2, got '%3'")
@@ -157,7 +162,7 @@ std::optional<SceneOptions> SceneOptionSet::read(const QCommandLineParser& p, QS
             if (std::find(o.qualities.begin(), o.qualities.end(), *q) == o.qualities.end())
                 o.qualities.push_back(*q);
         }
-        o.quality = o.qualities.front();
+        if (!o.qualities.empty()) o.quality = o.qualities.front();
     }
     if (p.isSet(exposure)) {
         bool ok = false;

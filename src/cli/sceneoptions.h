@@ -57,7 +57,8 @@ struct SceneOptionSet {
     void addTo(QCommandLineParser& parser) const;
     // The parsed values, or a usage error message (exit 2). qualityList: --quality takes a comma list;
     // viewList: --view takes comma lists and may repeat (SceneOptions::views); pathQuality: --quality path
-    // is allowed (SceneOptions::pathTraced).
+    // is allowed (SceneOptions::pathTraced; with qualityList, "path" may be one of the list, and
+    // `qualities` may then be empty).
     std::optional<SceneOptions> read(const QCommandLineParser& parser, QString* usageError,
                                      bool qualityList = false, bool viewList = false,
                                      bool pathQuality = false) const;

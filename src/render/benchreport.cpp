@@ -2,6 +2,7 @@
 
 #include "benchchart.h"
 #include "core/areaintegrate.h"
+#include "tracebench.h"
 
 #include <QJsonArray>
 #include <QPainter>
@@ -37,7 +38,7 @@ QColor tierColor(const BenchResult& r) {
 
 } // namespace
 
-QStringList benchTableHeaders(bool shadows) {
+QStringList benchTableHeaders(bool shadows, bool traced) {
     QStringList h{QStringLiteral("scene"),     QStringLiteral("lights"),   QStringLiteral("tier"),
                   QStringLiteral("ms med"),    QStringLiteral("min"),      QStringLiteral("max"),
                   QStringLiteral("cpu ms"),    QStringLiteral("gpu ms"),   QStringLiteral("×exact"),
@@ -45,12 +46,18 @@ QStringList benchTableHeaders(bool shadows) {
                   QStringLiteral("triangles"), QStringLiteral("max err"),  QStringLiteral("mean err"),
                   QStringLiteral("PSNR dB"),   QStringLiteral(">1 lvl"),   QStringLiteral("NaN/Inf")};
     if (shadows) h << QStringLiteral("shadow off") << QStringLiteral("shadow err");
+    if (traced) h << QStringLiteral("path PSNR") << QStringLiteral("path err");
     return h;
 }
 
 bool benchHasShadows(const BenchReport& report) {
     return std::any_of(report.results.begin(), report.results.end(),
                        [](const BenchResult& r) { return r.hasShadowErrors; });
+}
+
+bool benchHasTraced(const BenchReport& report) {
+    return std::any_of(report.results.begin(), report.results.end(),
+                       [](const BenchResult& r) { return r.hasTracedErrors; });
 }
 
 bool benchHasEnvironment(const BenchReport& report) {
@@ -63,7 +70,7 @@ bool benchHasAreaLights(const BenchReport& report) {
                        [](const BenchResult& r) { return r.hasArea; });
 }
 
-QStringList benchTableRow(const BenchResult& r, bool shadows) {
+QStringList benchTableRow(const BenchResult& r, bool shadows, bool traced) {
     const QString none = QStringLiteral("–");
     QStringList row{r.scene,
                     QStringLiteral("%1/%2").arg(r.lightsUploaded).arg(r.lightsInRig),
@@ -91,14 +98,19 @@ QStringList benchTableRow(const BenchResult& r, bool shadows) {
             << num(r.shadow.meanLevels, 3);
     else if (shadows)
         row << none << none;
+    if (traced && r.hasTracedErrors)
+        row << (std::isfinite(r.tracedErrors.psnrDb) ? num(r.tracedErrors.psnrDb, 1) : QStringLiteral("inf"))
+            << num(r.tracedErrors.meanLevels, 3);
+    else if (traced)
+        row << none << none;
     return row;
 }
 
 QString benchTable(const BenchReport& report) {
-    const bool shadows = benchHasShadows(report);
-    QList<QStringList> rows{benchTableHeaders(shadows)};
+    const bool shadows = benchHasShadows(report), traced = benchHasTraced(report);
+    QList<QStringList> rows{benchTableHeaders(shadows, traced)};
     for (const BenchResult& r : report.results)
-        rows << benchTableRow(r, shadows);
+        rows << benchTableRow(r, shadows, traced);
     const int columns = int(rows.first().size());
     std::vector<int> width(size_t(columns), 0);
     for (const QStringList& row : rows)
@@ -162,6 +174,7 @@ QString benchTable(const BenchReport& report) {
                             num(e.meanErrorLevels, 3), num(e.meanSamples, 0));
         }
     }
+    out += pathBenchTable(report);
     return out;
 }
 
@@ -248,6 +261,12 @@ QJsonObject benchJson(const BenchReport& report) {
             o.insert(QStringLiteral("area_mean_error_levels"), r.area.meanErrorLevels);
             o.insert(QStringLiteral("area_mean_samples"), r.area.meanSamples);
         }
+        if (r.hasTracedErrors) {
+            o.insert(QStringLiteral("path_max_error_levels"), r.tracedErrors.maxLevels);
+            o.insert(QStringLiteral("path_mean_error_levels"), r.tracedErrors.meanLevels);
+            o.insert(QStringLiteral("path_psnr_db"), finiteOrNull(r.tracedErrors.psnrDb));
+            o.insert(QStringLiteral("path_compared_pixels"), double(r.tracedErrors.pixels));
+        }
         results.append(o);
     }
     QJsonArray uber;
@@ -284,6 +303,7 @@ QJsonObject benchJson(const BenchReport& report) {
                                                 {QStringLiteral("uber_shader"), op.uberShader}}},
         {QStringLiteral("reference_ms"), round3(report.referenceMs)},
         {QStringLiteral("results"), results},
+        {QStringLiteral("path"), pathBenchJson(report)},
         {QStringLiteral("uber_shader"), uber}};
     if (benchHasShadows(report))
         doc.insert(QStringLiteral("shadow_measure"),

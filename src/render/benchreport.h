@@ -12,10 +12,13 @@
 namespace lr {
 
 // Column headers and one row of cells per result, as the table shows them (the Quality panel's model).
-// `shadows` adds the shadow measure's two columns (benchHasShadows: only rigs with casters have them).
-QStringList benchTableHeaders(bool shadows = false);
-QStringList benchTableRow(const BenchResult& r, bool shadows = false);
+// `shadows` adds the shadow measure's two columns (benchHasShadows: only rigs with casters have them),
+// `traced` the error against the converged path-traced image (path PSNR, path err; benchHasTraced: with
+// the path tier, tracebench.h).
+QStringList benchTableHeaders(bool shadows = false, bool traced = false);
+QStringList benchTableRow(const BenchResult& r, bool shadows = false, bool traced = false);
 bool benchHasShadows(const BenchReport& report);
+bool benchHasTraced(const BenchReport& report);
 // Whether some scene's reference integrated an environment (BenchResult::hasEnvironment).
 bool benchHasEnvironment(const BenchReport& report);
 bool benchHasAreaLights(const BenchReport& report); // some result's reference integrated area lights
@@ -32,6 +35,8 @@ QString benchTable(const BenchReport& report);
 // shadow_band_pixels; results whose reference integrated an environment environment_source,
 // environment_reference_ms, environment_over_half_level_share, environment_max_error_levels,
 // environment_mean_error_levels and environment_mean_samples (and the document environment_reference).
+// With the path tier, results carry path_psnr_db, path_mean_error_levels, path_max_error_levels and
+// path_compared_pixels, and the document "path" (tracebench.h pathBenchJson; [] without it).
 QJsonObject benchJson(const BenchReport& report);
 
 // The über-shader comparison per scene: specialised exact run against the über-shader run.

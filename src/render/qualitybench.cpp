@@ -199,6 +199,7 @@ bool measure(const BenchScene& scene, const BenchOptions& o, Quality q, bool ube
         if (o.keepImages) {
             r->image = image.convertToFormat(QImage::Format_RGBA8888);
             r->reference = reference->srgb;
+            r->covered = reference->covered;
         }
         r->errors.nonFinite =
             countNonFinite(&radiance.pixels.data()->x, std::int64_t(radiance.pixels.size()), 4);

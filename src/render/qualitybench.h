@@ -34,6 +34,7 @@
 #include <QSize>
 #include <QString>
 #include <QStringList>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -135,6 +136,36 @@ struct BenchResult {
     // BenchOptions::keepImages: the single-sample 8-bit image the errors were measured on, and the
     // reference's (sRGB, RGBA8888); null otherwise.
     QImage image, reference;
+    std::vector<std::uint8_t> covered; // with keepImages: the pixels the errors compare (reference.h)
+    // With the path tier (tracebench.h): the same image against the converged path-traced image, over
+    // the same pixels: what the tier misses of the whole light transport, not only of the direct light.
+    bool hasTracedErrors = false;
+    ErrorFigures tracedErrors;
+};
+
+// The path tier of one scene (tracebench.h): its image after a number of samples against its converged
+// image.
+struct PathBenchStep {
+    int samples = 0;
+    double seconds = 0.0; // since the first sample (wall)
+    double noise = 0.0;   // PathTracer::noiseEstimate (+infinity under 2 samples)
+    ErrorFigures errors;  // against the converged image, every pixel
+};
+
+struct PathBenchResult {
+    QString scene;
+    QSize size;
+    int threads = 0, bounces = 0;
+    qint64 triangles = 0;
+    double buildMs = 0.0; // the traced scene (Embree BVH, textures, environment distribution)
+    int convergedSamples = 0;
+    double convergedSeconds = 0.0;
+    double convergedNoise = 0.0;
+    std::vector<PathBenchStep> steps;
+    double secondsPerSample = 0.0; // the ladder's last step: wall seconds / samples per pixel
+    double samplesPerSecond = 0.0; // samples per pixel per second (its inverse)
+    double secondsTo30Db = -1.0;   // the first step within 30 dB of the converged image; < 0: none
+    QString error;                 // the scene could not be traced (e.g. classic shading): why
 };
 
 struct BenchReport {
@@ -145,6 +176,7 @@ struct BenchReport {
     QString loadAverage;      // /proc/loadavg at the end of the run (empty where unavailable)
     QString glibcTunables;    // GLIBC_TUNABLES the run had: malloc on huge pages or not (core/hugepages.h)
     QStringList notes;        // what the run left out and why (a reference over maxReferenceWork)
+    std::vector<PathBenchResult> path; // the path tier per scene (tracebench.h), when asked for
 };
 
 // Where and how much a tier's image differs from the reference: each pixel the largest channel difference

@@ -1,10 +1,12 @@
 // `lightrig render --quality path` (issue 36): renders on the CPU without a display, writes the image
 // with the scene options' size, gives the same image for the same --seed and another for another seed,
-// and refuses bad --samples, --bounces, --threads, --firefly-clamp and --seed values, the path options
-// without --quality path, and a classic-shading rig, each with a clear message.
+// stops at a time limit or a noise threshold, and refuses bad --samples, --time-limit, --noise-threshold,
+// --bounces, --threads, --firefly-clamp and --seed values, the path options without --quality path, and a
+// classic-shading rig, each with a clear message.
 #include "support/cli.h"
 
 #include <QImage>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -76,6 +78,40 @@ class TraceCli : public QObject {
         QVERIFY(a != c);
     }
 
+    // With no --samples the sample target is out of reach: the time limit or the noise threshold stops
+    // the render, and the summary says which, with the samples done and the noise reached.
+    void stopsAtTimeOrNoise_data() {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<QString>("reason");
+        QTest::newRow("time") << QStringList{QStringLiteral("--time-limit"), QStringLiteral("0.5")}
+                              << QStringLiteral("time");
+        QTest::newRow("noise") << QStringList{QStringLiteral("--noise-threshold"), QStringLiteral("0.3")}
+                               << QStringLiteral("noise");
+    }
+    void stopsAtTimeOrNoise() {
+        QFETCH(QStringList, args);
+        QFETCH(QString, reason);
+        QTemporaryDir dir;
+        const QString out = dir.filePath(QStringLiteral("traced.png"));
+        const CliRun run = runLightrig(
+            QStringList{QStringLiteral("render"), model(), QStringLiteral("--quality"),
+                        QStringLiteral("path"), QStringLiteral("--size"), QStringLiteral("24x16"),
+                        QStringLiteral("--ground"), QStringLiteral("visible"), QStringLiteral("-o"), out} +
+            args);
+        QVERIFY2(run.code == 0, qPrintable(run.show()));
+        const QRegularExpression summary(QStringLiteral(
+            R"(path traced, (\d+) samples per pixel.* ([0-9.]+) s \(\d+ samples/s\), noise ([^,]+), stopped by (\w+);)"));
+        const QRegularExpressionMatch m = summary.match(run.out);
+        QVERIFY2(m.hasMatch(), qPrintable(run.show()));
+        QCOMPARE(m.captured(4), reason);
+        QVERIFY(m.captured(1).toInt() < 1000000);
+        if (reason == QLatin1String("noise")) {
+            QVERIFY2(m.captured(3).toDouble() <= 0.3, qPrintable(run.show()));
+            QVERIFY(m.captured(1).toInt() >= 2);
+        }
+        QCOMPARE(QImage(out).size(), QSize(24, 16));
+    }
+
     void transparentCatcher() {
         QTemporaryDir dir;
         const QString out = dir.filePath(QStringLiteral("catcher.png"));
@@ -118,6 +154,21 @@ class TraceCli : public QObject {
         QTest::newRow("seed -1") << (path + QStringList{QStringLiteral("--seed"), QStringLiteral("-1")}) << 2
                                  << QStringLiteral(
                                         "--seed must be a whole number in 0..2147483647, got '-1'");
+        QTest::newRow("time limit 0")
+            << (path + QStringList{QStringLiteral("--time-limit"), QStringLiteral("0")}) << 2
+            << QStringLiteral("--time-limit must be a number of seconds > 0, got '0'");
+        QTest::newRow("time limit word")
+            << (path + QStringList{QStringLiteral("--time-limit"), QStringLiteral("soon")}) << 2
+            << QStringLiteral("--time-limit must be a number of seconds > 0, got 'soon'");
+        QTest::newRow("noise negative")
+            << (path + QStringList{QStringLiteral("--noise-threshold"), QStringLiteral("-0.1")}) << 2
+            << QStringLiteral("--noise-threshold must be a relative noise > 0, got '-0.1'");
+        QTest::newRow("noise nan")
+            << (path + QStringList{QStringLiteral("--noise-threshold"), QStringLiteral("nan")}) << 2
+            << QStringLiteral("--noise-threshold must be a relative noise > 0, got 'nan'");
+        QTest::newRow("time limit without path")
+            << QStringList{QStringLiteral("--time-limit"), QStringLiteral("4")} << 2
+            << QStringLiteral("--time-limit needs --quality path");
         QTest::newRow("samples without path") << QStringList{QStringLiteral("--samples"), QStringLiteral("4")}
                                               << 2 << QStringLiteral("--samples needs --quality path");
         QTest::newRow("supersample with path")
