@@ -9,6 +9,7 @@
 #include "viewsettings.h"
 
 #include <QMutex>
+#include <QPainter>
 #include <QPointer>
 #include <algorithm>
 #include <atomic>
@@ -26,6 +27,15 @@ template <typename T> double noiseOf(const T& tracer) {
         return tracer.noiseEstimate();
     else
         return -1.0;
+}
+// The tracer's display image, over the background colour where it is transparent.
+QImage displayImage(const trace::PathTracer& tracer, const ViewOptions& options, bool transparent) {
+    const QImage traced = tracer.display(options.exposure, options.toneMap);
+    if (!transparent) return traced;
+    QImage image(traced.size(), QImage::Format_RGB32);
+    image.fill(options.background);
+    QPainter(&image).drawImage(0, 0, traced);
+    return image;
 }
 } // namespace
 
@@ -74,6 +84,9 @@ void TracedView::Job::run(QPointer<TracedView> view) {
         });
         if (!scene) return;
     }
+    // Where no environment is seen, escaped rays go to alpha and the image is laid over the background
+    // colour as it is, untouched by exposure and tone map: the raster's background.
+    settings.transparent = !scene->environmentVisible();
     {
         QMutexLocker locker(&lock);
         if (cancelled.load()) return;
@@ -94,7 +107,7 @@ void TracedView::Job::run(QPointer<TracedView> view) {
         else if (options.traceNoise > 0.0 && noise >= 0.0 && done >= 4 && noise <= options.traceNoise)
             why = QObject::tr("noise target of %1 reached").arg(options.traceNoise);
         if (done > 0 || !why.isEmpty()) {
-            const QImage image = tracer->display(options.exposure, options.toneMap);
+            const QImage image = displayImage(*tracer, options, settings.transparent);
             const int g = generation;
             post([v = view, g, image, done, seconds, noise, finished = !why.isEmpty(), why] {
                 if (v) v->onPass(g, image, done, seconds, noise, finished, why);
