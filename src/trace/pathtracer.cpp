@@ -1,11 +1,14 @@
 #include "pathtracer.h"
 
 #include "core/colour.h"
+#include "core/envintegrate.h"
 #include "core/lighting.h"
 
 #include <QThread>
 #include <QtConcurrent/QtConcurrentMap>
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace lr::trace {
@@ -17,6 +20,7 @@ PathTracer::PathTracer(std::shared_ptr<const TraceScene> scene, const ViewCamera
     const size_t pixels = size_t(std::max(0, size.width())) * size_t(std::max(0, size.height()));
     m_sum.assign(pixels, glm::dvec4(0.0));
     m_count.assign(pixels, 0);
+    m_luminance.assign(pixels, glm::dvec2(0.0));
     m_tilesX = (std::max(0, size.width()) + kTileSize - 1) / kTileSize;
     m_tilesY = (std::max(0, size.height()) + kTileSize - 1) / kTileSize;
 }
@@ -29,12 +33,29 @@ PathTracer::~PathTracer() {
 void PathTracer::restart() {
     std::fill(m_sum.begin(), m_sum.end(), glm::dvec4(0.0));
     std::fill(m_count.begin(), m_count.end(), 0);
+    std::fill(m_luminance.begin(), m_luminance.end(), glm::dvec2(0.0));
     m_nonFinite.store(0);
     m_cancel.store(false);
 }
 
 int PathTracer::samplesDone() const {
     return m_count.empty() ? 0 : *std::min_element(m_count.begin(), m_count.end());
+}
+
+double PathTracer::noiseEstimate() const {
+    if (m_count.empty()) return 0.0;
+    constexpr double kInfinity = std::numeric_limits<double>::infinity();
+    double variance = 0.0, mean = 0.0; // sums over pixels: variance of the mean, mean
+    for (size_t i = 0; i < m_count.size(); ++i) {
+        const double n = double(m_count[i]);
+        if (n < 2.0) return kInfinity;
+        variance += std::max(0.0, m_luminance[i].y) / ((n - 1.0) * n);
+        mean += m_luminance[i].x;
+    }
+    if (!(variance > 0.0)) return variance == 0.0 ? 0.0 : kInfinity; // 0, or a NaN from a bad sample
+    if (!(mean > 0.0) || !std::isfinite(variance)) return kInfinity;
+    const double result = std::sqrt(variance / double(m_count.size())) / (mean / double(m_count.size()));
+    return std::isfinite(result) ? result : kInfinity;
 }
 
 void PathTracer::renderTile(int tile, int samples) {
@@ -45,6 +66,7 @@ void PathTracer::renderTile(int tile, int samples) {
         for (int x = x0; x < x1; ++x) {
             const size_t p = size_t(y) * size_t(m_size.width()) + size_t(x);
             glm::dvec4 sum = m_sum[p];
+            glm::dvec2 lum = m_luminance[p]; // running mean, sum of squared deviations
             for (int k = 0; k < samples; ++k) {
                 Sampler sampler(std::uint32_t(p), std::uint32_t(m_count[p] + k), m_settings.seed);
                 const double jx = m_settings.jitter ? sampler.next() : 0.5;
@@ -53,8 +75,13 @@ void PathTracer::renderTile(int tile, int samples) {
                 const PathSample s = tracePath(*m_scene, m_camera.origin(), dir, sampler, m_settings);
                 nonFinite += s.finite ? 0 : 1;
                 sum += glm::dvec4(s.radiance, s.alpha);
+                const double l = envintegrate::luminance(s.radiance);
+                const double delta = l - lum.x;
+                lum.x += delta / double(m_count[p] + k + 1);
+                lum.y += delta * (l - lum.x);
             }
             m_sum[p] = sum;
+            m_luminance[p] = lum;
             m_count[p] += samples;
         }
     m_nonFinite += nonFinite;

@@ -4,7 +4,7 @@
 // or the tiling, and a pass cancelled half-way keeps its finished tiles (each pixel counts its own
 // samples; the next pass goes on from there). What the editor's progressive view and the benchmark need:
 // render(n) for n more samples per pixel, cancel() from any thread (a running render() returns within
-// one tile's time), restart(), samplesDone(), image().
+// one tile's time), restart(), samplesDone(), image(), noiseEstimate().
 #pragma once
 
 #include "camerarays.h"
@@ -41,6 +41,13 @@ class PathTracer {
     void restart();
     // The fewest samples any pixel has.
     int samplesDone() const;
+    // The image's remaining noise, relative: the root mean square over pixels of the standard error of
+    // each pixel's mean luminance (Rec. 709; sample variance with n − 1, over that pixel's own sample
+    // count n), divided by the mean over pixels of the pixel means' luminance. It falls as 1/√samples;
+    // 0.01 is about 1 % noise. 0 for an image with no variance (a uniform sky, or an image of no
+    // pixels); +infinity while any pixel has fewer than 2 samples (no variance to estimate yet) or when
+    // the mean luminance is 0 while the variance is not. Never NaN.
+    double noiseEstimate() const;
     std::int64_t nonFiniteSamples() const { return m_nonFinite.load(); }
     QSize size() const { return m_size; }
     int threads() const { return m_pool.maxThreadCount(); }
@@ -62,6 +69,9 @@ class PathTracer {
     QThreadPool m_pool;
     std::vector<glm::dvec4> m_sum; // per pixel: radiance, alpha
     std::vector<int> m_count;      // per pixel: samples taken
+    // per pixel: the running mean of the samples' luminance and the sum of squared deviations from it
+    // (Welford: exact 0 for equal samples, no cancellation)
+    std::vector<glm::dvec2> m_luminance;
     std::atomic<bool> m_cancel{false};
     std::atomic<std::int64_t> m_nonFinite{0};
     int m_tilesX = 0, m_tilesY = 0;
