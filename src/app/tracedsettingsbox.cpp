@@ -26,12 +26,13 @@ TracedSettingsBox::TracedSettingsBox(ViewSettings* settings, QWidget* parent)
     m_seconds->setSpecialValueText(tr("no limit"));
     m_seconds->setToolTip(tr("Stop after this many seconds of tracing (0: no limit)"));
     m_noise->setObjectName(QStringLiteral("traceNoise"));
-    m_noise->setRange(0.0, 1.0);
-    m_noise->setDecimals(4);
-    m_noise->setSingleStep(0.001);
+    m_noise->setRange(0.0, 100.0); // percent; ViewOptions::traceNoise is the fraction
+    m_noise->setDecimals(2);
+    m_noise->setSingleStep(0.5);
+    m_noise->setSuffix(tr(" %"));
     m_noise->setSpecialValueText(tr("off"));
-    m_noise->setToolTip(tr("Stop once the estimated noise (the standard error of the pixels' means, in "
-                           "display units) is at or below this (0: off)"));
+    m_noise->setToolTip(tr("Stop once the estimated noise is at or below this (0: off): the pixels' standard "
+                           "error relative to the image's mean luminance; 1 % is a clean image"));
     auto* form = new QFormLayout(this);
     form->addRow(tr("Stop at &samples"), m_samples);
     form->addRow(tr("Stop after &time"), m_seconds);
@@ -48,11 +49,11 @@ void TracedSettingsBox::load() {
     const QSignalBlocker b1(m_samples), b2(m_seconds), b3(m_noise);
     m_samples->setValue(o.traceSamples);
     m_seconds->setValue(o.traceSeconds);
-    m_noise->setValue(o.traceNoise);
+    m_noise->setValue(100.0 * o.traceNoise);
 }
 
 void TracedSettingsBox::store() {
-    m_settings->setTraceTargets(m_samples->value(), m_seconds->value(), m_noise->value());
+    m_settings->setTraceTargets(m_samples->value(), m_seconds->value(), m_noise->value() / 100.0);
 }
 
 } // namespace lr

@@ -21,13 +21,6 @@ namespace {
 constexpr double kPassSeconds = 0.4; // a pass's aim: the image updates about this often
 constexpr int kMaxPassSamples = 16;
 
-// The tracer's noise estimate, or -1 where it has none.
-template <typename T> double noiseOf(const T& tracer) {
-    if constexpr (requires { tracer.noiseEstimate(); })
-        return tracer.noiseEstimate();
-    else
-        return -1.0;
-}
 // The tracer's display image, over the background colour where it is transparent.
 QImage displayImage(const trace::PathTracer& tracer, const ViewOptions& options, bool transparent) {
     const QImage traced = tracer.display(options.exposure, options.toneMap);
@@ -98,14 +91,14 @@ void TracedView::Job::run(QPointer<TracedView> view) {
     for (;;) {
         const int done = tracer->samplesDone();
         const double seconds = clock.nsecsElapsed() * 1e-9;
-        const double noise = done > 0 ? noiseOf(*tracer) : -1.0;
+        const double noise = done > 1 ? tracer->noiseEstimate() : -1.0; // relative; +inf: not yet
         QString why;
         if (options.traceSamples > 0 && done >= options.traceSamples)
             why = QObject::tr("target of %1 samples reached").arg(options.traceSamples);
         else if (options.traceSeconds > 0.0 && seconds >= options.traceSeconds)
             why = QObject::tr("time target of %1 s reached").arg(options.traceSeconds);
         else if (options.traceNoise > 0.0 && noise >= 0.0 && done >= 4 && noise <= options.traceNoise)
-            why = QObject::tr("noise target of %1 reached").arg(options.traceNoise);
+            why = QObject::tr("noise target of %1 % reached").arg(100.0 * options.traceNoise);
         if (done > 0 || !why.isEmpty()) {
             const QImage image = displayImage(*tracer, options, settings.transparent);
             const int g = generation;
@@ -250,7 +243,9 @@ void TracedView::setState(State state) {
 }
 
 QString TracedView::readout() const {
-    const QString noise = m_noise >= 0.0 ? tr(", noise %1").arg(m_noise, 0, 'g', 3) : QString();
+    const QString noise = m_noise >= 0.0 && std::isfinite(m_noise)
+                              ? tr(", noise %1 %").arg(100.0 * m_noise, 0, 'f', 2)
+                              : QString();
     const QString progress =
         tr("%n sample(s), %1 s%2", nullptr, m_samples).arg(m_seconds, 0, 'f', 1).arg(noise);
     switch (m_state) {

@@ -60,7 +60,7 @@ class TracedView : public QObject {
     const QImage& image() const { return m_image; }
     int samples() const { return m_samples; }
     double seconds() const { return m_seconds; }
-    double noise() const { return m_noise; } // < 0: not estimated
+    double noise() const { return m_noise; } // relative (PathTracer::noiseEstimate); < 0: none yet
     // Restarts since construction (tests: a change restarts).
     int restarts() const { return m_generation; }
     // Why the scene was refused, or why accumulation stopped.

@@ -25,7 +25,7 @@ struct ViewOptions {
     bool pathTraced = false;
     int traceSamples = 256;    // samples per pixel
     double traceSeconds = 0.0; // seconds of tracing
-    double traceNoise = 0.0;   // estimated noise (PathTracer::noiseEstimate) at or below this
+    double traceNoise = 0.0;   // estimated relative noise (PathTracer::noiseEstimate) at or below this
     bool operator==(const ViewOptions&) const = default;
 };
 

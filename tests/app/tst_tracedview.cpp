@@ -131,6 +131,24 @@ class TestTracedView : public QObject {
         QVERIFY(traced()->readout().contains(QLatin1String("6 samples")));
     }
 
+    // The noise target: accumulation stops once the estimate is at or below it.
+    void noiseTargetStops() {
+        // The estimate's scale depends on the scene (relative to its mean luminance): the target is a
+        // share of the estimate after a few samples, which more samples reach (it falls as 1/sqrt(n)).
+        settings()->setTraceTargets(0, 0.0, 0.0);
+        QVERIFY(QTest::qWaitFor([&] { return traced()->samples() >= 4 && std::isfinite(traced()->noise()); },
+                                120000));
+        const double target = 0.7 * traced()->noise();
+        settings()->setTraceTargets(0, 0.0, target);
+        QVERIFY(QTest::qWaitFor([&] { return traced()->state() == TracedView::State::Done; }, 120000));
+        QVERIFY2(traced()->noise() >= 0.0 && traced()->noise() <= target, qPrintable(traced()->readout()));
+        QVERIFY(traced()->readout().contains(QLatin1String("noise")));
+        QVERIFY(traced()->message().contains(QLatin1String("noise target")));
+        const int samples = traced()->samples();
+        QTest::qWait(400);
+        QCOMPARE(traced()->samples(), samples);
+    }
+
     void rigChangeRestarts() {
         settings()->setTraceTargets(0, 0.0, 0.0); // no target: it goes on
         QVERIFY(QTest::qWaitFor([&] { return traced()->samples() >= 4; }, 120000));
