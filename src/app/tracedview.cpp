@@ -6,10 +6,10 @@
 #include "scene/scenedescription.h"
 #include "trace/pathtracer.h"
 #include "tracedoverlay.h"
+#include "tracedshot.h"
 #include "viewsettings.h"
 
 #include <QMutex>
-#include <QPainter>
 #include <QPointer>
 #include <algorithm>
 #include <atomic>
@@ -21,15 +21,6 @@ namespace {
 constexpr double kPassSeconds = 0.4; // a pass's aim: the image updates about this often
 constexpr int kMaxPassSamples = 16;
 
-// The tracer's display image, over the background colour where it is transparent.
-QImage displayImage(const trace::PathTracer& tracer, const ViewOptions& options, bool transparent) {
-    const QImage traced = tracer.display(options.exposure, options.toneMap);
-    if (!transparent) return traced;
-    QImage image(traced.size(), QImage::Format_RGB32);
-    image.fill(options.background);
-    QPainter(&image).drawImage(0, 0, traced);
-    return image;
-}
 } // namespace
 
 // One traced view: what it shows (camera, size, settings) and the scene it traces or builds. The worker
@@ -100,7 +91,7 @@ void TracedView::Job::run(QPointer<TracedView> view) {
         else if (options.traceNoise > 0.0 && noise >= 0.0 && done >= 4 && noise <= options.traceNoise)
             why = QObject::tr("noise target of %1 % reached").arg(100.0 * options.traceNoise);
         if (done > 0 || !why.isEmpty()) {
-            const QImage image = displayImage(*tracer, options, settings.transparent);
+            const QImage image = tracedDisplay(*tracer, options, false);
             const int g = generation;
             post([v = view, g, image, done, seconds, noise, finished = !why.isEmpty(), why] {
                 if (v) v->onPass(g, image, done, seconds, noise, finished, why);
@@ -240,6 +231,10 @@ void TracedView::onPass(int generation, const QImage& image, int samples, double
 void TracedView::setState(State state) {
     m_state = state;
     emit updated();
+}
+
+TracedInputs TracedView::inputs() const {
+    return {m_scene->model(), m_doc->renderRig(), m_scene->environment(), m_camera, m_settings->options()};
 }
 
 QString TracedView::readout() const {

@@ -32,6 +32,7 @@ class TraceScene;
 class Document;
 class Scene;
 class TracedOverlay;
+struct TracedInputs;
 class TracedView : public QObject {
     Q_OBJECT
   public:
@@ -65,6 +66,8 @@ class TracedView : public QObject {
     int restarts() const { return m_generation; }
     // Why the scene was refused, or why accumulation stopped.
     QString message() const { return m_message; }
+    // The scene as drawn now (the camera of the last frame drawn), for a traced screenshot (tracedshot.h).
+    TracedInputs inputs() const;
     // One line: the state, samples, seconds and noise, as the overlay shows it.
     QString readout() const;
 

@@ -3,12 +3,15 @@
 // change starts it over, the samples target stops it, a classic rig is refused with the raster image kept,
 // the event loop keeps running while it traces, and the window is destroyed cleanly while it traces.
 #include "app/rendersettingsdock.h"
+#include "app/screenshotjob.h"
 #include "app/tracedview.h"
 #include "app/viewsettings.h"
 #include "startwindow.h"
 
 #include <QComboBox>
 #include <QElapsedTimer>
+#include <QFile>
+#include <QTemporaryDir>
 #include <QTimer>
 #include <memory>
 
@@ -184,6 +187,7 @@ class TestTracedView : public QObject {
         QTest::qWait(2000);
         timer.stop();
         QVERIFY(traced()->samples() > samples); // it was tracing all along
+        qInfo("event loop while tracing: longest 10 ms timer gap %lld ms over %d ticks", worst, ticks);
         QVERIFY2(worst < 300, qPrintable(QStringLiteral("longest gap %1 ms").arg(worst)));
         QVERIFY(ticks > 20);
     }
@@ -215,6 +219,52 @@ class TestTracedView : public QObject {
         QVERIFY(!m_window->viewport()->findChild<QWidget*>(QStringLiteral("TracedOverlay"))->isVisible());
         settings()->setPathTraced(true);
         QVERIFY(QTest::qWaitFor([&] { return traced()->samples() > 0; }, 60000));
+    }
+
+    // Export screenshot, path traced: on a worker, progress by samples, the file written.
+    void tracedScreenshot() {
+        QTemporaryDir dir;
+        ScreenshotOptions o;
+        o.path = dir.filePath(QStringLiteral("traced.png"));
+        o.size = QSize(200, 150);
+        o.pathTraced = true;
+        o.traceSamples = 4;
+        ScreenshotJob job(m_window->viewport(), o);
+        QList<int> percents;
+        connect(&job, &ScreenshotJob::progressChanged, this, [&](int p) { percents.append(p); });
+        QSignalSpy done(&job, &ScreenshotJob::finished);
+        job.start();
+        QVERIFY(done.count() > 0 || done.wait(120000));
+        QVERIFY2(job.result().ok(), qPrintable(job.result().error));
+        QCOMPARE(percents.last(), 100);
+        const QImage image(o.path);
+        QCOMPARE(image.size(), o.size);
+        QVERIFY(shareUnlike(image, settings()->options().background, 12) > 0.005); // the model is in it
+    }
+
+    void tracedScreenshotCancel() {
+        QTemporaryDir dir;
+        ScreenshotOptions o;
+        o.path = dir.filePath(QStringLiteral("traced.png"));
+        {
+            QFile old(o.path);
+            QVERIFY(old.open(QIODevice::WriteOnly));
+            old.write("the file before");
+        }
+        o.size = QSize(400, 300);
+        o.pathTraced = true;
+        o.traceSamples = 100000; // hours: only Cancel ends it
+        ScreenshotJob job(m_window->viewport(), o);
+        QSignalSpy done(&job, &ScreenshotJob::finished);
+        job.start();
+        QTest::qWait(500);
+        QVERIFY(job.isRunning());
+        job.cancel();
+        QVERIFY(done.count() > 0 || done.wait(60000));
+        QVERIFY(job.result().cancelled);
+        QFile old(o.path);
+        QVERIFY(old.open(QIODevice::ReadOnly));
+        QCOMPARE(old.readAll(), QByteArray("the file before"));
     }
 
     // Last: the window goes while a pass is running; its job is cancelled and waited for.
