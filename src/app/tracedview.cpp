@@ -25,11 +25,20 @@ constexpr int kMaxPassSamples = 16;
 
 // One traced view: what it shows (camera, size, settings) and the scene it traces or builds. The worker
 // owns the tracer; the GUI thread only cancels it (under `lock`, since the worker creates it).
+// The traced scene of the latest scene revision a job built, shared by the jobs (which run one at a time on
+// the worker): a camera change reuses it, and a job queued behind a build does not build again.
+struct TracedView::SceneCache {
+    QMutex lock;
+    int revision = -1;
+    std::shared_ptr<const trace::TraceScene> scene;
+    QString error; // why it could not be built
+};
+
 struct TracedView::Job {
     int generation = 0;
     int sceneRevision = 0;
-    std::shared_ptr<const trace::TraceScene> scene; // null: build it from the three below
-    std::shared_ptr<const Model> model;
+    std::shared_ptr<SceneCache> cache;
+    std::shared_ptr<const Model> model; // what the scene is built from when the cache is older
     Rig rig;
     std::shared_ptr<const LoadedEnvironment> environment;
     ViewCamera camera;
@@ -54,20 +63,33 @@ void TracedView::Job::run(QPointer<TracedView> view) {
         if (view) QMetaObject::invokeMethod(view.data(), std::forward<decltype(f)>(f), Qt::QueuedConnection);
     };
     if (cancelled.load()) return;
-    if (!scene) {
-        SceneDescription description;
-        description.setModel(model);
-        description.setRig(rig);
-        description.setEnvironment(environment);
-        QString error;
-        scene = model && !model->meshes.empty() ? trace::TraceScene::build(description, &error) : nullptr;
-        if (!scene && error.isEmpty()) error = QObject::tr("no model is loaded");
-        const int g = generation, r = sceneRevision;
-        post([v = view, g, r, s = scene, error] {
-            if (v) v->onSceneBuilt(g, r, s, error);
-        });
-        if (!scene) return;
+    std::shared_ptr<const trace::TraceScene> scene;
+    QString error;
+    bool built = false;
+    {
+        QMutexLocker locker(&cache->lock);
+        if (cache->revision != sceneRevision) {
+            SceneDescription description;
+            description.setModel(model);
+            description.setRig(rig);
+            description.setEnvironment(environment);
+            cache->scene =
+                model && !model->meshes.empty() ? trace::TraceScene::build(description, &error) : nullptr;
+            if (!cache->scene && error.isEmpty()) error = QObject::tr("no model is loaded");
+            cache->error = error;
+            cache->revision = sceneRevision;
+            built = true;
+        }
+        scene = cache->scene;
+        error = cache->error;
     }
+    if (built || !scene) {
+        const int g = generation, r = sceneRevision;
+        post([v = view, g, r, ok = scene != nullptr, error] {
+            if (v) v->onSceneBuilt(g, r, ok, error);
+        });
+    }
+    if (!scene) return;
     // Where no environment is seen, escaped rays go to alpha and the image is laid over the background
     // colour as it is, untouched by exposure and tone map: the raster's background.
     settings.transparent = !scene->environmentVisible();
@@ -110,7 +132,7 @@ void TracedView::Job::run(QPointer<TracedView> view) {
 
 TracedView::TracedView(QWidget* viewport, Document* document, Scene* scene, ViewSettings* settings)
     : QObject(viewport), m_doc(document), m_scene(scene), m_settings(settings),
-      m_overlay(new TracedOverlay(this, viewport)) {
+      m_overlay(new TracedOverlay(this, viewport)), m_cache(std::make_shared<SceneCache>()) {
     m_worker.setMaxThreadCount(1);
     m_settle.setSingleShot(true);
     m_settle.setInterval(kSettleMs);
@@ -184,7 +206,7 @@ void TracedView::startJob() {
     auto job = std::make_shared<Job>();
     job->generation = m_generation;
     job->sceneRevision = m_sceneRevision;
-    if (m_builtRevision == m_sceneRevision) job->scene = m_traceScene;
+    job->cache = m_cache;
     job->model = m_scene->model();
     job->rig = m_doc->renderRig();
     job->environment = m_scene->environment();
@@ -194,17 +216,15 @@ void TracedView::startJob() {
     const QColor bg = job->options.background.toRgb();
     job->settings.background = colour::srgbToLinear(glm::dvec3(bg.redF(), bg.greenF(), bg.blueF()));
     m_job = job;
-    setState(job->scene ? State::Tracing : State::Building);
+    setState(m_builtRevision == m_sceneRevision ? State::Tracing : State::Building);
     m_worker.start([job, view = QPointer<TracedView>(this)] { job->run(view); });
 }
 
-void TracedView::onSceneBuilt(int generation, int sceneRevision,
-                              std::shared_ptr<const trace::TraceScene> scene, const QString& error) {
+void TracedView::onSceneBuilt(int generation, int sceneRevision, bool ok, const QString& error) {
     if (sceneRevision != m_sceneRevision) return; // the scene changed since
-    m_traceScene = std::move(scene);
     m_builtRevision = sceneRevision;
     if (generation != m_generation) return;
-    if (!m_traceScene) {
+    if (!ok) {
         m_message = error;
         m_job.reset();
         setState(State::Refused);

@@ -25,10 +25,6 @@
 
 namespace lr {
 
-namespace trace {
-class TraceScene;
-}
-
 class Document;
 class Scene;
 class TracedOverlay;
@@ -76,6 +72,7 @@ class TracedView : public QObject {
 
   private:
     struct Job;
+    struct SceneCache;
     void restart(bool sceneChanged);
     void startJob();
     void cancelJob();
@@ -83,8 +80,7 @@ class TracedView : public QObject {
     void onSettingsChanged();
     void onPass(int generation, const QImage& image, int samples, double seconds, double noise, bool done,
                 const QString& why);
-    void onSceneBuilt(int generation, int sceneRevision, std::shared_ptr<const trace::TraceScene> scene,
-                      const QString& error);
+    void onSceneBuilt(int generation, int sceneRevision, bool ok, const QString& error);
 
     Document* m_doc;
     ViewOptions m_options; // as last seen
@@ -97,8 +93,8 @@ class TracedView : public QObject {
     State m_state = State::Off;
     int m_generation = 0;     // of the job whose passes are shown
     int m_sceneRevision = 0;  // changes with the model, the rig and the environment
-    int m_builtRevision = -1; // what m_traceScene was built for
-    std::shared_ptr<const trace::TraceScene> m_traceScene;
+    int m_builtRevision = -1; // the scene revision the worker built last
+    std::shared_ptr<SceneCache> m_cache;
     ViewCamera m_camera;
     QSize m_size;
     bool m_haveView = false;
