@@ -261,8 +261,8 @@ QString TracedView::readout() const {
     const QString noise = m_noise >= 0.0 && std::isfinite(m_noise)
                               ? tr(", noise %1 %").arg(100.0 * m_noise, 0, 'f', 2)
                               : QString();
-    const QString progress =
-        tr("%n sample(s), %1 s%2", nullptr, m_samples).arg(m_seconds, 0, 'f', 1).arg(noise);
+    const QString progress = (m_samples == 1 ? tr("1 sample") : tr("%1 samples").arg(m_samples)) +
+                             tr(", %1 s%2").arg(m_seconds, 0, 'f', 1).arg(noise);
     switch (m_state) {
     case State::Off:
         return {};

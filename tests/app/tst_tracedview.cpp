@@ -131,7 +131,8 @@ class TestTracedView : public QObject {
         QTest::qWait(600);
         QCOMPARE(traced()->samples(), 6);
         QVERIFY(traced()->state() == TracedView::State::Done);
-        QVERIFY(traced()->readout().contains(QLatin1String("6 samples")));
+        QVERIFY2(traced()->readout().startsWith(QLatin1String("Path traced: 6 samples, ")),
+                 qPrintable(traced()->readout()));
     }
 
     // The noise target: accumulation stops once the estimate is at or below it.
