@@ -7,6 +7,7 @@
 #include "modeltooltips.h"
 #include "numberedit.h"
 #include "scene.h"
+#include "tracedsettingsbox.h"
 #include "ui_rendersettings.h"
 #include "viewsettings.h"
 
@@ -42,6 +43,9 @@ RenderSettingsDock::RenderSettingsDock(Document* document, ViewSettings* setting
     m_ui->setupUi(body);
     m_environment = new EnvironmentBox(m_doc, body); // below the Ground box
     m_ui->mainLayout->insertWidget(m_ui->mainLayout->indexOf(m_ui->groundGroup) + 1, m_environment);
+    // The path-traced view's targets (issue 36), below the Environment box.
+    m_ui->mainLayout->insertWidget(m_ui->mainLayout->indexOf(m_environment) + 1,
+                                   new TracedSettingsBox(m_settings, body));
     // Scrolled like the Properties dock it shares a tab with, so its boxes (Ground made it taller) never set
     // a minimum height on the main window.
     auto* scroll = new QScrollArea(this);
@@ -51,6 +55,12 @@ RenderSettingsDock::RenderSettingsDock(Document* document, ViewSettings* setting
     setWidget(scroll);
     fillCombo<ToneMap>(m_ui->toneMap);
     fillCombo<Quality>(m_ui->quality);
+    m_ui->quality->addItem(tr("path traced")); // after the raster tiers: ViewOptions::pathTraced
+    m_ui->quality->setItemData(
+        enumCount<Quality>(),
+        tr("Once the view is still, path-traced samples accumulate (the targets are in "
+           "the Path traced box); while it changes, the raster tier chosen last is shown"),
+        Qt::ToolTipRole);
     fillCombo<SpecularModel>(m_ui->specularModel);
     fillCombo<ViewerModel>(m_ui->viewerModel);
     installModelTooltips<SpecularModel>(m_ui->specularModel);
@@ -67,8 +77,12 @@ RenderSettingsDock::RenderSettingsDock(Document* document, ViewSettings* setting
             [this](int v) { m_settings->setExposure(v / 10.0); });
     connect(m_ui->toneMap, &QComboBox::activated, this,
             [this](int i) { m_settings->setToneMap(ToneMap(i)); });
-    connect(m_ui->quality, &QComboBox::activated, this,
-            [this](int i) { m_settings->setQuality(Quality(i)); });
+    connect(m_ui->quality, &QComboBox::activated, this, [this](int i) {
+        ViewOptions o = m_settings->options();
+        o.pathTraced = i == enumCount<Quality>();
+        if (!o.pathTraced) o.quality = Quality(i);
+        m_settings->setOptions(o);
+    });
     connect(m_ui->grid, &QCheckBox::toggled, m_settings, &ViewSettings::setGrid);
     connect(m_ui->gizmos, &QCheckBox::toggled, m_settings, &ViewSettings::setGizmos);
     connect(m_ui->background, &QToolButton::clicked, this, [this] {
@@ -151,7 +165,7 @@ void RenderSettingsDock::loadView() {
     m_ui->exposure->setValue(o.exposure);
     m_ui->exposureSlider->setValue(int(std::lround(o.exposure * 10.0)));
     m_ui->toneMap->setCurrentIndex(int(o.toneMap));
-    m_ui->quality->setCurrentIndex(int(o.quality));
+    m_ui->quality->setCurrentIndex(o.pathTraced ? enumCount<Quality>() : int(o.quality));
     m_ui->grid->setChecked(o.grid);
     m_ui->gizmos->setChecked(o.gizmos);
     m_ui->background->setIcon(swatch(o.background));

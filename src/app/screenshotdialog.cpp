@@ -2,17 +2,35 @@
 
 #include "ui_screenshotdialog.h"
 
+#include <QCheckBox>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QHBoxLayout>
 #include <QPushButton>
 #include <QSettings>
+#include <QSpinBox>
 
 namespace lr {
 
 ScreenshotDialog::ScreenshotDialog(const QSize& viewportSize, const QString& suggestedPath, QWidget* parent)
-    : QDialog(parent), m_ui(std::make_unique<Ui::ScreenshotDialog>()), m_viewportSize(viewportSize) {
+    : QDialog(parent), m_ui(std::make_unique<Ui::ScreenshotDialog>()), m_viewportSize(viewportSize),
+      m_pathTraced(new QCheckBox(tr("&Path traced"))), m_traceSamples(new QSpinBox) {
     m_ui->setupUi(this);
+    // Path traced (issue 36): the samples per pixel beside the box, enabled with it.
+    m_pathTraced->setObjectName(QStringLiteral("pathTraced"));
+    m_pathTraced->setToolTip(
+        tr("Render the true image of the rig (every bounce, the environment's shadows) "
+           "on the CPU instead of the raster tier; progress and Cancel in the status bar"));
+    m_traceSamples->setObjectName(QStringLiteral("traceSamples"));
+    m_traceSamples->setRange(1, 65536);
+    m_traceSamples->setSuffix(tr(" samples"));
+    m_traceSamples->setToolTip(tr("Samples per pixel: noise falls as one over their square root"));
+    auto* traceRow = new QHBoxLayout;
+    traceRow->addWidget(m_pathTraced);
+    traceRow->addWidget(m_traceSamples, 1);
+    m_ui->form->addRow(tr("Quality"), traceRow);
+    connect(m_pathTraced, &QCheckBox::toggled, m_traceSamples, &QWidget::setEnabled);
     QSettings s;
     s.beginGroup(QStringLiteral("screenshot"));
     ScreenshotOptions o;
@@ -21,6 +39,8 @@ ScreenshotDialog::ScreenshotDialog(const QSize& viewportSize, const QString& sug
     o.transparent = s.value(QStringLiteral("transparent"), o.transparent).toBool();
     o.gizmos = s.value(QStringLiteral("gizmos"), o.gizmos).toBool();
     o.format = s.value(QStringLiteral("format"), o.format).toByteArray();
+    o.pathTraced = s.value(QStringLiteral("pathTraced"), o.pathTraced).toBool();
+    o.traceSamples = s.value(QStringLiteral("traceSamples"), o.traceSamples).toInt();
     // The file last exported to, while its folder is there (issue 41: the dialog forgot it); else the
     // suggestion (the rig's name beside the rig).
     const QString last = s.value(QStringLiteral("path")).toString();
@@ -53,6 +73,8 @@ ScreenshotOptions ScreenshotDialog::options() const {
     o.format = m_ui->format->currentIndex() == 1 ? QByteArray("JPEG") : QByteArray("PNG");
     o.transparent = o.format == "PNG" && m_ui->transparent->isChecked();
     o.gizmos = m_ui->gizmos->isChecked();
+    o.pathTraced = m_pathTraced->isChecked();
+    o.traceSamples = m_traceSamples->value();
     return o;
 }
 
@@ -64,6 +86,9 @@ void ScreenshotDialog::setOptions(const ScreenshotOptions& o) {
     m_ui->format->setCurrentIndex(o.format == "JPEG" ? 1 : 0);
     m_ui->transparent->setChecked(o.transparent);
     m_ui->gizmos->setChecked(o.gizmos);
+    m_pathTraced->setChecked(o.pathTraced);
+    m_traceSamples->setValue(o.traceSamples);
+    m_traceSamples->setEnabled(o.pathTraced);
     syncFormat();
 }
 
@@ -111,6 +136,8 @@ void ScreenshotDialog::accept() {
     s.setValue(QStringLiteral("transparent"), o.transparent);
     s.setValue(QStringLiteral("gizmos"), o.gizmos);
     s.setValue(QStringLiteral("format"), o.format);
+    s.setValue(QStringLiteral("pathTraced"), o.pathTraced);
+    s.setValue(QStringLiteral("traceSamples"), o.traceSamples);
     s.setValue(QStringLiteral("path"), QFileInfo(o.path).absoluteFilePath());
     s.endGroup();
     QDialog::accept();

@@ -1,5 +1,6 @@
 // "Export screenshot" options (form ui/screenshotdialog.ui): file, size independent of the window,
-// supersampling 1–4×, transparent background (PNG only), PNG or JPEG, gizmos on/off. Remembered in QSettings.
+// supersampling 1–4×, transparent background (PNG only), PNG or JPEG, gizmos on/off, path traced with its
+// samples per pixel. Remembered in QSettings.
 #pragma once
 
 #include <QDialog>
@@ -9,6 +10,8 @@
 namespace Ui {
 class ScreenshotDialog;
 }
+class QCheckBox;
+class QSpinBox;
 
 namespace lr {
 
@@ -19,6 +22,10 @@ struct ScreenshotOptions {
     bool transparent = false;
     bool gizmos = false;
     QByteArray format = "PNG"; // "PNG" or "JPEG"
+    // Path traced (issue 36; tracedshot.h): this many samples per pixel instead of the raster tier
+    // (supersampling and gizmos do not apply: the samples antialias, and gizmos are not in the scene).
+    bool pathTraced = false;
+    int traceSamples = 64;
     // Rendered pixels per tile side when exported with progress (screenshotexport.h): small enough that
     // the window repaints and Cancel answers between tiles even on a software renderer. Not in the form.
     int tileSize = 1024;
@@ -42,6 +49,8 @@ class ScreenshotDialog : public QDialog {
 
     std::unique_ptr<Ui::ScreenshotDialog> m_ui;
     QSize m_viewportSize;
+    QCheckBox* m_pathTraced;
+    QSpinBox* m_traceSamples;
 };
 
 } // namespace lr

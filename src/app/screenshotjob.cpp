@@ -1,6 +1,8 @@
 #include "screenshotjob.h"
 
 #include "snapshotrenderer.h"
+#include "tracedshot.h"
+#include "tracedview.h"
 #include "viewport.h"
 
 #include <QFileInfo>
@@ -25,15 +27,47 @@ ScreenshotJob::ScreenshotJob(Viewport* viewport, const ScreenshotOptions& option
         if (m_result.ok()) setPercent(100);
         finish();
     });
+    connect(&m_trace, &QFutureWatcher<QImage>::finished, this, [this] {
+        m_traceProgress.stop();
+        QImage image = m_trace.result();
+        m_traced.reset();
+        if (m_cancel) {
+            m_result.cancelled = true;
+            return finish();
+        }
+        if (image.isNull()) {
+            m_result.error = m_traceError;
+            return finish();
+        }
+        m_writing = true; // the status bar says "Writing" from here
+        setPercent(kRenderedPercent);
+        write(std::move(image));
+    });
+    m_traceProgress.setInterval(100);
+    connect(&m_traceProgress, &QTimer::timeout, this, [this] {
+        if (m_traced) setPercent(kRenderedPercent * m_traced->samplesDone() / m_traced->samples());
+    });
 }
 
 ScreenshotJob::~ScreenshotJob() {
     m_cancel = true;
+    if (m_traced) m_traced->cancel();
+    m_trace.waitForFinished(); // within one tile, or after a scene build
     m_write.waitForFinished();
+}
+
+void ScreenshotJob::startTraced() {
+    m_traced = std::make_shared<TracedShot>(m_viewport->tracedView()->inputs(), m_options.size,
+                                            m_options.traceSamples, m_options.transparent);
+    emit progressChanged(0);
+    m_traceProgress.start();
+    m_trace.setFuture(
+        QtConcurrent::run([shot = m_traced, error = &m_traceError] { return shot->render(error); }));
 }
 
 void ScreenshotJob::start() {
     m_running = true;
+    if (m_options.pathTraced && m_viewport) return startTraced();
     QString error;
     m_job = m_viewport ? m_viewport->beginScreenshot(m_options, &error) : nullptr;
     if (!m_job) {
@@ -47,6 +81,7 @@ void ScreenshotJob::start() {
 
 void ScreenshotJob::cancel() {
     m_cancel = true;
+    if (m_traced) m_traced->cancel();
 }
 
 void ScreenshotJob::setPercent(int percent) {
@@ -71,11 +106,17 @@ void ScreenshotJob::step() {
     setPercent(int(kRenderedPercent * tiles.pixelsDone / std::max<qint64>(1, tiles.pixelsTotal)));
     if (!m_writing) return; // the next tile on the next pass
     m_slice.stop();
-    m_write.setFuture(QtConcurrent::run(
-        [this, image = std::move(m_job->tiles.image), path = m_options.path, format = m_options.format] {
+    QImage image = std::move(m_job->tiles.image);
+    m_job.reset(); // the snapshot of the scene is no longer needed
+    write(std::move(image));
+}
+
+void ScreenshotJob::write(QImage image) {
+    m_writing = true;
+    m_write.setFuture(
+        QtConcurrent::run([this, image = std::move(image), path = m_options.path, format = m_options.format] {
             return saveImageAtomically(image, path, format, &m_cancel, &m_stopped);
         }));
-    m_job.reset(); // the snapshot of the scene is no longer needed
 }
 
 void ScreenshotJob::finish() {

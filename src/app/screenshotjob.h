@@ -3,14 +3,17 @@
 // settings, the model and the environment: edits made meanwhile do not change the image), then renders one
 // tile per pass of the event loop on the GUI thread (the offscreen GL context lives there), so the window
 // keeps taking input between tiles; the file is encoded and written atomically on a worker thread
-// (render/imagefile.h). Progress is honest: the share of rendered pixels, up to kRenderedPercent, then 100
-// when the file is written. Cancel (or a failure) leaves an existing file byte for byte as it was.
+// (render/imagefile.h). A path-traced screenshot (ScreenshotOptions::pathTraced) renders on a worker
+// instead (tracedshot.h), its progress the samples done. Progress is honest: the share of rendered pixels, up
+// to kRenderedPercent, then 100 when the file is written. Cancel (or a failure) leaves an existing file byte
+// for byte as it was.
 #pragma once
 
 #include "screenshotdialog.h"
 #include "screenshotexport.h"
 
 #include <QFutureWatcher>
+#include <QImage>
 #include <QObject>
 #include <QPointer>
 #include <QTimer>
@@ -22,6 +25,7 @@ class QMainWindow;
 namespace lr {
 
 struct SnapshotJob;
+class TracedShot;
 class Viewport;
 
 class ScreenshotJob : public QObject {
@@ -48,6 +52,8 @@ class ScreenshotJob : public QObject {
 
   private:
     void step();
+    void startTraced();
+    void write(QImage image);
     void finish();
     void setPercent(int percent);
 
@@ -56,6 +62,10 @@ class ScreenshotJob : public QObject {
     std::unique_ptr<SnapshotJob> m_job;
     QTimer m_slice;
     QFutureWatcher<QString> m_write;
+    std::shared_ptr<TracedShot> m_traced; // a path-traced screenshot's renderer
+    QFutureWatcher<QImage> m_trace;
+    QString m_traceError;
+    QTimer m_traceProgress;
     std::atomic<bool> m_cancel{false};
     bool m_stopped = false; // the writer saw the cancel before the commit
     bool m_running = false, m_writing = false;

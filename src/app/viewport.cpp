@@ -9,6 +9,7 @@
 #include "screenshotdialog.h"
 #include "screenshotexport.h"
 #include "snapshotrenderer.h"
+#include "tracedview.h"
 #include "viewsettings.h"
 
 #include <QFocusEvent>
@@ -36,7 +37,8 @@ constexpr double kWheelStep = 0.85; // distance factor per wheel notch (towards 
 Viewport::Viewport(Document* document, Scene* scene, ViewSettings* settings, QWidget* parent)
     : QOpenGLWidget(parent), m_doc(document), m_scene(scene), m_settings(settings),
       m_interaction(std::make_unique<GizmoInteraction>(document, scene)),
-      m_snapshots(std::make_unique<SnapshotRenderer>(scene)) {
+      m_snapshots(std::make_unique<SnapshotRenderer>(scene)),
+      m_traced(new TracedView(this, document, scene, settings)) {
     setObjectName(QStringLiteral("Viewport"));
     setMinimumSize(200, 150);
     setFocusPolicy(Qt::StrongFocus); // a click takes the keyboard focus; the wheel too (wheelEvent)
@@ -70,6 +72,7 @@ void Viewport::setNavigating(bool on) {
 }
 
 Viewport::~Viewport() {
+    delete std::exchange(m_traced, nullptr); // cancels its job and waits for the worker's tile
     m_snapshots.reset();
     releaseGL();
     // ~QOpenGLWidget destroys the context, whose aboutToBeDestroyed would call releaseGL on a Viewport that
@@ -166,6 +169,8 @@ void Viewport::paintGL() {
         }
         return;
     }
+    // Path traced (tracedview.h): accumulates once this camera and size hold still.
+    m_traced->viewDrawn(renderCamera(), size, m_navigating || (m_compare && m_compare->isActive()));
     const RenderStats& st = r.stats();
     emit frameRendered(st.lastGpuMs, st.lastCpuMs);
     if (m_framesRendered++ == 0) emit firstFrame();

@@ -25,6 +25,7 @@ struct LoadedEnvironment;
 struct Rig;
 class Scene;
 class SnapshotRenderer;
+class TracedView;
 struct SnapshotJob;
 class ViewSettings;
 struct RenderSettings;
@@ -51,6 +52,7 @@ class Viewport : public QOpenGLWidget {
     ScreenProjector projector() const; // widget pixels, the current camera
     std::optional<QPointF> lightScreenPosition(int row) const;
     GizmoInteraction* interaction() const { return m_interaction.get(); }
+    TracedView* tracedView() const { return m_traced; } // the "Path traced" view (tracedview.h)
     bool hasRenderedFrame() const { return m_framesRendered > 0; }
     // Orbiting, panning, dollying or dragging a light right now: frames take the interactive settings.
     bool isNavigating() const { return m_navigating; }
@@ -128,6 +130,7 @@ class Viewport : public QOpenGLWidget {
     std::unique_ptr<ViewportRenderer> m_gl; // everything that needs the GL context
     std::unique_ptr<GizmoInteraction> m_interaction;
     std::unique_ptr<SnapshotRenderer> m_snapshots;
+    TracedView* m_traced; // a child QObject
     AbCompare* m_compare = nullptr;
     ViewCamera m_camera;
     bool m_cameraFramed = false;

@@ -46,6 +46,19 @@ void ViewSettings::setGizmos(bool on) {
     setOptions(o);
 }
 
+void ViewSettings::setPathTraced(bool on) {
+    auto o = m_options;
+    o.pathTraced = on;
+    setOptions(o);
+}
+void ViewSettings::setTraceTargets(int samples, double seconds, double noise) {
+    auto o = m_options;
+    o.traceSamples = std::max(0, samples);
+    o.traceSeconds = std::isfinite(seconds) ? std::max(0.0, seconds) : 0.0;
+    o.traceNoise = std::isfinite(noise) ? std::max(0.0, noise) : 0.0;
+    setOptions(o);
+}
+
 void ViewSettings::load() {
     QSettings s;
     s.beginGroup(QStringLiteral("view"));
@@ -59,6 +72,13 @@ void ViewSettings::load() {
     if (bg.isValid()) o.background = bg;
     o.grid = s.value(QStringLiteral("grid"), o.grid).toBool();
     o.gizmos = s.value(QStringLiteral("gizmos"), o.gizmos).toBool();
+    o.pathTraced = s.value(QStringLiteral("pathTraced"), o.pathTraced).toBool();
+    const int samples = s.value(QStringLiteral("traceSamples"), o.traceSamples).toInt(&ok);
+    if (ok && samples >= 0) o.traceSamples = samples;
+    const double seconds = s.value(QStringLiteral("traceSeconds"), o.traceSeconds).toDouble(&ok);
+    if (ok && std::isfinite(seconds) && seconds >= 0.0) o.traceSeconds = seconds;
+    const double noise = s.value(QStringLiteral("traceNoise"), o.traceNoise).toDouble(&ok);
+    if (ok && std::isfinite(noise) && noise >= 0.0) o.traceNoise = noise;
     s.endGroup();
     if (!(o == m_options)) {
         m_options = o;
@@ -76,6 +96,10 @@ void ViewSettings::save() const {
     s.setValue(QStringLiteral("background"), m_options.background.name());
     s.setValue(QStringLiteral("grid"), m_options.grid);
     s.setValue(QStringLiteral("gizmos"), m_options.gizmos);
+    s.setValue(QStringLiteral("pathTraced"), m_options.pathTraced);
+    s.setValue(QStringLiteral("traceSamples"), m_options.traceSamples);
+    s.setValue(QStringLiteral("traceSeconds"), m_options.traceSeconds);
+    s.setValue(QStringLiteral("traceNoise"), m_options.traceNoise);
     s.endGroup();
 }
 

@@ -1,5 +1,6 @@
 // View settings: how the viewport shows the scene, not part of the rig (so not undoable): exposure,
-// tone mapping, quality, background, ground grid, gizmos. Persisted in QSettings under "view/".
+// tone mapping, quality, background, ground grid, gizmos, and the path-traced view with its targets
+// (tracedview.h). Persisted in QSettings under "view/".
 // Shading model and viewer are rig values and live in the Document instead.
 #pragma once
 
@@ -18,6 +19,13 @@ struct ViewOptions {
     QColor background{46, 48, 54}; // sRGB
     bool grid = true;
     bool gizmos = true;
+    // "Path traced" (issue 36): once the view is still the viewport accumulates path-traced samples; while
+    // it changes it shows `quality`, the raster tier last chosen. Accumulation stops at the first target
+    // reached; 0 switches a target off.
+    bool pathTraced = false;
+    int traceSamples = 256;    // samples per pixel
+    double traceSeconds = 0.0; // seconds of tracing
+    double traceNoise = 0.0;   // estimated relative noise (PathTracer::noiseEstimate) at or below this
     bool operator==(const ViewOptions&) const = default;
 };
 
@@ -35,6 +43,9 @@ class ViewSettings : public QObject {
     void setBackground(const QColor& c);
     void setGrid(bool on);
     void setGizmos(bool on);
+    void setPathTraced(bool on);
+    // Negative or non-finite values are taken as 0 (off).
+    void setTraceTargets(int samples, double seconds, double noise);
 
     // Not persistent: changes are not written to QSettings (scripted runs such as the README screenshot).
     void setPersistent(bool persistent) { m_persistent = persistent; }
