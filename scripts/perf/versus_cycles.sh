@@ -17,7 +17,7 @@
 # Prints Markdown: the side by side's PSNR (8-bit sRGB, the images each writes; LightRig writes 8 bits
 # only), the mean linear colour of the whole image and of three regions in each, and the equal-time table:
 # PSNR of each renderer's image after T seconds (seed 1) against its own SPP-sample image (seed 0). LightRig
-# has no time limit yet: it gets the sample count its last run's rate fits in T seconds (refitted while its
+# is given a sample count rather than --time-limit (a time limit ends mid-pass and the samples would differ per pixel): it gets the sample count its last run's rate fits in T seconds (refitted while its
 # tracing time is off T by more than 15 %), and its real tracing time is printed beside. Cycles gets scene.cycles.time_limit = T; its tracing time is read from its log.
 # Needs a dev build; installs blender (Debian's, 3.4), python3-numpy (its glTF importer imports numpy) and
 # oiiotool (openimageio-tools) when they are missing.
