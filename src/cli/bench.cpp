@@ -83,7 +83,7 @@ int runBench(const QStringList& args) {
         "give each tier's shadow error: the share of pixels off the traced shadow outside the penumbra band "
         "(shadow off) and their mean error (shadow err; docs/quality.md).\n"
         "With path in --quality (e.g. exact,balanced,fast,path): a converged path-traced image per scene, "
-        "the path tracer's seconds per sample and PSNR after 1, 4, 16, ... samples, and two more columns "
+        "the path tracer's seconds per sample and PSNR after 1, 2, 4, 8, ... samples, and two more columns "
         "with each tier's error against the traced image (path PSNR, path err; docs/path-tracing.md).\n"
         "Needs OpenGL 3.3: run it with a display, e.g. under xvfb-run -a.\n"
         "Exit status: 0 measured, 1 bad model, rig or output path, 2 usage error."));

@@ -4,7 +4,7 @@ namespace lr::cli {
 
 PathBenchOptionSet::PathBenchOptionSet()
     : pathSamples(QStringLiteral("path-samples"),
-                  QStringLiteral("Path tier: the largest of the sample counts 1, 4, 16, … whose image is "
+                  QStringLiteral("Path tier: the largest of the sample counts 1, 2, 4, 8, … whose image is "
                                  "compared with the converged one, 1..65536 (default 64)."),
                   QStringLiteral("N")),
       convergedSamples(QStringLiteral("converged-samples"),

@@ -1,5 +1,5 @@
 // `lightrig bench`'s path tier options (issue 36; render/tracebench.h): --quality …,path turns it on,
-// --path-samples N (the ladder 1, 4, 16, … N), --converged-samples N (the yardstick), --bounces B and
+// --path-samples N (the ladder 1, 2, 4, 8, … N), --converged-samples N (the yardstick), --bounces B and
 // --threads T of the path tracer.
 #pragma once
 

@@ -26,10 +26,11 @@ ErrorFigures compareImages(const QImage& a, const QImage& b,
     return compareSrgb8(x.constBits(), y.constBits(), count, 4, masked ? mask->data() : nullptr);
 }
 
-// 1, 4, 16, … up to `samples`, and `samples` itself.
+// 1, 2, 4, 8, … up to `samples`, and `samples` itself: doubling steps, so that the first step within
+// 30 dB is found to a factor of two.
 std::vector<int> ladder(int samples) {
     std::vector<int> out;
-    for (int k = 1; k <= samples; k *= 4)
+    for (int k = 1; k <= samples; k *= 2)
         out.push_back(k);
     if (out.empty() || out.back() != samples) out.push_back(std::max(1, samples));
     return out;

@@ -1,6 +1,6 @@
 // `bench`'s path tier (issue 36): per scene, a converged path-traced image (trace/pathtracer.h, many
 // samples, its own seed) is the yardstick of
-// - the path tracer itself: seconds per sample, samples per second, and its image after 1, 4, 16, 64 …
+// - the path tracer itself: seconds per sample, samples per second, and its image after 1, 2, 4, 8 …
 //   samples (up to PathBenchOptions::samples) against the converged one (PSNR, mean error), so the table
 //   shows how fast it converges and when it is within 30 dB;
 // - every raster tier: the tier's single-sample 8-bit image (BenchResult::image) against the converged
@@ -20,7 +20,7 @@
 namespace lr {
 
 struct PathBenchOptions {
-    int samples = 64;           // the ladder's largest step: 1, 4, 16, … up to this
+    int samples = 64;           // the ladder's largest step: 1, 2, 4, 8, … up to this
     int convergedSamples = 256; // the converged image's samples per pixel
     int bounces = 8;
     int threads = 0; // 0: every core

@@ -89,11 +89,11 @@ class TestBenchPath : public QObject {
         QVERIFY(p.value(QStringLiteral("samples_per_second")).toDouble() > 0.0);
         QVERIFY(p.value(QStringLiteral("seconds_per_sample")).toDouble() > 0.0);
         const QJsonArray steps = p.value(QStringLiteral("steps")).toArray();
-        QCOMPARE(steps.size(), 4); // 1, 4, 16, 64
+        QCOMPARE(steps.size(), 7); // 1, 2, 4, … 64
         double psnr = 0.0, seconds = 0.0;
         for (int i = 0; i < steps.size(); ++i) {
             const QJsonObject s = steps[i].toObject();
-            QCOMPARE(s.value(QStringLiteral("samples")).toInt(), 1 << (2 * i));
+            QCOMPARE(s.value(QStringLiteral("samples")).toInt(), 1 << i);
             const double db = s.value(QStringLiteral("psnr_db")).toDouble();
             QVERIFY2(std::isfinite(db) && db > psnr,
                      qPrintable(QStringLiteral("step %1: %2 dB after %3 dB").arg(i).arg(db).arg(psnr)));
