@@ -21,6 +21,9 @@
 # Next to the tarball: glxprobe, a small GLX client (fbconfigs, visuals, a 3.3 core context's GL_RENDERER)
 # that gpu_run.sh runs first, to tell a GLX set-up problem from a LightRig one; and eglpbuffer.so, an
 # LD_PRELOAD shim for the "egldev" mode (see gpu_run.sh and the shim's comment).
+# LR_BUNDLE_CPU=1 makes the smaller bundle scripts/perf/trace_device.sh needs (the path tracer: no display,
+# no GL): the binary, the offscreen platform and image-format plugins, their libraries (the GL dispatch
+# libraries included, which the binary links but never calls there) and the scenes; no X server, no Mesa.
 # BUNDLE_DIR defaults to .gpubundle (ignored through .git/info/exclude; name it in the device call's carry).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
@@ -33,6 +36,7 @@ helmet="$shared/models/gltf/khronos/DamagedHelmet/glTF-Binary/DamagedHelmet.glb"
 addlights="$shared/peers/three/add_lights.py"
 qtplugins="$(dirname "$(find /usr/lib/x86_64-linux-gnu/qt6/plugins -name libqxcb.so | head -n1)")/.."
 dri=/usr/lib/x86_64-linux-gnu/dri
+cpu="${LR_BUNDLE_CPU:-0}"
 for f in "$helmet" "$addlights" /usr/bin/Xvfb /usr/bin/xkbcomp "$dri/swrast_dri.so" "$qtplugins/platforms/libqxcb.so"; do
     [ -e "$f" ] || { echo "gpu_bundle.sh: missing $f (apt-get install xvfb x11-xkb-utils libgl1-mesa-dri)" >&2; exit 1; }
 done
@@ -43,16 +47,21 @@ t="$stage/lightrig-gpu"
 mkdir -p "$t"/{bin,lib,plugins,xserver,dri,scenes}
 strip -o "$t/bin/lightrig" "$bin"
 for d in platforms xcbglintegrations imageformats; do mkdir -p "$t/plugins/$d"; done
-cp -L "$qtplugins"/platforms/{libqxcb.so,libqminimalegl.so,libqoffscreen.so} "$t/plugins/platforms/"
-cp -L "$qtplugins"/xcbglintegrations/*.so "$t/plugins/xcbglintegrations/"
 cp -L "$qtplugins"/imageformats/*.so "$t/plugins/imageformats/"
-cp -L /usr/bin/Xvfb /usr/bin/xkbcomp "$t/xserver/"
-cp -rL /usr/share/X11/xkb "$t/xkb"
-cp -L "$dri/swrast_dri.so" "$t/dri/"
+if [ "$cpu" = 1 ]; then
+    cp -L "$qtplugins"/platforms/libqoffscreen.so "$t/plugins/platforms/"
+else
+    cp -L "$qtplugins"/platforms/{libqxcb.so,libqminimalegl.so,libqoffscreen.so} "$t/plugins/platforms/"
+    cp -L "$qtplugins"/xcbglintegrations/*.so "$t/plugins/xcbglintegrations/"
+    cp -L /usr/bin/Xvfb /usr/bin/xkbcomp "$t/xserver/"
+    cp -rL /usr/share/X11/xkb "$t/xkb"
+    cp -L "$dri/swrast_dri.so" "$t/dri/"
+fi
 cp -L "$helmet" "$addlights" "$t/scenes/"
 
 # Shared libraries: the closure of ldd over every ELF file above, minus what must come from the target.
 skip='^(linux-vdso|ld-linux|libc\.so|libm\.so|libpthread|libdl\.|librt\.|libresolv|libutil\.|libanl\.|libGL\.|libGLX|libGLdispatch|libEGL|libOpenGL|libGLES|libvulkan|libstdc\+\+|libgcc_s)'
+[ "$cpu" = 1 ] && skip='^(linux-vdso|ld-linux|libc\.so|libm\.so|libpthread|libdl\.|librt\.|libresolv|libutil\.|libanl\.|libstdc\+\+|libgcc_s)'
 mapfile -t elves < <(find "$t/bin" "$t/plugins" "$t/xserver" "$t/dri" -type f)
 missing=0
 while read -r name _ path _; do

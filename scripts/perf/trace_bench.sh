@@ -10,12 +10,15 @@
 # Scene: the DamagedHelmet over the visible ground in the studio environment, 8 bounces.
 # Usage: scripts/perf/trace_bench.sh [MODEL.glb]   (default ../shared/models/bench/helmet_1pt.glb).
 #        SAMPLES (default 16: per timed render), CONVERGED (default 256), PATH_SAMPLES (default 64: the
-#        ladder's top), THREADS ("1 2 4 8 16"). Needs a dev build (LIGHTRIG_BUILD, default build/dev) and,
-#        for the aim (bench opens a display), xvfb-run. Prints Markdown tables and the load average.
+#        ladder's top), THREADS ("1 2 4 8 16"), SIZES (the first table's sizes, "640x360 1280x720"),
+#        SCALING_SIZE (the thread table's size, 640x360), AIM=0 (skips the aim). Needs a dev build
+#        (LIGHTRIG_BUILD, default build/dev; or LIGHTRIG, the binary itself) and, for the aim (bench opens a
+#        display), xvfb-run. Without /usr/bin/time the memory column reads "–". Prints Markdown tables and
+#        the load average. scripts/perf/trace_device.sh runs it on another machine from a bundle.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 build=${LIGHTRIG_BUILD:-$root/build/dev}
-lightrig=$build/lightrig
+lightrig=${LIGHTRIG:-$build/lightrig}
 model=${1:-$root/../shared/models/bench/helmet_1pt.glb}
 [ -f "$model" ] || { echo "trace_bench.sh: $model not found (needs ../shared)" >&2; exit 1; }
 [ -x "$lightrig" ] || { echo "trace_bench.sh: $lightrig not built" >&2; exit 1; }
@@ -26,13 +29,15 @@ if [ -z "$threads" ]; then
     for t in 1 2 4 8 16; do [ "$t" -le "$cores" ] && threads="$threads $t"; done
 fi
 out=$(mktemp -d /tmp/lightrig-trace.XXXXXX)
+timer=()
+[ -x /usr/bin/time ] && timer=(/usr/bin/time -v)
 scene=(--ground visible --environment studio --bounces 8)
 
 # One render: prints "pixel-samples/s spp/s seconds max-rss-MiB".
 render() { # size threads(0: all)
     local size=$1 t=$2 extra=()
     [ "$t" != 0 ] && extra=(--threads "$t")
-    /usr/bin/time -v "$lightrig" render "$model" --quality path --samples "$samples" --size "$size" \
+    "${timer[@]}" "$lightrig" render "$model" --quality path --samples "$samples" --size "$size" \
         "${scene[@]}" "${extra[@]}" -o "$out/r.png" >"$out/r.txt" 2>"$out/r.err" || {
         cat "$out/r.err" >&2
         exit 1
@@ -44,7 +49,7 @@ m = re.search(r"(\d+) samples per pixel, \d+ bounces, (\d+) threads, ([0-9.]+) s
 rss = re.search(r"Maximum resident set size \(kbytes\): (\d+)", open(sys.argv[2]).read())
 w, h = map(int, sys.argv[3].split("x"))
 spp, thr, sec, ps = int(m[1]), int(m[2]), float(m[3]), float(m[4])
-print(f"{ps:.0f} {ps / (w * h):.3f} {sec:.2f} {int(rss[1]) / 1024:.0f} {thr}")
+print(f"{ps:.0f} {ps / (w * h):.3f} {sec:.2f} {int(rss[1]) / 1024 if rss else float('nan'):.0f} {thr}".replace("nan", "–"))
 PY
 }
 
@@ -54,20 +59,26 @@ echo "$(date -u +%Y-%m-%dT%H:%MZ), $cores cores ($(grep -m1 'model name' /proc/c
 echo
 echo "| size | threads | samples/pixel/s | s/sample | Mpaths/s | peak RSS MiB |"
 echo "|---|---:|---:|---:|---:|---:|"
-for size in 640x360 1280x720; do
+for size in ${SIZES:-640x360 1280x720}; do
     read -r ps spps sec rss thr < <(render "$size" 0)
     echo "| $size | $thr | $spps | $(python3 -c "print(f'{1/$spps:.3f}')") | $(python3 -c "print(f'{$ps/1e6:.2f}')") | $rss |"
 done
 echo
-echo "| threads (640x360) | samples/pixel/s | speed-up |"
+scaling=${SCALING_SIZE:-640x360}
+echo "| threads ($scaling) | samples/pixel/s | speed-up |"
 echo "|---:|---:|---:|"
 one=""
 for t in $threads; do
-    read -r ps spps sec rss thr < <(render 640x360 "$t")
+    read -r ps spps sec rss thr < <(render "$scaling" "$t")
     [ -z "$one" ] && one=$spps
     echo "| $t | $spps | $(python3 -c "print(f'{$spps/$one:.2f}')")× |"
 done
 echo
+if [ "${AIM:-1}" = 0 ]; then
+    echo "load average at end $(cut -d' ' -f1-3 /proc/loadavg)"
+    rm -rf "$out"
+    exit 0
+fi
 display=()
 [ -z "${DISPLAY:-}" ] && display=(xvfb-run -a)
 "${display[@]}" "$lightrig" bench "$model" --quality path --size 640x360 "${scene[@]}" \
