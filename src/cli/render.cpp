@@ -172,14 +172,14 @@ int runRender(const QStringList& args) {
     QString message;
     const std::optional<SceneOptions> options = scene.read(parser, &message, false, true, true);
     if (!options) return usage(message);
-    TracedRenderOptions traced;
+    TracedRenderOptions& traced = request.traced;
     for (const QCommandLineOption* o : {&samplesOption, &timeLimitOption, &noiseOption, &bouncesOption,
                                         &threadsOption, &clampOption, &seedOption})
         if (parser.isSet(*o) && !options->pathTraced)
             return usage(QStringLiteral("--%1 needs --quality path").arg(o->names().constLast()));
     if (options->pathTraced) {
         for (const QCommandLineOption* o :
-             std::initializer_list<const QCommandLineOption*>{&supersample, &msaa, &turntable, &frames})
+             std::initializer_list<const QCommandLineOption*>{&supersample, &msaa, &frames})
             if (parser.isSet(*o))
                 return usage(QStringLiteral("--%1 does not apply to --quality path (it takes --samples)")
                                  .arg(o->names().constLast()));
@@ -272,10 +272,9 @@ int runRender(const QStringList& args) {
         return Failed;
     }
     if (request.options.pathTraced) { // on the CPU: no OpenGL, no display
-        if (items->size() != 1)
-            return usage(QStringLiteral("--quality path renders one model, rig and view per call (%1 asked)")
-                             .arg(items->size()));
-        return runRenderTraced(request, items->front(), traced);
+        if (!checkTracedMemory(request.options.size, parser.isSet(noMemoryCheck), &message))
+            return usage(message);
+        return runRenderRequest(request, *items);
     }
     // Issue 41: said, and refused beyond the machine's memory, before a byte of the image is allocated.
     if (!checkRenderMemory(estimateRender(request.options.size, ss, samples), parser.isSet(noMemoryCheck),

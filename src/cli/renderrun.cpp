@@ -13,6 +13,7 @@
 #include <ctime>
 #include <map>
 #include <memory>
+#include <optional>
 #include <utility>
 
 namespace lr::cli {
@@ -36,7 +37,9 @@ size_t runEnd(const std::vector<RenderItem>& items, size_t begin, size_t limit, 
 
 class Runner {
   public:
-    Runner(const RenderRequest& request, const std::vector<RenderItem>& items) : r(request), items(items) {}
+    Runner(const RenderRequest& request, const std::vector<RenderItem>& items) : r(request), items(items) {
+        if (r.options.pathTraced) traced.emplace(r.traced);
+    }
     int run();
 
   private:
@@ -61,6 +64,7 @@ class Runner {
     std::shared_ptr<const Model> uploaded; // the model gl draws
     QString glError;                       // why gl could not be created
     bool warnedJpeg = false;
+    std::optional<TracedImages> traced; // --quality path
     // Each rig's environment as last loaded (by rig index; -1 the default rig): offered to the next model's
     // loadSceneRig, which keeps it when it serves, so a catalog decodes and prefilters it once.
     std::map<int, std::shared_ptr<const LoadedEnvironment>> environments;
@@ -144,8 +148,9 @@ void Runner::renderModel(size_t begin, size_t end) {
         std::shared_ptr<const LoadedEnvironment>& environment = environments[items[rigBegin].rig];
         withRig.environment = environment;
         // The environment loads after the model's upload, beside the first frame (showScene); every
-        // view of the rig shares that one load.
-        if (!loadSceneRig(modelPath, options, &withRig, &message, EnvironmentLoading::AfterUpload)) {
+        // view of the rig shares that one load. The path tracer needs it before anything is traced.
+        if (!loadSceneRig(modelPath, options, &withRig, &message,
+                          traced ? EnvironmentLoading::Now : EnvironmentLoading::AfterUpload)) {
             fail(rigBegin, rigEnd, message);
         } else {
             for (size_t viewBegin = rigBegin; viewBegin < rigEnd;) {
@@ -195,19 +200,21 @@ bool Runner::ensureGl(const LoadedScene& scene, QString* error) {
 void Runner::renderView(const QString& modelPath, LoadedScene& scene, size_t begin, size_t end,
                         double loadMs) {
     QString message;
-    if (!ensureGl(scene, &message)) return fail(begin, end, message);
     RenderSettings settings;
     settings.exposureEV = r.options.exposureEV;
     settings.toneMap = r.options.toneMap;
     settings.quality = r.options.quality;
     settings.transparentBackground = r.transparent;
     settings.msaaSamples = r.msaa;
-    const bool viewChosenHere =
-        !r.options.cameraIndex && r.options.view.isEmpty() && r.options.views.isEmpty();
-    if (!showsTheModel(
-            *gl, modelPath, r.options.size, settings, viewChosenHere, &scene,
-            [this](const QString& w) { warn(w); }, &message))
-        return fail(begin, end, message);
+    const auto warning = [this](const QString& w) { warn(w); };
+    if (!traced) {
+        if (!ensureGl(scene, &message)) return fail(begin, end, message);
+        const bool viewChosenHere =
+            !r.options.cameraIndex && r.options.view.isEmpty() && r.options.views.isEmpty();
+        if (!showsTheModel(*gl, modelPath, r.options.size, settings, viewChosenHere, &scene, warning,
+                           &message))
+            return fail(begin, end, message);
+    }
     const glm::dvec3 center = scene.model->bounds.center();
     for (size_t i = begin; i < end; ++i) {
         const RenderItem& item = items[i];
@@ -215,12 +222,34 @@ void Runner::renderView(const QString& modelPath, LoadedScene& scene, size_t beg
         const double degrees = turntableDegrees(item.frame, r.turntable);
         const ViewCamera camera =
             r.rotate == TurntableRotation::Camera ? orbitCamera(scene.camera, center, degrees) : scene.camera;
-        if (r.rotate == TurntableRotation::Lights && r.turntable > 0)
-            gl->setRig(rotateRigLights(scene.rig, center, degrees));
+        const bool turnLights = r.rotate == TurntableRotation::Lights && r.turntable > 0;
+        const Rig rig = turnLights ? rotateRigLights(scene.rig, center, degrees) : scene.rig;
         QElapsedTimer clock;
         clock.start();
-        const QImage image = gl->renderImage(camera, r.options.size, settings, r.supersample, &message);
-        const double firstMs = clock.nsecsElapsed() * 1e-6;
+        QImage image;
+        QString line; // what the "wrote" line says of the image
+        if (traced) {
+            const std::optional<TracedImages::Result> t =
+                traced->render(scene, rig, camera, r.options.size, settings, warning, &message);
+            if (t) {
+                image = t->image;
+                line = QStringLiteral("%1, %2, %3, load %4 s")
+                           .arg(t->line, scene.rigSource, scene.cameraSource)
+                           .arg(i == begin ? loadMs * 1e-3 : 0.0, 0, 'f', 2);
+            }
+        } else {
+            if (turnLights) gl->setRig(rig);
+            clock.restart();
+            image = gl->renderImage(camera, r.options.size, settings, r.supersample, &message);
+            const RenderStats& stats = gl->renderer().stats();
+            line = QStringLiteral("%1 triangles, %2 of %3 lights (%4), %5, first image %6 ms, load %7 ms")
+                       .arg(stats.triangles)
+                       .arg(stats.lightsUploaded)
+                       .arg(stats.lightsInRig)
+                       .arg(scene.rigSource, scene.cameraSource)
+                       .arg(clock.nsecsElapsed() * 1e-6, 0, 'f', 1)
+                       .arg(i == begin ? loadMs : 0.0, 0, 'f', 1);
+        }
         if (image.isNull()) {
             fail(i, i + 1, message);
             continue;
@@ -232,22 +261,14 @@ void Runner::renderView(const QString& modelPath, LoadedScene& scene, size_t beg
             fail(i, i + 1, message);
             continue;
         }
-        const RenderStats& stats = gl->renderer().stats();
         if (r.summary != QLatin1String("-"))
-            out << QStringLiteral(
-                       "wrote %1 (%2x%3): %4 triangles, %5 of %6 lights (%7), %8, first image %9 ms, "
-                       "load %10 ms\n")
+            out << QStringLiteral("wrote %1 (%2x%3): %4\n")
                        .arg(item.file)
                        .arg(image.width())
                        .arg(image.height())
-                       .arg(stats.triangles)
-                       .arg(stats.lightsUploaded)
-                       .arg(stats.lightsInRig)
-                       .arg(scene.rigSource, scene.cameraSource)
-                       .arg(firstMs, 0, 'f', 1)
-                       .arg(i == begin ? loadMs : 0.0, 0, 'f', 1);
+                       .arg(line);
         done(i, QString());
-        if (r.timedFrames > 0) timeFrames(camera, settings);
+        if (r.timedFrames > 0 && !traced) timeFrames(camera, settings);
     }
 }
 

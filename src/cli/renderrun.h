@@ -1,9 +1,11 @@
 // `lightrig render` after parsing (render.cpp): every model × rig × view (× turntable frame) of one call,
-// rendered in that order with one OpenGL context; each model imported once, each rig loaded once per model.
+// rendered in that order with one OpenGL context (or, with --quality path, traced on the CPU with no OpenGL:
+// rendertraced.h); each model imported once, each rig loaded once per model.
 // Items that fail (a model that does not import, a rig that does not read, a camera out of range, an
 // output that cannot be written) are reported and skipped; the rest still render (issue 17).
 #pragma once
 
+#include "rendertraced.h"
 #include "sceneoptions.h"
 
 #include "render/turntable.h"
@@ -28,7 +30,8 @@ struct RenderRequest {
     int timedFrames = 0; // hidden --frames N
     int turntable = 0;   // --turntable N: frames; 0 none
     TurntableRotation rotate = TurntableRotation::Camera;
-    QString summary; // --summary: empty none, "-" stdout, else a file
+    QString summary;            // --summary: empty none, "-" stdout, else a file
+    TracedRenderOptions traced; // with options.pathTraced: every image path traced on the CPU, no OpenGL
 };
 
 // One image of the call (catalog.h plans them).

@@ -1,88 +1,90 @@
 #include "rendertraced.h"
 
-#include "cli.h"
-#include "outputfiles.h"
+#include "renderestimate.h"
 
 #include "scene/scenedescription.h"
 #include "trace/pathtracer.h"
 #include "trace/progressive.h"
+#include "trace/tracescene.h"
 
-#include <QElapsedTimer>
-#include <QTextStream>
+#include <glm/glm.hpp>
+
 #include <cmath>
 
 namespace lr::cli {
 
-int runRenderTraced(const RenderRequest& request, const RenderItem& item, const TracedRenderOptions& traced) {
-    QTextStream err(stderr), out(stdout);
-    const QString name = QStringLiteral("lightrig render");
-    const QString modelPath = request.models.value(item.model);
-    QString message;
-    if (!checkOutputPath(item.file, &message)) {
-        err << name << ": " << message << '\n';
-        return Failed;
+std::optional<TracedImages::Result> TracedImages::render(const LoadedScene& scene, const Rig& rig,
+                                                         const ViewCamera& camera, QSize size,
+                                                         const RenderSettings& settings,
+                                                         const std::function<void(const QString&)>& warn,
+                                                         QString* error) {
+    if (!m_scene || m_model != scene.model || m_environment != scene.environment || !(m_rig == rig)) {
+        m_scene.reset();
+        SceneDescription description;
+        description.setModel(scene.model);
+        description.setRig(rig);
+        description.setEnvironment(scene.environment);
+        m_scene = trace::TraceScene::build(description, error);
+        if (!m_scene) return std::nullopt;
+        m_model = scene.model, m_environment = scene.environment, m_rig = rig;
+        for (const QString& w : m_scene->warnings())
+            warn(w);
     }
-    QElapsedTimer clock;
-    clock.start();
-    SceneOptions options = request.options;
-    if (item.rig >= 0) options.rigPath = request.rigs.value(item.rig);
-    LoadedScene loaded;
-    if (!loadScene(modelPath, options, &loaded, &message, EnvironmentLoading::Now)) {
-        err << name << ": " << message << '\n';
-        return Failed;
-    }
-    for (const QString& w : loaded.model->warnings)
-        err << name << ": warning: " << w << '\n';
-    const double loadSeconds = clock.nsecsElapsed() * 1e-9;
-    SceneDescription description;
-    description.setModel(loaded.model);
-    description.setRig(loaded.rig);
-    description.setEnvironment(loaded.environment);
-    const std::shared_ptr<const trace::TraceScene> scene = trace::TraceScene::build(description, &message);
-    if (!scene) {
-        err << name << ": " << modelPath << ": " << message << '\n';
-        return Failed;
-    }
-    for (const QString& w : scene->warnings())
-        err << name << ": warning: " << w << '\n';
-    trace::TraceSettings settings;
-    settings.bounces = traced.bounces;
-    settings.fireflyClamp = traced.fireflyClamp;
-    settings.seed = std::uint32_t(traced.seed);
-    settings.transparent = request.transparent;
-    trace::PathTracer tracer(scene, loaded.camera, request.options.size, settings, traced.threads);
+    trace::TraceSettings ts;
+    ts.bounces = m_options.bounces;
+    ts.fireflyClamp = m_options.fireflyClamp;
+    ts.seed = std::uint32_t(m_options.seed);
+    ts.transparent = settings.transparentBackground;
+    trace::PathTracer tracer(m_scene, camera, size, ts, m_options.threads);
     const trace::RenderOutcome outcome =
-        trace::renderToTarget(tracer, {traced.samples, traced.timeLimit, traced.noiseThreshold});
-    const double traceSeconds = outcome.seconds;
+        trace::renderToTarget(tracer, {m_options.samples, m_options.timeLimit, m_options.noiseThreshold});
     if (tracer.nonFiniteSamples() > 0)
-        err << name << ": warning: " << tracer.nonFiniteSamples()
-            << " samples were not finite and were left out of their pixels' means\n";
-    const QImage image = tracer.display(request.options.exposureEV, request.options.toneMap);
-    if (request.transparent && request.format == "jpeg")
-        err << name << ": warning: JPEG has no alpha channel; the transparent background is written black\n";
-    if (!writeOutputImage(image, item.file, request.format, &message)) {
-        err << name << ": " << message << '\n';
-        return Failed;
-    }
+        warn(QStringLiteral("%1 samples were not finite and were left out of their pixels' means")
+                 .arg(tracer.nonFiniteSamples()));
+    Result r;
+    r.image = tracer.display(settings.exposureEV, settings.toneMap);
+    r.samples = outcome.samples;
+    r.seconds = outcome.seconds;
     const QString noise = std::isfinite(outcome.noise) ? QString::number(outcome.noise, 'g', 3)
                                                        : QStringLiteral("unknown (under 2 samples)");
-    out << QStringLiteral("wrote %1 (%2x%3): path traced, %4 samples per pixel, %5 bounces, %6 threads, %7 s "
-                          "(%8 samples/s), noise %13, stopped by %14; %9 triangles, %10, %11, load %12 s\n")
-               .arg(item.file)
-               .arg(image.width())
-               .arg(image.height())
-               .arg(outcome.samples)
-               .arg(traced.bounces)
-               .arg(tracer.threads())
-               .arg(traceSeconds, 0, 'f', 2)
-               .arg(double(image.width()) * image.height() * tracer.samplesDone() /
-                        std::max(1e-9, traceSeconds),
-                    0, 'f', 0)
-               .arg(scene->triangles())
-               .arg(loaded.rigSource, loaded.cameraSource)
-               .arg(loadSeconds, 0, 'f', 2)
-               .arg(noise, QLatin1String(trace::stopReasonName(outcome.reason)));
-    return Ok;
+    r.line = QStringLiteral("path traced, %1 samples per pixel, %2 bounces, %3 threads, %4 s (%5 samples/s), "
+                            "noise %6, stopped by %7; %8 triangles")
+                 .arg(outcome.samples)
+                 .arg(m_options.bounces)
+                 .arg(tracer.threads())
+                 .arg(outcome.seconds, 0, 'f', 2)
+                 .arg(double(size.width()) * size.height() * tracer.samplesDone() /
+                          std::max(1e-9, outcome.seconds),
+                      0, 'f', 0)
+                 .arg(noise, QLatin1String(trace::stopReasonName(outcome.reason)))
+                 .arg(m_scene->triangles());
+    return r;
+}
+
+std::int64_t tracedImageBytes(QSize size) {
+    // Per pixel: the radiance and alpha sums (4 doubles), the luminance mean and deviations (2 doubles),
+    // the sample count, the display image (RGBA8) and its encoding.
+    const std::int64_t perPixel = 4 * 8 + 2 * 8 + 4 + 4 + 4;
+    return std::int64_t(size.width()) * size.height() * perPixel + (std::int64_t(256) << 20);
+}
+
+bool checkTracedMemory(QSize size, bool unchecked, QString* error) {
+    QString what;
+    const std::int64_t need = tracedImageBytes(size), available = availableMemory(&what);
+    if (unchecked || available <= 0 || need <= available) return true;
+    const auto gib = [](std::int64_t b) {
+        return QStringLiteral("%1 GiB").arg(double(b) / double(1 << 30), 0, 'f', 1);
+    };
+    *error =
+        QStringLiteral("--size %1x%2 with --quality path needs about %3 of memory (%4 bytes a pixel), more "
+                       "than the %5 this process may use (%6): use a smaller --size, or "
+                       "--no-memory-check to try anyway")
+            .arg(size.width())
+            .arg(size.height())
+            .arg(gib(need))
+            .arg(tracedImageBytes(QSize(1, 1)) - (std::int64_t(256) << 20))
+            .arg(gib(available), what);
+    return false;
 }
 
 } // namespace lr::cli

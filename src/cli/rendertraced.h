@@ -1,11 +1,25 @@
-// `lightrig render MODEL --quality path [--samples N] [--time-limit S] [--noise-threshold T] [--bounces B]
-// [--threads T] [--firefly-clamp X] [--seed S]`:
-// the path-traced image (src/trace) of one model, rig and view, on the CPU: no OpenGL context and no
-// display needed. The scene options (rig, --shading, --ground, --environment..., camera, size, exposure,
-// tone map, --transparent) mean what they mean for the raster qualities.
+// The path-traced image of a loaded scene (src/trace), for `lightrig render --quality path` (single images,
+// catalogs of models × rigs × views, turntables: renderrun.cpp) and `lightrig compare --quality path`: on
+// the CPU, no OpenGL context and no display needed. The scene options (rig, --shading, --ground,
+// --environment..., camera, size, exposure, tone map, --transparent) mean what they mean for the raster
+// qualities; the options below are the path tracer's own.
 #pragma once
 
-#include "renderrun.h"
+#include "sceneoptions.h"
+
+#include "render/rendersettings.h"
+
+#include <QImage>
+#include <QSize>
+#include <QString>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+
+namespace lr::trace {
+class TraceScene;
+}
 
 namespace lr::cli {
 
@@ -19,7 +33,41 @@ struct TracedRenderOptions {
     int seed = 0;                // the sampler's seed (trace::TraceSettings::seed)
 };
 
-// Renders the one item (exit 0 written, 1 the model, rig, scene or output failed).
-int runRenderTraced(const RenderRequest& request, const RenderItem& item, const TracedRenderOptions& traced);
+class TracedImages {
+  public:
+    explicit TracedImages(const TracedRenderOptions& options) : m_options(options) {}
+
+    struct Result {
+        QImage image;
+        // "path traced, 64 samples per pixel, 8 bounces, 2 threads, 3.10 s (4754 samples/s), noise 0.02,
+        // stopped by samples; 15964 triangles"
+        QString line;
+        int samples = 0;
+        double seconds = 0.0; // tracing only
+    };
+
+    // `scene`'s model and environment lit by `rig`, seen from `camera` at `size` with `settings`' exposure,
+    // tone map and transparent background. The traced scene (Embree, textures, the environment's
+    // distribution) is built again only when the model, the environment or the rig changed, so the views
+    // and the turning camera of one rig share it. Warnings (the scene's, non-finite samples) go to `warn`;
+    // nullopt and *error when the scene cannot be traced (a classic-shading rig: the reason says so).
+    std::optional<Result> render(const LoadedScene& scene, const Rig& rig, const ViewCamera& camera,
+                                 QSize size, const RenderSettings& settings,
+                                 const std::function<void(const QString&)>& warn, QString* error);
+
+  private:
+    TracedRenderOptions m_options;
+    std::shared_ptr<const trace::TraceScene> m_scene;
+    std::shared_ptr<const Model> m_model;
+    std::shared_ptr<const LoadedEnvironment> m_environment;
+    Rig m_rig;
+};
+
+// Bytes `lightrig render --quality path` holds for an image of `size` (the accumulation buffers, the display
+// image, and the traced scene's share, about).
+std::int64_t tracedImageBytes(QSize size);
+// False with the reason, naming --size, when that is more than this process may use (renderestimate.h's
+// availableMemory) and `unchecked` (--no-memory-check) is false.
+bool checkTracedMemory(QSize size, bool unchecked, QString* error);
 
 } // namespace lr::cli
