@@ -9,12 +9,14 @@
 // ("PSNR inf dB" for identical images). -o writes the difference image (render/qualitybench.h
 // benchDifferenceImage, the Quality dock's: each pixel's largest channel difference ×amplify, black where
 // equal, then red, yellow and white at 255, 510 and 765); -a, -b and --side-by-side write the two renders
-// and A | B. Every image is written atomically, after both renders succeeded.
+// and A | B. Every image is written atomically, after both renders succeeded. With --quality path (and the
+// path tracer's options, tracedoptions.h) both are traced on the CPU with one seed, no display needed.
 // Exit status: 0 compared (whatever the difference); 1 bad model, rig (naming which, A or B, its file and
 // field), camera or path, or no OpenGL (one line on stderr, nothing written); 2 usage error.
 #include "cli.h"
 #include "outputfiles.h"
 #include "sceneoptions.h"
+#include "tracedoptions.h"
 
 #include "core/imagecompare.h"
 #include "core/rigjson.h"
@@ -35,7 +37,9 @@ namespace {
 const char* kUsage = "lightrig compare MODEL A.json B.json [-o DIFF.png] [--amplify N] [-a A.png] [-b B.png] "
                      "[--side-by-side OUT.png] [--size WxH] [--camera-index N | --view NAME] [--quality Q] "
                      "[--supersample N] [--exposure EV] [--tonemap OP] [--shading classic|pbr] "
-                     "[--ground off|visible|catcher] [--shadows on|off] [--environment ...]";
+                     "[--ground off|visible|catcher] [--shadows on|off] [--environment ...] [--samples N] "
+                     "[--time-limit S] [--noise-threshold T] [--bounces B] [--threads T] [--firefly-clamp X] "
+                     "[--seed S]";
 
 struct Output {
     const QCommandLineOption* option;
@@ -69,7 +73,9 @@ int runCompare(const QStringList& args) {
         "255, yellow at 510, white at 765 (at the default x4: 64, 128 and 192 levels).\nExit status: 0 "
         "compared, 1 bad model, rig, "
         "camera or output path (nothing written), 2 usage error.\nNeeds OpenGL 3.3: run it with a display, "
-        "e.g. under xvfb-run -a."));
+        "e.g. under xvfb-run -a; --quality path traces both on the CPU with the same random sequence "
+        "(--seed), "
+        "with no display."));
     parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
     const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},
                                   QStringLiteral("Show this help."));
@@ -92,8 +98,10 @@ int runCompare(const QStringList& args) {
                                          QStringLiteral("Render N×N samples per pixel, 1..4 (default 1)."),
                                          QStringLiteral("N"));
     const SceneOptionSet scene;
+    const TracedOptionSet tracedSet;
     parser.addOptions({help, output, amplify, imageA, imageB, sideBySide, supersample});
     scene.addTo(parser);
+    tracedSet.addTo(parser);
     parser.addPositionalArgument(QStringLiteral("MODEL"), QStringLiteral("A model file Assimp reads."));
     parser.addPositionalArgument(QStringLiteral("A.json"), QStringLiteral("The first rig."));
     parser.addPositionalArgument(QStringLiteral("B.json"), QStringLiteral("The second rig."));
@@ -118,8 +126,12 @@ int runCompare(const QStringList& args) {
         outputs.push_back({o, path, format, {}, {}});
     }
     QString message;
-    std::optional<SceneOptions> options = scene.read(parser, &message);
+    std::optional<SceneOptions> options = scene.read(parser, &message, false, false, true);
     if (!options) return usage(message);
+    const std::optional<TracedRenderOptions> traced = tracedSet.read(parser, options->pathTraced, &message);
+    if (!traced) return usage(message);
+    if (options->pathTraced && parser.isSet(supersample))
+        return usage(QStringLiteral("--supersample does not apply to --quality path (it takes --samples)"));
     int gain = 4;
     if (parser.isSet(amplify)) {
         bool ok = false;
@@ -148,7 +160,7 @@ int runCompare(const QStringList& args) {
                              {environmentFileOf(options->environment), QStringLiteral("the environment")}},
                             written, &message))
         return failed(message);
-    if (!displayAvailable())
+    if (!options->pathTraced && !displayAvailable())
         return failed(QStringLiteral("lightrig compare needs an X display; run it under xvfb-run -a"));
     for (const Output& o : outputs)
         if (!checkOutputPath(o.path, &message)) return failed(message);
@@ -180,19 +192,34 @@ int runCompare(const QStringList& args) {
     for (const QString& w : loaded[0].model->warnings)
         err << name << ": warning: " << w << '\n';
 
-    OffscreenRenderer gl;
-    if (!gl.initialize(&message) || !gl.setModel(loaded[0].model, &message)) return failed(message);
     RenderSettings settings;
     settings.exposureEV = options->exposureEV;
     settings.toneMap = options->toneMap;
     settings.quality = options->quality;
     settings.msaaSamples = options->quality == Quality::Fast ? 0 : 4;
     QImage images[2];
-    for (int i = 0; i < 2; ++i) {
-        showScene(gl.renderer(), loaded[i]);
-        images[i] = gl.renderImage(loaded[0].camera, options->size, settings, ss, &message)
-                        .convertToFormat(QImage::Format_RGBA8888);
-        if (images[i].isNull()) return failed(message);
+    QString tracedLines[2];
+    if (options->pathTraced) {
+        // Both with the same seed: where a path meets the same surfaces under both rigs, its random numbers
+        // are the same, so the difference image shows the rigs more than the noise.
+        TracedImages tracer(*traced);
+        const auto warn = [&](const QString& w) { err << name << ": warning: " << w << '\n'; };
+        for (int i = 0; i < 2; ++i) {
+            const std::optional<TracedImages::Result> t = tracer.render(
+                loaded[i], loaded[i].rig, loaded[0].camera, options->size, settings, warn, &message);
+            if (!t) return failed(QStringLiteral("rig %1: %2").arg(QLatin1String(labels[i]), message));
+            images[i] = t->image.convertToFormat(QImage::Format_RGBA8888);
+            tracedLines[i] = t->line;
+        }
+    } else {
+        OffscreenRenderer gl;
+        if (!gl.initialize(&message) || !gl.setModel(loaded[0].model, &message)) return failed(message);
+        for (int i = 0; i < 2; ++i) {
+            showScene(gl.renderer(), loaded[i]);
+            images[i] = gl.renderImage(loaded[0].camera, options->size, settings, ss, &message)
+                            .convertToFormat(QImage::Format_RGBA8888);
+            if (images[i].isNull()) return failed(message);
+        }
     }
     const QImage& a = images[0];
     const QImage& b = images[1];
@@ -216,7 +243,9 @@ int runCompare(const QStringList& args) {
             o.what = QStringLiteral("A | B");
         }
     }
-    out << "A: " << loaded[0].rigSource << '\n' << "B: " << loaded[1].rigSource << '\n';
+    for (int i = 0; i < 2; ++i)
+        out << labels[i] << ": " << loaded[i].rigSource
+            << (tracedLines[i].isEmpty() ? QString() : QStringLiteral(", ") + tracedLines[i]) << '\n';
     out << "camera: " << loaded[0].cameraSource << ", " << a.width() << 'x' << a.height() << '\n';
     out << figuresLine(figures) << '\n';
     // All or none: every image is encoded first, then written (writeOutputFiles puts back the ones

@@ -14,8 +14,8 @@
 #include "outputfiles.h"
 #include "renderestimate.h"
 #include "renderrun.h"
-#include "rendertraced.h"
 #include "sceneoptions.h"
+#include "tracedoptions.h"
 
 #include "render/imagefile.h"
 
@@ -38,21 +38,6 @@ const char* kUsage =
     "[--environment-rotation DEGREES] [--environment-background visible|blurred|color] "
     "[--samples N] [--time-limit S] [--noise-threshold T] [--bounces B] [--threads T] [--firefly-clamp X] "
     "[--seed S]";
-
-// A whole number in [lo, hi] from an option's value, or a usage message naming the option.
-std::optional<int> wholeNumber(const QCommandLineParser& parser, const QCommandLineOption& option, int lo,
-                               int hi, QString* message) {
-    bool ok = false;
-    const QString text = parser.value(option);
-    const int v = text.toInt(&ok);
-    if (ok && v >= lo && v <= hi) return v;
-    *message = QStringLiteral("--%1 must be a whole number in %2..%3, got '%4'")
-                   .arg(option.names().constLast())
-                   .arg(lo)
-                   .arg(hi)
-                   .arg(text);
-    return std::nullopt;
-}
 
 } // namespace
 
@@ -104,42 +89,7 @@ int runRender(const QStringList& args) {
                                      QStringLiteral("Write one JSON line per image (file, model, rig, view, "
                                                     "status, seconds, error) to FILE, or to stdout for -."),
                                      QStringLiteral("FILE|-"));
-    const QCommandLineOption samplesOption(
-        QStringLiteral("samples"),
-        QStringLiteral("--quality path: samples per pixel, 1..1000000 (default 64; with --time-limit or "
-                       "--noise-threshold and no --samples, 1000000)."),
-        QStringLiteral("N"));
-    const QCommandLineOption timeLimitOption(
-        QStringLiteral("time-limit"),
-        QStringLiteral("--quality path: stop after S seconds of tracing (> 0), or at the samples or noise "
-                       "target if sooner."),
-        QStringLiteral("S"));
-    const QCommandLineOption noiseOption(
-        QStringLiteral("noise-threshold"),
-        QStringLiteral("--quality path: stop once the estimated relative noise (the RMS standard error of "
-                       "the pixel means over the mean luminance) is at most T (> 0; 0.01: 1 %)."),
-        QStringLiteral("T"));
-    const QCommandLineOption bouncesOption(
-        QStringLiteral("bounces"),
-        QStringLiteral("--quality path: surface interactions per path, 0..1024 (default 8; 1 is direct light "
-                       "only)."),
-        QStringLiteral("B"));
-    const QCommandLineOption threadsOption(
-        QStringLiteral("threads"),
-        QStringLiteral("--quality path: worker threads, 1..1024 (default: every core)."),
-        QStringLiteral("T"));
-    const QCommandLineOption clampOption(
-        QStringLiteral("firefly-clamp"),
-        QStringLiteral(
-            "--quality path: clamp each sample's largest channel to X (linear radiance > 0); biased, "
-            "off by default."),
-        QStringLiteral("X"));
-    const QCommandLineOption seedOption(
-        QStringLiteral("seed"),
-        QStringLiteral(
-            "--quality path: the random sequence, 0..2147483647 (default 0); another seed gives an "
-            "independent image of the same scene (for error estimates against a reference)."),
-        QStringLiteral("S"));
+    const TracedOptionSet tracedSet;
     SceneOptionSet scene;
     scene.rig.setDescription(QStringLiteral("Rig file (.json); repeat it for several rigs. Default: the "
                                             "model's own lights when it has some, else the default rig."));
@@ -150,8 +100,7 @@ int runRender(const QStringList& args) {
     parser.addOption(output);
     scene.addTo(parser);
     parser.addOptions({supersample, transparent, frames, msaa, turntable, rotate, summary, noMemoryCheck});
-    parser.addOptions(
-        {samplesOption, timeLimitOption, noiseOption, bouncesOption, threadsOption, clampOption, seedOption});
+    tracedSet.addTo(parser);
     parser.addPositionalArgument(QStringLiteral("MODEL"),
                                  QStringLiteral("Model files Assimp reads (glTF, OBJ, FBX, ...)."),
                                  QStringLiteral("MODEL..."));
@@ -172,45 +121,15 @@ int runRender(const QStringList& args) {
     QString message;
     const std::optional<SceneOptions> options = scene.read(parser, &message, false, true, true);
     if (!options) return usage(message);
-    TracedRenderOptions& traced = request.traced;
-    for (const QCommandLineOption* o : {&samplesOption, &timeLimitOption, &noiseOption, &bouncesOption,
-                                        &threadsOption, &clampOption, &seedOption})
-        if (parser.isSet(*o) && !options->pathTraced)
-            return usage(QStringLiteral("--%1 needs --quality path").arg(o->names().constLast()));
-    if (options->pathTraced) {
+    const std::optional<TracedRenderOptions> traced = tracedSet.read(parser, options->pathTraced, &message);
+    if (!traced) return usage(message);
+    request.traced = *traced;
+    if (options->pathTraced)
         for (const QCommandLineOption* o :
              std::initializer_list<const QCommandLineOption*>{&supersample, &msaa, &frames})
             if (parser.isSet(*o))
                 return usage(QStringLiteral("--%1 does not apply to --quality path (it takes --samples)")
                                  .arg(o->names().constLast()));
-        const auto number = [&](const QCommandLineOption& o, int lo, int hi, int* v) {
-            if (!parser.isSet(o)) return true;
-            const std::optional<int> n = wholeNumber(parser, o, lo, hi, &message);
-            if (n) *v = *n;
-            return n.has_value();
-        };
-        if (!number(samplesOption, 1, 1000000, &traced.samples) ||
-            !number(bouncesOption, 0, 1024, &traced.bounces) ||
-            !number(threadsOption, 1, 1024, &traced.threads) ||
-            !number(seedOption, 0, 2147483647, &traced.seed))
-            return usage(message);
-        // A positive finite number, or the usage error "--NAME must be WHAT > 0, got 'VALUE'".
-        const auto positive = [&](const QCommandLineOption& o, const char* what, double* v) {
-            if (!parser.isSet(o)) return true;
-            bool ok = false;
-            *v = parser.value(o).toDouble(&ok);
-            if (ok && std::isfinite(*v) && *v > 0.0) return true;
-            message = QStringLiteral("--%1 must be %2 > 0, got '%3'")
-                          .arg(o.names().constLast(), QLatin1String(what), parser.value(o));
-            return false;
-        };
-        if (!positive(clampOption, "a linear radiance", &traced.fireflyClamp) ||
-            !positive(timeLimitOption, "a number of seconds", &traced.timeLimit) ||
-            !positive(noiseOption, "a relative noise", &traced.noiseThreshold))
-            return usage(message);
-        if (!parser.isSet(samplesOption) && (traced.timeLimit > 0.0 || traced.noiseThreshold > 0.0))
-            traced.samples = 1000000;
-    }
     request.options = *options;
     for (const QString& rig : parser.values(scene.rig)) {
         if (rig.isEmpty()) return usage(QStringLiteral("--rig needs a file name"));

@@ -1,6 +1,7 @@
 // `lightrig render --quality path` beyond one image (issue 36, item 3): turntables (the camera or the lights
 // turning) and catalogs of rigs × views, without a display; each item's image is the one a single render of
-// it gives, and an item the path tracer refuses (a classic-shading rig) fails alone, said in the summary.
+// it gives, and an item the path tracer refuses (a classic-shading rig) fails alone, said in the summary;
+// and `compare --quality path`.
 #include "support/cli.h"
 
 #include <QImage>
@@ -95,6 +96,35 @@ class TraceCatalog : public QObject {
             top(dir.filePath(QStringLiteral("pbr_area_top.png")));
         QCOMPARE(front.size(), QSize(40, 30));
         QVERIFY(front != top);
+    }
+
+    // `compare --quality path` traces both rigs with one seed and no display: one rig against itself is
+    // identical (PSNR inf), two rigs differ, and a classic-shading rig B is refused naming B.
+    void compareTraced() {
+        QTemporaryDir dir;
+        const QProcessEnvironment env = environmentWithoutDisplay();
+        const auto compare = [&](const char* a, const char* b) {
+            return runLightrig({QStringLiteral("compare"), model(), rig(a), rig(b),
+                                QStringLiteral("--quality"), QStringLiteral("path"),
+                                QStringLiteral("--samples"), QStringLiteral("2"), QStringLiteral("--size"),
+                                QStringLiteral("40x30"), QStringLiteral("-o"),
+                                dir.filePath(QStringLiteral("diff.png"))},
+                               &env);
+        };
+        const CliRun same = compare("area.json", "area.json");
+        QVERIFY2(same.code == 0, qPrintable(same.show()));
+        QVERIFY2(same.out.contains(QLatin1String("PSNR inf dB")), qPrintable(same.show()));
+        QVERIFY2(same.out.contains(QLatin1String("path traced, 2 samples per pixel")),
+                 qPrintable(same.show()));
+        const CliRun other = compare("area.json", "environment.json");
+        QVERIFY2(other.code == 0, qPrintable(other.show()));
+        QVERIFY2(!other.out.contains(QLatin1String("PSNR inf dB")), qPrintable(other.show()));
+        QVERIFY(QFile::exists(dir.filePath(QStringLiteral("diff.png"))));
+        const CliRun classic = compare("area.json", "minimal.json");
+        QCOMPARE(classic.code, 1);
+        QVERIFY2(classic.err.contains(QLatin1String("rig B: ")) &&
+                     classic.err.contains(QLatin1String("uses classic shading")),
+                 qPrintable(classic.show()));
     }
 };
 
