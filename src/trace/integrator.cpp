@@ -48,15 +48,16 @@ glm::dvec3 shadowTarget(const TraceLight& light, const glm::dvec3& p, const glm:
         *distance = kInfinity;
         if (!(e.halfAngle > 0.0)) return toLight;
         basisAround(toLight, &t, &b);
-        const double cosT = 1.0 - s.next() * (1.0 - std::cos(e.halfAngle));
-        const double sinT = std::sqrt(std::max(0.0, 1.0 - cosT * cosT)),
-                     phi = 2.0 * std::numbers::pi * s.next();
+        const glm::dvec2 u = s.next2();
+        const double cosT = 1.0 - u.x * (1.0 - std::cos(e.halfAngle));
+        const double sinT = std::sqrt(std::max(0.0, 1.0 - cosT * cosT)), phi = 2.0 * std::numbers::pi * u.y;
         return cosT * toLight + sinT * (std::cos(phi) * t + std::sin(phi) * b);
     }
     glm::dvec3 target = light.shade.position;
     if (e.radius > 0.0) {
         basisAround(toLight, &t, &b);
-        const double r = e.radius * std::sqrt(s.next()), phi = 2.0 * std::numbers::pi * s.next();
+        const glm::dvec2 u = s.next2();
+        const double r = e.radius * std::sqrt(u.x), phi = 2.0 * std::numbers::pi * u.y;
         target += r * (std::cos(phi) * t + std::sin(phi) * b);
     }
     const glm::dvec3 d = target - p;
@@ -88,7 +89,8 @@ glm::dvec3 directLight(const Vertex& v) {
             if (!areaLightFaces(light, s.position)) continue;
             sum += l.ambient * cDiff;
             if (!(light.area > 0.0)) continue;
-            const glm::dvec3 q = sampleAreaLight(light, v.sampler.next(), v.sampler.next());
+            const glm::dvec2 u = v.sampler.next2();
+            const glm::dvec3 q = sampleAreaLight(light, u.x, u.y);
             const glm::dvec3 d = q - s.position;
             const double dist = glm::length(d);
             if (!(dist > 0.0)) continue;
@@ -120,7 +122,8 @@ glm::dvec3 directLight(const Vertex& v) {
     if (scene.hasEnvironment()) {
         glm::dvec3 w;
         double pdf;
-        if (scene.environment().sample(v.sampler.next(), v.sampler.next(), v.sampler.next(), &w, &pdf)) {
+        const glm::dvec2 u = v.sampler.next2();
+        if (scene.environment().sample(u.x, u.y, v.sampler.next(), &w, &pdf)) {
             const glm::dvec3 f = bsdf.eval(w);
             if (maxOf(f) > 0.0 && glm::dot(w, s.geometric) > 0.0 &&
                 scene.unoccluded(scene.offset(s, w), w, kInfinity, v.sampler))
@@ -130,7 +133,8 @@ glm::dvec3 directLight(const Vertex& v) {
     if (!scene.emissive().empty()) {
         double probability;
         const EmissiveTriangles::Triangle& tri = scene.emissive().pick(v.sampler.next(), &probability);
-        const glm::dvec2 bc = sampleTriangle(v.sampler.next(), v.sampler.next());
+        const glm::dvec2 u = v.sampler.next2();
+        const glm::dvec2 bc = sampleTriangle(u.x, u.y);
         const glm::dvec3 q = tri.p0 * (1.0 - bc.x - bc.y) + tri.p1 * bc.x + tri.p2 * bc.y;
         const glm::dvec3 d = q - s.position;
         const double dist = glm::length(d);
@@ -169,7 +173,8 @@ double catcherLight(const TraceScene& scene, const glm::dvec3& p, Sampler& sampl
         double e = 0.0, distance = kInfinity;
         if (traitsOf(l.type).isArea) {
             if (!(light.area > 0.0) || !areaLightFaces(light, p)) continue;
-            const glm::dvec3 d = sampleAreaLight(light, sampler.next(), sampler.next()) - p;
+            const glm::dvec2 u = sampler.next2();
+            const glm::dvec3 d = sampleAreaLight(light, u.x, u.y) - p;
             distance = glm::length(d);
             if (!(distance > 0.0)) continue;
             w = d / distance;
@@ -189,8 +194,8 @@ double catcherLight(const TraceScene& scene, const glm::dvec3& p, Sampler& sampl
     }
     glm::dvec3 w;
     double pdf;
-    if (scene.hasEnvironment() &&
-        scene.environment().sample(sampler.next(), sampler.next(), sampler.next(), &w, &pdf)) {
+    const glm::dvec2 u = sampler.next2();
+    if (scene.hasEnvironment() && scene.environment().sample(u.x, u.y, sampler.next(), &w, &pdf)) {
         const double e =
             luminance(scene.environment().radiance(w)) * lighting::saturate(glm::dot(up, w)) / pdf;
         if (e > 0.0 && std::isfinite(e)) {
@@ -209,6 +214,7 @@ PathSample tracePath(const TraceScene& scene, const glm::dvec3& cameraOrigin, co
     glm::dvec3 origin = cameraOrigin, dir = cameraDir, beta(1.0);
     double prevPdf = 0.0; // the BSDF density of `dir`; 0 for the camera ray (no MIS: seen directly)
     for (int depth = 0;; ++depth) {
+        sampler.startBounce(depth);
         const EmbreeHit hit = scene.intersect(origin, dir, kInfinity, sampler);
         double tMax = hit.hit ? hit.t : kInfinity;
         // Area lights: emitters only (no surface to reflect), invisible to camera rays as in the raster.
@@ -266,7 +272,9 @@ PathSample tracePath(const TraceScene& scene, const glm::dvec3& cameraOrigin, co
         if (depth >= settings.bounces) break;
         const Bsdf bsdf(s.normal, -dir, s.baseColor, s.metallic, s.roughness);
         out.radiance += beta * directLight({scene, s, bsdf, sampler});
-        const BsdfSample bs = bsdf.sample(sampler.next(), sampler.next(), sampler.next());
+        const double lobe = sampler.next();
+        const glm::dvec2 u = sampler.next2();
+        const BsdfSample bs = bsdf.sample(lobe, u.x, u.y);
         if (!(bs.pdf > 0.0) || !(glm::dot(bs.direction, s.geometric) > 0.0)) break;
         beta *= bs.value / bs.pdf;
         if (!(maxOf(beta) > 0.0)) break;

@@ -69,9 +69,8 @@ void PathTracer::renderTile(int tile, int samples) {
             glm::dvec2 lum = m_luminance[p]; // running mean, sum of squared deviations
             for (int k = 0; k < samples; ++k) {
                 Sampler sampler(std::uint32_t(p), std::uint32_t(m_count[p] + k), m_settings.seed);
-                const double jx = m_settings.jitter ? sampler.next() : 0.5;
-                const double jy = m_settings.jitter ? sampler.next() : 0.5;
-                const glm::dvec3 dir = m_camera.direction(x + jx, y + jy);
+                const glm::dvec2 j = m_settings.jitter ? sampler.next2() : glm::dvec2(0.5);
+                const glm::dvec3 dir = m_camera.direction(x + j.x, y + j.y);
                 const PathSample s = tracePath(*m_scene, m_camera.origin(), dir, sampler, m_settings);
                 nonFinite += s.finite ? 0 : 1;
                 sum += glm::dvec4(s.radiance, s.alpha);

@@ -1,7 +1,16 @@
-// The path tracer's random numbers: a hash of (pixel, sample index, seed) starts a PCG stream (Jarzynski &
-// Olano 2020), so that sample k of pixel p is the same whichever thread, tile or pass draws it: the image
-// does not depend on the thread count.
+// The path tracer's random numbers: Owen-scrambled Sobol points, shuffled per dimension (Burley 2020,
+// "Practical Hash-based Owen Scrambling", JCGT 9(4)), so that the samples of one pixel are stratified in
+// every dimension (and in pairs: the pixel position, a light's point, a BSDF direction) while the
+// dimensions stay independent of each other. Sample k of pixel p with seed s is a pure function of (p, k, s,
+// dimension): the image does not depend on the thread count, the tiles or the passes, and another seed
+// gives an independent image.
+//
+// Dimensions are numbered per bounce (startBounce) and then counted by each draw, so a path whose
+// bounces draw different numbers of values never reuses a dimension (a reuse would correlate two
+// decisions of one path). Each draw is uniform in [0, 1) on its own.
 #pragma once
+
+#include <glm/vec2.hpp>
 
 #include <cstdint>
 
@@ -13,20 +22,71 @@ inline std::uint32_t pcgHash(std::uint32_t v) {
     return (word >> 22u) ^ word;
 }
 
+namespace sobol {
+
+inline std::uint32_t reverseBits(std::uint32_t x) {
+    x = (x << 16) | (x >> 16);
+    x = ((x & 0x00ff00ffu) << 8) | ((x & 0xff00ff00u) >> 8);
+    x = ((x & 0x0f0f0f0fu) << 4) | ((x & 0xf0f0f0f0u) >> 4);
+    x = ((x & 0x33333333u) << 2) | ((x & 0xccccccccu) >> 2);
+    x = ((x & 0x55555555u) << 1) | ((x & 0xaaaaaaaau) >> 1);
+    return x;
+}
+
+// Burley's hash-based Laine-Karras permutation: a random permutation of the low bits that keeps each
+// bit's dependence on the lower ones only, i.e. (after reversing) an Owen scramble of the high bits.
+inline std::uint32_t laineKarras(std::uint32_t x, std::uint32_t seed) {
+    x ^= x * 0x3d20adeau;
+    x += seed;
+    x *= (seed >> 16) | 1u;
+    x ^= x * 0x05526c56u;
+    x ^= x * 0x53a22864u;
+    return x;
+}
+
+inline std::uint32_t nestedUniformScramble(std::uint32_t x, std::uint32_t seed) {
+    return reverseBits(laineKarras(reverseBits(x), seed));
+}
+
+// The first two Sobol dimensions: the van der Corput sequence and the Pascal-matrix one.
+inline std::uint32_t dimension0(std::uint32_t i) {
+    return reverseBits(i);
+}
+inline std::uint32_t dimension1(std::uint32_t i) {
+    std::uint32_t r = 0, v = 1u << 31;
+    for (; i; i >>= 1, v ^= v >> 1)
+        if (i & 1u) r ^= v;
+    return r;
+}
+
+} // namespace sobol
+
 class Sampler {
   public:
     Sampler(std::uint32_t pixel, std::uint32_t sample, std::uint32_t seed = 0)
-        : m_state(pcgHash(pixel ^ pcgHash(sample + pcgHash(seed)))) {}
-    // Uniform in [0, 1), 24 bits.
-    double next() {
-        m_state = m_state * 747796405u + 2891336453u;
-        std::uint32_t word = ((m_state >> ((m_state >> 28u) + 4u)) ^ m_state) * 277803737u;
-        word = (word >> 22u) ^ word;
-        return double(word >> 8) * (1.0 / 16777216.0);
+        : m_index(sample), m_key(pcgHash(pixel ^ pcgHash(seed ^ 0x6a09e667u))) {}
+
+    // Dimensions of bounce `depth` (0: the first surface the camera ray meets); the camera's own draws
+    // come before any startBounce.
+    void startBounce(int depth) { m_dimension = (std::uint32_t(depth) + 1u) << 16; }
+
+    // One uniform number in [0, 1) from a dimension of its own.
+    double next() { return next2().x; }
+
+    // Two uniform numbers in [0, 1), stratified together (a 2-D Sobol point), from a dimension of their own.
+    glm::dvec2 next2() {
+        const std::uint32_t d = pcgHash(m_key ^ pcgHash(m_dimension++));
+        const std::uint32_t i = sobol::nestedUniformScramble(m_index, d);
+        const std::uint32_t x = sobol::nestedUniformScramble(sobol::dimension0(i), pcgHash(d ^ 0x85ebca6bu));
+        const std::uint32_t y = sobol::nestedUniformScramble(sobol::dimension1(i), pcgHash(d ^ 0xc2b2ae35u));
+        constexpr double kScale = 1.0 / 4294967296.0;
+        return {double(x) * kScale, double(y) * kScale};
     }
 
   private:
-    std::uint32_t m_state;
+    std::uint32_t m_index;
+    std::uint32_t m_key;
+    std::uint32_t m_dimension = 0;
 };
 
 } // namespace lr::trace
