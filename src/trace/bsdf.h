@@ -2,8 +2,10 @@
 // (src/core/lighting.h pbrLobes: Trowbridge-Reitz D, height-correlated Smith V, Schlick F, (1 − F)
 // c_diff / π), so the traced image, the raster and the double reference shade the same material. This
 // adds what a path tracer needs besides the value: a direction drawn from the lobes and its density.
-//   - specular: the half vector from D(h) (h · n) (Walter et al. 2007), reflected about h:
-//     pdf(l) = D(h) (n · h) / (4 |v · h|)
+//   - specular: the half vector from GGX's visible normals (Heitz 2018), reflected about h:
+//     pdf(l) = G1(v) D(h) / (4 n · v), G1 Smith's masking of the view; where n · v is at or below 1e-4
+//     (a normal map can turn the shading normal away from the view) from D(h) (h · n) (Walter et al.
+//     2007) instead: pdf(l) = D(h) (n · h) / (4 |v · h|)
 //   - diffuse: the cosine-weighted hemisphere, pdf(l) = (n · l) / π
 //   - the lobe is chosen with probability pSpecular from the Fresnel-weighted reflectances at n · v.
 // Only reflection: no transmission. Directions below the shading normal's horizon have value and

@@ -10,6 +10,8 @@
 // decisions of one path). Each draw is uniform in [0, 1) on its own.
 #pragma once
 
+#include "core/lowdiscrepancy.h"
+
 #include <glm/vec2.hpp>
 
 #include <cstdint>
@@ -21,45 +23,6 @@ inline std::uint32_t pcgHash(std::uint32_t v) {
     const std::uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
     return (word >> 22u) ^ word;
 }
-
-namespace sobol {
-
-inline std::uint32_t reverseBits(std::uint32_t x) {
-    x = (x << 16) | (x >> 16);
-    x = ((x & 0x00ff00ffu) << 8) | ((x & 0xff00ff00u) >> 8);
-    x = ((x & 0x0f0f0f0fu) << 4) | ((x & 0xf0f0f0f0u) >> 4);
-    x = ((x & 0x33333333u) << 2) | ((x & 0xccccccccu) >> 2);
-    x = ((x & 0x55555555u) << 1) | ((x & 0xaaaaaaaau) >> 1);
-    return x;
-}
-
-// Burley's hash-based Laine-Karras permutation: a random permutation of the low bits that keeps each
-// bit's dependence on the lower ones only, i.e. (after reversing) an Owen scramble of the high bits.
-inline std::uint32_t laineKarras(std::uint32_t x, std::uint32_t seed) {
-    x ^= x * 0x3d20adeau;
-    x += seed;
-    x *= (seed >> 16) | 1u;
-    x ^= x * 0x05526c56u;
-    x ^= x * 0x53a22864u;
-    return x;
-}
-
-inline std::uint32_t nestedUniformScramble(std::uint32_t x, std::uint32_t seed) {
-    return reverseBits(laineKarras(reverseBits(x), seed));
-}
-
-// The first two Sobol dimensions: the van der Corput sequence and the Pascal-matrix one.
-inline std::uint32_t dimension0(std::uint32_t i) {
-    return reverseBits(i);
-}
-inline std::uint32_t dimension1(std::uint32_t i) {
-    std::uint32_t r = 0, v = 1u << 31;
-    for (; i; i >>= 1, v ^= v >> 1)
-        if (i & 1u) r ^= v;
-    return r;
-}
-
-} // namespace sobol
 
 class Sampler {
   public:
