@@ -44,10 +44,23 @@ struct TracedView::Job {
     ViewCamera camera;
     QSize size;
     trace::TraceSettings settings;
-    ViewOptions options;
     std::atomic<bool> cancelled{false};
     QMutex lock;
     std::unique_ptr<trace::PathTracer> tracer;
+    // Under `lock`: the options the worker reads before every pass (the exposure, the tone map and the
+    // targets may change while the samples are kept), their revision, and whether the worker runs the job.
+    ViewOptions options;
+    int optionsRevision = 0;
+    bool running = false;
+    double secondsBefore = 0.0; // tracing seconds of the job's earlier runs (the worker's only)
+
+    // New display options or targets; true when the job has stopped and must be run again to show them.
+    bool setOptions(const ViewOptions& o) {
+        QMutexLocker locker(&lock);
+        options = o;
+        ++optionsRevision;
+        return !running && !cancelled.load();
+    }
 
     void cancel() {
         QMutexLocker locker(&lock);
@@ -62,7 +75,19 @@ void TracedView::Job::run(QPointer<TracedView> view) {
     auto post = [&](auto&& f) {
         if (view) QMetaObject::invokeMethod(view.data(), std::forward<decltype(f)>(f), Qt::QueuedConnection);
     };
-    if (cancelled.load()) return;
+    {
+        QMutexLocker locker(&lock);
+        if (cancelled.load() || running) return;
+        running = true;
+    }
+    // Every return below ends the run; the GUI thread runs the job again when it asks for more.
+    struct Stopped {
+        Job* job;
+        ~Stopped() {
+            QMutexLocker locker(&job->lock);
+            job->running = false;
+        }
+    } stopped{this};
     std::shared_ptr<const trace::TraceScene> scene;
     QString error;
     bool built = false;
@@ -96,14 +121,23 @@ void TracedView::Job::run(QPointer<TracedView> view) {
     {
         QMutexLocker locker(&lock);
         if (cancelled.load()) return;
-        tracer = std::make_unique<trace::PathTracer>(scene, camera, size, settings);
+        if (!tracer) tracer = std::make_unique<trace::PathTracer>(scene, camera, size, settings);
     }
     QElapsedTimer clock;
     clock.start();
+    const double before = secondsBefore;
     double perSample = 0.0; // seconds, measured
     for (;;) {
+        ViewOptions options;
+        int revision;
+        {
+            QMutexLocker locker(&lock);
+            options = this->options;
+            revision = optionsRevision;
+        }
         const int done = tracer->samplesDone();
-        const double seconds = clock.nsecsElapsed() * 1e-9;
+        const double seconds = before + clock.nsecsElapsed() * 1e-9;
+        secondsBefore = seconds;
         const double noise = done > 1 ? tracer->noiseEstimate() : -1.0; // relative; +inf: not yet
         QString why;
         if (options.traceSamples > 0 && done >= options.traceSamples)
@@ -119,7 +153,13 @@ void TracedView::Job::run(QPointer<TracedView> view) {
                 if (v) v->onPass(g, image, done, seconds, noise, finished, why);
             });
         }
-        if (!why.isEmpty() || cancelled.load()) return;
+        if (cancelled.load()) return;
+        if (!why.isEmpty()) {
+            QMutexLocker locker(&lock);
+            if (optionsRevision != revision) continue; // new options came since: show them too
+            running = false; // under the lock with the check: setOptions then knows to run the job again
+            return;
+        }
         // A pass of about kPassSeconds (one sample first, so the image appears at once).
         int n = perSample > 0.0 ? int(std::clamp(kPassSeconds / perSample, 1.0, double(kMaxPassSamples))) : 1;
         if (options.traceSamples > 0) n = std::min(n, options.traceSamples - done);
@@ -167,8 +207,23 @@ void TracedView::onSettingsChanged() {
     a.grid = m_options.grid;
     a.gizmos = m_options.gizmos;
     const bool same = a == m_options && m_state != State::Off;
+    // The exposure, the tone map and the targets act on the samples already traced: the job shows them
+    // with the new display, goes on to a raised target, or stops at a lowered one, without starting over.
+    ViewOptions b = a;
+    b.exposure = m_options.exposure;
+    b.toneMap = m_options.toneMap;
+    b.traceSamples = m_options.traceSamples;
+    b.traceSeconds = m_options.traceSeconds;
+    b.traceNoise = m_options.traceNoise;
+    const bool keep = b == m_options && m_job && (m_state == State::Tracing || m_state == State::Done);
     m_options = o;
-    if (!same) restart(false);
+    if (same) return;
+    if (!keep) return restart(false);
+    const bool targets =
+        b.traceSamples != o.traceSamples || b.traceSeconds != o.traceSeconds || b.traceNoise != o.traceNoise;
+    if (targets && m_state == State::Done) setState(State::Tracing); // until the job says where it stops
+    if (m_job->setOptions(o))
+        m_worker.start([job = m_job, view = QPointer<TracedView>(this)] { job->run(view); });
 }
 
 void TracedView::viewDrawn(const ViewCamera& camera, const QSize& size, bool changing) {
@@ -240,10 +295,7 @@ void TracedView::onPass(int generation, const QImage& image, int samples, double
     m_samples = samples;
     m_seconds = seconds;
     m_noise = noise;
-    if (done) {
-        m_message = why;
-        m_job.reset();
-    }
+    if (done) m_message = why; // the job is kept: a new exposure or a raised target goes on from it
     setState(done ? State::Done : State::Tracing);
     emit updated();
 }

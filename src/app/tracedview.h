@@ -2,7 +2,9 @@
 // depends on changes, the viewport shows its raster tier; once nothing changed for kSettleMs it accumulates
 // path-traced samples (trace/pathtracer.h) at the viewport's full device resolution, shows the traced image
 // over the raster one (TracedOverlay) with a readout of samples, seconds and estimated noise, stops at the
-// first target of the view settings (samples, seconds, noise) and starts over on any change.
+// first target of the view settings (samples, seconds, noise) and starts over on any change, except the
+// exposure, the tone map and the targets: those act on the samples traced (the finished job is kept and
+// run again to show them, or to go on to a raised target).
 //
 // The GUI thread never waits on the tracer. One worker (a QThreadPool of one thread) runs one job at a time:
 // it builds the traced scene when the model, the rig or the environment changed (TraceScene::build, which

@@ -1,7 +1,8 @@
 // Issue 36 item 2: the viewport's "Path traced" view (src/app/tracedview.h) through the main window: it
 // accumulates once the view is still (samples grow, the image is the model's and not the raster's), a rig
-// change starts it over, the samples target stops it, a classic rig is refused with the raster image kept,
-// the event loop keeps running while it traces, and the window is destroyed cleanly while it traces.
+// change starts it over, the samples target stops it, the exposure and the targets change without starting
+// over, a classic rig is refused with the raster image kept, the event loop keeps running while it traces,
+// and the window is destroyed cleanly while it traces.
 #include "app/rendersettingsdock.h"
 #include "app/screenshotjob.h"
 #include "app/tracedview.h"
@@ -44,6 +45,17 @@ double shareUnlike(const QImage& image, QColor color, int tolerance) {
                 ++unlike;
         }
     return double(unlike) / std::max<qint64>(1, qint64(a.width()) * a.height());
+}
+
+double meanLevel(const QImage& x) {
+    const QImage a = x.convertToFormat(QImage::Format_RGB888);
+    double sum = 0.0;
+    for (int row = 0; row < a.height(); ++row) {
+        const uchar* p = a.constScanLine(row);
+        for (int i = 0; i < a.width() * 3; ++i)
+            sum += p[i];
+    }
+    return sum / std::max(1, a.width() * a.height() * 3);
 }
 
 double meanAbsDifference(const QImage& x, const QImage& y) {
@@ -133,6 +145,34 @@ class TestTracedView : public QObject {
         QVERIFY(traced()->state() == TracedView::State::Done);
         QVERIFY2(traced()->readout().startsWith(QLatin1String("Path traced: 6 samples, ")),
                  qPrintable(traced()->readout()));
+    }
+
+    // The exposure and the targets act on the samples traced: a new exposure shows the same samples
+    // brighter, a raised target goes on from them, and neither starts over.
+    void displayAndTargetsKeepTheSamples() {
+        settings()->setTraceTargets(6, 0.0, 0.0);
+        QVERIFY(QTest::qWaitFor(
+            [&] { return traced()->state() == TracedView::State::Done && traced()->samples() == 6; },
+            120000));
+        const int restarts = traced()->restarts();
+        const QImage before = traced()->image();
+        const double exposure = settings()->options().exposure;
+        settings()->setExposure(exposure + 2.0);
+        QVERIFY(QTest::qWaitFor([&] { return traced()->image() != before; }, 30000));
+        QCOMPARE(traced()->samples(), 6);
+        QCOMPARE(traced()->restarts(), restarts);
+        QVERIFY(traced()->state() == TracedView::State::Done);
+        // Brighter where the model is (the background is the view's colour, untouched by exposure).
+        const double gain = meanLevel(traced()->image()) - meanLevel(before);
+        QVERIFY2(gain > 0.1, qPrintable(QString::number(gain)));
+        settings()->setTraceTargets(10, 0.0, 0.0);
+        QVERIFY(QTest::qWaitFor(
+            [&] { return traced()->state() == TracedView::State::Done && traced()->samples() == 10; },
+            120000));
+        QCOMPARE(traced()->restarts(), restarts);
+        settings()->setExposure(exposure);
+        QVERIFY(QTest::qWaitFor([&] { return traced()->state() == TracedView::State::Done; }, 30000));
+        QCOMPARE(traced()->restarts(), restarts);
     }
 
     // The noise target: accumulation stops once the estimate is at or below it.
