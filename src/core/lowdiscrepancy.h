@@ -45,11 +45,26 @@ inline std::uint32_t nestedUniformScramble(std::uint32_t x, std::uint32_t seed) 
 inline std::uint32_t dimension0(std::uint32_t i) {
     return reverseBits(i);
 }
-inline std::uint32_t dimension1(std::uint32_t i) {
+constexpr std::uint32_t dimension1Bits(std::uint32_t i) {
     std::uint32_t r = 0, v = 1u << 31;
     for (; i; i >>= 1, v ^= v >> 1)
         if (i & 1u) r ^= v;
     return r;
+}
+// The generator matrix is linear over GF(2): one table per byte of the index, four lookups a point.
+struct Dimension1Tables {
+    std::uint32_t byte[4][256] = {};
+    constexpr Dimension1Tables() {
+        for (int k = 0; k < 4; ++k)
+            for (std::uint32_t b = 0; b < 256; ++b)
+                byte[k][b] = dimension1Bits(b << (8 * k));
+    }
+};
+inline constexpr Dimension1Tables kDimension1Tables{};
+inline std::uint32_t dimension1(std::uint32_t i) {
+    const Dimension1Tables& t = kDimension1Tables;
+    return t.byte[0][i & 0xffu] ^ t.byte[1][(i >> 8) & 0xffu] ^ t.byte[2][(i >> 16) & 0xffu] ^
+           t.byte[3][i >> 24];
 }
 
 } // namespace sobol
