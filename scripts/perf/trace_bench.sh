@@ -12,8 +12,8 @@
 #        SAMPLES (default 16: per timed render), CONVERGED (default 256), PATH_SAMPLES (default 64: the
 #        ladder's top), THREADS ("1 2 4 8 16"), SIZES (the first table's sizes, "640x360 1280x720"),
 #        SCALING_SIZE (the thread table's size, 640x360), AIM=0 (skips the aim). Needs a dev build
-#        (LIGHTRIG_BUILD, default build/dev; or LIGHTRIG, the binary itself) and, for the aim (bench opens a
-#        display), xvfb-run. Without /usr/bin/time the memory column reads "–". Prints Markdown tables and
+#        (LIGHTRIG_BUILD, default build/dev; or LIGHTRIG, the binary itself); no display (the path tier of
+#        bench runs on the CPU alone). Without /usr/bin/time the memory column reads "–". Prints Markdown tables and
 #        the load average. scripts/perf/trace_device.sh runs it on another machine from a bundle.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -79,9 +79,7 @@ if [ "${AIM:-1}" = 0 ]; then
     rm -rf "$out"
     exit 0
 fi
-display=()
-[ -z "${DISPLAY:-}" ] && display=(xvfb-run -a)
-"${display[@]}" "$lightrig" bench "$model" --quality path --size 640x360 "${scene[@]}" \
+"$lightrig" bench "$model" --quality path --size 640x360 "${scene[@]}" \
     --path-samples "${PATH_SAMPLES:-64}" --converged-samples "${CONVERGED:-256}" --json "$out/bench.json" \
     >"$out/bench.txt" 2>"$out/bench.err" || { cat "$out/bench.err" >&2; exit 1; }
 python3 - "$out/bench.json" <<'PY'

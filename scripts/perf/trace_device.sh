@@ -3,7 +3,7 @@
 # from the bundle scripts/perf/gpu_bundle.sh makes (default .gpubundle/bundle.tar.xz): unpacks it, makes
 # the helmet_1pt scene from the bundled DamagedHelmet (python3), and runs scripts/perf/trace_bench.sh with
 # the bundled binary, no display (the path tracer needs no OpenGL) and THREADS (default 1 2 4 8 16, and the
-# machine's core count when it is larger). Results: $OUT/trace.md (default /tmp/lightrig-trace-out).
+# machine's core count when it is larger), then the aim (bench's path ladder). Results: $OUT/trace.md (default /tmp/lightrig-trace-out).
 #   SAMPLES (per timed render, default 16), SIZES, SCALING_SIZE as trace_bench.sh takes them.
 # On this machine, to check the bundle: scripts/perf/gpu_bundle.sh && THREADS="1 2" scripts/perf/trace_device.sh
 set -euo pipefail
@@ -25,5 +25,5 @@ mkdir -p "$XDG_RUNTIME_DIR" && chmod 700 "$XDG_RUNTIME_DIR"
 {
     echo "Machine: $(uname -sr), $(grep -m1 PRETTY_NAME /etc/os-release | cut -d= -f2 | tr -d '"'), $cores cores"
     echo
-    LIGHTRIG="$R/bin/lightrig" THREADS="$threads" AIM=0 "$root/scripts/perf/trace_bench.sh" "$R/scenes/helmet_1pt.glb"
+    LIGHTRIG="$R/bin/lightrig" THREADS="$threads" "$root/scripts/perf/trace_bench.sh" "$R/scenes/helmet_1pt.glb"
 } 2>&1 | tee "$out/trace.md"

@@ -180,7 +180,8 @@ int runBench(const QStringList& args) {
     if (parser.isSet(scene.quality)) options.tiers = sceneOptions->qualities; // default: every tier
     options.exposureEV = sceneOptions->exposureEV;
     options.toneMap = sceneOptions->toneMap;
-    options.errors = !parser.isSet(noErrors);
+    // The direct-light reference is what the raster tiers are compared with: the path tier alone needs none.
+    options.errors = !parser.isSet(noErrors) && !options.tiers.empty();
     if (parser.isSet(fullReference)) options.maxReferenceWork = std::numeric_limits<double>::infinity();
     options.uberShader = !parser.isSet(noUber) && !options.tiers.empty();
     options.keepImages = sceneOptions->pathTraced; // the path tier compares each tier's image
@@ -263,7 +264,7 @@ int runBench(const QStringList& args) {
     if (parser.isSet(chart) && !checkOutputPath(parser.value(chart), &message)) return failed(message);
     if (parser.isSet(scalingChart) && !checkOutputPath(parser.value(scalingChart), &message))
         return failed(message);
-    if (!displayAvailable())
+    if (!options.tiers.empty() && !displayAvailable()) // the path tier alone draws nothing with OpenGL
         return failed(QStringLiteral("lightrig bench needs an X display; run it under xvfb-run -a"));
 
     // Scenes: each model once (its rig), or once per procedural light count and type.
