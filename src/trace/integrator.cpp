@@ -90,14 +90,11 @@ glm::dvec3 directLight(const Vertex& v) {
             sum += l.ambient * cDiff;
             if (!(light.area > 0.0)) continue;
             const glm::dvec2 u = v.sampler.next2();
-            const glm::dvec3 q = sampleAreaLight(light, u.x, u.y);
-            const glm::dvec3 d = q - s.position;
-            const double dist = glm::length(d);
-            if (!(dist > 0.0)) continue;
+            const AreaLightSample q = sampleAreaLightFrom(light, s.position, u.x, u.y);
+            const glm::dvec3 d = q.point - s.position;
+            const double dist = glm::length(d), pdf = q.pdf;
+            if (!(dist > 0.0) || !(pdf > 0.0) || !std::isfinite(pdf)) continue;
             const glm::dvec3 w = d / dist;
-            const double cosL = std::abs(glm::dot(w, l.direction));
-            const double pdf = dist * dist / (light.area * cosL);
-            if (!(cosL > 0.0) || !std::isfinite(pdf)) continue;
             const lighting::PbrLobes<double> f = bsdf.lobes(w, cosineTerm(l.diffuse, glm::dot(N, w)));
             const glm::dvec3 c = l.color * f.diffuse + l.specular * f.specular;
             if (!(maxOf(c) > 0.0)) continue;
@@ -225,8 +222,7 @@ PathSample tracePath(const TraceScene& scene, const glm::dvec3& cameraOrigin, co
                     traitsOf(light.shade.type).isArea && hitAreaLight(light, origin, dir, &t) && t < tMax)
                     tMax = t, nearest = &light;
             if (nearest) {
-                const double cosL = std::abs(glm::dot(dir, nearest->shade.direction));
-                const double pdfLight = tMax * tMax / (nearest->area * cosL);
+                const double pdfLight = areaLightPdf(*nearest, origin, dir, tMax);
                 out.radiance += beta * nearest->shade.color * powerHeuristic(prevPdf, pdfLight);
                 break;
             }

@@ -36,6 +36,90 @@ glm::dvec3 sampleAreaLight(const TraceLight& light, double u1, double u2) {
     return l.position + (2.0 * u1 - 1.0) * l.halfWidth * l.axisX + (2.0 * u2 - 1.0) * l.halfHeight * l.axisY;
 }
 
+namespace {
+
+constexpr double kMinSolidAngle = 1e-4; // below this a rect is sampled by area (the mapping loses precision)
+
+// The angle between unit vectors, accurate near 0 and π.
+double angleBetween(const glm::dvec3& a, const glm::dvec3& b) {
+    return glm::dot(a, b) < 0.0 ? std::numbers::pi - 2.0 * std::asin(std::min(1.0, glm::length(a + b) / 2.0))
+                                : 2.0 * std::asin(std::min(1.0, glm::length(b - a) / 2.0));
+}
+
+// A rect as seen from a point, in the frame (axisX, axisY, z) at the point, z turned so that the rect's
+// plane lies at z0 < 0: its corners' coordinates, the spherical rectangle's solid angle and the constants
+// of the sampling (b0, b1, k: Ureña et al.'s names).
+struct SphericalRect {
+    glm::dvec3 z;
+    double x0 = 0, y0 = 0, x1 = 0, y1 = 0, z0 = 0;
+    double b0 = 0, b1 = 0, k = 0, solidAngle = 0;
+};
+
+SphericalRect sphericalRect(const lighting::ShadeLight<double>& l, const glm::dvec3& from) {
+    SphericalRect r;
+    r.z = glm::cross(l.axisX, l.axisY);
+    const glm::dvec3 d = l.position - l.halfWidth * l.axisX - l.halfHeight * l.axisY - from;
+    r.x0 = glm::dot(d, l.axisX), r.y0 = glm::dot(d, l.axisY), r.z0 = glm::dot(d, r.z);
+    if (r.z0 > 0.0) r.z = -r.z, r.z0 = -r.z0;
+    r.x1 = r.x0 + 2.0 * l.halfWidth, r.y1 = r.y0 + 2.0 * l.halfHeight;
+    if (!(r.z0 < 0.0)) return r; // in the rect's plane: it subtends nothing
+    const glm::dvec3 v00(r.x0, r.y0, r.z0), v01(r.x0, r.y1, r.z0), v10(r.x1, r.y0, r.z0),
+        v11(r.x1, r.y1, r.z0);
+    const glm::dvec3 n0 = glm::normalize(glm::cross(v00, v10)), n1 = glm::normalize(glm::cross(v10, v11)),
+                     n2 = glm::normalize(glm::cross(v11, v01)), n3 = glm::normalize(glm::cross(v01, v00));
+    const double g0 = angleBetween(-n0, n1), g1 = angleBetween(-n1, n2), g2 = angleBetween(-n2, n3),
+                 g3 = angleBetween(-n3, n0);
+    r.b0 = n0.z, r.b1 = n2.z;
+    r.k = 2.0 * std::numbers::pi - g2 - g3;
+    r.solidAngle = g0 + g1 + g2 + g3 - 2.0 * std::numbers::pi;
+    if (!std::isfinite(r.solidAngle)) r.solidAngle = 0.0;
+    return r;
+}
+
+} // namespace
+
+AreaLightSample sampleAreaLightFrom(const TraceLight& light, const glm::dvec3& from, double u1, double u2) {
+    const lighting::ShadeLight<double>& l = light.shade;
+    AreaLightSample out;
+    if (l.type == LightType::Rect) {
+        const SphericalRect r = sphericalRect(l, from);
+        if (r.solidAngle >= kMinSolidAngle) {
+            // Ureña et al. 2013, section 4: the x coordinate from the area u1 of the solid angle, then y.
+            const double au = u1 * r.solidAngle + r.k;
+            const double fu = (std::cos(au) * r.b0 - r.b1) / std::sin(au);
+            double cu = std::copysign(1.0, fu) / std::sqrt(fu * fu + r.b0 * r.b0);
+            cu = std::clamp(cu, -1.0 + 1e-12, 1.0 - 1e-12);
+            double xu = -(cu * r.z0) / std::sqrt(std::max(0.0, 1.0 - cu * cu));
+            xu = std::clamp(std::isfinite(xu) ? xu : r.x0, r.x0, r.x1);
+            const double dd = std::sqrt(xu * xu + r.z0 * r.z0);
+            const double h0 = r.y0 / std::sqrt(dd * dd + r.y0 * r.y0),
+                         h1 = r.y1 / std::sqrt(dd * dd + r.y1 * r.y1);
+            const double hv = h0 + u2 * (h1 - h0), hv2 = hv * hv;
+            const double yv = hv2 < 1.0 - 1e-12 ? hv * dd / std::sqrt(1.0 - hv2) : r.y1;
+            out.point = from + xu * l.axisX + std::clamp(yv, r.y0, r.y1) * l.axisY + r.z0 * r.z;
+            out.pdf = 1.0 / r.solidAngle;
+            return out;
+        }
+    }
+    out.point = sampleAreaLight(light, u1, u2);
+    const glm::dvec3 d = out.point - from;
+    const double dist2 = glm::dot(d, d), cosL = std::abs(glm::dot(d, l.direction)) / std::sqrt(dist2);
+    out.pdf = dist2 / (light.area * cosL);
+    if (!std::isfinite(out.pdf) || !(cosL > 0.0)) out.pdf = 0.0;
+    return out;
+}
+
+double areaLightPdf(const TraceLight& light, const glm::dvec3& from, const glm::dvec3& dir, double t) {
+    const lighting::ShadeLight<double>& l = light.shade;
+    if (l.type == LightType::Rect) {
+        const SphericalRect r = sphericalRect(l, from);
+        if (r.solidAngle >= kMinSolidAngle) return 1.0 / r.solidAngle;
+    }
+    const double cosL = std::abs(glm::dot(dir, l.direction));
+    const double pdf = t * t / (light.area * cosL);
+    return std::isfinite(pdf) && cosL > 0.0 ? pdf : 0.0;
+}
+
 glm::dvec2 sampleTriangle(double u1, double u2) {
     const double s = std::sqrt(u1);
     return {s * (1.0 - u2), s * u2};

@@ -7,7 +7,10 @@
 //   - Directional lights: the light's illuminance along its direction; the shadow ray leaves within the
 //     cone of its angular size (shadow.angle), as the reference's.
 //   - Rect and disk lights: Lambertian emitters of radiance colour × intensity from their front (or both)
-//     sides, sampled uniformly by area (density converted to solid angle), hit by BSDF rays too (MIS).
+//     sides, hit by BSDF rays too (MIS). A rect is sampled uniformly in the solid angle it subtends
+//     (Ureña, Fajardo and King 2013, "An Area-Preserving Parametrization for Spherical Rectangles"), so a
+//     large or near softbox costs no more noise than a small far one; a disk (no such closed form), and a
+//     rect under 1e-4 sr, uniformly by area, the density converted to solid angle.
 //   - Emissive triangles: chosen by emitted power (area × luminance of the emissive factor), a uniform
 //     point in the triangle; both sides emit.
 // Rim lights are not physical: the path tracer leaves them out (TraceScene::warnings says so).
@@ -31,6 +34,16 @@ struct TraceLight {
 bool hitAreaLight(const TraceLight& light, const glm::dvec3& origin, const glm::dvec3& dir, double* t);
 // A uniform point of the area light's shape from two uniform numbers.
 glm::dvec3 sampleAreaLight(const TraceLight& light, double u1, double u2);
+
+// A point of the area light for shading `from`, and its density per steradian (0: none to take).
+struct AreaLightSample {
+    glm::dvec3 point{0.0};
+    double pdf = 0.0;
+};
+AreaLightSample sampleAreaLightFrom(const TraceLight& light, const glm::dvec3& from, double u1, double u2);
+// The density per steradian with which sampleAreaLightFrom(light, from, …) draws the direction `dir`
+// (unit) that meets the light at distance t.
+double areaLightPdf(const TraceLight& light, const glm::dvec3& from, const glm::dvec3& dir, double t);
 // Whether an area light emits towards `point` (its front side, or both sides when two-sided).
 bool areaLightFaces(const TraceLight& light, const glm::dvec3& point);
 
