@@ -3,6 +3,8 @@
 #include "core/colour.h"
 #include "scene/scenedescription.h"
 #include "trace/pathtracer.h"
+#include "trace/progressive.h"
+#include "trace/tracescene.h"
 
 #include <QCoreApplication>
 #include <QPainter>
@@ -17,6 +19,16 @@ QImage tracedDisplay(const trace::PathTracer& tracer, const ViewOptions& options
     image.fill(options.background);
     QPainter(&image).drawImage(0, 0, traced); // straight alpha over the colour
     return image;
+}
+
+trace::TraceSettings viewTraceSettings(const ViewOptions& options, const trace::TraceScene& scene) {
+    trace::TraceSettings settings;
+    const QColor bg = options.background.toRgb();
+    settings.background = colour::srgbToLinear(glm::dvec3(bg.redF(), bg.greenF(), bg.blueF()));
+    // Escaped rays go to alpha where no environment is seen: transparent, or laid over the background
+    // colour as it is (tracedDisplay), untouched by exposure and tone map, as the raster draws it.
+    settings.transparent = !scene.environmentVisible();
+    return settings;
 }
 
 TracedShot::TracedShot(TracedInputs inputs, QSize size, int samples, bool transparent)
@@ -47,22 +59,16 @@ QImage TracedShot::render(QString* error) {
     QString why;
     const std::shared_ptr<const trace::TraceScene> scene = trace::TraceScene::build(description, &why);
     if (!scene) return fail(QCoreApplication::translate("lr::TracedShot", "not path traced: %1").arg(why));
-    trace::TraceSettings settings;
-    const QColor bg = m_inputs.options.background.toRgb();
-    settings.background = colour::srgbToLinear(glm::dvec3(bg.redF(), bg.greenF(), bg.blueF()));
-    // Escaped rays go to alpha where no environment is seen: transparent, or laid over the background.
-    settings.transparent = !scene->environmentVisible();
+    const trace::TraceSettings settings = viewTraceSettings(m_inputs.options, *scene);
     {
         QMutexLocker locker(&m_lock);
         if (m_cancelled.load()) return fail(cancelled);
         m_tracer = std::make_unique<trace::PathTracer>(scene, m_inputs.camera, m_size, settings);
     }
     // Passes of a few samples: progress between them.
-    while (m_done.load() < m_samples) {
-        const int n = std::min(std::max(1, m_done.load() / 2), m_samples - m_done.load());
-        if (!m_tracer->render(n)) return fail(cancelled);
-        m_done.store(m_tracer->samplesDone());
-    }
+    const trace::RenderOutcome outcome =
+        trace::renderToTarget(*m_tracer, {m_samples, 0.0, 0.0, [this](int done) { m_done.store(done); }});
+    if (outcome.reason == trace::StopReason::Cancelled) return fail(cancelled);
     return tracedDisplay(*m_tracer, m_inputs.options, m_transparent && settings.transparent);
 }
 

@@ -22,7 +22,9 @@ struct Model;
 
 namespace trace {
 class PathTracer;
-}
+class TraceScene;
+struct TraceSettings;
+} // namespace trace
 
 struct TracedInputs {
     std::shared_ptr<const Model> model;
@@ -36,6 +38,9 @@ struct TracedInputs {
 // seen and `transparent` asks for it, else laid over the view's background colour, untouched by exposure
 // and tone map as the raster's background is.
 QImage tracedDisplay(const trace::PathTracer& tracer, const ViewOptions& options, bool transparent);
+// The tracer's settings for the view's options: the background colour (linear) and, where no environment
+// is seen, escaped rays to alpha so that tracedDisplay lays the image over that colour.
+trace::TraceSettings viewTraceSettings(const ViewOptions& options, const trace::TraceScene& scene);
 
 class TracedShot {
   public:

@@ -115,12 +115,10 @@ void TracedView::Job::run(QPointer<TracedView> view) {
         });
     }
     if (!scene) return;
-    // Where no environment is seen, escaped rays go to alpha and the image is laid over the background
-    // colour as it is, untouched by exposure and tone map: the raster's background.
-    settings.transparent = !scene->environmentVisible();
     {
         QMutexLocker locker(&lock);
         if (cancelled.load()) return;
+        settings = viewTraceSettings(options, *scene); // the background: a change of it is a new job
         if (!tracer) tracer = std::make_unique<trace::PathTracer>(scene, camera, size, settings);
     }
     QElapsedTimer clock;
@@ -268,8 +266,6 @@ void TracedView::startJob() {
     job->camera = m_camera;
     job->size = m_size;
     job->options = m_settings->options();
-    const QColor bg = job->options.background.toRgb();
-    job->settings.background = colour::srgbToLinear(glm::dvec3(bg.redF(), bg.greenF(), bg.blueF()));
     m_job = job;
     setState(m_builtRevision == m_sceneRevision ? State::Tracing : State::Building);
     m_worker.start([job, view = QPointer<TracedView>(this)] { job->run(view); });

@@ -65,7 +65,7 @@ RenderOutcome renderToTarget(PathTracer& tracer, const RenderTarget& target) {
     RenderOutcome outcome;
     QElapsedTimer clock;
     clock.start();
-    const bool passes = target.seconds > 0.0 || target.noiseThreshold > 0.0;
+    const bool passes = target.seconds > 0.0 || target.noiseThreshold > 0.0 || target.afterPass;
     {
         Deadline deadline(tracer, target.seconds);
         while (tracer.samplesDone() < target.samples) {
@@ -75,6 +75,7 @@ RenderOutcome renderToTarget(PathTracer& tracer, const RenderTarget& target) {
                 outcome.reason = deadline.fired() ? StopReason::Time : StopReason::Cancelled;
                 break;
             }
+            if (target.afterPass) target.afterPass(tracer.samplesDone());
             if (target.noiseThreshold > 0.0 && tracer.noiseEstimate() <= target.noiseThreshold) {
                 outcome.reason = StopReason::Noise;
                 break;

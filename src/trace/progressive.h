@@ -3,10 +3,12 @@
 // pass at most as many samples as are done, at most kMaxPass), so the noise is checked often early and
 // rarely late; the time limit cancels the running pass from a timer thread (finished tiles keep their
 // samples, so a pixel may hold one sample more than samplesDone()). What `render --quality path` and
-// `bench`'s path tier share.
+// `bench`'s path tier and the editor's traced screenshot share.
 #pragma once
 
 #include "pathtracer.h"
+
+#include <functional>
 
 namespace lr::trace {
 
@@ -14,6 +16,9 @@ struct RenderTarget {
     int samples = 64;            // per pixel (samplesDone)
     double seconds = 0.0;        // > 0: stop when this much wall time has passed
     double noiseThreshold = 0.0; // > 0: stop once noiseEstimate() ≤ this
+    // Called after every pass with samplesDone() (progress). With it, or a time or noise target, the
+    // samples come in passes; with none of them, in one.
+    std::function<void(int)> afterPass;
 };
 
 enum class StopReason { Samples, Time, Noise, Cancelled };
