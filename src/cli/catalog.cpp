@@ -87,8 +87,8 @@ std::optional<std::vector<RenderItem>> planRender(const RenderRequest& r, QStrin
 }
 
 QByteArray summaryLine(const RenderRequest& r, const RenderItem& item, bool ok, double seconds,
-                       const QString& error) {
-    QJsonObject o;
+                       const QString& error, const QJsonObject& extra) {
+    QJsonObject o = extra;
     o.insert(QStringLiteral("file"), item.file);
     o.insert(QStringLiteral("model"), r.models.value(item.model));
     o.insert(QStringLiteral("rig"), item.rig < 0 ? QJsonValue() : QJsonValue(r.rigs.value(item.rig)));

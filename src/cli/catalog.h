@@ -10,6 +10,7 @@
 #include "renderrun.h"
 
 #include <QByteArray>
+#include <QJsonObject>
 #include <QString>
 #include <optional>
 #include <vector>
@@ -25,7 +26,8 @@ std::optional<std::vector<RenderItem>> planRender(const RenderRequest& request, 
 
 // One summary line (JSON, no newline): {"file", "model", "rig", "view", ["frame",] "status": "ok" |
 // "failed", "seconds", "error": null | "reason"}; model and rig as given (rig null for the default rule).
+// `extra`: more members (a path-traced image's "samples", "noise", "stopped_by").
 QByteArray summaryLine(const RenderRequest& request, const RenderItem& item, bool ok, double seconds,
-                       const QString& error);
+                       const QString& error, const QJsonObject& extra = {});
 
 } // namespace lr::cli

@@ -10,6 +10,7 @@
 #include <QElapsedTimer>
 #include <QTextStream>
 #include <algorithm>
+#include <cmath>
 #include <ctime>
 #include <map>
 #include <memory>
@@ -46,7 +47,7 @@ class Runner {
     void warn(const QString& warning) { err << name << ": warning: " << warning << '\n'; }
     // Reports items [begin, end) that are not done yet as failed for `reason` (said once on stderr).
     void fail(size_t begin, size_t end, const QString& reason);
-    void done(size_t i, const QString& error);
+    void done(size_t i, const QString& error, const QJsonObject& extra = {});
     void renderModel(size_t begin, size_t end);
     void renderView(const QString& modelPath, LoadedScene& scene, size_t begin, size_t end, double loadMs);
     bool ensureGl(const LoadedScene& scene, QString* error);
@@ -81,11 +82,11 @@ void Runner::fail(size_t begin, size_t end, const QString& reason) {
     }
 }
 
-void Runner::done(size_t i, const QString& error) {
+void Runner::done(size_t i, const QString& error, const QJsonObject& extra) {
     finished[i] = true;
     anyFailed = anyFailed || !error.isEmpty();
     const QByteArray line =
-        summaryLine(r, items[i], error.isEmpty(), itemClock.nsecsElapsed() * 1e-9, error) + '\n';
+        summaryLine(r, items[i], error.isEmpty(), itemClock.nsecsElapsed() * 1e-9, error, extra) + '\n';
     itemClock.restart();
     if (r.summary == QLatin1String("-")) {
         out << line;
@@ -227,12 +228,17 @@ void Runner::renderView(const QString& modelPath, LoadedScene& scene, size_t beg
         QElapsedTimer clock;
         clock.start();
         QImage image;
-        QString line; // what the "wrote" line says of the image
+        QString line;      // what the "wrote" line says of the image
+        QJsonObject extra; // and the summary line
         if (traced) {
             const std::optional<TracedImages::Result> t =
                 traced->render(scene, rig, camera, r.options.size, settings, warning, &message);
             if (t) {
                 image = t->image;
+                extra = {
+                    {QStringLiteral("samples"), t->samples},
+                    {QStringLiteral("noise"), std::isfinite(t->noise) ? QJsonValue(t->noise) : QJsonValue()},
+                    {QStringLiteral("stopped_by"), t->stoppedBy}};
                 line = QStringLiteral("%1, %2, %3, load %4 s")
                            .arg(t->line, scene.rigSource, scene.cameraSource)
                            .arg(i == begin ? loadMs * 1e-3 : 0.0, 0, 'f', 2);
@@ -267,7 +273,7 @@ void Runner::renderView(const QString& modelPath, LoadedScene& scene, size_t beg
                        .arg(image.width())
                        .arg(image.height())
                        .arg(line);
-        done(i, QString());
+        done(i, QString(), extra);
         if (r.timedFrames > 0 && !traced) timeFrames(camera, settings);
     }
 }

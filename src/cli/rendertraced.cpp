@@ -45,6 +45,8 @@ std::optional<TracedImages::Result> TracedImages::render(const LoadedScene& scen
     r.image = tracer.display(settings.exposureEV, settings.toneMap);
     r.samples = outcome.samples;
     r.seconds = outcome.seconds;
+    r.noise = outcome.noise;
+    r.stoppedBy = QLatin1String(trace::stopReasonName(outcome.reason));
     const QString noise = std::isfinite(outcome.noise) ? QString::number(outcome.noise, 'g', 3)
                                                        : QStringLiteral("unknown (under 2 samples)");
     r.line = QStringLiteral("path traced, %1 samples per pixel, %2 bounces, %3 threads, %4 s (%5 samples/s), "

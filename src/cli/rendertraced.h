@@ -44,6 +44,8 @@ class TracedImages {
         QString line;
         int samples = 0;
         double seconds = 0.0; // tracing only
+        double noise = 0.0;   // PathTracer::noiseEstimate at the end (+infinity under 2 samples)
+        QString stoppedBy;    // "samples", "time" or "noise"
     };
 
     // `scene`'s model and environment lit by `rig`, seen from `camera` at `size` with `settings`' exposure,

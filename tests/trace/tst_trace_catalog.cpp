@@ -88,6 +88,12 @@ class TraceCatalog : public QObject {
             const QString rigName = o.value(QStringLiteral("rig")).toString();
             QVERIFY2(isOk == rigName.endsWith(QLatin1String("area.json")), qPrintable(line));
             QCOMPARE(QFile::exists(o.value(QStringLiteral("file")).toString()), isOk);
+            if (isOk) { // a traced item's samples, noise and what stopped it
+                QCOMPARE(o.value(QStringLiteral("samples")).toInt(), 2);
+                QVERIFY(o.value(QStringLiteral("noise")).isDouble() &&
+                        o.value(QStringLiteral("noise")).toDouble() >= 0.0);
+                QCOMPARE(o.value(QStringLiteral("stopped_by")).toString(), QStringLiteral("samples"));
+            }
             (isOk ? ok : failed) += 1;
         }
         QCOMPARE(ok, 2);
