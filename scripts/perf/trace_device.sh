@@ -18,7 +18,7 @@ tar -xJf "$tarball" -C "$work" 2>/dev/null ||
 R="$work/lightrig-gpu"
 python3 "$R/scenes/add_lights.py" "$R/scenes/DamagedHelmet.glb" "$R/scenes/helmet_1pt.glb" 1 >/dev/null
 cores=$(nproc)
-threads=${THREADS:-"1 2 4 8 16$([ "$cores" -gt 16 ] && echo " $cores")"}
+threads=${THREADS:-"1 2 4 8 16$([ "$cores" -le 16 ] || echo " $cores")"}
 export LD_LIBRARY_PATH="$R/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" QT_PLUGIN_PATH="$R/plugins"
 export QT_QPA_PLATFORM=offscreen XDG_RUNTIME_DIR="${XDG_RUNTIME_DIR:-$work/xdg}"
 mkdir -p "$XDG_RUNTIME_DIR" && chmod 700 "$XDG_RUNTIME_DIR"

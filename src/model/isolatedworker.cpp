@@ -190,11 +190,19 @@ QString lastLine(const QByteArray& text) {
 // The worker decodes every texture into fresh buffers (16 MiB for a 2048² RGBA image, several times
 // over), so it runs with malloc on transparent huge pages (core/hugepages.h): importing DamagedHelmet
 // (five 2048² JPEGs) took 490-610 ms before and 227-352 ms after, four runs each on the 2-core VM.
+// The worker's glibc tunables: huge pages as the editor has them, and at most two malloc arenas. Each
+// thread that allocates would otherwise get an arena of its own, and with huge pages each reserves 64 MiB
+// or more of address space: the texture decoders of a 16-core machine (one thread per texture) then ran
+// out of the worker's address-space budget (RLIMIT_AS, importbudget.h) for the 3.8 MB DamagedHelmet,
+// and a thread could not start. Two arenas keep the decoders' contention low and the budget machine-free.
 QProcessEnvironment workerEnvironment() {
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-    const std::string tunables =
-        withHugePageTunable(env.value(QStringLiteral("GLIBC_TUNABLES")).toStdString());
-    if (!tunables.empty()) env.insert(QStringLiteral("GLIBC_TUNABLES"), QString::fromStdString(tunables));
+    QString tunables = env.value(QStringLiteral("GLIBC_TUNABLES"));
+    if (const std::string huge = withHugePageTunable(tunables.toStdString()); !huge.empty())
+        tunables = QString::fromStdString(huge);
+    if (!tunables.contains(QLatin1String("glibc.malloc.arena_max")))
+        tunables += QLatin1String(tunables.isEmpty() ? "" : ":") + QLatin1String("glibc.malloc.arena_max=2");
+    env.insert(QStringLiteral("GLIBC_TUNABLES"), tunables);
     return env;
 }
 

@@ -12,12 +12,14 @@
 #include <QImageReader>
 #include <QThread>
 #include <QThreadPool>
+
 #include <QUrl>
 #include <assimp/GltfMaterial.h>
 #include <assimp/material.h>
 #include <assimp/scene.h>
 #include <assimp/texture.h>
 #include <cmath>
+#include <memory>
 
 namespace lr::detail {
 
@@ -78,8 +80,16 @@ class TextureLoader {
         } else if (m_jobs.size() > 1) {
             QThreadPool pool;
             pool.setMaxThreadCount(std::clamp(QThread::idealThreadCount(), 1, int(m_jobs.size())));
-            for (Job& job : m_jobs)
-                pool.start([this, &job] { decode(job); });
+            std::vector<std::unique_ptr<QRunnable>> tasks;
+            for (Job& job : m_jobs) {
+                tasks.emplace_back(QRunnable::create([this, &job] { decode(job); }));
+                tasks.back()->setAutoDelete(false);
+                pool.start(tasks.back().get());
+            }
+            // This thread decodes what no pool thread has begun: all of it when no thread could start
+            // (a thread's stack is refused under a low address-space limit), where waiting would hang.
+            for (const std::unique_ptr<QRunnable>& task : tasks)
+                if (pool.tryTake(task.get())) task->run();
             pool.waitForDone();
         }
         std::vector<int> remap(m_jobs.size(), -1);
