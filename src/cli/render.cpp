@@ -116,11 +116,21 @@ int runRender(const QStringList& args) {
     request.output = parser.value(output);
     request.outputIsFolder = request.output.endsWith(QLatin1Char('/')) || QFileInfo(request.output).isDir();
     request.format = request.outputIsFolder ? QByteArray("png") : writableImageFormatOf(request.output);
+    const bool exr =
+        !request.outputIsFolder && request.output.endsWith(QLatin1String(".exr"), Qt::CaseInsensitive);
+    if (exr) request.format = "exr";
     if (request.format.isEmpty())
-        return usage(QStringLiteral("the output must end in .png, .jpg or .jpeg: %1").arg(request.output));
+        return usage(
+            QStringLiteral("the output must end in .png, .jpg or .jpeg (or .exr with --quality path): %1")
+                .arg(request.output));
     QString message;
     const std::optional<SceneOptions> options = scene.read(parser, &message, false, true, true);
     if (!options) return usage(message);
+    if (exr && !options->pathTraced)
+        return usage(
+            QStringLiteral("a scene-linear .exr comes from --quality path; the raster qualities write "
+                           ".png or .jpg: %1")
+                .arg(request.output));
     const std::optional<TracedRenderOptions> traced = tracedSet.read(parser, options->pathTraced, &message);
     if (!traced) return usage(message);
     request.traced = *traced;

@@ -230,9 +230,10 @@ void Runner::renderView(const QString& modelPath, LoadedScene& scene, size_t beg
         QImage image;
         QString line;      // what the "wrote" line says of the image
         QJsonObject extra; // and the summary line
+        std::optional<TracedImages::Result> tracedResult;
         if (traced) {
-            const std::optional<TracedImages::Result> t =
-                traced->render(scene, rig, camera, r.options.size, settings, warning, &message);
+            tracedResult = traced->render(scene, rig, camera, r.options.size, settings, warning, &message);
+            const std::optional<TracedImages::Result>& t = tracedResult;
             if (t) {
                 image = t->image;
                 extra = {
@@ -263,7 +264,13 @@ void Runner::renderView(const QString& modelPath, LoadedScene& scene, size_t beg
         if (settings.transparentBackground && r.format == "jpeg" && !std::exchange(warnedJpeg, true))
             err << name
                 << ": warning: JPEG has no alpha channel; the transparent background is written black\n";
-        if (!writeOutputImage(image, item.file, r.format, &message)) {
+        if (r.format == "exr") {
+            const QByteArray bytes = encodeTracedExr(*tracedResult, settings, &message);
+            if (bytes.isEmpty() || !writeOutputFile(item.file, bytes, &message)) {
+                fail(i, i + 1, message);
+                continue;
+            }
+        } else if (!writeOutputImage(image, item.file, r.format, &message)) {
             fail(i, i + 1, message);
             continue;
         }

@@ -8,6 +8,7 @@
 #include "sceneoptions.h"
 
 #include "render/rendersettings.h"
+#include "scene/floatimage.h"
 
 #include <QImage>
 #include <QSize>
@@ -46,6 +47,7 @@ class TracedImages {
         double seconds = 0.0; // tracing only
         double noise = 0.0;   // PathTracer::noiseEstimate at the end (+infinity under 2 samples)
         QString stoppedBy;    // "samples", "time" or "noise"
+        FloatImage linear;    // the mean scene-linear radiance and coverage (premultiplied), for .exr
     };
 
     // `scene`'s model and environment lit by `rig`, seen from `camera` at `size` with `settings`' exposure,
@@ -64,6 +66,11 @@ class TracedImages {
     std::shared_ptr<const LoadedEnvironment> m_environment;
     Rig m_rig;
 };
+
+// The traced image as scene-linear float RGBA OpenEXR, its exposure, tone map and samples in the header
+// (lightrig/exposureEV, lightrig/toneMap, lightrig/samples: not applied to the pixels).
+QByteArray encodeTracedExr(const TracedImages::Result& result, const RenderSettings& settings,
+                           QString* error);
 
 // Bytes `lightrig render --quality path` holds for an image of `size` (the accumulation buffers, the display
 // image, and the traced scene's share, about).
