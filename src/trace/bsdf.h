@@ -2,10 +2,9 @@
 // (src/core/lighting.h pbrLobes: Trowbridge-Reitz D, height-correlated Smith V, Schlick F, (1 − F)
 // c_diff / π), so the traced image, the raster and the double reference shade the same material. This
 // adds what a path tracer needs besides the value: a direction drawn from the lobes and its density.
-//   - specular: the half vector from GGX's visible normals (Heitz 2018), reflected about h:
-//     pdf(l) = G1(v) D(h) / (4 n · v), G1 Smith's masking of the view; where n · v is at or below 1e-4
-//     (a normal map can turn the shading normal away from the view) from D(h) (h · n) (Walter et al.
-//     2007) instead: pdf(l) = D(h) (n · h) / (4 |v · h|)
+//   - specular: core's montecarlo::SpecularLobe, the lobe the reference's integrators sample: the half
+//     vector from GGX's visible normals (Heitz 2018), pdf(l) = G1(v) D(h) / (4 n · v), or where the
+//     shading normal turns away from the view (a normal map can) from D(h) (n · h), reflected about h
 //   - diffuse: the cosine-weighted hemisphere, pdf(l) = (n · l) / π
 //   - the lobe is chosen with probability pSpecular from the Fresnel-weighted reflectances at n · v.
 // Only reflection: no transmission. Directions below the shading normal's horizon have value and
@@ -13,6 +12,7 @@
 #pragma once
 
 #include "core/lighting.h"
+#include "core/montecarlo.h"
 
 #include <glm/vec3.hpp>
 
@@ -43,9 +43,10 @@ class Bsdf {
     double alpha() const { return m_alpha; }
 
   private:
-    glm::dvec3 m_n, m_v, m_t, m_b;
+    glm::dvec3 m_n, m_v;
     glm::dvec3 m_cDiff, m_f0;
     double m_alpha = 1.0;
+    montecarlo::SpecularLobe m_specular; // after m_alpha, which it is built from
     double m_pSpecular = 0.5;
 };
 

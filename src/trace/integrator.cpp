@@ -2,6 +2,9 @@
 
 #include "bsdf.h"
 
+#include "core/envintegrate.h"
+#include "core/montecarlo.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -10,6 +13,8 @@
 namespace lr::trace {
 
 namespace {
+
+using envintegrate::luminance;
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
@@ -20,16 +25,6 @@ double powerHeuristic(double a, double b) {
 
 double maxOf(const glm::dvec3& c) {
     return std::max({c.x, c.y, c.z});
-}
-
-double luminance(const glm::dvec3& c) {
-    return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
-}
-
-void basisAround(const glm::dvec3& w, glm::dvec3* t, glm::dvec3* b) {
-    const glm::dvec3 helper = std::abs(w.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
-    *t = glm::normalize(glm::cross(helper, w));
-    *b = glm::cross(w, *t);
 }
 
 double cosineTerm(DiffuseModel model, double nDotL) {
@@ -43,19 +38,17 @@ double cosineTerm(DiffuseModel model, double nDotL) {
 glm::dvec3 shadowTarget(const TraceLight& light, const glm::dvec3& p, const glm::dvec3& toLight, Sampler& s,
                         double* distance) {
     const ShadowEmitter& e = light.emitter;
-    glm::dvec3 t, b;
     if (e.directional) {
         *distance = kInfinity;
         if (!(e.halfAngle > 0.0)) return toLight;
-        basisAround(toLight, &t, &b);
         const glm::dvec2 u = s.next2();
-        const double cosT = 1.0 - u.x * (1.0 - std::cos(e.halfAngle));
-        const double sinT = std::sqrt(std::max(0.0, 1.0 - cosT * cosT)), phi = 2.0 * std::numbers::pi * u.y;
-        return cosT * toLight + sinT * (std::cos(phi) * t + std::sin(phi) * b);
+        return montecarlo::around(toLight, 1.0 - u.x * (1.0 - std::cos(e.halfAngle)),
+                                  2.0 * std::numbers::pi * u.y);
     }
     glm::dvec3 target = light.shade.position;
     if (e.radius > 0.0) {
-        basisAround(toLight, &t, &b);
+        glm::dvec3 t, b;
+        montecarlo::frameAround(toLight, &t, &b);
         const glm::dvec2 u = s.next2();
         const double r = e.radius * std::sqrt(u.x), phi = 2.0 * std::numbers::pi * u.y;
         target += r * (std::cos(phi) * t + std::sin(phi) * b);

@@ -1,5 +1,6 @@
 #include "tracescene.h"
 
+#include "core/envintegrate.h"
 #include "core/prepare.h"
 
 #include <algorithm>
@@ -9,10 +10,6 @@
 namespace lr::trace {
 
 namespace {
-
-double luminance(const glm::dvec3& c) {
-    return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
-}
 
 TextureSampler samplerOf(const Model& model, int index, bool srgb) {
     if (index < 0 || size_t(index) >= model.textures.size()) return {};
@@ -72,7 +69,8 @@ std::shared_ptr<const TraceScene> TraceScene::build(const SceneDescription& scen
     for (size_t p = 0; p < t->m_parts.size(); ++p) {
         const PartInfo& part = t->m_parts[p];
         if (part.material < 0) continue;
-        const double weight = luminance(glm::dvec3(t->m_materials[size_t(part.material)].material->emissive));
+        const double weight =
+            envintegrate::luminance(glm::dvec3(t->m_materials[size_t(part.material)].material->emissive));
         if (!(weight > 0.0) || !std::isfinite(weight)) continue;
         std::vector<EmissiveTriangles::Triangle> tris;
         const Mesh& mesh = *part.mesh;

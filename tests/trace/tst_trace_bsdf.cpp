@@ -3,6 +3,7 @@
 // views from normal to grazing, the mean of value / pdf over sampled directions equals the reflectance
 // ∫ f (n · l) dω found by quadrature, and the density integrates to at most 1 over the hemisphere (the rest
 // is the share of samples that fall below the horizon and are lost).
+#include "core/envintegrate.h"
 #include "trace/bsdf.h"
 #include "trace/sampler.h"
 
@@ -11,6 +12,7 @@
 #include <cmath>
 #include <numbers>
 
+using lr::envintegrate::luminance;
 using lr::trace::Bsdf;
 using lr::trace::BsdfSample;
 using lr::trace::Sampler;
@@ -21,10 +23,6 @@ struct Integrals {
     double reflectance = 0.0; // ∫ luminance(eval) dω
     double density = 0.0;     // ∫ pdf dω
 };
-
-double luminance(const glm::dvec3& c) {
-    return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
-}
 
 // Midpoint quadrature over the hemisphere in (cos θ, φ), finer where a sharp lobe needs it.
 Integrals quadrature(const Bsdf& bsdf, int n) {
