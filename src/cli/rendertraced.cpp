@@ -77,11 +77,15 @@ QByteArray encodeTracedExr(const TracedImages::Result& result, const RenderSetti
                          error);
 }
 
+namespace {
+// Per pixel: the radiance and alpha sums (4 doubles), the luminance mean and deviations (2 doubles), the
+// sample count, the display image (RGBA8) and its encoding; and the traced scene's share, about.
+constexpr std::int64_t kTracedBytesPerPixel = 4 * 8 + 2 * 8 + 4 + 4 + 4;
+constexpr std::int64_t kTracedSceneBytes = std::int64_t(256) << 20;
+} // namespace
+
 std::int64_t tracedImageBytes(QSize size) {
-    // Per pixel: the radiance and alpha sums (4 doubles), the luminance mean and deviations (2 doubles),
-    // the sample count, the display image (RGBA8) and its encoding.
-    const std::int64_t perPixel = 4 * 8 + 2 * 8 + 4 + 4 + 4;
-    return std::int64_t(size.width()) * size.height() * perPixel + (std::int64_t(256) << 20);
+    return std::int64_t(size.width()) * size.height() * kTracedBytesPerPixel + kTracedSceneBytes;
 }
 
 bool checkTracedMemory(QSize size, bool unchecked, QString* error) {
@@ -98,7 +102,7 @@ bool checkTracedMemory(QSize size, bool unchecked, QString* error) {
             .arg(size.width())
             .arg(size.height())
             .arg(gib(need))
-            .arg(tracedImageBytes(QSize(1, 1)) - (std::int64_t(256) << 20))
+            .arg(kTracedBytesPerPixel)
             .arg(gib(available), what);
     return false;
 }

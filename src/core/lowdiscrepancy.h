@@ -1,5 +1,6 @@
-// Low-discrepancy points shared by the environment's integrators (core/envbrdf, scene/envprefilter_ggx)
-// and the path tracer (trace/sampler.h).
+// Low-discrepancy points and the hash that scrambles them, shared by the environment's integrators
+// (core/envbrdf, scene/envprefilter_ggx), the traced shadow reference (scene/referencetrace) and the path
+// tracer (trace/sampler.h).
 #pragma once
 
 #include <cstdint>
@@ -18,6 +19,13 @@ inline std::uint32_t reverseBits(std::uint32_t x) {
 // The radical inverse of i in base 2 (van der Corput): the second coordinate of Hammersley point i.
 inline double radicalInverse2(std::uint32_t bits) {
     return double(reverseBits(bits)) * 2.3283064365386963e-10;
+}
+
+// PCG hash (Jarzynski & Olano 2020): a well-mixed 32-bit value from a 32-bit state.
+inline std::uint32_t pcgHash(std::uint32_t v) {
+    const std::uint32_t state = v * 747796405u + 2891336453u;
+    const std::uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+    return (word >> 22u) ^ word;
 }
 
 // Owen scrambling by hashing (Burley 2020, "Practical Hash-based Owen Scrambling", JCGT 9(4)): the

@@ -1,6 +1,7 @@
 #include "referencetrace.h"
 
 #include "core/lighting.h"
+#include "core/lowdiscrepancy.h"
 #include "model/ground.h"
 
 #include <algorithm>
@@ -13,13 +14,6 @@
 namespace lr {
 
 namespace {
-
-// PCG hash (Jarzynski & Olano 2020): a well-mixed 32-bit value from a 32-bit state.
-std::uint32_t pcgHash(std::uint32_t v) {
-    const std::uint32_t state = v * 747796405u + 2891336453u;
-    const std::uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
-    return (word >> 22u) ^ word;
-}
 
 double uniform01(std::uint32_t* state) {
     *state = pcgHash(*state);

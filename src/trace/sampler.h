@@ -18,12 +18,6 @@
 
 namespace lr::trace {
 
-inline std::uint32_t pcgHash(std::uint32_t v) {
-    const std::uint32_t state = v * 747796405u + 2891336453u;
-    const std::uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
-    return (word >> 22u) ^ word;
-}
-
 class Sampler {
   public:
     Sampler(std::uint32_t pixel, std::uint32_t sample, std::uint32_t seed = 0)
