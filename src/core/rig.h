@@ -67,6 +67,9 @@ inline constexpr int kMaxShadowCasters = 16;
 
 struct Light {
     QString name;
+    // The light group it renders into (issue 37, core/lightgroups.h): lights with the same group share one
+    // per-group image; empty: a group of its own, named after the light.
+    QString group;
     LightType type = LightType::Point;
     bool enabled = true;
     glm::dvec3 color{1.0};

@@ -77,6 +77,7 @@ std::optional<Light> readLight(Checker& c, const Value& v, const QString& path, 
     const auto name = [&](const Value& x, const QString& p) { return c.name(x, p); };
     const auto color = [&](const Value& x, const QString& p) { return c.color(x, p); };
     o.read("name", l.name, name);
+    o.read("group", l.group, name);
     o.read("enabled", l.enabled, [&](const Value& x, const QString& p) { return c.boolean(x, p); });
     o.read("color", l.color, color);
     if (const Value* t = o.take("temperature"))

@@ -107,6 +107,7 @@ QByteArray light(const Light& l) {
              {"type", name(l.type)},
              {"enabled", l.enabled ? "true" : "false"},
              {"color", vec(l.color)}};
+    if (!l.group.isEmpty()) f.insert(f.begin() + 1, {"group", str(l.group)});
     if (l.temperature) f.push_back({"temperature", num(*l.temperature)});
     f.push_back({"intensity", num(l.intensity)});
     if (l.usesPosition()) f.push_back({"position", vec(l.position)});
