@@ -38,7 +38,7 @@ namespace lr {
 inline constexpr int kMaxExrSide = 32768;                // render --size's limit
 inline constexpr qint64 kMaxExrPixels = 256ll << 20;     // 256 Mpx
 inline constexpr qint64 kMaxExrDecodedBytes = 4ll << 30; // float values of all channels: 4 GiB
-inline constexpr qint64 kMaxExrFileBytes = 4ll << 30;
+inline constexpr qint64 kMaxExrFileBytes = 3ll << 30;    // with the decoded values, within the worker's 8 GiB
 // Decoded bytes (4 a value) allowed per byte of file, beyond kFreeExrBytes: twice what ZIP can reach on
 // half data (deflate stops near 1032:1, and a half is half a float), so that every file exrencode.h writes
 // is read whatever its content (an empty light group, a transparent background). Near-constant DWAA/DWAB
