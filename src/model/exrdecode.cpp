@@ -90,7 +90,7 @@ QString decode(QByteArrayView bytes, ExrFile* out) {
             return why;
         stream.seekg(0);
     }
-    Imf::InputFile file(stream, 1);
+    Imf::InputFile file(stream, exrio::threads());
     const Imf::Header& header = file.header();
     const Imath::Box2i display = header.displayWindow();
     const qint64 w = exrio::windowWidth(display), h = exrio::windowHeight(display);

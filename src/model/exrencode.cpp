@@ -1,6 +1,7 @@
 #include "exrencode.h"
 
 #include "exrdecode.h"
+#include "exrio.h"
 
 #include <Imath/half.h>
 #include <ImfChannelList.h>
@@ -209,11 +210,11 @@ QByteArray writeExr(int width, int height, const std::vector<LayerView>& layers,
         for (const auto& [name, value] : attributes)
             header.insert(name.toStdString(), Imf::StringAttribute(value.toStdString()));
         MemoryOStream stream(&bytes);
-        Imf::OutputFile file(stream, header);
-        constexpr int kStripRows = 64; // 4 ZIP blocks of 16 rows
+        Imf::OutputFile file(stream, header, exrio::threads());
+        const int stripRows = 32 * std::max(1, exrio::threads()); // 2 ZIP blocks of 16 rows a thread
         std::vector<std::vector<Imath::half>> halves(layers.size());
-        for (int y0 = 0; y0 < height; y0 += kStripRows) {
-            const int rows = std::min(kStripRows, height - y0);
+        for (int y0 = 0; y0 < height; y0 += stripRows) {
+            const int rows = std::min(stripRows, height - y0);
             Imf::FrameBuffer frame;
             for (size_t l = 0; l < layers.size(); ++l) {
                 const LayerView& layer = layers[l];

@@ -1,11 +1,15 @@
 #include "exrio.h"
 
+#include <ImfThreading.h>
 #include <ImfTileDescription.h>
+
+#include <QThread>
 
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <fcntl.h>
+#include <mutex>
 #include <stdexcept>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -84,6 +88,15 @@ qint64 chunkCount(const Imf::Header& header) {
     }
     const int lines = linesPerChunk(header.compression());
     return (h + lines - 1) / lines;
+}
+
+int threads() {
+    static std::once_flag once;
+    std::call_once(once, [] {
+        if (Imf::globalThreadCount() == 0)
+            Imf::setGlobalThreadCount(std::clamp(QThread::idealThreadCount(), 1, 8));
+    });
+    return Imf::globalThreadCount();
 }
 
 QString UntrustedFile::open(const QString& path, qint64 maxBytes) {

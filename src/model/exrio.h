@@ -1,6 +1,6 @@
-// Internal to the OpenEXR readers (environmentdecode.cpp, exrdecode.cpp): an input stream over bytes in
-// memory, the first header read alone (before OpenEXR sizes its tables by it), and an untrusted file
-// opened without blocking and mapped.
+// Internal to the OpenEXR readers and writer (environmentdecode.cpp, exrdecode.cpp, exrencode.cpp): an
+// input stream over bytes in memory, the first header read alone (before OpenEXR sizes its tables by it),
+// an untrusted file opened without blocking and mapped, and OpenEXR's thread pool.
 #pragma once
 
 #include <ImfHeader.h>
@@ -41,6 +41,10 @@ qint64 windowHeight(const Imath::Box2i& box);
 // The chunks (a tile, or 1 to 256 scanlines by compression) of a part with this header: each has an 8-byte
 // offset in the table after the header, so a header whose table does not fit in the file is lying.
 qint64 chunkCount(const Imf::Header& header);
+
+// The threads OpenEXR compresses and decompresses blocks on (its global pool, started here once with up to
+// 8 threads when nobody started it): pass to InputFile and OutputFile.
+int threads();
 
 // A file from the user, opened without blocking (a FIFO with no writer would wait) and checked to be a
 // regular file before a byte is read (/dev/zero was once read until the worker's memory ran out), then
