@@ -31,7 +31,7 @@ inline std::vector<lr::ExrLayer> aovLayers(int w, int h) {
         makeLayer("normal", {"X", "Y", "Z"}, w, h, 4), makeLayer("depth", {"Z"}, w, h, 5)};
     for (float& z : layers.back().pixels)
         z = 1000.25f + 997.5f * z * z;
-    layers.back().pixels[1] = 123456.78f;
+    if (layers.back().pixels.size() > 1) layers.back().pixels[1] = 123456.78f;
     return layers;
 }
 
