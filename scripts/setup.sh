@@ -5,7 +5,8 @@ set -euo pipefail
 
 LIGHTRIG_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 LIGHTRIG_PACKAGES=(qt6-base-dev libqt6opengl6-dev qt6-base-dev-tools libassimp-dev libglm-dev libmeshoptimizer-dev libembree-dev libopenexr-dev libstb-dev cmake g++
-                   ninja-build ccache xvfb xauth libgl1-mesa-dri fonts-dejavu-core parallel)
+                   ninja-build ccache xvfb xauth libgl1-mesa-dri fonts-dejavu-core parallel
+                   openimageio-tools)  # openimageio-tools: oiiotool, which tests read multi-layer EXRs with
 
 lightrig_install_packages() {
     local missing=()

@@ -1,12 +1,13 @@
-// `lightrig import-worker` (hidden): imports one model (model/isolatedimport.h) or decodes one
-// environment image (model/environmentdecode.h) for a parent process so that an importer crash, hang or
-// allocation bomb ends this process, not the editor or `lightrig render`.
+// `lightrig import-worker` (hidden): imports one model (model/isolatedimport.h), decodes one environment
+// image (model/environmentdecode.h) or one multi-layer OpenEXR file (model/exrdecode.h) for a parent process
+// so that an importer crash, hang or allocation bomb ends this process, not the editor or `lightrig render`.
 // Reads the request from stdin and writes frames to stdout (model/importprotocol.h). The parent sets the
 // memory limit (RLIMIT_AS) before this starts; a failed allocation is remembered so that a crash that
 // follows it can be reported as the memory limit rather than as a plain crash.
 #include "cli.h"
 
 #include "model/environmentdecode.h"
+#include "model/exrdecode.h"
 #include "model/gltfexport.h"
 #include "model/importbudget.h"
 #include "model/importprotocol.h"
@@ -186,6 +187,31 @@ bool sendShared(int fd, const Model& model) {
     std::_Exit(sent ? Ok : Failed);
 }
 
+// A multi-layer OpenEXR file (model/exrdecode.h): the 'L' frame, its pixels written from the decoded
+// layers themselves (no copy), or the decoder's error.
+[[noreturn]] void sendExrLayers(const QString& path) {
+    QString error;
+    const std::optional<ExrFile> file = decodeExrLayersFile(path, &error);
+    bool sent;
+    if (file) {
+        const QByteArray head = exrLayersReplyHead(*file);
+        quint64 length = quint64(head.size());
+        for (const ExrLayer& layer : file->layers)
+            length += layer.pixels.size() * sizeof(float);
+        char header[ip::kFrameHeaderSize] = {ip::kExrLayers};
+        std::memcpy(header + 1, &length, sizeof length);
+        sent = writeAll(header, sizeof header) && writeAll(head.constData(), std::size_t(head.size()));
+        for (const ExrLayer& layer : file->layers)
+            sent = sent && writeAll(reinterpret_cast<const char*>(layer.pixels.data()),
+                                    layer.pixels.size() * sizeof(float));
+    } else {
+        QByteArray payload(1, char(g_allocationFailed ? ip::kErrorOutOfMemory : 0));
+        payload += error.toUtf8().left(ip::kMaxErrorBytes);
+        sent = writeFrame(ip::kError, payload.constData(), std::size_t(payload.size()));
+    }
+    std::_Exit(sent ? Ok : Failed);
+}
+
 // An Assimp export of a model to GLB (model/gltfexport.h), or the error.
 [[noreturn]] void sendGltf(const QString& path) {
     QString error;
@@ -263,11 +289,17 @@ int runImportWorker(const QStringList&) {
     }
     const int sharedFd = request.value(QStringLiteral("sharedFd")).toInt(-1);
     std::mutex writing;
-    const bool environment = request.value(QStringLiteral("kind")).toString() == QLatin1String("environment");
-    followInputBudget(environment ? BudgetKind::Environment : BudgetKind::Model, writing);
+    const QString kind = request.value(QStringLiteral("kind")).toString();
+    const bool environment = kind == QLatin1String("environment");
+    const bool exrLayers = kind == QLatin1String(ip::kExrLayersKind);
+    followInputBudget(environment ? BudgetKind::Environment
+                      : exrLayers ? BudgetKind::ExrLayers
+                                  : BudgetKind::Model,
+                      writing);
     if (const QByteArray mode = qgetenv(ip::kTestCrashVariable); !mode.isEmpty()) testCrash(mode, sharedFd);
     if (environment) sendEnvironment(path);
-    if (request.value(QStringLiteral("kind")).toString() == QLatin1String("gltf-export")) sendGltf(path);
+    if (exrLayers) sendExrLayers(path);
+    if (kind == QLatin1String("gltf-export")) sendGltf(path);
 
     ModelLoadOptions options;
     options.allowTexturesOutsideFolder =

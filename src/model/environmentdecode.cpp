@@ -1,14 +1,13 @@
 #include "environmentdecode.h"
 
 #include "environmentstb.h"
+#include "exrio.h"
 
 #include <ImfArray.h>
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
-#include <ImfIO.h>
 #include <ImfInputFile.h>
-#include <ImfTileDescription.h>
 #include <QByteArray>
 #include <QFile>
 #include <QFileInfo>
@@ -17,47 +16,13 @@
 #include <cmath>
 #include <cstring>
 #include <exception>
-#include <fcntl.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
 namespace lr {
 
 namespace {
 
 constexpr char kExrMagic[] = {0x76, 0x2f, 0x31, 0x01};
-
-// An OpenEXR input stream over bytes in memory; reading past the end throws (OpenEXR catches nothing
-// of ours: the decoder below turns every exception into an error).
-class MemoryStream : public Imf::IStream {
-  public:
-    explicit MemoryStream(QByteArrayView bytes) : Imf::IStream("memory"), m_bytes(bytes) {}
-    bool isMemoryMapped() const override { return true; }
-    char* readMemoryMapped(int n) override {
-        char* p = const_cast<char*>(m_bytes.data()) + m_pos;
-        advance(n);
-        return p;
-    }
-    bool read(char c[], int n) override {
-        const qsizetype at = m_pos;
-        advance(n);
-        std::memcpy(c, m_bytes.data() + at, size_t(n));
-        return m_pos < m_bytes.size();
-    }
-    uint64_t tellg() override { return uint64_t(m_pos); }
-    void seekg(uint64_t pos) override {
-        if (pos > uint64_t(m_bytes.size())) throw std::runtime_error("seek past the end of the file");
-        m_pos = qsizetype(pos);
-    }
-
-  private:
-    void advance(int n) {
-        if (n < 0 || n > m_bytes.size() - m_pos) throw std::runtime_error("unexpected end of file");
-        m_pos += n;
-    }
-    QByteArrayView m_bytes;
-    qsizetype m_pos = 0;
-};
 
 QString sizeProblem(qint64 w, qint64 h) {
     if (w <= 0 || h <= 0) return QStringLiteral("its size %1×%2 is empty").arg(w).arg(h);
@@ -88,45 +53,15 @@ QString expansionProblem(qint64 w, qint64 h, qint64 fileBytes) {
         .arg(kMaxEnvironmentExpansion);
 }
 
-int linesPerChunk(Imf::Compression c) {
-    switch (c) {
-    case Imf::NO_COMPRESSION:
-    case Imf::RLE_COMPRESSION:
-    case Imf::ZIPS_COMPRESSION:
-        return 1;
-    case Imf::ZIP_COMPRESSION:
-    case Imf::PXR24_COMPRESSION:
-        return 16;
-    case Imf::PIZ_COMPRESSION:
-    case Imf::B44_COMPRESSION:
-    case Imf::B44A_COMPRESSION:
-    case Imf::DWAA_COMPRESSION:
-        return 32;
-    default: // DWAB and any later one
-        return 256;
-    }
-}
-
 // OpenEXR: the header is checked against the limits and the file size before any pixel is read.
 QString decodeExr(QByteArrayView bytes, EnvironmentImage* image) {
-    MemoryStream stream(bytes);
+    exrio::MemoryIStream stream(bytes);
     { // The (first part's) header alone, before InputFile sizes its tables by it.
         Imf::Header first;
-        int version = 0;
-        if (bytes.size() < 8) throw std::runtime_error("unexpected end of file");
-        std::memcpy(&version, bytes.data() + 4, sizeof version);
-        stream.seekg(8);
-        first.readFrom(stream, version);
-        const Imath::Box2i window = first.dataWindow();
-        const qint64 w = qint64(window.max.x) - window.min.x + 1, h = qint64(window.max.y) - window.min.y + 1;
+        exrio::readFirstHeader(stream, bytes, &first);
+        const qint64 w = exrio::windowWidth(first.dataWindow()), h = exrio::windowHeight(first.dataWindow());
         if (QString why = sizeProblem(w, h); !why.isEmpty()) return why;
-        // Each chunk (a tile, or 1 to 256 scanlines by compression) has an 8-byte offset after the header.
-        qint64 chunks = (h + linesPerChunk(first.compression()) - 1) / linesPerChunk(first.compression());
-        if (first.hasTileDescription()) {
-            const Imf::TileDescription& t = first.tileDescription();
-            chunks = (w + t.xSize - 1) / std::max(1u, t.xSize) * ((h + t.ySize - 1) / std::max(1u, t.ySize));
-        }
-        if (chunks * 8 > bytes.size() - qint64(stream.tellg()))
+        if (exrio::chunkCount(first) * 8 > bytes.size() - qint64(stream.tellg()))
             return QStringLiteral("the header claims %1×%2 texels but the file holds only %3 bytes")
                 .arg(w)
                 .arg(h)
@@ -340,36 +275,14 @@ QString environmentFileProblem(const QString& path) {
 }
 
 EnvironmentDecodeResult decodeEnvironmentFile(const QString& path) {
-    QFile file(path);
-    const auto fail = [&](const QString& reason) {
+    exrio::UntrustedFile file;
+    if (QString problem = file.open(path, kMaxEnvironmentFileBytes); !problem.isEmpty()) {
         EnvironmentDecodeResult r;
-        r.reason = reason;
-        r.error = QStringLiteral("could not read %1: %2").arg(path, reason);
+        r.reason = problem;
+        r.error = QStringLiteral("could not read %1: %2").arg(path, problem);
         return r;
-    };
-    // Opened without blocking (a FIFO with no writer would wait) and checked to be a regular file before
-    // a byte is read: /dev/zero was read until the worker's memory ran out.
-    const int fd = ::open(QFile::encodeName(path).constData(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-    if (fd < 0)
-        return fail(errno == ENOENT ? QStringLiteral("no such file")
-                                    : QString::fromLocal8Bit(std::strerror(errno)));
-    struct stat st {};
-    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-        ::close(fd);
-        return fail(QStringLiteral("not a regular file (a folder, FIFO, socket or device)"));
     }
-    if (!file.open(fd, QIODevice::ReadOnly, QFileDevice::AutoCloseHandle)) {
-        ::close(fd);
-        return fail(file.errorString());
-    }
-    if (file.size() > kMaxEnvironmentFileBytes)
-        return fail(QStringLiteral("%1 bytes is larger than the limit of %2 GiB")
-                        .arg(file.size())
-                        .arg(kMaxEnvironmentFileBytes >> 30));
-    const uchar* mapped = file.map(0, file.size());
-    if (mapped) return decodeEnvironment(QByteArrayView(mapped, file.size()), path);
-    const QByteArray bytes = file.readAll();
-    return decodeEnvironment(bytes, path);
+    return decodeEnvironment(file.bytes(), path);
 }
 
 QString checkEnvironmentImage(const EnvironmentImage& image) {

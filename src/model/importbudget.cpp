@@ -1,6 +1,7 @@
 #include "importbudget.h"
 
 #include "environmentdecode.h"
+#include "exrdecode.h"
 
 #include <QFileInfo>
 #include <QSet>
@@ -27,9 +28,10 @@ std::function<void(qint64)> g_listener;
 
 ImportBudget importBudget(BudgetKind kind, qint64 inputBytes, qint64 hardMemoryBytes, int hardTimeoutMs) {
     const qint64 input = std::clamp<qint64>(inputBytes, 0, 1ll << 40);
-    const qint64 memory = kind == BudgetKind::Model
-                              ? kModelBaseBytes + kModelBytesPerInputByte * input
-                              : kEnvironmentBaseBytes + 2 * maxEnvironmentDecodedBytes(input);
+    qint64 memory = kModelBaseBytes + kModelBytesPerInputByte * input;
+    if (kind == BudgetKind::Environment)
+        memory = kEnvironmentBaseBytes + 2 * maxEnvironmentDecodedBytes(input);
+    if (kind == BudgetKind::ExrLayers) memory = kEnvironmentBaseBytes + input + maxExrDecodedBytes(input);
     const qint64 ms = kBaseMs + kMsPerMiB * input / MiB;
     ImportBudget b; // no limit stays no limit
     b.memoryBytes = hardMemoryBytes > 0 ? std::min((memory + MiB - 1) / MiB * MiB, hardMemoryBytes) : 0;

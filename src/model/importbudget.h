@@ -12,7 +12,7 @@
 
 namespace lr {
 
-enum class BudgetKind { Model, Environment };
+enum class BudgetKind { Model, Environment, ExrLayers };
 
 struct ImportBudget {
     qint64 memoryBytes = 0; // the worker's address space (RLIMIT_AS); <= 0: none
@@ -20,9 +20,10 @@ struct ImportBudget {
 };
 
 // Model: 1 GiB + 64 bytes per byte of input; environment: 512 MiB + twice the largest image a file of
-// that size may decode to (maxEnvironmentDecodedBytes); both 9 s + 1 s per MiB of input (under 10 s for a
-// file under 1 MiB). Memory is rounded up to whole MiB; each is capped by the hard limit (a hard limit <= 0,
-// none, stays none: 0).
+// that size may decode to (maxEnvironmentDecodedBytes); multi-layer OpenEXR: 512 MiB + the file (mapped) +
+// the most it may decode to (maxExrDecodedBytes, sent from where it was decoded); all 9 s + 1 s per MiB of
+// input (under 10 s for a file under 1 MiB). Memory is rounded up to whole MiB; each is capped by the hard
+// limit (a hard limit <= 0, none, stays none: 0).
 ImportBudget importBudget(BudgetKind kind, qint64 inputBytes, qint64 hardMemoryBytes, int hardTimeoutMs);
 
 // "12 KB", "3.4 MB": an input size as the messages write it.

@@ -4,7 +4,8 @@
 // Request (parent -> worker, stdin, then closed): a JSON object
 //   {"path": "...", "allowTexturesOutsideFolder": false, "maxDataUriBytes": 67108864, "sharedFd": 5}
 // or, for an environment image (model/environmentdecode.h), {"kind": "environment", "path": "..."}, or for
-// Assimp's glTF export of a model (model/gltfexport.h), {"kind": "gltf-export", "path": "..."}.
+// Assimp's glTF export of a model (model/gltfexport.h), {"kind": "gltf-export", "path": "..."}, or for a
+// multi-layer OpenEXR file (model/exrdecode.h), {"kind": "exr-layers", "path": "..."}.
 // sharedFd (optional): a memfd the parent created and let this worker inherit; the worker writes the
 // encoded model there from offset 0 and answers 'S', or falls back to 'M' when it cannot.
 // Reply (worker -> parent, stdout): frames of  u8 type, u64 payload length (host order), payload:
@@ -13,6 +14,7 @@
 //   'S'  the model is in the shared memfd of the request: u64 byte count (last frame)
 //   'V'  the environment image (last frame): u32 width, u32 height, u32 n, n bytes of UTF-8 warnings
 //        (one a line), then width × height × 3 floats (RGB, top row first); the parent checks all of it
+//   'L'  the layers of an OpenEXR file (last frame): exrimport.cpp's layout; the parent checks all of it
 //   'G'  the GLB Assimp's exporter made of the model (last frame); the parent parses it as untrusted
 //   'E'  failure: u8 flags (kErrorCancelled | kErrorOutOfMemory) + UTF-8 message (last frame)
 //   'O'  (empty) written by the worker's crash handler when an allocation had failed before the crash
@@ -32,9 +34,11 @@ inline constexpr char kOutOfMemory = 'O';
 inline constexpr char kShared = 'S';
 inline constexpr char kEnvironment = 'V';
 inline constexpr char kGltf = 'G';
+inline constexpr char kExrLayers = 'L';
 inline constexpr char kInputBytes = 'B';
 inline constexpr int kEnvironmentHeaderSize = 12;
 inline constexpr int kFrameHeaderSize = 9;
+inline constexpr char kExrLayersKind[] = "exr-layers"; // the request's "kind"
 
 inline constexpr quint8 kErrorCancelled = 1;
 inline constexpr quint8 kErrorOutOfMemory = 2;

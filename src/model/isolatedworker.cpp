@@ -53,7 +53,8 @@ class FrameReader {
     bool done() const { return m_state != State::Reading; }
     double fraction() const {
         double f = kImportShare * m_childFraction;
-        if (m_inPayload && (m_type == ip::kModel || m_type == ip::kEnvironment) && m_length > 0)
+        if (m_inPayload && (m_type == ip::kModel || m_type == ip::kEnvironment || m_type == ip::kExrLayers) &&
+            m_length > 0)
             f = kImportShare + (1.0 - kImportShare) * double(m_payload.size()) / double(m_length);
         return f;
     }
@@ -111,6 +112,9 @@ class FrameReader {
         case ip::kGltf:
             ok = m_length >= 12 && m_length <= quint64(m_maxReplyBytes);
             break;
+        case ip::kExrLayers: // width, height and two counts at least
+            ok = m_length >= 16 && m_length <= quint64(m_maxReplyBytes);
+            break;
         case ip::kShared:
         case ip::kInputBytes:
             ok = m_length == sizeof(quint64);
@@ -154,6 +158,7 @@ class FrameReader {
         case ip::kShared:
         case ip::kEnvironment:
         case ip::kGltf:
+        case ip::kExrLayers:
             m_state = State::Reply;
             break;
         }
