@@ -13,6 +13,7 @@ namespace lr::cli {
 int runPrefilter(const QStringList& args); // prefilter.cpp (issue 15)
 int runCompare(const QStringList& args);   // compare.cpp (issue 17)
 int runExport(const QStringList& args);    // export.cpp (issue 17)
+int runMix(const QStringList& args);       // mix.cpp (issue 37)
 
 namespace {
 bool g_displayAvailable = true;
@@ -30,6 +31,7 @@ const Subcommand kSubcommands[] = {
     {"prefilter", runPrefilter, false},
     {"compare", runCompare, true},
     {"export", runExport, false},
+    {"mix", runMix, false},
 };
 } // namespace
 
