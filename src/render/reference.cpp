@@ -4,6 +4,7 @@
 #include "core/colour.h"
 #include "core/lighting.h"
 #include "gbuffer.h"
+#include "referencelayers.h"
 
 #include <QtConcurrent/QtConcurrentMap>
 #include <algorithm>
@@ -146,6 +147,9 @@ ReferenceJob::ReferenceJob(GBuffer gbuffer, ReferenceScene scene)
         m_out.areaError.assign(size_t(w) * size_t(h), 0.0f);
         m_out.areaSamples.assign(size_t(w) * size_t(h), 0);
     }
+    m_out.groupCount = std::max(0, m_scene.groups.count);
+    if (m_out.groupCount > 0)
+        m_out.groupRadiance.assign(size_t(w) * size_t(h) * size_t(m_out.groupCount), glm::dvec3(0.0));
     m_rowIndices.resize(size_t(h));
     std::iota(m_rowIndices.begin(), m_rowIndices.end(), 0);
 }
@@ -198,9 +202,9 @@ void ReferenceJob::evaluateRow(int y) {
             shaded[k] = isArea[k] ? 0.0 : visibility[k];
         V radiance = lighting::shadeSurface<double>(s, sc.lights, sc.settings, shaded);
         if (m_out.area) {
-            const areaintegrate::Estimate a =
-                areaintegrate::integrate(sc.lights, visibility, s, sc.settings, std::uint64_t(i),
-                                         sc.areaConvergence, radiance, casters > 0 ? &direct : nullptr);
+            const areaintegrate::Estimate a = areaintegrate::integrate(
+                sc.lights, visibility, s, sc.settings, std::uint64_t(i), sc.areaConvergence, radiance,
+                casters > 0 || m_out.groupCount > 0 ? &direct : nullptr);
             radiance += a.radiance;
             m_out.areaError[i] = float(a.errorLevels);
             m_out.areaSamples[i] = a.samples;
@@ -224,6 +228,11 @@ void ReferenceJob::evaluateRow(int y) {
             m_out.shadowClass[i] =
                 largestChannelDifference(lit, unlit, sc.exposureEV, sc.toneMap) > kShadowThresholdLevels ? 1
                                                                                                          : 0;
+        }
+        if (m_out.groupCount > 0) {
+            if (!m_out.area) direct.assign(n, V(0.0));
+            splitReferencePixel(sc, s, shaded, visibility, direct, environment,
+                                &m_out.groupRadiance[i * size_t(m_out.groupCount)]);
         }
         m_out.radiance[i] = radiance;
         m_out.covered[i] = 1;

@@ -62,6 +62,14 @@ struct ReferenceScene {
     // Area lights: when their Monte Carlo stops (the frame's exposure and tone map).
     envintegrate::Convergence areaConvergence;
     bool hasAreaLights() const;
+    // Light groups (issue 37; referencelayers.h setReferenceGroups): when count > 0 the job also keeps
+    // each covered pixel's radiance per group. ofLight[k]: the group of lights[k] (-1: none); the others
+    // the index of that group, -1 when the scene has none.
+    struct Groups {
+        int count = 0;
+        std::vector<int> ofLight;
+        int environment = -1, emissive = -1, ambient = -1;
+    } groups;
 };
 
 // The reference scene of `rig` on `model` seen through `view` (the renderer's effective camera view
@@ -101,6 +109,10 @@ struct ReferenceImage {
     bool area = false;
     std::vector<float> areaError;
     std::vector<std::int32_t> areaSamples;
+    // Light groups, when the scene asked for them (ReferenceScene::groups): per pixel, per group (pixel ·
+    // groupCount + g) the radiance the group adds, in double; they sum to `radiance` to double rounding.
+    int groupCount = 0;
+    std::vector<glm::dvec3> groupRadiance;
     bool isNull() const { return width <= 0 || height <= 0; }
 };
 

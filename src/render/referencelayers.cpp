@@ -1,0 +1,87 @@
+#include "referencelayers.h"
+
+#include "layerscommon.h"
+
+#include <algorithm>
+
+namespace lr {
+
+void setReferenceGroups(ReferenceScene* scene, const Rig& rig, const std::vector<LightGroup>& groups) {
+    ReferenceScene::Groups& out = scene->groups;
+    out = {};
+    out.count = int(groups.size());
+    const std::vector<int> of = groupOfLights(rig, groups);
+    for (size_t i = 0; i < rig.lights.size(); ++i) // the lights prepareLights() kept, in its order
+        if (rig.lights[i].enabled) out.ofLight.push_back(of[i]);
+    for (size_t g = 0; g < groups.size(); ++g) {
+        if (groups[g].kind == LightGroupKind::Environment) out.environment = int(g);
+        if (groups[g].kind == LightGroupKind::Emissive) out.emissive = int(g);
+        if (groups[g].kind == LightGroupKind::Ambient) out.ambient = int(g);
+    }
+}
+
+void splitReferencePixel(const ReferenceScene& sc, const lighting::Surface<double>& s,
+                         std::span<const double> shaded, std::span<const double> visibility,
+                         std::span<const glm::dvec3> areaDirect, const glm::dvec3& environment,
+                         glm::dvec3* groups) {
+    const ReferenceScene::Groups& gr = sc.groups;
+    std::fill(groups, groups + gr.count, glm::dvec3(0.0));
+    const auto add = [&](int g, const glm::dvec3& v) {
+        if (g >= 0 && g < gr.count) groups[g] += v;
+    };
+    lighting::Surface<double> dark = s; // what one light adds: no emission,
+    dark.emissive = glm::dvec3(0.0);
+    lighting::ShadeSettings<double> alone = sc.settings; // no scene ambient
+    alone.ambient = glm::dvec3(0.0);
+    for (size_t k = 0; k < sc.lights.size() && k < gr.ofLight.size(); ++k) {
+        const double v = k < shaded.size() ? shaded[k] : 1.0;
+        glm::dvec3 light =
+            lighting::shadeSurface<double>(dark, std::span(&sc.lights[k], 1), alone, std::span(&v, 1));
+        if (k < areaDirect.size()) light += (k < visibility.size() ? visibility[k] : 1.0) * areaDirect[k];
+        add(gr.ofLight[k], light);
+    }
+    add(gr.ambient, lighting::shadeSurface<double>(dark, {}, sc.settings));
+    add(gr.emissive, s.emissive);
+    add(gr.environment, environment);
+}
+
+RenderLayers referenceLayers(const ReferenceImage& r, const std::vector<LightGroup>& groups,
+                             const GBuffer& gbuffer, const glm::dmat4& view) {
+    RenderLayers layers;
+    const size_t n = size_t(std::max(0, r.width)) * size_t(std::max(0, r.height));
+    const auto image = [&] {
+        FloatImage f;
+        f.width = r.width;
+        f.height = r.height;
+        f.pixels.assign(n, glm::vec4(0.0f));
+        return f;
+    };
+    layers.beauty = image();
+    for (size_t i = 0; i < n; ++i)
+        layers.beauty.pixels[i] = glm::vec4(glm::vec3(r.radiance[i]), r.covered[i] ? 1.0f : 0.0f);
+    if (r.groupCount == int(groups.size()) && r.groupCount > 0) {
+        layers.groups = groups;
+        layers.groupImages.assign(groups.size(), image());
+        for (size_t g = 0; g < groups.size(); ++g)
+            for (size_t i = 0; i < n; ++i)
+                layers.groupImages[g].pixels[i] =
+                    glm::vec4(glm::vec3(r.groupRadiance[i * groups.size() + g]), layers.beauty.pixels[i].w);
+    }
+    fillAuxiliaryLayers(gbuffer, view, &layers);
+    return layers;
+}
+
+std::optional<RenderLayers> computeReferenceLayers(const SceneDescription& scene, const GBuffer& gbuffer,
+                                                   const glm::dmat4& view, const RenderSettings& settings,
+                                                   QString* error, ReferenceImage* reference) {
+    std::optional<ReferenceScene> rs = makeReferenceScene(scene, view, settings, error);
+    if (!rs) return std::nullopt;
+    const std::vector<LightGroup> groups = sceneLightGroups(scene);
+    setReferenceGroups(&*rs, scene.rig(), groups);
+    ReferenceImage r = computeReference(gbuffer, *rs);
+    RenderLayers layers = referenceLayers(r, groups, gbuffer, view);
+    if (reference) *reference = std::move(r);
+    return layers;
+}
+
+} // namespace lr
