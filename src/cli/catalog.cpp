@@ -14,7 +14,8 @@ namespace {
 QString defaultPattern(const RenderRequest& r) {
     QString name = QStringLiteral("{model}_{rig}_{view}");
     if (r.turntable > 1) name += QStringLiteral("_####");
-    return QDir(r.output).filePath(name + QStringLiteral(".png"));
+    return QDir(r.output).filePath(name +
+                                   (r.format == "exr" ? QStringLiteral(".exr") : QStringLiteral(".png")));
 }
 
 QString expand(QString pattern, const RenderRequest& r, const RenderItem& item) {

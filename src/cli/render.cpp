@@ -64,6 +64,14 @@ int runRender(const QStringList& args) {
     const QCommandLineOption supersample(QStringLiteral("supersample"),
                                          QStringLiteral("Render N×N samples per pixel, 1..4 (default 1)."),
                                          QStringLiteral("N"));
+    const QCommandLineOption aovs(
+        QStringLiteral("aovs"),
+        QStringLiteral(
+            "With -o OUT.exr: one multi-layer EXR with the beauty, one layer per light group, albedo, "
+            "normal and depth (docs/light-mixing.md); lightrig mix re-balances it."));
+    const QCommandLineOption half(
+        QStringLiteral("half"), QStringLiteral("With -o OUT.exr: 16-bit half floats instead of 32-bit (depth "
+                                               "stays 32-bit)."));
     const QCommandLineOption transparent(QStringLiteral("transparent"),
                                          QStringLiteral("Transparent background (PNG alpha)."));
     QCommandLineOption frames(QStringLiteral("frames"), QStringLiteral("Time N more frames."),
@@ -99,7 +107,8 @@ int runRender(const QStringList& args) {
     parser.addOption(help);
     parser.addOption(output);
     scene.addTo(parser);
-    parser.addOptions({supersample, transparent, frames, msaa, turntable, rotate, summary, noMemoryCheck});
+    parser.addOptions(
+        {aovs, half, supersample, transparent, frames, msaa, turntable, rotate, summary, noMemoryCheck});
     tracedSet.addTo(parser);
     parser.addPositionalArgument(QStringLiteral("MODEL"),
                                  QStringLiteral("Model files Assimp reads (glTF, OBJ, FBX, ...)."),
@@ -116,21 +125,25 @@ int runRender(const QStringList& args) {
     request.output = parser.value(output);
     request.outputIsFolder = request.output.endsWith(QLatin1Char('/')) || QFileInfo(request.output).isDir();
     request.format = request.outputIsFolder ? QByteArray("png") : writableImageFormatOf(request.output);
-    const bool exr =
-        !request.outputIsFolder && request.output.endsWith(QLatin1String(".exr"), Qt::CaseInsensitive);
+    request.aovs = parser.isSet(aovs);
+    request.half = parser.isSet(half);
+    const bool exr = request.outputIsFolder
+                         ? request.aovs
+                         : request.output.endsWith(QLatin1String(".exr"), Qt::CaseInsensitive);
     if (exr) request.format = "exr";
     if (request.format.isEmpty())
         return usage(
-            QStringLiteral("the output must end in .png, .jpg or .jpeg (or .exr with --quality path): %1")
-                .arg(request.output));
+            QStringLiteral("the output must end in .png, .jpg, .jpeg or .exr: %1").arg(request.output));
+    if ((request.aovs || request.half) && !exr)
+        return usage(
+            QStringLiteral("--%1 writes OpenEXR: the output must end in .exr: %2")
+                .arg(request.aovs ? QStringLiteral("aovs") : QStringLiteral("half"), request.output));
     QString message;
     const std::optional<SceneOptions> options = scene.read(parser, &message, false, true, true);
     if (!options) return usage(message);
-    if (exr && !options->pathTraced)
+    if (exr && parser.isSet(supersample))
         return usage(
-            QStringLiteral("a scene-linear .exr comes from --quality path; the raster qualities write "
-                           ".png or .jpg: %1")
-                .arg(request.output));
+            QStringLiteral("--supersample does not apply to an .exr (its pixels are the render's own)"));
     const std::optional<TracedRenderOptions> traced = tracedSet.read(parser, options->pathTraced, &message);
     if (!traced) return usage(message);
     request.traced = *traced;

@@ -5,7 +5,12 @@
 #include "coverage.h"
 #include "outputfiles.h"
 
+#include "renderexr.h"
+
+#include "core/colour.h"
 #include "render/offscreen.h"
+#include "render/rasterlayers.h"
+#include "scene/displayimage.h"
 
 #include <QElapsedTimer>
 #include <QTextStream>
@@ -36,6 +41,28 @@ size_t runEnd(const std::vector<RenderItem>& items, size_t begin, size_t limit, 
     return end;
 }
 
+// The raster's radiance has no background (the tone-map pass composites the background colour over its
+// alpha, after tone mapping): an opaque .exr gets it as radiance, uncovered shares in the beauty and in the
+// "background" group, as the path tracer's background is (the colour's linear value; exposed and tone mapped
+// with the rest when displayed, where the raster shows it as it is: equal at exposure 0 with clamp).
+void composeBackground(RenderLayers* layers, const QColor& background) {
+    const QColor bg = background.toRgb();
+    const glm::vec3 c = colour::srgbToLinear(glm::vec3(bg.redF(), bg.greenF(), bg.blueF()));
+    FloatImage* group = nullptr;
+    for (size_t g = 0; g < layers->groups.size() && g < layers->groupImages.size(); ++g)
+        if (layers->groups[g].kind == LightGroupKind::Background) group = &layers->groupImages[g];
+    for (size_t i = 0; i < layers->beauty.pixels.size(); ++i) {
+        glm::vec4& p = layers->beauty.pixels[i];
+        const float uncovered = 1.0f - std::clamp(p.w, 0.0f, 1.0f);
+        p += glm::vec4(c * uncovered, 0.0f);
+        p.w = 1.0f;
+        if (group && i < group->pixels.size()) group->pixels[i] += glm::vec4(c * uncovered, 0.0f);
+    }
+    for (FloatImage& g : layers->groupImages)
+        for (glm::vec4& p : g.pixels)
+            p.w = 1.0f;
+}
+
 class Runner {
   public:
     Runner(const RenderRequest& request, const std::vector<RenderItem>& items) : r(request), items(items) {
@@ -52,6 +79,11 @@ class Runner {
     void renderView(const QString& modelPath, LoadedScene& scene, size_t begin, size_t end, double loadMs);
     bool ensureGl(const LoadedScene& scene, QString* error);
     void timeFrames(const ViewCamera& camera, const RenderSettings& settings);
+    // The raster's scene-linear layers for an .exr: the beauty, or with --aovs every layer.
+    std::optional<RenderLayers> renderRasterExr(const ViewCamera& camera, const RenderSettings& settings,
+                                                QString* error);
+    std::optional<RenderLayers> renderRasterRadiance(const ViewCamera& camera, const RenderSettings& settings,
+                                                     QString* error);
 
     const RenderRequest& r;
     const std::vector<RenderItem>& items;
@@ -231,6 +263,7 @@ void Runner::renderView(const QString& modelPath, LoadedScene& scene, size_t beg
         QString line;      // what the "wrote" line says of the image
         QJsonObject extra; // and the summary line
         std::optional<TracedImages::Result> tracedResult;
+        std::optional<RenderLayers> layers; // an .exr's
         if (traced) {
             tracedResult = traced->render(scene, rig, camera, r.options.size, settings, warning, &message);
             const std::optional<TracedImages::Result>& t = tracedResult;
@@ -244,6 +277,19 @@ void Runner::renderView(const QString& modelPath, LoadedScene& scene, size_t beg
                            .arg(t->line, scene.rigSource, scene.cameraSource)
                            .arg(i == begin ? loadMs * 1e-3 : 0.0, 0, 'f', 2);
             }
+        } else if (r.format == "exr") {
+            if (turnLights) gl->setRig(rig);
+            clock.restart();
+            layers = renderRasterExr(camera, settings, &message);
+            if (layers)
+                image = displayImage(layers->beauty, settings.exposureEV, settings.toneMap,
+                                     settings.transparentBackground);
+            line = QStringLiteral("scene-linear%1, %2 light groups, %3, %4, %5 ms, load %6 ms")
+                       .arg(r.aovs ? QStringLiteral(" layers") : QString())
+                       .arg(layers ? layers->groups.size() : 0)
+                       .arg(scene.rigSource, scene.cameraSource)
+                       .arg(clock.nsecsElapsed() * 1e-6, 0, 'f', 1)
+                       .arg(i == begin ? loadMs : 0.0, 0, 'f', 1);
         } else {
             if (turnLights) gl->setRig(rig);
             clock.restart();
@@ -265,7 +311,14 @@ void Runner::renderView(const QString& modelPath, LoadedScene& scene, size_t beg
             err << name
                 << ": warning: JPEG has no alpha channel; the transparent background is written black\n";
         if (r.format == "exr") {
-            const QByteArray bytes = encodeTracedExr(*tracedResult, settings, &message);
+            if (tracedResult) {
+                layers.emplace();
+                layers->beauty = tracedResult->linear;
+            }
+            const QByteArray bytes = encodeRenderExr(
+                *layers, r.aovs, r.half, settings,
+                traced ? QStringLiteral("path") : toString(settings.quality),
+                tracedResult ? std::optional<int>(tracedResult->samples) : std::nullopt, &message);
             if (bytes.isEmpty() || !writeOutputFile(item.file, bytes, &message)) {
                 fail(i, i + 1, message);
                 continue;
@@ -283,6 +336,29 @@ void Runner::renderView(const QString& modelPath, LoadedScene& scene, size_t beg
         done(i, QString(), extra);
         if (r.timedFrames > 0 && !traced) timeFrames(camera, settings);
     }
+}
+
+std::optional<RenderLayers> Runner::renderRasterExr(const ViewCamera& camera, const RenderSettings& settings,
+                                                    QString* error) {
+    std::optional<RenderLayers> layers = renderRasterRadiance(camera, settings, error);
+    if (layers && !settings.transparentBackground) composeBackground(&*layers, settings.background);
+    return layers;
+}
+
+std::optional<RenderLayers> Runner::renderRasterRadiance(const ViewCamera& camera,
+                                                         const RenderSettings& settings, QString* error) {
+    if (r.aovs) return renderRasterLayers(*gl, camera, r.options.size, settings, error);
+    RenderLayers layers;
+    if (r.options.size.width() > gl->maxTileSize() || r.options.size.height() > gl->maxTileSize()) {
+        *error = QStringLiteral(
+                     "an .exr of the raster qualities is at most %1 pixels a side (one tile), got %2x%3")
+                     .arg(gl->maxTileSize())
+                     .arg(r.options.size.width())
+                     .arg(r.options.size.height());
+        return std::nullopt;
+    }
+    if (!gl->renderRadiance(camera, r.options.size, settings, &layers.beauty, error)) return std::nullopt;
+    return layers;
 }
 
 void Runner::timeFrames(const ViewCamera& camera, const RenderSettings& settings) {

@@ -23,7 +23,9 @@ struct RenderRequest {
     SceneOptions options; // options.views: --view list (empty: the model's camera 0, else three-quarter)
     QString output;       // -o: a file, a pattern with {model} {rig} {view} and #, or a folder
     bool outputIsFolder = false;
-    QByteArray format = "png"; // "png" or "jpeg"
+    QByteArray format = "png"; // "png", "jpeg" or "exr" (scene-linear)
+    bool aovs = false;         // --aovs: the exr holds every layer (scene/renderlayersexr.h)
+    bool half = false;         // --half: the exr's values as 16-bit floats
     int supersample = 1;
     int msaa = 4;
     bool transparent = false;

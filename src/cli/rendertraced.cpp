@@ -2,8 +2,6 @@
 
 #include "renderestimate.h"
 
-#include "model/exrencode.h"
-
 #include "scene/scenedescription.h"
 #include "trace/pathtracer.h"
 #include "trace/progressive.h"
@@ -64,17 +62,6 @@ std::optional<TracedImages::Result> TracedImages::render(const LoadedScene& scen
                  .arg(noise, QLatin1String(trace::stopReasonName(outcome.reason)))
                  .arg(m_scene->triangles());
     return r;
-}
-
-QByteArray encodeTracedExr(const TracedImages::Result& result, const RenderSettings& settings,
-                           QString* error) {
-    const FloatImage& image = result.linear;
-    return encodeExrRgba(image.width, image.height, image.isNull() ? nullptr : &image.pixels.front().x,
-                         {{QStringLiteral("lightrig/quality"), QStringLiteral("path")},
-                          {QStringLiteral("lightrig/samples"), QString::number(result.samples)},
-                          {QStringLiteral("lightrig/exposureEV"), QString::number(settings.exposureEV)},
-                          {QStringLiteral("lightrig/toneMap"), toString(settings.toneMap)}},
-                         error);
 }
 
 namespace {

@@ -67,11 +67,6 @@ class TracedImages {
     Rig m_rig;
 };
 
-// The traced image as scene-linear float RGBA OpenEXR, its exposure, tone map and samples in the header
-// (lightrig/exposureEV, lightrig/toneMap, lightrig/samples: not applied to the pixels).
-QByteArray encodeTracedExr(const TracedImages::Result& result, const RenderSettings& settings,
-                           QString* error);
-
 // Bytes `lightrig render --quality path` holds for an image of `size` (the accumulation buffers, the display
 // image, and the traced scene's share, about).
 std::int64_t tracedImageBytes(QSize size);
