@@ -1,5 +1,7 @@
 #include "snapshotrenderer.h"
 
+#include "render/rasterlayers.h"
+
 #include "render/offscreen.h"
 #include "scene.h"
 
@@ -74,6 +76,24 @@ QImage SnapshotRenderer::render(const Rig& rig, const ViewCamera& camera, QSize 
     }
     if (previous && previousSurface) previous->makeCurrent(previousSurface);
     return image;
+}
+
+std::optional<RenderLayers> SnapshotRenderer::renderLayers(const Rig& rig, const ViewCamera& camera,
+                                                           QSize size, const RenderSettings& settings,
+                                                           QString* error) {
+    ++m_renders;
+    m_rigOwner = 0;
+    QOpenGLContext* previous = QOpenGLContext::currentContext();
+    QSurface* previousSurface = previous ? previous->surface() : nullptr;
+    std::optional<RenderLayers> layers;
+    if (prepare(error)) {
+        m_offscreen->setRig(rig);
+        const int side = m_offscreen->maxTileSize();
+        if (size.width() > side || size.height() > side) size.scale(side, side, Qt::KeepAspectRatio);
+        layers = renderRasterLayers(*m_offscreen, camera, size, settings, error);
+    }
+    if (previous && previousSurface) previous->makeCurrent(previousSurface);
+    return layers;
 }
 
 std::unique_ptr<SnapshotJob> SnapshotRenderer::begin(const Rig& rig, const ViewCamera& camera, QSize size,

@@ -6,9 +6,11 @@
 #include "render/offscreen.h"
 #include "render/renderer.h"
 #include "scene/camera.h"
+#include "scene/renderlayers.h"
 
 #include <QImage>
 #include <memory>
+#include <optional>
 
 namespace lr {
 
@@ -44,6 +46,11 @@ class SnapshotRenderer {
                                        const RenderSettings& settings, int supersample, int tileSize,
                                        QString* error);
     bool renderNext(SnapshotJob* job, QString* error);
+
+    // The scene split into light groups (render/rasterlayers.h: the beauty, a linear image per group,
+    // albedo, normal, depth) for the Mixer dock; `size` within one tile. nullopt and *error on failure.
+    std::optional<RenderLayers> renderLayers(const Rig& rig, const ViewCamera& camera, QSize size,
+                                             const RenderSettings& settings, QString* error);
 
   private:
     bool prepare(QString* error);

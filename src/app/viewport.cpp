@@ -542,6 +542,14 @@ std::unique_ptr<SnapshotJob> Viewport::beginScreenshot(const ScreenshotOptions& 
                               options.tileSize, error);
 }
 
+std::optional<RenderLayers> Viewport::renderLayers(QSize size, QString* error) {
+    RenderSettings s = renderSettings(false);
+    s.selectedLights.clear();
+    const QSize view = this->size() * devicePixelRatioF();
+    if (!view.isEmpty()) size = view.scaled(size, Qt::KeepAspectRatio).boundedTo(view);
+    return m_snapshots->renderLayers(m_doc->renderRig(), renderCamera(), size, s, error);
+}
+
 bool Viewport::renderScreenshotTile(SnapshotJob* job, QString* error) {
     return m_snapshots->renderNext(job, error);
 }

@@ -9,6 +9,7 @@
 
 #include "picking.h"
 #include "scene/camera.h"
+#include "scene/renderlayers.h"
 
 #include <QOpenGLWidget>
 #include <QTimer>
@@ -73,6 +74,9 @@ class Viewport : public QOpenGLWidget {
     // now; each renderScreenshotTile call renders the next tile. nullptr / false and *error on failure.
     std::unique_ptr<SnapshotJob> beginScreenshot(const ScreenshotOptions& options, QString* error);
     bool renderScreenshotTile(SnapshotJob* job, QString* error);
+    // The view as drawn now (rig, camera, settings without gizmos) split into light groups, at most `size`
+    // (the viewport's aspect): the Mixer dock's raster capture. nullopt and *error on failure.
+    std::optional<RenderLayers> renderLayers(QSize size, QString* error);
     // Renders and writes it at once (screenshotexport.h: atomic): error text, "" on success.
     QString exportScreenshot(const ScreenshotOptions& options);
 
