@@ -21,8 +21,9 @@ QSize fitSize(QSize source, QSize bounds);
 // Each pixel of a `size` image the mean of the source pixels it covers (a box filter); `image` itself when
 // it already has that size.
 FloatImage downscaleImage(const FloatImage& image, QSize size);
-// The display image (QImage::Format_RGB888): each pixel's rgb × 2^exposureEV, tone mapped, sRGB. Opaque: a
-// split render's background group holds what is behind the model.
+// The display image (QImage::Format_RGB888): each pixel's rgb × 2^exposureEV, tone mapped, sRGB, the bytes
+// of colour::displayColour (to a level where a value falls on a step's edge). Opaque: a split render's
+// background group holds what is behind the model.
 QImage displayImage(const FloatImage& image, double exposureEV, ToneMap toneMap);
 
 class MixerPreview : public QWidget {

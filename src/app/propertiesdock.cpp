@@ -326,7 +326,7 @@ void PropertiesDock::loadSharedText(const LightPropertyInfo& row, QLineEdit* lin
     bool mixed = false;
     for (int r : rows)
         mixed = mixed || row.get(m_doc->light(r)) != value;
-    if (mixed && !line->hasFocus()) line->clear();
+    if (mixed && !line->hasFocus()) line->setText(QString()); // not modified: leaving it edits nothing
     QString placeholder;
     if (mixed)
         placeholder = tr("(several values)");

@@ -108,8 +108,12 @@ QVariant LightTableModel::data(const QModelIndex& index, int role) const {
         if (!row || row->kind == K::Bool) return {};
         return row->kind == K::Enum ? QVariant(value.toInt()) : value;
     case Qt::ForegroundRole:
-        if (col == GroupColumn && ownGroup(l))
-            return QGuiApplication::palette().brush(QPalette::PlaceholderText);
+        if (col == GroupColumn && ownGroup(l)) {
+            // The palette's placeholder colour where there is one (a guiless test has no palette).
+            if (qobject_cast<QGuiApplication*>(QCoreApplication::instance()))
+                return QGuiApplication::palette().brush(QPalette::PlaceholderText);
+            return QColor(128, 128, 128);
+        }
         return {};
     case SortRole:
         if (col == SoloColumn) return int(m_doc->isSoloed(index.row()));
