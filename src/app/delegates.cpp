@@ -150,6 +150,26 @@ void NumberDelegate::setModelData(QWidget* editor, QAbstractItemModel* model,
     model->setData(index, text);
 }
 
+QWidget* GroupDelegate::createEditor(QWidget* parent, const QStyleOptionViewItem&, const QModelIndex&) const {
+    auto* edit = new QLineEdit(parent);
+    edit->setMaxLength(kMaxLightNameLength);
+    return edit;
+}
+
+void GroupDelegate::setEditorData(QWidget* editor, const QModelIndex& index) const {
+    auto* edit = static_cast<QLineEdit*>(editor);
+    const QString text = index.data(Qt::EditRole).toString();
+    edit->setText(text);
+    edit->setPlaceholderText(index.data(Qt::DisplayRole).toString());
+    editor->setProperty(kInitialText, text);
+}
+
+void GroupDelegate::setModelData(QWidget* editor, QAbstractItemModel* model, const QModelIndex& index) const {
+    const QString text = static_cast<QLineEdit*>(editor)->text().trimmed();
+    if (unchanged(editor, text)) return;
+    model->setData(index, text);
+}
+
 QWidget* LightTypeDelegate::createEditor(QWidget* parent, const QStyleOptionViewItem&,
                                          const QModelIndex&) const {
     auto* combo = new QComboBox(parent);

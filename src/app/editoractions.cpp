@@ -9,6 +9,7 @@
 #include "gltfexportdialog.h"
 #include "lightsdock.h"
 #include "mainwindow.h"
+#include "mixerdock.h"
 #include "presetsdock.h"
 #include "recentfiles.h"
 #include "scene.h"
@@ -141,6 +142,11 @@ void EditorActions::createViewMenu() {
             [this, viewport] { viewport->lookThroughLight(m_window->document()->currentRow()); });
     menu->addSeparator();
     m_window->compare()->addActions(menu); // issue 17: A/B comparison
+    menu->addSeparator();
+    QAction* mixer = m_window->mixerDock()->toggleViewAction(); // issue 37 (also in Window)
+    mixer->setText(tr("Light &mixer"));
+    mixer->setToolTip(tr("Re-balance a render per light group and write the mix into the rig"));
+    menu->addAction(mixer);
     menu->addSeparator();
     ViewSettings* settings = m_window->viewSettings();
     showGizmos = menu->addAction(tr("Light &gizmos"));

@@ -72,6 +72,7 @@ LightsDock::LightsDock(Document* document, QWidget* parent)
     m_view->setItemDelegateForColumn(LightTableModel::IntensityColumn, new NumberDelegate(m_view));
     m_view->setItemDelegateForColumn(LightTableModel::FalloffColumn, new NumberDelegate(m_view));
     m_view->setItemDelegateForColumn(LightTableModel::TypeColumn, new LightTypeDelegate(m_view));
+    m_view->setItemDelegateForColumn(LightTableModel::GroupColumn, new GroupDelegate(m_view));
     // Sorting is a view of the table only; the third click on a header returns to the rig's order, where
     // dragging rows reorders the rig.
     QHeaderView* header = m_view->horizontalHeader();
@@ -83,7 +84,8 @@ LightsDock::LightsDock(Document* document, QWidget* parent)
         m_view->setDragEnabled(section < 0);
     });
     header->setSectionResizeMode(QHeaderView::Interactive);
-    header->resizeSection(LightTableModel::NameColumn, 112);
+    header->resizeSection(LightTableModel::NameColumn, 104);
+    header->resizeSection(LightTableModel::GroupColumn, 72);
     for (int c : {int(LightTableModel::OnColumn), int(LightTableModel::SoloColumn),
                   int(LightTableModel::ShadowColumn)})
         header->setSectionResizeMode(c, QHeaderView::ResizeToContents);

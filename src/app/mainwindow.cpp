@@ -12,6 +12,7 @@
 #include "environmentloading.h"
 #include "errordialog.h"
 #include "lightsdock.h"
+#include "mixerdock.h"
 #include "modeldock.h"
 #include "presetsdock.h"
 #include "presetstore.h"
@@ -125,6 +126,10 @@ void MainWindow::createDocks() {
     addDockWidget(Qt::RightDockWidgetArea, m_propertiesDock);
     tabifyDockWidget(m_propertiesDock, m_renderDock);
     addQualityDock(this); // the Quality panel (qualitydock.h), a tab beside Render settings
+    // Issue 37: the Mixer, a tab behind Properties (its image wants the right column's height).
+    m_mixerDock = new MixerDock(m_doc, this);
+    addDockWidget(Qt::RightDockWidgetArea, m_mixerDock);
+    tabifyDockWidget(m_renderDock, m_mixerDock);
     m_presetsDock->raise();
     m_propertiesDock->raise();
     resizeDocks({m_propertiesDock}, {390}, Qt::Horizontal);
@@ -144,6 +149,14 @@ void MainWindow::connectStatus() {
             [this](const QString& t) { m_status->showMessage(t, 8000); });
     connect(m_compare, &AbCompare::statusMessage, this,
             [this](const QString& t) { m_status->showMessage(t, 8000); });
+    connect(m_mixerDock, &MixerDock::statusMessage, this,
+            [this](const QString& t) { m_status->showMessage(t, 8000); });
+    connect(m_mixerDock, &MixerDock::captureRequested, this, &MainWindow::captureMixerLayers);
+    auto display = [this] {
+        m_mixerDock->setDisplay(m_viewSettings->options().exposure, m_viewSettings->options().toneMap);
+    };
+    connect(m_viewSettings, &ViewSettings::changed, this, display);
+    display();
     // An environment that cannot be loaded: said in the status bar and the error box; the rig stays as it is.
     connect(m_environment, &EnvironmentLoading::failed, this, [this](const QString& error) {
         m_status->showMessage(tr("Environment not drawn: %1").arg(error), 8000);
@@ -176,6 +189,15 @@ void MainWindow::connectStatus() {
     connect(m_doc, &Document::rigChanged, this, summary);
     connect(m_doc, &Document::soloChanged, this, summary);
     summary();
+}
+
+void MainWindow::captureMixerLayers() {
+    // The integrator's hook: render the scene as the viewport shows it (the raster tier, or the Path traced
+    // view's accumulation) split into light groups, then m_mixerDock->setLayers(layers, "raster, exact") or
+    // setLayers(layers, what, rig, ids) for a render that began earlier.
+    m_status->showMessage(tr("Capture needs the render split into light groups, which this build does not "
+                             "have yet (issue 37)"),
+                          8000);
 }
 
 void MainWindow::updateTitle() {

@@ -1,6 +1,6 @@
 // The editor's main window: a central Viewport and the docks (Lights, Properties, Render settings, Presets,
-// History, Model). It wires the parts together and little else: menus and actions live in EditorActions, file
-// handling in DocumentFiles, persistence in SessionSettings/ViewSettings/RecentFiles.
+// History, Model, Mixer). It wires the parts together and little else: menus and actions live in
+// EditorActions, file handling in DocumentFiles, persistence in SessionSettings/ViewSettings/RecentFiles.
 #pragma once
 
 #include <QMainWindow>
@@ -17,6 +17,7 @@ class EditorStatusBar;
 class EnvironmentLightTool;
 class EnvironmentLoading;
 class LightsDock;
+class MixerDock;
 class ModelDock;
 class PresetStore;
 class PresetsDock;
@@ -51,7 +52,8 @@ class MainWindow : public QMainWindow {
     EditorStatusBar* editorStatusBar() const { return m_status; }
     EnvironmentLoading* environmentLoading() const { return m_environment; }
     EnvironmentLightTool* environmentLightTool() const { return m_environmentLight; }
-    AbCompare* compare() const { return m_compare; } // View › Compare A/B (issue 17)
+    AbCompare* compare() const { return m_compare; }     // View › Compare A/B (issue 17)
+    MixerDock* mixerDock() const { return m_mixerDock; } // issue 37: light mixing
 
     // Startup: the model and rig from the command line, else the last session's (when restoring), else the
     // bundled model lit by its sample rig (core/defaultrig.h). Restores geometry and dock layout when options
@@ -62,6 +64,12 @@ class MainWindow : public QMainWindow {
     static QString bundledModelPath(); // ":/resources/models/avocado/Avocado.gltf"
     // The classic showcase, still bundled (File › Open sample): Suzanne, lit by the classic default rig.
     static QString suzannePath(); // ":/resources/models/suzanne/Suzanne.gltf"
+
+  public slots:
+    // The Mixer's Capture (issue 37): fills the Mixer dock with the current scene's RenderLayers
+    // (MixerDock::setLayers). Until the raster and the path tracer split their renders into light groups it
+    // only says so in the status bar.
+    void captureMixerLayers();
 
   protected:
     void closeEvent(QCloseEvent* event) override;
@@ -92,6 +100,7 @@ class MainWindow : public QMainWindow {
     EnvironmentLoading* m_environment = nullptr; // the rig's environment, loaded in the background
     EnvironmentLightTool* m_environmentLight = nullptr;
     AbCompare* m_compare = nullptr;
+    MixerDock* m_mixerDock = nullptr;
     bool m_restoreSession = true;
 };
 

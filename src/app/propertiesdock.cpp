@@ -2,6 +2,7 @@
 
 #include "colorbutton.h"
 #include "colorpreview.h"
+#include "core/lightgroups.h"
 #include "directionangles.h"
 #include "logslider.h"
 #include "modeltooltips.h"
@@ -93,13 +94,20 @@ PropertiesDock::Field PropertiesDock::createField(const LightPropertyInfo& row) 
     case PropertyEditor::LineEdit:
         f.widget = f.line = new QLineEdit(m_panel);
         f.line->setMaxLength(kMaxLightNameLength);
-        connect(f.line, &QLineEdit::editingFinished, this, [this, p, line = f.line] {
-            const QList<int> rows = m_doc->selectedRows();
-            if (rows.size() != 1 || line->text() == lightValue(m_doc->light(rows.first()), p).toString())
-                return;
-            apply(p, line->text().trimmed(), false);
-            refresh();
-        });
+        connect(f.line, &QLineEdit::editingFinished, this,
+                [this, p, unique = row.uniquePerLight, line = f.line] {
+                    const QList<int> rows = m_doc->selectedRows();
+                    if (rows.isEmpty() || (unique && rows.size() != 1)) return;
+                    const QString text = line->text().trimmed();
+                    bool same = true;
+                    for (int r : rows)
+                        same = same && lightValue(m_doc->light(r), p).toString() == text;
+                    // Lights with different values show none: leaving the field untouched changes nothing.
+                    if (same || (rows.size() > 1 && !line->isModified())) return;
+                    apply(p, text, false);
+                    line->setModified(false);
+                    refresh();
+                });
         break;
     case PropertyEditor::ComboBox:
         f.widget = f.combo = new QComboBox(m_panel);
@@ -302,6 +310,7 @@ void PropertiesDock::refresh() {
         loadValue(row, f, light);
         // A value each light has for itself (the name) is edited with one light selected.
         if (row.uniquePerLight) f.widget->setEnabled(rows.size() == 1);
+        if (f.line && !row.uniquePerLight) loadSharedText(row, f.line, rows, current);
         if (f.color && row.kind == LightValueKind::Color) {
             bool mixed = false;
             for (int r : rows)
@@ -309,6 +318,22 @@ void PropertiesDock::refresh() {
             if (mixed) f.color->setMixed(true);
         }
     }
+}
+
+void PropertiesDock::loadSharedText(const LightPropertyInfo& row, QLineEdit* line, const QList<int>& rows,
+                                    int current) {
+    const QVariant value = row.get(m_doc->light(current));
+    bool mixed = false;
+    for (int r : rows)
+        mixed = mixed || row.get(m_doc->light(r)) != value;
+    if (mixed && !line->hasFocus()) line->setText(QString()); // not modified: leaving it edits nothing
+    QString placeholder;
+    if (mixed)
+        placeholder = tr("(several values)");
+    else if (row.id == LightProperty::Group) // issue 37: without a group, a light is a group of its own
+        placeholder = rows.size() == 1 ? lightGroupName(m_doc->light(current), current)
+                                       : tr("(each light its own group)");
+    line->setPlaceholderText(placeholder);
 }
 
 void PropertiesDock::updateVisibility(const QList<int>& rows) {

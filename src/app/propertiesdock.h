@@ -64,6 +64,9 @@ class PropertiesDock : public QDockWidget {
     void showMessage(const QString& text);
     void updateVisibility(const QList<int>& rows);
     void loadValue(const LightPropertyInfo& row, const Field& field, const Light& light);
+    // A text several lights may share (the group): blank with "(several values)" when they differ; a group
+    // left empty shows the light's own group as the placeholder.
+    void loadSharedText(const LightPropertyInfo& row, QLineEdit* line, const QList<int>& rows, int current);
 
     Document* m_doc;
     QWidget* m_panel = nullptr;

@@ -15,7 +15,8 @@ class SessionSettings {
     // Bump when the dock set changes so an old layout is not restored onto new docks.
     // 2: the default layout of issue 12 (table at the bottom, Properties the whole right column).
     // 3: issue 13's Model dock, a tab beside Presets and History.
-    static constexpr int kStateVersion = 3;
+    // 4: issue 37's Mixer dock, a tab behind Properties.
+    static constexpr int kStateVersion = 4;
 
     static void saveWindow(const QMainWindow* window);
     static bool restoreWindow(QMainWindow* window); // false when nothing was stored

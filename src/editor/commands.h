@@ -5,6 +5,7 @@
 #pragma once
 
 #include "editor/addlights.h"
+#include "editor/applylightmix.h"
 #include "editor/changelightvalue.h"
 #include "editor/changelightvalues.h"
 #include "editor/changerigspace.h"

@@ -124,8 +124,9 @@ QString validateLightValue(const Light& l, LightProperty p, const QVariant& v) {
 QString validateLight(const Light& l) {
     for (int i = 0; i < kLightPropertyCount; ++i) {
         const auto p = LightProperty(i);
-        // Names from files and model imports are taken as they are (the table shows them; edits are checked).
-        if (p == LightProperty::Name) continue;
+        // Names and groups from files and model imports are taken as they are (the table shows them; edits
+        // are checked).
+        if (p == LightProperty::Name || p == LightProperty::Group) continue;
         if (!lightPropertyApplies(l, p) && p != LightProperty::Type) continue;
         if (QString e = validateLightValue(l, p, lightValue(l, p)); !e.isEmpty())
             return QStringLiteral("light \"%1\": %2").arg(l.name, e);

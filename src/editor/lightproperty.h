@@ -11,6 +11,8 @@
 //
 // Value types (what lightValue() returns and what validate/apply accept):
 //   Name                 QString (non-empty after trimming, <= kMaxLightNameLength characters)
+//   Group                QString (<= kMaxLightNameLength characters, stored trimmed; empty: the light is a
+//                          group of its own, core/lightgroups.h lightGroupName)
 //   Type                 lr::LightType (also accepts int index or the file name, e.g. "spot")
 //   Enabled              bool
 //   Color, Position,     glm::dvec3 (also accepts QVector3D; Color also accepts QColor, read as sRGB and
@@ -46,6 +48,7 @@ namespace lr {
 
 enum class LightProperty {
     Name,
+    Group, // issue 37: the light group it renders into (core/lightgroups.h); "" = its own
     Type,
     Enabled,
     Color,

@@ -41,6 +41,28 @@ QString checkName(const LightPropertyInfo&, const QVariant& v) {
     return {};
 }
 
+// A group name: text of at most kMaxLightNameLength characters without control characters; empty (after
+// trimming) means the light is a group of its own.
+QString checkGroup(const LightPropertyInfo&, const QVariant& v) {
+    if (v.metaType().id() != QMetaType::QString) return QStringLiteral("group must be text");
+    const QString s = v.toString().trimmed();
+    if (s.size() > kMaxLightNameLength)
+        return QStringLiteral("group must be at most %1 characters, got %2")
+            .arg(kMaxLightNameLength)
+            .arg(s.size());
+    for (const QChar c : s)
+        if (c.category() == QChar::Other_Control)
+            return QStringLiteral("group must not contain control characters");
+    return {};
+}
+
+QString undoGroup(const QString& lights, const QVariant& group) {
+    const QString g = group.toString().trimmed();
+    return g.isEmpty()
+               ? QCoreApplication::translate("lr::ChangeLightValue", "Give %1 a group of its own").arg(lights)
+               : QCoreApplication::translate("lr::ChangeLightValue", "Put %1 in group %2").arg(lights, g);
+}
+
 QString checkBool(const LightPropertyInfo& row, const QVariant& v) {
     return v.metaType().id() == QMetaType::Bool
                ? QString()
@@ -140,7 +162,21 @@ const LightPropertyInfo kLightProperties[] = {
      .get = [](const Light& l) { return QVariant(l.name); },
      .set = [](Light& l, const QVariant& v) { l.name = v.toString(); },
      .undoText = undoRename,
+     .shownWith = P::Group, // a light without a group is a group named after it
      .uniquePerLight = true},
+    // Issue 37 (core/lightgroups.h, docs/light-mixing.md): lights with one group share one image when a
+    // render is split for mixing; empty, the light is a group of its own (named after it). Many lights at
+    // once: select three and type "key".
+    {.id = P::Group,
+     .name = QT_TRANSLATE_NOOP("lr::LightProperty", "group"),
+     .label = QT_TRANSLATE_NOOP("lr::LightProperty", "&Group"),
+     .key = "group",
+     .jsonField = "group",
+     .kind = K::Text,
+     .check = checkGroup,
+     .get = [](const Light& l) { return QVariant(l.group); },
+     .set = [](Light& l, const QVariant& v) { l.group = v.toString().trimmed(); },
+     .undoText = undoGroup},
     {.id = P::Type,
      .name = QT_TRANSLATE_NOOP("lr::LightProperty", "type"),
      .label = QT_TRANSLATE_NOOP("lr::LightProperty", "&Type"),

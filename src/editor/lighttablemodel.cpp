@@ -1,9 +1,13 @@
 #include "editor/lighttablemodel.h"
 
+#include "core/lightgroups.h"
+
 #include <QCoreApplication>
 #include <QDataStream>
+#include <QGuiApplication>
 #include <QIODevice>
 #include <QMimeData>
+#include <QPalette>
 #include <algorithm>
 
 namespace lr {
@@ -16,9 +20,16 @@ QString formatNumber(double v) {
 
 // The light property each column shows, in column order (Any: the Solo column, which is view state).
 constexpr LightProperty kColumnProperty[LightTableModel::ColumnCount] = {
-    LightProperty::Name,  LightProperty::Type,      LightProperty::Enabled,      LightProperty::Any,
-    LightProperty::Color, LightProperty::Intensity, LightProperty::FalloffRange, LightProperty::ShadowEnabled,
+    LightProperty::Name,      LightProperty::Group,        LightProperty::Type,
+    LightProperty::Enabled,   LightProperty::Any,          LightProperty::Color,
+    LightProperty::Intensity, LightProperty::FalloffRange, LightProperty::ShadowEnabled,
 };
+
+// A light without a group of its own: its group is named after it (core/lightgroups.h), which the Group
+// column shows greyed.
+bool ownGroup(const Light& l) {
+    return l.group.trimmed().isEmpty();
+}
 
 const LightPropertyInfo* columnRow(int column) {
     return column >= 0 && column < LightTableModel::ColumnCount ? lightPropertyInfo(kColumnProperty[column])
@@ -81,6 +92,7 @@ QVariant LightTableModel::data(const QModelIndex& index, int role) const {
         return {};
     case Qt::DisplayRole:
         if (!row) return {};
+        if (col == GroupColumn) return lightGroupName(l, index.row());
         switch (row->kind) {
         case K::Text:
             return value;
@@ -95,8 +107,17 @@ QVariant LightTableModel::data(const QModelIndex& index, int role) const {
     case Qt::EditRole:
         if (!row || row->kind == K::Bool) return {};
         return row->kind == K::Enum ? QVariant(value.toInt()) : value;
+    case Qt::ForegroundRole:
+        if (col == GroupColumn && ownGroup(l)) {
+            // The palette's placeholder colour where there is one (a guiless test has no palette).
+            if (qobject_cast<QGuiApplication*>(QCoreApplication::instance()))
+                return QGuiApplication::palette().brush(QPalette::PlaceholderText);
+            return QColor(128, 128, 128);
+        }
+        return {};
     case SortRole:
         if (col == SoloColumn) return int(m_doc->isSoloed(index.row()));
+        if (col == GroupColumn) return lightGroupName(l, index.row()).toLower(); // lights of a group together
         if (!row) return {};
         switch (row->kind) {
         case K::Text:
@@ -125,6 +146,10 @@ QVariant LightTableModel::data(const QModelIndex& index, int role) const {
         case FalloffColumn:
             if (!l.usesFalloff()) return tr("%1 lights have no distance falloff").arg(lightTypeLabel(l.type));
             return tr("Falloff: %1").arg(toString(l.falloff.model));
+        case GroupColumn:
+            return ownGroup(l) ? tr("No group set: the light is a group of its own, \"%1\"")
+                                     .arg(lightGroupName(l, index.row()))
+                               : tr("Renders into the light group \"%1\"").arg(l.group);
         case SoloColumn:
             return tr("Solo: while any light is soloed, only soloed lights render (not saved)");
         case ShadowColumn:
@@ -150,6 +175,10 @@ QVariant LightTableModel::headerData(int section, Qt::Orientation orientation, i
         if (section == SoloColumn) return tr("Solo");
         return row ? QVariant(headerLabel(*row)) : QVariant();
     }
+    if (role == Qt::ToolTipRole && section == GroupColumn)
+        return tr(
+            "The light group it renders into for mixing: lights with one group share one image; greyed, "
+            "a light without one is a group of its own");
     if (role == Qt::ToolTipRole && section == FalloffColumn)
         return tr("The distance falloff's range (— when none)");
     if (role == Qt::ToolTipRole && section == ShadowColumn)
@@ -305,6 +334,21 @@ void LightTableModel::onAboutToChange(const RigChange& c) {
 }
 
 void LightTableModel::onChanged(const RigChange& c) {
+    onStructureChanged(c);
+    if (c.isStructural() && c.kind != RigChange::Reset) {
+        // An unnamed light's own group is "light N" by its index, which insertions, removals and moves
+        // change.
+        for (int r = 0; r < rowCount(); ++r) {
+            const Light& l = m_doc->light(r);
+            if (ownGroup(l) && l.name.trimmed().isEmpty()) {
+                emit dataChanged(index(0, GroupColumn), index(rowCount() - 1, GroupColumn));
+                break;
+            }
+        }
+    }
+}
+
+void LightTableModel::onStructureChanged(const RigChange& c) {
     switch (c.kind) {
     case RigChange::Inserted:
         endInsertRows();

@@ -1,6 +1,7 @@
-// The light table: one row per light of a Document, columns name, type, on, solo, colour, intensity, the
-// main falloff parameter (the range; "—" when the light has none) and shadow (a checkbox; none for types
-// that cast no shadow). Every column but solo shows one light
+// The light table: one row per light of a Document, columns name, group (issue 37: a light without one shows
+// its own group's name, greyed: lightGroupName), type, on, solo, colour, intensity, the main falloff
+// parameter (the range; "—" when the light has none) and shadow (a checkbox; none for types that cast no
+// shadow). Every column but solo shows one light
 // property (propertyOf) and reads its header, text, editability and edits from the property's row in the
 // light-property table (editor/lightproperty.h); solo is view state. Editing goes through the document's
 // commands (setData -> one undo step), never into the rig directly. Follows the document's structural changes
@@ -20,6 +21,7 @@ class LightTableModel : public QAbstractTableModel {
   public:
     enum Column {
         NameColumn,
+        GroupColumn,
         TypeColumn,
         OnColumn,
         SoloColumn,
@@ -39,16 +41,16 @@ class LightTableModel : public QAbstractTableModel {
     explicit LightTableModel(Document* document, QObject* parent = nullptr);
     Document* document() const { return m_doc; }
 
-    // Roles: DisplayRole formatted text; EditRole the raw value (QString name, int type index, glm::dvec3
-    // linear colour, double intensity/range, invalid range for none); CheckStateRole for on and solo;
-    // DecorationRole the colour swatch (QColor, effective colour incl. temperature, HDR scaled); ToolTipRole
-    // details.
+    // Roles: DisplayRole formatted text; EditRole the raw value (QString name and group, int type index,
+    // glm::dvec3 linear colour, double intensity/range, invalid range for none); CheckStateRole for on and
+    // solo; DecorationRole the colour swatch (QColor, effective colour incl. temperature, HDR scaled);
+    // ForegroundRole the placeholder colour of a group the light does not set; ToolTipRole details.
     int rowCount(const QModelIndex& parent = {}) const override;
     int columnCount(const QModelIndex& parent = {}) const override;
     QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
     QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
     Qt::ItemFlags flags(const QModelIndex& index) const override;
-    // EditRole (Name, Type, Color [glm::dvec3 linear or QColor sRGB], Intensity, Falloff range) or
+    // EditRole (Name, Group, Type, Color [glm::dvec3 linear or QColor sRGB], Intensity, Falloff range) or
     // CheckStateRole (On, Shadow: an undo step; Solo: transient). Switching on a shadow beyond
     // kMaxShadowCasters is refused with the limit. Invalid values are refused: returns false and emits
     // editRefused(reason).
@@ -79,6 +81,7 @@ class LightTableModel : public QAbstractTableModel {
   private:
     void onAboutToChange(const RigChange& change);
     void onChanged(const RigChange& change);
+    void onStructureChanged(const RigChange& change);
     void onSoloChanged();
     bool refuse(const QString& reason);
 

@@ -10,6 +10,7 @@
 #include "app/gizmointeraction.h"
 #include "app/lightsdock.h"
 #include "app/mainwindow.h"
+#include "app/mixerdock.h"
 #include "app/numberedit.h"
 #include "app/presetsdock.h"
 #include "app/presetstore.h"
@@ -30,8 +31,10 @@
 #include <QFile>
 #include <QMenu>
 #include <QMimeData>
+#include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QToolBar>
@@ -163,6 +166,24 @@ class TestMainWindow : public QObject {
         QVERIFY(f.open(QIODevice::ReadOnly));
         QCOMPARE(f.readAll(), json(withView));
         QVERIFY(!m_window->isWindowModified());
+    }
+
+    // Issue 37: the Mixer is a dock of the window (a tab behind Properties), in the View and Window menus,
+    // follows the view's exposure, and its Capture says in the status bar what it still needs.
+    void mixerDock_isRegisteredAndCaptureSaysWhy() {
+        MixerDock* mixer = m_window->mixerDock();
+        QVERIFY(mixer);
+        QCOMPARE(mixer->objectName(), QStringLiteral("MixerDock"));
+        QVERIFY(m_window->tabifiedDockWidgets(m_window->propertiesDock()).contains(mixer));
+        QStringList menus;
+        for (QObject* o : mixer->toggleViewAction()->associatedObjects())
+            if (auto* menu = qobject_cast<QMenu*>(o)) menus << menu->title().remove(QLatin1Char('&'));
+        QVERIFY2(menus.contains(QStringLiteral("View")) && menus.contains(QStringLiteral("Window")),
+                 qPrintable(menus.join(QLatin1Char(','))));
+        mixer->findChild<QPushButton*>(QStringLiteral("mixerCapture"))->click();
+        QVERIFY2(m_window->statusBar()->currentMessage().contains(QStringLiteral("light groups")),
+                 qPrintable(m_window->statusBar()->currentMessage()));
+        QVERIFY(!mixer->hasLayers()); // no images are made up
     }
 
     void modifiedFlag_followsTheUndoStack() {

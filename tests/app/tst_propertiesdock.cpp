@@ -26,7 +26,7 @@ namespace {
 // The rule of the rig format (issue: "only the fields a light's type and models use"), written out here
 // independently of the dock's own propertyShown().
 QSet<QString> expectedFields(LightType type, FalloffModel falloff, ConeModel cone, bool shadowOn = false) {
-    QSet<QString> f{"name", "type", "enabled", "color", "temperature", "intensity"};
+    QSet<QString> f{"name", "group", "type", "enabled", "color", "temperature", "intensity"};
     const bool positioned = type == LightType::Point || type == LightType::Spot;
     const bool area = type == LightType::Rect || type == LightType::Disk; // issue 16
     if (area) f += {"position", "areaRoll", "areaTwoSided"};
@@ -81,6 +81,7 @@ QSet<QString> expectedFields(LightType type, FalloffModel falloff, ConeModel con
 }
 
 const QStringList kAllFields{"name",
+                             "group",
                              "type",
                              "enabled",
                              "color",
@@ -241,6 +242,42 @@ class TestPropertiesDock : public QObject {
         QCOMPARE(doc.undoStack()->count(), before + 1);
         doc.undoStack()->undo();
         QVERIFY(doc.light(0).intensity != 7.5 && doc.light(1).intensity != 7.5);
+    }
+
+    // Issue 37: a group typed once with three lights selected puts all three in it (one step); lights in
+    // different groups show none, and leaving the field untouched changes nothing; a light without a group
+    // shows its own group's name as the placeholder.
+    void group_isSetOnSeveralLightsAtOnce() {
+        Document doc;
+        PropertiesDock dock(&doc);
+        dock.show();
+        for (int i = 0; i < 4; ++i)
+            QVERIFY(doc.addLight(LightType::Point));
+        doc.setSelectedRows({0}, 0);
+        auto* group = qobject_cast<QLineEdit*>(dock.field(LightProperty::Group));
+        QVERIFY(group && group->isEnabled());
+        QCOMPARE(group->placeholderText(), doc.light(0).name);
+        doc.setSelectedRows({0, 1, 3}, 1);
+        QVERIFY(group->isEnabled()); // not one value per light, unlike the name
+        const int before = doc.undoStack()->count();
+        group->setFocus();
+        QTest::keyClicks(group, "key");
+        QTest::keyClick(group, Qt::Key_Return);
+        for (int r : {0, 1, 3})
+            QCOMPARE(doc.light(r).group, QStringLiteral("key"));
+        QVERIFY(doc.light(2).group.isEmpty());
+        QCOMPARE(doc.undoStack()->count(), before + 1);
+        // Different groups: blank; focus in and out without typing edits nothing.
+        doc.setSelectedRows({1, 2}, 1);
+        QVERIFY(group->text().isEmpty());
+        QCOMPARE(group->placeholderText(), QStringLiteral("(several values)"));
+        emit group->editingFinished(); // what leaving the field untouched sends
+        QCOMPARE(doc.undoStack()->count(), before + 1);
+        QCOMPARE(doc.light(1).group, QStringLiteral("key"));
+        QVERIFY(doc.light(2).group.isEmpty());
+        doc.undoStack()->undo();
+        for (int r : {0, 1, 3})
+            QVERIFY(doc.light(r).group.isEmpty());
     }
 
     // Issue 41: no intensity showed its unit; a disabled Temperature field showed another light's value.

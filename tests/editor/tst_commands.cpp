@@ -27,6 +27,7 @@ class TestCommands : public QObject {
         QTest::addColumn<QVariant>("value");
         const auto v3 = [](double x, double y, double z) { return QVariant::fromValue(glm::dvec3(x, y, z)); };
         QTest::newRow("name") << 0 << LightProperty::Name << QVariant(QStringLiteral("Key"));
+        QTest::newRow("group") << 0 << LightProperty::Group << QVariant(QStringLiteral("key"));
         QTest::newRow("type point->spot") << 0 << LightProperty::Type << QVariant::fromValue(LightType::Spot);
         QTest::newRow("type by name") << 2 << LightProperty::Type << QVariant(QStringLiteral("rim"));
         QTest::newRow("enabled") << 1 << LightProperty::Enabled << QVariant(false);
@@ -215,6 +216,10 @@ class TestCommands : public QObject {
         QTest::newRow("name too long")
             << 0 << LightProperty::Name << QVariant(QString(300, QLatin1Char('x')));
         QTest::newRow("name with newline") << 0 << LightProperty::Name << QVariant(QStringLiteral("a\nb"));
+        QTest::newRow("group too long")
+            << 0 << LightProperty::Group << QVariant(QString(300, QLatin1Char('k')));
+        QTest::newRow("group with newline") << 0 << LightProperty::Group << QVariant(QStringLiteral("a\nb"));
+        QTest::newRow("group not text") << 0 << LightProperty::Group << QVariant(3.0);
         QTest::newRow("type unknown") << 0 << LightProperty::Type << QVariant(QStringLiteral("laser"));
         QTest::newRow("enabled not bool") << 0 << LightProperty::Enabled << QVariant(QStringLiteral("yes"));
     }
@@ -391,6 +396,15 @@ class TestCommands : public QObject {
         QCOMPARE(text(), QStringLiteral("Change type of 3 lights"));
         QVERIFY(doc.setLightValue({5}, LightProperty::ConeOuter, 50.0));
         QCOMPARE(text(), QStringLiteral("Change cone outer angle of L5"));
+        // Issue 37: a group is shared (three lights at once), stored trimmed, and cleared with "".
+        QVERIFY(doc.setLightValue({0, 2, 4}, LightProperty::Group, QStringLiteral(" key ")));
+        QCOMPARE(text(), QStringLiteral("Put 3 lights in group key"));
+        for (int r : {0, 2, 4})
+            QCOMPARE(doc.light(r).group, QStringLiteral("key"));
+        QVERIFY(doc.light(1).group.isEmpty());
+        QVERIFY(doc.setLightValue({2}, LightProperty::Group, QString()));
+        QCOMPARE(text(), QStringLiteral("Give L2 a group of its own"));
+        QVERIFY(doc.light(2).group.isEmpty());
         for (int i = 0; i < doc.undoStack()->count(); ++i)
             QVERIFY(dynamic_cast<const ChangeLightValue*>(doc.undoStack()->command(i)));
         // Setting what a light already has is no step.

@@ -137,6 +137,44 @@ class TestLightsDock : public QObject {
         QCOMPARE(m_doc->light(0).falloff.range, lrtest::sampleRig().lights[0].falloff.range);
     }
 
+    // Issue 37: typing a group into one of three selected rows puts all three in it, as one step; the cell
+    // editor offers the light's own group as its placeholder.
+    void groupOfSeveralSelectedRows() {
+        m_doc->setSelectedRows({0, 2, 4}, 2);
+        const QModelIndex index = cell(2, LightTableModel::GroupColumn);
+        view()->selectionModel()->setCurrentIndex(index, QItemSelectionModel::NoUpdate);
+        view()->edit(index);
+        QTRY_VERIFY(QApplication::focusWidget() && view()->isAncestorOf(QApplication::focusWidget()));
+        auto* edit = qobject_cast<QLineEdit*>(QApplication::focusWidget());
+        QVERIFY(edit);
+        QCOMPARE(edit->placeholderText(), QStringLiteral("L2"));
+        QVERIFY(edit->text().isEmpty());
+        QTest::keyClicks(edit, QStringLiteral("key"));
+        QTest::keyClick(edit, Qt::Key_Return);
+        QTRY_VERIFY(!editorOpen());
+        for (int r : {0, 2, 4})
+            QCOMPARE(m_doc->light(r).group, QStringLiteral("key"));
+        QVERIFY(m_doc->light(1).group.isEmpty());
+        QCOMPARE(m_doc->undoStack()->count(), 1);
+        // Cleared again (one step): each its own group, the cells greyed with their names.
+        view()->selectionModel()->setCurrentIndex(cell(0, LightTableModel::GroupColumn),
+                                                  QItemSelectionModel::NoUpdate);
+        view()->edit(cell(0, LightTableModel::GroupColumn));
+        QTRY_VERIFY(QApplication::focusWidget() && view()->isAncestorOf(QApplication::focusWidget()));
+        edit = qobject_cast<QLineEdit*>(QApplication::focusWidget());
+        QVERIFY(edit);
+        QCOMPARE(edit->text(), QStringLiteral("key"));
+        edit->selectAll();
+        QTest::keyClick(edit, Qt::Key_Backspace);
+        QTest::keyClick(edit, Qt::Key_Return);
+        QTRY_VERIFY(!editorOpen());
+        QCOMPARE(m_doc->undoStack()->count(), 2);
+        for (int r : {0, 2, 4}) {
+            QVERIFY(m_doc->light(r).group.isEmpty());
+            QCOMPARE(cell(r, LightTableModel::GroupColumn).data().toString(), m_doc->light(r).name);
+        }
+    }
+
     void checkboxOfSeveralSelectedRows() {
         m_doc->setSelectedRows({0, 1, 2}, 0);
         // The proxy is what the view's check box click writes to.

@@ -1,11 +1,13 @@
 // LightTableModel under QAbstractItemModelTester (fatal) through inserts, removals, moves, multi-edits,
 // resets, undo and redo; its edits become document commands; drag and drop reorders.
+#include "core/lightgroups.h"
 #include "editor/lighttablemodel.h"
 #include "rigfixture.h"
 
 #include <QAbstractItemModelTester>
 #include <QMimeData>
 #include <QSignalSpy>
+#include <QSortFilterProxyModel>
 #include <QTest>
 #include <memory>
 
@@ -223,6 +225,62 @@ class TestLightTableModel : public QObject {
         checkMatchesFreshModel();
         m_doc->undoStack()->redo();
         checkMatchesFreshModel();
+    }
+
+    // Issue 37: the Group column shows a light's group, or, greyed, the group it is without one (named after
+    // it: lightGroupName); an edit of several rows is one undo step; renaming a light renames its own
+    // group's cell; sorting by the column keeps a group's lights together.
+    void groupColumn() {
+        constexpr int kGroup = LightTableModel::GroupColumn;
+        const QPersistentModelIndex g1 = m_model->index(1, kGroup);
+        QCOMPARE(m_model->headerData(kGroup, Qt::Horizontal).toString(), QStringLiteral("Group"));
+        QCOMPARE(g1.data().toString(), QStringLiteral("L1"));
+        QVERIFY(g1.data(Qt::EditRole).toString().isEmpty());
+        QVERIFY(g1.data(Qt::ForegroundRole).isValid()); // greyed: not the light's own setting
+        QVERIFY(m_model->flags(g1) & Qt::ItemIsEditable);
+        QVERIFY(m_model->setDataForRows({0, 2, 4}, kGroup, QStringLiteral("key")));
+        QCOMPARE(m_doc->undoStack()->count(), 1);
+        for (int r : {0, 2, 4}) {
+            const QModelIndex g = m_model->index(r, kGroup);
+            QCOMPARE(g.data().toString(), QStringLiteral("key"));
+            QCOMPARE(g.data(Qt::EditRole).toString(), QStringLiteral("key"));
+            QVERIFY(!g.data(Qt::ForegroundRole).isValid());
+        }
+        QCOMPARE(lightGroups(m_doc->rig()).front().lights, (std::vector<int>{0, 2, 4}));
+        // A light's own group follows its name.
+        QSignalSpy changed(m_model.get(), &QAbstractItemModel::dataChanged);
+        QVERIFY(m_model->setData(m_model->index(1, LightTableModel::NameColumn), QStringLiteral("Rim")));
+        QCOMPARE(g1.data().toString(), QStringLiteral("Rim"));
+        bool reported = false;
+        for (const QList<QVariant>& c : changed)
+            reported = reported ||
+                       (c[0].toModelIndex().row() <= 1 && c[1].toModelIndex().row() >= 1 &&
+                        c[0].toModelIndex().column() <= kGroup && c[1].toModelIndex().column() >= kGroup);
+        QVERIFY(reported);
+        QSortFilterProxyModel proxy;
+        proxy.setSourceModel(m_model.get());
+        proxy.setSortRole(LightTableModel::SortRole);
+        proxy.sort(kGroup);
+        QStringList order;
+        for (int r = 0; r < proxy.rowCount(); ++r)
+            order << proxy.index(r, kGroup).data().toString();
+        QCOMPARE(order, (QStringList{"key", "key", "key", "L3", "L5", "Rim"}));
+        QVERIFY(!m_model->setData(g1, QString(300, QLatin1Char('x'))));
+        QCOMPARE(m_doc->undoStack()->count(), 2);
+        checkMatchesFreshModel();
+        m_doc->undoStack()->setIndex(0);
+        QCOMPARE(m_doc->rig(), lrtest::sampleRig());
+        checkMatchesFreshModel();
+        // Unnamed lights (from a file) are "light N" by their index, which a removal changes.
+        Rig unnamed = lrtest::pointRig(3);
+        for (Light& l : unnamed.lights)
+            l.name.clear();
+        m_doc->newRig(unnamed);
+        QCOMPARE(m_model->index(2, kGroup).data().toString(), QStringLiteral("light 3"));
+        changed.clear();
+        QVERIFY(m_doc->removeLights({0}));
+        QCOMPARE(m_model->index(1, kGroup).data().toString(), QStringLiteral("light 2"));
+        QVERIFY(!changed.isEmpty());
     }
 
     void persistentIndexFollowsMoves() {
