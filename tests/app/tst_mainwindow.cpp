@@ -169,8 +169,9 @@ class TestMainWindow : public QObject {
     }
 
     // Issue 37: the Mixer is a dock of the window (a tab behind Properties), in the View and Window menus,
-    // follows the view's exposure, and its Capture says in the status bar what it still needs.
-    void mixerDock_isRegisteredAndCaptureSaysWhy() {
+    // and its Capture fills it with the view split into the rig's light groups (raster: they sum to the
+    // beauty).
+    void mixerDock_isRegisteredAndCaptures() {
         MixerDock* mixer = m_window->mixerDock();
         QVERIFY(mixer);
         QCOMPARE(mixer->objectName(), QStringLiteral("MixerDock"));
@@ -181,9 +182,15 @@ class TestMainWindow : public QObject {
         QVERIFY2(menus.contains(QStringLiteral("View")) && menus.contains(QStringLiteral("Window")),
                  qPrintable(menus.join(QLatin1Char(','))));
         mixer->findChild<QPushButton*>(QStringLiteral("mixerCapture"))->click();
-        QVERIFY2(m_window->statusBar()->currentMessage().contains(QStringLiteral("light groups")),
+        QVERIFY2(mixer->hasLayers(), qPrintable(m_window->statusBar()->currentMessage()));
+        QVERIFY2(m_window->statusBar()->currentMessage().contains(QStringLiteral("Captured raster")),
                  qPrintable(m_window->statusBar()->currentMessage()));
-        QVERIFY(!mixer->hasLayers()); // no images are made up
+        const RenderLayers& layers = mixer->layers();
+        for (const LightGroup& g : lightGroups(doc()->rig()))
+            if (g.kind == LightGroupKind::Lights)
+                QVERIFY2(groupNames(layers.groups).contains(g.name), qPrintable(g.name));
+        QVERIFY2(groupSumError(layers) < 1e-4, qPrintable(QString::number(groupSumError(layers))));
+        QVERIFY(!mixer->isStale());
     }
 
     void modifiedFlag_followsTheUndoStack() {
