@@ -36,6 +36,7 @@ std::optional<TracedImages::Result> TracedImages::render(const LoadedScene& scen
     ts.seed = std::uint32_t(m_options.seed);
     ts.transparent = settings.transparentBackground;
     trace::PathTracer tracer(m_scene, camera, size, ts, m_options.threads);
+    tracer.setLayers(m_options.layers);
     const trace::RenderOutcome outcome =
         trace::renderToTarget(tracer, {m_options.samples, m_options.timeLimit, m_options.noiseThreshold});
     if (tracer.nonFiniteSamples() > 0)
@@ -44,6 +45,7 @@ std::optional<TracedImages::Result> TracedImages::render(const LoadedScene& scen
     Result r;
     r.image = tracer.display(settings.exposureEV, settings.toneMap);
     r.linear = tracer.image();
+    if (m_options.layers) r.layers = tracer.layers();
     r.samples = outcome.samples;
     r.seconds = outcome.seconds;
     r.noise = outcome.noise;
@@ -69,27 +71,42 @@ namespace {
 // sample count, the display image (RGBA8) and its encoding; and the traced scene's share, about.
 constexpr std::int64_t kTracedBytesPerPixel = 4 * 8 + 2 * 8 + 4 + 4 + 4;
 constexpr std::int64_t kTracedSceneBytes = std::int64_t(256) << 20;
+// With layers of n groups, per pixel: the tracer's sums (trace::layerBytesPerPixel) and the RenderLayers
+// it returns, float RGBA images: n groups, the beauty, albedo, normal and depth.
+std::int64_t layerBytesPerPixel(int groups) {
+    if (groups <= 0) return 0;
+    return std::int64_t(trace::layerBytesPerPixel(std::size_t(groups))) +
+           std::int64_t(groups + 4) * std::int64_t(sizeof(glm::vec4));
+}
 } // namespace
 
-std::int64_t tracedImageBytes(QSize size) {
-    return std::int64_t(size.width()) * size.height() * kTracedBytesPerPixel + kTracedSceneBytes;
+std::int64_t tracedImageBytes(QSize size, int layerGroups) {
+    return std::int64_t(size.width()) * size.height() *
+               (kTracedBytesPerPixel + layerBytesPerPixel(layerGroups)) +
+           kTracedSceneBytes;
 }
 
-bool checkTracedMemory(QSize size, bool unchecked, QString* error) {
+int tracedLayerGroups(const Rig& rig, bool hasEmissive) {
+    return int(lightGroups(rig, {.hasEmissive = hasEmissive, .includeRims = false}).size());
+}
+
+bool checkTracedMemory(QSize size, bool unchecked, QString* error, int layerGroups) {
     QString what;
-    const std::int64_t need = tracedImageBytes(size), available = availableMemory(&what);
+    const std::int64_t need = tracedImageBytes(size, layerGroups), available = availableMemory(&what);
     if (unchecked || available <= 0 || need <= available) return true;
     const auto gib = [](std::int64_t b) {
         return QStringLiteral("%1 GiB").arg(double(b) / double(1 << 30), 0, 'f', 1);
     };
+    const QString layers =
+        layerGroups > 0 ? QStringLiteral(" and the layers of %1 light groups").arg(layerGroups) : QString();
     *error =
-        QStringLiteral("--size %1x%2 with --quality path needs about %3 of memory (%4 bytes a pixel), more "
-                       "than the %5 this process may use (%6): use a smaller --size, or "
+        QStringLiteral("--size %1x%2 with --quality path%3 needs about %4 of memory (%5 bytes a pixel), more "
+                       "than the %6 this process may use (%7): use a smaller --size, or "
                        "--no-memory-check to try anyway")
             .arg(size.width())
             .arg(size.height())
-            .arg(gib(need))
-            .arg(kTracedBytesPerPixel)
+            .arg(layers, gib(need))
+            .arg(kTracedBytesPerPixel + layerBytesPerPixel(layerGroups))
             .arg(gib(available), what);
     return false;
 }

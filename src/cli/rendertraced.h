@@ -9,6 +9,7 @@
 
 #include "render/rendersettings.h"
 #include "scene/floatimage.h"
+#include "scene/renderlayers.h"
 
 #include <QImage>
 #include <QSize>
@@ -32,6 +33,7 @@ struct TracedRenderOptions {
     int threads = 0;             // 0: every core
     double fireflyClamp = 0.0;   // 0: off
     int seed = 0;                // the sampler's seed (trace::TraceSettings::seed)
+    bool layers = false;         // also the light-group, albedo, normal and depth layers (Result::layers)
 };
 
 class TracedImages {
@@ -48,6 +50,10 @@ class TracedImages {
         double noise = 0.0;   // PathTracer::noiseEstimate at the end (+infinity under 2 samples)
         QString stoppedBy;    // "samples", "time" or "noise"
         FloatImage linear;    // the mean scene-linear radiance and coverage (premultiplied), for .exr
+        // With TracedRenderOptions::layers: the traced scene's light groups (trace::TraceScene::groups),
+        // their images summing to `linear`, albedo, normal and depth (trace::PathTracer::layers); its
+        // beauty is `linear`. Empty otherwise.
+        RenderLayers layers;
     };
 
     // `scene`'s model and environment lit by `rig`, seen from `camera` at `size` with `settings`' exposure,
@@ -68,10 +74,15 @@ class TracedImages {
 };
 
 // Bytes `lightrig render --quality path` holds for an image of `size` (the accumulation buffers, the display
-// image, and the traced scene's share, about).
-std::int64_t tracedImageBytes(QSize size);
-// False with the reason, naming --size, when that is more than this process may use (renderestimate.h's
-// availableMemory) and `unchecked` (--no-memory-check) is false.
-bool checkTracedMemory(QSize size, bool unchecked, QString* error);
+// image, and the traced scene's share, about); with `layerGroups` > 0, rendering layers of that many light
+// groups (TracedRenderOptions::layers): their sums per pixel and the RenderLayers images too.
+std::int64_t tracedImageBytes(QSize size, int layerGroups = 0);
+// False with the reason, naming --size (and the light groups, with layers), when that is more than this
+// process may use (renderestimate.h's availableMemory) and `unchecked` (--no-memory-check) is false.
+bool checkTracedMemory(QSize size, bool unchecked, QString* error, int layerGroups = 0);
+// The light groups a traced render of `rig` splits into (trace::TraceScene::groups: rims left out), for
+// checkTracedMemory before the model is loaded: `hasEmissive` (whether the model has emissive surfaces)
+// true counts "emissive" whether or not it will be there (at most one group more than the render has).
+int tracedLayerGroups(const Rig& rig, bool hasEmissive = true);
 
 } // namespace lr::cli

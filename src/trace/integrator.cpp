@@ -63,16 +63,24 @@ struct Vertex {
     const SurfacePoint& s;
     const Bsdf& bsdf;
     Sampler& sampler;
+    const glm::dvec3& beta; // the path's throughput to this vertex
+    glm::dvec3* groups;     // null, or the sample's per-group radiance (PathSplit::groups)
 };
 
-// Next-event estimation at one surface: every light, the environment and one emissive triangle.
+// Next-event estimation at one surface: every light, the environment and one emissive triangle. Each
+// term is also added, × beta, to its group when the sample is split.
 glm::dvec3 directLight(const Vertex& v) {
     const TraceScene& scene = v.scene;
     const SurfacePoint& s = v.s;
     const Bsdf& bsdf = v.bsdf;
     const glm::dvec3 N = bsdf.normal();
     const glm::dvec3 cDiff = bsdf.diffuseColor() * (lighting::saturate(s.occlusion) / std::numbers::pi);
-    glm::dvec3 sum = scene.ambient() * cDiff;
+    glm::dvec3 sum(0.0);
+    const auto add = [&](const glm::dvec3& term, int group) {
+        sum += term;
+        if (v.groups) v.groups[group] += v.beta * term;
+    };
+    add(scene.ambient() * cDiff, scene.ambientGroup());
     lighting::Surface<double> surf;
     surf.position = s.position;
     surf.normal = N;
@@ -80,7 +88,7 @@ glm::dvec3 directLight(const Vertex& v) {
         const lighting::ShadeLight<double>& l = light.shade;
         if (traitsOf(l.type).isArea) {
             if (!areaLightFaces(light, s.position)) continue;
-            sum += l.ambient * cDiff;
+            add(l.ambient * cDiff, light.group);
             if (!(light.area > 0.0)) continue;
             const glm::dvec2 u = v.sampler.next2();
             const AreaLightSample q = sampleAreaLightFrom(light, s.position, u.x, u.y);
@@ -92,13 +100,13 @@ glm::dvec3 directLight(const Vertex& v) {
             const glm::dvec3 c = l.color * f.diffuse + l.specular * f.specular;
             if (!(maxOf(c) > 0.0)) continue;
             if (!scene.unoccluded(scene.offset(s, w), w, dist * (1.0 - 1e-6), v.sampler)) continue;
-            sum += c * (powerHeuristic(pdf, bsdf.pdf(w)) / pdf);
+            add(c * (powerHeuristic(pdf, bsdf.pdf(w)) / pdf), light.group);
             continue;
         }
         glm::dvec3 L;
         double attenuation;
         if (!lighting::lightArrival(l, surf, scene.settings(), &L, &attenuation)) continue;
-        sum += attenuation * l.ambient * cDiff;
+        add(attenuation * l.ambient * cDiff, light.group);
         const lighting::PbrLobes<double> f = bsdf.lobes(L, cosineTerm(l.diffuse, glm::dot(N, L)));
         const glm::dvec3 c = attenuation * (l.color * f.diffuse + l.specular * f.specular);
         if (!(maxOf(c) > 0.0)) continue;
@@ -107,7 +115,7 @@ glm::dvec3 directLight(const Vertex& v) {
         const glm::dvec3 origin = scene.offset(s, w);
         if (scene.unoccluded(origin, w, std::isfinite(distance) ? distance * (1.0 - 1e-9) : distance,
                              v.sampler))
-            sum += c;
+            add(c, light.group);
     }
     if (scene.hasEnvironment()) {
         glm::dvec3 w;
@@ -117,7 +125,8 @@ glm::dvec3 directLight(const Vertex& v) {
             const glm::dvec3 f = bsdf.eval(w);
             if (maxOf(f) > 0.0 && glm::dot(w, s.geometric) > 0.0 &&
                 scene.unoccluded(scene.offset(s, w), w, kInfinity, v.sampler))
-                sum += f * scene.environment().radiance(w) * (powerHeuristic(pdf, bsdf.pdf(w)) / pdf);
+                add(f * scene.environment().radiance(w) * (powerHeuristic(pdf, bsdf.pdf(w)) / pdf),
+                    scene.environmentGroup());
         }
     }
     if (!scene.emissive().empty()) {
@@ -141,7 +150,7 @@ glm::dvec3 directLight(const Vertex& v) {
                 h.hit = true, h.part = tri.part, h.triangle = tri.triangle, h.u = bc.x, h.v = bc.y;
                 h.normal = ng / ngl;
                 const glm::dvec3 le = scene.surface(h, s.position, w).emissive;
-                sum += f * le * (powerHeuristic(pdf, bsdf.pdf(w)) / pdf);
+                add(f * le * (powerHeuristic(pdf, bsdf.pdf(w)) / pdf), scene.emissiveGroup());
             }
         }
     }
@@ -199,8 +208,20 @@ double catcherLight(const TraceScene& scene, const glm::dvec3& p, Sampler& sampl
 } // namespace
 
 PathSample tracePath(const TraceScene& scene, const glm::dvec3& cameraOrigin, const glm::dvec3& cameraDir,
-                     Sampler& sampler, const TraceSettings& settings) {
+                     Sampler& sampler, const TraceSettings& settings, PathSplit* split) {
     PathSample out;
+    glm::dvec3* const groups = split ? split->groups : nullptr;
+    const size_t groupCount = groups ? scene.groups().size() : 0;
+    if (split) {
+        std::fill(groups, groups + groupCount, glm::dvec3(0.0));
+        split->hit = false;
+        split->albedo = split->normal = glm::dvec3(0.0);
+        split->distance = 0.0;
+    }
+    // The radiance's own sums, as they are without the split; the split's beside them.
+    const auto tag = [groups](const glm::dvec3& term, int group) {
+        if (groups) groups[group] += term;
+    };
     glm::dvec3 origin = cameraOrigin, dir = cameraDir, beta(1.0);
     double prevPdf = 0.0; // the BSDF density of `dir`; 0 for the camera ray (no MIS: seen directly)
     for (int depth = 0;; ++depth) {
@@ -216,7 +237,9 @@ PathSample tracePath(const TraceScene& scene, const glm::dvec3& cameraOrigin, co
                     tMax = t, nearest = &light;
             if (nearest) {
                 const double pdfLight = areaLightPdf(*nearest, origin, dir, tMax);
-                out.radiance += beta * nearest->shade.color * powerHeuristic(prevPdf, pdfLight);
+                const glm::dvec3 term = beta * nearest->shade.color * powerHeuristic(prevPdf, pdfLight);
+                out.radiance += term;
+                tag(term, nearest->group);
                 break;
             }
         }
@@ -230,24 +253,37 @@ PathSample tracePath(const TraceScene& scene, const glm::dvec3& cameraOrigin, co
                     const glm::dvec3 behind =
                         scene.environmentVisible() ? scene.environment().radiance(dir) : settings.background;
                     out.radiance = behind * share;
+                    tag(out.radiance, scene.backgroundGroup());
                 }
                 break;
             }
         }
         if (!hit.hit) {
             if (depth == 0) {
-                if (settings.transparent)
+                if (settings.transparent) {
                     out.alpha = 0.0;
-                else
-                    out.radiance =
-                        scene.environmentVisible() ? scene.environment().radiance(dir) : settings.background;
+                } else if (scene.environmentVisible()) {
+                    out.radiance = scene.environment().radiance(dir);
+                    tag(out.radiance, scene.environmentGroup());
+                } else {
+                    out.radiance = settings.background;
+                    tag(out.radiance, scene.backgroundGroup());
+                }
             } else if (scene.hasEnvironment()) {
-                out.radiance += beta * scene.environment().radiance(dir) *
-                                powerHeuristic(prevPdf, scene.environment().pdf(dir));
+                const glm::dvec3 term = beta * scene.environment().radiance(dir) *
+                                        powerHeuristic(prevPdf, scene.environment().pdf(dir));
+                out.radiance += term;
+                tag(term, scene.environmentGroup());
             }
             break;
         }
         const SurfacePoint s = scene.surface(hit, origin, dir);
+        if (depth == 0 && split) {
+            split->hit = true;
+            split->albedo = s.baseColor;
+            split->normal = s.normal;
+            split->distance = hit.t;
+        }
         if (maxOf(s.emissive) > 0.0) {
             double w = 1.0;
             if (depth > 0) {
@@ -256,11 +292,13 @@ PathSample tracePath(const TraceScene& scene, const glm::dvec3& cameraOrigin, co
                     scene.emissive().areaDensity(hit.part, hit.triangle) * hit.t * hit.t / cosL;
                 w = powerHeuristic(prevPdf, pdfLight);
             }
-            out.radiance += beta * s.emissive * w;
+            const glm::dvec3 term = beta * s.emissive * w;
+            out.radiance += term;
+            tag(term, scene.emissiveGroup());
         }
         if (depth >= settings.bounces) break;
         const Bsdf bsdf(s.normal, -dir, s.baseColor, s.metallic, s.roughness);
-        out.radiance += beta * directLight({scene, s, bsdf, sampler});
+        out.radiance += beta * directLight({scene, s, bsdf, sampler, beta, groups});
         const double lobe = sampler.next();
         const glm::dvec2 u = sampler.next2();
         const BsdfSample bs = bsdf.sample(lobe, u.x, u.y);
@@ -281,8 +319,12 @@ PathSample tracePath(const TraceScene& scene, const glm::dvec3& cameraOrigin, co
     if (!out.finite) {
         out.radiance = glm::dvec3(0.0);
         out.alpha = 1.0;
+        if (groups) std::fill(groups, groups + groupCount, glm::dvec3(0.0));
     } else if (settings.fireflyClamp > 0.0 && maxOf(out.radiance) > settings.fireflyClamp) {
-        out.radiance *= settings.fireflyClamp / maxOf(out.radiance);
+        const double k = settings.fireflyClamp / maxOf(out.radiance);
+        out.radiance *= k;
+        for (size_t g = 0; g < groupCount; ++g)
+            groups[g] *= k;
     }
     return out;
 }

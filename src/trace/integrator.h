@@ -6,6 +6,10 @@
 // the throughput's largest channel, at most 0.95), and a hard limit of `bounces` surface interactions
 // (1: direct light only). Nothing is clamped unless fireflyClamp is set (a named, biased option, off by
 // default). A sample whose radiance is not finite is dropped and counted, never averaged in.
+//
+// Light groups (core/lightgroups.h, TraceScene::groups): on request, every term a sample adds is also
+// added to the group of the emitter it comes from, so the groups sum to the radiance sample for sample
+// (to rounding: the radiance's own sums are left exactly as they are without the split).
 #pragma once
 
 #include "sampler.h"
@@ -33,7 +37,25 @@ struct PathSample {
     bool finite = true;
 };
 
+// What tracePath splits one sample into besides its radiance, when the caller asks for it (a null
+// PathSplit: nothing is split, nothing is paid).
+struct PathSplit {
+    // In: the caller's buffer of scene.groups().size() entries. Out: each group's share of the sample's
+    // radiance (the buffer is overwritten): a rig light's next-event term, its area hit by a BSDF ray and
+    // its own ambient term → the light's group; the scene ambient → "ambient"; the environment's light
+    // and the visible environment behind camera rays → "environment"; emissive surfaces, hit or sampled
+    // → "emissive"; the background colour and the shadow catcher's composite → "background". The firefly
+    // clamp scales every group by its factor; a dropped (non-finite) sample leaves them all 0.
+    glm::dvec3* groups = nullptr;
+    // Out: the first surface the camera ray meets (not an area light, which camera rays do not see, and
+    // not the shadow catcher, which only composites the background): whether there is one, its base
+    // colour, its world shading normal (unit, turned towards the camera) and its distance along the ray.
+    bool hit = false;
+    glm::dvec3 albedo{0.0}, normal{0.0};
+    double distance = 0.0;
+};
+
 PathSample tracePath(const TraceScene& scene, const glm::dvec3& origin, const glm::dvec3& dir,
-                     Sampler& sampler, const TraceSettings& settings);
+                     Sampler& sampler, const TraceSettings& settings, PathSplit* split = nullptr);
 
 } // namespace lr::trace

@@ -28,6 +28,7 @@ struct TraceLight {
     lighting::ShadeLight<double> shade; // world space (prepareLight with the identity view)
     ShadowEmitter emitter;              // the shadow ray's target (referencetrace.h), world
     double area = 0.0;                  // rect, disk: world units²
+    int group = 0;                      // its light group: an index into TraceScene::groups()
 };
 
 // Where the ray (unit dir) meets an area light's emitting side, at distance *t; false when it misses.

@@ -90,7 +90,20 @@ std::shared_ptr<const TraceScene> TraceScene::build(const SceneDescription& scen
 
     t->m_settings = scene.shadeSettings();
     t->m_ambient = rig.ambient;
-    for (const Light& light : rig.lights) {
+    t->m_groups = lightGroups(rig, {.hasEmissive = !t->m_emissive.empty(), .includeRims = false});
+    const std::vector<int> groupOf = groupOfLights(rig, t->m_groups);
+    const auto groupOfKind = [&](LightGroupKind kind) {
+        for (size_t g = 0; g < t->m_groups.size(); ++g)
+            if (t->m_groups[g].kind == kind) return int(g);
+        return -1;
+    };
+    t->m_backgroundGroup = groupOfKind(LightGroupKind::Background); // always listed (alwaysBackground)
+    const auto orBackground = [&](int g) { return g >= 0 ? g : t->m_backgroundGroup; };
+    t->m_environmentGroup = orBackground(groupOfKind(LightGroupKind::Environment));
+    t->m_emissiveGroup = orBackground(groupOfKind(LightGroupKind::Emissive));
+    t->m_ambientGroup = orBackground(groupOfKind(LightGroupKind::Ambient));
+    for (size_t i = 0; i < rig.lights.size(); ++i) {
+        const Light& light = rig.lights[i];
         if (!light.enabled) continue;
         if (light.type == LightType::Rim) {
             t->m_warnings << QStringLiteral(
@@ -100,6 +113,7 @@ std::shared_ptr<const TraceScene> TraceScene::build(const SceneDescription& scen
             continue;
         }
         TraceLight l;
+        l.group = orBackground(groupOf[i]);
         l.shade = prepareLight(rig, frame, glm::dmat4(1.0), light);
         l.emitter = shadowEmitter(rig, frame, light);
         l.emitter.casts = true; // every light is occluded in the traced image, as the environment is

@@ -12,6 +12,7 @@
 #include "sampler.h"
 #include "texture.h"
 
+#include "core/lightgroups.h"
 #include "model/ground.h"
 #include "scene/embreescene.h"
 #include "scene/scenedescription.h"
@@ -72,6 +73,16 @@ class TraceScene {
     std::int64_t triangles() const { return m_embree->triangles(); }
     // Memory the traced scene holds besides the model (Embree's own is not counted).
     std::size_t bytes() const;
+    // The light groups the traced image splits into (core/lightgroups.h, rims left out: the tracer leaves
+    // them out; "emissive" when emissive() is not empty): each light's is TraceLight::group, the other
+    // emitters' below. A kind the list lacks (no environment, no ambient) falls back to "background",
+    // which is always there, so every contribution has a group; nothing falls back in practice, since a
+    // kind is listed whenever the scene holds it.
+    const std::vector<LightGroup>& groups() const { return m_groups; }
+    int environmentGroup() const { return m_environmentGroup; } // its light and the visible background
+    int emissiveGroup() const { return m_emissiveGroup; }       // emissive surfaces, hit or sampled
+    int ambientGroup() const { return m_ambientGroup; }         // the rig's scene ambient
+    int backgroundGroup() const { return m_backgroundGroup; }   // background colour, the catcher
     // What the traced image leaves out of the rig (rim lights), one line each.
     const QStringList& warnings() const { return m_warnings; }
 
@@ -103,6 +114,8 @@ class TraceScene {
     std::optional<GroundPlane> m_catcher;
     double m_epsilon = 1e-4, m_radius = 1.0;
     QStringList m_warnings;
+    std::vector<LightGroup> m_groups;
+    int m_environmentGroup = 0, m_emissiveGroup = 0, m_ambientGroup = 0, m_backgroundGroup = 0;
 };
 
 } // namespace lr::trace
