@@ -155,6 +155,7 @@ std::optional<RenderLayers> renderRasterLayers(OffscreenRenderer& offscreen, con
     }
     if (stats) {
         stats->passes = passes;
+        stats->groups = int(layers.groups.size());
         stats->beautyMs = beautyMs;
         stats->splitMs = double(clock.nsecsElapsed()) * 1e-6 - beautyMs;
         stats->bytes = rasterLayersBytes(size, int(layers.groups.size()));

@@ -34,6 +34,7 @@ namespace lr {
 // What one split cost (lightrig bench --groups).
 struct RasterLayersStats {
     int passes = 0;        // radiance passes: the beauty's, each group's, the emission's (when it emits)
+    int groups = 0;        // group images
     double beautyMs = 0.0; // the beauty pass (with its read-back)
     double splitMs = 0.0;  // every other pass, the G-buffer and the subtractions
     qint64 bytes = 0;      // of the layers returned (rasterLayersBytes)
