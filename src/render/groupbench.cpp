@@ -103,6 +103,11 @@ bool runGroupBench(const std::vector<BenchScene>& scenes, const GroupBenchOption
                        [&] { return gl.renderRadiance(scene.camera, o.size, s, &beauty, error); }))
                 return false;
             r.beautyBytes = imageBytes(o.size);
+            double readbackCpuMs = 0.0;
+            if (!timed(0, o.frames, &r.readbackMs, &readbackCpuMs, [&] {
+                    return gl.renderer().readRadiance(&beauty) || (*error = gl.renderer().lastError(), false);
+                }))
+                return false;
             RasterLayersStats stats;
             if (!timed(o.warmupFrames, o.frames, &r.layersMs, &r.layersCpuMs, [&] {
                     return renderRasterLayers(gl, scene.camera, o.size, s, error, &stats).has_value();
@@ -132,7 +137,7 @@ QString groupBenchTable(const std::vector<GroupBenchResult>& results) {
     QString text;
     QTextStream out(&text);
     const auto mib = [](qint64 b) { return QString::number(double(b) / double(1 << 20), 'f', 1); };
-    out << QStringLiteral("%1 %2 %3 %4 %5 %6 %7 %8 %9 %10 %11\n")
+    out << QStringLiteral("%1 %2 %3 %4 %5 %6 %7 %8 %9 %10 %11 %12\n")
                .arg(QStringLiteral("scene"), -24)
                .arg(QStringLiteral("tier"), -10)
                .arg(QStringLiteral("groups"), 6)
@@ -143,10 +148,12 @@ QString groupBenchTable(const std::vector<GroupBenchResult>& results) {
                .arg(QStringLiteral("cpu x"), 6)
                .arg(QStringLiteral("beauty MiB"), 10)
                .arg(QStringLiteral("layers MiB"), 10)
-               .arg(QStringLiteral("ms/group"), 9);
+               .arg(QStringLiteral("ms/group"), 9)
+               .arg(QStringLiteral("1-pass >= ms"), 12);
     for (const GroupBenchResult& r : results) {
         const double extra = r.groups > 0 ? (r.layersMs - r.beautyMs) / r.groups : 0.0;
-        out << QStringLiteral("%1 %2 %3 %4 %5 %6 %7 %8 %9 %10 %11\n")
+        const double bound = r.accumulationBoundMs();
+        out << QStringLiteral("%1 %2 %3 %4 %5 %6 %7 %8 %9 %10 %11 %12\n")
                    .arg(r.scene, -24)
                    .arg(r.tier, -10)
                    .arg(r.groups, 6)
@@ -157,7 +164,8 @@ QString groupBenchTable(const std::vector<GroupBenchResult>& results) {
                    .arg(r.beautyCpuMs > 0 ? r.layersCpuMs / r.beautyCpuMs : 0.0, 6, 'f', 1)
                    .arg(mib(r.beautyBytes), 10)
                    .arg(mib(r.layersBytes), 10)
-                   .arg(extra, 9, 'f', 1);
+                   .arg(extra, 9, 'f', 1)
+                   .arg(bound > 0.0 ? QString::number(bound, 'f', 1) : QStringLiteral("-"), 12);
     }
     return text;
 }

@@ -30,6 +30,10 @@ struct GroupBenchResult {
     double beautyMs = 0.0, layersMs = 0.0;       // wall, median
     double beautyCpuMs = 0.0, layersCpuMs = 0.0; // process CPU (all threads), median
     qint64 beautyBytes = 0, layersBytes = 0;     // what each returns (the reference's: its double images too)
+    // Raster: one float read-back of the frame (median); beautyMs + groups × readbackMs bounds from below
+    // what one accumulation per group (all groups in one lighting pass) would cost.
+    double readbackMs = 0.0;
+    double accumulationBoundMs() const { return readbackMs > 0.0 ? beautyMs + groups * readbackMs : 0.0; }
 };
 
 // Needs a QGuiApplication whose platform offers OpenGL. False and *error when a scene fails.
