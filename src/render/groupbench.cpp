@@ -62,16 +62,15 @@ bool benchReference(OffscreenRenderer& gl, const BenchScene& scene, const GroupB
     r->beautyBytes = pixels * qint64(sizeof(glm::dvec3));
     clock.restart();
     cpu0 = std::clock();
-    ReferenceImage split;
     const std::optional<RenderLayers> layers =
-        computeReferenceLayers(gl.renderer().scene(), g, view, s, error, &split);
+        computeReferenceLayers(gl.renderer().scene(), g, view, s, error);
     if (!layers) return false;
     r->layersMs = double(clock.nsecsElapsed()) * 1e-6;
     r->layersCpuMs = double(std::clock() - cpu0) * 1000.0 / CLOCKS_PER_SEC;
     r->groups = int(layers->groups.size());
     r->passes = 1;
     // Its double radiance and per-group radiance, and the float layers (no emission scratch image).
-    r->layersBytes = r->beautyBytes + pixels * split.groupCount * qint64(sizeof(glm::dvec3)) +
+    r->layersBytes = r->beautyBytes + pixels * r->groups * qint64(sizeof(glm::dvec3)) +
                      rasterLayersBytes(o.size, r->groups) - imageBytes(o.size);
     return true;
 }
