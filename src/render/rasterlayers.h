@@ -41,10 +41,13 @@ struct RasterLayersStats {
 };
 
 // Needs renderer.renderer() to hold a model (else fails) and `size` within one tile (renderer.maxTileSize():
-// larger sizes are refused, naming the limit). Float RGBA32F read-backs; no supersampling.
+// larger sizes are refused, naming the limit). Float RGBA32F read-backs; no supersampling. `progress`, when
+// given, is called with (passes done, passes in all) before the first pass and after each; returning false
+// cancels ("cancelled"). It may run the event loop: the renderer's rig is the group's meanwhile.
 std::optional<RenderLayers> renderRasterLayers(OffscreenRenderer& renderer, const ViewCamera& camera,
                                                QSize size, const RenderSettings& settings, QString* error,
-                                               RasterLayersStats* stats = nullptr);
+                                               RasterLayersStats* stats = nullptr,
+                                               const TileProgress& progress = {});
 
 // The rig one group's pass renders: `rig` with only `group`'s share on. `shadowResolution` (> 0): every
 // caster's map resolution (the beauty's array's); `casts[i]` false: light i casts no shadow (it did not in
