@@ -14,6 +14,7 @@
 #include "render/benchestimate.h"
 #include "render/benchreport.h"
 #include "render/benchscaling.h"
+#include "render/groupbench.h"
 #include "render/qualitybench.h"
 #include "render/tracebench.h"
 
@@ -35,7 +36,7 @@ const char* kUsage =
     "[--light-type T,...] [--size WxH] [--shading classic|pbr] [--ground off|visible|catcher] "
     "[--shadows on|off] [--frames N] [--msaa N] [--interactive] [--orbit DEG] [--drag] "
     "[--quality LIST[,path] [--path-samples N] [--converged-samples N] [--bounces B] [--threads T]] "
-    "[--approximations LIST] [--json OUT.json] [--chart OUT.png] [--scaling-chart OUT.png]";
+    "[--approximations LIST] [--json OUT.json] [--chart OUT.png] [--scaling-chart OUT.png] [--groups]";
 
 const char* kBundledModel = ":/resources/models/suzanne/Suzanne.gltf";
 
@@ -156,13 +157,20 @@ int runBench(const QStringList& args) {
                        "(docs/quality.md): a comma-separated list of b1, b2, b3, b4, f2, b5, b6 (b5, b6: "
                        "physically based rigs only), or none (default b1,b2,b4, what the tiers ship with)."),
         QStringLiteral("LIST"));
+    const QCommandLineOption groups(
+        QStringLiteral("groups"),
+        QStringLiteral(
+            "Measure what per-light-group output costs instead (docs/light-mixing.md): per scene and "
+            "raster tier the beauty alone against the beauty split into one image per group, "
+            "median ms of --frames (default 3) after --warmup (default 1) frames, and the layers' "
+            "memory; and the double reference without and with the split (unless --no-errors)."));
     const SceneOptionSet scene;
     const PathBenchOptionSet pathSet;
     parser.addOption(help);
     scene.addTo(parser);
     pathSet.addTo(parser);
     parser.addOptions({lights, lightType, lightRange, frames, warmup, msaa, interactive, orbit, drag, json,
-                       chart, scalingChart, noErrors, fullReference, noUber, approximations});
+                       chart, scalingChart, noErrors, fullReference, noUber, approximations, groups});
     parser.addPositionalArgument(QStringLiteral("MODEL"),
                                  QStringLiteral("Model files (default: the standard suite)."),
                                  QStringLiteral("[MODEL...]"));
@@ -309,6 +317,34 @@ int runBench(const QStringList& args) {
                 scenes.back().environmentLoad = loaded.environmentLoad;
             }
         }
+    }
+
+    if (parser.isSet(groups)) {
+        if (sceneOptions->pathTraced || parser.isSet(chart) || parser.isSet(scalingChart) ||
+            parser.isSet(json))
+            return usage(QStringLiteral("--groups measures the raster tiers and the reference alone: it "
+                                        "excludes the path tier, --json and the charts"));
+        GroupBenchOptions g;
+        g.size = options.size;
+        g.tiers = options.tiers;
+        g.msaaSamples = options.msaaSamples;
+        g.approximations = options.approximations;
+        g.reference = options.errors;
+        g.frames = parser.isSet(frames) ? options.frames : g.frames;
+        g.warmupFrames = parser.isSet(warmup) ? options.warmupFrames : g.warmupFrames;
+        std::vector<GroupBenchResult> results;
+        QString gl;
+        if (!runGroupBench(scenes, g, &results, &gl, &message)) return failed(message);
+        out << QStringLiteral(
+                   "lightrig bench --groups: %1, %2x%3, %4 timed frames after %5, load average %6\n")
+                   .arg(gl)
+                   .arg(g.size.width())
+                   .arg(g.size.height())
+                   .arg(g.frames)
+                   .arg(g.warmupFrames)
+                   .arg(loadAverageNow());
+        out << groupBenchTable(results);
+        return Ok;
     }
 
     BenchReport report;

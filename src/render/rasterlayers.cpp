@@ -76,7 +76,7 @@ qint64 rasterLayersBytes(QSize size, int groups) {
 
 std::optional<RenderLayers> renderRasterLayers(OffscreenRenderer& offscreen, const ViewCamera& camera,
                                                QSize size, const RenderSettings& settings, QString* error,
-                                               RasterLayersStats* stats) {
+                                               RasterLayersStats* stats, const TileProgress& progress) {
     Renderer& renderer = offscreen.renderer();
     const SceneDescription& scene = renderer.scene();
     if (!scene.model()) return fail(error, QStringLiteral("light-group layers need a model")), std::nullopt;
@@ -104,11 +104,28 @@ std::optional<RenderLayers> renderRasterLayers(OffscreenRenderer& offscreen, con
             return v.rigIndex == int(i);
         });
 
+    // The passes: the G-buffer, the beauty, the emission's (when it emits), each group's but the emission's
+    // and the background's.
+    const bool emits = std::any_of(layers.groups.begin(), layers.groups.end(),
+                                   [](const LightGroup& g) { return g.kind == LightGroupKind::Emissive; });
+    const int total = 2 + int(emits) +
+                      int(std::count_if(layers.groups.begin(), layers.groups.end(), [](const LightGroup& g) {
+                          return g.kind == LightGroupKind::Lights || g.kind == LightGroupKind::Environment ||
+                                 g.kind == LightGroupKind::Ambient;
+                      }));
+    int done = 0;
+    const auto advance = [&] {
+        if (progress && !progress(done, total)) return fail(error, QStringLiteral("cancelled"));
+        ++done;
+        return true;
+    };
+    if (!advance()) return std::nullopt;
     GBuffer gbuffer;
     if (!offscreen.renderGBuffer(camera, size, settings, &gbuffer, error)) return std::nullopt;
     fillAuxiliaryLayers(gbuffer, renderer.effectiveCamera(camera).view(), &layers);
     gbuffer = GBuffer();
 
+    if (!advance()) return std::nullopt;
     QElapsedTimer beautyClock;
     beautyClock.start();
     if (!offscreen.renderRadiance(camera, size, settings, &layers.beauty, error)) return std::nullopt;
@@ -119,14 +136,13 @@ std::optional<RenderLayers> renderRasterLayers(OffscreenRenderer& offscreen, con
     if (settings.quality != Quality::Fast)
         s.shadingPath = renderer.stats().deferred ? ShadingPath::Deferred : ShadingPath::Forward;
     const auto pass = [&](const LightGroup& group, FloatImage* out) {
+        if (!advance()) return false;
         renderer.setRig(groupPassRig(rig, group, shadowResolution, casts));
         ++passes;
         if (offscreen.renderRadiance(camera, size, s, out, error)) return true;
         if (error) *error = QStringLiteral("light group '%1': %2").arg(group.name, *error);
         return false;
     };
-    const bool emits = std::any_of(layers.groups.begin(), layers.groups.end(),
-                                   [](const LightGroup& g) { return g.kind == LightGroupKind::Emissive; });
     FloatImage emission;
     const LightGroup nothing{QStringLiteral("emissive"), LightGroupKind::Emissive, {}};
     if (emits && !pass(nothing, &emission)) return std::nullopt;
@@ -153,8 +169,10 @@ std::optional<RenderLayers> renderRasterLayers(OffscreenRenderer& offscreen, con
             backgroundImage(layers, background, rig.ground.mode == GroundMode::Catcher);
         copyAlpha(&layers.groupImages[background], layers.beauty);
     }
+    if (progress && !progress(total, total)) return fail(error, QStringLiteral("cancelled")), std::nullopt;
     if (stats) {
         stats->passes = passes;
+        stats->groups = int(layers.groups.size());
         stats->beautyMs = beautyMs;
         stats->splitMs = double(clock.nsecsElapsed()) * 1e-6 - beautyMs;
         stats->bytes = rasterLayersBytes(size, int(layers.groups.size()));

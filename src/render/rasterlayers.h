@@ -34,16 +34,20 @@ namespace lr {
 // What one split cost (lightrig bench --groups).
 struct RasterLayersStats {
     int passes = 0;        // radiance passes: the beauty's, each group's, the emission's (when it emits)
+    int groups = 0;        // group images
     double beautyMs = 0.0; // the beauty pass (with its read-back)
     double splitMs = 0.0;  // every other pass, the G-buffer and the subtractions
     qint64 bytes = 0;      // of the layers returned (rasterLayersBytes)
 };
 
 // Needs renderer.renderer() to hold a model (else fails) and `size` within one tile (renderer.maxTileSize():
-// larger sizes are refused, naming the limit). Float RGBA32F read-backs; no supersampling.
+// larger sizes are refused, naming the limit). Float RGBA32F read-backs; no supersampling. `progress`, when
+// given, is called with (passes done, passes in all) before the first pass and after each; returning false
+// cancels ("cancelled"). It may run the event loop: the renderer's rig is the group's meanwhile.
 std::optional<RenderLayers> renderRasterLayers(OffscreenRenderer& renderer, const ViewCamera& camera,
                                                QSize size, const RenderSettings& settings, QString* error,
-                                               RasterLayersStats* stats = nullptr);
+                                               RasterLayersStats* stats = nullptr,
+                                               const TileProgress& progress = {});
 
 // The rig one group's pass renders: `rig` with only `group`'s share on. `shadowResolution` (> 0): every
 // caster's map resolution (the beauty's array's); `casts[i]` false: light i casts no shadow (it did not in

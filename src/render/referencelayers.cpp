@@ -29,17 +29,22 @@ void splitReferencePixel(const ReferenceScene& sc, const lighting::Surface<doubl
     const auto add = [&](int g, const glm::dvec3& v) {
         if (g >= 0 && g < gr.count) groups[g] += v;
     };
-    lighting::Surface<double> dark = s; // what one light adds: no emission,
-    dark.emissive = glm::dvec3(0.0);
-    lighting::ShadeSettings<double> alone = sc.settings; // no scene ambient
-    alone.ambient = glm::dvec3(0.0);
+    // Each light's term as shadeSurface adds it (shade.h), with the view vector and the physically based
+    // lobes' inputs computed once for the pixel.
+    const glm::dvec3 V = lighting::viewVector(sc.settings, s.position);
+    const bool pbr = sc.settings.model == ShadingModel::Pbr;
+    const glm::dvec3 cDiff = lighting::pbrDiffuseColor(s.albedo, s.metallic),
+                     f0 = lighting::pbrF0(s.albedo, s.metallic);
+    const double alpha = lighting::pbrAlpha(s.roughness);
     for (size_t k = 0; k < sc.lights.size() && k < gr.ofLight.size(); ++k) {
         const double v = k < shaded.size() ? shaded[k] : 1.0;
-        glm::dvec3 light =
-            lighting::shadeSurface<double>(dark, std::span(&sc.lights[k], 1), alone, std::span(&v, 1));
+        glm::dvec3 light = pbr ? lighting::shadeLightPbr(sc.lights[k], s, sc.settings, V, cDiff, f0, alpha, v)
+                               : lighting::shadeLight(sc.lights[k], s, sc.settings, V, v);
         if (k < areaDirect.size()) light += (k < visibility.size() ? visibility[k] : 1.0) * areaDirect[k];
         add(gr.ofLight[k], light);
     }
+    lighting::Surface<double> dark = s; // the scene ambient alone: no lights, no emission
+    dark.emissive = glm::dvec3(0.0);
     add(gr.ambient, lighting::shadeSurface<double>(dark, {}, sc.settings));
     add(gr.emissive, s.emissive);
     add(gr.environment, environment);
@@ -62,10 +67,11 @@ RenderLayers referenceLayers(const ReferenceImage& r, const std::vector<LightGro
     if (r.groupCount == int(groups.size()) && r.groupCount > 0) {
         layers.groups = groups;
         layers.groupImages.assign(groups.size(), image());
-        for (size_t g = 0; g < groups.size(); ++g)
-            for (size_t i = 0; i < n; ++i)
+        const glm::dvec3* radiance = r.groupRadiance.data(); // pixel-major: read in order
+        for (size_t i = 0; i < n; ++i)
+            for (size_t g = 0; g < groups.size(); ++g)
                 layers.groupImages[g].pixels[i] =
-                    glm::vec4(glm::vec3(r.groupRadiance[i * groups.size() + g]), layers.beauty.pixels[i].w);
+                    glm::vec4(glm::vec3(*radiance++), layers.beauty.pixels[i].w);
     }
     fillAuxiliaryLayers(gbuffer, view, &layers);
     return layers;
@@ -78,9 +84,11 @@ std::optional<RenderLayers> computeReferenceLayers(const SceneDescription& scene
     if (!rs) return std::nullopt;
     const std::vector<LightGroup> groups = sceneLightGroups(scene);
     setReferenceGroups(&*rs, scene.rig(), groups);
-    ReferenceImage r = computeReference(gbuffer, *rs);
-    RenderLayers layers = referenceLayers(r, groups, gbuffer, view);
-    if (reference) *reference = std::move(r);
+    ReferenceJob job(gbuffer, *std::move(rs));
+    job.start().waitForFinished();
+    job.finish();
+    RenderLayers layers = referenceLayers(job.result(), groups, gbuffer, view);
+    if (reference) *reference = job.result(); // a copy only when asked for: its per-group radiance is big
     return layers;
 }
 

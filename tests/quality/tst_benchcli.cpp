@@ -8,6 +8,8 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QMap>
+#include <QRegularExpression>
 #include <QSet>
 #include <QTemporaryDir>
 #include <QTest>
@@ -66,7 +68,8 @@ class TestBenchCli : public QObject {
                                    "--environment-intensity",
                                    "--environment-rotation",
                                    "--environment-background",
-                                   "--orbit"})
+                                   "--orbit",
+                                   "--groups"})
             QVERIFY2(r.out.contains(QLatin1String(option)), option);
     }
 
@@ -92,6 +95,7 @@ class TestBenchCli : public QObject {
         QTest::addRow("bad environment background") << QStringList{"--environment-background", "grey"};
         QTest::addRow("orbit past a turn") << QStringList{"--orbit", "400"};
         QTest::addRow("orbit word") << QStringList{"--orbit", "left"};
+        QTest::addRow("groups and json") << QStringList{"--groups", "--json", "out.json"}; // issue 37
     }
 
     void usageErrors() {
@@ -201,6 +205,31 @@ class TestBenchCli : public QObject {
                       QStringLiteral("2"), QStringLiteral("--no-uber"), QStringLiteral("--no-errors")});
         QVERIFY2(r.code == 0, qPrintable(show(r)));
         QVERIFY(r.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts).size() == 3);
+    }
+
+    // Issue 37: --groups times the beauty against the light-group split per tier and the reference, one
+    // row each; a light more is a group (and a pass) more.
+    void groupsCost() {
+        if (!haveDisplay()) QSKIP("needs an X display with OpenGL: run under xvfb-run -a");
+        const Run r = lightrig({"--groups", "--lights", "1,3", "--light-type", "point", "--size", "48x32",
+                                "--frames", "1", "--warmup", "0"});
+        QVERIFY2(r.code == 0, qPrintable(show(r)));
+        const QStringList lines = r.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 2 + 2 * 4); // heading, titles, 2 scenes × (exact, balanced, fast, reference)
+        QVERIFY2(lines[0].contains("load average"), qPrintable(lines[0]));
+        QMap<QString, int> groups;
+        for (const QString& line : lines.mid(2)) {
+            const QStringList cells =
+                line.split(QRegularExpression(QStringLiteral("\\s{2,}")), Qt::SkipEmptyParts);
+            QVERIFY2(cells.size() >= 10, qPrintable(line));
+            const QString tier = cells[1].trimmed();
+            const int n = cells[2].trimmed().toInt();
+            if (line.contains("1 point"))
+                groups[tier] = n;
+            else
+                QVERIFY2(n == groups.value(tier) + 2, qPrintable(line));
+        }
+        QCOMPARE(groups.size(), 4);
     }
 
     void modelWithItsRigAndOneTier() {

@@ -244,6 +244,33 @@ class TestRasterLayers : public QObject {
         QVERIFY2(brightest <= kSumTolerance, qPrintable(QString::number(brightest)));
     }
 
+    // The editor's Mixer dock shows progress and can cancel: one call per pass (the G-buffer, the beauty,
+    // the emission's and the six lit groups' here), and a cancel leaves the rig as it was.
+    void progressAndCancel() {
+        const Rig rig = layerRig(ShadingModel::Classic);
+        QVERIFY(setScene(emittingSphere(), rig));
+        std::vector<std::pair<int, int>> calls;
+        QString error;
+        RasterLayersStats stats;
+        const auto l = renderRasterLayers(*m_gl, groundCamera(), kLayerSize, layerSettings(Quality::Fast, 0),
+                                          &error, &stats, [&](int done, int total) {
+                                              calls.emplace_back(done, total);
+                                              return true;
+                                          });
+        QVERIFY2(l, qPrintable(error));
+        QCOMPARE(int(calls.size()), 10); // before each of 9 passes, and once at the end
+        for (size_t i = 0; i < calls.size(); ++i)
+            QCOMPARE(calls[i], std::make_pair(int(i), 9));
+        QCOMPARE(stats.passes, 8); // the G-buffer is no radiance pass
+        QCOMPARE(stats.groups, 8);
+        const auto cancelled =
+            renderRasterLayers(*m_gl, groundCamera(), kLayerSize, layerSettings(Quality::Fast, 0), &error,
+                               nullptr, [&](int done, int) { return done < 4; });
+        QVERIFY(!cancelled);
+        QCOMPARE(error, QStringLiteral("cancelled"));
+        QVERIFY(m_gl->renderer().rig() == rig);
+    }
+
     void refusesMoreThanOneTile() {
         const Rig rig = layerRig(ShadingModel::Classic);
         QVERIFY(setScene(emittingSphere(), rig));
