@@ -84,8 +84,9 @@ LightsDock::LightsDock(Document* document, QWidget* parent)
         m_view->setDragEnabled(section < 0);
     });
     header->setSectionResizeMode(QHeaderView::Interactive);
-    header->resizeSection(LightTableModel::NameColumn, 104);
-    header->resizeSection(LightTableModel::GroupColumn, 72);
+    header->resizeSection(LightTableModel::NameColumn, 96);
+    header->resizeSection(LightTableModel::GroupColumn, 64);
+    header->resizeSection(LightTableModel::TypeColumn, 84); // "Directional"
     for (int c : {int(LightTableModel::OnColumn), int(LightTableModel::SoloColumn),
                   int(LightTableModel::ShadowColumn)})
         header->setSectionResizeMode(c, QHeaderView::ResizeToContents);

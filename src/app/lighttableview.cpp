@@ -61,6 +61,9 @@ LightTableView::LightTableView(QWidget* parent) : QTableView(parent) {
     verticalHeader()->hide();
     verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 8);
     horizontalHeader()->setHighlightSections(false);
+    // The last (stretched) column keeps at least the default size when space is short: a narrow default
+    // lets all nine columns fit the default layout's table (the Lights dock sizes the others).
+    horizontalHeader()->setDefaultSectionSize(64);
     horizontalHeader()->setStretchLastSection(true);
 }
 

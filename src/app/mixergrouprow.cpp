@@ -45,7 +45,8 @@ MixerGroupRow::MixerGroupRow(const QString& group, const QString& toolTip, QWidg
     for (QWidget* w : {static_cast<QWidget*>(m_slider), static_cast<QWidget*>(m_ev)})
         w->setToolTip(tr("Exposure change of the group: × 2^EV (double-click: 0)"));
     m_tint = new ColorButton(this);
-    m_tint->setToolTip(tr("Tint of the group, linear RGB (× per channel)"));
+    m_tint->setToolButtonStyle(Qt::ToolButtonIconOnly); // the swatch; its values in the tooltip
+    m_tint->setSizePolicy(QSizePolicy::Fixed, QSizePolicy::Fixed);
     m_name = new QLabel(group, this);
     m_name->setToolTip(toolTip);
     m_name->setMinimumWidth(60);
@@ -99,6 +100,7 @@ void MixerGroupRow::display(const GroupMix& mix) {
     m_slider->setValue(sliderTicks(mix.ev));
     m_ev->setValue(mix.ev);
     m_tint->setColor(mix.tint);
+    m_tint->setToolTip(tr("Tint of the group, × per channel: %1").arg(m_tint->text()));
     for (QWidget* w : {static_cast<QWidget*>(m_slider), static_cast<QWidget*>(m_ev),
                        static_cast<QWidget*>(m_tint), static_cast<QWidget*>(m_name)})
         w->setEnabled(mix.enabled);
