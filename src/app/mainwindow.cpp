@@ -22,6 +22,7 @@
 #include "rendersettingsdock.h"
 #include "scene.h"
 #include "sessionsettings.h"
+#include "tracedview.h"
 #include "viewbookmarks.h"
 #include "viewport.h"
 #include "viewsettings.h"
@@ -153,6 +154,17 @@ void MainWindow::connectStatus() {
     connect(m_mixerDock, &MixerDock::statusMessage, this,
             [this](const QString& t) { m_status->showMessage(t, 8000); });
     connect(m_mixerDock, &MixerDock::captureRequested, this, &MainWindow::captureMixerLayers);
+    // The path-traced view keeps light-group layers while the Mixer is open (they cost memory per group),
+    // and hands them to the Mixer when asked.
+    TracedView* traced = m_viewport->tracedView();
+    connect(m_mixerDock, &QDockWidget::visibilityChanged, traced, &TracedView::setLayers);
+    connect(traced, &TracedView::layersReady, this, [this](const RenderLayers& layers, int samples) {
+        const QString what = tr("traced, %n samples, %1×%2", nullptr, samples)
+                                 .arg(layers.beauty.width)
+                                 .arg(layers.beauty.height);
+        m_mixerDock->setLayers(layers, what);
+        m_status->showMessage(tr("Captured %1").arg(what), 5000);
+    });
     auto display = [this] {
         m_mixerDock->setDisplay(m_viewSettings->options().exposure, m_viewSettings->options().toneMap);
     };
@@ -214,7 +226,11 @@ void MainWindow::captureMixerLayers() {
 }
 
 bool MainWindow::captureTracedLayers() {
-    return false; // the traced view's layers: wired with the path tracer's split
+    TracedView* traced = m_viewport->tracedView();
+    if (!traced->layers()) traced->setLayers(true); // from the next samples on; the raster meanwhile
+    if (!traced->requestLayers()) return false;
+    m_status->showMessage(tr("Capturing the path-traced view's light groups after this pass…"), 5000);
+    return true;
 }
 
 void MainWindow::updateTitle() {

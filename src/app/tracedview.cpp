@@ -44,6 +44,8 @@ struct TracedView::Job {
     ViewCamera camera;
     QSize size;
     trace::TraceSettings settings;
+    bool layers = false;                 // the tracer keeps the light groups' layers (setLayers)
+    std::atomic<bool> wantLayers{false}; // post them after the next pass (requestLayers)
     std::atomic<bool> cancelled{false};
     QMutex lock;
     std::unique_ptr<trace::PathTracer> tracer;
@@ -119,7 +121,10 @@ void TracedView::Job::run(QPointer<TracedView> view) {
         QMutexLocker locker(&lock);
         if (cancelled.load()) return;
         settings = viewTraceSettings(options, *scene); // the background: a change of it is a new job
-        if (!tracer) tracer = std::make_unique<trace::PathTracer>(scene, camera, size, settings);
+        if (!tracer) {
+            tracer = std::make_unique<trace::PathTracer>(scene, camera, size, settings);
+            tracer->setLayers(layers);
+        }
     }
     QElapsedTimer clock;
     clock.start();
@@ -149,6 +154,13 @@ void TracedView::Job::run(QPointer<TracedView> view) {
             const int g = generation;
             post([v = view, g, image, done, seconds, noise, finished = !why.isEmpty(), why] {
                 if (v) v->onPass(g, image, done, seconds, noise, finished, why);
+            });
+        }
+        if (done > 0 && tracer->layersOn() && wantLayers.exchange(false)) {
+            // Between passes: no tile is being added to the sums.
+            const int g = generation;
+            post([v = view, g, layers = tracer->layers(), done] {
+                if (v && g == v->m_generation) emit v->layersReady(layers, done);
             });
         }
         if (cancelled.load()) return;
@@ -266,6 +278,7 @@ void TracedView::startJob() {
     job->camera = m_camera;
     job->size = m_size;
     job->options = m_settings->options();
+    job->layers = m_layers;
     m_job = job;
     setState(m_builtRevision == m_sceneRevision ? State::Tracing : State::Building);
     m_worker.start([job, view = QPointer<TracedView>(this)] { job->run(view); });
@@ -294,6 +307,21 @@ void TracedView::onPass(int generation, const QImage& image, int samples, double
     if (done) m_message = why; // the job is kept: a new exposure or a raised target goes on from it
     setState(done ? State::Done : State::Tracing);
     emit updated();
+}
+
+void TracedView::setLayers(bool on) {
+    if (on == m_layers) return;
+    m_layers = on;
+    restart(false); // samples already averaged cannot be split afterwards
+}
+
+bool TracedView::requestLayers() {
+    if (!m_layers || !m_job || m_samples <= 0 || (m_state != State::Tracing && m_state != State::Done))
+        return false;
+    m_job->wantLayers.store(true);
+    if (m_job->setOptions(m_settings->options())) // stopped at its target: run it once more to post them
+        m_worker.start([job = m_job, view = QPointer<TracedView>(this)] { job->run(view); });
+    return true;
 }
 
 void TracedView::setState(State state) {

@@ -14,6 +14,8 @@
 // worker, where its tracer is destroyed. Only the destructor waits, for a job's tile or a scene build.
 #pragma once
 
+#include "scene/renderlayers.h"
+
 #include "scene/camera.h"
 #include "viewsettings.h"
 
@@ -69,8 +71,18 @@ class TracedView : public QObject {
     // One line: the state, samples, seconds and noise, as the overlay shows it.
     QString readout() const;
 
+    // Light-group layers (issue 37, the Mixer dock): with them on, the tracer keeps per light group sums
+    // (trace/pathtracer.h setLayers; memory per pixel grows with the groups), so switching restarts the
+    // samples. requestLayers asks for the layers of the samples so far: layersReady follows after the
+    // current pass (at once when the view has stopped at its target); false when there is nothing to give
+    // (layers off, no samples yet, no traced image).
+    void setLayers(bool on);
+    bool layers() const { return m_layers; }
+    bool requestLayers();
+
   signals:
     void updated(); // a new image, state or readout
+    void layersReady(const lr::RenderLayers& layers, int samples);
 
   private:
     struct Job;
@@ -105,6 +117,7 @@ class TracedView : public QObject {
     double m_seconds = 0.0;
     double m_noise = -1.0;
     QString m_message;
+    bool m_layers = false;
 };
 
 } // namespace lr

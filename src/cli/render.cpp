@@ -17,6 +17,7 @@
 #include "sceneoptions.h"
 #include "tracedoptions.h"
 
+#include "core/rigjson.h"
 #include "render/imagefile.h"
 
 #include <QCommandLineParser>
@@ -147,6 +148,7 @@ int runRender(const QStringList& args) {
     const std::optional<TracedRenderOptions> traced = tracedSet.read(parser, options->pathTraced, &message);
     if (!traced) return usage(message);
     request.traced = *traced;
+    request.traced.layers = request.aovs;
     if (options->pathTraced)
         for (const QCommandLineOption* o :
              std::initializer_list<const QCommandLineOption*>{&supersample, &msaa, &frames})
@@ -214,7 +216,16 @@ int runRender(const QStringList& args) {
         return Failed;
     }
     if (request.options.pathTraced) { // on the CPU: no OpenGL, no display
-        if (!checkTracedMemory(request.options.size, parser.isSet(noMemoryCheck), &message))
+        // With --aovs, the most light groups any of the rigs splits into (the model's emission counted); a
+        // rig not known yet (the default rule: maybe the model's own lights) or not readable (said
+        // later): 16.
+        int groups = 0;
+        if (request.aovs)
+            for (const QString& rig : request.rigs.isEmpty() ? QStringList{QString()} : request.rigs) {
+                const RigReadResult read = rig.isEmpty() ? RigReadResult{} : readRigFile(rig);
+                groups = std::max(groups, read.ok() ? tracedLayerGroups(*read.rig) : 16);
+            }
+        if (!checkTracedMemory(request.options.size, parser.isSet(noMemoryCheck), &message, groups))
             return usage(message);
         return runRenderRequest(request, *items);
     }

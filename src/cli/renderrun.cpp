@@ -312,7 +312,7 @@ void Runner::renderView(const QString& modelPath, LoadedScene& scene, size_t beg
                 << ": warning: JPEG has no alpha channel; the transparent background is written black\n";
         if (r.format == "exr") {
             if (tracedResult) {
-                layers.emplace();
+                layers = r.aovs ? std::move(tracedResult->layers) : RenderLayers{};
                 layers->beauty = tracedResult->linear;
             }
             const QByteArray bytes = encodeRenderExr(

@@ -175,6 +175,30 @@ class TestTracedView : public QObject {
         QCOMPARE(traced()->restarts(), restarts);
     }
 
+    // Issue 37: with layers on, the traced view hands over its samples split into light groups (the Mixer
+    // dock's capture): the groups sum to the beauty, for as many samples as the view shows, without a
+    // restart.
+    void layersOfTheSamplesSoFar() {
+        traced()->setLayers(true);
+        settings()->setTraceTargets(4, 0.0, 0.0);
+        QVERIFY(QTest::qWaitFor(
+            [&] { return traced()->state() == TracedView::State::Done && traced()->samples() == 4; },
+            120000));
+        const int restarts = traced()->restarts();
+        QSignalSpy ready(traced(), &TracedView::layersReady);
+        QVERIFY(traced()->requestLayers());
+        QVERIFY(ready.wait(30000));
+        const RenderLayers layers = ready.first().at(0).value<RenderLayers>();
+        QCOMPARE(ready.first().at(1).toInt(), 4);
+        QVERIFY(!layers.groups.empty());
+        QCOMPARE(layers.groupImages.size(), layers.groups.size());
+        QVERIFY2(groupSumError(layers) < 1e-5, qPrintable(QString::number(groupSumError(layers))));
+        QCOMPARE(traced()->restarts(), restarts);
+        traced()->setLayers(false);
+        QVERIFY(QTest::qWaitFor([&] { return traced()->state() == TracedView::State::Done; }, 120000));
+        QVERIFY(!traced()->requestLayers()); // off: nothing to give
+    }
+
     // The noise target: accumulation stops once the estimate is at or below it.
     void noiseTargetStops() {
         // The estimate's scale depends on the scene (relative to its mean luminance): the target is a
