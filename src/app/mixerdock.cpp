@@ -1,10 +1,10 @@
 #include "mixerdock.h"
 
+#include "core/lightmixfile.h"
 #include "editor/applylightmix.h"
 #include "errordialog.h"
 #include "mixergrouprow.h"
 #include "mixerpreview.h"
-#include "mixfiles.h"
 
 #include <QDir>
 #include <QFileDialog>

@@ -3,10 +3,11 @@
 // of the document's rig — and a LightMix: per group a row (mixergrouprow.h: on/off, EV, tint) and the mixed
 // image (mixGroupImages) shown as the viewport shows a render (setDisplay: exposure and tone map), redrawn
 // at each change of a control. A/B (the button, or holding the mouse on the image) shows the unmixed sum.
-// Reset gives the identity mix; Save mix…/Open mix… write and read mix files (mixfiles.h; a bad file is
-// reported in the error dialog and the mix stays as it was); Apply to rig writes the mix into the rig as one
-// undo step that keeps every light's id (editor/applylightmix.h), lists what a rig cannot hold, and resets
-// the mix (the rig now holds it). Capture asks for layers (captureRequested; MainWindow fills the dock).
+// Reset gives the identity mix; Save mix…/Open mix… write and read mix files (core/lightmixfile.h; a bad file
+// is reported in the error dialog and the mix stays as it was); Apply to rig writes the mix into the rig as
+// one undo step that keeps every light's id (editor/applylightmix.h), lists what a rig cannot hold, and
+// resets the mix (the rig now holds it). Capture asks for layers (captureRequested; MainWindow fills the
+// dock).
 //
 // The layers are of the rig as it was rendered: once the rig differs (a light edited, added, removed), the
 // dock says they are stale and keeps working on them; Apply finds the groups' lights by their ids then.

@@ -12,7 +12,7 @@
 #include "cli.h"
 #include "outputfiles.h"
 
-#include "core/lightmix.h"
+#include "core/lightmixfile.h"
 #include "core/types.h"
 #include "model/exrdecode.h"
 #include "render/imagefile.h"
@@ -21,7 +21,6 @@
 
 #include <QCommandLineParser>
 #include <QDir>
-#include <QFile>
 #include <QFileInfo>
 #include <QTextStream>
 #include <cmath>
@@ -157,12 +156,7 @@ int runMix(const QStringList& args) {
     const QStringList groups = groupNames(layers->groups);
     std::vector<LightMix> looks;
     for (const QString& m : mixes) {
-        QFile f(m);
-        if (!f.open(QIODevice::ReadOnly))
-            return failed(QStringLiteral("could not read %1: %2").arg(m, f.errorString()));
-        if (f.size() > (1 << 20))
-            return failed(QStringLiteral("%1: larger than 1 MiB; not a mix file").arg(m));
-        const LightMixReadResult r = readLightMix(f.readAll(), m, groups);
+        const LightMixReadResult r = readLightMixFile(m, groups);
         for (const QString& w : r.warnings)
             err << name << ": warning: " << w << '\n';
         if (!r.mix) return failed(r.errors.join(QLatin1Char('\n')));

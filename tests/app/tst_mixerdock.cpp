@@ -7,7 +7,7 @@
 #include "app/mixerdock.h"
 #include "app/mixergrouprow.h"
 #include "app/mixerpreview.h"
-#include "app/mixfiles.h"
+#include "core/lightmixfile.h"
 #include "core/colour.h"
 
 #include <QCheckBox>

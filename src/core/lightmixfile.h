@@ -1,9 +1,9 @@
-// Mix files (issue 37, docs/light-mixing.md) read and written by the editor's Mixer dock: read as rig files
-// are (a regular file, at most kMaxRigFileBytes, errors naming the file: "mix.json: groups.key.ev: ..."),
-// written atomically (core/atomicwrite.h) in writeLightMix's canonical form.
+// Mix files (issue 37, docs/light-mixing.md) read and written by the editor's Mixer dock and lightrig mix:
+// read as rig files are (a regular file, at most kMaxRigFileBytes, errors naming the file: "mix.json:
+// groups.key.ev: ..."), written atomically (core/atomicwrite.h) in writeLightMix's canonical form.
 #pragma once
 
-#include "core/lightmix.h"
+#include "lightmix.h"
 
 namespace lr {
 

@@ -1,7 +1,7 @@
-#include "mixfiles.h"
+#include "lightmixfile.h"
 
-#include "core/atomicwrite.h"
-#include "core/rigjson.h"
+#include "atomicwrite.h"
+#include "rigjson.h"
 
 #include <QFile>
 #include <QFileInfo>
