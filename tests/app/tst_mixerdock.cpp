@@ -7,8 +7,8 @@
 #include "app/mixerdock.h"
 #include "app/mixergrouprow.h"
 #include "app/mixerpreview.h"
-#include "core/lightmixfile.h"
 #include "core/colour.h"
+#include "core/lightmixfile.h"
 
 #include <QCheckBox>
 #include <QDoubleSpinBox>
