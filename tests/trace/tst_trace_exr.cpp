@@ -92,16 +92,25 @@ class TraceExr : public QObject {
         QVERIFY(over > 0);
     }
 
-    void rasterQualitiesRefuseExr() {
+    // Every quality writes an .exr now (tst_aovsrender renders the raster's); what an .exr cannot hold is a
+    // usage error before anything renders: supersampling (its pixels are the render's own), and --aovs or
+    // --half without an .exr.
+    void exrUsageErrors() {
         QTemporaryDir dir;
+        const QString model = QStringLiteral(LIGHTRIG_TEST_DATA "/model/pbr.gltf");
         const QString out = dir.filePath(QStringLiteral("r.exr"));
-        const CliRun run =
-            runLightrig({QStringLiteral("render"), QStringLiteral(LIGHTRIG_TEST_DATA "/model/pbr.gltf"),
-                         QStringLiteral("-o"), out});
+        CliRun run = runLightrig({QStringLiteral("render"), model, QStringLiteral("--supersample"),
+                                  QStringLiteral("2"), QStringLiteral("-o"), out});
         QCOMPARE(run.code, 2);
-        QVERIFY2(run.err.contains(QLatin1String("a scene-linear .exr comes from --quality path")),
+        QVERIFY2(run.err.contains(QLatin1String("--supersample does not apply to an .exr")),
                  qPrintable(run.show()));
         QVERIFY(!QFile::exists(out));
+        const QString png = dir.filePath(QStringLiteral("r.png"));
+        run = runLightrig(
+            {QStringLiteral("render"), model, QStringLiteral("--aovs"), QStringLiteral("-o"), png});
+        QCOMPARE(run.code, 2);
+        QVERIFY2(run.err.contains(QLatin1String("--aovs writes OpenEXR")), qPrintable(run.show()));
+        QVERIFY(!QFile::exists(png));
     }
 };
 
