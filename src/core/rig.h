@@ -3,6 +3,7 @@
 #pragma once
 
 #include "environment.h"
+#include "lightlink.h"
 #include "lighttypes.h"
 #include "types.h"
 
@@ -86,6 +87,7 @@ struct Light {
     double rimExponent = 1.3;                     // usesRimExponent()
     Shadow shadow;                                // castsShadows()
     AreaShape area;                               // isArea()
+    LightLink link; // which parts it lights and which cast its shadow (core/lightlink.h; format version 3)
 
     // What its type uses (lighttypes.h).
     bool usesPosition() const { return traitsOf(type).usesPosition; }

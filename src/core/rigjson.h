@@ -1,4 +1,4 @@
-// Rig files: JSON, format "lightrig", versions 1 and 2 (docs/rig-format.md). Reading validates everything and
+// Rig files: JSON, format "lightrig", versions 1 to 3 (docs/rig-format.md). Reading validates everything and
 // reports every error as "FILE: json.path: reason"; writing is canonical (stable key order, only the
 // fields a light's type and models use) and atomic.
 #pragma once
@@ -13,12 +13,14 @@
 namespace lr {
 
 // The newest version this LightRig reads; it reads every older one too. 2 (issue 16) added the rect and disk
-// light types and their "area"; a rig is written as the oldest version that holds it (rigjson_area.cpp).
-constexpr int kRigFormatVersion = 2;
+// light types and their "area", 3 (issue 38) a light's "link"; a rig is written as the oldest version that
+// holds it (rigjson_area.cpp), so a rig without links stays version 2 byte for byte.
+constexpr int kRigFormatVersion = 3;
 constexpr qint64 kMaxRigFileBytes = 16 * 1024 * 1024;
 constexpr int kMaxRigLights = 4096;
 // Value limits of the format (docs/rig-format.md), for editors that want to stay within them.
 constexpr int kMaxRigNameLength = 256;   // rig and light names, in characters (code points)
+constexpr int kMaxLinkNames = 1024;      // names in one of a light's link lists
 constexpr double kMaxRigIntensity = 1e6; // intensity, colour components, specular, ambient
 constexpr double kMaxRigLength = 1e12;   // |position components|, ranges, inverse-polynomial terms
 constexpr double kMaxRigExponent = 1e4;  // falloff, cone and rim exponents, shininess

@@ -2,6 +2,8 @@
 // defaults (lr::AreaShape) and ranges, and which format version introduced the types.
 #include "rigjson_check.h"
 
+#include <algorithm>
+
 namespace lr::rigjson {
 
 using json::Value;
@@ -13,7 +15,8 @@ int firstFormatVersion(LightType type) {
 int formatVersionFor(const Rig& rig) {
     int version = 1;
     for (const Light& l : rig.lights)
-        version = std::max(version, firstFormatVersion(l.type));
+        version =
+            std::max({version, firstFormatVersion(l.type), l.link.isDefault() ? 1 : kLinkFormatVersion});
     return version;
 }
 

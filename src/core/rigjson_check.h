@@ -126,6 +126,11 @@ std::optional<AreaShape> readArea(Checker& c, const json::Value& v, const QStrin
                                   std::optional<LightType> type);
 int firstFormatVersion(LightType type);
 int formatVersionFor(const Rig& rig);
+// rigjson_link.cpp: a light's "link" (issue 38, format version 3); nullopt when invalid (errors reported),
+// and its canonical text (nullopt for the default link, which is not written).
+constexpr int kLinkFormatVersion = 3;
+std::optional<LightLink> readLink(Checker& c, const json::Value& v, const QString& path, int version);
+std::optional<QByteArray> writeLink(const LightLink& link);
 // rigjson_environment.cpp: the rig's "environment" (nullopt when invalid, errors reported), and its canonical
 // text (nullopt for the default environment, which is not written).
 std::optional<Environment> readEnvironment(Checker& c, const json::Value& v, const QString& path);

@@ -153,6 +153,8 @@ std::optional<Light> readLight(Checker& c, const Value& v, const QString& path, 
                                 "%2 lights cast shadows)")
                      .arg(a, lightTypesWith(&LightTypeTraits::castsShadows)));
     }
+    if (const Value* k = o.take("link"))
+        if (const auto link = rigjson::readLink(c, *k, o.path("link"), version)) l.link = *link;
     rejectMisplaced(o, false, false, a, is(&Light::usesFalloff), is(&Light::usesCone));
     o.finish();
     return type ? std::optional(l) : std::nullopt;

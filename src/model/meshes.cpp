@@ -140,6 +140,7 @@ void addInstance(const aiMesh* am, const glm::dmat4& world, const QString& nodeN
     Instance inst;
     Mesh& mesh = inst.mesh;
     mesh.name = am->mName.length ? QString::fromUtf8(am->mName.C_Str()) : nodeName;
+    mesh.node = nodeName;
     mesh.material = int(am->mMaterialIndex);
     mesh.indices = std::move(tri);
     const aiVector3D* uvs = am->mTextureCoords[0];

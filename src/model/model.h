@@ -96,7 +96,8 @@ inline std::array<TextureTransform*, kTextureRoles> textureTransforms(Material& 
 }
 
 struct Mesh {
-    QString name;
+    QString name; // the file's mesh name (Assimp's: a glTF mesh with several primitives names each "NAME-N")
+    QString node; // the name of the node that places it (light linking matches both, core/lightlink.h)
     std::vector<Vertex> vertices;
     std::vector<std::uint32_t> indices; // triangles
     int material = 0;                   // index into Model::materials

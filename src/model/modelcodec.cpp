@@ -111,6 +111,7 @@ void writeBody(Writer& w, const Model& m) {
     w.count(m.meshes.size());
     for (const Mesh& mesh : m.meshes) {
         w.string(mesh.name);
+        w.string(mesh.node);
         w.count(mesh.vertices.size());
         w.raw(mesh.vertices.data(), mesh.vertices.size() * sizeof(Vertex));
         w.count(mesh.indices.size());

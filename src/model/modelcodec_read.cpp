@@ -14,7 +14,7 @@ namespace lr {
 namespace {
 
 // The fewest bytes each part takes (empty strings and arrays): counts are checked against them.
-constexpr std::size_t kMinMeshBytes = 4 + 8 + 8 + 4 + 1 + 1;
+constexpr std::size_t kMinMeshBytes = 4 + 4 + 8 + 8 + 4 + 1 + 1; // name, node, ...
 constexpr std::size_t kMinMaterialBytes =
     4 + 16 + 3 * 4 + 12 + 12 + 4 + 1 + 1 + 2 * 4 + 2 * 4 + 2 * 4 + 1 + 4 + 5 * 20;
 constexpr std::size_t kMinTextureBytes = 4 + 4 + 4 + 4;
@@ -239,6 +239,7 @@ bool readModel(Reader& r, Model& m) {
         Mesh& mesh = m.meshes[i];
         const QString where = at("mesh", i);
         if (!r.string(mesh.name, where + QStringLiteral(" name")) ||
+            !r.string(mesh.node, where + QStringLiteral(" node")) ||
             !r.vertices(mesh.vertices, where + QStringLiteral(" vertices")) ||
             !r.indices(mesh.indices, mesh.vertices.size(), where + QStringLiteral(" indices")) ||
             !r.pod(mesh.material, where + QStringLiteral(" material")) ||

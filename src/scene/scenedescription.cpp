@@ -1,6 +1,7 @@
 #include "scenedescription.h"
 
 #include "groundmesh.h"
+#include "linkparts.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,12 +11,14 @@ namespace lr {
 void SceneDescription::setModel(std::shared_ptr<const Model> model) {
     m_model = std::move(model);
     ++m_modelGeneration;
+    m_links.reset();
     updateGround();
 }
 
 void SceneDescription::setRig(const Rig& rig) {
     m_rig = rig;
     ++m_rigRevision;
+    m_links.reset();
     updateGround();
 }
 
@@ -73,6 +76,15 @@ SceneFrame SceneDescription::frame() const {
 SceneFrame SceneDescription::reach() const {
     const Bounds b = drawnBounds();
     return {b.center(), b.radius()};
+}
+
+const LinkResolution& SceneDescription::links() const {
+    if (!m_links) m_links = resolveLinks(m_rig.lights, linkParts(m_model.get(), m_ground.get()));
+    return *m_links;
+}
+
+std::size_t SceneDescription::groundPart(std::size_t mesh) const {
+    return linkPartOfGround(m_model.get(), mesh);
 }
 
 std::vector<lighting::ShadeLight<double>> SceneDescription::lights(const glm::dmat4& view) const {

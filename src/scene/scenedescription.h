@@ -7,6 +7,7 @@
 // The camera is scene/camera.h's ViewCamera; how a renderer samples or tone-maps is its own settings.
 #pragma once
 
+#include "core/lightlink.h"
 #include "core/prepare.h"
 #include "core/rig.h"
 #include "environmentloader.h"
@@ -15,6 +16,7 @@
 #include <QFuture>
 #include <QString>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace lr {
@@ -66,6 +68,13 @@ class SceneDescription {
     bool environmentLights() const;
     // Lights that cast (Light::hasShadow(): enabled, with a shadow, of a type that casts).
     int shadowCasters() const;
+    // Light and shadow linking (issue 38, core/lightlink.h) resolved over the model's parts and the ground's
+    // (scene/linkparts.h), per rig light (Rig::lights order, disabled lights included). Inactive when no
+    // light links: a renderer then compiles and tests nothing. Recomputed after setModel or setRig.
+    const LinkResolution& links() const;
+    // Part index (scene/linkparts.h) of a model mesh and of a ground mesh.
+    std::size_t modelPart(std::size_t mesh) const { return mesh; }
+    std::size_t groundPart(std::size_t mesh) const;
 
   private:
     void updateGround();
@@ -80,6 +89,7 @@ class SceneDescription {
     Ground m_groundBuilt;        // what m_ground was built for
     int m_groundGeneration = -1; // ... over which model generation
     int m_groundRevision = 0;
+    mutable std::optional<LinkResolution> m_links; // reset by setModel and setRig
 };
 
 } // namespace lr
