@@ -57,7 +57,8 @@ class TestLightLink : public QObject {
         QCOMPARE(text.count("\"link\""), 2); // the unlinked light writes none
         const RigReadResult back = readRigJson(text, QStringLiteral("l.json"));
         LR_VERIFY_OK(back);
-        QVERIFY(back.rig->lights == rig.lights);
+        for (std::size_t i = 0; i < rig.lights.size(); ++i)
+            QVERIFY(back.rig->lights[i].link == rig.lights[i].link);
         QCOMPARE(writeRigJson(*back.rig), text);
     }
 

@@ -395,10 +395,10 @@ void TestModelCodec::rejectsHugeCounts() {
         const QString error = decodeError(bad);
         QVERIFY2(error.contains(QLatin1String("meshes count")), qPrintable(error));
     }
-    // Vertex count of mesh 0: after the mesh count and the (empty) mesh name.
+    // Vertex count of mesh 0: after the mesh count and the (empty) mesh and node names.
     for (quint64 count : {quint64(1) << 58, quint64(4)}) {
         QByteArray bad = good;
-        std::memcpy(bad.data() + meshCountAt + 8 + 4, &count, sizeof count);
+        std::memcpy(bad.data() + meshCountAt + 8 + 4 + 4, &count, sizeof count);
         const QString error = decodeError(bad);
         QVERIFY2(error.contains(QLatin1String("mesh 0 vertices")) ||
                      error.contains(QLatin1String("truncated")),
