@@ -11,6 +11,7 @@
 #include "render/offscreen.h"
 #include "render/rasterlayers.h"
 #include "scene/displayimage.h"
+#include "scene/linkparts.h"
 
 #include <QElapsedTimer>
 #include <QTextStream>
@@ -77,6 +78,7 @@ class Runner {
     void done(size_t i, const QString& error, const QJsonObject& extra = {});
     void renderModel(size_t begin, size_t end);
     void renderView(const QString& modelPath, LoadedScene& scene, size_t begin, size_t end, double loadMs);
+    void reportLinks(const LoadedScene& scene);
     bool ensureGl(const LoadedScene& scene, QString* error);
     void timeFrames(const ViewCamera& camera, const RenderSettings& settings);
     // The raster's scene-linear layers for an .exr: the beauty, or with --aovs every layer.
@@ -201,6 +203,7 @@ void Runner::renderModel(size_t begin, size_t end) {
                         for (const QString& w : scene.model->warnings)
                             warn(w);
                     warned = true;
+                    if (viewBegin == rigBegin) reportLinks(scene);
                     renderView(modelPath, scene, viewBegin, viewEnd, clock.nsecsElapsed() * 1e-6);
                 }
                 clock.restart();
@@ -210,6 +213,16 @@ void Runner::renderModel(size_t begin, size_t end) {
         }
         rigBegin = rigEnd;
     }
+}
+
+// Light linking (issue 38): what each name of the rig's links matches in this model, once per model and
+// rig; names that match nothing are also warnings (kept in the rig, which may be meant for another model).
+void Runner::reportLinks(const LoadedScene& scene) {
+    const std::vector<PartNames> parts = linkParts(*scene.model, scene.rig);
+    for (const QString& line : describeLinkMatches(scene.rig.lights, parts))
+        err << name << ": linking: " << line << '\n';
+    for (const QString& w : resolveLinks(scene.rig.lights, parts).warnings)
+        warn(w);
 }
 
 bool Runner::ensureGl(const LoadedScene& scene, QString* error) {

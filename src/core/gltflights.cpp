@@ -36,6 +36,9 @@ const ExportLossInfo kExportLosses[int(ExportLoss::Count)] = {
     {ExportLoss::Environment, "environment", "Environment",
      "a note in extras.lightrig.environment (glTF has no environment lighting)"},
     {ExportLoss::Ground, "ground", "Ground", "a note in extras.lightrig.ground (the plane is not exported)"},
+    {ExportLoss::Link, "link", "Linking",
+     "the rig's \"link\" in the light node's extras.lightrig.link (glTF lights light every part and every "
+     "part casts their shadows; other viewers ignore it)"},
 };
 
 const ExportLossInfo& exportLossInfo(ExportLoss kind) {
@@ -173,6 +176,28 @@ GltfLight areaStandIn(const Rig& rig, const SceneFrame& frame, const glm::dmat3&
     return g;
 }
 
+// A light's "link" as the rig file writes it, and what it links for the loss's detail.
+QJsonObject linkJson(const LightLink& link) {
+    const auto lists = [](const PartSet& s) {
+        QJsonObject o;
+        if (!s.include.isEmpty()) o.insert(QStringLiteral("include"), QJsonArray::fromStringList(s.include));
+        if (!s.exclude.isEmpty()) o.insert(QStringLiteral("exclude"), QJsonArray::fromStringList(s.exclude));
+        return o;
+    };
+    QJsonObject o = lists(link.lit);
+    if (!link.shadow.isEverything()) o.insert(QStringLiteral("shadow"), lists(link.shadow));
+    return o;
+}
+
+void noteLink(const Light& l, GltfLight* g, std::vector<LossyConversion>& losses) {
+    if (l.link.isDefault()) return;
+    QStringList what;
+    if (!l.link.lit.isEverything()) what << QStringLiteral("lights only some parts");
+    if (!l.link.shadow.isEverything()) what << QStringLiteral("only some parts cast its shadow");
+    losses.push_back({ExportLoss::Link, l.name, what.join(QStringLiteral(", "))});
+    if (g) g->link = linkJson(l.link);
+}
+
 // The rig's settings glTF has no place for, as their rig-file JSON (the note in extras.lightrig).
 QJsonObject noteFor(const Rig& rig, double unit) {
     const QJsonObject file = QJsonDocument::fromJson(writeRigJson(rig)).object();
@@ -208,6 +233,7 @@ GltfRigExport convertRigToGltf(const Rig& rig, const SceneFrame& frame, const gl
     for (const Light& l : rig.lights) {
         if (l.isArea() && l.enabled) {
             GltfLight g = areaStandIn(rig, frame, fileFromWorld, l, out.losses);
+            noteLink(l, &g, out.losses);
             out.lights.push_back(g);
             continue;
         }
@@ -255,6 +281,7 @@ GltfRigExport convertRigToGltf(const Rig& rig, const SceneFrame& frame, const gl
         const double m = std::max({c.x, c.y, c.z});
         g.color = m > 0.0 ? c / m : glm::dvec3(0.0);
         g.intensity *= m > 0.0 ? m : 1.0;
+        noteLink(l, &g, out.losses);
         out.lights.push_back(g);
     }
     if (rig.ambient != glm::dvec3(0.0))
@@ -318,6 +345,9 @@ QJsonObject GltfLight::nodeJson(int lightIndex) const {
         {QStringLiteral("extensions"), QJsonObject{{QStringLiteral("KHR_lights_punctual"),
                                                     QJsonObject{{QStringLiteral("light"), lightIndex}}}}}};
     setTransform(node, translation, rotation);
+    if (!link.isEmpty())
+        node.insert(QStringLiteral("extras"),
+                    QJsonObject{{QStringLiteral("lightrig"), QJsonObject{{QStringLiteral("link"), link}}}});
     return node;
 }
 

@@ -41,6 +41,7 @@ enum class ExportLoss {
     Ambient,      // the scene ambient (glTF has no ambient light)
     Environment,  // environment lighting (glTF has none)
     Ground,       // the ground plane or shadow catcher
+    Link,         // light and shadow linking (issue 38): glTF has none
     Count
 };
 
@@ -75,7 +76,8 @@ struct GltfLight {
     double outerConeAngle = 0; // radians (spot), > innerConeAngle, <= pi/2
     glm::dvec3 translation{0.0};
     glm::dquat rotation{1.0, 0.0, 0.0, 0.0}; // local -Z onto the light's direction
-    QJsonObject lightJson() const;           // the extension's light object
+    QJsonObject link; // the rig's "link" (issue 38), written in the node's extras.lightrig.link; empty: none
+    QJsonObject lightJson() const; // the extension's light object
     QJsonObject nodeJson(int lightIndex) const;
 };
 

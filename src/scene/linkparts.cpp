@@ -25,4 +25,14 @@ std::vector<PartNames> linkParts(const Model* model, const Model* ground) {
     return parts;
 }
 
+std::vector<PartNames> linkParts(const Model& model, const Rig& rig) {
+    std::vector<PartNames> parts = linkParts(&model, nullptr);
+    if (rig.ground.mode != GroundMode::Off) {
+        PartNames p;
+        p.ground = true;
+        parts.push_back(p);
+    }
+    return parts;
+}
+
 } // namespace lr

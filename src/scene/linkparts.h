@@ -12,6 +12,8 @@ namespace lr {
 
 PartNames partNames(const Model& model, const Mesh& mesh);
 std::vector<PartNames> linkParts(const Model* model, const Model* ground);
+// For reports: the model's parts and one "ground" when the rig has a ground.
+std::vector<PartNames> linkParts(const Model& model, const Rig& rig);
 inline std::size_t linkPartOfGround(const Model* model, std::size_t groundMesh) {
     return (model ? model->meshes.size() : 0) + groundMesh;
 }

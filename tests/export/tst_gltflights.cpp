@@ -206,6 +206,32 @@ class TestGltfLights : public QObject {
             QVERIFY(describeLoss(loss).startsWith(loss.subject + QStringLiteral(": ")));
     }
 
+    // Issue 38: glTF has no linking; the link goes into the light node's extras and is reported.
+    void linkingGoesIntoTheNodesExtras() {
+        Light key = pointLight({0, 1, 0}, 1.0, FalloffModel::InverseSquare, -1.0);
+        key.link.lit.include = {QStringLiteral("Body")};
+        key.link.shadow.exclude = {QStringLiteral("Glass"), QStringLiteral("ground")};
+        Light rect = makeLight(LightType::Rect, QStringLiteral("Box"));
+        rect.link.lit.exclude = {QStringLiteral("Stand")};
+        const Light plain = pointLight({0, 2, 0}, 1.0, FalloffModel::InverseSquare, -1.0);
+        const GltfRigExport e = convertRigToGltf(pbrRig({key, rect, plain}), {});
+        QCOMPARE(count(e, ExportLoss::Link), 2);
+        QCOMPARE(e.lights.size(), size_t(3));
+        const QJsonObject node = e.lights[0].nodeJson(0);
+        const QJsonObject link = node.value(QStringLiteral("extras"))
+                                     .toObject()
+                                     .value(QStringLiteral("lightrig"))
+                                     .toObject()
+                                     .value(QStringLiteral("link"))
+                                     .toObject();
+        QCOMPARE(link.value(QStringLiteral("include")).toArray(), QJsonArray{QStringLiteral("Body")});
+        QCOMPARE(link.value(QStringLiteral("shadow")).toObject().value(QStringLiteral("exclude")).toArray(),
+                 (QJsonArray{QStringLiteral("Glass"), QStringLiteral("ground")}));
+        QVERIFY(!link.contains(QStringLiteral("exclude")));
+        QVERIFY(e.lights[1].nodeJson(1).contains(QStringLiteral("extras"))); // the area stand-in keeps it
+        QVERIFY(!e.lights[2].nodeJson(2).contains(QStringLiteral("extras")));
+    }
+
     void rigLevelLossesAndNote() {
         Rig rig = pbrRig({});
         rig.ambient = glm::dvec3(0.25);

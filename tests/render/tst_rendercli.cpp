@@ -552,6 +552,31 @@ class TestRenderCli : public QObject {
                  qPrintable(r.show() + QStringLiteral("\nexpected %1 shading").arg(expected)));
     }
 
+    // Issue 38: render reports what each linked name matches, and warns of names that match nothing
+    // (kept: the rig may be meant for another model). scene.gltf places its one mesh by two nodes.
+    void reportsLinkMatches() {
+        LR_REQUIRE_DISPLAY();
+        lr::Rig rig = lr::pbrDefaultRig();
+        rig.lights.resize(1);
+        rig.lights[0].link.lit.include = {QStringLiteral("child"), QStringLiteral("Visor")};
+        rig.lights[0].link.shadow.exclude = {QStringLiteral("square")};
+        rig.lights[0].name = QStringLiteral("Rim");
+        QVERIFY(lrtest::writeFile(path(QStringLiteral("linked.json")), lr::writeRigJson(rig)));
+        const Run r =
+            lightrig({QStringLiteral(LIGHTRIG_TEST_DATA "/model/scene.gltf"), QStringLiteral("--rig"),
+                      path(QStringLiteral("linked.json")), QStringLiteral("--size"), QStringLiteral("64x48"),
+                      QStringLiteral("-o"), path(QStringLiteral("linked.png"))});
+        QVERIFY2(r.code == 0, qPrintable(r.show()));
+        QVERIFY2(r.err.contains(QStringLiteral("linking: Rim: link.include \"child\": 1 part (child)")),
+                 qPrintable(r.show()));
+        QVERIFY2(r.err.contains(
+                     QStringLiteral("linking: Rim: link.shadow.exclude \"square\": 2 parts (child, mirror)")),
+                 qPrintable(r.show()));
+        QVERIFY2(r.err.contains(
+                     QStringLiteral("warning: Rim: link.include: \"Visor\" matches no part of the model")),
+                 qPrintable(r.show()));
+    }
+
     void baselineSuzanne() {
         LR_REQUIRE_DISPLAY();
         checkBaseline(QStringLiteral("suzanne-default-rig"),
