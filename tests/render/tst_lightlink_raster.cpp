@@ -64,12 +64,14 @@ const glm::dvec3 kGroundProbe(0.0, 0.0, 1.0); // between the spheres, in front
 
 // Key: a range-bounded point light (in the clusters' lists) with an ambient term of its own; Fill: an
 // unlinked directional light (in every cluster).
-Rig linkRig(ShadingModel shading, const QStringList& keyInclude) {
+// `casting`: the key casts a shadow (a cube map; the fast tier then shades it per pixel).
+Rig linkRig(ShadingModel shading, const QStringList& keyInclude, bool casting = false) {
     Light key = point({0.0, 2.0, 1.0}, FalloffModel::InverseSquare, 20.0);
     key.name = QStringLiteral("Key");
     key.intensity = 3.0;
     key.ambient = glm::dvec3(0.05, 0.04, 0.03);
     key.link.lit.include = keyInclude;
+    key.shadow.enabled = casting;
     Light fill = directional({0.3, -1.0, -0.4}, DiffuseModel::Lambert);
     fill.name = QStringLiteral("Fill");
     fill.intensity = 0.4;
@@ -179,24 +181,30 @@ class TestLightLinkRaster : public QObject {
     void linkedLightSkipsOtherParts_data() {
         QTest::addColumn<int>("index");
         QTest::addColumn<int>("shading");
+        QTest::addColumn<bool>("casting");
         const auto cases = pathCases();
-        for (ShadingModel shading : {ShadingModel::Classic, ShadingModel::Pbr})
-            for (size_t i = 0; i < cases.size(); ++i)
-                QTest::newRow(qPrintable(caseName(cases[i], shading))) << int(i) << int(shading);
+        for (bool casting : {false, true})
+            for (ShadingModel shading : {ShadingModel::Classic, ShadingModel::Pbr})
+                for (size_t i = 0; i < cases.size(); ++i)
+                    QTest::newRow(qPrintable(caseName(cases[i], shading) +
+                                             (casting ? QStringLiteral(" casting") : QString())))
+                        << int(i) << int(shading) << casting;
     }
     void linkedLightSkipsOtherParts() {
         start();
         QFETCH(int, index);
         QFETCH(int, shading);
+        QFETCH(bool, casting);
         const PathCase c = pathCases()[size_t(index)];
         const ShadingModel model = ShadingModel(shading);
         QString error;
         QVERIFY2(m_gl->setModel(twoSpheres(), &error), qPrintable(error));
         const RenderSettings s = settingsOf(c);
-        const Rig unlinked = linkRig(model, {});
+        const Rig unlinked = linkRig(model, {}, casting);
         const FloatImage all = radiance(unlinked, s);
         const FloatImage noKey = radiance(withoutKey(unlinked), s);
-        const FloatImage linked = radiance(linkRig(model, {QStringLiteral("A")}), s);
+        const FloatImage linked = radiance(linkRig(model, {QStringLiteral("A")}, casting), s);
+        QCOMPARE(m_gl->renderer().stats().shadowCasters, casting ? 1 : 0);
         const RenderStats& stats = m_gl->renderer().stats();
         QCOMPARE(stats.deferred, c.path == ShadingPath::Deferred);
         QCOMPARE(stats.clustered, c.clustered);
