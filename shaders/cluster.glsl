@@ -40,14 +40,24 @@ vec3 shadeSurfaceClustered(Surface s, ShadeSettings st, vec2 fragCoord) {
     if (uGlobalLightCount > 0) {  // do-while: see shadeSurface (shade.glsl)
         int i = 0;
         do {
+#ifdef LR_LIGHT_LINKING
+            ShadeLight l = loadLight(int(texelFetch(uClusterIndices, i).r));
+            if (lightLinked(l)) sum += lrShadeClustered(l);
+#else
             sum += lrShadeClustered(loadLight(int(texelFetch(uClusterIndices, i).r)));
+#endif
         } while (++i < uGlobalLightCount);
     }
     uvec2 range = texelFetch(uClusterRanges, clusterIndexAt(fragCoord, -s.position.z)).rg;
     if (range.y > 0u) {
         uint k = 0u;
         do {
+#ifdef LR_LIGHT_LINKING
+            ShadeLight l = loadLight(int(texelFetch(uClusterIndices, int(range.x + k)).r));
+            if (lightLinked(l)) sum += lrShadeClustered(l);
+#else
             sum += lrShadeClustered(loadLight(int(texelFetch(uClusterIndices, int(range.x + k)).r)));
+#endif
         } while (++k < range.y);
     }
 #endif

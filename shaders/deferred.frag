@@ -10,6 +10,9 @@ uniform sampler2D uGBuffer0;  // decodeGBuffer's g0 .. g3 (gbuffer.glsl, generat
 uniform sampler2D uGBuffer1;
 uniform sampler2D uGBuffer2;
 uniform sampler2D uGBuffer3;
+#ifdef LR_LIGHT_LINKING
+uniform usampler2D uGBufferLink;  // each pixel's lighting class, as the G-pass wrote it (Targets::gbufferLink)
+#endif
 uniform vec3 uAmbient;
 uniform float uDistanceScale;
 #ifdef LR_OUTPUT_DISPLAY
@@ -46,6 +49,9 @@ void main() {
     oGBuffer2 = g2;
     oGBuffer3 = g3;
 #else
+#ifdef LR_LIGHT_LINKING
+    lrLinkClass = int(texelFetch(uGBufferLink, p, 0).r);
+#endif
     ShadeSettings st;
     st.ambient = uAmbient;
     st.distanceScale = uDistanceScale;

@@ -7,7 +7,8 @@
 //   LR_OUTPUT_GBUFFER: writes the Surface (encodeGBuffer: the codec of src/render/gbuffer.h) for the
 //     deferred lighting pass (deferred.frag) and for the CPU double-precision reference; with
 //     LR_ATTRIBUTE_GBUFFER it writes only the interpolated attributes the Surface is built from
-//     (encodeAttributes, surface.glsl), and the deferred lighting pass builds it.
+//     (encodeAttributes, surface.glsl), and the deferred lighting pass builds it. Under LR_LIGHT_LINKING
+//     it also writes the part's lighting class into the link target (location 4).
 #ifdef LR_QUALITY_FAST
 in vec3 vLitDiffuse;  // per-vertex lighting (mesh.vert), interpolated
 in vec3 vLitSpecular;
@@ -26,6 +27,9 @@ layout(location = 0) out vec4 oGBuffer0;  // encodeGBuffer's g0 .. g3 (gbuffer.g
 layout(location = 1) out vec4 oGBuffer1;
 layout(location = 2) out vec4 oGBuffer2;
 layout(location = 3) out vec4 oGBuffer3;
+#ifdef LR_LIGHT_LINKING
+layout(location = 4) out uint oLinkClass;  // the G-buffer's link target (Targets::gbufferLink)
+#endif
 #elif defined(LR_OUTPUT_DISPLAY)
 uniform float uExposureScale;  // 2^EV
 layout(location = 0) out vec4 oColor;  // sRGB-encoded display colour, alpha 1 (BLEND: premultiplied)
@@ -35,6 +39,12 @@ layout(location = 0) out vec4 oColor;  // linear radiance, alpha 1 (coverage aft
 #endif
 
 void main() {
+#ifdef LR_LIGHT_LINKING
+    lrLinkClass = uLinkClass;  // the drawn part's lighting class (shadetypes.glsl)
+#ifdef LR_OUTPUT_GBUFFER
+    oLinkClass = uint(uLinkClass);
+#endif
+#endif
 #if defined(LR_OUTPUT_GBUFFER) && defined(LR_ATTRIBUTE_GBUFFER)
     encodeAttributes(oGBuffer0, oGBuffer1, oGBuffer2, oGBuffer3);
 #else

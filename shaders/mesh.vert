@@ -57,6 +57,9 @@ void main() {
     vColor = aColor;
 #endif
 #ifdef LR_QUALITY_FAST
+#ifdef LR_LIGHT_LINKING
+    lrLinkClass = uLinkClass;  // the drawn part's (shadetypes.glsl)
+#endif
     vec3 n = safeNormalize(vNormal, vec3(0.0, 0.0, 1.0));  // the vertex normal: normal maps are not used
 #ifdef LR_DOUBLE_SIDED
     if (dot(n, p.xyz) > 0.0) n = -n;  // no gl_FrontFacing at a vertex: light the side facing the eye

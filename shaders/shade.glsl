@@ -238,7 +238,12 @@ vec3 shadeSurface(Surface s, ShadeSettings st) {
     if (uLightCount > 0) {
         int i = 0;
         do {
+#ifdef LR_LIGHT_LINKING
+            ShadeLight l = loadLight(i);
+            if (lightLinked(l)) sum += shadeLightPbr(l, s, st, V, p);
+#else
             sum += shadeLightPbr(loadLight(i), s, st, V, p);
+#endif
         } while (++i < uLightCount);
     }
 #endif
@@ -249,7 +254,12 @@ vec3 shadeSurface(Surface s, ShadeSettings st) {
     if (uLightCount > 0) {
         int i = 0;
         do {
+#ifdef LR_LIGHT_LINKING
+            ShadeLight l = loadLight(i);
+            if (lightLinked(l)) sum += shadeLight(l, s, st, V);
+#else
             sum += shadeLight(loadLight(i), s, st, V);
+#endif
         } while (++i < uLightCount);
     }
 #endif

@@ -28,6 +28,9 @@ struct ShadeLight {
 #ifdef LR_SHADOWS
     int shadow;  // its shadow slot + 1 (shadows.glsl), 0: it casts none
 #endif
+#ifdef LR_LIGHT_LINKING
+    uint litMask;  // bit c: it lights the parts of lighting class c (core/lightlink.h)
+#endif
 };
 
 struct Surface {
@@ -98,6 +101,7 @@ uniform int uLightCount;
 //   3: direction.xyz, falloffExponent                        4: ambient.xyz, diffuse
 //   5: constant, linear, quadratic, cone                      6: cosInner, cosOuter, outer, coneExponent
 //   7: rimExponent, halfWidth, halfHeight, twoSided
+//   8 (LR_LIGHT_LINKING only, LR_LIGHT_TEXELS 9): litMask's low 16 bits, its high 16 bits, 0, 0
 // Area lights (no falloff, no cone) reuse texels 5 and 6: 5: axisX.xyz, cone   6: axisY.xyz, coneExponent.
 // Unused fields are never read: the compiler drops their fetches.
 ShadeLight loadLight(int index) {
@@ -143,8 +147,26 @@ ShadeLight loadLight(int index) {
     l.halfHeight = t7.z;
     l.twoSided = t7.w > 0.5;
 #endif
+#ifdef LR_LIGHT_LINKING
+    vec4 t8 = texelFetch(uLights, base + 8);
+    l.litMask = uint(t8.x) | (uint(t8.y) << 16);
+#endif
     return l;
 }
+
+#ifdef LR_LIGHT_LINKING
+// Light linking (issue 38; docs/light-linking.md): the shaded part's lighting class. Forward and per
+// vertex it is the draw's (uLinkClass, set per draw by MeshPass::drawMeshes); the deferred lighting pass
+// reads the pixel's from the G-buffer's link target. Each main() that shades sets lrLinkClass first.
+uniform int uLinkClass;
+int lrLinkClass = 0;
+
+// Whether light l lights the part being shaded: where it does not, it adds nothing (diffuse, specular, its
+// own ambient term; a rim light its rim), and the shading loops skip it before any of its work.
+bool lightLinked(ShadeLight l) {
+    return ((l.litMask >> uint(lrLinkClass)) & 1u) != 0u;
+}
+#endif
 
 float evalFalloff(ShadeLight l, float d) {
     int m = falloffOf(l);

@@ -66,6 +66,9 @@ VertexLight shadeVertex(vec3 P, vec3 N, float shininess, ShadeSettings st) {
         int i = 0;
         do {
             ShadeLight l = loadLight(i);
+#ifdef LR_LIGHT_LINKING
+            if (!lightLinked(l)) continue;  // to the loop's test
+#endif
 #ifdef LR_SHADOWS
             if (l.shadow == 0)  // the casting lights are shaded per pixel (shadows.glsl shadeCastingLights)
 #endif
@@ -158,6 +161,9 @@ VertexLightPbr shadeVertexPbr(vec3 P, vec3 N, float roughness, ShadeSettings st)
         int i = 0;
         do {
             ShadeLight l = loadLight(i);
+#ifdef LR_LIGHT_LINKING
+            if (!lightLinked(l)) continue;  // to the loop's test
+#endif
 #ifdef LR_SHADOWS
             if (l.shadow == 0)  // as in shadeVertex
 #endif

@@ -264,10 +264,20 @@ vec3 shadeCastingLights(Surface s, ShadeSettings st) {
         do {
             int index = int(uShadowRecords[k * LR_SHADOW_TEXELS + 6].x);
             if (index >= 0) {
+#ifdef LR_LIGHT_LINKING
+                ShadeLight l = loadLight(index);
+                if (lightLinked(l))
+#ifdef LR_PBR
+                    sum += shadeLightPbr(l, s, st, V, p);
+#else
+                    sum += shadeLight(l, s, st, V);
+#endif
+#else
 #ifdef LR_PBR
                 sum += shadeLightPbr(loadLight(index), s, st, V, p);
 #else
                 sum += shadeLight(loadLight(index), s, st, V);
+#endif
 #endif
             }
         } while (++k < uShadowCount);

@@ -49,10 +49,11 @@ struct FrameContext {
     bool clustered = false;                // the lights were binned for this frame
     bool farLights = false;                // LightSet::farLights(): PBR programs rescale L (LR_FAR_LIGHTS)
     int lightCount = 0;                    // the lights uploaded (enabled, able to reach the scene)
+    bool linking = false;                  // SceneDescription::links().active (RigFeatures::linking)
     // The lit programs' rig features this frame (the lights' rigFeatures(), the far-lights bound, the
     // environment; every feature for the über-shader): every lit pass builds its keys from these.
     RigFeatures features;
-    bool overlays = false;        // gizmos or grid
+    bool overlays = false;        // gizmos, grid or highlighted parts
     int samples = 0;              // of the scene target (> 1: MSAA)
     bool gbufferReadBack = false; // renderGBuffer: clear the G-buffer's colour too
     // The deferred G-buffer holds attributes (FeatureKey::attributes) and the lighting pass builds each

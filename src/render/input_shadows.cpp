@@ -10,6 +10,9 @@ bool ShadowInput::prepare(InputFrame& f, QString* error) {
     const SceneDescription& scene = *f.scene;
     m_views =
         scene.model() ? planShadows(scene.rig(), scene.frame(), scene.bounds()) : std::vector<ShadowView>();
+    // Shadow linking: the meshes each map leaves out (a changed set re-renders that map:
+    // ShadowView::sameMap).
+    if (scene.model()) linkShadowCasters(m_views, scene.links(), scene.model()->meshes.size());
     if (const int casting = scene.shadowCasters(); casting > kMaxShadowCasters && !m_warnedCasters) {
         qCWarning(lcRender).noquote()
             << QStringLiteral("%1 lights cast shadows; at most %2 can: the first %2 in "

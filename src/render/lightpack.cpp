@@ -28,4 +28,8 @@ LightTexels packLight(const lighting::ShadeLight<float>& l) {
     return t;
 }
 
+std::array<float, 4> packLinkTexel(std::uint32_t litMask) {
+    return {float(litMask & 0xffffu), float(litMask >> 16), 0.0f, 0.0f};
+}
+
 } // namespace lr::render

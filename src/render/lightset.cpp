@@ -39,13 +39,15 @@ void LightSet::setRig(const Rig& rig) {
 }
 
 void LightSet::update(QOpenGLFunctions_3_3_Core* gl, const SceneFrame& frame, const glm::dmat4& view,
-                      RenderStats* stats, const std::vector<ShadowView>* shadows, const SceneFrame* reach) {
+                      RenderStats* stats, const std::vector<ShadowView>* shadows, const SceneFrame* reach,
+                      const LinkResolution* links) {
     if (!m_dirty && view == m_uploadedView) return;
+    const bool linking = links && links->active;
     static const std::vector<ShadowView> none;
     const std::vector<ShadowView>& casters = shadows ? *shadows : none;
     const SceneFrame sphere = reach ? *reach : frame;
     std::vector<float> data;
-    data.reserve(m_rig.lights.size() * 4 * kLightTexels);
+    data.reserve(m_rig.lights.size() * 4 * size_t(lightTexels(linking)));
     std::vector<int> uploadedAs(m_rig.lights.size(), -1);
     int count = 0;
     const double scale = prepareSettings(m_rig, frame).distanceScale;
@@ -69,6 +71,10 @@ void LightSet::update(QOpenGLFunctions_3_3_Core* gl, const SceneFrame& frame, co
             if (casters[k].rigIndex == int(i))
                 t[1 * 4 + 3] += float(kShadowSlotScale * (k + 1)); // type + slot
         data.insert(data.end(), t.begin(), t.end());
+        if (linking) { // rig index i: the resolution is per rig light, disabled ones included
+            const auto link = packLinkTexel(links->litMask[i]);
+            data.insert(data.end(), link.begin(), link.end());
+        }
         uploadedAs[i] = count;
         ++count;
     }

@@ -6,6 +6,7 @@
 
 #include "cluster.h"
 #include "clustergl.h"
+#include "core/lightlink.h"
 #include "core/prepare.h"
 #include "core/rig.h"
 #include "rendersettings.h"
@@ -39,9 +40,12 @@ class LightSet {
     // matrices for this view) become the uShadowRecords uniforms, and its light's texel 1.w (the type)
     // gains kShadowSlotScale × (slot + 1).
     // `reach`: the sphere lights are culled against (the model's and the ground's; nullptr: `frame`).
+    // `links` (SceneDescription::links(), per rig light; nullptr or inactive: no linking): when active each
+    // light gets one more texel, its lit-class mask (kLinkedLightTexels, lightpack.h packLinkTexel). It
+    // changes only with the rig or the model, which mark the set dirty.
     void update(QOpenGLFunctions_3_3_Core* gl, const SceneFrame& frame, const glm::dmat4& view,
                 RenderStats* stats, const std::vector<ShadowView>* shadows = nullptr,
-                const SceneFrame* reach = nullptr);
+                const SceneFrame* reach = nullptr, const LinkResolution* links = nullptr);
     int shadowCount() const { return m_shadowCount; }
     int count() const { return m_count; }
     // Whether an uploaded point or spot light may be kFarLightDistance or more from the model's bounding

@@ -75,7 +75,8 @@ bool GeometryPass::run(const FrameContext& frame, PassScene& scene) {
                settings.cullBackFaces,
                rig.shading.shininess,
                order,
-               ground};
+               ground,
+               frame.features.linking ? frame.scene->links().litClass : std::vector<std::uint8_t>()};
         // Nothing else wrote the G-buffer or its depth since this pass drew it (a forward frame, a
         // read-back, new targets would be Targets::gbufferWriter), and it would draw the same.
         const bool keep = drawsModel && !frame.gbufferReadBack && m_keptValid &&
@@ -91,6 +92,9 @@ bool GeometryPass::run(const FrameContext& frame, PassScene& scene) {
         // drawn on); a read-back reads every pixel.
         // The attribute G-buffer marks each pixel with its material's stencil value (materialSlot).
         glBindFramebuffer(GL_FRAMEBUFFER, targets.gbufferFbo);
+        // Light linking: each pixel's lighting class goes into the link target as well.
+        QString error;
+        if (!targets.useGBufferLink(this, frame.features.linking, &error)) return fail(scene, error);
         if (frame.gbufferReadBack) glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
         const bool stencil = !frame.attributeMaterials.empty();
         if (stencil) glClearStencil(0);
@@ -127,6 +131,7 @@ FeatureKey MeshPass::meshKey(const FrameContext& frame, const PassScene& scene, 
     FeatureKey key;
     if (!gpass) key.rig = shaded;     // the G-pass does no lighting,
     key.rig.shading = shaded.shading; // but writes the physically based fields under PBR
+    key.rig.linking = shaded.linking; // ... and the part's lighting class when the rig links
     key.material = sampledFeatures(d, rig, shaded);
     key.attributes = gpass && !frame.attributeMaterials.empty(); // then it writes attributes, not Surfaces
     key.quality = gpass ? Quality::Exact : settings.quality;     // the G-buffer is the exact surface
@@ -209,6 +214,16 @@ void MeshPass::bindMaterial(const FeatureKey& key, const MeshProgram& p, const G
     }
 }
 
+int MeshPass::litClassOf(const FrameContext& frame, const PassScene& scene, const GpuDraw& d,
+                         const GpuModel* source) {
+    if (!frame.features.linking || d.mesh < 0) return 0;
+    const SceneDescription& described = *frame.scene;
+    const bool ground = source && source != scene.model;
+    const std::size_t part = ground ? described.groundPart(std::size_t(d.mesh)) : std::size_t(d.mesh);
+    const std::vector<std::uint8_t>& classes = described.links().litClass;
+    return part < classes.size() ? int(classes[part]) : 0;
+}
+
 void MeshPass::unbindMaterialSamplers() {
     for (const TextureUnit unit : {TextureUnit::BaseColor, TextureUnit::Normal, TextureUnit::Emissive,
                                    TextureUnit::MetalRough, TextureUnit::Occlusion})
@@ -263,6 +278,7 @@ bool MeshPass::drawMeshes(const FrameContext& frame, PassScene& scene,
             if (p->exposureScale >= 0) glUniform1f(p->exposureScale, frame.exposureScale);
         }
         bindMaterial(key, *p, *d, *model, rig, key.quality == Quality::Fast ? scene.targets->fastSampler : 0);
+        if (p->linkClass >= 0) glUniform1i(p->linkClass, litClassOf(frame, scene, *d, source));
         if (key.attributes)
             glStencilFunc(GL_ALWAYS,
                           (source ? source : scene.model)->materialSlot(frame.attributeMaterials, *d), 0xFF);

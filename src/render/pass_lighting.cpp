@@ -170,6 +170,11 @@ bool DeferredLightingPass::run(const FrameContext& frame, PassScene& scene) {
     const bool fromSurfaces = keepable && targets.surfacesRevision == revision;
     fullScreenState(!materials.empty() && !fromSurfaces);
     bindTargets(fromSurfaces ? targets.surfaces : targets.gbuffer);
+    if (key.rig.linking) { // each pixel's lighting class, as the G-pass wrote it (the kept surfaces too)
+        glActiveTexture(textureUnit(TextureUnit::GBufferLink));
+        glBindTexture(GL_TEXTURE_2D, targets.gbufferLink);
+        glActiveTexture(GL_TEXTURE0);
+    }
     scene.inputs->bind(this, frame, key.clustered);
     const size_t draws = fromSurfaces ? 1 : std::max<size_t>(1, materials.size());
     for (size_t m = 0; m < draws; ++m) {

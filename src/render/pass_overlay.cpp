@@ -1,6 +1,8 @@
-// The overlay pass: light gizmos and the ground grid (gizmos.h) over the output.
+// The overlay pass: highlighted parts, light gizmos and the ground grid (gizmos.h) over the output.
 #include "gizmos.h"
 #include "gpumodel.h"
+#include "input_ground.h"
+#include "litinput.h"
 #include "passes.h"
 #include "programcache.h"
 #include "scene/scenedescription.h"
@@ -10,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <glm/ext/matrix_transform.hpp>
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <utility>
@@ -40,7 +43,66 @@ void OverlayPass::release() {
     m_vao = m_vbo = 0;
 }
 
+bool OverlayPass::drawHighlights(const FrameContext& frame, PassScene& scene) {
+    const RenderSettings& settings = *frame.settings;
+    const std::vector<int>& parts = settings.highlightedParts;
+    if (parts.empty() || !scene.model->model()) return true;
+    const SceneDescription& described = *frame.scene;
+    const auto highlighted = [&](std::size_t part) {
+        return std::find(parts.begin(), parts.end(), int(part)) != parts.end();
+    };
+    const GroundInput* groundInput = scene.inputs->find<GroundInput>();
+    const GpuModel* ground =
+        groundInput && groundInput->mode() == GroundMode::Visible ? groundInput->gpu() : nullptr;
+    QString error;
+    QOpenGLShaderProgram* p = scene.programs->fixedProgram(kHighlightShader, &error);
+    if (!p) return fail(scene, error);
+    glBindFramebuffer(GL_FRAMEBUFFER, frame.outputFbo);
+    glViewport(0, 0, frame.targetSize.width(), frame.targetSize.height());
+    p->bind();
+    const QColor c = settings.highlightColor.toRgb();
+    p->setUniformValue("uColor", float(c.redF()), float(c.greenF()), float(c.blueF()), float(c.alphaF()));
+    glUniformMatrix4fv(p->uniformLocation("uProjection"), 1, GL_FALSE,
+                       glm::value_ptr(glm::mat4(frame.projection)));
+    const int modelViewLocation = p->uniformLocation("uModelView");
+    glActiveTexture(textureUnit(TextureUnit::SceneDepth));
+    glBindTexture(GL_TEXTURE_2D, scene.targets->depth);
+    glActiveTexture(GL_TEXTURE0);
+    glDisable(GL_DEPTH_TEST);
+    glEnable(GL_BLEND);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    glFrontFace(GL_CCW);
+    glCullFace(GL_BACK);
+    // The same vertices the geometry pass drew (its interaction proxy while one is drawn).
+    const bool useProxies = settings.interactive && scene.model->updateProxies(this);
+    const auto drawOf = [&](const GpuModel& source, bool isGround) {
+        const glm::mat4 modelView(frame.view * glm::translate(glm::dmat4(1.0), source.model()->origin));
+        glUniformMatrix4fv(modelViewLocation, 1, GL_FALSE, glm::value_ptr(modelView));
+        for (const GpuDraw& d : source.draws()) {
+            const std::size_t part = isGround ? described.groundPart(std::size_t(d.mesh))
+                                              : described.modelPart(std::size_t(d.mesh));
+            if (!highlighted(part)) continue;
+            if (d.features.doubleSided)
+                glDisable(GL_CULL_FACE);
+            else
+                glEnable(GL_CULL_FACE);
+            const bool proxy = !isGround && useProxies && d.lodVao;
+            glBindVertexArray(proxy ? d.lodVao : d.vao);
+            glDrawElements(GL_TRIANGLES, proxy ? d.lodIndexCount : d.indexCount, GL_UNSIGNED_INT, nullptr);
+        }
+    };
+    drawOf(*scene.model, false);
+    if (ground) drawOf(*ground, true);
+    glBindVertexArray(0);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_BLEND);
+    glEnable(GL_DEPTH_TEST);
+    p->release();
+    return true;
+}
+
 bool OverlayPass::run(const FrameContext& frame, PassScene& scene) {
+    if (!drawHighlights(frame, scene)) return false;
     const RenderSettings& settings = *frame.settings;
     GizmoOptions options;
     options.nearClip = frame.camera.znear * 0.5;

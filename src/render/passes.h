@@ -24,6 +24,7 @@
 #include "renderpass.h"
 #include "shadergen.h"
 
+#include <cstdint>
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <utility>
@@ -55,6 +56,10 @@ class MeshPass : public RenderPass {
     void bindMaterial(const FeatureKey& key, const MeshProgram& p, const GpuDraw& d, const Model& model,
                       const Rig& rig, GLuint sampler);
     void unbindMaterialSamplers();
+    // Light linking: the lighting class (LinkResolution::litClass) of draw `d` of `source` (nullptr: the
+    // scene's model; else the ground's: SceneDescription::groundPart), 0 when the frame does not link.
+    static int litClassOf(const FrameContext& frame, const PassScene& scene, const GpuDraw& d,
+                          const GpuModel* source);
     // Mesa's state tracker binds no sampler state into a texture buffer's slot (uLights, the cluster lists)
     // and leaves there whatever the last program bound; llvmpipe keys its compiled fragment shaders on that
     // state too. A pass after the lit ones that samples a real texture in that slot (the environment
@@ -103,6 +108,8 @@ class GeometryPass final : public MeshPass {
         bool proxies = false, cullBackFaces = false;
         double shininess = 0.0; // the rig's, for materials without their own (classic)
         DrawOrder draws, groundDraws;
+        std::vector<std::uint8_t>
+            litClasses; // light linking: each part's class (the link target); else empty
         bool operator==(const Key&) const = default;
     };
 
@@ -259,7 +266,8 @@ class ToneMapPass final : public RenderPass {
     bool run(const FrameContext& frame, PassScene& scene) override;
 };
 
-// Light gizmos and the ground grid over the output, occluded by the resolved scene depth.
+// Light gizmos, the ground grid and highlighted parts (RenderSettings::highlightedParts) over the output,
+// occluded by the resolved scene depth.
 class OverlayPass final : public RenderPass {
   public:
     const char* name() const override { return "overlay"; }
@@ -270,6 +278,8 @@ class OverlayPass final : public RenderPass {
     bool run(const FrameContext& frame, PassScene& scene) override;
 
   private:
+    // RenderSettings::highlightedParts: each highlighted mesh tinted over the output (before the gizmos).
+    bool drawHighlights(const FrameContext& frame, PassScene& scene);
     GLuint m_vao = 0, m_vbo = 0;
 };
 

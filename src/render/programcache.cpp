@@ -123,6 +123,7 @@ MeshProgram* ProgramCache::meshProgram(const FeatureKey& key, QString* error) {
     mp->exposureScale = p->uniformLocation("uExposureScale");
     mp->normalScale = p->uniformLocation("uNormalScale");
     mp->alphaCutoff = p->uniformLocation("uAlphaCutoff");
+    mp->linkClass = p->uniformLocation("uLinkClass");
     for (size_t i = 0; i < mp->textureTransforms.size(); ++i)
         mp->textureTransforms[i] = p->uniformLocation(kTextureTransformUniforms[i]);
     mp->metallic = p->uniformLocation("uMetallic");

@@ -46,6 +46,8 @@ inline constexpr ShaderConfig kShadowDepthShader{"shadow depth", {"shadow.vert"}
 inline constexpr ShaderConfig kToneMapShader{
     "tone map", {"fullscreen.vert"}, {"colour.glsl", "tonemap.frag"}};
 inline constexpr ShaderConfig kOverlayShader{"overlay", {"gizmo.vert"}, {"gizmo.frag"}};
+// The overlay pass's highlighted parts (RenderSettings::highlightedParts): positions only, a flat tint.
+inline constexpr ShaderConfig kHighlightShader{"part highlight", {"highlight.vert"}, {"highlight.frag"}};
 // MeshPass::primeSamplerSlots (pass_geometry.cpp): a draw that covers no pixel.
 inline constexpr ShaderConfig kSlotPrimerShader{
     "sampler-slot primer", {"slotprimer.vert"}, {"slotprimer.frag"}};
@@ -90,6 +92,7 @@ struct MeshProgram {
     int exposureScale = -1; // display output only
     int metallic = -1, roughness = -1, occlusionStrength = -1; // LR_PBR only
     int normalScale = -1, alphaCutoff = -1;
+    int linkClass = -1; // LR_LIGHT_LINKING: the drawn part's lighting class (uLinkClass)
     // KHR_texture_transform's mat3 per texture role (LR_TEXTURE_TRANSFORM), in TextureRole's order.
     std::array<int, kTextureRoles> textureTransforms{-1, -1, -1, -1, -1};
 };

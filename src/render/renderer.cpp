@@ -177,7 +177,7 @@ FrameContext Renderer::frameContext(const ViewCamera& camera, QSize size, const 
         f.clearColour = glm::vec4(bg.redF(), bg.greenF(), bg.blueF(), 1.0f);
     f.shade = m_scene.shadeSettings();
     f.fast = settings.quality == Quality::Fast; // per vertex, no MSAA, forward only (F1, F3)
-    f.overlays = settings.showGizmos || settings.showGrid;
+    f.overlays = settings.showGizmos || settings.showGrid || !settings.highlightedParts.empty();
     return f;
 }
 
@@ -185,8 +185,8 @@ bool Renderer::prepareInputs(FrameContext& frame, PlanKey& plan, InputFrame& inp
     inputs = {this, &m_scene, m_model.get(), &frame, &plan, &m_stats};
     QString error;
     if (!m_inputs->prepare(inputs, &error)) return fail(error);
-    frame.features =
-        frameRigFeatures(m_scene.rig(), frame.farLights, frame.settings->forceAllFeatures, frame.environment);
+    frame.features = frameRigFeatures(m_scene.rig(), frame.farLights, frame.settings->forceAllFeatures,
+                                      frame.environment, frame.linking);
     return true;
 }
 

@@ -34,6 +34,13 @@ struct RenderSettings {
     bool showGizmos = false;
     bool showGrid = false;
     std::vector<int> selectedLights; // indices into the rig's lights, highlighted
+    // Parts to highlight (the editor's light-linking view; viewport only: final renders leave it empty):
+    // part indices as scene/linkparts.h numbers them (a model mesh's index, then the ground's meshes:
+    // SceneDescription::groundPart). The overlay pass draws them tinted with highlightColor over the image,
+    // their parts hidden behind other surfaces faintly; indices of no part are ignored. Cheap: one
+    // position-only draw per highlighted mesh; the shading and the lighting programs are untouched.
+    std::vector<int> highlightedParts;
+    QColor highlightColor = QColor(255, 168, 0, 96); // sRGB, alpha = the tint's opacity on visible parts
     // How the rig is evaluated (docs/quality.md): Exact per pixel as src/core; Balanced per pixel with
     // measured cheaper evaluations; Fast per vertex (Gouraud), never MSAA (msaaSamples and the deferred
     // path are ignored). The G-buffer is always the exact per-pixel surface.

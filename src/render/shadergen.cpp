@@ -118,6 +118,7 @@ std::uint64_t FeatureKey::bits() const {
     put(material.shadowCatcher, 1);
     put(rig.environment, 1);
     put(attributes, 1);
+    put(rig.linking, 1);
     Q_ASSERT(shift <= 64);
     return b;
 }
@@ -134,6 +135,7 @@ QString FeatureKey::describe() const {
     if (rig.shading == ShadingModel::Pbr) parts << QStringLiteral("shading:pbr");
     if (rig.farLights) parts << QStringLiteral("far-lights");
     if (rig.environment) parts << QStringLiteral("environment");
+    if (rig.linking) parts << QStringLiteral("linking");
     if (rig.shadows)
         parts << QStringLiteral("shadows") + (rig.cubeShadows ? QStringLiteral(":cube") : QString()) +
                      (rig.softShadows ? QStringLiteral(":soft") : QString());
@@ -176,10 +178,12 @@ QByteArray toneMapDefine(ToneMap toneMap) {
     return "#define LR_TONE_MAP LR_TONEMAP_" + macroName(EnumNames<ToneMap>::names[size_t(toneMap)]) + '\n';
 }
 
-RigFeatures frameRigFeatures(const Rig& rig, bool farLights, bool allFeatures, bool environment) {
+RigFeatures frameRigFeatures(const Rig& rig, bool farLights, bool allFeatures, bool environment,
+                             bool linking) {
     RigFeatures f = rigFeatures(rig);
     f.farLights = farLights && f.shading == ShadingModel::Pbr;
     f.environment = environment;
+    f.linking = linking;
     return allFeatures ? allRigFeatures(f) : f;
 }
 
@@ -249,7 +253,7 @@ QByteArray basicPrelude() {
 QByteArray shaderPrelude(const FeatureKey& key) {
     QByteArray out = basicPrelude();
     out += "#define LR_SHADING 1\n";
-    out += "#define LR_LIGHT_TEXELS " + QByteArray::number(kLightTexels) + '\n';
+    out += "#define LR_LIGHT_TEXELS " + QByteArray::number(lightTexels(key.rig.linking)) + '\n';
     definePresent<LightType>(out, "LIGHT", "LIGHT", key.rig.lightTypes);
     definePresent<FalloffModel>(out, "FALLOFF", "FALLOFF", key.rig.falloffs);
     definePresent<ConeModel>(out, "CONE", "CONE", key.rig.cones);
@@ -289,6 +293,9 @@ QByteArray shaderPrelude(const FeatureKey& key) {
     if (key.deferredLighting) out += "#define LR_DEFERRED_LIGHTING 1\n";
     if (key.attributes) out += "#define LR_ATTRIBUTE_GBUFFER 1\n";
     if (key.clustered) out += "#define LR_CLUSTERED 1\n";
+    // Light linking (shaders/shadetypes.glsl lightLinked): only where the rig links, so that every other
+    // prelude is unchanged. G-buffer programs with it write the part's class into the link target.
+    if (key.rig.linking) out += "#define LR_LIGHT_LINKING 1\n";
     // The tier's approximations (docs/quality.md), as the key names them (approx::forTier keeps its own).
     const std::uint8_t approximations = approx::forTier(key.approximations, key.quality);
     const std::pair<std::uint8_t, const char*> defines[] = {{approx::kB1, "LR_B1"},

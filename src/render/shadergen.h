@@ -55,6 +55,13 @@ struct RigFeatures {
     // renderer (frameRigFeatures); rigFeatures() leaves it false. Without it a program's text is exactly
     // what it was before environments existed.
     bool environment = false;
+    // Light and shadow linking (issue 38, core/lightlink.h): some light of the rig links
+    // (SceneDescription::links().active; LR_LIGHT_LINKING). Each light then carries its lit-class mask in
+    // one more texel (kLinkedLightTexels), each draw its part's lighting class (uLinkClass; in the deferred
+    // path the G-pass writes it into the G-buffer's link target), and the lights a part's class is not in
+    // add nothing there. Like environment, set per frame by the renderer (frameRigFeatures); rigFeatures()
+    // leaves it false, and without it a program's text is exactly what it was before linking existed.
+    bool linking = false;
     bool operator==(const RigFeatures&) const = default;
 };
 
@@ -146,7 +153,9 @@ RigFeatures allRigFeatures(const RigFeatures& rig);
 // them (allRigFeatures) for the über-shader. Every lit pass builds its keys from this.
 // `environment`: the frame has an environment to light with (FrameContext::environment); the shadow
 // catcher passes false (it shows shadows only).
-RigFeatures frameRigFeatures(const Rig& rig, bool farLights, bool allFeatures, bool environment = false);
+// `linking`: SceneDescription::links().active (RigFeatures::linking).
+RigFeatures frameRigFeatures(const Rig& rig, bool farLights, bool allFeatures, bool environment = false,
+                             bool linking = false);
 // "#define LR_TONE_MAP LR_TONEMAP_ACES\n": the operator mesh.frag, deferred.frag and tonemap.frag pass to
 // displayEncode()/toneMapRgb() as a compile-time constant.
 QByteArray toneMapDefine(ToneMap toneMap);
@@ -159,6 +168,12 @@ glm::mat3 textureTransformMatrix(const TextureTransform& t);
 
 // Texels (RGBA32F) per light in the light buffer; layout: shaders/shadetypes.glsl loadLight.
 constexpr int kLightTexels = 8;
+// ... when the frame links lights (RigFeatures::linking): texel 8 holds the light's lit-class mask as two
+// exact 16-bit halves (lightpack.h packLinkTexel). An unlinked frame packs kLightTexels as before.
+constexpr int kLinkedLightTexels = kLightTexels + 1;
+constexpr int lightTexels(bool linking) {
+    return linking ? kLinkedLightTexels : kLightTexels;
+}
 
 // "#version 330 core" plus the enum values and the key's feature defines (the same for both stages).
 QByteArray shaderPrelude(const FeatureKey& key);

@@ -118,9 +118,12 @@ bool ShadowMaps::update(QOpenGLFunctions_3_3_Core* gl, const std::vector<ShadowV
             gl->glClear(GL_DEPTH_BUFFER_BIT);
             const glm::mat4 mvp(v.faceViewProj(face) * toOrigin);
             gl->glUniformMatrix4fv(matrixLocation, 1, GL_FALSE, glm::value_ptr(mvp));
-            // Opaque and MASK meshes cast (MASK without its cutout); BLEND meshes do not.
+            // Opaque and MASK meshes cast (MASK without its cutout); BLEND meshes do not, nor those shadow
+            // linking leaves out of this light's shadow.
             for (const GpuDraw& d : model.draws()) {
                 if (d.features.alphaBlend) continue;
+                if (!v.casters.empty() && !(size_t(d.mesh) < v.casters.size() && v.casters[size_t(d.mesh)]))
+                    continue;
                 gl->glBindVertexArray(d.vao);
                 gl->glDrawElements(GL_TRIANGLES, d.indexCount, GL_UNSIGNED_INT, nullptr);
             }

@@ -103,7 +103,21 @@ glm::dmat4 ShadowView::faceViewProj(int face) const {
 bool ShadowView::sameMap(const ShadowView& o) const {
     return kind == o.kind && layer == o.layer && resolution == o.resolution && viewProj == o.viewProj &&
            position == o.position && znear == o.znear && zfar == o.zfar && tanHalf == o.tanHalf &&
-           halfWidth == o.halfWidth && faces == o.faces && axes == o.axes;
+           halfWidth == o.halfWidth && faces == o.faces && axes == o.axes && casters == o.casters;
+}
+
+void linkShadowCasters(std::vector<ShadowView>& views, const LinkResolution& links, std::size_t modelParts) {
+    if (!links.active) return;
+    for (ShadowView& v : views) {
+        v.casters.assign(modelParts, true);
+        bool all = true;
+        for (std::size_t part = 0; part < modelParts; ++part) {
+            const bool casts = links.casts(std::size_t(v.rigIndex), part);
+            v.casters[part] = casts;
+            all = all && casts;
+        }
+        if (all) v.casters.clear(); // as unlinked: the same map
+    }
 }
 
 namespace {

@@ -11,6 +11,7 @@
 // frustum contains the model's sphere as seen from the light), so it reads the border depth (1: lit).
 #pragma once
 
+#include "core/lightlink.h"
 #include "core/prepare.h"
 #include "core/rig.h"
 #include "model/model.h"
@@ -88,6 +89,9 @@ struct ShadowView {
     double bias = 1.0, normalOffset = 1.0, emitter = 0.0;
     // The blocker search's emitter (as `emitter`; an area light's largest extent) and the PCSS radius cap.
     double searchEmitter = 0.0, maxFilterTexels = kCubeMarginTexels;
+    // Shadow linking (core/lightlink.h): per model mesh (its part index), whether it casts this light's
+    // shadow; empty when every mesh does (no link, or one that excludes none). Part of the map's depths.
+    std::vector<bool> casters;
     int layers() const { return kind == ShadowKind::Cube ? faces : 1; }
     // World size of one texel: at distance 1 along the axis (perspective, cube), or anywhere (ortho).
     double texelScale() const;
@@ -100,6 +104,9 @@ struct ShadowView {
 // The casting lights' maps for this rig over a model with `bounds` (world). Lights beyond
 // kMaxShadowCasters are left out (the rig reader refuses such rigs; the editor says so).
 std::vector<ShadowView> planShadows(const Rig& rig, const SceneFrame& frame, const Bounds& bounds);
+// Shadow linking: fills each view's `casters` from `links` (SceneDescription::links(), per rig light) for a
+// model of `modelParts` meshes; nothing when the links are inactive. The ground casts nothing anyway.
+void linkShadowCasters(std::vector<ShadowView>& views, const LinkResolution& links, std::size_t modelParts);
 // Bytes of the array for these views (0 when none).
 qint64 shadowMapBytes(const std::vector<ShadowView>& views);
 

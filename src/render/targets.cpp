@@ -123,6 +123,29 @@ bool Targets::createGBuffer(QOpenGLFunctions_3_3_Core* gl, QString* error) {
     return gbufferFbo || createMrt(gl, "G-buffer", size, depth, &gbufferFbo, gbuffer, error);
 }
 
+bool Targets::useGBufferLink(QOpenGLFunctions_3_3_Core* gl, bool linking, QString* error) {
+    GLenum buffers[kGBufferTargets + 1];
+    for (int i = 0; i <= kGBufferTargets; ++i)
+        buffers[i] = GLenum(GL_COLOR_ATTACHMENT0 + i);
+    if (!linking) {
+        if (gbufferLink) gl->glDrawBuffers(kGBufferTargets, buffers);
+        return true;
+    }
+    if (!gbufferLink) {
+        gbufferLink = makeTexture(gl, GL_R8UI, GL_RED_INTEGER, GL_UNSIGNED_BYTE, size);
+        gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GLenum(GL_COLOR_ATTACHMENT0 + kGBufferTargets),
+                                   GL_TEXTURE_2D, gbufferLink, 0);
+    }
+    gl->glDrawBuffers(kGBufferTargets + 1, buffers);
+    if (complete(gl, "G-buffer with its link target", size, error)) return true;
+    gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GLenum(GL_COLOR_ATTACHMENT0 + kGBufferTargets), GL_TEXTURE_2D,
+                               0, 0);
+    gl->glDeleteTextures(1, &gbufferLink);
+    gbufferLink = 0;
+    gl->glDrawBuffers(kGBufferTargets, buffers);
+    return false;
+}
+
 bool Targets::createSurfaces(QOpenGLFunctions_3_3_Core* gl, QString* error) {
     return surfaceFbo || createMrt(gl, "kept surfaces", size, depth, &surfaceFbo, surfaces, error);
 }
@@ -162,6 +185,8 @@ void Targets::release(QOpenGLFunctions_3_3_Core* gl) {
     gl->glDeleteTextures(2, texs);
     gl->glDeleteTextures(kGBufferTargets, gbuffer);
     gl->glDeleteTextures(kGBufferTargets, surfaces);
+    gl->glDeleteTextures(1, &gbufferLink);
+    gbufferLink = 0;
     msaaFbo = msaaColor = msaaDepth = fbo = color = depth = gbufferFbo = surfaceFbo = 0;
     for (GLuint& t : gbuffer)
         t = 0;

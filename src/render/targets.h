@@ -21,6 +21,10 @@ struct Targets {
     GLuint fbo = 0, color = 0, depth = 0; // single-sample: textures
     GLuint gbufferFbo = 0;
     GLuint gbuffer[kGBufferTargets] = {};
+    // Light linking only (RigFeatures::linking): an R8UI texture of each pixel's lighting class, the
+    // G-buffer's fifth colour attachment (made by useGBufferLink at the first linking frame); the deferred
+    // lighting pass reads it (TextureUnit::GBufferLink). 0: never needed.
+    GLuint gbufferLink = 0;
     // The G-buffer and the scene depth it shares as the passes left them: one more revision whenever they
     // may have changed (create(), and RenderPlan::runPass after every pass whose declared writes include
     // resource::kDepthSharing and that did not keep them: the G-pass, the forward geometry pass, the MSAA
@@ -50,7 +54,10 @@ struct Targets {
     // create() unless the targets already have this size, sample count and format; without multisampling
     // (and a warning) when a multisampled target cannot be made.
     bool ensure(QOpenGLFunctions_3_3_Core* gl, QSize size, int samples, GLenum colorFormat, QString* error);
-    bool createGBuffer(QOpenGLFunctions_3_3_Core* gl, QString* error);  // for the current size
+    bool createGBuffer(QOpenGLFunctions_3_3_Core* gl, QString* error); // for the current size
+    // With the G-buffer's framebuffer bound: draws into the link target too (linking; made on demand) or
+    // into the four Surface targets alone, as without linking. False (with error) when it cannot be made.
+    bool useGBufferLink(QOpenGLFunctions_3_3_Core* gl, bool linking, QString* error);
     bool createSurfaces(QOpenGLFunctions_3_3_Core* gl, QString* error); // for the current size
     void release(QOpenGLFunctions_3_3_Core* gl);
 };

@@ -16,6 +16,10 @@ enum class TextureUnit : GLuint {
     ClusterRanges = 8,
     ClusterIndices = 9,
     SceneColor = 10, // the tone-map pass's input (resolved radiance)
+    // The G-buffer's link target (light linking: each pixel's lighting class, Targets::gbufferLink), read
+    // by the deferred lighting programs only. It shares SceneColor's unit: no program reads both, and the
+    // 16 units GL 3.3 guarantees are otherwise taken.
+    GBufferLink = SceneColor,
     SceneDepth = 11, // the overlay pass's occlusion test (resolved depth)
     MetalRough = 12, // physically based material textures (mesh.frag, LR_PBR; GpuDraw's PBR textures)
     Occlusion = 13,
@@ -57,6 +61,7 @@ inline constexpr SamplerBinding kSamplerBindings[] = {
     {"uClusterRanges", TextureUnit::ClusterRanges},
     {"uClusterIndices", TextureUnit::ClusterIndices},
     {"uHdr", TextureUnit::SceneColor},
+    {"uGBufferLink", TextureUnit::GBufferLink},
     {"uBackgroundCache", TextureUnit::BackgroundCache},
     {"uSceneDepth", TextureUnit::SceneDepth},
     {"uMetalRoughTex", TextureUnit::MetalRough},
