@@ -59,7 +59,8 @@ LinkResolution referenceLinks(const Model& model, const Rig& rig) {
 }
 
 std::optional<ReferenceScene> makeScene(const Model& model, const Rig& rig, const SceneFrame& frame,
-                                        const glm::dmat4& view, const RenderSettings& settings, QString* error,
+                                        const glm::dmat4& view, const RenderSettings& settings,
+                                        QString* error,
                                         const std::shared_ptr<const LoadedEnvironment>& environment,
                                         const LinkResolution& links);
 
@@ -103,7 +104,8 @@ std::vector<lighting::ShadeLight<double>> lightsOfClass(std::vector<lighting::Sh
 }
 
 std::optional<ReferenceScene> makeScene(const Model& model, const Rig& rig, const SceneFrame& frame,
-                                        const glm::dmat4& view, const RenderSettings& settings, QString* error,
+                                        const glm::dmat4& view, const RenderSettings& settings,
+                                        QString* error,
                                         const std::shared_ptr<const LoadedEnvironment>& environment,
                                         const LinkResolution& links) {
     ReferenceScene s;
@@ -113,7 +115,7 @@ std::optional<ReferenceScene> makeScene(const Model& model, const Rig& rig, cons
     s.toneMap = settings.toneMap;
     const QColor bg = settings.background.toRgb();
     s.background = colour::srgbToLinear(glm::dvec3(bg.redF(), bg.greenF(), bg.blueF()));
-    std::vector<size_t> rigIndex; // of each of s.lights
+    std::vector<size_t> rigIndex;                  // of each of s.lights
     for (size_t i = 0; i < rig.lights.size(); ++i) // the lights prepareLights() kept, in its order
         if (rig.lights[i].enabled) {
             s.emitters.push_back(shadowEmitter(rig, frame, rig.lights[i]));
@@ -313,10 +315,9 @@ void ReferenceJob::tracePixel(const lighting::Surface<double>& s,
         const std::span<const lighting::ShadeLight<double>> one(&lights[l], 1);
         constexpr double kLit[] = {1.0}, kUnlit[] = {0.0};
         double v = 1.0;
-        if (traitsOf(lights[l].type).isArea
-                ? areaintegrate::reaches(lights[l], s)
-                : lighting::shadeSurface<double>(s, one, sc.settings, kLit) !=
-                      lighting::shadeSurface<double>(s, one, sc.settings, kUnlit))
+        if (traitsOf(lights[l].type).isArea ? areaintegrate::reaches(lights[l], s)
+                                            : lighting::shadeSurface<double>(s, one, sc.settings, kLit) !=
+                                                  lighting::shadeSurface<double>(s, one, sc.settings, kUnlit))
             v = sc.tracer->visibility(p, n, sc.emitters[l], std::uint32_t(pixel * 977u + size_t(k) * 7919u));
         visibility[l] = v;
         m_out.visibility[pixel * size_t(m_out.casters) + size_t(k)] = visibilityCode(v);

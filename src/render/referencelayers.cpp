@@ -21,10 +21,9 @@ void setReferenceGroups(ReferenceScene* scene, const Rig& rig, const std::vector
 }
 
 void splitReferencePixel(const ReferenceScene& sc, std::span<const lighting::ShadeLight<double>> lights,
-                         const lighting::Surface<double>& s,
-                         std::span<const double> shaded, std::span<const double> visibility,
-                         std::span<const glm::dvec3> areaDirect, const glm::dvec3& environment,
-                         glm::dvec3* groups) {
+                         const lighting::Surface<double>& s, std::span<const double> shaded,
+                         std::span<const double> visibility, std::span<const glm::dvec3> areaDirect,
+                         const glm::dvec3& environment, glm::dvec3* groups) {
     const ReferenceScene::Groups& gr = sc.groups;
     std::fill(groups, groups + gr.count, glm::dvec3(0.0));
     const auto add = [&](int g, const glm::dvec3& v) {

@@ -23,10 +23,9 @@ void setReferenceGroups(ReferenceScene* scene, const Rig& rig, const std::vector
 // visibility; the traced one), `areaDirect` each light's unshadowed integrated direct terms (0 for other
 // types), `environment` the environment's integral.
 void splitReferencePixel(const ReferenceScene& scene, std::span<const lighting::ShadeLight<double>> lights,
-                         const lighting::Surface<double>& s,
-                         std::span<const double> shaded, std::span<const double> visibility,
-                         std::span<const glm::dvec3> areaDirect, const glm::dvec3& environment,
-                         glm::dvec3* groups);
+                         const lighting::Surface<double>& s, std::span<const double> shaded,
+                         std::span<const double> visibility, std::span<const glm::dvec3> areaDirect,
+                         const glm::dvec3& environment, glm::dvec3* groups);
 
 // The reference as layers: beauty = its radiance (alpha: covered), one image per group (the split, when
 // the scene asked for it; else none), albedo, normal and depth from the G-buffer it evaluated, seen

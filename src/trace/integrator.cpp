@@ -228,7 +228,7 @@ PathSample tracePath(const TraceScene& scene, const glm::dvec3& cameraOrigin, co
         if (groups) groups[group] += term;
     };
     glm::dvec3 origin = cameraOrigin, dir = cameraDir, beta(1.0);
-    double prevPdf = 0.0; // the BSDF density of `dir`; 0 for the camera ray (no MIS: seen directly)
+    double prevPdf = 0.0;       // the BSDF density of `dir`; 0 for the camera ray (no MIS: seen directly)
     std::uint32_t prevPart = 0; // the part `dir` leaves (linking: the lights that may light it)
     for (int depth = 0;; ++depth) {
         sampler.startBounce(depth);

@@ -51,8 +51,8 @@ std::shared_ptr<const TraceScene> TraceScene::build(const SceneDescription& scen
         t->m_catcherPart = std::uint32_t(scene.groundPart(0));
         if (t->m_litClass.size() <= t->m_catcherPart) t->m_litClass.resize(t->m_catcherPart + 1, 0);
     }
-    t->m_embree = std::make_unique<EmbreeScene>(models, model.bounds.center(),
-                                                EmbreeScene::shadowClassMasks(links));
+    t->m_embree =
+        std::make_unique<EmbreeScene>(models, model.bounds.center(), EmbreeScene::shadowClassMasks(links));
     if (!t->m_embree->ok()) return fail(t->m_embree->error());
     for (const Model* m : models) {
         const int first = int(t->m_materials.size());
@@ -170,8 +170,8 @@ double TraceScene::alphaAt(const EmbreeHit& hit, Sampler& sampler, bool* pass) c
     return a;
 }
 
-EmbreeHit TraceScene::intersect(const glm::dvec3& origin, const glm::dvec3& dir, double tfar, Sampler& sampler,
-                                std::uint32_t mask) const {
+EmbreeHit TraceScene::intersect(const glm::dvec3& origin, const glm::dvec3& dir, double tfar,
+                                Sampler& sampler, std::uint32_t mask) const {
     double tnear = 0.0;
     for (int i = 0; i < 64; ++i) {
         const EmbreeHit h = m_embree->intersect(origin, dir, tnear, tfar, mask);
@@ -184,8 +184,8 @@ EmbreeHit TraceScene::intersect(const glm::dvec3& origin, const glm::dvec3& dir,
     return {};
 }
 
-bool TraceScene::unoccluded(const glm::dvec3& origin, const glm::dvec3& dir, double distance, Sampler& sampler,
-                            std::uint32_t mask) const {
+bool TraceScene::unoccluded(const glm::dvec3& origin, const glm::dvec3& dir, double distance,
+                            Sampler& sampler, std::uint32_t mask) const {
     if (m_allOpaque) return !m_embree->occluded(origin, dir, distance, 0.0, mask);
     return !intersect(origin, dir, distance, sampler, mask).hit;
 }
