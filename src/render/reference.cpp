@@ -5,6 +5,7 @@
 #include "core/lighting.h"
 #include "gbuffer.h"
 #include "referencelayers.h"
+#include "scene/linkparts.h"
 
 #include <QtConcurrent/QtConcurrentMap>
 #include <algorithm>
@@ -49,6 +50,20 @@ EnvironmentConvergence convergenceOf(const ReferenceImage& r, const std::vector<
     return c;
 }
 
+// The rig's links over the model's parts and the ground's (groundModel's one mesh, when the ground is
+// on): what SceneDescription::links() resolves for the same model and rig.
+LinkResolution referenceLinks(const Model& model, const Rig& rig) {
+    std::vector<PartNames> parts = linkParts(&model, nullptr);
+    if (rig.ground.mode != GroundMode::Off) parts.push_back(PartNames{.ground = true});
+    return resolveLinks(rig.lights, parts);
+}
+
+std::optional<ReferenceScene> makeScene(const Model& model, const Rig& rig, const SceneFrame& frame,
+                                        const glm::dmat4& view, const RenderSettings& settings,
+                                        QString* error,
+                                        const std::shared_ptr<const LoadedEnvironment>& environment,
+                                        const LinkResolution& links);
+
 } // namespace
 
 bool ReferenceScene::hasAreaLights() const {
@@ -65,6 +80,34 @@ std::optional<ReferenceScene>
 makeReferenceScene(const Model& model, const Rig& rig, const SceneFrame& frame, const glm::dmat4& view,
                    const RenderSettings& settings, QString* error,
                    const std::shared_ptr<const LoadedEnvironment>& environment) {
+    return makeScene(model, rig, frame, view, settings, error, environment, referenceLinks(model, rig));
+}
+
+std::optional<ReferenceScene> makeReferenceScene(const SceneDescription& scene, const glm::dmat4& view,
+                                                 const RenderSettings& settings, QString* error) {
+    static const Model none;
+    return makeScene(scene.model() ? *scene.model() : none, scene.rig(), scene.frame(), view, settings, error,
+                     scene.environment(), scene.links());
+}
+
+namespace {
+
+// Switches the lights of `lights` (ReferenceScene::lights: the rig's enabled ones, rig index
+// rigIndex[k]) that do not light lighting class `c` off: every term of theirs is then exactly 0.
+std::vector<lighting::ShadeLight<double>> lightsOfClass(std::vector<lighting::ShadeLight<double>> lights,
+                                                        const std::vector<size_t>& rigIndex,
+                                                        const LinkResolution& links, int c) {
+    for (size_t k = 0; k < lights.size(); ++k)
+        if (!((links.litMask[rigIndex[k]] >> c) & 1u))
+            lights[k].color = lights[k].specular = lights[k].ambient = glm::dvec3(0.0);
+    return lights;
+}
+
+std::optional<ReferenceScene> makeScene(const Model& model, const Rig& rig, const SceneFrame& frame,
+                                        const glm::dmat4& view, const RenderSettings& settings,
+                                        QString* error,
+                                        const std::shared_ptr<const LoadedEnvironment>& environment,
+                                        const LinkResolution& links) {
     ReferenceScene s;
     s.lights = prepareLights(rig, frame, view);
     s.settings = prepareSettings(rig, frame);
@@ -72,13 +115,25 @@ makeReferenceScene(const Model& model, const Rig& rig, const SceneFrame& frame, 
     s.toneMap = settings.toneMap;
     const QColor bg = settings.background.toRgb();
     s.background = colour::srgbToLinear(glm::dvec3(bg.redF(), bg.greenF(), bg.blueF()));
-    for (const Light& l : rig.lights) // the lights prepareLights() kept, in its order
-        if (l.enabled) s.emitters.push_back(shadowEmitter(rig, frame, l));
+    std::vector<size_t> rigIndex;                  // of each of s.lights
+    for (size_t i = 0; i < rig.lights.size(); ++i) // the lights prepareLights() kept, in its order
+        if (rig.lights[i].enabled) {
+            s.emitters.push_back(shadowEmitter(rig, frame, rig.lights[i]));
+            rigIndex.push_back(i);
+        }
+    if (links.active && rigIndex.size() == s.lights.size()) {
+        for (size_t k = 0; k < rigIndex.size(); ++k)
+            s.emitters[k].shadowMask = links.shadowMask[rigIndex[k]];
+        s.litClass = links.litClass;
+        for (int c = 0; c < std::max(1, links.litClasses); ++c)
+            s.lightsOfClass.push_back(lightsOfClass(s.lights, rigIndex, links, c));
+    }
     s.viewToWorld = glm::inverse(view);
     s.areaConvergence = areaintegrate::defaultConvergence(settings.exposureEV, settings.toneMap);
     s.areaConvergence.targetLevels = kEnvironmentTargetLevels;
-    if (s.casters() > 0) {
-        auto tracer = std::make_shared<const ShadowTracer>(model, rig.ground.mode != GroundMode::Off);
+    if (s.casters() > 0 || s.linked()) {
+        auto tracer = std::make_shared<const ShadowTracer>(model, rig.ground.mode != GroundMode::Off,
+                                                           EmbreeScene::shadowClassMasks(links));
         if (!tracer->ok()) {
             if (error) *error = tracer->error();
             return std::nullopt;
@@ -98,12 +153,7 @@ makeReferenceScene(const Model& model, const Rig& rig, const SceneFrame& frame, 
     return s;
 }
 
-std::optional<ReferenceScene> makeReferenceScene(const SceneDescription& scene, const glm::dmat4& view,
-                                                 const RenderSettings& settings, QString* error) {
-    static const Model none;
-    return makeReferenceScene(scene.model() ? *scene.model() : none, scene.rig(), scene.frame(), view,
-                              settings, error, scene.environment());
-}
+} // namespace
 
 EnvironmentConvergence environmentConvergence(const ReferenceImage& r) {
     return r.environment ? convergenceOf(r, r.environmentError, r.environmentSamples)
@@ -171,6 +221,7 @@ void ReferenceJob::evaluateRow(int y) {
     const ReferenceScene& sc = m_scene;
     const glm::dvec3 bg = encodeSrgb(sc.background, 0.0, ToneMap::Clamp);
     const int casters = m_out.casters;
+    const bool traced = sc.tracer && (casters > 0 || sc.linked());
     const size_t n = sc.lights.size();
     std::vector<double> visibility(n, 1.0), dark(n, 1.0);
     for (size_t k = 0; k < n; ++k)
@@ -197,13 +248,22 @@ void ReferenceJob::evaluateRow(int y) {
             continue;
         }
         const lighting::Surface<double> s = render::surfaceAt(g, x, y);
-        if (casters > 0) tracePixel(s, i, eye, visibility);
+        std::span<const lighting::ShadeLight<double>> lights = sc.lights;
+        if (traced) {
+            // The surface the eye's ray meets here: its geometric normal (shadow rays), its part (links).
+            const glm::dvec3 p(sc.viewToWorld * glm::dvec4(s.position, 1.0));
+            const glm::dvec3 shadingNormal = lighting::safeNormalize(
+                glm::dvec3(sc.viewToWorld * glm::dvec4(s.normal, 0.0)), glm::dvec3(0, 1, 0));
+            const ShadowTracer::Seen seen = sc.tracer->surfaceSeen(eye, p, shadingNormal);
+            if (sc.linked()) lights = sc.lightsAt(seen.part);
+            if (casters > 0) tracePixel(s, lights, i, p, seen.normal, visibility);
+        }
         for (size_t k = 0; k < n; ++k)
             shaded[k] = isArea[k] ? 0.0 : visibility[k];
-        V radiance = lighting::shadeSurface<double>(s, sc.lights, sc.settings, shaded);
+        V radiance = lighting::shadeSurface<double>(s, lights, sc.settings, shaded);
         if (m_out.area) {
             const areaintegrate::Estimate a = areaintegrate::integrate(
-                sc.lights, visibility, s, sc.settings, std::uint64_t(i), sc.areaConvergence, radiance,
+                lights, visibility, s, sc.settings, std::uint64_t(i), sc.areaConvergence, radiance,
                 casters > 0 || m_out.groupCount > 0 ? &direct : nullptr);
             radiance += a.radiance;
             m_out.areaError[i] = float(a.errorLevels);
@@ -221,8 +281,8 @@ void ReferenceJob::evaluateRow(int y) {
         if (casters > 0) {
             // Whether the casters' direct light shows here at all: the image with all of it and with none
             // (the environment, never shadowed, in both).
-            V lit = lighting::shadeSurface<double>(s, sc.lights, sc.settings, litShaded) + environment;
-            V unlit = lighting::shadeSurface<double>(s, sc.lights, sc.settings, darkShaded) + environment;
+            V lit = lighting::shadeSurface<double>(s, lights, sc.settings, litShaded) + environment;
+            V unlit = lighting::shadeSurface<double>(s, lights, sc.settings, darkShaded) + environment;
             for (size_t k = 0; k < direct.size(); ++k)
                 lit += direct[k], unlit += dark[k] * direct[k];
             m_out.shadowClass[i] =
@@ -231,7 +291,7 @@ void ReferenceJob::evaluateRow(int y) {
         }
         if (m_out.groupCount > 0) {
             if (!m_out.area) direct.assign(n, V(0.0));
-            splitReferencePixel(sc, s, shaded, visibility, direct, environment,
+            splitReferencePixel(sc, lights, s, shaded, visibility, direct, environment,
                                 &m_out.groupRadiance[i * size_t(m_out.groupCount)]);
         }
         m_out.radiance[i] = radiance;
@@ -242,26 +302,22 @@ void ReferenceJob::evaluateRow(int y) {
     }
 }
 
-void ReferenceJob::tracePixel(const lighting::Surface<double>& s, size_t pixel, const glm::dvec3& eye,
-                              std::vector<double>& visibility) {
+void ReferenceJob::tracePixel(const lighting::Surface<double>& s,
+                              std::span<const lighting::ShadeLight<double>> lights, size_t pixel,
+                              const glm::dvec3& p, const glm::dvec3& n, std::vector<double>& visibility) {
     const ReferenceScene& sc = m_scene;
-    const glm::dvec3 p(sc.viewToWorld * glm::dvec4(s.position, 1.0));
-    const glm::dvec3 shadingNormal =
-        lighting::safeNormalize(glm::dvec3(sc.viewToWorld * glm::dvec4(s.normal, 0.0)), glm::dvec3(0, 1, 0));
-    const glm::dvec3 n = sc.tracer->geometricNormal(eye, p, shadingNormal);
     int k = 0;
-    for (size_t l = 0; l < sc.lights.size(); ++l) {
+    for (size_t l = 0; l < lights.size(); ++l) {
         if (!sc.emitters[l].casts) continue;
         // Where the light's direct terms add nothing (outside its cone or range, facing away from it
         // without a wrapped diffuse; an area light's emitter wholly behind or below the surface) visibility
         // cannot matter: nothing is traced, it is 1.
-        const std::span<const lighting::ShadeLight<double>> one(&sc.lights[l], 1);
+        const std::span<const lighting::ShadeLight<double>> one(&lights[l], 1);
         constexpr double kLit[] = {1.0}, kUnlit[] = {0.0};
         double v = 1.0;
-        if (traitsOf(sc.lights[l].type).isArea
-                ? areaintegrate::reaches(sc.lights[l], s)
-                : lighting::shadeSurface<double>(s, one, sc.settings, kLit) !=
-                      lighting::shadeSurface<double>(s, one, sc.settings, kUnlit))
+        if (traitsOf(lights[l].type).isArea ? areaintegrate::reaches(lights[l], s)
+                                            : lighting::shadeSurface<double>(s, one, sc.settings, kLit) !=
+                                                  lighting::shadeSurface<double>(s, one, sc.settings, kUnlit))
             v = sc.tracer->visibility(p, n, sc.emitters[l], std::uint32_t(pixel * 977u + size_t(k) * 7919u));
         visibility[l] = v;
         m_out.visibility[pixel * size_t(m_out.casters) + size_t(k)] = visibilityCode(v);

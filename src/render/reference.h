@@ -20,6 +20,12 @@
 // reference evaluates them through shade.h with visibility 0 (their ambient only) and adds their direct
 // terms integrated by core/areaintegrate.h (Monte Carlo, to half an 8-bit level of the displayed value),
 // × the caster's traced visibility as for any light; the estimated error is kept per pixel.
+//
+// Light and shadow linking (issue 38, core/lightlink.h): when some light links, the tracer is built (with
+// or without casters) with the parts' shadow-class masks, each pixel's part is the one the eye's ray meets
+// there (ShadowTracer::surfaceSeen), and the pixel is shaded with the lights of that part's lighting class
+// (ReferenceScene::lightsAt: a light that does not light it switched off, so each of its terms is exactly 0
+// and areaintegrate leaves it out); a caster's shadow rays pass the parts outside its shadow set.
 #pragma once
 
 #include "core/envintegrate.h"
@@ -37,6 +43,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace lr {
@@ -48,8 +55,9 @@ struct ReferenceScene {
     double exposureEV = 0.0;
     ToneMap toneMap = ToneMap::Clamp;
     glm::dvec3 background{0.0}; // linear; uncovered pixels
-    // Shadows: one emitter per entry of `lights` (casts = false for lights without a shadow) and the
-    // tracer, null when no light casts. viewToWorld maps the G-buffer's view-space positions to world.
+    // Shadows: one emitter per entry of `lights` (casts = false for lights without a shadow; shadowMask
+    // its linking's) and the tracer, null when no light casts and none links. viewToWorld maps the
+    // G-buffer's view-space positions to world.
     std::vector<ShadowEmitter> emitters;
     std::shared_ptr<const ShadowTracer> tracer;
     glm::dmat4 viewToWorld{1.0};
@@ -70,11 +78,23 @@ struct ReferenceScene {
         std::vector<int> ofLight;
         int environment = -1, emissive = -1, ambient = -1;
     } groups;
+    // Light linking, when some light links (else both empty): per lighting class, `lights` with those
+    // that do not light it switched off (colour, specular and ambient 0); per part (scene/linkparts.h:
+    // the model's meshes, then the ground), its lighting class.
+    std::vector<std::vector<lighting::ShadeLight<double>>> lightsOfClass;
+    std::vector<std::uint8_t> litClass;
+    bool linked() const { return !lightsOfClass.empty(); }
+    // The lights a point of `part` is shaded with: `lights` without linking or for an unknown part (-1).
+    std::span<const lighting::ShadeLight<double>> lightsAt(int part) const {
+        if (part < 0 || size_t(part) >= litClass.size()) return lights;
+        return lightsOfClass[litClass[size_t(part)]];
+    }
 };
 
 // The reference scene of `rig` on `model` seen through `view` (the renderer's effective camera view
-// matrix). With shadow casters in the rig it builds the tracer's scene (the model's triangles, and the
-// ground's when rig.ground.mode != Off); null, with *error set, when Embree fails.
+// matrix). With shadow casters or links in the rig it builds the tracer's scene (the model's triangles,
+// and the ground's when rig.ground.mode != Off); null, with *error set, when Embree fails. Links are
+// resolved over the model's parts and the ground's (SceneDescription::links()' parts).
 // `environment`: what the renderer shades with (Renderer::environment()); integrated when the rig's
 // environment is not None, at the rig's intensity and rotation.
 std::optional<ReferenceScene>
@@ -166,7 +186,8 @@ class ReferenceJob {
     void evaluateRow(int y);
     // Each caster's visibility at one pixel (into `visibility`, indexed like the scene's lights, and the
     // image's codes).
-    void tracePixel(const lighting::Surface<double>& s, size_t pixel, const glm::dvec3& eye,
+    void tracePixel(const lighting::Surface<double>& s, std::span<const lighting::ShadeLight<double>> lights,
+                    size_t pixel, const glm::dvec3& point, const glm::dvec3& normal,
                     std::vector<double>& visibility);
 
     GBuffer m_gbuffer;

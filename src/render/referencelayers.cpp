@@ -20,10 +20,10 @@ void setReferenceGroups(ReferenceScene* scene, const Rig& rig, const std::vector
     }
 }
 
-void splitReferencePixel(const ReferenceScene& sc, const lighting::Surface<double>& s,
-                         std::span<const double> shaded, std::span<const double> visibility,
-                         std::span<const glm::dvec3> areaDirect, const glm::dvec3& environment,
-                         glm::dvec3* groups) {
+void splitReferencePixel(const ReferenceScene& sc, std::span<const lighting::ShadeLight<double>> lights,
+                         const lighting::Surface<double>& s, std::span<const double> shaded,
+                         std::span<const double> visibility, std::span<const glm::dvec3> areaDirect,
+                         const glm::dvec3& environment, glm::dvec3* groups) {
     const ReferenceScene::Groups& gr = sc.groups;
     std::fill(groups, groups + gr.count, glm::dvec3(0.0));
     const auto add = [&](int g, const glm::dvec3& v) {
@@ -36,10 +36,10 @@ void splitReferencePixel(const ReferenceScene& sc, const lighting::Surface<doubl
     const glm::dvec3 cDiff = lighting::pbrDiffuseColor(s.albedo, s.metallic),
                      f0 = lighting::pbrF0(s.albedo, s.metallic);
     const double alpha = lighting::pbrAlpha(s.roughness);
-    for (size_t k = 0; k < sc.lights.size() && k < gr.ofLight.size(); ++k) {
+    for (size_t k = 0; k < lights.size() && k < gr.ofLight.size(); ++k) {
         const double v = k < shaded.size() ? shaded[k] : 1.0;
-        glm::dvec3 light = pbr ? lighting::shadeLightPbr(sc.lights[k], s, sc.settings, V, cDiff, f0, alpha, v)
-                               : lighting::shadeLight(sc.lights[k], s, sc.settings, V, v);
+        glm::dvec3 light = pbr ? lighting::shadeLightPbr(lights[k], s, sc.settings, V, cDiff, f0, alpha, v)
+                               : lighting::shadeLight(lights[k], s, sc.settings, V, v);
         if (k < areaDirect.size()) light += (k < visibility.size() ? visibility[k] : 1.0) * areaDirect[k];
         add(gr.ofLight[k], light);
     }

@@ -18,13 +18,14 @@ namespace lr {
 // Asks `scene` (made from `rig`: its lights are the rig's enabled ones, in order) to split by `groups`.
 void setReferenceGroups(ReferenceScene* scene, const Rig& rig, const std::vector<LightGroup>& groups);
 
-// One covered pixel's radiance per group into groups[0 .. scene.groups.count): `shaded` and `visibility`
-// per light as ReferenceJob uses them (shade.h's visibility; the traced one), `areaDirect` each light's
-// unshadowed integrated direct terms (0 for other types), `environment` the environment's integral.
-void splitReferencePixel(const ReferenceScene& scene, const lighting::Surface<double>& s,
-                         std::span<const double> shaded, std::span<const double> visibility,
-                         std::span<const glm::dvec3> areaDirect, const glm::dvec3& environment,
-                         glm::dvec3* groups);
+// One covered pixel's radiance per group into groups[0 .. scene.groups.count): `lights` the pixel's
+// (ReferenceScene::lightsAt), `shaded` and `visibility` per light as ReferenceJob uses them (shade.h's
+// visibility; the traced one), `areaDirect` each light's unshadowed integrated direct terms (0 for other
+// types), `environment` the environment's integral.
+void splitReferencePixel(const ReferenceScene& scene, std::span<const lighting::ShadeLight<double>> lights,
+                         const lighting::Surface<double>& s, std::span<const double> shaded,
+                         std::span<const double> visibility, std::span<const glm::dvec3> areaDirect,
+                         const glm::dvec3& environment, glm::dvec3* groups);
 
 // The reference as layers: beauty = its radiance (alpha: covered), one image per group (the split, when
 // the scene asked for it; else none), albedo, normal and depth from the G-buffer it evaluated, seen

@@ -19,9 +19,27 @@ float farOf(double distance) {
                                                                 : std::numeric_limits<float>::infinity();
 }
 
+// Rejects the hits on a geometry whose mask (its user data) shares no bit with the ray's: what the ray
+// masks do, where the device has none.
+void maskFilter(const RTCFilterFunctionNArguments* args) {
+    const std::uint32_t geometryMask = *static_cast<const std::uint32_t*>(args->geometryUserPtr);
+    for (unsigned i = 0; i < args->N; ++i)
+        if (args->valid[i] != 0 && !(RTCRayN_mask(args->ray, args->N, i) & geometryMask)) args->valid[i] = 0;
+}
+
 } // namespace
 
-EmbreeScene::EmbreeScene(const std::vector<const Model*>& models, const glm::dvec3& origin)
+std::vector<std::uint32_t> EmbreeScene::shadowClassMasks(const LinkResolution& links) {
+    std::vector<std::uint32_t> masks;
+    if (!links.active) return masks;
+    masks.reserve(links.shadowClass.size());
+    for (const std::uint8_t c : links.shadowClass)
+        masks.push_back(1u << (c % kMaxLinkClasses));
+    return masks;
+}
+
+EmbreeScene::EmbreeScene(const std::vector<const Model*>& models, const glm::dvec3& origin,
+                         std::vector<std::uint32_t> partMasks, bool forceFilter)
     : m_origin(origin) {
     RTCDevice dev = rtcNewDevice(nullptr);
     if (!dev) {
@@ -29,6 +47,23 @@ EmbreeScene::EmbreeScene(const std::vector<const Model*>& models, const glm::dve
         return;
     }
     m_device = dev;
+    if (!partMasks.empty()) {
+        const bool rayMasks = rtcGetDeviceProperty(dev, RTC_DEVICE_PROPERTY_RAY_MASK_SUPPORTED) != 0;
+        if (rayMasks && !forceFilter) {
+            m_maskMethod = MaskMethod::RayMask;
+        } else if (rtcGetDeviceProperty(dev, RTC_DEVICE_PROPERTY_FILTER_FUNCTION_SUPPORTED) != 0) {
+            m_maskMethod = MaskMethod::Filter;
+        } else {
+            m_error = QStringLiteral("this Embree has neither ray masks nor filter functions, which shadow "
+                                     "linking needs");
+            return;
+        }
+        size_t geometries = 0;
+        for (const Model* model : models)
+            geometries += model ? model->meshes.size() : 0;
+        partMasks.resize(geometries, kAllLinkClasses); // set before any geometry points into it
+        m_masks = std::move(partMasks);
+    }
     RTCScene sc = rtcNewScene(dev);
     rtcSetSceneFlags(sc, RTC_SCENE_FLAG_ROBUST);
     rtcSetSceneBuildQuality(sc, RTC_BUILD_QUALITY_HIGH);
@@ -52,6 +87,13 @@ EmbreeScene::EmbreeScene(const std::vector<const Model*>& models, const glm::dve
                     v[3 * i] = p.x, v[3 * i + 1] = p.y, v[3 * i + 2] = p.z;
                 }
                 std::copy_n(mesh.indices.begin(), 3 * count, ix);
+                if (m_maskMethod == MaskMethod::RayMask) {
+                    rtcSetGeometryMask(geom, m_masks[id]);
+                } else if (m_maskMethod == MaskMethod::Filter) {
+                    rtcSetGeometryUserData(geom, &m_masks[id]);
+                    rtcSetGeometryIntersectFilterFunction(geom, maskFilter);
+                    rtcSetGeometryOccludedFilterFunction(geom, maskFilter);
+                }
                 rtcCommitGeometry(geom);
                 rtcAttachGeometryByID(sc, geom, id);
                 m_triangles += std::int64_t(count);
@@ -75,8 +117,8 @@ EmbreeScene::~EmbreeScene() {
     if (m_device) rtcReleaseDevice(static_cast<RTCDevice>(m_device));
 }
 
-bool EmbreeScene::occluded(const glm::dvec3& origin, const glm::dvec3& dir, double distance,
-                           double tnear) const {
+bool EmbreeScene::occluded(const glm::dvec3& origin, const glm::dvec3& dir, double distance, double tnear,
+                           std::uint32_t mask) const {
     if (!m_scene) return false;
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
@@ -86,13 +128,13 @@ bool EmbreeScene::occluded(const glm::dvec3& origin, const glm::dvec3& dir, doub
     ray.dir_x = float(dir.x), ray.dir_y = float(dir.y), ray.dir_z = float(dir.z);
     ray.tnear = float(std::max(0.0, tnear));
     ray.tfar = farOf(distance);
-    ray.mask = ~0u;
+    ray.mask = mask;
     rtcOccluded1(scene(m_scene), &context, &ray);
     return ray.tfar < 0.0f; // Embree sets tfar to -inf on a hit
 }
 
-EmbreeHit EmbreeScene::intersect(const glm::dvec3& origin, const glm::dvec3& dir, double tnear,
-                                 double tfar) const {
+EmbreeHit EmbreeScene::intersect(const glm::dvec3& origin, const glm::dvec3& dir, double tnear, double tfar,
+                                 std::uint32_t mask) const {
     EmbreeHit out;
     if (!m_scene) return out;
     RTCIntersectContext context;
@@ -103,7 +145,7 @@ EmbreeHit EmbreeScene::intersect(const glm::dvec3& origin, const glm::dvec3& dir
     rh.ray.dir_x = float(dir.x), rh.ray.dir_y = float(dir.y), rh.ray.dir_z = float(dir.z);
     rh.ray.tnear = float(std::max(0.0, tnear));
     rh.ray.tfar = farOf(tfar);
-    rh.ray.mask = ~0u;
+    rh.ray.mask = mask;
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(scene(m_scene), &context, &rh);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return out;

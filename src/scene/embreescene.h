@@ -3,8 +3,15 @@
 // precision far from the world's origin. The traced shadow reference (referencetrace.h) and the path
 // tracer (src/trace) both build their scenes here. Built once, read-only afterwards: any number of threads
 // trace it at once. Embree stays PRIVATE to lightrig_scene: its handles are opaque here.
+//
+// Shadow linking (issue 38, core/lightlink.h): a scene built with part masks gives geometry `part` the mask
+// 1 << its shadow class, and a ray passed a mask (a light's shadowMask) hits only the geometries whose
+// mask it shares; every other ray passes all ones and hits everything. Embree's ray masks do it where the
+// device has them (RTC_DEVICE_PROPERTY_RAY_MASK_SUPPORTED; Debian's 3.13 has), else intersection and
+// occlusion filter functions reject the hits (the same result, slower). Without part masks nothing is set.
 #pragma once
 
+#include "core/lightlink.h"
 #include "model/model.h"
 
 #include <QString>
@@ -31,9 +38,15 @@ class EmbreeScene {
         const Model* model = nullptr;
         int mesh = 0;
     };
+    // How part masks are applied: Auto uses the device's ray masks where it has them, else filters;
+    // Filter always filters (tests compare the two).
+    enum class MaskMethod { None, RayMask, Filter };
     // Every mesh of every model (their vertices are relative to Model::origin, world units), in order:
     // the geometry ids are indices into parts(). The models must outlive the scene. Check ok().
-    EmbreeScene(const std::vector<const Model*>& models, const glm::dvec3& origin);
+    // `partMasks`: per geometry (in that order; entries past the parts are ignored, missing ones are all
+    // ones), or empty: no masks.
+    EmbreeScene(const std::vector<const Model*>& models, const glm::dvec3& origin,
+                std::vector<std::uint32_t> partMasks = {}, bool forceFilter = false);
     ~EmbreeScene();
     EmbreeScene(const EmbreeScene&) = delete;
     EmbreeScene& operator=(const EmbreeScene&) = delete;
@@ -43,18 +56,25 @@ class EmbreeScene {
     std::int64_t triangles() const { return m_triangles; }
     const std::vector<Part>& parts() const { return m_parts; }
     const glm::dvec3& origin() const { return m_origin; }
+    MaskMethod maskMethod() const { return m_maskMethod; }
+    // Per part: 1 << its shadow class under `links`; empty when they are inactive (no masks).
+    static std::vector<std::uint32_t> shadowClassMasks(const LinkResolution& links);
 
     // Whether the segment from `origin` along unit `dir` between tnear and `distance` (may be infinite)
-    // hits a triangle.
-    bool occluded(const glm::dvec3& origin, const glm::dvec3& dir, double distance, double tnear = 0.0) const;
+    // hits a triangle (of a part whose mask shares a bit with `mask`).
+    bool occluded(const glm::dvec3& origin, const glm::dvec3& dir, double distance, double tnear = 0.0,
+                  std::uint32_t mask = kAllLinkClasses) const;
     // The closest hit of the ray within [tnear, tfar] (world; tfar may be infinite).
-    EmbreeHit intersect(const glm::dvec3& origin, const glm::dvec3& dir, double tnear, double tfar) const;
+    EmbreeHit intersect(const glm::dvec3& origin, const glm::dvec3& dir, double tnear, double tfar,
+                        std::uint32_t mask = kAllLinkClasses) const;
 
   private:
     void* m_device = nullptr; // RTCDevice
     void* m_scene = nullptr;  // RTCScene
     glm::dvec3 m_origin{0.0};
     std::vector<Part> m_parts;
+    std::vector<std::uint32_t> m_masks; // per geometry; the filters read theirs
+    MaskMethod m_maskMethod = MaskMethod::None;
     std::int64_t m_triangles = 0;
     QString m_error;
 };

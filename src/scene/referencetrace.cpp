@@ -87,7 +87,7 @@ ShadowEmitter shadowEmitter(const Rig& rig, const SceneFrame& frame, const Light
     return e;
 }
 
-ShadowTracer::ShadowTracer(const Model& model, bool ground) {
+ShadowTracer::ShadowTracer(const Model& model, bool ground, std::vector<std::uint32_t> partMasks) {
     m_epsilon = kShadowRayEpsilon * model.bounds.radius();
     std::vector<const Model*> models{&model};
     if (ground) {
@@ -100,26 +100,35 @@ ShadowTracer::ShadowTracer(const Model& model, bool ground) {
         m_groundQuad.meshes.push_back(std::move(quad));
         models.push_back(&m_groundQuad);
     }
-    m_scene = std::make_unique<EmbreeScene>(models, model.bounds.center());
+    m_scene = std::make_unique<EmbreeScene>(models, model.bounds.center(), std::move(partMasks));
 }
 
 ShadowTracer::~ShadowTracer() = default;
 
-bool ShadowTracer::occluded(const glm::dvec3& origin, const glm::dvec3& dir, double distance) const {
-    return ok() && m_scene->occluded(origin, dir, distance);
+bool ShadowTracer::occluded(const glm::dvec3& origin, const glm::dvec3& dir, double distance,
+                            std::uint32_t mask) const {
+    return ok() && m_scene->occluded(origin, dir, distance, 0.0, mask);
 }
 
 glm::dvec3 ShadowTracer::geometricNormal(const glm::dvec3& eye, const glm::dvec3& point,
                                          const glm::dvec3& fallback) const {
+    return surfaceSeen(eye, point, fallback).normal;
+}
+
+ShadowTracer::Seen ShadowTracer::surfaceSeen(const glm::dvec3& eye, const glm::dvec3& point,
+                                             const glm::dvec3& fallback) const {
+    Seen seen{fallback, -1};
     const glm::dvec3 toPoint = point - eye;
     const double len = glm::length(toPoint);
-    if (!ok() || !(len > 0.0) || !std::isfinite(len)) return fallback;
+    if (!ok() || !(len > 0.0) || !std::isfinite(len)) return seen;
     const glm::dvec3 d = toPoint / len;
     const double slack = std::max(1e-3 * len, 10.0 * m_epsilon); // the G-buffer's float position
     const EmbreeHit hit = m_scene->intersect(eye, d, std::max(0.0, len - slack), len + slack);
-    if (!hit.hit) return fallback;
+    if (!hit.hit) return seen;
     const glm::dvec3 n = hit.normal;
-    return glm::dot(n, eye - point) >= 0.0 ? n : -n;
+    seen.normal = glm::dot(n, eye - point) >= 0.0 ? n : -n;
+    seen.part = int(hit.part);
+    return seen;
 }
 
 double ShadowTracer::visibility(const glm::dvec3& point, const glm::dvec3& normal, const ShadowEmitter& e,
@@ -149,8 +158,8 @@ double ShadowTracer::visibility(const glm::dvec3& point, const glm::dvec3& norma
             const double sinT = std::sqrt(std::max(0.0, 1.0 - cosT * cosT));
             const double r = std::sqrt(r2);
             const glm::dvec3 side = r > 0.0 ? (disk.x * t + disk.y * b) * (sinT / r) : glm::dvec3(0.0);
-            return !occluded(origin, glm::normalize(cosT * w + side),
-                             std::numeric_limits<double>::infinity());
+            return !occluded(origin, glm::normalize(cosT * w + side), std::numeric_limits<double>::infinity(),
+                             e.shadowMask);
         }
         const glm::dvec3 target =
             area ? e.position + disk.x * e.halfWidth * e.axisX + disk.y * e.halfHeight * e.axisY
@@ -158,7 +167,7 @@ double ShadowTracer::visibility(const glm::dvec3& point, const glm::dvec3& norma
         const glm::dvec3 toTarget = target - origin;
         const double len = glm::length(toTarget);
         if (!(len > 0.0)) return true;
-        return !occluded(origin, toTarget / len, len);
+        return !occluded(origin, toTarget / len, len, e.shadowMask);
     };
     if (hard) return arrives(glm::dvec2(0.0)) ? 1.0 : 0.0;
     // Jittered strata: n × n squares of the unit square, one uniformly placed sample in each.

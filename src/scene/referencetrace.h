@@ -20,6 +20,7 @@
 //   shadows it (its shading is 0 there).
 #pragma once
 
+#include "core/lightlink.h"
 #include "core/prepare.h"
 #include "embreescene.h"
 #include "model/model.h"
@@ -51,14 +52,19 @@ struct ShadowEmitter {
     glm::dvec3 axisX{1.0, 0.0, 0.0}, axisY{0.0, 1.0, 0.0}, normal{0.0, -1.0, 0.0};
     double halfWidth = 0.0, halfHeight = 0.0;
     bool twoSided = false;
+    // Shadow linking (core/lightlink.h): the light's shadowMask; its rays pass the parts whose shadow
+    // class it lacks (EmbreeScene's part masks). All ones: every part casts.
+    std::uint32_t shadowMask = kAllLinkClasses;
 };
 
 ShadowEmitter shadowEmitter(const Rig& rig, const SceneFrame& frame, const Light& light);
 
 class ShadowTracer {
   public:
-    // The model's triangles, plus the ground plane's when `ground`. Check ok() (Embree can fail).
-    ShadowTracer(const Model& model, bool ground);
+    // The model's triangles, plus the ground plane's when `ground`: the parts of scene/linkparts.h (the
+    // model's meshes, then the ground as one part). `partMasks`: EmbreeScene's, per part (empty: none).
+    // Check ok() (Embree can fail).
+    ShadowTracer(const Model& model, bool ground, std::vector<std::uint32_t> partMasks = {});
     ~ShadowTracer();
     ShadowTracer(const ShadowTracer&) = delete;
     ShadowTracer& operator=(const ShadowTracer&) = delete;
@@ -72,8 +78,17 @@ class ShadowTracer {
     // eye; `fallback` when the eye's ray hits nothing near the point.
     glm::dvec3 geometricNormal(const glm::dvec3& eye, const glm::dvec3& point,
                                const glm::dvec3& fallback) const;
-    // Whether the segment from `origin` along unit `dir` up to `distance` (may be infinite) hits a triangle.
-    bool occluded(const glm::dvec3& origin, const glm::dvec3& dir, double distance) const;
+    // The same, and which part that triangle is of (its linking part; -1 when the eye's ray hits nothing
+    // near the point).
+    struct Seen {
+        glm::dvec3 normal{0.0, 0.0, 1.0};
+        int part = -1;
+    };
+    Seen surfaceSeen(const glm::dvec3& eye, const glm::dvec3& point, const glm::dvec3& fallback) const;
+    // Whether the segment from `origin` along unit `dir` up to `distance` (may be infinite) hits a triangle
+    // (of a part whose mask shares a bit with `mask`).
+    bool occluded(const glm::dvec3& origin, const glm::dvec3& dir, double distance,
+                  std::uint32_t mask = kAllLinkClasses) const;
     // The fraction of the emitter that `point` (on a surface of unit geometric normal `normal`) sees,
     // 0..1. `seed` decorrelates the jitter of neighbouring points; `samples` overrides kShadowSamples.
     double visibility(const glm::dvec3& point, const glm::dvec3& normal, const ShadowEmitter& emitter,

@@ -85,6 +85,7 @@ glm::dvec3 directLight(const Vertex& v) {
     surf.position = s.position;
     surf.normal = N;
     for (const TraceLight& light : scene.lights()) {
+        if (scene.linked() && !scene.lights(light, s.part)) continue; // none of its terms here
         const lighting::ShadeLight<double>& l = light.shade;
         if (traitsOf(l.type).isArea) {
             if (!areaLightFaces(light, s.position)) continue;
@@ -99,7 +100,9 @@ glm::dvec3 directLight(const Vertex& v) {
             const lighting::PbrLobes<double> f = bsdf.lobes(w, cosineTerm(l.diffuse, glm::dot(N, w)));
             const glm::dvec3 c = l.color * f.diffuse + l.specular * f.specular;
             if (!(maxOf(c) > 0.0)) continue;
-            if (!scene.unoccluded(scene.offset(s, w), w, dist * (1.0 - 1e-6), v.sampler)) continue;
+            if (!scene.unoccluded(scene.offset(s, w), w, dist * (1.0 - 1e-6), v.sampler,
+                                  light.emitter.shadowMask))
+                continue;
             add(c * (powerHeuristic(pdf, bsdf.pdf(w)) / pdf), light.group);
             continue;
         }
@@ -114,7 +117,7 @@ glm::dvec3 directLight(const Vertex& v) {
         const glm::dvec3 w = shadowTarget(light, s.position, L, v.sampler, &distance);
         const glm::dvec3 origin = scene.offset(s, w);
         if (scene.unoccluded(origin, w, std::isfinite(distance) ? distance * (1.0 - 1e-9) : distance,
-                             v.sampler))
+                             v.sampler, light.emitter.shadowMask))
             add(c, light.group);
     }
     if (scene.hasEnvironment()) {
@@ -167,6 +170,7 @@ double catcherLight(const TraceScene& scene, const glm::dvec3& p, Sampler& sampl
     surf.position = p;
     surf.normal = up;
     for (const TraceLight& light : scene.lights()) {
+        if (scene.linked() && !scene.lights(light, scene.catcherPart())) continue;
         const lighting::ShadeLight<double>& l = light.shade;
         glm::dvec3 w;
         double e = 0.0, distance = kInfinity;
@@ -189,7 +193,8 @@ double catcherLight(const TraceScene& scene, const glm::dvec3& p, Sampler& sampl
         }
         if (!(e > 0.0) || !std::isfinite(e)) continue;
         all += e;
-        if (glm::dot(w, up) > 0.0 && scene.unoccluded(origin, w, distance, sampler)) lit += e;
+        if (glm::dot(w, up) > 0.0 && scene.unoccluded(origin, w, distance, sampler, light.emitter.shadowMask))
+            lit += e;
     }
     glm::dvec3 w;
     double pdf;
@@ -223,17 +228,21 @@ PathSample tracePath(const TraceScene& scene, const glm::dvec3& cameraOrigin, co
         if (groups) groups[group] += term;
     };
     glm::dvec3 origin = cameraOrigin, dir = cameraDir, beta(1.0);
-    double prevPdf = 0.0; // the BSDF density of `dir`; 0 for the camera ray (no MIS: seen directly)
+    double prevPdf = 0.0;       // the BSDF density of `dir`; 0 for the camera ray (no MIS: seen directly)
+    std::uint32_t prevPart = 0; // the part `dir` leaves (linking: the lights that may light it)
     for (int depth = 0;; ++depth) {
         sampler.startBounce(depth);
         const EmbreeHit hit = scene.intersect(origin, dir, kInfinity, sampler);
         double tMax = hit.hit ? hit.t : kInfinity;
         // Area lights: emitters only (no surface to reflect), invisible to camera rays as in the raster.
+        // A light that does not light the part the ray leaves is not there for it (linking): next-event
+        // estimation skips it there too, so the MIS weights of the two still sum to 1 for the lights that do.
         if (depth > 0) {
             const TraceLight* nearest = nullptr;
             for (const TraceLight& light : scene.lights())
-                if (double t;
-                    traitsOf(light.shade.type).isArea && hitAreaLight(light, origin, dir, &t) && t < tMax)
+                if (double t; traitsOf(light.shade.type).isArea &&
+                              (!scene.linked() || scene.lights(light, prevPart)) &&
+                              hitAreaLight(light, origin, dir, &t) && t < tMax)
                     tMax = t, nearest = &light;
             if (nearest) {
                 const double pdfLight = areaLightPdf(*nearest, origin, dir, tMax);
@@ -313,6 +322,7 @@ PathSample tracePath(const TraceScene& scene, const glm::dvec3& cameraOrigin, co
         origin = scene.offset(s, bs.direction);
         dir = bs.direction;
         prevPdf = bs.pdf;
+        prevPart = s.part;
     }
     const double r = out.radiance.x + out.radiance.y + out.radiance.z;
     out.finite = std::isfinite(r) && std::isfinite(out.alpha);

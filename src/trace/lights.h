@@ -16,6 +16,7 @@
 // Rim lights are not physical: the path tracer leaves them out (TraceScene::warnings says so).
 #pragma once
 
+#include "core/lightlink.h"
 #include "core/shadetypes.h"
 #include "scene/referencetrace.h"
 
@@ -29,6 +30,9 @@ struct TraceLight {
     ShadowEmitter emitter;              // the shadow ray's target (referencetrace.h), world
     double area = 0.0;                  // rect, disk: world units²
     int group = 0;                      // its light group: an index into TraceScene::groups()
+    // Light linking (core/lightlink.h LinkResolution::litMask): bit c when it lights the parts of
+    // lighting class c (TraceScene::lights). Its shadow's is emitter.shadowMask.
+    std::uint32_t litMask = kAllLinkClasses;
 };
 
 // Where the ray (unit dir) meets an area light's emitting side, at distance *t; false when it misses.

@@ -43,7 +43,16 @@ std::shared_ptr<const TraceScene> TraceScene::build(const SceneDescription& scen
 
     std::vector<const Model*> models{&model};
     if (t->m_ground) models.push_back(t->m_ground.get());
-    t->m_embree = std::make_unique<EmbreeScene>(models, model.bounds.center());
+    // Linking: the Embree scene's parts are the linking parts (model meshes, then a visible ground's).
+    const LinkResolution& links = scene.links();
+    t->m_linked = links.active;
+    if (t->m_linked) {
+        t->m_litClass = links.litClass;
+        t->m_catcherPart = std::uint32_t(scene.groundPart(0));
+        if (t->m_litClass.size() <= t->m_catcherPart) t->m_litClass.resize(t->m_catcherPart + 1, 0);
+    }
+    t->m_embree =
+        std::make_unique<EmbreeScene>(models, model.bounds.center(), EmbreeScene::shadowClassMasks(links));
     if (!t->m_embree->ok()) return fail(t->m_embree->error());
     for (const Model* m : models) {
         const int first = int(t->m_materials.size());
@@ -117,6 +126,7 @@ std::shared_ptr<const TraceScene> TraceScene::build(const SceneDescription& scen
         l.shade = prepareLight(rig, frame, glm::dmat4(1.0), light);
         l.emitter = shadowEmitter(rig, frame, light);
         l.emitter.casts = true; // every light is occluded in the traced image, as the environment is
+        if (links.active) l.litMask = links.litMask[i], l.emitter.shadowMask = links.shadowMask[i];
         if (light.isArea())
             l.area = light.type == LightType::Disk ? std::numbers::pi * l.shade.halfWidth * l.shade.halfWidth
                                                    : 4.0 * l.shade.halfWidth * l.shade.halfHeight;
@@ -161,10 +171,10 @@ double TraceScene::alphaAt(const EmbreeHit& hit, Sampler& sampler, bool* pass) c
 }
 
 EmbreeHit TraceScene::intersect(const glm::dvec3& origin, const glm::dvec3& dir, double tfar,
-                                Sampler& sampler) const {
+                                Sampler& sampler, std::uint32_t mask) const {
     double tnear = 0.0;
     for (int i = 0; i < 64; ++i) {
-        const EmbreeHit h = m_embree->intersect(origin, dir, tnear, tfar);
+        const EmbreeHit h = m_embree->intersect(origin, dir, tnear, tfar, mask);
         if (!h.hit || m_allOpaque) return h;
         bool pass = false;
         alphaAt(h, sampler, &pass);
@@ -175,14 +185,15 @@ EmbreeHit TraceScene::intersect(const glm::dvec3& origin, const glm::dvec3& dir,
 }
 
 bool TraceScene::unoccluded(const glm::dvec3& origin, const glm::dvec3& dir, double distance,
-                            Sampler& sampler) const {
-    if (m_allOpaque) return !m_embree->occluded(origin, dir, distance);
-    return !intersect(origin, dir, distance, sampler).hit;
+                            Sampler& sampler, std::uint32_t mask) const {
+    if (m_allOpaque) return !m_embree->occluded(origin, dir, distance, 0.0, mask);
+    return !intersect(origin, dir, distance, sampler, mask).hit;
 }
 
 SurfacePoint TraceScene::surface(const EmbreeHit& hit, const glm::dvec3& origin,
                                  const glm::dvec3& dir) const {
     SurfacePoint s;
+    s.part = hit.part;
     const PartInfo& part = m_parts[hit.part];
     const Mesh& m = *part.mesh;
     const size_t i = size_t(hit.triangle) * 3;

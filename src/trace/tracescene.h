@@ -5,6 +5,14 @@
 // shadow catcher's plane. Shading: physically based only. A classic-shading rig is refused (build() fails
 // naming the rig and the way out, --shading pbr): its Phong and half-Lambert models are not reflectance
 // functions, so there is no path they could be traced along.
+//
+// Light and shadow linking (issue 38, core/lightlink.h; SceneDescription::links()): the Embree scene's
+// parts are the linking parts (the model's meshes, then a visible ground's), so a hit's part is its part.
+// A light lights a surface point only when lights(light, point.part) — the integrator skips it there in
+// next-event estimation and in what a BSDF ray that meets its emitter adds, so the estimator stays
+// unbiased for the linked set — and its shadow rays carry its shadowMask (ShadowEmitter), so parts
+// outside its shadow set let them through (Embree ray masks, embreescene.h). Without links nothing of it
+// is set: every mask is all ones and linked() is false.
 #pragma once
 
 #include "environmentmap.h"
@@ -34,6 +42,7 @@ struct SurfacePoint {
     glm::dvec3 baseColor{1.0};
     double metallic = 0.0, roughness = 1.0, occlusion = 1.0;
     glm::dvec3 emissive{0.0};
+    std::uint32_t part = 0; // the hit's part (EmbreeHit::part): its linking part
 };
 
 class TraceScene {
@@ -46,14 +55,26 @@ class TraceScene {
 
     // The closest surface the ray reaches before tfar, skipping alpha-masked texels and BLEND texels
     // with probability 1 − alpha (stochastic transparency, `sampler`).
-    EmbreeHit intersect(const glm::dvec3& origin, const glm::dvec3& dir, double tfar, Sampler& sampler) const;
+    // `mask`: a light's shadowMask for its shadow rays (only the parts that cast its shadow stop them).
+    EmbreeHit intersect(const glm::dvec3& origin, const glm::dvec3& dir, double tfar, Sampler& sampler,
+                        std::uint32_t mask = kAllLinkClasses) const;
     // Whether nothing opaque lies on the segment (the same transparency as intersect()).
-    bool unoccluded(const glm::dvec3& origin, const glm::dvec3& dir, double distance, Sampler& sampler) const;
+    bool unoccluded(const glm::dvec3& origin, const glm::dvec3& dir, double distance, Sampler& sampler,
+                    std::uint32_t mask = kAllLinkClasses) const;
     SurfacePoint surface(const EmbreeHit& hit, const glm::dvec3& origin, const glm::dvec3& dir) const;
     // Where a ray leaving a surface starts: the point lifted off along its geometric normal (world units).
     glm::dvec3 offset(const SurfacePoint& s, const glm::dvec3& dir) const;
 
     const std::vector<TraceLight>& lights() const { return m_lights; }
+    // Whether some light links (SceneDescription::links().active); false: lights() is true everywhere and
+    // need not be asked.
+    bool linked() const { return m_linked; }
+    // Whether `light` lights the points of `part` (only meaningful when linked()).
+    bool lights(const TraceLight& light, std::uint32_t part) const {
+        return (light.litMask >> m_litClass[part]) & 1u;
+    }
+    // The shadow catcher's part: the ground's (SceneDescription::groundPart(0)).
+    std::uint32_t catcherPart() const { return m_catcherPart; }
     const EmissiveTriangles& emissive() const { return m_emissive; }
     const EnvironmentMap& environment() const { return m_environment; }
     bool hasEnvironment() const { return !m_environment.isBlack(); }
@@ -106,6 +127,9 @@ class TraceScene {
     std::vector<MaterialTextures> m_materials;
     bool m_allOpaque = true;
     std::vector<TraceLight> m_lights;
+    bool m_linked = false;
+    std::vector<std::uint8_t> m_litClass; // per part, when linked
+    std::uint32_t m_catcherPart = 0;
     EmissiveTriangles m_emissive;
     EnvironmentMap m_environment;
     bool m_environmentVisible = false;
