@@ -1,5 +1,6 @@
 #include "modeldock.h"
 
+#include "editor/document.h"
 #include "modeltreemodel.h"
 #include "scene.h"
 
@@ -53,6 +54,14 @@ void ModelDock::setScene(Scene* scene) {
     m_scene = scene;
     if (m_scene) connect(m_scene, &Scene::modelChanged, this, &ModelDock::reload);
     reload();
+}
+
+void ModelDock::setDocument(Document* document) {
+    if (m_doc) disconnect(m_doc, nullptr, this, nullptr);
+    m_doc = document;
+    const auto follow = [this] { m_model->setLights(m_doc ? m_doc->rig().lights : std::vector<Light>()); };
+    if (m_doc) connect(m_doc, &Document::rigChanged, this, follow);
+    follow();
 }
 
 void ModelDock::reload() {
