@@ -199,10 +199,13 @@ void ModelTreeModel::updateLinks(bool notify) {
                 emit dataChanged(i.siblingAtColumn(NameColumn), i);
             }
         };
-        set(m_litNodes[mesh], tr("%1 of %n light(s)", nullptr, on).arg(lit.size()),
+        set(m_litNodes[mesh],
+            on == 1 ? tr("%1 of 1 light").arg(lit.size()) : tr("%1 of %2 lights").arg(lit.size()).arg(on),
             lit.isEmpty() ? tr("No light that is on lights this mesh")
                           : tr("Lit by: %1").arg(lit.join(QStringLiteral(", "))));
-        set(m_shadowNodes[mesh], tr("%1 of %n shadow(s)", nullptr, shadows).arg(cast.size()),
+        set(m_shadowNodes[mesh],
+            shadows == 1 ? tr("%1 of 1 shadow").arg(cast.size())
+                         : tr("%1 of %2 shadows").arg(cast.size()).arg(shadows),
             cast.isEmpty() ? tr("This mesh casts no light's shadow")
                            : tr("Casts the shadow of: %1").arg(cast.join(QStringLiteral(", "))));
     }

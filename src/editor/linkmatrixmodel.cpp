@@ -11,6 +11,11 @@ LinkMatrixModel::LinkMatrixModel(Document* document, QObject* parent)
     rebuild();
 }
 
+bool LinkMatrixModel::isCell(const QModelIndex& index) const {
+    return index.isValid() && index.model() == this && index.row() < rowCount() &&
+           index.column() < columnCount();
+}
+
 bool LinkMatrixModel::groundOn() const {
     return m_doc && m_doc->rig().ground.mode != GroundMode::Off;
 }
@@ -56,8 +61,7 @@ bool LinkMatrixModel::cellHasBox(int light, int column) const {
 }
 
 QVariant LinkMatrixModel::data(const QModelIndex& index, int role) const {
-    if (!m_doc || !checkIndex(index, CheckIndexOption::IndexIsValid | CheckIndexOption::ParentIsInvalid))
-        return {};
+    if (!m_doc || !isCell(index)) return {};
     const Light& l = m_doc->light(index.row());
     const LinkPartRow& row = m_rows[size_t(index.column())];
     const bool box = cellHasBox(index.row(), index.column());
@@ -90,8 +94,7 @@ QVariant LinkMatrixModel::data(const QModelIndex& index, int role) const {
 }
 
 Qt::ItemFlags LinkMatrixModel::flags(const QModelIndex& index) const {
-    if (!m_doc || !checkIndex(index, CheckIndexOption::IndexIsValid | CheckIndexOption::ParentIsInvalid))
-        return Qt::NoItemFlags;
+    if (!m_doc || !isCell(index)) return Qt::NoItemFlags;
     Qt::ItemFlags f = Qt::ItemIsEnabled | Qt::ItemIsSelectable;
     if (cellHasBox(index.row(), index.column())) f |= Qt::ItemIsUserCheckable;
     return f;

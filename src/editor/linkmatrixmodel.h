@@ -44,6 +44,7 @@ class LinkMatrixModel : public QAbstractTableModel {
   private:
     void rebuild(); // parts and rows from m_modelParts and the rig's ground
     bool groundOn() const;
+    bool isCell(const QModelIndex& index) const;
     bool cellHasBox(int light, int column) const;
     void onAboutToChange(const RigChange& change);
     void onChanged(const RigChange& change);
