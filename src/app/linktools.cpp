@@ -95,7 +95,8 @@ void LinkTools::modelChanged() {
 }
 
 void LinkTools::updateHighlight() {
-    m_window->viewport()->setHighlightedParts(m_window->propertiesDock()->linking()->highlightedParts());
+    const std::vector<std::size_t> parts = m_window->propertiesDock()->linking()->highlightedParts();
+    m_window->viewport()->setHighlightedParts(std::vector<int>(parts.begin(), parts.end()));
 }
 
 } // namespace lr

@@ -457,7 +457,7 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event) {
     event->accept();
 }
 
-void Viewport::setHighlightedParts(std::vector<std::size_t> parts) {
+void Viewport::setHighlightedParts(std::vector<int> parts) {
     if (parts == m_highlightedParts) return;
     m_highlightedParts = std::move(parts);
     update(); // drawn by the renderer's overlay pass once it takes the list (issue 38)

@@ -101,9 +101,10 @@ class Viewport : public QOpenGLWidget {
     // A/B comparison (abcompare.h): while it is active, frames show A and B and the wipe line drags.
     void setCompare(AbCompare* compare);
     // Issue 38: the parts (scene/linkparts.h indices) to tint while the Properties dock's Linking section is
-    // open: the parts the current light lights. Stored here; the renderer's overlay draws them.
-    void setHighlightedParts(std::vector<std::size_t> parts);
-    const std::vector<std::size_t>& highlightedParts() const { return m_highlightedParts; }
+    // open: the parts the current light lights. Stored here and redrawn; the renderer's overlay draws them
+    // once RenderSettings has highlightedParts (branch link-raster): renderSettings() hands it this list.
+    void setHighlightedParts(std::vector<int> parts);
+    const std::vector<int>& highlightedParts() const { return m_highlightedParts; }
 
   signals:
     void environmentClicked(const QPointF& position); // "Light from environment" (environmentlighttool.h)
@@ -162,7 +163,7 @@ class Viewport : public QOpenGLWidget {
     bool m_pickEnvironment = false;
     int m_framesRendered = 0;
     QString m_error;
-    std::vector<std::size_t> m_highlightedParts; // issue 38: setHighlightedParts
+    std::vector<int> m_highlightedParts; // issue 38: setHighlightedParts
 };
 
 } // namespace lr

@@ -194,7 +194,16 @@ class TestLinkEdit : public QObject {
         QVERIFY(!setRowLinked(&doc, {0, 1, 2}, LinkKind::Lit, parts, stand, true, &error));
         QVERIFY(error.isEmpty());
         QCOMPARE(doc.undoStack()->count(), steps + 1);
-        // Two toggles are two steps, even in a gesture that merges other edits (different values per light).
+        // Two toggles are two steps, even inside a gesture that merges other edits.
+        {
+            ContinuousEdit gesture(&doc);
+            const int index = doc.undoStack()->index();
+            QVERIFY(setRowLinked(&doc, {0}, LinkKind::Lit, parts, stand, false));
+            QVERIFY(setRowLinked(&doc, {0}, LinkKind::Lit, parts, rowNamed(rows, "Body"), false));
+            QCOMPARE(doc.undoStack()->index(), index + 2);
+            doc.undoStack()->undo();
+            doc.undoStack()->undo();
+        }
         checkDoUndoRedo(doc, [&] { return resetLinks(&doc, {0, 1, 2}); });
         for (int r = 0; r < 3; ++r)
             QVERIFY(doc.light(r).link.isDefault());
