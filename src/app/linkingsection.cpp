@@ -78,7 +78,7 @@ LinkingSection::LinkingSection(Document* document, QWidget* parent)
     connect(m_fold, &QToolButton::toggled, this, [this](bool open) {
         m_fold->setArrowType(open ? Qt::DownArrow : Qt::RightArrow);
         m_body->setVisible(open);
-        updateHighlight();
+        refresh();
     });
     connect(m_tree, &QTreeWidget::itemChanged, this, &LinkingSection::onItemChanged);
     connect(m_reset, &QPushButton::clicked, this, [this] {
@@ -149,6 +149,11 @@ void LinkingSection::refresh() {
         if (m_doc->light(r).castsShadows()) casting << r;
         linked = linked || !m_doc->light(r).link.isDefault();
     }
+    m_reset->setEnabled(linked);
+    if (!isOpen()) { // folded: the rows are read when it opens (the dock refreshes on every drag step)
+        updateHighlight();
+        return;
+    }
     m_loading = true;
     const QSignalBlocker block(m_tree);
     for (int i = 0; i < int(m_rows.size()); ++i) {
@@ -167,11 +172,11 @@ void LinkingSection::refresh() {
         item->setData(ShadowColumn, Qt::CheckStateRole,
                       casting.isEmpty() ? QVariant() : QVariant(state(LinkKind::Shadow, casting)));
         item->setText(ShadowColumn, casting.isEmpty() && !rows.isEmpty() ? QStringLiteral("—") : QString());
-        item->setToolTip(ShadowColumn, casting.isEmpty()
-                                           ? tr("%1 casts no shadow")
-                                                 .arg(rows.size() == 1 ? m_doc->light(rows[0]).name
-                                                                       : tr("no selected light"))
-                                           : QString());
+        QString noShadow;
+        if (casting.isEmpty() && !rows.isEmpty())
+            noShadow = rows.size() == 1 ? tr("%1 casts no shadow").arg(m_doc->light(rows[0]).name)
+                                        : tr("None of the selected lights casts a shadow");
+        item->setToolTip(ShadowColumn, noShadow);
     }
     // The names that match nothing here, after the parts: greyed, with where they are listed.
     while (m_tree->topLevelItemCount() > int(m_rows.size()))
@@ -210,7 +215,6 @@ void LinkingSection::refresh() {
         item->setFlags(Qt::ItemIsEnabled);
     }
     m_tree->setEnabled(!rows.isEmpty());
-    m_reset->setEnabled(linked);
     m_note->setText(m_parts.empty()   ? tr("Load a model to link the light to its parts.")
                     : rows.size() > 1 ? tr("Edits apply to all %1 selected lights.").arg(rows.size())
                                       : QString());

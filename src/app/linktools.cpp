@@ -27,12 +27,7 @@ LinkPick toggleLitPartAt(Document* doc, const Model& model, const ScreenProjecto
     };
     const auto hit = intersectModelWithNormal(model, projector.ray(screen));
     if (!hit) return say(LinkPick::Missed, QString());
-    std::vector<PartNames> parts = modelLinkParts(model);
-    if (doc->rig().ground.mode != GroundMode::Off) {
-        PartNames ground;
-        ground.ground = true;
-        parts.push_back(ground);
-    }
+    const std::vector<PartNames> parts = linkParts(model, doc->rig()); // the ground's too, while it is on
     const std::vector<LinkPartRow> rows = linkPartRows(parts);
     const LinkPartRow* row = nullptr;
     for (const LinkPartRow& r : rows)
@@ -52,7 +47,7 @@ LinkPick toggleLitPartAt(Document* doc, const Model& model, const ScreenProjecto
     const QString who =
         lights.size() == 1 ? doc->light(lights.front()).name : QObject::tr("%1 lights").arg(lights.size());
     return on ? say(LinkPick::Linked,
-                    QObject::tr("%1 now lights %2 (Alt+click again to undo that)").arg(who, row->label))
+                    QObject::tr("%1 now lights %2 (Alt+click again to switch it back)").arg(who, row->label))
               : say(LinkPick::Unlinked, QObject::tr("%1 no longer lights %2").arg(who, row->label));
 }
 

@@ -5,8 +5,10 @@
 #include "app/linkingsection.h"
 #include "app/linkmatrixdialog.h"
 #include "app/linktools.h"
+#include "app/modeldock.h"
 #include "app/modeltreemodel.h"
 #include "app/propertiesdock.h"
+#include "app/scene.h"
 #include "core/rigjson.h"
 #include "editor/document.h"
 #include "editor/linkmatrixmodel.h"
@@ -105,18 +107,17 @@ class TestLinking : public QObject {
 
         doc.setSelectedRows({0}, 0); // Key
         QVERIFY(section->isVisible());
+        // Highlight: only while the section is open, the parts the current light lights.
+        QSignalSpy highlight(section, &LinkingSection::highlightChanged);
+        QVERIFY(section->highlightedParts().empty());
+        QVERIFY(section->resetButton()->isEnabled());
+        section->setOpen(true);
+        QCOMPARE(section->highlightedParts(), (std::vector<std::size_t>{0, 1}));
+        QCOMPARE(highlight.count(), 1);
         QCOMPARE(state(section->itemOfRow(0), LinkingSection::LitColumn), Qt::Checked);
         QCOMPARE(state(section->itemOfRow(1), LinkingSection::LitColumn), Qt::Unchecked);
         QCOMPARE(state(section->itemOfRow(0), LinkingSection::ShadowColumn), Qt::Checked);
         QCOMPARE(state(section->itemOfRow(1), LinkingSection::ShadowColumn), Qt::Unchecked);
-        QVERIFY(section->resetButton()->isEnabled());
-
-        // Highlight: only while the section is open, the parts the current light lights.
-        QSignalSpy highlight(section, &LinkingSection::highlightChanged);
-        QVERIFY(section->highlightedParts().empty());
-        section->setOpen(true);
-        QCOMPARE(section->highlightedParts(), (std::vector<std::size_t>{0, 1}));
-        QVERIFY(highlight.count() >= 1);
 
         // A click on Stand's Lit box: Key lights Stand too (Body and Stand are every part: no include left),
         // one undo step, and the highlight follows.
@@ -220,6 +221,17 @@ class TestLinking : public QObject {
         QVERIFY(doc.setLightsEnabled({1}, false));
         tree.setLights(doc.rig().lights);
         QCOMPARE(tree.linkIndex(1, false).data().toString(), QStringLiteral("0 of 1 light"));
+        // The dock follows the document by itself, undo included.
+        Scene scene;
+        scene.setModel(model, QString());
+        ModelDock dock;
+        dock.setScene(&scene);
+        dock.setDocument(&doc);
+        QCOMPARE(dock.treeModel()->linkIndex(1, false).data().toString(), QStringLiteral("0 of 1 light"));
+        doc.undoStack()->undo();
+        QCOMPARE(dock.treeModel()->linkIndex(1, false).data().toString(), QStringLiteral("1 of 2 lights"));
+        doc.undoStack()->undo();
+        QCOMPARE(dock.treeModel()->linkIndex(1, false).data().toString(), QStringLiteral("2 of 2 lights"));
     }
 
     void matrixDialog_editsThroughOneStep() {
