@@ -201,8 +201,6 @@ class TestLinkEdit : public QObject {
             QVERIFY(setRowLinked(&doc, {0}, LinkKind::Lit, parts, stand, false));
             QVERIFY(setRowLinked(&doc, {0}, LinkKind::Lit, parts, rowNamed(rows, "Body"), false));
             QCOMPARE(doc.undoStack()->index(), index + 2);
-            doc.undoStack()->undo();
-            doc.undoStack()->undo();
         }
         checkDoUndoRedo(doc, [&] { return resetLinks(&doc, {0, 1, 2}); });
         for (int r = 0; r < 3; ++r)
