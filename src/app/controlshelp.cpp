@@ -40,6 +40,9 @@ QList<ControlBinding> mouseBindings() {
         {QObject::tr("Shift+click the model"),
          QObject::tr("Aim the selected spot, rect, disk, directional and rim lights at that point "
                      "(nothing moves)")},
+        {QObject::tr("Alt+click the model"),
+         QObject::tr("Light linking: switch whether the selected lights light the part under the cursor (one "
+                     "undo step; Properties › Linking lists the parts)")},
         {QObject::tr("Ctrl+Alt+click the background"),
          QObject::tr("Add a directional light from the environment's bright spot there (also Edit › Light "
                      "from environment, then a click)")},

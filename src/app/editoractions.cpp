@@ -8,6 +8,7 @@
 #include "errordialog.h"
 #include "gltfexportdialog.h"
 #include "lightsdock.h"
+#include "linktools.h"
 #include "mainwindow.h"
 #include "mixerdock.h"
 #include "presetsdock.h"
@@ -147,6 +148,7 @@ void EditorActions::createViewMenu() {
     mixer->setText(tr("Light &mixer"));
     mixer->setToolTip(tr("Re-balance a render per light group and write the mix into the rig"));
     menu->addAction(mixer);
+    menu->addAction(m_window->linkTools()->matrixAction()); // issue 38: the linking matrix
     menu->addSeparator();
     ViewSettings* settings = m_window->viewSettings();
     showGizmos = menu->addAction(tr("Light &gizmos"));

@@ -12,6 +12,7 @@
 #include "environmentloading.h"
 #include "errordialog.h"
 #include "lightsdock.h"
+#include "linktools.h"
 #include "mixerdock.h"
 #include "modeldock.h"
 #include "presetsdock.h"
@@ -55,6 +56,7 @@ MainWindow::MainWindow(QWidget* parent)
     m_compare = new AbCompare(m_doc, m_scene, this, this);
     m_viewport->setCompare(m_compare);
     createDocks();
+    m_linkTools = new LinkTools(this);
     m_actions = new EditorActions(this);
     connectStatus();
     // Issue 41: the camera is saved with the rig (its "view") and comes back when the rig is opened.
@@ -113,6 +115,7 @@ void MainWindow::createDocks() {
     m_historyDock->setWidget(history);
     m_modelDock = new ModelDock(this); // the model's meshes, materials, textures and warnings
     m_modelDock->setScene(m_scene);
+    m_modelDock->setDocument(m_doc); // each mesh's lights under light linking (issue 38)
 
     // The default layout, usable at the default 1280×800 (issue 12: a left column left the light table 250 px
     // wide, its Solo, Colour, Intensity and Falloff columns behind a scrollbar, and Render settings' form

@@ -17,6 +17,7 @@ class EditorStatusBar;
 class EnvironmentLightTool;
 class EnvironmentLoading;
 class LightsDock;
+class LinkTools;
 class MixerDock;
 class ModelDock;
 class PresetStore;
@@ -54,6 +55,7 @@ class MainWindow : public QMainWindow {
     EnvironmentLightTool* environmentLightTool() const { return m_environmentLight; }
     AbCompare* compare() const { return m_compare; }     // View › Compare A/B (issue 17)
     MixerDock* mixerDock() const { return m_mixerDock; } // issue 37: light mixing
+    LinkTools* linkTools() const { return m_linkTools; } // issue 38: light linking (linktools.h)
 
     // Startup: the model and rig from the command line, else the last session's (when restoring), else the
     // bundled model lit by its sample rig (core/defaultrig.h). Restores geometry and dock layout when options
@@ -102,6 +104,7 @@ class MainWindow : public QMainWindow {
     EnvironmentLightTool* m_environmentLight = nullptr;
     AbCompare* m_compare = nullptr;
     MixerDock* m_mixerDock = nullptr;
+    LinkTools* m_linkTools = nullptr;
     bool m_restoreSession = true;
 };
 

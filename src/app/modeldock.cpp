@@ -1,5 +1,6 @@
 #include "modeldock.h"
 
+#include "editor/document.h"
 #include "modeltreemodel.h"
 #include "scene.h"
 
@@ -53,6 +54,24 @@ void ModelDock::setScene(Scene* scene) {
     m_scene = scene;
     if (m_scene) connect(m_scene, &Scene::modelChanged, this, &ModelDock::reload);
     reload();
+}
+
+void ModelDock::setDocument(Document* document) {
+    if (m_doc) disconnect(m_doc, nullptr, this, nullptr);
+    m_doc = document;
+    const auto follow = [this] { m_model->setLights(m_doc ? m_doc->rig().lights : std::vector<Light>()); };
+    if (m_doc)
+        connect(m_doc, &Document::rigChanged, this, [follow](const RigChange& c) {
+            // What the counts read: links, on/off, shadows, names, types (not every drag step).
+            const LightProperty p = c.lightProperty;
+            if (c.kind == RigChange::LightValues && p != LightProperty::Link && p != LightProperty::Enabled &&
+                p != LightProperty::ShadowEnabled && p != LightProperty::Name && p != LightProperty::Type &&
+                p != LightProperty::Any)
+                return;
+            if (c.kind == RigChange::RigValues) return;
+            follow();
+        });
+    follow();
 }
 
 void ModelDock::reload() {

@@ -2,7 +2,8 @@
 // their roles and sizes, transforms, physically based from the file or converted), textures and every import
 // warning in full (ModelTreeModel) — in a tree whose rows can be selected and copied (Ctrl+C or the context
 // menu: "name<TAB>value" per row). Follows the scene: a new model, a reload or an up-axis change rebuilds it.
-// The status bar's "N import warnings" button opens it on its Warnings branch (showWarnings).
+// The status bar's "N import warnings" button opens it on its Warnings branch (showWarnings). Issue 38: with
+// a document, each mesh's "lit by" and "casts shadow of" rows follow the rig (light linking).
 #pragma once
 
 #include <QDockWidget>
@@ -13,6 +14,7 @@ class QTreeView;
 
 namespace lr {
 
+class Document;
 class ModelTreeModel;
 class Scene;
 
@@ -23,6 +25,8 @@ class ModelDock : public QDockWidget {
 
     // The scene whose model is shown (nullptr: none); follows its modelChanged.
     void setScene(Scene* scene);
+    // The document whose lights the meshes' linking rows count (nullptr: none); follows its rig.
+    void setDocument(Document* document);
     ModelTreeModel* treeModel() const { return m_model; }
     QTreeView* view() const { return m_view; }
     QAction* copyAction() const { return m_copy; }
@@ -36,6 +40,7 @@ class ModelDock : public QDockWidget {
     void reload();
 
     Scene* m_scene = nullptr;
+    Document* m_doc = nullptr;
     ModelTreeModel* m_model;
     QTreeView* m_view;
     QLabel* m_summary;

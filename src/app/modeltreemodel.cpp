@@ -1,5 +1,7 @@
 #include "modeltreemodel.h"
 
+#include "scene/linkparts.h"
+
 #include <QCoreApplication>
 
 namespace lr {
@@ -116,6 +118,8 @@ void ModelTreeModel::addMaterial(int parent, const Material& m) {
 
 void ModelTreeModel::build() {
     m_nodes.clear();
+    m_litNodes.clear();
+    m_shadowNodes.clear();
     static const char* const kBranches[] = {QT_TRANSLATE_NOOP("lr::ModelTreeModel", "Meshes"),
                                             QT_TRANSLATE_NOOP("lr::ModelTreeModel", "Materials"),
                                             QT_TRANSLATE_NOOP("lr::ModelTreeModel", "Textures"),
@@ -130,13 +134,16 @@ void ModelTreeModel::build() {
         const QString material = mesh.material >= 0 && size_t(mesh.material) < model.materials.size()
                                      ? model.materials[size_t(mesh.material)].name
                                      : QString();
-        add(Meshes, mesh.name.isEmpty() ? tr("(unnamed)") : mesh.name,
-            tr("%1 triangles, %2 vertices, material %3%4")
-                .arg(mesh.indices.size() / 3)
-                .arg(mesh.vertices.size())
-                .arg(mesh.material)
-                .arg(material.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(material)));
+        const int id = add(Meshes, mesh.name.isEmpty() ? tr("(unnamed)") : mesh.name,
+                           tr("%1 triangles, %2 vertices, material %3%4")
+                               .arg(mesh.indices.size() / 3)
+                               .arg(mesh.vertices.size())
+                               .arg(mesh.material)
+                               .arg(material.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(material)));
+        m_litNodes.push_back(add(id, tr("lit by")));
+        m_shadowNodes.push_back(add(id, tr("casts shadow of")));
     }
+    updateLinks(false);
     // A material no mesh uses and the file does not name is an importer's placeholder (Assimp adds an
     // unnamed default material to every glTF scene): not listed (issue 41: DamagedHelmet's "material 1").
     std::vector<char> used(model.materials.size(), 0);
@@ -160,6 +167,55 @@ void ModelTreeModel::build() {
                           int(model.warnings.size())};
     for (int b = 0; b < BranchCount; ++b)
         m_nodes[size_t(b)].value = QString::number(counts[b]);
+}
+
+void ModelTreeModel::setLights(const std::vector<Light>& lights) {
+    m_lights = lights;
+    updateLinks(true);
+}
+
+void ModelTreeModel::updateLinks(bool notify) {
+    if (!m_model || m_litNodes.empty()) return;
+    const std::vector<PartNames> parts = linkParts(m_model.get(), nullptr);
+    const LinkResolution links = resolveLinks(m_lights, parts);
+    int on = 0, shadows = 0;
+    for (const Light& l : m_lights) {
+        on += l.enabled;
+        shadows += l.hasShadow();
+    }
+    for (std::size_t mesh = 0; mesh < m_litNodes.size(); ++mesh) {
+        QStringList lit, cast;
+        for (std::size_t j = 0; j < m_lights.size(); ++j) {
+            if (m_lights[j].enabled && links.lights(j, mesh)) lit << m_lights[j].name;
+            if (m_lights[j].hasShadow() && links.casts(j, mesh)) cast << m_lights[j].name;
+        }
+        const auto set = [&](int node, const QString& value, const QString& tip) {
+            Node& n = m_nodes[size_t(node)];
+            if (n.value == value && n.toolTip == tip) return;
+            n.value = value;
+            n.toolTip = tip;
+            if (notify) {
+                const QModelIndex i = createIndex(n.row, ValueColumn, quintptr(node));
+                emit dataChanged(i.siblingAtColumn(NameColumn), i);
+            }
+        };
+        set(m_litNodes[mesh],
+            on == 1 ? tr("%1 of 1 light").arg(lit.size()) : tr("%1 of %2 lights").arg(lit.size()).arg(on),
+            lit.isEmpty() ? tr("No light that is on lights this mesh")
+                          : tr("Lit by: %1").arg(lit.join(QStringLiteral(", "))));
+        set(m_shadowNodes[mesh],
+            shadows == 1 ? tr("%1 of 1 shadow").arg(cast.size())
+                         : tr("%1 of %2 shadows").arg(cast.size()).arg(shadows),
+            cast.isEmpty() ? tr("This mesh casts no light's shadow")
+                           : tr("Casts the shadow of: %1").arg(cast.join(QStringLiteral(", "))));
+    }
+}
+
+QModelIndex ModelTreeModel::linkIndex(int mesh, bool shadow, int column) const {
+    const std::vector<int>& nodes = shadow ? m_shadowNodes : m_litNodes;
+    if (mesh < 0 || size_t(mesh) >= nodes.size()) return {};
+    const int node = nodes[size_t(mesh)];
+    return createIndex(m_nodes[size_t(node)].row, column, quintptr(node));
 }
 
 QModelIndex ModelTreeModel::branchIndex(Branch branch) const {

@@ -4,9 +4,12 @@
 // normal scale, emissive, alpha mode and cutoff, double-sided, the classic specular and shininess, and
 // whether its physically based values came from the file or were converted), Textures (name, size) and
 // Warnings (each import warning in full). Two columns: what, and its value. Read-only; rebuilt (a model
-// reset) when the model changes.
+// reset) when the model changes. Issue 38: under each mesh, "lit by" and "casts shadow of": how many of the
+// rig's lights (switched on) light it and cast a shadow from it under light linking (core/lightlink.h),
+// their names in the tooltip; setLights updates them in place (dataChanged, no reset).
 #pragma once
 
+#include "core/rig.h"
 #include "model/model.h"
 
 #include <QAbstractItemModel>
@@ -25,6 +28,10 @@ class ModelTreeModel : public QAbstractItemModel {
 
     void setModel(std::shared_ptr<const Model> model);
     const std::shared_ptr<const Model>& model() const { return m_model; }
+    // The rig's lights, for each mesh's "lit by" and "casts shadow of" rows.
+    void setLights(const std::vector<Light>& lights);
+    // A mesh's "lit by" (shadow false) or "casts shadow of" row; invalid when there is no such mesh.
+    QModelIndex linkIndex(int mesh, bool shadow, int column = ValueColumn) const;
     QModelIndex branchIndex(Branch branch) const;
 
     QModelIndex index(int row, int column, const QModelIndex& parent = {}) const override;
@@ -51,9 +58,12 @@ class ModelTreeModel : public QAbstractItemModel {
     int add(int parent, QString name, QString value = {}, QString toolTip = {});
     void build();
     void addMaterial(int parent, const Material& m);
+    void updateLinks(bool notify);
 
     std::shared_ptr<const Model> m_model;
     std::vector<Node> m_nodes; // the branches are nodes 0..BranchCount-1
+    std::vector<Light> m_lights;
+    std::vector<int> m_litNodes, m_shadowNodes; // per mesh
 };
 
 } // namespace lr

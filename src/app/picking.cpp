@@ -157,7 +157,7 @@ std::optional<ModelHit> intersectModelWithNormal(const Model& model, const Ray& 
     }
     n = len > 0.0 && std::isfinite(len) ? n / len : -d;
     if (glm::dot(n, d) > 0.0) n = -n; // the side the ray sees
-    return ModelHit{ray.at(best), n};
+    return ModelHit{ray.at(best), n, std::size_t(bestMesh - model.meshes.data())};
 }
 
 std::optional<glm::dvec3> intersectModel(const Model& model, const Ray& ray) {

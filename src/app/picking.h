@@ -6,6 +6,7 @@
 
 #include <QPointF>
 #include <QSizeF>
+#include <cstddef>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 #include <optional>
@@ -60,6 +61,7 @@ std::optional<glm::dvec3> intersectModel(const Model& model, const Ray& ray);
 struct ModelHit {
     glm::dvec3 point{0.0};
     glm::dvec3 normal{0.0, 0.0, 1.0};
+    std::size_t mesh = 0; // index into Model::meshes: the part light linking names (scene/linkparts.h)
 };
 std::optional<ModelHit> intersectModelWithNormal(const Model& model, const Ray& ray);
 

@@ -4,6 +4,7 @@
 #include "colorpreview.h"
 #include "core/lightgroups.h"
 #include "directionangles.h"
+#include "linkingsection.h"
 #include "logslider.h"
 #include "modeltooltips.h"
 #include "numberedit.h"
@@ -201,6 +202,9 @@ void PropertiesDock::build() {
     m_form = new QFormLayout;
     m_form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
     outer->addLayout(m_form);
+    m_linking = new LinkingSection(m_doc, m_panel); // issue 38: a section of its own, not a form row
+    connect(m_linking, &LinkingSection::refused, this, &PropertiesDock::showMessage);
+    outer->addWidget(m_linking);
     m_message = new QLabel(m_panel);
     m_message->setObjectName(QStringLiteral("message"));
     m_message->setWordWrap(true);
@@ -210,6 +214,7 @@ void PropertiesDock::build() {
     outer->addStretch(1);
 
     for (const LightPropertyInfo& row : lightProperties()) {
+        if (row.kind == LightValueKind::Link) continue; // the Linking section
         const Field f = createField(row);
         f.widget->setObjectName(propertyFieldName(row.id));
         m_form->addRow(row.displayLabel(), f.widget);
@@ -291,6 +296,8 @@ void PropertiesDock::refresh() {
                                               : tr("Add a light to edit it."));
         for (QWidget* f : std::as_const(m_fields))
             m_form->setRowVisible(f, false);
+        m_linking->setVisible(false);
+        m_linking->refresh();
         return;
     }
     const Light& light = m_doc->light(current);
@@ -305,7 +312,10 @@ void PropertiesDock::refresh() {
     for (int r : rows)
         if (intensitySuffix(m_doc->light(r).type, m_doc->rig().shading.model) != unit) unit.clear();
     if (NumberEdit* e = m_parts[LightProperty::Intensity].number) e->setSuffix(unit);
+    m_linking->setVisible(true);
+    m_linking->refresh();
     for (const LightPropertyInfo& row : lightProperties()) {
+        if (row.kind == LightValueKind::Link) continue;
         const Field& f = m_parts[row.id];
         loadValue(row, f, light);
         // A value each light has for itself (the name) is edited with one light selected.

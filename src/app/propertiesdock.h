@@ -26,6 +26,7 @@ namespace lr {
 class ColorButton;
 class LogSliderEdit;
 class NumberEdit;
+class LinkingSection;
 class Vec3Edit;
 
 class PropertiesDock : public QDockWidget {
@@ -37,6 +38,8 @@ class PropertiesDock : public QDockWidget {
     // The row widget of a property (its objectName is propertyFieldName()); visible iff the row is shown.
     QWidget* field(LightProperty property) const { return m_fields.value(property); }
     QString message() const; // the last refusal reason ("" when none)
+    // Issue 38: the Linking section under the fields (linkingsection.h); the main window gives it the parts.
+    LinkingSection* linking() const { return m_linking; }
 
   public slots:
     void refresh(); // re-reads the document (called on rig and selection changes)
@@ -73,6 +76,7 @@ class PropertiesDock : public QDockWidget {
     QLabel* m_header = nullptr;
     QLabel* m_message = nullptr;
     QFormLayout* m_form = nullptr;
+    LinkingSection* m_linking = nullptr;
     QHash<LightProperty, QWidget*> m_fields;
     QHash<LightProperty, Field> m_parts;
     std::optional<int> m_editToken;

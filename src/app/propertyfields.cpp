@@ -36,6 +36,8 @@ PropertyEditor defaultEditor(LightValueKind kind) {
         return PropertyEditor::Vector;
     case LightValueKind::FactorOrColor:
         return PropertyEditor::FactorOrColor;
+    case LightValueKind::Link: // not a field: the dock's Linking section (linkingsection.h)
+        break;
     }
     return PropertyEditor::LineEdit;
 }
@@ -46,7 +48,7 @@ const QList<LightProperty>& propertyRows() {
     static const QList<LightProperty> rows = [] {
         QList<LightProperty> out;
         for (const LightPropertyInfo& row : lightProperties())
-            out << row.id;
+            if (row.kind != LightValueKind::Link) out << row.id;
         return out;
     }();
     return rows;

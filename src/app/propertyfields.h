@@ -32,7 +32,8 @@ struct PropertyField {
     double sliderMin = 0.0; // LogSlider: the smallest non-zero slider value
 };
 
-// Every property the dock can show, in the order of its rows (the property table's order).
+// Every property the dock shows as a field, in the order of its rows (the property table's order); not the
+// linking, which has a section of its own (linkingsection.h).
 const QList<LightProperty>& propertyRows();
 // How the dock edits a property: the default editor of its kind unless kFieldEditors names another.
 PropertyField propertyField(LightProperty property);

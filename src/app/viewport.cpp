@@ -428,6 +428,8 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event) {
     } else if (nav == Navigation::Orbit && !m_moved &&
                (m_pickEnvironment || event->modifiers().testFlags(Qt::ControlModifier | Qt::AltModifier))) {
         emit environmentClicked(pos); // the background (a light would have been a gizmo press)
+    } else if (nav == Navigation::Orbit && !m_moved && (event->modifiers() & Qt::AltModifier)) {
+        emit linkClicked(pos); // issue 38: Alt+click the model (linktools.h)
     } else if (nav == Navigation::Orbit && !m_moved && (event->modifiers() & Qt::ControlModifier)) {
         // Ctrl+click that hit no gizmo: on the model with lights selected it places their highlight there
         // (one undo step); with nothing selected it only says so; on the background nothing.
@@ -453,6 +455,12 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event) {
         if (!intersectModel(*m_scene->model(), projector().ray(pos))) m_doc->setSelection({});
     }
     event->accept();
+}
+
+void Viewport::setHighlightedParts(std::vector<int> parts) {
+    if (parts == m_highlightedParts) return;
+    m_highlightedParts = std::move(parts);
+    update(); // drawn by the renderer's overlay pass once it takes the list (issue 38)
 }
 
 void Viewport::wheelEvent(QWheelEvent* event) {

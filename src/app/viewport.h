@@ -3,7 +3,8 @@
 // Shift+left drag), dolly (wheel), frame (F), standard views, the model file's cameras, look through a spot
 // light. Lights: click a gizmo to select it, drag it (Ctrl/Alt: along the view axis), drag a selected spot's
 // cone edge, Shift+click the model to aim the selected lights, Ctrl+click it to place their highlight
-// (GizmoInteraction); a plain click on the model moves no light. GL resources are released
+// (GizmoInteraction), Alt+click it to link them to the part there (linktools.h); a plain click on the model
+// moves no light. GL resources are released
 // when the context goes away (QOpenGLContext::aboutToBeDestroyed).
 #pragma once
 
@@ -16,6 +17,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <vector>
 
 namespace lr {
 
@@ -98,9 +100,15 @@ class Viewport : public QOpenGLWidget {
     void setEnvironmentPicking(bool on) { m_pickEnvironment = on; }
     // A/B comparison (abcompare.h): while it is active, frames show A and B and the wipe line drags.
     void setCompare(AbCompare* compare);
+    // Issue 38: the parts (scene/linkparts.h indices) to tint while the Properties dock's Linking section is
+    // open: the parts the current light lights. Stored here and redrawn; the renderer's overlay draws them
+    // once RenderSettings has highlightedParts (branch link-raster): renderSettings() hands it this list.
+    void setHighlightedParts(std::vector<int> parts);
+    const std::vector<int>& highlightedParts() const { return m_highlightedParts; }
 
   signals:
     void environmentClicked(const QPointF& position); // "Light from environment" (environmentlighttool.h)
+    void linkClicked(const QPointF& position);        // Alt+click that hit no gizmo (linktools.h)
     void frameRendered(double gpuMs, double cpuMs);
     void firstFrame();
     void statusMessage(const QString& text);
@@ -155,6 +163,7 @@ class Viewport : public QOpenGLWidget {
     bool m_pickEnvironment = false;
     int m_framesRendered = 0;
     QString m_error;
+    std::vector<int> m_highlightedParts; // issue 38: setHighlightedParts
 };
 
 } // namespace lr

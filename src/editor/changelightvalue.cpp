@@ -128,6 +128,7 @@ bool ChangeLightValue::mergeWith(const QUndoCommand* other) {
     const auto* o = static_cast<const ChangeLightValue*>(other);
     if (m_session == 0 || o->m_session != m_session || o->m_property != m_property || o->m_ids != m_ids)
         return false;
+    if (m_property == LightProperty::Link) return false; // each linking edit is a step of its own (issue 38)
     m_after = o->m_after;
     updateObsolete();
     return true;

@@ -3,7 +3,8 @@
 // Names, on/off, type, colour, ... all go through it; its undo text comes from the property's row
 // (lightproperty.h: "Change intensity of Key", "Rename Key to Rim", "Switch off 3 lights"). Inside a
 // continuous-edit session (Document::beginContinuousEdit) consecutive commands on the same lights and
-// property merge, so a slider or gizmo drag, or typing x, y and z of one vector, is one step.
+// property merge, so a slider or gizmo drag, or typing x, y and z of one vector, is one step (never Link:
+// each linking edit, a click, is a step of its own).
 #pragma once
 
 #include "editor/rigcommand.h"

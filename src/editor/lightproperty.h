@@ -26,6 +26,8 @@
 //   ShadowEnabled        bool
 //   ShadowResolution     int (also a whole double), a power of two 256 ... 4096
 //   AreaTwoSided         bool
+//   Link                 lr::LightLink (names checked as the rig reader checks them; no name twice in a
+//                          list)
 //   everything else      double
 // Enums from types.h. The rig's own values are editor/rigproperty.h's; the conversions of QVariants and
 // displayColor are editor/propertyvalue.h's. (Qt 6 needs no Q_DECLARE_METATYPE for glm::dvec3 in a
@@ -81,6 +83,7 @@ enum class LightProperty {
     AreaRadius,   // disk
     AreaRoll,     // rect and disk: degrees about the direction, -180 ... 180
     AreaTwoSided, // rect and disk: bool
+    Link,         // issue 38: which parts it lights and which cast its shadow (editor/linkedit.h)
     Any           // not a property: "several or all values of the light changed" (in RigChange only)
 };
 constexpr int kLightPropertyCount = int(LightProperty::Any);
@@ -109,6 +112,7 @@ enum class LightValueKind {
     OptionalColor,  // a Color, or an invalid QVariant for "none"
     Vector,         // glm::dvec3, components in [min, max]
     FactorOrColor,  // a Number factor or a Color (specular)
+    Link,           // lr::LightLink (core/lightlink.h): the Properties dock's Linking section edits it
 };
 
 // One row of the light-property table.

@@ -3,6 +3,7 @@
 // take their limits and when they are shown from core/fallofftraits.h.
 #include "core/fallofftraits.h"
 #include "editor/lightproperty.h"
+#include "editor/lightproperty_parts.h"
 #include "editor/propertyvalue.h"
 
 #include <QCoreApplication>
@@ -581,11 +582,11 @@ static_assert(
         return true;
     }(),
     "the emitter size row applies to the types with a position: they must all cast shadows");
-static_assert(std::size(kLightProperties) == size_t(kLightPropertyCount), "one row per LightProperty");
+static_assert(std::size(kLightProperties) + 1 == size_t(kLightPropertyCount), "one row per LightProperty");
 
 } // namespace
 
-std::span<const LightPropertyInfo> lightProperties() {
+std::span<const LightPropertyInfo> valueLightProperties() { // all but Link (lightproperty_link.cpp)
     return kLightProperties;
 }
 

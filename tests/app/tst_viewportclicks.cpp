@@ -2,12 +2,16 @@
 // camera is no part of the undo step); a plain click on the model moves no light (Ctrl+click places the
 // highlight); the click that moves the keyboard focus from a dock's field to the viewport keeps the
 // selection; the wheel over the viewport takes the focus too, so number keys then choose standard views
-// instead of typing into the field last edited.
+// instead of typing into the field last edited. Issue 38: Alt+click on the model links the part there.
 #include "app/gizmointeraction.h"
 #include "app/lightsdock.h"
+#include "app/linkingsection.h"
+#include "app/linkmatrixdialog.h"
+#include "app/linktools.h"
 #include "app/numberedit.h"
 #include "app/picking.h"
 #include "app/propertiesdock.h"
+#include "editor/linkmatrixmodel.h"
 #include "startwindow.h"
 
 #include <QAction>
@@ -103,6 +107,46 @@ class TestViewportClicks : public QObject {
         QCOMPARE(doc()->undoStack()->count(), steps + 1);
         QVERIFY(doc()->light(0).position != before.position);
         QCOMPARE(doc()->selectedRows(), QList<int>{0});
+    }
+
+    // Issue 38: Alt+click on the model switches whether the selected light lights the part there (one step,
+    // moving nothing; again: back to lighting it); the Linking section, open, has the viewport highlight
+    // the parts the light lights; View › Light linking opens the matrix on the rig's lights.
+    void altClickOnTheModel_linksThePart() {
+        QVERIFY(test::spotInFrontOfTheModel(*m_window));
+        doc()->setSelectedRows({0}, 0);
+        QPoint onModel, background;
+        modelAndBackground(&onModel, &background);
+        LinkingSection* section = m_window->propertiesDock()->linking();
+        section->setOpen(true);
+        QVERIFY(!section->rows().empty());
+        const std::size_t parts = m_window->scene()->model()->meshes.size();
+        QCOMPARE(viewport()->highlightedParts().size(), parts); // a new light lights everything
+        const Light before = doc()->light(0);
+        const int steps = doc()->undoStack()->index();
+        QTest::mouseClick(viewport(), Qt::LeftButton, Qt::AltModifier, onModel);
+        QCOMPARE(doc()->undoStack()->index(), steps + 1);
+        QVERIFY(!doc()->light(0).link.lit.exclude.isEmpty());
+        QVERIFY(doc()->light(0).position == before.position);
+        QVERIFY(viewport()->highlightedParts().size() < parts);
+        QCOMPARE(doc()->selectedRows(), QList<int>{0});
+        QTest::mouseClick(viewport(), Qt::LeftButton, Qt::AltModifier, onModel);
+        QCOMPARE(doc()->undoStack()->index(), steps + 2);
+        QVERIFY(doc()->light(0).link.isDefault());
+        QCOMPARE(viewport()->highlightedParts().size(), parts);
+        // Closed: no highlight.
+        section->setOpen(false);
+        QVERIFY(viewport()->highlightedParts().empty());
+        // On the background: nothing.
+        QTest::mouseClick(viewport(), Qt::LeftButton, Qt::AltModifier, background);
+        QCOMPARE(doc()->undoStack()->index(), steps + 2);
+
+        m_window->linkTools()->matrixAction()->trigger();
+        LinkMatrixDialog* matrix = m_window->linkTools()->matrixDialog();
+        QVERIFY(matrix->isVisible());
+        QCOMPARE(matrix->matrix()->rowCount(), doc()->lightCount());
+        QCOMPARE(matrix->matrix()->columnCount(), int(section->rows().size()));
+        matrix->close();
     }
 
     // A name typed into the Properties dock's field (the focus stays there), then the viewport used.
