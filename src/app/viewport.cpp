@@ -136,6 +136,7 @@ RenderSettings Viewport::renderSettings(bool gizmos) const {
     s.interactive = m_navigating;
     for (int row : m_doc->selectedRows())
         s.selectedLights.push_back(row);
+    if (gizmos) s.highlightedParts = m_highlightedParts; // an overlay, as the gizmos: never in a final image
     return s;
 }
 

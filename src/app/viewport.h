@@ -101,8 +101,8 @@ class Viewport : public QOpenGLWidget {
     // A/B comparison (abcompare.h): while it is active, frames show A and B and the wipe line drags.
     void setCompare(AbCompare* compare);
     // Issue 38: the parts (scene/linkparts.h indices) to tint while the Properties dock's Linking section is
-    // open: the parts the current light lights. Stored here and redrawn; the renderer's overlay draws them
-    // once RenderSettings has highlightedParts (branch link-raster): renderSettings() hands it this list.
+    // open: the parts the current light lights. renderSettings(gizmos) hands them to the renderer's overlay
+    // (RenderSettings::highlightedParts) with the gizmos, so no screenshot without gizmos shows them.
     void setHighlightedParts(std::vector<int> parts);
     const std::vector<int>& highlightedParts() const { return m_highlightedParts; }
 
