@@ -106,11 +106,7 @@ void LinkingSection::setModelParts(std::vector<PartNames> parts) {
 void LinkingSection::rebuildRows() {
     m_groundOn = m_doc->rig().ground.mode != GroundMode::Off;
     m_parts = m_modelParts;
-    if (m_groundOn) {
-        PartNames ground;
-        ground.ground = true;
-        m_parts.push_back(ground);
-    }
+    if (m_groundOn) m_parts.push_back(PartNames::theGround());
     m_rows = linkPartRows(m_parts);
     const QSignalBlocker block(m_tree);
     m_tree->clear();

@@ -19,6 +19,7 @@
 #include <QString>
 #include <QStringList>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace lr {
@@ -44,6 +45,16 @@ struct LightLink {
 struct PartNames {
     QString node, mesh, material;
     bool ground = false; // the rig's ground: answers to "ground" only
+    static PartNames of(QString node, QString mesh = {}, QString material = {}) {
+        PartNames p;
+        p.node = std::move(node), p.mesh = std::move(mesh), p.material = std::move(material);
+        return p;
+    }
+    static PartNames theGround() {
+        PartNames p;
+        p.ground = true;
+        return p;
+    }
     bool operator==(const PartNames&) const = default;
 };
 

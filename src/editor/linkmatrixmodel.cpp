@@ -23,11 +23,7 @@ bool LinkMatrixModel::groundOn() const {
 void LinkMatrixModel::rebuild() {
     m_ground = groundOn();
     m_parts = m_modelParts;
-    if (m_ground) {
-        PartNames ground;
-        ground.ground = true;
-        m_parts.push_back(ground);
-    }
+    if (m_ground) m_parts.push_back(PartNames::theGround());
     m_rows = linkPartRows(m_parts);
 }
 

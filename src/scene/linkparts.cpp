@@ -16,22 +16,13 @@ std::vector<PartNames> linkParts(const Model* model, const Model* ground) {
     if (model)
         for (const Mesh& mesh : model->meshes)
             parts.push_back(partNames(*model, mesh));
-    if (ground)
-        for (std::size_t i = 0; i < ground->meshes.size(); ++i) {
-            PartNames p;
-            p.ground = true;
-            parts.push_back(p);
-        }
+    if (ground) parts.insert(parts.end(), ground->meshes.size(), PartNames::theGround());
     return parts;
 }
 
 std::vector<PartNames> linkParts(const Model& model, const Rig& rig) {
     std::vector<PartNames> parts = linkParts(&model, nullptr);
-    if (rig.ground.mode != GroundMode::Off) {
-        PartNames p;
-        p.ground = true;
-        parts.push_back(p);
-    }
+    if (rig.ground.mode != GroundMode::Off) parts.push_back(PartNames::theGround());
     return parts;
 }
 

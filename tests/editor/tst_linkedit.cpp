@@ -18,17 +18,11 @@ using lrtest::checkDoUndoRedo;
 namespace {
 
 PartNames part(const QString& node, const QString& mesh, const QString& material) {
-    PartNames p;
-    p.node = node;
-    p.mesh = mesh;
-    p.material = material;
-    return p;
+    return PartNames::of(node, mesh, material);
 }
 
 PartNames groundPart() {
-    PartNames p;
-    p.ground = true;
-    return p;
+    return PartNames::theGround();
 }
 
 // Body: two meshes (metal, glass); Stand: metal; Lamp: a node named like a material of Body.

@@ -16,17 +16,11 @@ QByteArray rigJson3(const QByteArray& lights) {
 }
 
 PartNames part(const QString& node, const QString& mesh, const QString& material) {
-    PartNames p;
-    p.node = node;
-    p.mesh = mesh;
-    p.material = material;
-    return p;
+    return PartNames::of(node, mesh, material);
 }
 
 PartNames ground() {
-    PartNames p;
-    p.ground = true;
-    return p;
+    return PartNames::theGround();
 }
 
 // Body (node), Stand (node, sharing Body's material "Paint"), Glass, and the ground.
