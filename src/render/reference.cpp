@@ -54,7 +54,7 @@ EnvironmentConvergence convergenceOf(const ReferenceImage& r, const std::vector<
 // on): what SceneDescription::links() resolves for the same model and rig.
 LinkResolution referenceLinks(const Model& model, const Rig& rig) {
     std::vector<PartNames> parts = linkParts(&model, nullptr);
-    if (rig.ground.mode != GroundMode::Off) parts.push_back(PartNames{.ground = true});
+    if (rig.ground.mode != GroundMode::Off) parts.push_back(PartNames::theGround());
     return resolveLinks(rig.lights, parts);
 }
 
