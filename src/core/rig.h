@@ -4,6 +4,7 @@
 
 #include "environment.h"
 #include "lightlink.h"
+#include "lightshaping.h"
 #include "lighttypes.h"
 #include "types.h"
 
@@ -88,6 +89,11 @@ struct Light {
     Shadow shadow;                                // castsShadows()
     AreaShape area;                               // isArea()
     LightLink link; // which parts it lights and which cast its shadow (core/lightlink.h; format version 3)
+    // Shaping (issue 39, core/lightshaping.h): an IES profile (point, spot), a gobo (spot), barn doors
+    // (rect).
+    std::optional<IesSpec> ies;
+    std::optional<GoboSpec> gobo;
+    std::optional<BarnDoors> barnDoors;
 
     // What its type uses (lighttypes.h).
     bool usesPosition() const { return traitsOf(type).usesPosition; }
@@ -148,6 +154,10 @@ struct Rig {
     std::vector<RigView> views;  // named view bookmarks, names unique
     bool operator==(const Rig&) const = default;
 };
+
+// Every light's IES and gobo file resolved against the rig's folder (IesSpec::resolved): readRigFile does it
+// with the file's folder; whoever sets a file (the editor) or moves a rig does it again.
+void resolveLightFiles(Rig& rig, const QString& rigFolder);
 
 // A default-constructed light of the given type with sensible, valid parameters (used by "Add light").
 Light makeLight(LightType type, const QString& name);

@@ -67,7 +67,9 @@ RigReadResult readRigFile(const QString& filePath) {
     const QByteArray data = file.read(kMaxRigFileBytes + 1); // one byte more shows "too large" on pipes
     if (file.error() != QFileDevice::NoError)
         return fileError(filePath, QStringLiteral("cannot read: %1").arg(file.errorString()));
-    return readRigJson(data, filePath);
+    RigReadResult r = readRigJson(data, filePath);
+    if (r.rig) resolveLightFiles(*r.rig, info.absolutePath());
+    return r;
 }
 
 bool saveRigFile(const Rig& rig, const QString& filePath, QString* error) {

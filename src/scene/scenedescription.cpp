@@ -16,7 +16,9 @@ void SceneDescription::setModel(std::shared_ptr<const Model> model) {
 }
 
 void SceneDescription::setRig(const Rig& rig) {
+    const bool reload = !sameLightFiles(m_rig, rig) || m_assets.ies.size() != rig.lights.size();
     m_rig = rig;
+    if (reload) m_assets = loadLightAssets(m_rig);
     ++m_rigRevision;
     m_links.reset();
     updateGround();

@@ -11,6 +11,7 @@
 #include "core/prepare.h"
 #include "core/rig.h"
 #include "environmentloader.h"
+#include "lightassets.h"
 #include "model/model.h"
 
 #include <QFuture>
@@ -75,6 +76,9 @@ class SceneDescription {
     // Part index (scene/linkparts.h) of a model mesh and of a ground mesh.
     std::size_t modelPart(std::size_t mesh) const { return mesh; }
     std::size_t groundPart(std::size_t mesh) const;
+    // The IES profiles and gobo images the rig's lights name (scene/lightassets.h), per rig light; loaded by
+    // setRig when the files it names change (a light whose file fails renders unshaped; errors says why).
+    const LightAssets& lightAssets() const { return m_assets; }
 
   private:
     void updateGround();
@@ -90,6 +94,7 @@ class SceneDescription {
     int m_groundGeneration = -1; // ... over which model generation
     int m_groundRevision = 0;
     mutable std::optional<LinkResolution> m_links; // reset by setModel and setRig
+    LightAssets m_assets;
 };
 
 } // namespace lr
