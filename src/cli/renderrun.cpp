@@ -8,6 +8,7 @@
 #include "renderexr.h"
 
 #include "core/colour.h"
+#include "core/statistics.h"
 #include "render/offscreen.h"
 #include "render/rasterlayers.h"
 #include "scene/displayimage.h"
@@ -26,12 +27,6 @@
 namespace lr::cli {
 
 namespace {
-
-double median(std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
 
 // The end of the items [begin, end) before `limit` that share the value of `key` with items[begin].
 template <typename Key>
@@ -397,11 +392,11 @@ void Runner::timeFrames(const ViewCamera& camera, const RenderSettings& settings
                .arg(size.width())
                .arg(size.height())
                .arg(settings.msaaSamples)
-               .arg(median(wall), 0, 'f', 2)
+               .arg(median(wall, 0.0), 0, 'f', 2)
                .arg(*std::min_element(wall.begin(), wall.end()), 0, 'f', 2)
                .arg(*std::max_element(wall.begin(), wall.end()), 0, 'f', 2)
-               .arg(median(gpu), 0, 'f', 2)
-               .arg(median(cpu), 0, 'f', 2);
+               .arg(median(gpu, 0.0), 0, 'f', 2)
+               .arg(median(cpu, 0.0), 0, 'f', 2);
 }
 
 } // namespace

@@ -1,5 +1,6 @@
 #include "groupbench.h"
 
+#include "core/statistics.h"
 #include "offscreen.h"
 #include "rasterlayers.h"
 #include "referencelayers.h"
@@ -13,13 +14,6 @@
 namespace lr {
 
 namespace {
-
-double median(std::vector<double> v) {
-    if (v.empty()) return -1.0;
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 // Wall and process CPU ms of `frames` runs of `run` after `warmup` untimed ones (medians).
 template <typename F> bool timed(int warmup, int frames, double* wallMs, double* cpuMs, F&& run) {

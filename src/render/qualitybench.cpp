@@ -1,6 +1,7 @@
 #include "qualitybench.h"
 
 #include "benchestimate.h"
+#include "core/statistics.h"
 #include "offscreen.h"
 #include "reference.h"
 #include "scene/environmentloader.h"
@@ -20,13 +21,6 @@
 namespace lr {
 
 namespace {
-
-double median(std::vector<double> v) {
-    if (v.empty()) return -1.0;
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 RenderSettings tierSettings(const BenchOptions& o, Quality q, bool uber) {
     RenderSettings s;
