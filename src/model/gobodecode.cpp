@@ -142,8 +142,14 @@ std::shared_ptr<const GoboImage> decodeGoboImage(const QString& path, QString* e
     request.insert(QStringLiteral("path"), path);
     const qint64 maxBytes = ip::kEnvironmentHeaderSize + ip::kMaxErrorBytes +
                             qint64(kMaxGoboSide) * kMaxGoboSide * qint64(sizeof(glm::vec3));
+    // Fixed limits, not scaled to the file: a 55 KB PNG of 4096² texels needs ~350 MiB resident (the
+    // environment budget for that file, 544 MiB of address space, ran out).
+    ImportLimits limits;
+    limits.scaleWithInput = false;
+    limits.memoryBytes = kGoboWorkerMemory;
+    limits.timeoutMs = kGoboWorkerTimeoutMs;
     isolated::WorkerOutcome run = isolated::runWorker(
-        request, ImportLimits{}, -1, [](double) { return true; }, maxBytes, BudgetKind::Environment);
+        request, limits, -1, [](double) { return true; }, maxBytes, BudgetKind::Environment);
     if (!run.ok()) {
         if (run.fromWorker) { // the worker's own "PATH: reason"
             if (error) *error = run.failure;

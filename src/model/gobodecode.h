@@ -21,6 +21,9 @@
 namespace lr {
 
 inline constexpr qint64 kMaxGoboFileBytes = 256ll << 20;
+// The worker's address space and time for one gobo (enough for the largest image, 4096² from a 256 MiB file).
+inline constexpr qint64 kGoboWorkerMemory = 2ll << 30;
+inline constexpr int kGoboWorkerTimeoutMs = 60'000;
 
 // In this process (the worker's side, and tests): the image as an EnvironmentImage (texels = linear RGB
 // transmission), or `error` set ("PATH: reason"). Warnings begin with the file's name.

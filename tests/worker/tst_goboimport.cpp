@@ -68,6 +68,24 @@ class TestGoboImport : public QObject {
                 }
             }
     }
+    // The largest side accepted decodes within the worker's limits, from a small file (a checkerboard).
+    void largestImageDecodes() {
+        QTemporaryDir dir;
+        QImage img(kMaxGoboSide, kMaxGoboSide, QImage::Format_Grayscale8);
+        for (int y = 0; y < img.height(); ++y) {
+            uchar* row = img.scanLine(y);
+            for (int x = 0; x < img.width(); ++x)
+                row[x] = ((x / 512 + y / 512) % 2) ? 255 : 0;
+        }
+        const QString path = dir.filePath("big.png");
+        QVERIFY(img.save(path));
+        QString error;
+        const auto g = decodeGoboImage(path, &error);
+        QVERIFY2(g, qPrintable(error));
+        QCOMPARE(g->width, kMaxGoboSide);
+        QCOMPARE(g->rgb[0], 0.0f);
+        QCOMPARE(g->rgb[3 * 512], 1.0f);
+    }
     void exrClampedToOne() {
         QTemporaryDir dir;
         const float rgba[2 * 4] = {0.25f, 0.5f, 4.0f, 1.0f, 0.0f, 1.0f, 0.75f, 1.0f};
