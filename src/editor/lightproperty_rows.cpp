@@ -126,31 +126,6 @@ LightPropertyInfo falloffRow(LightProperty id, const char* name, const char* lab
             .set = setFalloffValue<Key>};
 }
 
-// Issue 39: a spot's gobo. Its file names it ("" removes it); scale and rotation show while it has one.
-bool hasGobo(const Light& l) {
-    return l.gobo.has_value();
-}
-
-QString checkGoboFile(const LightPropertyInfo&, const QVariant& v) {
-    if (v.metaType().id() != QMetaType::QString) return QStringLiteral("gobo file must be text");
-    const QString s = v.toString();
-    if (s.size() > 4096)
-        return QStringLiteral("gobo file must be at most 4096 characters, got %1").arg(s.size());
-    if (s.contains(QChar(0))) return QStringLiteral("gobo file must not contain a NUL character");
-    return {};
-}
-
-void setGoboFile(Light& l, const QVariant& v) {
-    const QString file = v.toString().trimmed();
-    if (file.isEmpty()) {
-        l.gobo.reset();
-        return;
-    }
-    if (!l.gobo) l.gobo = GoboSpec{};
-    if (l.gobo->file != file) l.gobo->resolved.clear(); // resolved again against the rig's folder on save
-    l.gobo->file = file;
-}
-
 bool shadowOn(const Light& l) {
     return l.shadow.enabled;
 }
@@ -599,49 +574,6 @@ const LightPropertyInfo kLightProperties[] = {
      .shown = shadowOn,
      .get = [](const Light& l) { return QVariant(l.shadow.angle); },
      .set = [](Light& l, const QVariant& v) { l.shadow.angle = number(v, l.shadow.angle); }},
-    {.id = P::GoboFile,
-     .name = QT_TRANSLATE_NOOP("lr::LightProperty", "gobo file"),
-     .label = QT_TRANSLATE_NOOP("lr::LightProperty", "Gobo file"),
-     .key = "goboFile",
-     .jsonField = "gobo.file",
-     .kind = K::Text,
-     .usedBy = &T::usesCone,
-     .check = checkGoboFile,
-     .get = [](const Light& l) { return QVariant(l.gobo ? l.gobo->file : QString()); },
-     .set = setGoboFile},
-    {.id = P::GoboScale,
-     .name = QT_TRANSLATE_NOOP("lr::LightProperty", "gobo scale"),
-     .label = QT_TRANSLATE_NOOP("lr::LightProperty", "Gobo scale"),
-     .key = "goboScale",
-     .jsonField = "gobo.scale",
-     .kind = K::Number,
-     .min = 0.01,
-     .max = 100.0,
-     .unit = "× the cone's width",
-     .usedBy = &T::usesCone,
-     .shown = hasGobo,
-     .get = [](const Light& l) { return QVariant(l.gobo ? l.gobo->scale : 1.0); },
-     .set =
-         [](Light& l, const QVariant& v) {
-             if (l.gobo) l.gobo->scale = number(v, l.gobo->scale);
-         }},
-    {.id = P::GoboRotation,
-     .name = QT_TRANSLATE_NOOP("lr::LightProperty", "gobo rotation"),
-     .label = QT_TRANSLATE_NOOP("lr::LightProperty", "Gobo rotation"),
-     .key = "goboRotation",
-     .jsonField = "gobo.rotation",
-     .kind = K::Number,
-     .min = -360.0,
-     .max = 360.0,
-     .unit = "degrees",
-     .suffix = "°",
-     .usedBy = &T::usesCone,
-     .shown = hasGobo,
-     .get = [](const Light& l) { return QVariant(l.gobo ? l.gobo->rotation : 0.0); },
-     .set =
-         [](Light& l, const QVariant& v) {
-             if (l.gobo) l.gobo->rotation = number(v, l.gobo->rotation);
-         }},
 };
 static_assert(
     [] {
@@ -650,7 +582,8 @@ static_assert(
         return true;
     }(),
     "the emitter size row applies to the types with a position: they must all cast shadows");
-static_assert(std::size(kLightProperties) + 1 == size_t(kLightPropertyCount), "one row per LightProperty");
+static_assert(std::size(kLightProperties) + 1 + kGoboLightPropertyCount == size_t(kLightPropertyCount),
+              "one row per LightProperty");
 
 } // namespace
 
