@@ -9,6 +9,7 @@
 #include "model/environmentdecode.h"
 #include "model/exrdecode.h"
 #include "model/gltfexport.h"
+#include "model/gobodecode.h"
 #include "model/importbudget.h"
 #include "model/importprotocol.h"
 #include "model/modelcodec.h"
@@ -164,8 +165,8 @@ bool sendShared(int fd, const Model& model) {
 
 // An environment image: the 'V' frame (importprotocol.h) or the decoder's error. The texels go out
 // from the image itself (encodeEnvironmentReply's layout without its copy: half the worker's memory).
-[[noreturn]] void sendEnvironment(const QString& path) {
-    const EnvironmentDecodeResult result = decodeEnvironmentFile(path);
+// A gobo's image (model/gobodecode.h) goes back the same way.
+[[noreturn]] void sendEnvironment(const EnvironmentDecodeResult& result) {
     bool sent;
     if (result.ok()) {
         EnvironmentImage empty;
@@ -290,14 +291,16 @@ int runImportWorker(const QStringList&) {
     const int sharedFd = request.value(QStringLiteral("sharedFd")).toInt(-1);
     std::mutex writing;
     const QString kind = request.value(QStringLiteral("kind")).toString();
-    const bool environment = kind == QLatin1String("environment");
+    const bool environment =
+        kind == QLatin1String("environment") || kind == QLatin1String(ip::kGoboKind); // the same budget
     const bool exrLayers = kind == QLatin1String(ip::kExrLayersKind);
     followInputBudget(environment ? BudgetKind::Environment
                       : exrLayers ? BudgetKind::ExrLayers
                                   : BudgetKind::Model,
                       writing);
     if (const QByteArray mode = qgetenv(ip::kTestCrashVariable); !mode.isEmpty()) testCrash(mode, sharedFd);
-    if (environment) sendEnvironment(path);
+    if (kind == QLatin1String(ip::kGoboKind)) sendEnvironment(decodeGoboFile(path));
+    if (environment) sendEnvironment(decodeEnvironmentFile(path));
     if (exrLayers) sendExrLayers(path);
     if (kind == QLatin1String("gltf-export")) sendGltf(path);
 

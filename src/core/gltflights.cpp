@@ -39,6 +39,9 @@ const ExportLossInfo kExportLosses[int(ExportLoss::Count)] = {
     {ExportLoss::Link, "link", "Linking",
      "the rig's \"link\" in the light node's extras.lightrig.link (glTF lights light every part and every "
      "part casts their shadows; other viewers ignore it)"},
+    {ExportLoss::Gobo, "gobo", "Gobo",
+     "the rig's \"gobo\" in the light node's extras.lightrig.gobo (the spot lights its whole cone in "
+     "other viewers; the image file is named, not embedded)"},
 };
 
 const ExportLossInfo& exportLossInfo(ExportLoss kind) {
@@ -282,6 +285,14 @@ GltfRigExport convertRigToGltf(const Rig& rig, const SceneFrame& frame, const gl
         g.color = m > 0.0 ? c / m : glm::dvec3(0.0);
         g.intensity *= m > 0.0 ? m : 1.0;
         noteLink(l, &g, out.losses);
+        if (l.gobo && l.type == LightType::Spot) {
+            g.gobo = {{QStringLiteral("file"), l.gobo->file},
+                      {QStringLiteral("scale"), l.gobo->scale},
+                      {QStringLiteral("rotation"), l.gobo->rotation}};
+            out.losses.push_back({ExportLoss::Gobo, l.name,
+                                  QStringLiteral("gobo %1 (scale %2, rotation %3°)")
+                                      .arg(l.gobo->file, num(l.gobo->scale), num(l.gobo->rotation))});
+        }
         out.lights.push_back(g);
     }
     if (rig.ambient != glm::dvec3(0.0))
@@ -345,9 +356,11 @@ QJsonObject GltfLight::nodeJson(int lightIndex) const {
         {QStringLiteral("extensions"), QJsonObject{{QStringLiteral("KHR_lights_punctual"),
                                                     QJsonObject{{QStringLiteral("light"), lightIndex}}}}}};
     setTransform(node, translation, rotation);
-    if (!link.isEmpty())
-        node.insert(QStringLiteral("extras"),
-                    QJsonObject{{QStringLiteral("lightrig"), QJsonObject{{QStringLiteral("link"), link}}}});
+    QJsonObject lightrig;
+    if (!link.isEmpty()) lightrig.insert(QStringLiteral("link"), link);
+    if (!gobo.isEmpty()) lightrig.insert(QStringLiteral("gobo"), gobo);
+    if (!lightrig.isEmpty())
+        node.insert(QStringLiteral("extras"), QJsonObject{{QStringLiteral("lightrig"), lightrig}});
     return node;
 }
 

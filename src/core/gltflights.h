@@ -42,6 +42,7 @@ enum class ExportLoss {
     Environment,  // environment lighting (glTF has none)
     Ground,       // the ground plane or shadow catcher
     Link,         // light and shadow linking (issue 38): glTF has none
+    Gobo,         // a spot's gobo (issue 39): glTF has no projected images
     Count
 };
 
@@ -77,6 +78,7 @@ struct GltfLight {
     glm::dvec3 translation{0.0};
     glm::dquat rotation{1.0, 0.0, 0.0, 0.0}; // local -Z onto the light's direction
     QJsonObject link; // the rig's "link" (issue 38), written in the node's extras.lightrig.link; empty: none
+    QJsonObject gobo; // the rig's "gobo" (issue 39), written in the node's extras.lightrig.gobo; empty: none
     QJsonObject lightJson() const; // the extension's light object
     QJsonObject nodeJson(int lightIndex) const;
 };

@@ -1,6 +1,7 @@
 #include "prepare.h"
 
 #include "fallofftraits.h"
+#include "gobo.h"
 
 #include <glm/gtc/constants.hpp>
 #include <glm/trigonometric.hpp>
@@ -77,6 +78,12 @@ lighting::ShadeLight<double> prepareLight(const Rig& rig, const SceneFrame& fram
         o.cosOuter = std::cos(o.outer);
         o.cosInner = std::cos(glm::radians(light.cone.inner));
         o.coneExponent = light.cone.exponent;
+    }
+    if (light.gobo && light.type == LightType::Spot) { // the image itself is attached by the renderer
+        const AreaAxes a = areaAxes(light.direction, light.gobo->rotation);
+        o.axisX = transformDirection(view, a.x);
+        o.axisY = transformDirection(view, a.y);
+        o.goboHalf = gobo::halfExtent(o.outer, light.gobo->scale);
     }
     o.diffuse = light.diffuse;
     o.rimExponent = light.rimExponent;

@@ -131,6 +131,13 @@ int formatVersionFor(const Rig& rig);
 constexpr int kLinkFormatVersion = 3;
 std::optional<LightLink> readLink(Checker& c, const json::Value& v, const QString& path, int version);
 std::optional<QByteArray> writeLink(const LightLink& link);
+// rigjson_gobo.cpp: a spot light's "gobo" (issue 39, format version 4); nullopt when invalid (errors
+// reported), and its canonical text.
+constexpr int kGoboFormatVersion = 4;
+constexpr int kMaxGoboPathLength = 4096;
+constexpr double kMinGoboScale = 0.01, kMaxGoboScale = 100.0;
+std::optional<GoboSpec> readGobo(Checker& c, const json::Value& v, const QString& path, int version);
+QByteArray writeGobo(const GoboSpec& g);
 // rigjson_environment.cpp: the rig's "environment" (nullopt when invalid, errors reported), and its canonical
 // text (nullopt for the default environment, which is not written).
 std::optional<Environment> readEnvironment(Checker& c, const json::Value& v, const QString& path);

@@ -155,6 +155,13 @@ std::optional<Light> readLight(Checker& c, const Value& v, const QString& path, 
     }
     if (const Value* k = o.take("link"))
         if (const auto link = rigjson::readLink(c, *k, o.path("link"), version)) l.link = *link;
+    if (!type || *type == LightType::Spot) {
+        if (const Value* g = o.take("gobo"))
+            if (const auto gobo = rigjson::readGobo(c, *g, o.path("gobo"), version)) l.gobo = *gobo;
+    } else {
+        o.reject("gobo",
+                 QStringLiteral("only spot lights have a gobo (an image projected through the cone)"));
+    }
     rejectMisplaced(o, false, false, a, is(&Light::usesFalloff), is(&Light::usesCone));
     o.finish();
     return type ? std::optional(l) : std::nullopt;

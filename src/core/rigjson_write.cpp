@@ -126,6 +126,7 @@ QByteArray light(const Light& l) {
     if (l.usesRimExponent()) f.push_back({"exponent", num(l.rimExponent)});
     if (const auto s = shadow(l)) f.push_back({"shadow", *s});
     if (const auto k = rigjson::writeLink(l.link)) f.push_back({"link", *k});
+    if (l.gobo && l.type == LightType::Spot) f.push_back({"gobo", rigjson::writeGobo(*l.gobo)});
     return blockObject(f, "    ");
 }
 

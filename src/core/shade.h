@@ -3,6 +3,7 @@
 // twin of shaders/shade.glsl's shadeLight()/shadeSurface().
 #pragma once
 
+#include "gobo.h"
 #include "lighting.h"
 #include "lighting_area.h"
 #include "lighttypes.h"
@@ -38,6 +39,12 @@ template <typename T> T evalCone(const ShadeLight<T>& l, T cosTheta) {
         return coneHard(cosTheta, l.cosOuter);
     }
     return T(0);
+}
+
+// A spot's gobo tint for the direction L (surface to light): 1 without a gobo (core/gobo.h).
+template <typename T> Vec3<T> goboTint(const ShadeLight<T>& l, const Vec3<T>& L) {
+    if (!l.gobo) return Vec3<T>(1);
+    return gobo::tint(*l.gobo, -L, l.direction, l.axisX, l.axisY, l.goboHalf);
 }
 
 template <typename T> Vec3<T> viewVector(const ShadeSettings<T>& s, const Vec3<T>& P) {
@@ -84,8 +91,9 @@ Vec3<T> shadeLight(const ShadeLight<T>& l, const Surface<T>& s, const ShadeSetti
     if (nDotL > T(0))
         S = st.specular == SpecularModel::Phong ? specularPhong(N, L, V, s.shininess)
                                                 : specularBlinnPhong(N, L, V, s.shininess);
-    return attenuation *
-           (visibility * (l.color * s.albedo * D + l.specular * s.specular * S) + l.ambient * s.albedo);
+    const Vec3<T> c = attenuation * (visibility * (l.color * s.albedo * D + l.specular * s.specular * S) +
+                                     l.ambient * s.albedo);
+    return l.gobo ? c * goboTint(l, L) : c;
 }
 
 // Radiance one light adds at the surface under physically based shading (docs/lighting-models.md):
@@ -106,8 +114,9 @@ Vec3<T> shadeLightPbr(const ShadeLight<T>& l, const Surface<T>& s, const ShadeSe
     const T nDotL = glm::dot(N, L);
     const T cosTerm = l.diffuse == DiffuseModel::Lambert ? diffuseLambert(nDotL) : diffuseHalfLambert(nDotL);
     const PbrLobes<T> f = pbrLobes(N, L, V, cDiff, f0, alpha, cosTerm);
-    return attenuation * (visibility * (l.color * f.diffuse + l.specular * f.specular) +
-                          l.ambient * cDiff * (saturate(s.occlusion) * T(1.0 / kPi)));
+    const Vec3<T> c = attenuation * (visibility * (l.color * f.diffuse + l.specular * f.specular) +
+                                     l.ambient * cDiff * (saturate(s.occlusion) * T(1.0 / kPi)));
+    return l.gobo ? c * goboTint(l, L) : c;
 }
 
 // Scene ambient + every light + emissive. `visibility`: empty (every light unshadowed) or one value per

@@ -5,6 +5,10 @@
 #include "lighting.h"
 #include "types.h"
 
+namespace lr {
+struct GoboImage;
+}
+
 namespace lr::lighting {
 
 // One light prepared for evaluation: view-space geometry, intensity and temperature folded into colours,
@@ -28,6 +32,10 @@ template <typename T> struct ShadeLight {
     Vec3<T> axisX{1, 0, 0}, axisY{0, 1, 0};
     T halfWidth = T(0), halfHeight = T(0);
     bool twoSided = false;
+    // A spot's gobo (issue 39, core/gobo.h): the image (not owned; nullptr: none), its half extent
+    // h = tan(outer) × scale; axisX, axisY are then its frame (areaAxes(direction, gobo rotation)).
+    const GoboImage* gobo = nullptr;
+    T goboHalf = T(1);
 };
 
 template <typename T> struct Surface {

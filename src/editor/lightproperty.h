@@ -84,6 +84,9 @@ enum class LightProperty {
     AreaRoll,     // rect and disk: degrees about the direction, -180 ... 180
     AreaTwoSided, // rect and disk: bool
     Link,         // issue 38: which parts it lights and which cast its shadow (editor/linkedit.h)
+    GoboFile,     // issue 39, spot: the gobo's image (core/lightshaping.h GoboSpec); "" = no gobo
+    GoboScale,    // spot with a gobo: 0.01 ... 100 × the cone's width
+    GoboRotation, // spot with a gobo: degrees about the axis, -360 ... 360
     Any           // not a property: "several or all values of the light changed" (in RigChange only)
 };
 constexpr int kLightPropertyCount = int(LightProperty::Any);

@@ -1,4 +1,4 @@
-// The light-property table's two halves, which lightProperties() (lightproperty_link.cpp) joins in the
+// The light-property table's parts, which lightProperties() (lightproperty_link.cpp) joins in the
 // Properties dock's order: the value rows (lightproperty_rows.cpp) and the linking row (issue 38).
 #pragma once
 
@@ -8,5 +8,8 @@ namespace lr {
 
 std::span<const LightPropertyInfo> valueLightProperties(); // every row but Link
 const LightPropertyInfo& linkLightProperty();
+// A spot's gobo (issue 39, lightproperty_gobo.cpp): file, scale, rotation; between the values and Link.
+inline constexpr std::size_t kGoboLightPropertyCount = 3;
+std::span<const LightPropertyInfo> goboLightProperties();
 
 } // namespace lr

@@ -5,7 +5,8 @@
 //   {"path": "...", "allowTexturesOutsideFolder": false, "maxDataUriBytes": 67108864, "sharedFd": 5}
 // or, for an environment image (model/environmentdecode.h), {"kind": "environment", "path": "..."}, or for
 // Assimp's glTF export of a model (model/gltfexport.h), {"kind": "gltf-export", "path": "..."}, or for a
-// multi-layer OpenEXR file (model/exrdecode.h), {"kind": "exr-layers", "path": "..."}.
+// multi-layer OpenEXR file (model/exrdecode.h), {"kind": "exr-layers", "path": "..."}, or for a gobo's
+// image (model/gobodecode.h), {"kind": "gobo", "path": "..."} (answered with a 'V' frame).
 // sharedFd (optional): a memfd the parent created and let this worker inherit; the worker writes the
 // encoded model there from offset 0 and answers 'S', or falls back to 'M' when it cannot.
 // Reply (worker -> parent, stdout): frames of  u8 type, u64 payload length (host order), payload:
@@ -39,6 +40,7 @@ inline constexpr char kInputBytes = 'B';
 inline constexpr int kEnvironmentHeaderSize = 12;
 inline constexpr int kFrameHeaderSize = 9;
 inline constexpr char kExrLayersKind[] = "exr-layers"; // the request's "kind"
+inline constexpr char kGoboKind[] = "gobo";
 
 inline constexpr quint8 kErrorCancelled = 1;
 inline constexpr quint8 kErrorOutOfMemory = 2;

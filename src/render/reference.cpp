@@ -62,7 +62,8 @@ std::optional<ReferenceScene> makeScene(const Model& model, const Rig& rig, cons
                                         const glm::dmat4& view, const RenderSettings& settings,
                                         QString* error,
                                         const std::shared_ptr<const LoadedEnvironment>& environment,
-                                        const LinkResolution& links);
+                                        const LinkResolution& links,
+                                        const std::vector<std::shared_ptr<const GoboImage>>& gobos);
 
 } // namespace
 
@@ -80,14 +81,14 @@ std::optional<ReferenceScene>
 makeReferenceScene(const Model& model, const Rig& rig, const SceneFrame& frame, const glm::dmat4& view,
                    const RenderSettings& settings, QString* error,
                    const std::shared_ptr<const LoadedEnvironment>& environment) {
-    return makeScene(model, rig, frame, view, settings, error, environment, referenceLinks(model, rig));
+    return makeScene(model, rig, frame, view, settings, error, environment, referenceLinks(model, rig), {});
 }
 
 std::optional<ReferenceScene> makeReferenceScene(const SceneDescription& scene, const glm::dmat4& view,
                                                  const RenderSettings& settings, QString* error) {
     static const Model none;
     return makeScene(scene.model() ? *scene.model() : none, scene.rig(), scene.frame(), view, settings, error,
-                     scene.environment(), scene.links());
+                     scene.environment(), scene.links(), scene.lightAssets().gobos);
 }
 
 namespace {
@@ -107,7 +108,8 @@ std::optional<ReferenceScene> makeScene(const Model& model, const Rig& rig, cons
                                         const glm::dmat4& view, const RenderSettings& settings,
                                         QString* error,
                                         const std::shared_ptr<const LoadedEnvironment>& environment,
-                                        const LinkResolution& links) {
+                                        const LinkResolution& links,
+                                        const std::vector<std::shared_ptr<const GoboImage>>& gobos) {
     ReferenceScene s;
     s.lights = prepareLights(rig, frame, view);
     s.settings = prepareSettings(rig, frame);
@@ -120,6 +122,12 @@ std::optional<ReferenceScene> makeScene(const Model& model, const Rig& rig, cons
         if (rig.lights[i].enabled) {
             s.emitters.push_back(shadowEmitter(rig, frame, rig.lights[i]));
             rigIndex.push_back(i);
+        }
+    for (size_t k = 0; k < rigIndex.size() && k < s.lights.size(); ++k) // gobos before the per-class copies
+        if (const size_t i = rigIndex[k];
+            i < gobos.size() && gobos[i] && rig.lights[i].gobo && rig.lights[i].type == LightType::Spot) {
+            s.lights[k].gobo = gobos[i].get();
+            s.gobos.push_back(gobos[i]);
         }
     if (links.active && rigIndex.size() == s.lights.size()) {
         for (size_t k = 0; k < rigIndex.size(); ++k)

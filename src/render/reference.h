@@ -29,6 +29,7 @@
 #pragma once
 
 #include "core/envintegrate.h"
+#include "core/gobo.h"
 #include "core/imagecompare.h"
 #include "core/prepare.h"
 #include "floatimage.h"
@@ -83,6 +84,8 @@ struct ReferenceScene {
     // the model's meshes, then the ground), its lighting class.
     std::vector<std::vector<lighting::ShadeLight<double>>> lightsOfClass;
     std::vector<std::uint8_t> litClass;
+    // The gobo images lights[k].gobo points into (issue 39, core/gobo.h), kept alive with the scene.
+    std::vector<std::shared_ptr<const GoboImage>> gobos;
     bool linked() const { return !lightsOfClass.empty(); }
     // The lights a point of `part` is shaded with: `lights` without linking or for an unknown part (-1).
     std::span<const lighting::ShadeLight<double>> lightsAt(int part) const {

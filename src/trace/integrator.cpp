@@ -109,9 +109,10 @@ glm::dvec3 directLight(const Vertex& v) {
         glm::dvec3 L;
         double attenuation;
         if (!lighting::lightArrival(l, surf, scene.settings(), &L, &attenuation)) continue;
-        add(attenuation * l.ambient * cDiff, light.group);
+        const glm::dvec3 tint = lighting::goboTint(l, L); // issue 39: 1 without a gobo
+        add(attenuation * l.ambient * cDiff * tint, light.group);
         const lighting::PbrLobes<double> f = bsdf.lobes(L, cosineTerm(l.diffuse, glm::dot(N, L)));
-        const glm::dvec3 c = attenuation * (l.color * f.diffuse + l.specular * f.specular);
+        const glm::dvec3 c = attenuation * tint * (l.color * f.diffuse + l.specular * f.specular);
         if (!(maxOf(c) > 0.0)) continue;
         double distance = kInfinity;
         const glm::dvec3 w = shadowTarget(light, s.position, L, v.sampler, &distance);
@@ -188,7 +189,8 @@ double catcherLight(const TraceScene& scene, const glm::dvec3& p, Sampler& sampl
             glm::dvec3 L;
             double attenuation;
             if (!lighting::lightArrival(l, surf, scene.settings(), &L, &attenuation)) continue;
-            e = attenuation * luminance(l.color) * lighting::saturate(glm::dot(up, L));
+            e = attenuation * luminance(l.color * lighting::goboTint(l, L)) *
+                lighting::saturate(glm::dot(up, L));
             w = shadowTarget(light, p, L, sampler, &distance);
         }
         if (!(e > 0.0) || !std::isfinite(e)) continue;

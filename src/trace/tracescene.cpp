@@ -124,6 +124,11 @@ std::shared_ptr<const TraceScene> TraceScene::build(const SceneDescription& scen
         TraceLight l;
         l.group = orBackground(groupOf[i]);
         l.shade = prepareLight(rig, frame, glm::dmat4(1.0), light);
+        if (const auto& gobos = scene.lightAssets().gobos; // issue 39: kept alive by the scene
+            light.gobo && light.type == LightType::Spot && i < gobos.size() && gobos[i]) {
+            l.shade.gobo = gobos[i].get();
+            t->m_gobos.push_back(gobos[i]);
+        }
         l.emitter = shadowEmitter(rig, frame, light);
         l.emitter.casts = true; // every light is occluded in the traced image, as the environment is
         if (links.active) l.litMask = links.litMask[i], l.emitter.shadowMask = links.shadowMask[i];

@@ -53,7 +53,7 @@ QSet<QString> expectedFields(LightType type, FalloffModel falloff, ConeModel con
     }
     if (type != LightType::Point) f += "direction";
     if (type == LightType::Spot) {
-        f += "coneModel";
+        f += {"coneModel", "goboFile"}; // issue 39: scale and rotation only once it has a gobo
         switch (cone) {
         case ConeModel::AnglePower:
             f += {"coneOuter", "coneExponent"};
@@ -113,7 +113,10 @@ const QStringList kAllFields{"name",
                              "areaHeight",
                              "areaRadius",
                              "areaRoll",
-                             "areaTwoSided"};
+                             "areaTwoSided",
+                             "goboFile",
+                             "goboScale",
+                             "goboRotation"};
 
 QSet<QString> visibleFields(PropertiesDock& dock) {
     QSet<QString> out;

@@ -232,6 +232,32 @@ class TestGltfLights : public QObject {
         QVERIFY(!e.lights[2].nodeJson(2).contains(QStringLiteral("extras")));
     }
 
+    // Issue 39: glTF has no gobos; the spot's gobo goes into its node's extras, beside a link, and is
+    // reported.
+    void goboGoesIntoTheNodesExtras() {
+        Light spot = makeLight(LightType::Spot, QStringLiteral("Window"));
+        spot.gobo = GoboSpec{QStringLiteral("gobos/window.png"), {}, 0.5, 30.0};
+        spot.link.lit.include = {QStringLiteral("Body")};
+        const Light plain = makeLight(LightType::Spot, QStringLiteral("Plain"));
+        const GltfRigExport e = convertRigToGltf(pbrRig({spot, plain}), {});
+        QCOMPARE(count(e, ExportLoss::Gobo), 1);
+        const QJsonObject lightrig = e.lights[0]
+                                         .nodeJson(0)
+                                         .value(QStringLiteral("extras"))
+                                         .toObject()
+                                         .value(QStringLiteral("lightrig"))
+                                         .toObject();
+        const QJsonObject gobo = lightrig.value(QStringLiteral("gobo")).toObject();
+        QCOMPARE(gobo.value(QStringLiteral("file")).toString(), QStringLiteral("gobos/window.png"));
+        QCOMPARE(gobo.value(QStringLiteral("scale")).toDouble(), 0.5);
+        QCOMPARE(gobo.value(QStringLiteral("rotation")).toDouble(), 30.0);
+        QVERIFY(lightrig.contains(QStringLiteral("link")));
+        QVERIFY(!e.lights[1].nodeJson(1).contains(QStringLiteral("extras")));
+        for (const LossyConversion& loss : e.losses)
+            if (loss.kind == ExportLoss::Gobo)
+                QVERIFY(describeLoss(loss).contains(QStringLiteral("gobos/window.png")));
+    }
+
     void rigLevelLossesAndNote() {
         Rig rig = pbrRig({});
         rig.ambient = glm::dvec3(0.25);

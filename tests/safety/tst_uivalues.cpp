@@ -44,6 +44,7 @@ Rig everyFieldRig() {
     a.cone = {ConeModel::Smooth, 20, 35, 2};
     a.falloff = {FalloffModel::RangePower, 10.0, 2.0, 1.0, 0.0, 0.0};
     a.ambient = glm::dvec3(0.1);
+    a.gobo = GoboSpec{QStringLiteral("gobo.png"), {}, 1.0, 0.0}; // issue 39: its scale and rotation
     Light b = makeLight(LightType::Point, QStringLiteral("point polynomial"));
     b.falloff = {FalloffModel::InversePolynomial, 20.0, 2.0, 1.0, 0.5, 0.25};
     b.temperature = 3000.0;
