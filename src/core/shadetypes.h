@@ -28,6 +28,9 @@ template <typename T> struct ShadeLight {
     Vec3<T> axisX{1, 0, 0}, axisY{0, 1, 0};
     T halfWidth = T(0), halfHeight = T(0);
     bool twoSided = false;
+    // Barn doors (rect; issue 39, core/barndoors.h): the flaps' far edge `barnDepth` in front of the emitter
+    // and `barnExtent` outside its edges, view units; barnDepth 0: none.
+    T barnDepth = T(0), barnExtent = T(0);
 };
 
 template <typename T> struct Surface {
