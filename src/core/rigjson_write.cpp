@@ -126,6 +126,8 @@ QByteArray light(const Light& l) {
     if (l.usesRimExponent()) f.push_back({"exponent", num(l.rimExponent)});
     if (const auto s = shadow(l)) f.push_back({"shadow", *s});
     if (const auto k = rigjson::writeLink(l.link)) f.push_back({"link", *k});
+    if (l.barnDoors && l.type == LightType::Rect)
+        f.push_back({"barnDoors", rigjson::writeBarnDoors(*l.barnDoors)});
     return blockObject(f, "    ");
 }
 
