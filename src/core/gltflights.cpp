@@ -39,6 +39,10 @@ const ExportLossInfo kExportLosses[int(ExportLoss::Count)] = {
     {ExportLoss::Link, "link", "Linking",
      "the rig's \"link\" in the light node's extras.lightrig.link (glTF lights light every part and every "
      "part casts their shadows; other viewers ignore it)"},
+    {ExportLoss::BarnDoors, "barn-doors", "Barn doors",
+     "the rig's \"barnDoors\" in the light node's extras.lightrig.barnDoors (the stand-in spot lights its "
+     "whole "
+     "90° cone; other viewers ignore it)"},
 };
 
 const ExportLossInfo& exportLossInfo(ExportLoss kind) {
@@ -234,6 +238,13 @@ GltfRigExport convertRigToGltf(const Rig& rig, const SceneFrame& frame, const gl
         if (l.isArea() && l.enabled) {
             GltfLight g = areaStandIn(rig, frame, fileFromWorld, l, out.losses);
             noteLink(l, &g, out.losses);
+            if (l.type == LightType::Rect && l.barnDoors) { // issue 39: kept for LightRig, listed as lost
+                g.barnDoors = QJsonObject{{QStringLiteral("angle"), l.barnDoors->angle},
+                                          {QStringLiteral("length"), l.barnDoors->length}};
+                out.losses.push_back({ExportLoss::BarnDoors, l.name,
+                                      QStringLiteral("angle %1°, length %2")
+                                          .arg(num(l.barnDoors->angle), num(l.barnDoors->length))});
+            }
             out.lights.push_back(g);
             continue;
         }
@@ -345,9 +356,11 @@ QJsonObject GltfLight::nodeJson(int lightIndex) const {
         {QStringLiteral("extensions"), QJsonObject{{QStringLiteral("KHR_lights_punctual"),
                                                     QJsonObject{{QStringLiteral("light"), lightIndex}}}}}};
     setTransform(node, translation, rotation);
-    if (!link.isEmpty())
-        node.insert(QStringLiteral("extras"),
-                    QJsonObject{{QStringLiteral("lightrig"), QJsonObject{{QStringLiteral("link"), link}}}});
+    QJsonObject lightrig;
+    if (!link.isEmpty()) lightrig.insert(QStringLiteral("link"), link);
+    if (!barnDoors.isEmpty()) lightrig.insert(QStringLiteral("barnDoors"), barnDoors);
+    if (!lightrig.isEmpty())
+        node.insert(QStringLiteral("extras"), QJsonObject{{QStringLiteral("lightrig"), lightrig}});
     return node;
 }
 

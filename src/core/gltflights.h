@@ -42,6 +42,7 @@ enum class ExportLoss {
     Environment,  // environment lighting (glTF has none)
     Ground,       // the ground plane or shadow catcher
     Link,         // light and shadow linking (issue 38): glTF has none
+    BarnDoors,    // a rect light's barn doors (issue 39): glTF has none
     Count
 };
 
@@ -77,6 +78,8 @@ struct GltfLight {
     glm::dvec3 translation{0.0};
     glm::dquat rotation{1.0, 0.0, 0.0, 0.0}; // local -Z onto the light's direction
     QJsonObject link; // the rig's "link" (issue 38), written in the node's extras.lightrig.link; empty: none
+    QJsonObject
+        barnDoors; // a rect's "barnDoors" (issue 39), in the node's extras.lightrig.barnDoors; empty: none
     QJsonObject lightJson() const; // the extension's light object
     QJsonObject nodeJson(int lightIndex) const;
 };

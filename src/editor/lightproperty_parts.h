@@ -8,5 +8,6 @@ namespace lr {
 
 std::span<const LightPropertyInfo> valueLightProperties(); // every row but Link
 const LightPropertyInfo& linkLightProperty();
+std::span<const LightPropertyInfo> barnDoorLightProperties(); // lightproperty_barndoors.cpp (issue 39)
 
 } // namespace lr
