@@ -76,18 +76,20 @@ enum class LightProperty {
     ShadowResolution,
     ShadowBias,
     ShadowNormalOffset,
-    ShadowSize,     // point and spot: the emitter's diameter in rig units
-    ShadowAngle,    // directional: the emitter's angular diameter in degrees
-    AreaWidth,      // rect (issue 16; core/rig.h AreaShape): rig units, >= 0
-    AreaHeight,     // rect
-    AreaRadius,     // disk
-    AreaRoll,       // rect and disk: degrees about the direction, -180 ... 180
-    AreaTwoSided,   // rect and disk: bool
-    BarnDoors,      // rect (issue 39; core/barndoors.h): bool, whether it has barn doors
-    BarnDoorAngle,  // rect: degrees, 0 ... 90 (UE5's: 0 straight out, 90 in the emitter's plane)
-    BarnDoorLength, // rect: rig units, >= 0
-    Link,           // issue 38: which parts it lights and which cast its shadow (editor/linkedit.h)
-    Any             // not a property: "several or all values of the light changed" (in RigChange only)
+    ShadowSize,   // point and spot: the emitter's diameter in rig units
+    ShadowAngle,  // directional: the emitter's angular diameter in degrees
+    AreaWidth,    // rect (issue 16; core/rig.h AreaShape): rig units, >= 0
+    AreaHeight,   // rect
+    AreaRadius,   // disk
+    AreaRoll,     // rect and disk: degrees about the direction, -180 ... 180
+    AreaTwoSided, // rect and disk: bool
+    // Barn doors (issue 39; core/barndoors.h), rect only: whether it has them (bool), their angle (degrees,
+    // 0 ... 90; UE5's: 0 straight out, 90 in the emitter's plane) and their length (rig units, >= 0).
+    BarnDoors,
+    BarnDoorAngle,
+    BarnDoorLength,
+    Link, // issue 38: which parts it lights and which cast its shadow (editor/linkedit.h)
+    Any   // not a property: "several or all values of the light changed" (in RigChange only)
 };
 constexpr int kLightPropertyCount = int(LightProperty::Any);
 
