@@ -78,8 +78,8 @@ struct GltfLight {
     glm::dvec3 translation{0.0};
     glm::dquat rotation{1.0, 0.0, 0.0, 0.0}; // local -Z onto the light's direction
     QJsonObject link; // the rig's "link" (issue 38), written in the node's extras.lightrig.link; empty: none
-    QJsonObject
-        barnDoors; // a rect's "barnDoors" (issue 39), in the node's extras.lightrig.barnDoors; empty: none
+    // A rect's "barnDoors" (issue 39), written in the node's extras.lightrig.barnDoors; empty: none.
+    QJsonObject barnDoors;
     QJsonObject lightJson() const; // the extension's light object
     QJsonObject nodeJson(int lightIndex) const;
 };
