@@ -154,6 +154,27 @@ Frame frameAround(vec3 n, vec3 towards) {
     return f;
 }
 
+#ifdef LR_BARN_DOORS
+// The part of a rect P sees past its barn doors (core/barndoors.h windowLocal), in view units along its axes
+// from its centre: (x0, x1, y0, y1), empty when x0 >= x1 or y0 >= y1; the whole rect without flaps.
+vec4 barnWindow(ShadeLight l, vec3 P) {
+    float hw = l.halfWidth, hh = l.halfHeight, d = l.barnDepth, e = l.barnExtent;
+    vec4 whole = vec4(-hw, hw, -hh, hh);
+    vec3 p = P - l.position;
+    float pz = dot(p, l.direction);
+    if (!(d > 0.0) || !(pz > 0.0)) return whole;
+    float px = dot(p, l.axisX), py = dot(p, l.axisY);
+    if (pz <= d) {  // between the emitter and the flaps' far edges: inside the walls or outside them
+        float grow = e * (pz / d);
+        return abs(px) <= hw + grow && abs(py) <= hh + grow ? whole : vec4(0.0);
+    }
+    float inv = 1.0 / (pz - d);
+    float fx = (hw + e) * pz, fy = (hh + e) * pz;
+    return vec4(max(-hw, (-fx - px * d) * inv), min(hw, (fx - px * d) * inv), max(-hh, (-fy - py * d) * inv),
+                min(hh, (fy - py * d) * inv));
+}
+#endif
+
 // Streams the emitter at P in the frame f: a rect's four corners, or a disk as the equal-area octagon.
 AreaSums areaSums(ShadeLight l, vec3 P, Frame f, mat3 A, bool diffuse, bool full) {
     AreaStream s;
@@ -195,7 +216,16 @@ AreaSums areaSums(ShadeLight l, vec3 P, Frame f, mat3 A, bool diffuse, bool full
     } else
 #endif
     {
+#ifdef LR_BARN_DOORS
+        // Barn doors: the rectangle of the emitter P sees replaces it (nothing of it: nothing added).
+        vec4 w = barnWindow(l, P);
+        if (!(w.x < w.y) || !(w.z < w.w)) return o;
+        vec3 ax = toLocal(f, l.axisX) * scale, ay = toLocal(f, l.axisY) * scale;
+        vec3 p0 = cl + ax * w.x + ay * w.z, p1 = cl + ax * w.y + ay * w.z;
+        vec3 p2 = cl + ax * w.y + ay * w.w, p3 = cl + ax * w.x + ay * w.w;
+#else
         vec3 p0 = cl - xl - yl, p1 = cl + xl - yl, p2 = cl + xl + yl, p3 = cl - xl + yl;
+#endif
         feedEdge(s, p0, p1);
         feedEdge(s, p1, p2);
         feedEdge(s, p2, p3);

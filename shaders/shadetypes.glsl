@@ -24,6 +24,9 @@ struct ShadeLight {
     vec3 axisX, axisY;
     float halfWidth, halfHeight;
     bool twoSided;
+#ifdef LR_BARN_DOORS
+    float barnDepth, barnExtent;  // a rect's barn doors (core/barndoors.h): depth 0: none
+#endif
 #endif
 #ifdef LR_SHADOWS
     int shadow;  // its shadow slot + 1 (shadows.glsl), 0: it casts none
@@ -103,6 +106,7 @@ uniform int uLightCount;
 //   7: rimExponent, halfWidth, halfHeight, twoSided
 //   8 (LR_LIGHT_LINKING only, LR_LIGHT_TEXELS 9): litMask's low 16 bits, its high 16 bits, 0, 0
 // Area lights (no falloff, no cone) reuse texels 5 and 6: 5: axisX.xyz, cone   6: axisY.xyz, coneExponent.
+// A rect light (LR_BARN_DOORS) carries its barn doors' depth in 7.x and their extent in 3.w.
 // Unused fields are never read: the compiler drops their fetches.
 ShadeLight loadLight(int index) {
     int base = index * LR_LIGHT_TEXELS;
@@ -146,6 +150,10 @@ ShadeLight loadLight(int index) {
     l.halfWidth = t7.y;
     l.halfHeight = t7.z;
     l.twoSided = t7.w > 0.5;
+#ifdef LR_BARN_DOORS
+    l.barnDepth = t7.x;   // a rect's rim-exponent slot
+    l.barnExtent = t3.w;  // its falloff-exponent slot
+#endif
 #endif
 #ifdef LR_LIGHT_LINKING
     vec4 t8 = texelFetch(uLights, base + 8);

@@ -1,5 +1,6 @@
 #include "areaintegrate.h"
 
+#include "barndoors.h"
 #include "lighting_area.h"
 #include "montecarlo.h"
 
@@ -233,15 +234,20 @@ Estimate integrate(std::span<const lighting::ShadeLight<double>> lights, std::sp
                    std::vector<V>* direct) {
     Estimate e;
     if (direct) direct->assign(lights.size(), V(0.0));
+    // Barn doors (core/barndoors.h): the part of each emitter this point sees is one rectangle, which is
+    // integrated as the emitter (exactly the flaps' cut).
+    std::vector<lighting::ShadeLight<double>> seen(lights.begin(), lights.end());
+    for (auto& l : seen)
+        l = barndoors::visiblePart(l, s.position);
     std::vector<size_t> active;
-    for (size_t k = 0; k < lights.size(); ++k)
-        if (reaches(lights[k], s)) active.push_back(k);
+    for (size_t k = 0; k < seen.size(); ++k)
+        if (reaches(seen[k], s)) active.push_back(k);
     if (active.empty()) return e;
     const auto visible = [&](size_t k) { return k < visibility.size() ? visibility[k] : 1.0; };
     std::vector<LightIntegrand> integrands;
     integrands.reserve(active.size());
     for (size_t k : active)
-        integrands.emplace_back(lights[k], s, st);
+        integrands.emplace_back(seen[k], s, st);
 
     const int replicates = std::max(2, conv.replicates), perBatch = std::max(1, conv.batch);
     const size_t na = active.size(), nr = size_t(replicates);

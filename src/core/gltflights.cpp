@@ -42,6 +42,10 @@ const ExportLossInfo kExportLosses[int(ExportLoss::Count)] = {
     {ExportLoss::Gobo, "gobo", "Gobo",
      "the rig's \"gobo\" in the light node's extras.lightrig.gobo (the spot lights its whole cone in "
      "other viewers; the image file is named, not embedded)"},
+    {ExportLoss::BarnDoors, "barn-doors", "Barn doors",
+     "the rig's \"barnDoors\" in the light node's extras.lightrig.barnDoors (the stand-in spot lights its "
+     "whole "
+     "90° cone; other viewers ignore it)"},
 };
 
 const ExportLossInfo& exportLossInfo(ExportLoss kind) {
@@ -237,6 +241,13 @@ GltfRigExport convertRigToGltf(const Rig& rig, const SceneFrame& frame, const gl
         if (l.isArea() && l.enabled) {
             GltfLight g = areaStandIn(rig, frame, fileFromWorld, l, out.losses);
             noteLink(l, &g, out.losses);
+            if (l.type == LightType::Rect && l.barnDoors) { // issue 39: kept for LightRig, listed as lost
+                g.barnDoors = QJsonObject{{QStringLiteral("angle"), l.barnDoors->angle},
+                                          {QStringLiteral("length"), l.barnDoors->length}};
+                out.losses.push_back({ExportLoss::BarnDoors, l.name,
+                                      QStringLiteral("angle %1°, length %2")
+                                          .arg(num(l.barnDoors->angle), num(l.barnDoors->length))});
+            }
             out.lights.push_back(g);
             continue;
         }
@@ -359,6 +370,7 @@ QJsonObject GltfLight::nodeJson(int lightIndex) const {
     QJsonObject lightrig;
     if (!link.isEmpty()) lightrig.insert(QStringLiteral("link"), link);
     if (!gobo.isEmpty()) lightrig.insert(QStringLiteral("gobo"), gobo);
+    if (!barnDoors.isEmpty()) lightrig.insert(QStringLiteral("barnDoors"), barnDoors);
     if (!lightrig.isEmpty())
         node.insert(QStringLiteral("extras"), QJsonObject{{QStringLiteral("lightrig"), lightrig}});
     return node;

@@ -43,6 +43,7 @@ enum class ExportLoss {
     Ground,       // the ground plane or shadow catcher
     Link,         // light and shadow linking (issue 38): glTF has none
     Gobo,         // a spot's gobo (issue 39): glTF has no projected images
+    BarnDoors,    // a rect light's barn doors (issue 39): glTF has none
     Count
 };
 
@@ -79,6 +80,8 @@ struct GltfLight {
     glm::dquat rotation{1.0, 0.0, 0.0, 0.0}; // local -Z onto the light's direction
     QJsonObject link; // the rig's "link" (issue 38), written in the node's extras.lightrig.link; empty: none
     QJsonObject gobo; // the rig's "gobo" (issue 39), written in the node's extras.lightrig.gobo; empty: none
+    // A rect's "barnDoors" (issue 39), written in the node's extras.lightrig.barnDoors; empty: none.
+    QJsonObject barnDoors;
     QJsonObject lightJson() const; // the extension's light object
     QJsonObject nodeJson(int lightIndex) const;
 };

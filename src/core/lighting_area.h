@@ -31,6 +31,7 @@
 //     the same with n/4 (the Blinn lobe's width at normal incidence).
 #pragma once
 
+#include "barndoors.h"
 #include "lighting.h"
 #include "lighting_area_poly.h"
 #include "lighttypes.h"
@@ -98,12 +99,15 @@ template <typename T> Polygon<T> emitterPolygon(const ShadeLight<T>& l, const Ve
         }
         return p;
     }
-    const Vec3<T> x = l.axisX * l.halfWidth, y = l.axisY * l.halfHeight;
+    // Barn doors (barndoors.h): the rectangle of the emitter P sees; none of it: an empty polygon.
+    const barndoors::Window<T> w = barndoors::visibleWindow(l, P);
+    if (w.empty()) return p;
+    const Vec3<T> x0 = l.axisX * w.x0, x1 = l.axisX * w.x1, y0 = l.axisY * w.y0, y1 = l.axisY * w.y1;
     p.n = 4;
-    p.v[0] = f.local(c - x - y);
-    p.v[1] = f.local(c + x - y);
-    p.v[2] = f.local(c + x + y);
-    p.v[3] = f.local(c - x + y);
+    p.v[0] = f.local(c + x0 + y0);
+    p.v[1] = f.local(c + x1 + y0);
+    p.v[2] = f.local(c + x1 + y1);
+    p.v[3] = f.local(c + x0 + y1);
     return p;
 }
 

@@ -1,5 +1,6 @@
 #include "prepare.h"
 
+#include "barndoors.h"
 #include "fallofftraits.h"
 #include "gobo.h"
 
@@ -96,6 +97,11 @@ lighting::ShadeLight<double> prepareLight(const Rig& rig, const SceneFrame& fram
         o.halfWidth = 0.5 * std::max(0.0, disk ? 2.0 * light.area.radius : light.area.width) * toView;
         o.halfHeight = 0.5 * std::max(0.0, disk ? 2.0 * light.area.radius : light.area.height) * toView;
         o.twoSided = light.area.twoSided;
+        if (light.type == LightType::Rect && light.barnDoors) {
+            const barndoors::FlapShape f = barndoors::flapShape(*light.barnDoors);
+            o.barnDepth = f.depth * toView;
+            o.barnExtent = f.extent * toView;
+        }
     }
     return o;
 }

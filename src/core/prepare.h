@@ -70,6 +70,7 @@ template <typename T> lighting::ShadeLight<T> castLight(const lighting::ShadeLig
     o.axisY = lighting::Vec3<T>(l.axisY);
     o.halfWidth = T(l.halfWidth), o.halfHeight = T(l.halfHeight);
     o.twoSided = l.twoSided;
+    o.barnDepth = T(l.barnDepth), o.barnExtent = T(l.barnExtent);
     return o;
 }
 

@@ -14,9 +14,11 @@ int firstFormatVersion(LightType type) {
 
 int formatVersionFor(const Rig& rig) {
     int version = 1;
-    for (const Light& l : rig.lights)
+    for (const Light& l : rig.lights) {
         version = std::max({version, firstFormatVersion(l.type), l.link.isDefault() ? 1 : kLinkFormatVersion,
                             l.gobo ? kGoboFormatVersion : 1});
+        if (l.barnDoors && l.type == LightType::Rect) version = std::max(version, kBarnDoorsFormatVersion);
+    }
     return version;
 }
 

@@ -138,6 +138,11 @@ constexpr int kMaxGoboPathLength = 4096;
 constexpr double kMinGoboScale = 0.01, kMaxGoboScale = 100.0;
 std::optional<GoboSpec> readGobo(Checker& c, const json::Value& v, const QString& path, int version);
 QByteArray writeGobo(const GoboSpec& g);
+// rigjson_barndoors.cpp: a rect light's "barnDoors" (issue 39, format version 4); nullopt when invalid
+// (errors reported), and its canonical text.
+constexpr int kBarnDoorsFormatVersion = 4;
+std::optional<BarnDoors> readBarnDoors(Checker& c, const json::Value& v, const QString& path, int version);
+QByteArray writeBarnDoors(const BarnDoors& barnDoors);
 // rigjson_environment.cpp: the rig's "environment" (nullopt when invalid, errors reported), and its canonical
 // text (nullopt for the default environment, which is not written).
 std::optional<Environment> readEnvironment(Checker& c, const json::Value& v, const QString& path);

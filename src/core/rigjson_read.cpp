@@ -162,6 +162,15 @@ std::optional<Light> readLight(Checker& c, const Value& v, const QString& path, 
         o.reject("gobo",
                  QStringLiteral("only spot lights have a gobo (an image projected through the cone)"));
     }
+    if (!type || *type == LightType::Rect) {
+        if (const Value* b = o.take("barnDoors"))
+            if (const auto doors = rigjson::readBarnDoors(c, *b, o.path("barnDoors"), version))
+                l.barnDoors = doors;
+    } else {
+        o.reject("barnDoors", QStringLiteral("%1 has no barn doors (only rect lights have them: flaps on the "
+                                             "edges of its emitter)")
+                                  .arg(a));
+    }
     rejectMisplaced(o, false, false, a, is(&Light::usesFalloff), is(&Light::usesCone));
     o.finish();
     return type ? std::optional(l) : std::nullopt;

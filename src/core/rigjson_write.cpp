@@ -127,6 +127,8 @@ QByteArray light(const Light& l) {
     if (const auto s = shadow(l)) f.push_back({"shadow", *s});
     if (const auto k = rigjson::writeLink(l.link)) f.push_back({"link", *k});
     if (l.gobo && l.type == LightType::Spot) f.push_back({"gobo", rigjson::writeGobo(*l.gobo)});
+    if (l.barnDoors && l.type == LightType::Rect)
+        f.push_back({"barnDoors", rigjson::writeBarnDoors(*l.barnDoors)});
     return blockObject(f, "    ");
 }
 

@@ -36,6 +36,9 @@ template <typename T> struct ShadeLight {
     // h = tan(outer) × scale; axisX, axisY are then its frame (areaAxes(direction, gobo rotation)).
     const GoboImage* gobo = nullptr;
     T goboHalf = T(1);
+    // Barn doors (rect; issue 39, core/barndoors.h): the flaps' far edge `barnDepth` in front of the emitter
+    // and `barnExtent` outside its edges, view units; barnDepth 0: none.
+    T barnDepth = T(0), barnExtent = T(0);
 };
 
 template <typename T> struct Surface {

@@ -83,6 +83,11 @@ enum class LightProperty {
     AreaRadius,   // disk
     AreaRoll,     // rect and disk: degrees about the direction, -180 ... 180
     AreaTwoSided, // rect and disk: bool
+    // Barn doors (issue 39; core/barndoors.h), rect only: whether it has them (bool), their angle (degrees,
+    // 0 ... 90; UE5's: 0 straight out, 90 in the emitter's plane) and their length (rig units, >= 0).
+    BarnDoors,
+    BarnDoorAngle,
+    BarnDoorLength,
     Link,         // issue 38: which parts it lights and which cast its shadow (editor/linkedit.h)
     GoboFile,     // issue 39, spot: the gobo's image (core/lightshaping.h GoboSpec); "" = no gobo
     GoboScale,    // spot with a gobo: 0.01 ... 100 × the cone's width

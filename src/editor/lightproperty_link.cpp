@@ -81,6 +81,7 @@ std::span<const LightPropertyInfo> lightProperties() {
     static const std::vector<LightPropertyInfo> rows = [] {
         std::vector<LightPropertyInfo> out(valueLightProperties().begin(), valueLightProperties().end());
         out.insert(out.end(), goboLightProperties().begin(), goboLightProperties().end());
+        out.insert(out.end(), barnDoorLightProperties().begin(), barnDoorLightProperties().end());
         out.push_back(kLinkRow); // last: the dock shows it as a section of its own below the values
         return out;
     }();

@@ -11,5 +11,6 @@ const LightPropertyInfo& linkLightProperty();
 // A spot's gobo (issue 39, lightproperty_gobo.cpp): file, scale, rotation; between the values and Link.
 inline constexpr std::size_t kGoboLightPropertyCount = 3;
 std::span<const LightPropertyInfo> goboLightProperties();
+std::span<const LightPropertyInfo> barnDoorLightProperties(); // lightproperty_barndoors.cpp (issue 39)
 
 } // namespace lr

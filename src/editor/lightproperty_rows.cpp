@@ -582,7 +582,8 @@ static_assert(
         return true;
     }(),
     "the emitter size row applies to the types with a position: they must all cast shadows");
-static_assert(std::size(kLightProperties) + 1 + kGoboLightPropertyCount == size_t(kLightPropertyCount),
+static_assert(std::size(kLightProperties) + 1 + kGoboLightPropertyCount + 3 ==
+                  size_t(kLightPropertyCount), // + link, gobo, barn doors
               "one row per LightProperty");
 
 } // namespace

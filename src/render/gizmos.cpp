@@ -1,5 +1,6 @@
 #include "gizmos.h"
 
+#include "core/barndoors.h"
 #include "core/fallofftraits.h"
 #include "core/lighting.h"
 
@@ -185,6 +186,22 @@ GizmoGeometry buildGizmos(const Rig& rig, const SceneFrame& frame, const Bounds&
                     for (size_t k = 0; k < outline.size(); ++k)
                         b.line(at + (outline[k] - at) * 0.97,
                                at + (outline[(k + 1) % outline.size()] - at) * 0.97, faint);
+                // Barn doors (issue 39, core/barndoors.h): each corner's slanted edge and the flaps' far
+                // edges.
+                if (l.type == LightType::Rect && l.barnDoors && barndoors::cuts(*l.barnDoors) &&
+                    outline.size() == 4) {
+                    const barndoors::FlapShape f = barndoors::flapShape(*l.barnDoors);
+                    const double toWorld = 1.0 / distanceScale(rig, frame);
+                    const AreaAxes a = areaAxes(l.direction, l.area.roll);
+                    const glm::dvec3 ex = a.x * (f.extent * toWorld), ey = a.y * (f.extent * toWorld);
+                    const glm::dvec3 push = dir * (f.depth * toWorld);
+                    const glm::dvec3 far[4] = {outline[0] + push + ex + ey, outline[1] + push - ex + ey,
+                                               outline[2] + push - ex - ey, outline[3] + push + ex - ey};
+                    for (size_t k = 0; k < 4; ++k) {
+                        b.line(outline[k], far[k], faint);
+                        b.line(far[k], far[(k + 1) % 4], faint);
+                    }
+                }
                 double extent = 0.0;
                 for (const glm::dvec3& q : outline)
                     extent = std::max(extent, glm::length(q - at));

@@ -25,6 +25,11 @@ LightTexels packLight(const lighting::ShadeLight<float>& l) {
         put3(6, glm::vec3(l.cosInner, l.cosOuter, l.outer), l.coneExponent);
     }
     put3(7, glm::vec3(l.rimExponent, l.halfWidth, l.halfHeight), l.twoSided ? 1.0f : 0.0f);
+    if (l.type ==
+        LightType::Rect) { // barn doors (0: none) in slots a rect never reads: rim and falloff exponents
+        t[7 * 4 + 0] = l.barnDepth;
+        t[3 * 4 + 3] = l.barnExtent;
+    }
     return t;
 }
 

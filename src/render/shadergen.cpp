@@ -2,6 +2,7 @@
 
 #include "shadowplan.h"
 
+#include "core/barndoors.h"
 #include "core/fallofftraits.h"
 
 #include <QStringList>
@@ -119,6 +120,7 @@ std::uint64_t FeatureKey::bits() const {
     put(rig.environment, 1);
     put(attributes, 1);
     put(rig.linking, 1);
+    put(rig.barnDoors, 1);
     Q_ASSERT(shift <= 64);
     return b;
 }
@@ -136,6 +138,7 @@ QString FeatureKey::describe() const {
     if (rig.farLights) parts << QStringLiteral("far-lights");
     if (rig.environment) parts << QStringLiteral("environment");
     if (rig.linking) parts << QStringLiteral("linking");
+    if (rig.barnDoors) parts << QStringLiteral("barn-doors");
     if (rig.shadows)
         parts << QStringLiteral("shadows") + (rig.cubeShadows ? QStringLiteral(":cube") : QString()) +
                      (rig.softShadows ? QStringLiteral(":soft") : QString());
@@ -171,6 +174,7 @@ RigFeatures allRigFeatures(const RigFeatures& rig) {
     f.farLights = f.shading == ShadingModel::Pbr;
     f.cubeShadows = f.shadows;
     f.softShadows = f.shadows;
+    f.barnDoors = true;
     return f;
 }
 
@@ -202,6 +206,7 @@ RigFeatures rigFeatures(const Rig& rig) {
             f.softShadows |= hasSoftShadow(l);
         }
         f.lightTypes |= bit(l.type);
+        if (l.type == LightType::Rect && l.barnDoors && barndoors::cuts(*l.barnDoors)) f.barnDoors = true;
         if (l.usesFalloff()) f.falloffs |= bit(l.falloff.model);
         if (l.usesCone()) f.cones |= bit(l.cone.model);
         if (l.usesSurfaceModels()) {
@@ -296,6 +301,8 @@ QByteArray shaderPrelude(const FeatureKey& key) {
     // Light linking (shaders/shadetypes.glsl lightLinked): only where the rig links, so that every other
     // prelude is unchanged. G-buffer programs with it write the part's class into the link target.
     if (key.rig.linking) out += "#define LR_LIGHT_LINKING 1\n";
+    // Barn doors (shaders/area.glsl barnWindow): only where a rect light has them.
+    if (key.rig.barnDoors) out += "#define LR_BARN_DOORS 1\n";
     // The tier's approximations (docs/quality.md), as the key names them (approx::forTier keeps its own).
     const std::uint8_t approximations = approx::forTier(key.approximations, key.quality);
     const std::pair<std::uint8_t, const char*> defines[] = {{approx::kB1, "LR_B1"},

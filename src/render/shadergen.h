@@ -62,6 +62,9 @@ struct RigFeatures {
     // add nothing there. Like environment, set per frame by the renderer (frameRigFeatures); rigFeatures()
     // leaves it false, and without it a program's text is exactly what it was before linking existed.
     bool linking = false;
+    // Some enabled rect light has barn doors that cut (issue 39, core/barndoors.h; LR_BARN_DOORS): the area
+    // integrals run over the part of each rect the point sees. Without it a program's text is what it was.
+    bool barnDoors = false;
     bool operator==(const RigFeatures&) const = default;
 };
 

@@ -178,7 +178,9 @@ double catcherLight(const TraceScene& scene, const glm::dvec3& p, Sampler& sampl
         if (traitsOf(l.type).isArea) {
             if (!(light.area > 0.0) || !areaLightFaces(light, p)) continue;
             const glm::dvec2 u = sampler.next2();
-            const glm::dvec3 d = sampleAreaLight(light, u.x, u.y) - p;
+            const glm::dvec3 onEmitter = sampleAreaLight(light, u.x, u.y);
+            if (!areaLightSees(light, p, onEmitter)) continue; // behind a barn door's flap
+            const glm::dvec3 d = onEmitter - p;
             distance = glm::length(d);
             if (!(distance > 0.0)) continue;
             w = d / distance;

@@ -1,10 +1,21 @@
 #include "lights.h"
 
+#include "core/barndoors.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
 namespace lr::trace {
+
+bool areaLightSees(const TraceLight& light, const glm::dvec3& from, const glm::dvec3& onEmitter) {
+    const lighting::ShadeLight<double>& l = light.shade;
+    if (!barndoors::hasBarnDoors(l)) return true;
+    const barndoors::Window<double> w = barndoors::visibleWindow(l, from);
+    const glm::dvec3 q = onEmitter - l.position;
+    const double x = glm::dot(q, l.axisX), y = glm::dot(q, l.axisY);
+    return !w.empty() && x >= w.x0 && x <= w.x1 && y >= w.y0 && y <= w.y1;
+}
 
 bool areaLightFaces(const TraceLight& light, const glm::dvec3& point) {
     const double side = glm::dot(point - light.shade.position, light.shade.direction);
@@ -23,6 +34,10 @@ bool hitAreaLight(const TraceLight& light, const glm::dvec3& origin, const glm::
     const bool inside = l.type == LightType::Disk ? x * x + y * y <= l.halfWidth * l.halfWidth
                                                   : std::abs(x) <= l.halfWidth && std::abs(y) <= l.halfHeight;
     if (!inside) return false;
+    if (barndoors::hasBarnDoors(l)) { // a flap hides the point from the origin outside the window
+        const barndoors::Window<double> w = barndoors::visibleWindow(l, origin);
+        if (w.empty() || x < w.x0 || x > w.x1 || y < w.y0 || y > w.y1) return false;
+    }
     *t = d;
     return true;
 }
@@ -79,8 +94,11 @@ SphericalRect sphericalRect(const lighting::ShadeLight<double>& l, const glm::dv
 } // namespace
 
 AreaLightSample sampleAreaLightFrom(const TraceLight& light, const glm::dvec3& from, double u1, double u2) {
-    const lighting::ShadeLight<double>& l = light.shade;
+    // Barn doors (core/barndoors.h): the part of the rect `from` sees, sampled as the emitter.
+    const lighting::ShadeLight<double> l = barndoors::visiblePart(light.shade, from);
+    const double area = barndoors::hasBarnDoors(light.shade) ? 4.0 * l.halfWidth * l.halfHeight : light.area;
     AreaLightSample out;
+    if (!(area > 0.0)) return out;
     if (l.type == LightType::Rect) {
         const SphericalRect r = sphericalRect(l, from);
         if (r.solidAngle >= kMinSolidAngle) {
@@ -101,22 +119,26 @@ AreaLightSample sampleAreaLightFrom(const TraceLight& light, const glm::dvec3& f
             return out;
         }
     }
-    out.point = sampleAreaLight(light, u1, u2);
+    out.point = l.type == LightType::Rect ? l.position + (2.0 * u1 - 1.0) * l.halfWidth * l.axisX +
+                                                (2.0 * u2 - 1.0) * l.halfHeight * l.axisY
+                                          : sampleAreaLight(light, u1, u2);
     const glm::dvec3 d = out.point - from;
     const double dist2 = glm::dot(d, d), cosL = std::abs(glm::dot(d, l.direction)) / std::sqrt(dist2);
-    out.pdf = dist2 / (light.area * cosL);
+    out.pdf = dist2 / (area * cosL);
     if (!std::isfinite(out.pdf) || !(cosL > 0.0)) out.pdf = 0.0;
     return out;
 }
 
 double areaLightPdf(const TraceLight& light, const glm::dvec3& from, const glm::dvec3& dir, double t) {
-    const lighting::ShadeLight<double>& l = light.shade;
+    const lighting::ShadeLight<double> l = barndoors::visiblePart(light.shade, from);
+    const double area = barndoors::hasBarnDoors(light.shade) ? 4.0 * l.halfWidth * l.halfHeight : light.area;
+    if (!(area > 0.0)) return 0.0;
     if (l.type == LightType::Rect) {
         const SphericalRect r = sphericalRect(l, from);
         if (r.solidAngle >= kMinSolidAngle) return 1.0 / r.solidAngle;
     }
     const double cosL = std::abs(glm::dot(dir, l.direction));
-    const double pdf = t * t / (light.area * cosL);
+    const double pdf = t * t / (area * cosL);
     return std::isfinite(pdf) && cosL > 0.0 ? pdf : 0.0;
 }
 

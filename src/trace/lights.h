@@ -11,6 +11,8 @@
 //     (Ureña, Fajardo and King 2013, "An Area-Preserving Parametrization for Spherical Rectangles"), so a
 //     large or near softbox costs no more noise than a small far one; a disk (no such closed form), and a
 //     rect under 1e-4 sr, uniformly by area, the density converted to solid angle.
+//   - Barn doors on a rect (core/barndoors.h): the part of the emitter a point sees is one rectangle,
+//     sampled (and hit) as the emitter.
 //   - Emissive triangles: chosen by emitted power (area × luminance of the emissive factor), a uniform
 //     point in the triangle; both sides emit.
 // Rim lights are not physical: the path tracer leaves them out (TraceScene::warnings says so).
@@ -51,6 +53,9 @@ AreaLightSample sampleAreaLightFrom(const TraceLight& light, const glm::dvec3& f
 double areaLightPdf(const TraceLight& light, const glm::dvec3& from, const glm::dvec3& dir, double t);
 // Whether an area light emits towards `point` (its front side, or both sides when two-sided).
 bool areaLightFaces(const TraceLight& light, const glm::dvec3& point);
+// Whether the emitter's point `onEmitter` lights `from`: no barn-door flap between them (core/barndoors.h).
+// hitAreaLight misses, and sampleAreaLightFrom samples only, the part of a rect its flaps leave visible.
+bool areaLightSees(const TraceLight& light, const glm::dvec3& from, const glm::dvec3& onEmitter);
 
 // A uniform point of a triangle from two uniform numbers, as barycentrics (b1, b2) of vertices 1 and 2.
 glm::dvec2 sampleTriangle(double u1, double u2);

@@ -30,7 +30,8 @@ QSet<QString> expectedFields(LightType type, FalloffModel falloff, ConeModel con
     const bool positioned = type == LightType::Point || type == LightType::Spot;
     const bool area = type == LightType::Rect || type == LightType::Disk; // issue 16
     if (area) f += {"position", "areaRoll", "areaTwoSided"};
-    if (type == LightType::Rect) f += {"areaWidth", "areaHeight"};
+    if (type == LightType::Rect)
+        f += {"areaWidth", "areaHeight", "barnDoors"}; // issue 39: angle, length when on
     if (type == LightType::Disk) f += "areaRadius";
     if (positioned) {
         f += {"position", "falloffModel"};
@@ -116,7 +117,10 @@ const QStringList kAllFields{"name",
                              "areaTwoSided",
                              "goboFile",
                              "goboScale",
-                             "goboRotation"};
+                             "goboRotation",
+                             "barnDoors",
+                             "barnDoorAngle",
+                             "barnDoorLength"};
 
 QSet<QString> visibleFields(PropertiesDock& dock) {
     QSet<QString> out;

@@ -206,6 +206,27 @@ class TestGltfLights : public QObject {
             QVERIFY(describeLoss(loss).startsWith(loss.subject + QStringLiteral(": ")));
     }
 
+    // Issue 39: glTF has no barn doors; they go into the rect's node extras and are reported.
+    void barnDoorsGoIntoTheNodesExtras() {
+        Light box = makeLight(LightType::Rect, QStringLiteral("Box"));
+        box.barnDoors = BarnDoors{30.0, 0.25};
+        const Light plain = makeLight(LightType::Rect, QStringLiteral("Plain"));
+        const GltfRigExport e = convertRigToGltf(pbrRig({box, plain}), {});
+        QCOMPARE(count(e, ExportLoss::BarnDoors), 1);
+        QCOMPARE(e.lights.size(), size_t(2));
+        const QJsonObject doors = e.lights[0]
+                                      .nodeJson(0)
+                                      .value(QStringLiteral("extras"))
+                                      .toObject()
+                                      .value(QStringLiteral("lightrig"))
+                                      .toObject()
+                                      .value(QStringLiteral("barnDoors"))
+                                      .toObject();
+        QCOMPARE(doors.value(QStringLiteral("angle")).toDouble(), 30.0);
+        QCOMPARE(doors.value(QStringLiteral("length")).toDouble(), 0.25);
+        QVERIFY(!e.lights[1].nodeJson(1).contains(QStringLiteral("extras")));
+    }
+
     // Issue 38: glTF has no linking; the link goes into the light node's extras and is reported.
     void linkingGoesIntoTheNodesExtras() {
         Light key = pointLight({0, 1, 0}, 1.0, FalloffModel::InverseSquare, -1.0);

@@ -41,6 +41,21 @@ class TestGizmos : public QObject {
             }
         QVERIFY(selectedLines > 0 && selectedLines < int(g.lines.size()));
     }
+
+    // Issue 39: a rect's barn doors add each corner's slanted edge and the four far edges (8 lines), and
+    // flaps in the emitter's plane (90°) draw none.
+    void barnDoorsDrawTheirEdges() {
+        Rig rig;
+        rig.lights = {makeLight(LightType::Rect, QStringLiteral("box"))};
+        const glm::dmat4 view = glm::lookAt(glm::dvec3(0, 0, 10), glm::dvec3(0), glm::dvec3(0, 1, 0));
+        const Bounds bounds{glm::dvec3(-1), glm::dvec3(1)};
+        const auto lines = [&] { return buildGizmos(rig, SceneFrame{}, bounds, view, {}).lines.size(); };
+        const size_t plain = lines();
+        rig.lights[0].barnDoors = BarnDoors{45.0, 0.3};
+        QCOMPARE(lines(), plain + 16);
+        rig.lights[0].barnDoors = BarnDoors{90.0, 0.3};
+        QCOMPARE(lines(), plain);
+    }
 };
 
 QTEST_GUILESS_MAIN(TestGizmos)

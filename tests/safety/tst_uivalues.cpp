@@ -53,6 +53,7 @@ Rig everyFieldRig() {
     a.shadow.enabled = true; // issue 14: the shadow's fields (size on the spot, angle on the directional)
     d.shadow.enabled = true;
     Light e = makeLight(LightType::Rect, QStringLiteral("rect")); // issue 16: width, height, roll
+    e.barnDoors = BarnDoors{}; // issue 39: the barn doors' angle and length
     Light f = makeLight(LightType::Disk, QStringLiteral("disk")); // radius
     rig.lights = {a, b, c, d, e, f};
     return rig;

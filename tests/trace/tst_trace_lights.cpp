@@ -2,6 +2,7 @@
 // points lie on the rect, the density is 1 / the solid angle it subtends (the closed form on its axis), the
 // irradiance estimated from a few hundred samples matches quadrature over the rect's area, areaLightPdf
 // gives the density sampling used, and disks and tiny rects fall back to area sampling consistently.
+#include "core/barndoors.h"
 #include "trace/lights.h"
 #include "trace/sampler.h"
 
@@ -107,6 +108,55 @@ class TraceLights : public QObject {
         const double sampled = irradianceBySampling(l, point, normal, 256);
         QVERIFY2(std::abs(sampled - truth) <= 0.005 * truth + 1e-7,
                  qPrintable(QStringLiteral("sampled %1, quadrature %2").arg(sampled).arg(truth)));
+    }
+
+    // Barn doors (issue 39, core/barndoors.h): samples come from the window the point sees, the irradiance
+    // they estimate matches quadrature over the whole rect with each cell cut by the segment test, the BSDF
+    // ray's density agrees, and a ray towards a hidden point of the emitter misses it.
+    void barnDoorsCutTheSamples() {
+        TraceLight l = areaLight(LightType::Rect, glm::dvec3(0.0), 1.0, 0.4);
+        const barndoors::FlapShape f = barndoors::flapShape({20.0, 0.8});
+        l.shade.barnDepth = f.depth;
+        l.shade.barnExtent = f.extent;
+        int compared = 0;
+        for (const glm::dvec3 p :
+             {glm::dvec3(0.9, 0.3, 1.5), glm::dvec3(-1.4, 0.2, 2.0), glm::dvec3(0.1, 0.0, 3.0)}) {
+            const glm::dvec3 n(0, 0, -1);
+            double truth = 0.0;
+            const int steps = 600;
+            const double dx = 2.0 * l.shade.halfWidth / steps, dy = 2.0 * l.shade.halfHeight / steps;
+            for (int i = 0; i < steps; ++i)
+                for (int j = 0; j < steps; ++j) {
+                    const glm::dvec3 q = (-l.shade.halfWidth + (i + 0.5) * dx) * l.shade.axisX +
+                                         (-l.shade.halfHeight + (j + 0.5) * dy) * l.shade.axisY;
+                    if (barndoors::segmentHitsFlaps(l.shade, q, p)) continue;
+                    const glm::dvec3 d = q - p;
+                    const double r2 = glm::dot(d, d), r = std::sqrt(r2);
+                    truth += std::max(0.0, glm::dot(d, n) / r) * std::abs(d.z / r) / r2 * dx * dy;
+                }
+            const double sampled = irradianceBySampling(l, p, n, 256);
+            QVERIFY2(std::abs(sampled - truth) <= 0.01 * truth + 1e-7,
+                     qPrintable(QStringLiteral("sampled %1, quadrature %2").arg(sampled).arg(truth)));
+            ++compared;
+            for (int k = 0; k < 16; ++k) {
+                trace::Sampler s(7, std::uint32_t(k));
+                const glm::dvec2 u = s.next2();
+                const trace::AreaLightSample a = trace::sampleAreaLightFrom(l, p, u.x, u.y);
+                if (!(a.pdf > 0.0)) continue;
+                QVERIFY(!barndoors::segmentHitsFlaps(l.shade, a.point, p));
+                const double t = glm::length(a.point - p);
+                double hitT = 0.0;
+                QVERIFY(trace::hitAreaLight(l, p, (a.point - p) / t, &hitT));
+                QVERIFY(std::abs(trace::areaLightPdf(l, p, (a.point - p) / t, t) - a.pdf) <= 1e-9 * a.pdf);
+            }
+        }
+        QCOMPARE(compared, 3);
+        // Far beside the beam the flaps hide all of the emitter: a ray towards it misses it.
+        const glm::dvec3 p(2.5, 0.0, 0.9);
+        const glm::dvec3 hidden(0.0, 0.9 * l.shade.halfWidth, 0.0); // axisX is +y here
+        QVERIFY(barndoors::segmentHitsFlaps(l.shade, hidden, p));
+        double t = 0.0;
+        QVERIFY(!trace::hitAreaLight(l, p, glm::normalize(hidden - p), &t));
     }
 
     // A disk, and a rect under 1e-4 sr, are sampled by area: the density is the area's converted to
