@@ -1,4 +1,4 @@
-// Rig files: JSON, format "lightrig", versions 1 to 3 (docs/rig-format.md). Reading validates everything and
+// Rig files: JSON, format "lightrig", versions 1 to 4 (docs/rig-format.md). Reading validates everything and
 // reports every error as "FILE: json.path: reason"; writing is canonical (stable key order, only the
 // fields a light's type and models use) and atomic.
 #pragma once
@@ -13,9 +13,10 @@
 namespace lr {
 
 // The newest version this LightRig reads; it reads every older one too. 2 (issue 16) added the rect and disk
-// light types and their "area", 3 (issue 38) a light's "link"; a rig is written as the oldest version that
-// holds it (rigjson_area.cpp), so a rig without links stays version 2 byte for byte.
-constexpr int kRigFormatVersion = 3;
+// light types and their "area", 3 (issue 38) a light's "link", 4 (issue 39) a light's "ies"; a rig is written
+// as the oldest version that holds it (rigjson_area.cpp), so a rig without links stays version 2 byte for
+// byte.
+constexpr int kRigFormatVersion = 4;
 constexpr qint64 kMaxRigFileBytes = 16 * 1024 * 1024;
 constexpr int kMaxRigLights = 4096;
 // Value limits of the format (docs/rig-format.md), for editors that want to stay within them.

@@ -15,8 +15,8 @@ int firstFormatVersion(LightType type) {
 int formatVersionFor(const Rig& rig) {
     int version = 1;
     for (const Light& l : rig.lights)
-        version =
-            std::max({version, firstFormatVersion(l.type), l.link.isDefault() ? 1 : kLinkFormatVersion});
+        version = std::max({version, firstFormatVersion(l.type), l.link.isDefault() ? 1 : kLinkFormatVersion,
+                            l.ies ? kIesFormatVersion : 1});
     return version;
 }
 

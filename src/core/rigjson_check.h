@@ -131,6 +131,12 @@ int formatVersionFor(const Rig& rig);
 constexpr int kLinkFormatVersion = 3;
 std::optional<LightLink> readLink(Checker& c, const json::Value& v, const QString& path, int version);
 std::optional<QByteArray> writeLink(const LightLink& link);
+// rigjson_ies.cpp: a point or spot light's "ies" (issue 39, format version 4; type nullopt when unknown);
+// nullopt when invalid (errors reported), and its canonical text.
+constexpr int kIesFormatVersion = 4;
+std::optional<IesSpec> readIes(Checker& c, const json::Value& v, const QString& path, int version,
+                               std::optional<LightType> type);
+QByteArray writeIes(const IesSpec& spec);
 // rigjson_environment.cpp: the rig's "environment" (nullopt when invalid, errors reported), and its canonical
 // text (nullopt for the default environment, which is not written).
 std::optional<Environment> readEnvironment(Checker& c, const json::Value& v, const QString& path);

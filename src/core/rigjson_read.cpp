@@ -155,6 +155,7 @@ std::optional<Light> readLight(Checker& c, const Value& v, const QString& path, 
     }
     if (const Value* k = o.take("link"))
         if (const auto link = rigjson::readLink(c, *k, o.path("link"), version)) l.link = *link;
+    if (const Value* x = o.take("ies")) l.ies = rigjson::readIes(c, *x, o.path("ies"), version, type);
     rejectMisplaced(o, false, false, a, is(&Light::usesFalloff), is(&Light::usesCone));
     o.finish();
     return type ? std::optional(l) : std::nullopt;

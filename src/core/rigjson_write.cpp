@@ -126,6 +126,7 @@ QByteArray light(const Light& l) {
     if (l.usesRimExponent()) f.push_back({"exponent", num(l.rimExponent)});
     if (const auto s = shadow(l)) f.push_back({"shadow", *s});
     if (const auto k = rigjson::writeLink(l.link)) f.push_back({"link", *k});
+    if (l.ies) f.push_back({"ies", rigjson::writeIes(*l.ies)});
     return blockObject(f, "    ");
 }
 

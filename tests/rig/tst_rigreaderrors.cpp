@@ -59,7 +59,7 @@ static const struct {
      "lights[0].falloff.range: must be a finite number > 0 and <= 1e12, got 1e-400 (out of the range"},
     {"nan.json", "line 1, column 50 (in ambient[0]): NaN is not a JSON number"},
     {"infinity.json", "line 1, column 53 (in ambient[1]): -Infinity is not a JSON number"},
-    {"newer-version.json", "version: the file is version 4, newer than this LightRig reads (version 3)"},
+    {"newer-version.json", "version: the file is version 5, newer than this LightRig reads (version 4)"},
     {"not-lightrig.json", "format: missing"},
     {"wrong-format.json", "format: must be \"lightrig\""},
     {"top-level-array.json", "(top level): must be a JSON object"},

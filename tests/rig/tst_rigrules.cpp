@@ -24,13 +24,13 @@ void TestRigRules::rules_data() {
         "format: must be \"lightrig\"");
     row("version missing", R"({"format": "lightrig", "lights": []})", "version: missing");
     row("version 0", R"({"format": "lightrig", "version": 0, "lights": []})",
-        "version: must be an integer from 1 to 3");
+        "version: must be an integer from 1 to 4");
     row("version 1.5", R"({"format": "lightrig", "version": 1.5, "lights": []})",
-        "version: must be an integer from 1 to 3");
+        "version: must be an integer from 1 to 4");
     row("version string", R"({"format": "lightrig", "version": "1", "lights": []})",
-        "version: must be an integer from 1 to 3");
-    row("version 4", R"({"format": "lightrig", "version": 4, "lights": []})",
-        "version: the file is version 4, newer than this LightRig reads (version 3)");
+        "version: must be an integer from 1 to 4");
+    row("version 5", R"({"format": "lightrig", "version": 5, "lights": []})",
+        "version: the file is version 5, newer than this LightRig reads (version 4)");
     row("name not a string", rigJson({}, R"("name": 42,)"), "name: must be a string, got 42");
     row("name too long", rigJson({}, "\"name\": \"" + QByteArray(257, 'x') + "\","),
         "name: must be at most 256 characters");
