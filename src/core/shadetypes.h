@@ -2,6 +2,7 @@
 // settings, templated on the scalar (shade.h evaluates them; lighting_area.h the area lights).
 #pragma once
 
+#include "ies.h"
 #include "lighting.h"
 #include "types.h"
 
@@ -28,6 +29,13 @@ template <typename T> struct ShadeLight {
     Vec3<T> axisX{1, 0, 0}, axisY{0, 1, 0};
     T halfWidth = T(0), halfHeight = T(0);
     bool twoSided = false;
+    // An IES profile (issue 39, core/iesshade.h; null: none, and nothing below is read): the attenuation is
+    // scaled by iesScale × its candela toward the surface, in the photometric frame (view space, unit):
+    // vertical angle 0 along iesNadir, horizontal 0 along iesX, 90 along iesY. Whoever fills it keeps the
+    // profile alive.
+    const IesProfile* ies = nullptr;
+    Vec3<T> iesNadir{0, -1, 0}, iesX{1, 0, 0}, iesY{0, 0, 1};
+    T iesScale = T(1);
 };
 
 template <typename T> struct Surface {

@@ -47,6 +47,18 @@ class TestIesRig : public QObject {
         QCOMPARE(writeRigJson(*back.rig), text);
     }
 
+    void aPointLightsProfileLooksAlongItsDirection() {
+        const RigReadResult r =
+            readRigJson(rigJson4(with(kPoint, R"("direction": [1, 0, 0], "ies": {"file": "a.ies"})")),
+                        QStringLiteral("r.json"));
+        LR_VERIFY_OK(r);
+        QCOMPARE(r.rig->lights[0].direction, glm::dvec3(1.0, 0.0, 0.0));
+        QVERIFY(writeRigJson(*r.rig).contains(R"("direction": [1, 0, 0])"));
+        const RigReadResult none =
+            readRigJson(rigJson4(with(kPoint, R"("direction": [1, 0, 0])")), QStringLiteral("n.json"));
+        QVERIFY(!none.ok()); // without a profile a point light has no direction
+    }
+
     void rigsWithoutProfilesKeepTheirVersion() {
         Rig rig;
         rig.lights = {makeLight(LightType::Point, QStringLiteral("Key"))};
