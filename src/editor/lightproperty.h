@@ -76,15 +76,19 @@ enum class LightProperty {
     ShadowResolution,
     ShadowBias,
     ShadowNormalOffset,
-    ShadowSize,   // point and spot: the emitter's diameter in rig units
-    ShadowAngle,  // directional: the emitter's angular diameter in degrees
-    AreaWidth,    // rect (issue 16; core/rig.h AreaShape): rig units, >= 0
-    AreaHeight,   // rect
-    AreaRadius,   // disk
-    AreaRoll,     // rect and disk: degrees about the direction, -180 ... 180
-    AreaTwoSided, // rect and disk: bool
-    Link,         // issue 38: which parts it lights and which cast its shadow (editor/linkedit.h)
-    Any           // not a property: "several or all values of the light changed" (in RigChange only)
+    ShadowSize,    // point and spot: the emitter's diameter in rig units
+    ShadowAngle,   // directional: the emitter's angular diameter in degrees
+    AreaWidth,     // rect (issue 16; core/rig.h AreaShape): rig units, >= 0
+    AreaHeight,    // rect
+    AreaRadius,    // disk
+    AreaRoll,      // rect and disk: degrees about the direction, -180 ... 180
+    AreaTwoSided,  // rect and disk: bool
+    Link,          // issue 38: which parts it lights and which cast its shadow (editor/linkedit.h)
+    IesFile,       // issue 39 (lightproperty_ies.cpp): point and spot; QString, "" = no profile
+    IesMultiplier, // double 0 ... 1e6 (shown with a profile)
+    IesLevel,      // int: 0 the profile's candela, 1 the light's intensity
+    IesRotation,   // double degrees, 0 ... 360
+    Any            // not a property: "several or all values of the light changed" (in RigChange only)
 };
 constexpr int kLightPropertyCount = int(LightProperty::Any);
 

@@ -80,6 +80,7 @@ const LightPropertyInfo& linkLightProperty() {
 std::span<const LightPropertyInfo> lightProperties() {
     static const std::vector<LightPropertyInfo> rows = [] {
         std::vector<LightPropertyInfo> out(valueLightProperties().begin(), valueLightProperties().end());
+        out.insert(out.end(), iesLightProperties().begin(), iesLightProperties().end()); // issue 39
         out.push_back(kLinkRow); // last: the dock shows it as a section of its own below the values
         return out;
     }();

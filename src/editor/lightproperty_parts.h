@@ -8,5 +8,6 @@ namespace lr {
 
 std::span<const LightPropertyInfo> valueLightProperties(); // every row but Link
 const LightPropertyInfo& linkLightProperty();
+std::span<const LightPropertyInfo> iesLightProperties(); // issue 39 (lightproperty_ies.cpp)
 
 } // namespace lr

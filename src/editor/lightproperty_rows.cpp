@@ -582,7 +582,8 @@ static_assert(
         return true;
     }(),
     "the emitter size row applies to the types with a position: they must all cast shadows");
-static_assert(std::size(kLightProperties) + 1 == size_t(kLightPropertyCount), "one row per LightProperty");
+static_assert(std::size(kLightProperties) + 1 + 4 == size_t(kLightPropertyCount), // + Link + the IES rows
+              "one row per LightProperty");
 
 } // namespace
 
