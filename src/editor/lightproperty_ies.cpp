@@ -28,10 +28,9 @@ QString checkFile(const LightPropertyInfo&, const QVariant& v) {
 }
 
 QString checkLevel(const LightPropertyInfo&, const QVariant& v) {
-    bool ok = false;
-    const int i = v.toInt(&ok);
-    return ok && (i == 0 || i == 1) ? QString()
-                                    : QStringLiteral("the IES level must be 0 (profile) or 1 (light)");
+    const std::optional<double> d = propertyvalue::toDouble(v); // NaN and infinities are neither
+    return d && (*d == 0.0 || *d == 1.0) ? QString()
+                                         : QStringLiteral("the IES level must be 0 (profile) or 1 (light)");
 }
 
 QStringList levelChoices() {
@@ -93,7 +92,7 @@ const LightPropertyInfo kIesRows[] = {
      .get = [](const Light& l) { return QVariant(int(l.ies ? l.ies->level : IesLevel::Light)); },
      .set =
          [](Light& l, const QVariant& v) {
-             if (l.ies) l.ies->level = v.toInt() == 0 ? IesLevel::Profile : IesLevel::Light;
+             if (l.ies) l.ies->level = number(v, 1.0) == 0.0 ? IesLevel::Profile : IesLevel::Light;
          }},
     {.id = P::IesRotation,
      .name = QT_TRANSLATE_NOOP("lr::LightProperty", "IES rotation"),
