@@ -107,6 +107,8 @@ class TestIesShade : public QObject {
                     const double exact = truth(theta, phi) * cosTheta / (d * d);
                     worstTruth = std::max(worstTruth, std::abs(e / scale - exact) / (cosTheta / (d * d)));
                 }
+            qInfo("level %s: worst |interpolated - function| %.3f cd, bound %.3f cd",
+                  level == IesLevel::Light ? "light" : "profile", worstTruth, interpolationBound());
             QVERIFY2(
                 worstTruth <= interpolationBound(),
                 qPrintable(QStringLiteral("%1 cd off; bound %2").arg(worstTruth).arg(interpolationBound())));
