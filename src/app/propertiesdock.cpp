@@ -4,6 +4,7 @@
 #include "colorpreview.h"
 #include "core/lightgroups.h"
 #include "directionangles.h"
+#include "iessummary.h"
 #include "linkingsection.h"
 #include "logslider.h"
 #include "modeltooltips.h"
@@ -229,6 +230,7 @@ void PropertiesDock::build() {
         if (f.combo && row.id == LightProperty::ConeModel) installModelTooltips<ConeModel>(f.combo);
         if (f.combo && row.id == LightProperty::Diffuse) installModelTooltips<DiffuseModel>(f.combo);
         if (row.id == LightProperty::Direction) addDirectionAngles(m_form, f.widget, m_doc);
+        if (row.id == LightProperty::IesFile) addIesSummary(m_form, f.widget, m_doc); // peak, beam angle
     }
 
     auto* scroll = new QScrollArea(this);

@@ -4,6 +4,7 @@
 #include "cli.h"
 #include "environmentoption.h"
 
+#include "core/ies.h"
 #include "core/rigjson.h"
 
 #include <QCommandLineParser>
@@ -58,6 +59,17 @@ void printWarnings(QTextStream& out, const QString& file, const QStringList& war
 
 } // namespace
 
+// Issue 39: every IES profile the rig names reads ("FILE: lights[i].ies.file: IESFILE:LINE: reason").
+bool checkIesFiles(const Rig& rig, const QString& file, RigReadResult* r) {
+    for (size_t i = 0; i < rig.lights.size(); ++i) {
+        const std::optional<IesSpec>& ies = rig.lights[i].ies;
+        QString error;
+        if (ies && !readIesFile(ies->resolved.isEmpty() ? ies->file : ies->resolved, &error))
+            r->errors << QStringLiteral("%1: lights[%2].ies.file: %3").arg(file).arg(i).arg(error);
+    }
+    return r->errors.isEmpty();
+}
+
 int runValidate(const QStringList& args) {
     QCommandLineParser parser;
     if (const int rc =
@@ -72,7 +84,9 @@ int runValidate(const QStringList& args) {
     int rc = Ok;
     for (const QString& file : parser.positionalArguments()) {
         RigReadResult r = readRigFile(file);
-        if (r.ok() && !checkEnvironment(*r.rig, file, &r)) { // issue 15: its file decodes
+        // Issue 15: its environment decodes; issue 39: its IES profiles read (both report).
+        const bool filesOk = r.ok() && checkEnvironment(*r.rig, file, &r) && checkIesFiles(*r.rig, file, &r);
+        if (r.ok() && !filesOk) {
             print(out, r.errors);
             rc = Failed;
         } else if (r.ok()) {

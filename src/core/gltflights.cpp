@@ -46,6 +46,10 @@ const ExportLossInfo kExportLosses[int(ExportLoss::Count)] = {
      "the rig's \"barnDoors\" in the light node's extras.lightrig.barnDoors (the stand-in spot lights its "
      "whole "
      "90° cone; other viewers ignore it)"},
+    {ExportLoss::Ies, "ies", "IES profile",
+     "EXT_lights_ies on the light's node in place of its KHR_lights_punctual light: the file's candela × "
+     "multiplier with inverse-square falloff (a spot's cone and a falloff's range are not applied; viewers "
+     "without EXT_lights_ies show no light there)"},
 };
 
 const ExportLossInfo& exportLossInfo(ExportLoss kind) {
@@ -295,6 +299,7 @@ GltfRigExport convertRigToGltf(const Rig& rig, const SceneFrame& frame, const gl
         const double m = std::max({c.x, c.y, c.z});
         g.color = m > 0.0 ? c / m : glm::dvec3(0.0);
         g.intensity *= m > 0.0 ? m : 1.0;
+        if (l.ies) convertIes(l, fileFromWorld, unit, g, out.losses); // issue 39: EXT_lights_ies
         noteLink(l, &g, out.losses);
         if (l.gobo && l.type == LightType::Spot) {
             g.gobo = {{QStringLiteral("file"), l.gobo->file},
@@ -362,10 +367,15 @@ void setTransform(QJsonObject& node, const glm::dvec3& t, const glm::dquat& q) {
 } // namespace
 
 QJsonObject GltfLight::nodeJson(int lightIndex) const {
-    QJsonObject node{
-        {QStringLiteral("name"), name},
-        {QStringLiteral("extensions"), QJsonObject{{QStringLiteral("KHR_lights_punctual"),
-                                                    QJsonObject{{QStringLiteral("light"), lightIndex}}}}}};
+    QJsonObject instance{{QStringLiteral("light"), lightIndex}};
+    if (ies) {
+        instance.insert(QStringLiteral("multiplier"), ies->multiplier);
+        instance.insert(QStringLiteral("color"), array3(ies->color));
+    }
+    QJsonObject node{{QStringLiteral("name"), name},
+                     {QStringLiteral("extensions"), QJsonObject{{ies ? QStringLiteral("EXT_lights_ies")
+                                                                     : QStringLiteral("KHR_lights_punctual"),
+                                                                 instance}}}};
     setTransform(node, translation, rotation);
     QJsonObject lightrig;
     if (!link.isEmpty()) lightrig.insert(QStringLiteral("link"), link);

@@ -21,6 +21,7 @@
 #include <QString>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat3x3.hpp>
+#include <optional>
 #include <vector>
 
 namespace lr {
@@ -44,6 +45,7 @@ enum class ExportLoss {
     Link,         // light and shadow linking (issue 38): glTF has none
     Gobo,         // a spot's gobo (issue 39): glTF has no projected images
     BarnDoors,    // a rect light's barn doors (issue 39): glTF has none
+    Ies,          // an IES profile (issue 39): EXT_lights_ies in place of the punctual light, or lost
     Count
 };
 
@@ -67,7 +69,16 @@ struct LossyConversion {
 // One line: "Key: falloff range-power (range 8) → inverse-square, 12.6 cd at 3 m (...)".
 QString describeLoss(const LossyConversion& loss);
 
-// One KHR_lights_punctual light and its node, in the file's frame.
+// An IES profile on a light (issue 39, gltflights_ies.cpp): its node carries EXT_lights_ies in place of
+// KHR_lights_punctual (a viewer reading both would light it twice).
+struct GltfIes {
+    QByteArray file;                 // the .ies file's bytes, written as a data: URI
+    double multiplier = 1.0;         // × the file's candela (its candela multiplier applied by the reader)
+    glm::dvec3 color{1.0};           // linear, largest component 1 (or all 0)
+    QJsonObject profileJson() const; // the entry of extensions.EXT_lights_ies.lights
+};
+
+// One KHR_lights_punctual light (or EXT_lights_ies profile instance) and its node, in the file's frame.
 struct GltfLight {
     QString name;
     QString type;              // "point", "spot", "directional"
@@ -82,9 +93,21 @@ struct GltfLight {
     QJsonObject gobo; // the rig's "gobo" (issue 39), written in the node's extras.lightrig.gobo; empty: none
     // A rect's "barnDoors" (issue 39), written in the node's extras.lightrig.barnDoors; empty: none.
     QJsonObject barnDoors;
+    std::optional<GltfIes> ies;    // issue 39: set, the node is an EXT_lights_ies instance
     QJsonObject lightJson() const; // the extension's light object
+    // `lightIndex`: in KHR_lights_punctual's lights, or with `ies` in EXT_lights_ies's (gltfLightIndices).
     QJsonObject nodeJson(int lightIndex) const;
 };
+
+// Each light's index in its extension's array: KHR_lights_punctual's for lights without a profile,
+// EXT_lights_ies's for lights with one, both in order.
+std::vector<int> gltfLightIndices(const std::vector<GltfLight>& lights);
+
+// Issue 39 (gltflights_ies.cpp): `l`'s IES profile onto `g` (colour and intensity already converted:
+// `g.intensity` candela, `unit` the classic rule's factor), its node turned so that -Z is the profile's nadir
+// and +X its horizontal angle 0; a file that does not read is a loss and leaves `g` as it is.
+void convertIes(const Light& l, const glm::dmat3& fileFromWorld, double unit, GltfLight& g,
+                std::vector<LossyConversion>& losses);
 
 // A perspective camera and its node, in the file's frame.
 struct GltfCamera {

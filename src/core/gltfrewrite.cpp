@@ -5,6 +5,7 @@
 #include <QDir>
 #include <QJsonDocument>
 #include <QMap>
+#include <algorithm>
 #include <cmath>
 
 namespace lr {
@@ -12,6 +13,7 @@ namespace lr {
 namespace {
 
 const QString kExt = QStringLiteral("KHR_lights_punctual");
+const QString kIes = QStringLiteral("EXT_lights_ies"); // issue 39: lights with an IES profile
 
 // The end of the (well-formed) JSON value that starts at `at`.
 qsizetype valueEnd(const QByteArray& s, qsizetype at) {
@@ -153,6 +155,10 @@ GltfRewriteResult rewriteGltfJson(const QByteArray& s, const GltfAdditions& add)
 
     const bool addCamera = add.camera.has_value();
     const int lightCount = int(add.lights.size());
+    const std::vector<int> indices = gltfLightIndices(add.lights);
+    const int iesCount = int(std::count_if(add.lights.begin(), add.lights.end(),
+                                           [](const GltfLight& l) { return l.ies.has_value(); }));
+    const int punctualCount = lightCount - iesCount;
     Edits rootEdits;
     // Nodes: drop references to the file's own lights, move camera indices, append ours.
     QList<QByteArray> nodeTexts;
@@ -161,11 +167,14 @@ GltfRewriteResult rewriteGltfJson(const QByteArray& s, const GltfAdditions& add)
         for (const json::Value& node : nodes->items) {
             Edits e;
             const json::Value* ext = node.find(QStringLiteral("extensions"));
-            if (ext && ext->kind == K::Object && ext->find(kExt)) {
-                ++dropped;
-                const bool alone = ext->members.size() == 1;
+            if (ext && ext->kind == K::Object && (ext->find(kExt) || ext->find(kIes))) {
+                ++dropped; // the file's own lights, punctual or IES profiles, are replaced by the rig's
+                Edits x;
+                for (const QString& key : {kExt, kIes})
+                    if (ext->find(key)) x.insert(key, std::nullopt);
+                const bool alone = ext->members.size() == size_t(x.size());
                 e.insert(QStringLiteral("extensions"),
-                         alone ? std::nullopt : std::optional(editObject(s, *ext, {{kExt, std::nullopt}})));
+                         alone ? std::nullopt : std::optional(editObject(s, *ext, x)));
             }
             const json::Value* camera = node.find(QStringLiteral("camera"));
             if (addCamera && camera && camera->isNumber())
@@ -175,7 +184,7 @@ GltfRewriteResult rewriteGltfJson(const QByteArray& s, const GltfAdditions& add)
     const int first = int(nodeTexts.size());
     QList<QByteArray> added;
     for (int i = 0; i < lightCount; ++i) {
-        nodeTexts << text(add.lights[size_t(i)].nodeJson(i));
+        nodeTexts << text(add.lights[size_t(i)].nodeJson(indices[size_t(i)]));
         added << QByteArray::number(first + i);
     }
     if (addCamera) {
@@ -218,34 +227,46 @@ GltfRewriteResult rewriteGltfJson(const QByteArray& s, const GltfAdditions& add)
         r.notes << QStringLiteral("the model's %1 light(s) replaced by the rig's %2")
                        .arg(oldLights->items.size())
                        .arg(lightCount);
-    QJsonArray lights;
+    QJsonArray lights, profiles;
     for (const GltfLight& l : add.lights)
-        lights.append(l.lightJson());
+        l.ies ? profiles.append(l.ies->profileJson()) : lights.append(l.lightJson());
     const std::optional<QByteArray> ours =
-        lightCount ? std::optional(text(QJsonObject{{QStringLiteral("lights"), lights}})) : std::nullopt;
+        punctualCount ? std::optional(text(QJsonObject{{QStringLiteral("lights"), lights}})) : std::nullopt;
+    const std::optional<QByteArray> oursIes =
+        iesCount ? std::optional(text(QJsonObject{{QStringLiteral("lights"), profiles}})) : std::nullopt;
+    const json::Value* oldIes = extensions ? extensions->find(kIes) : nullptr;
     if (extensions) {
-        const bool alone = extensions->members.size() == 1 && oldExt;
-        if (ours || oldExt)
-            rootEdits.insert(QStringLiteral("extensions"),
-                             !ours && alone ? std::nullopt
-                                            : std::optional(editObject(s, *extensions, {{kExt, ours}})));
-    } else if (ours) {
-        rootEdits.insert(QStringLiteral("extensions"), "{" + json::quote(kExt) + ":" + *ours + "}");
+        size_t left = (ours ? 1 : 0) + (oursIes ? 1 : 0);
+        for (const json::Member& m : extensions->members)
+            left += m.key != kExt && m.key != kIes;
+        if (ours || oldExt || oursIes || oldIes)
+            rootEdits.insert(
+                QStringLiteral("extensions"),
+                left == 0 ? std::nullopt
+                          : std::optional(editObject(s, *extensions, {{kExt, ours}, {kIes, oursIes}})));
+    } else if (ours || oursIes) {
+        QList<QByteArray> members;
+        if (ours) members << json::quote(kExt) + ":" + *ours;
+        if (oursIes) members << json::quote(kIes) + ":" + *oursIes;
+        rootEdits.insert(QStringLiteral("extensions"), "{" + members.join(',') + "}");
     }
-    // extensionsUsed (and Required) name it exactly when lights are left.
-    for (const auto& [array, key, keep] :
-         {std::tuple{used, QStringLiteral("extensionsUsed"), lightCount > 0},
-          std::tuple{required, QStringLiteral("extensionsRequired"), false}}) {
+    // extensionsUsed (and Required) name each extension exactly when lights of it are left.
+    for (const auto& [array, key, keepPunctual, keepIes] :
+         {std::tuple{used, QStringLiteral("extensionsUsed"), punctualCount > 0, iesCount > 0},
+          std::tuple{required, QStringLiteral("extensionsRequired"), false, false}}) {
         QList<QByteArray> names;
-        bool had = false;
+        bool hadPunctual = false, hadIes = false;
         if (array)
             for (const json::Value& v : array->items) {
                 const bool isExt = v.kind == K::String && v.string == kExt;
-                had = had || isExt;
-                if (!isExt) names << raw(s, v);
+                const bool isIes = v.kind == K::String && v.string == kIes;
+                hadPunctual = hadPunctual || isExt;
+                hadIes = hadIes || isIes;
+                if (!isExt && !isIes) names << raw(s, v);
             }
-        if (keep) names << json::quote(kExt);
-        if (had != keep)
+        if (keepPunctual) names << json::quote(kExt);
+        if (keepIes) names << json::quote(kIes);
+        if (hadPunctual != keepPunctual || hadIes != keepIes)
             rootEdits.insert(key, names.isEmpty() ? std::nullopt : std::optional(joinArray(names)));
     }
     // The note.

@@ -96,19 +96,31 @@ QByteArray lightsOnlyGltfJson(const GltfAdditions& add) {
         {QStringLiteral("asset"), QJsonObject{{QStringLiteral("version"), QStringLiteral("2.0")},
                                               {QStringLiteral("generator"), QStringLiteral("LightRig")}}},
         {QStringLiteral("scene"), 0}};
-    QJsonArray nodes, lights, sceneNodes;
+    QJsonArray nodes, lights, profiles, sceneNodes;
+    const std::vector<int> indices = gltfLightIndices(add.lights);
     for (size_t i = 0; i < add.lights.size(); ++i) {
-        nodes.append(add.lights[i].nodeJson(int(i)));
-        lights.append(add.lights[i].lightJson());
+        const GltfLight& l = add.lights[i];
+        nodes.append(l.nodeJson(indices[i]));
+        l.ies ? profiles.append(l.ies->profileJson()) : lights.append(l.lightJson());
         sceneNodes.append(int(i));
     }
     QJsonObject scene;
     if (!nodes.isEmpty()) {
         scene.insert(QStringLiteral("nodes"), sceneNodes);
         root.insert(QStringLiteral("nodes"), nodes);
-        root.insert(QStringLiteral("extensionsUsed"), QJsonArray{kExt});
-        root.insert(QStringLiteral("extensions"),
-                    QJsonObject{{kExt, QJsonObject{{QStringLiteral("lights"), lights}}}});
+        QJsonArray used;
+        QJsonObject extensions;
+        if (!lights.isEmpty()) {
+            used.append(kExt);
+            extensions.insert(kExt, QJsonObject{{QStringLiteral("lights"), lights}});
+        }
+        if (!profiles.isEmpty()) { // issue 39
+            used.append(QStringLiteral("EXT_lights_ies"));
+            extensions.insert(QStringLiteral("EXT_lights_ies"),
+                              QJsonObject{{QStringLiteral("lights"), profiles}});
+        }
+        root.insert(QStringLiteral("extensionsUsed"), used);
+        root.insert(QStringLiteral("extensions"), extensions);
     }
     root.insert(QStringLiteral("scenes"), QJsonArray{scene});
     if (!add.note.isEmpty())

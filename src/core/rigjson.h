@@ -13,10 +13,9 @@
 namespace lr {
 
 // The newest version this LightRig reads; it reads every older one too. 2 (issue 16) added the rect and disk
-// light types and their "area", 3 (issue 38) a light's "link", 4 (issue 39) a spot's "gobo", a rect light's
-// "barnDoors"; a rig is written as the oldest version that holds it (rigjson_area.cpp), so a rig without
-// links stays version 2
-// byte for byte.
+// light types and their "area", 3 (issue 38) a light's "link", 4 (issue 39) a light's "ies", a spot's "gobo"
+// and a rect light's "barnDoors"; a rig is written as the oldest version that holds it (rigjson_area.cpp), so
+// a rig without links stays version 2 byte for byte.
 constexpr int kRigFormatVersion = 4;
 constexpr qint64 kMaxRigFileBytes = 16 * 1024 * 1024;
 constexpr int kMaxRigLights = 4096;

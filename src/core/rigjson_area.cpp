@@ -16,7 +16,7 @@ int formatVersionFor(const Rig& rig) {
     int version = 1;
     for (const Light& l : rig.lights) {
         version = std::max({version, firstFormatVersion(l.type), l.link.isDefault() ? 1 : kLinkFormatVersion,
-                            l.gobo ? kGoboFormatVersion : 1});
+                            l.gobo ? kGoboFormatVersion : 1, l.ies ? kIesFormatVersion : 1});
         if (l.barnDoors && l.type == LightType::Rect) version = std::max(version, kBarnDoorsFormatVersion);
     }
     return version;

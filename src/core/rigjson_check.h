@@ -143,6 +143,12 @@ QByteArray writeGobo(const GoboSpec& g);
 constexpr int kBarnDoorsFormatVersion = 4;
 std::optional<BarnDoors> readBarnDoors(Checker& c, const json::Value& v, const QString& path, int version);
 QByteArray writeBarnDoors(const BarnDoors& barnDoors);
+// rigjson_ies.cpp: a point or spot light's "ies" (issue 39, format version 4; type nullopt when unknown);
+// nullopt when invalid (errors reported), and its canonical text.
+constexpr int kIesFormatVersion = 4;
+std::optional<IesSpec> readIes(Checker& c, const json::Value& v, const QString& path, int version,
+                               std::optional<LightType> type);
+QByteArray writeIes(const IesSpec& spec);
 // rigjson_environment.cpp: the rig's "environment" (nullopt when invalid, errors reported), and its canonical
 // text (nullopt for the default environment, which is not written).
 std::optional<Environment> readEnvironment(Checker& c, const json::Value& v, const QString& path);

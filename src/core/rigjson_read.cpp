@@ -104,6 +104,9 @@ std::optional<Light> readLight(Checker& c, const Value& v, const QString& path, 
                 o.path("direction"),
                 QStringLiteral("missing; %1 needs a direction [x, y, z], where its light travels").arg(a));
         }
+    } else if (type == LightType::Point && v.find(u"ies")) { // issue 39: the profile's nadir (default down)
+        if (const Value* d = o.take("direction"))
+            if (const auto dir = c.direction(*d, o.path("direction"))) l.direction = *dir;
     } else {
         o.reject("direction", QStringLiteral("%1 has no direction (it shines in all directions)").arg(a));
     }
@@ -171,6 +174,7 @@ std::optional<Light> readLight(Checker& c, const Value& v, const QString& path, 
                                              "edges of its emitter)")
                                   .arg(a));
     }
+    if (const Value* x = o.take("ies")) l.ies = rigjson::readIes(c, *x, o.path("ies"), version, type);
     rejectMisplaced(o, false, false, a, is(&Light::usesFalloff), is(&Light::usesCone));
     o.finish();
     return type ? std::optional(l) : std::nullopt;

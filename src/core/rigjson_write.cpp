@@ -111,7 +111,7 @@ QByteArray light(const Light& l) {
     if (l.temperature) f.push_back({"temperature", num(*l.temperature)});
     f.push_back({"intensity", num(l.intensity)});
     if (l.usesPosition()) f.push_back({"position", vec(l.position)});
-    if (l.usesDirection()) f.push_back({"direction", vec(l.direction)});
+    if (l.usesDirection() || l.ies) f.push_back({"direction", vec(l.direction)}); // ies: its nadir
     if (l.usesFalloff()) f.push_back({"falloff", falloff(l.falloff)});
     if (l.usesCone()) f.push_back({"cone", cone(l.cone)});
     if (l.isArea()) f.push_back({"area", area(l)});
@@ -129,6 +129,7 @@ QByteArray light(const Light& l) {
     if (l.gobo && l.type == LightType::Spot) f.push_back({"gobo", rigjson::writeGobo(*l.gobo)});
     if (l.barnDoors && l.type == LightType::Rect)
         f.push_back({"barnDoors", rigjson::writeBarnDoors(*l.barnDoors)});
+    if (l.ies) f.push_back({"ies", rigjson::writeIes(*l.ies)});
     return blockObject(f, "    ");
 }
 

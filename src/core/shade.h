@@ -70,6 +70,7 @@ bool lightArrival(const ShadeLight<T>& l, const Surface<T>& s, const ShadeSettin
     if (!(std::abs(d) <= std::numeric_limits<T>::max())) d = std::numeric_limits<T>::max();
     *attenuation = evalFalloff(l, d);
     if (traitsOf(l.type).usesCone) *attenuation *= evalCone(l, glm::dot(-*L, l.direction));
+    if (l.ies) *attenuation *= l.iesScale * iesCandelaToward<T>(*l.ies, -*L, l.iesNadir, l.iesX, l.iesY);
     return *attenuation > T(0);
 }
 

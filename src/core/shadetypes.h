@@ -2,6 +2,7 @@
 // settings, templated on the scalar (shade.h evaluates them; lighting_area.h the area lights).
 #pragma once
 
+#include "ies.h"
 #include "lighting.h"
 #include "types.h"
 
@@ -39,6 +40,13 @@ template <typename T> struct ShadeLight {
     // Barn doors (rect; issue 39, core/barndoors.h): the flaps' far edge `barnDepth` in front of the emitter
     // and `barnExtent` outside its edges, view units; barnDepth 0: none.
     T barnDepth = T(0), barnExtent = T(0);
+    // An IES profile (issue 39, core/iesshade.h; null: none, and nothing below is read): the attenuation is
+    // scaled by iesScale × its candela toward the surface, in the photometric frame (view space, unit):
+    // vertical angle 0 along iesNadir, horizontal 0 along iesX, 90 along iesY. Whoever fills it keeps the
+    // profile alive.
+    const IesProfile* ies = nullptr;
+    Vec3<T> iesNadir{0, -1, 0}, iesX{1, 0, 0}, iesY{0, 0, 1};
+    T iesScale = T(1);
 };
 
 template <typename T> struct Surface {

@@ -43,8 +43,10 @@ int Document::rowOf(LightId id) const {
 }
 
 Rig Document::renderRig() const {
-    if (m_solo.isEmpty()) return m_rig;
     Rig out = m_rig;
+    // Issue 39: the files the lights name, against the rig's folder (the current one while untitled).
+    resolveLightFiles(out, m_filePath.isEmpty() ? QString() : QFileInfo(m_filePath).absolutePath());
+    if (m_solo.isEmpty()) return out;
     for (size_t i = 0; i < out.lights.size(); ++i)
         if (!m_solo.contains(m_ids[int(i)])) out.lights[i].enabled = false;
     return out;

@@ -88,11 +88,15 @@ enum class LightProperty {
     BarnDoors,
     BarnDoorAngle,
     BarnDoorLength,
-    Link,         // issue 38: which parts it lights and which cast its shadow (editor/linkedit.h)
-    GoboFile,     // issue 39, spot: the gobo's image (core/lightshaping.h GoboSpec); "" = no gobo
-    GoboScale,    // spot with a gobo: 0.01 ... 100 × the cone's width
-    GoboRotation, // spot with a gobo: degrees about the axis, -360 ... 360
-    Any           // not a property: "several or all values of the light changed" (in RigChange only)
+    Link,          // issue 38: which parts it lights and which cast its shadow (editor/linkedit.h)
+    GoboFile,      // issue 39, spot: the gobo's image (core/lightshaping.h GoboSpec); "" = no gobo
+    GoboScale,     // spot with a gobo: 0.01 ... 100 × the cone's width
+    GoboRotation,  // spot with a gobo: degrees about the axis, -360 ... 360
+    IesFile,       // issue 39 (lightproperty_ies.cpp): point and spot; QString, "" = no profile
+    IesMultiplier, // double 0 ... 1e6 (shown with a profile)
+    IesLevel,      // int: 0 the profile's candela, 1 the light's intensity
+    IesRotation,   // double degrees, 0 ... 360
+    Any            // not a property: "several or all values of the light changed" (in RigChange only)
 };
 constexpr int kLightPropertyCount = int(LightProperty::Any);
 

@@ -82,6 +82,7 @@ std::span<const LightPropertyInfo> lightProperties() {
         std::vector<LightPropertyInfo> out(valueLightProperties().begin(), valueLightProperties().end());
         out.insert(out.end(), goboLightProperties().begin(), goboLightProperties().end());
         out.insert(out.end(), barnDoorLightProperties().begin(), barnDoorLightProperties().end());
+        out.insert(out.end(), iesLightProperties().begin(), iesLightProperties().end()); // issue 39
         out.push_back(kLinkRow); // last: the dock shows it as a section of its own below the values
         return out;
     }();

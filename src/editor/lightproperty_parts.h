@@ -12,5 +12,6 @@ const LightPropertyInfo& linkLightProperty();
 inline constexpr std::size_t kGoboLightPropertyCount = 3;
 std::span<const LightPropertyInfo> goboLightProperties();
 std::span<const LightPropertyInfo> barnDoorLightProperties(); // lightproperty_barndoors.cpp (issue 39)
+std::span<const LightPropertyInfo> iesLightProperties();      // issue 39 (lightproperty_ies.cpp)
 
 } // namespace lr

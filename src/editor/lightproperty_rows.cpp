@@ -582,8 +582,8 @@ static_assert(
         return true;
     }(),
     "the emitter size row applies to the types with a position: they must all cast shadows");
-static_assert(std::size(kLightProperties) + 1 + kGoboLightPropertyCount + 3 ==
-                  size_t(kLightPropertyCount), // + link, gobo, barn doors
+static_assert(std::size(kLightProperties) + 1 + kGoboLightPropertyCount + 3 + 4 ==
+                  size_t(kLightPropertyCount), // + link, gobo, barn doors, IES
               "one row per LightProperty");
 
 } // namespace

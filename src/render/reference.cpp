@@ -2,6 +2,7 @@
 
 #include "core/areaintegrate.h"
 #include "core/colour.h"
+#include "core/iesshade.h"
 #include "core/lighting.h"
 #include "gbuffer.h"
 #include "referencelayers.h"
@@ -63,7 +64,8 @@ std::optional<ReferenceScene> makeScene(const Model& model, const Rig& rig, cons
                                         QString* error,
                                         const std::shared_ptr<const LoadedEnvironment>& environment,
                                         const LinkResolution& links,
-                                        const std::vector<std::shared_ptr<const GoboImage>>& gobos);
+                                        const std::vector<std::shared_ptr<const GoboImage>>& gobos,
+                                        const std::vector<std::shared_ptr<const IesProfile>>& ies);
 
 } // namespace
 
@@ -81,14 +83,15 @@ std::optional<ReferenceScene>
 makeReferenceScene(const Model& model, const Rig& rig, const SceneFrame& frame, const glm::dmat4& view,
                    const RenderSettings& settings, QString* error,
                    const std::shared_ptr<const LoadedEnvironment>& environment) {
-    return makeScene(model, rig, frame, view, settings, error, environment, referenceLinks(model, rig), {});
+    return makeScene(model, rig, frame, view, settings, error, environment, referenceLinks(model, rig), {},
+                     {});
 }
 
 std::optional<ReferenceScene> makeReferenceScene(const SceneDescription& scene, const glm::dmat4& view,
                                                  const RenderSettings& settings, QString* error) {
     static const Model none;
     return makeScene(scene.model() ? *scene.model() : none, scene.rig(), scene.frame(), view, settings, error,
-                     scene.environment(), scene.links(), scene.lightAssets().gobos);
+                     scene.environment(), scene.links(), scene.lightAssets().gobos, scene.lightAssets().ies);
 }
 
 namespace {
@@ -109,9 +112,12 @@ std::optional<ReferenceScene> makeScene(const Model& model, const Rig& rig, cons
                                         QString* error,
                                         const std::shared_ptr<const LoadedEnvironment>& environment,
                                         const LinkResolution& links,
-                                        const std::vector<std::shared_ptr<const GoboImage>>& gobos) {
+                                        const std::vector<std::shared_ptr<const GoboImage>>& gobos,
+                                        const std::vector<std::shared_ptr<const IesProfile>>& ies) {
     ReferenceScene s;
     s.lights = prepareLights(rig, frame, view);
+    applyIesProfiles(s.lights, rig, ies, view); // issue 39: the profile interpolated, exactly as core's
+    s.iesProfiles = ies;
     s.settings = prepareSettings(rig, frame);
     s.exposureEV = settings.exposureEV;
     s.toneMap = settings.toneMap;

@@ -52,6 +52,7 @@ namespace lr {
 // What the reference needs besides the G-buffer: the lights prepared in double for the frame's view.
 struct ReferenceScene {
     std::vector<lighting::ShadeLight<double>> lights;
+    std::vector<std::shared_ptr<const IesProfile>> iesProfiles; // what lights[k].ies point to (issue 39)
     lighting::ShadeSettings<double> settings;
     double exposureEV = 0.0;
     ToneMap toneMap = ToneMap::Clamp;

@@ -1,5 +1,7 @@
 #include "scenedescription.h"
 
+#include "core/iesshade.h"
+
 #include "groundmesh.h"
 #include "linkparts.h"
 
@@ -90,7 +92,9 @@ std::size_t SceneDescription::groundPart(std::size_t mesh) const {
 }
 
 std::vector<lighting::ShadeLight<double>> SceneDescription::lights(const glm::dmat4& view) const {
-    return prepareLights(m_rig, frame(), view);
+    std::vector<lighting::ShadeLight<double>> lights = prepareLights(m_rig, frame(), view);
+    applyIesProfiles(lights, m_rig, m_assets.ies, view); // issue 39: they point into this description
+    return lights;
 }
 
 lighting::ShadeSettings<double> SceneDescription::shadeSettings() const {

@@ -61,8 +61,9 @@ class SceneDescription {
     // The sphere lights are culled against: the drawn bounds' (the model and its ground).
     SceneFrame reach() const;
 
-    // The enabled lights prepared in double for a view (world -> view), in rig order, and the rig's
-    // scene-wide shading settings (core/prepare.h).
+    // The enabled lights prepared in double for a view (world -> view), in rig order, with their IES
+    // profiles (core/iesshade.h; they point into lightAssets()), and the rig's scene-wide shading settings
+    // (core/prepare.h).
     std::vector<lighting::ShadeLight<double>> lights(const glm::dmat4& view) const;
     lighting::ShadeSettings<double> shadeSettings() const;
     // Whether the environment lights the scene: the rig's source is not None and one is loaded.

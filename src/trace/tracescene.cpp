@@ -1,5 +1,7 @@
 #include "tracescene.h"
 
+#include "core/iesshade.h"
+
 #include "core/envintegrate.h"
 #include "core/prepare.h"
 
@@ -111,6 +113,10 @@ std::shared_ptr<const TraceScene> TraceScene::build(const SceneDescription& scen
     t->m_environmentGroup = orBackground(groupOfKind(LightGroupKind::Environment));
     t->m_emissiveGroup = orBackground(groupOfKind(LightGroupKind::Emissive));
     t->m_ambientGroup = orBackground(groupOfKind(LightGroupKind::Ambient));
+    t->m_iesProfiles = scene.lightAssets().ies; // what the lights' ShadeLight::ies point to
+    for (const QString& e : scene.lightAssets().errors)
+        if (e.contains(QLatin1String(".ies.file: ")))
+            t->m_warnings << QStringLiteral("%1 (the light is traced without its profile)").arg(e);
     for (size_t i = 0; i < rig.lights.size(); ++i) {
         const Light& light = rig.lights[i];
         if (!light.enabled) continue;
@@ -129,6 +135,8 @@ std::shared_ptr<const TraceScene> TraceScene::build(const SceneDescription& scen
             l.shade.gobo = gobos[i].get();
             t->m_gobos.push_back(gobos[i]);
         }
+        if (i < scene.lightAssets().ies.size()) // issue 39: the profile, as core shades it
+            applyIesProfile(l.shade, light, scene.lightAssets().ies[i].get(), glm::dmat4(1.0));
         l.emitter = shadowEmitter(rig, frame, light);
         l.emitter.casts = true; // every light is occluded in the traced image, as the environment is
         if (links.active) l.litMask = links.litMask[i], l.emitter.shadowMask = links.shadowMask[i];

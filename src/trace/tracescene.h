@@ -127,7 +127,8 @@ class TraceScene {
     std::vector<MaterialTextures> m_materials;
     bool m_allOpaque = true;
     std::vector<TraceLight> m_lights;
-    std::vector<std::shared_ptr<const GoboImage>> m_gobos; // what m_lights' shade.gobo point into
+    std::vector<std::shared_ptr<const GoboImage>> m_gobos;        // what m_lights' shade.gobo point into
+    std::vector<std::shared_ptr<const IesProfile>> m_iesProfiles; // kept alive for m_lights (issue 39)
     bool m_linked = false;
     std::vector<std::uint8_t> m_litClass; // per part, when linked
     std::uint32_t m_catcherPart = 0;

@@ -12,6 +12,7 @@
 #include <QCheckBox>
 #include <QColorDialog>
 #include <QComboBox>
+#include <QLabel>
 #include <QLineEdit>
 #include <QSet>
 #include <QSignalSpy>
@@ -34,7 +35,7 @@ QSet<QString> expectedFields(LightType type, FalloffModel falloff, ConeModel con
         f += {"areaWidth", "areaHeight", "barnDoors"}; // issue 39: angle, length when on
     if (type == LightType::Disk) f += "areaRadius";
     if (positioned) {
-        f += {"position", "falloffModel"};
+        f += {"position", "falloffModel", "iesFile"}; // issue 39: the profile's rows while it has one
         switch (falloff) {
         case FalloffModel::None:
             break;
@@ -120,7 +121,11 @@ const QStringList kAllFields{"name",
                              "goboRotation",
                              "barnDoors",
                              "barnDoorAngle",
-                             "barnDoorLength"};
+                             "barnDoorLength",
+                             "iesFile",
+                             "iesMultiplier",
+                             "iesLevel",
+                             "iesRotation"};
 
 QSet<QString> visibleFields(PropertiesDock& dock) {
     QSet<QString> out;
@@ -420,6 +425,31 @@ class TestPropertiesDock : public QObject {
 
     // Issue 14: the shadow rows come from the property table by themselves: the checkbox shows the details,
     // a resolution that is not a power of two is refused with the rule, a valid one is one undo step.
+    // Issue 39: the profile's rows show while a light has one, with the profile's peak and beam angle below
+    // the file, or the reader's reason.
+    void iesProfile_showsItsRowsAndItsPeak() {
+        Document doc;
+        PropertiesDock dock(&doc);
+        dock.show();
+        QVERIFY(doc.addLight(LightType::Point));
+        doc.setSelectedRows({0}, 0);
+        QVERIFY(dock.field(LightProperty::IesFile)->isVisibleTo(&dock));
+        QVERIFY(!dock.field(LightProperty::IesMultiplier)->isVisibleTo(&dock));
+        auto* summary = dock.findChild<QLabel*>(QStringLiteral("iesSummary"));
+        QVERIFY(summary && !summary->isVisibleTo(&dock));
+        QVERIFY(doc.setLightValue({0}, LightProperty::IesFile,
+                                  QStringLiteral(LIGHTRIG_TEST_DATA "/ies/full.ies")));
+        for (LightProperty p :
+             {LightProperty::IesMultiplier, LightProperty::IesLevel, LightProperty::IesRotation})
+            QVERIFY2(dock.field(p)->isVisibleTo(&dock), qPrintable(propertyFieldName(p)));
+        QVERIFY(summary->isVisibleTo(&dock));
+        QVERIFY2(summary->text().startsWith(QStringLiteral("Peak 1500 cd, beam ")),
+                 qPrintable(summary->text()));
+        QVERIFY(doc.setLightValue({0}, LightProperty::IesFile,
+                                  QStringLiteral(LIGHTRIG_TEST_DATA "/ies/truncated.ies")));
+        QVERIFY2(summary->text().contains(QStringLiteral("truncated.ies:9: ")), qPrintable(summary->text()));
+    }
+
     void shadowFields_showWhenOn() {
         Document doc;
         PropertiesDock dock(&doc);

@@ -39,6 +39,7 @@ class TestRigCli : public QObject {
     void validateEmbeddedPreset();
     void validateEnvironment();
     void validateAreaLights();
+    void validateIesProfiles();
     void fifoIsRefused();
     void typoIsAUsageError();
     void formatCheck();
@@ -137,6 +138,33 @@ void TestRigCli::validateEnvironment() {
     for (const QString& line : r.lines())
         named = named || (line.startsWith(missing + QStringLiteral(": environment.file: ")) &&
                           line.contains(QStringLiteral("sky.exr")));
+    QVERIFY2(named, qPrintable(show(r)));
+}
+
+// Issue 39: `validate` reads the IES profiles a rig names (relative to the rig): a good one is ok, a
+// truncated one is reported as "RIG: lights[0].ies.file: IESFILE:LINE: reason", exit 1.
+void TestRigCli::validateIesProfiles() {
+    const QString ies = QStringLiteral(LIGHTRIG_TEST_DATA "/ies/");
+    copy(ies + QStringLiteral("full.ies"), m_dir.filePath(QStringLiteral("good.ies")));
+    copy(ies + QStringLiteral("truncated.ies"), m_dir.filePath(QStringLiteral("cut.ies")));
+    const auto rig = [&](const QString& name, const QString& file) {
+        const QString path = m_dir.filePath(name);
+        QFile f(path);
+        f.open(QIODevice::WriteOnly);
+        f.write(R"({"format": "lightrig", "version": 4, "lights": [{"type": "point", "position": [0, 2, 0],
+            "falloff": {"model": "inverse-square"}, "ies": {"file": ")" +
+                file.toUtf8() + R"("}}]})");
+        return path;
+    };
+    const QString good = rig(QStringLiteral("ies-good.json"), QStringLiteral("good.ies"));
+    const QString bad = rig(QStringLiteral("ies-bad.json"), QStringLiteral("cut.ies"));
+    const Run r = lightrig({QStringLiteral("validate"), good, bad});
+    QVERIFY2(r.code == 1, qPrintable(show(r)));
+    QVERIFY2(r.lines().contains(good + QStringLiteral(": ok")), qPrintable(show(r)));
+    bool named = false;
+    for (const QString& line : r.lines())
+        named = named || line.startsWith(bad + QStringLiteral(": lights[0].ies.file: ") +
+                                         m_dir.filePath(QStringLiteral("cut.ies")) + QStringLiteral(":9: "));
     QVERIFY2(named, qPrintable(show(r)));
 }
 

@@ -48,6 +48,7 @@ Rig everyFieldRig() {
     Light b = makeLight(LightType::Point, QStringLiteral("point polynomial"));
     b.falloff = {FalloffModel::InversePolynomial, 20.0, 2.0, 1.0, 0.5, 0.25};
     b.temperature = 3000.0;
+    b.ies = IesSpec{QStringLiteral("down.ies")}; // issue 39: the profile's multiplier and rotation
     Light c = makeLight(LightType::Rim, QStringLiteral("rim"));
     Light d = makeLight(LightType::Directional, QStringLiteral("directional"));
     a.shadow.enabled = true; // issue 14: the shadow's fields (size on the spot, angle on the directional)
