@@ -1,5 +1,8 @@
 #include "tracescenes.h"
 
+#include "trace/sampler.h"
+#include "trace/tracescene.h"
+
 #include <cmath>
 
 using namespace lr;
@@ -132,6 +135,23 @@ ViewCamera lookAt(const glm::dvec3& eye, const glm::dvec3& target, double fovDeg
     c.up = up;
     c.yfovDeg = fovDeg;
     return c;
+}
+
+std::optional<lr::lighting::Surface<double>> viewSurfaceAt(const lr::trace::TraceScene& traced,
+                                                           const lr::trace::CameraRays& rays,
+                                                           const glm::dmat4& view, int x, int y) {
+    const glm::dvec3 dir = rays.direction(x + 0.5, y + 0.5);
+    lr::trace::Sampler sampler(0, 0);
+    const lr::EmbreeHit hit = traced.intersect(rays.origin(), dir, 1e30, sampler);
+    if (!hit.hit) return std::nullopt;
+    const lr::trace::SurfacePoint p = traced.surface(hit, rays.origin(), dir);
+    lr::lighting::Surface<double> s;
+    s.position = glm::dvec3(view * glm::dvec4(p.position, 1.0));
+    s.normal = glm::normalize(glm::dvec3(view * glm::dvec4(p.normal, 0.0)));
+    s.albedo = p.baseColor;
+    s.metallic = p.metallic;
+    s.roughness = p.roughness;
+    return s;
 }
 
 } // namespace tracetest

@@ -2,11 +2,14 @@
 // environments, physically based rigs; and what the tests measure on a traced image.
 #pragma once
 
+#include "core/shadetypes.h"
 #include "scene/scenedescription.h"
+#include "trace/camerarays.h"
 #include "trace/pathtracer.h"
 
 #include <glm/vec3.hpp>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace tracetest {
@@ -29,6 +32,12 @@ std::unique_ptr<lr::SceneDescription> describe(const lr::Model& model, const lr:
 double meanChannel(const lr::FloatImage& image, int c);
 // Whether every channel of every pixel is finite.
 bool allFinite(const lr::FloatImage& image);
+// The surface the eye ray through the centre of pixel (x, y) hits, in view space (`view`: world -> view), as
+// core shades it (base colour, metallic, roughness); nullopt where the ray hits nothing. What a test of
+// direct light compares the traced image with: lighting::shadeSurface of it.
+std::optional<lr::lighting::Surface<double>> viewSurfaceAt(const lr::trace::TraceScene& traced,
+                                                           const lr::trace::CameraRays& rays,
+                                                           const glm::dmat4& view, int x, int y);
 lr::ViewCamera lookAt(const glm::dvec3& eye, const glm::dvec3& target, double fovDeg,
                       const glm::dvec3& up = glm::dvec3(0.0, 1.0, 0.0));
 

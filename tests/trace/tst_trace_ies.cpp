@@ -62,18 +62,9 @@ Traced traceAndCompare(const Rig& rig, QStringList* warnings = nullptr) {
     const auto st = scene->shadeSettings();
     for (int y = 0; y < size.height(); ++y)
         for (int x = 0; x < size.width(); ++x) {
-            const glm::dvec3 dir = rays.direction(x + 0.5, y + 0.5);
-            trace::Sampler sampler(0, 0);
-            const EmbreeHit hit = traced->intersect(rays.origin(), dir, 1e30, sampler);
-            if (!hit.hit) continue;
-            const trace::SurfacePoint p = traced->surface(hit, rays.origin(), dir);
-            lighting::Surface<double> s;
-            s.position = glm::dvec3(view * glm::dvec4(p.position, 1.0));
-            s.normal = glm::normalize(glm::dvec3(view * glm::dvec4(p.normal, 0.0)));
-            s.albedo = p.baseColor;
-            s.metallic = p.metallic;
-            s.roughness = p.roughness;
-            const glm::dvec3 expected = lighting::shadeSurface<double>(s, lights, st);
+            const auto s = tracetest::viewSurfaceAt(*traced, rays, view, x, y);
+            if (!s) continue;
+            const glm::dvec3 expected = lighting::shadeSurface<double>(*s, lights, st);
             const double e = glm::length(glm::dvec3(out.image.at(x, y)) - expected) /
                              std::max(1e-3, glm::length(expected));
             out.worst = std::max(out.worst, e);
