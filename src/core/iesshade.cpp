@@ -30,15 +30,4 @@ void applyIesProfile(lighting::ShadeLight<double>& o, const Light& light, const 
     }
 }
 
-void applyIesProfiles(std::vector<lighting::ShadeLight<double>>& lights, const Rig& rig,
-                      const std::vector<std::shared_ptr<const IesProfile>>& profiles,
-                      const glm::dmat4& view) {
-    size_t k = 0;
-    for (size_t i = 0; i < rig.lights.size() && k < lights.size(); ++i) {
-        if (!rig.lights[i].enabled) continue;
-        if (i < profiles.size()) applyIesProfile(lights[k], rig.lights[i], profiles[i].get(), view);
-        ++k;
-    }
-}
-
 } // namespace lr

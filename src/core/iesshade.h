@@ -21,11 +21,6 @@ namespace lr {
 void applyIesProfile(lighting::ShadeLight<double>& o, const Light& light, const IesProfile* profile,
                      const glm::dmat4& view);
 
-// The same for prepareLights()'s output (the rig's enabled lights, in order); `profiles` per rig light
-// (scene/lightassets.h), empty or shorter: none.
-void applyIesProfiles(std::vector<lighting::ShadeLight<double>>& lights, const Rig& rig,
-                      const std::vector<std::shared_ptr<const IesProfile>>& profiles, const glm::dmat4& view);
-
 // The factor's scale alone (what the raster packs): multiplier / peak ("light", 0 without light) or
 // multiplier ("profile").
 double iesScale(const IesSpec& spec, const IesProfile& profile);

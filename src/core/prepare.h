@@ -71,6 +71,10 @@ template <typename T> lighting::ShadeLight<T> castLight(const lighting::ShadeLig
     o.halfWidth = T(l.halfWidth), o.halfHeight = T(l.halfHeight);
     o.twoSided = l.twoSided;
     o.barnDepth = T(l.barnDepth), o.barnExtent = T(l.barnExtent);
+    o.gobo = l.gobo, o.goboHalf = T(l.goboHalf);
+    o.ies = l.ies, o.iesScale = T(l.iesScale);
+    o.iesNadir = lighting::Vec3<T>(l.iesNadir);
+    o.iesX = lighting::Vec3<T>(l.iesX), o.iesY = lighting::Vec3<T>(l.iesY);
     return o;
 }
 

@@ -2,8 +2,8 @@
 
 #include "core/areaintegrate.h"
 #include "core/colour.h"
-#include "core/iesshade.h"
 #include "core/lighting.h"
+#include "core/shapinglights.h"
 #include "gbuffer.h"
 #include "referencelayers.h"
 #include "scene/linkparts.h"
@@ -116,7 +116,7 @@ std::optional<ReferenceScene> makeScene(const Model& model, const Rig& rig, cons
                                         const std::vector<std::shared_ptr<const IesProfile>>& ies) {
     ReferenceScene s;
     s.lights = prepareLights(rig, frame, view);
-    applyIesProfiles(s.lights, rig, ies, view); // issue 39: the profile interpolated, exactly as core's
+    applyLightShaping(s.lights, rig, ies, gobos, view); // issue 39: exactly as core shades them
     s.iesProfiles = ies;
     s.settings = prepareSettings(rig, frame);
     s.exposureEV = settings.exposureEV;
@@ -129,12 +129,8 @@ std::optional<ReferenceScene> makeScene(const Model& model, const Rig& rig, cons
             s.emitters.push_back(shadowEmitter(rig, frame, rig.lights[i]));
             rigIndex.push_back(i);
         }
-    for (size_t k = 0; k < rigIndex.size() && k < s.lights.size(); ++k) // gobos before the per-class copies
-        if (const size_t i = rigIndex[k];
-            i < gobos.size() && gobos[i] && rig.lights[i].gobo && rig.lights[i].type == LightType::Spot) {
-            s.lights[k].gobo = gobos[i].get();
-            s.gobos.push_back(gobos[i]);
-        }
+    for (size_t k = 0; k < rigIndex.size() && k < s.lights.size(); ++k) // keeps the images alive
+        if (s.lights[k].gobo) s.gobos.push_back(gobos[rigIndex[k]]);
     if (links.active && rigIndex.size() == s.lights.size()) {
         for (size_t k = 0; k < rigIndex.size(); ++k)
             s.emitters[k].shadowMask = links.shadowMask[rigIndex[k]];

@@ -1,6 +1,6 @@
 #include "scenedescription.h"
 
-#include "core/iesshade.h"
+#include "core/shapinglights.h"
 
 #include "groundmesh.h"
 #include "linkparts.h"
@@ -93,7 +93,7 @@ std::size_t SceneDescription::groundPart(std::size_t mesh) const {
 
 std::vector<lighting::ShadeLight<double>> SceneDescription::lights(const glm::dmat4& view) const {
     std::vector<lighting::ShadeLight<double>> lights = prepareLights(m_rig, frame(), view);
-    applyIesProfiles(lights, m_rig, m_assets.ies, view); // issue 39: they point into this description
+    applyLightShaping(lights, m_rig, m_assets.ies, m_assets.gobos, view); // issue 39: into this description
     return lights;
 }
 

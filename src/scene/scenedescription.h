@@ -62,7 +62,8 @@ class SceneDescription {
     SceneFrame reach() const;
 
     // The enabled lights prepared in double for a view (world -> view), in rig order, with their IES
-    // profiles (core/iesshade.h; they point into lightAssets()), and the rig's scene-wide shading settings
+    // profiles and gobo images (core/shapinglights.h; they point into lightAssets()), and the rig's
+    // scene-wide shading settings
     // (core/prepare.h).
     std::vector<lighting::ShadeLight<double>> lights(const glm::dmat4& view) const;
     lighting::ShadeSettings<double> shadeSettings() const;

@@ -1,6 +1,6 @@
 #include "tracescene.h"
 
-#include "core/iesshade.h"
+#include "core/shapinglights.h"
 
 #include "core/envintegrate.h"
 #include "core/prepare.h"
@@ -130,13 +130,10 @@ std::shared_ptr<const TraceScene> TraceScene::build(const SceneDescription& scen
         TraceLight l;
         l.group = orBackground(groupOf[i]);
         l.shade = prepareLight(rig, frame, glm::dmat4(1.0), light);
-        if (const auto& gobos = scene.lightAssets().gobos; // issue 39: kept alive by the scene
-            light.gobo && light.type == LightType::Spot && i < gobos.size() && gobos[i]) {
-            l.shade.gobo = gobos[i].get();
-            t->m_gobos.push_back(gobos[i]);
+        if (const LightAssets& a = scene.lightAssets(); i < a.ies.size() && i < a.gobos.size()) {
+            applyLightShaping(l.shade, light, a.ies[i].get(), a.gobos[i].get(), glm::dmat4(1.0)); // issue 39
+            if (l.shade.gobo) t->m_gobos.push_back(a.gobos[i]); // kept alive with the traced scene
         }
-        if (i < scene.lightAssets().ies.size()) // issue 39: the profile, as core shades it
-            applyIesProfile(l.shade, light, scene.lightAssets().ies[i].get(), glm::dmat4(1.0));
         l.emitter = shadowEmitter(rig, frame, light);
         l.emitter.casts = true; // every light is occluded in the traced image, as the environment is
         if (links.active) l.litMask = links.litMask[i], l.emitter.shadowMask = links.shadowMask[i];
