@@ -80,6 +80,9 @@ bool lightArrival(ShadeLight l, vec3 P, vec3 N, ShadeSettings st, out vec3 L, ou
 #ifdef LR_HAS_LIGHT_SPOT
         if (lightTypeOf(l) == LR_LIGHT_SPOT) attenuation *= evalCone(l, cosTheta);
 #endif
+#ifdef LR_IES
+        attenuation *= lrIes(l, -L);  // 1 for a light without a profile
+#endif
         return attenuation > 0.0;
     }
 #endif
@@ -100,6 +103,9 @@ vec3 shadeLight(ShadeLight l, Surface s, ShadeSettings st, vec3 V) {
     vec3 L;
     float attenuation;
     if (!lightArrival(l, s.position, N, st, L, attenuation)) return vec3(0.0);
+#ifdef LR_GOBO
+    lrApplyGobo(l, L);
+#endif
     float nDotL = dot(N, L);
     float D = diffuseOf(l) == LR_DIFFUSE_LAMBERT ? diffuseLambert(nDotL) : diffuseHalfLambert(nDotL);
     float S = 0.0;
@@ -188,6 +194,9 @@ vec3 shadeLightPbr(ShadeLight l, Surface s, ShadeSettings st, vec3 V, PbrSurface
     vec3 L;
     float attenuation;
     bool arrives = lightArrival(l, s.position, s.normal, st, L, attenuation);
+#ifdef LR_GOBO
+    lrApplyGobo(l, L);
+#endif
     float nDotL = dot(N, L);
     float cosTerm = diffuseOf(l) == LR_DIFFUSE_LAMBERT ? diffuseLambert(nDotL) : diffuseHalfLambert(nDotL);
     PbrLobes f = pbrLobes(N, L, V, cDiff, f0, alpha, cosTerm);

@@ -34,6 +34,21 @@ struct ShadeLight {
 #ifdef LR_LIGHT_LINKING
     uint litMask;  // bit c: it lights the parts of lighting class c (core/lightlink.h)
 #endif
+#ifdef LR_IES
+    // An IES profile (core/iesshade.h; shaping.glsl lrIes): its layer in uIes (-1: none), the photometric
+    // nadir and horizontal angle 0's axis (view space, unit; angle 90 along iesX × iesNadir), the scale.
+    int iesLayer;
+    vec3 iesNadir, iesX;
+    float iesScale;
+#endif
+#ifdef LR_GOBO
+    // A spot's gobo (core/gobo.h; shaping.glsl lrGoboTint): its layer in uGobos (-1: none), its axes (view
+    // space), half extent, size in texels and 1 / the array's size.
+    int goboLayer;
+    vec3 goboX, goboY;
+    float goboHalf;
+    vec2 goboSize, goboInvArray;
+#endif
 };
 
 struct Surface {
@@ -105,6 +120,9 @@ uniform int uLightCount;
 //   5: constant, linear, quadratic, cone                      6: cosInner, cosOuter, outer, coneExponent
 //   7: rimExponent, halfWidth, halfHeight, twoSided
 //   8 (LR_LIGHT_LINKING only, LR_LIGHT_TEXELS 9): litMask's low 16 bits, its high 16 bits, 0, 0
+//   LR_IES_TEXEL + 0, 1 (LR_IES only): iesNadir.xyz, iesLayer; iesX.xyz, iesScale
+//   LR_GOBO_TEXEL + 0, 1, 2 (LR_GOBO only): goboX.xyz, goboLayer; goboY.xyz, goboHalf; goboSize, goboInvArray
+//   (shadergen.h lightTexelLayout places them; lightpack.h packIesTexels, packGoboTexels write them)
 // Area lights (no falloff, no cone) reuse texels 5 and 6: 5: axisX.xyz, cone   6: axisY.xyz, coneExponent.
 // A rect light (LR_BARN_DOORS) carries its barn doors' depth in 7.x and their extent in 3.w.
 // Unused fields are never read: the compiler drops their fetches.
@@ -158,6 +176,25 @@ ShadeLight loadLight(int index) {
 #ifdef LR_LIGHT_LINKING
     vec4 t8 = texelFetch(uLights, base + 8);
     l.litMask = uint(t8.x) | (uint(t8.y) << 16);
+#endif
+#ifdef LR_IES
+    vec4 i0 = texelFetch(uLights, base + LR_IES_TEXEL);
+    vec4 i1 = texelFetch(uLights, base + LR_IES_TEXEL + 1);
+    l.iesNadir = i0.xyz;
+    l.iesLayer = int(i0.w);
+    l.iesX = i1.xyz;
+    l.iesScale = i1.w;
+#endif
+#ifdef LR_GOBO
+    vec4 g0 = texelFetch(uLights, base + LR_GOBO_TEXEL);
+    vec4 g1 = texelFetch(uLights, base + LR_GOBO_TEXEL + 1);
+    vec4 g2 = texelFetch(uLights, base + LR_GOBO_TEXEL + 2);
+    l.goboX = g0.xyz;
+    l.goboLayer = int(g0.w);
+    l.goboY = g1.xyz;
+    l.goboHalf = g1.w;
+    l.goboSize = g2.xy;
+    l.goboInvArray = g2.zw;
 #endif
     return l;
 }

@@ -38,6 +38,9 @@ void shadeLightSplit(ShadeLight l, vec3 P, vec3 N, float shininess, ShadeSetting
     vec3 L;
     float attenuation;
     if (!lightArrival(l, P, N, st, L, attenuation)) return;
+#ifdef LR_GOBO
+    lrApplyGobo(l, L);
+#endif
     float nDotL = dot(N, L);
     float D = diffuseOf(l) == LR_DIFFUSE_LAMBERT ? diffuseLambert(nDotL) : diffuseHalfLambert(nDotL);
     float S = 0.0;
@@ -121,6 +124,9 @@ void shadeLightSplitPbr(ShadeLight l, Surface s, ShadeSettings st, vec3 V, PbrSu
     vec3 L;
     float attenuation;
     if (!lightArrival(l, s.position, s.normal, st, L, attenuation)) return;
+#ifdef LR_GOBO
+    lrApplyGobo(l, L);
+#endif
     float nDotL = dot(N, L);
     float cosTerm = diffuseOf(l) == LR_DIFFUSE_LAMBERT ? diffuseLambert(nDotL) : diffuseHalfLambert(nDotL);
     vec3 H = safeNormalize(L + V, N);

@@ -6,8 +6,7 @@
 #   helmet-gobo   the key with a gobo (scripts/perf/shape/window.png);
 #   helmet-barn   the softbox with barn doors (angle 30, length 0.5).
 # Per rig: the median ms/frame of the raster tiers (exact, balanced, fast; --msaa 0, deferred) and the path
-# tracer's median seconds per sample. The raster does not shape IES profiles and gobos yet, so their raster
-# columns show only what loading them costs the raster (nothing).
+# tracer's median seconds per sample, each with its change from helmet-plain.
 # Usage: scripts/perf/shape_bench.sh [MODEL.glb]  (default ../shared/models/bench/helmet_1pt.glb). SIZE
 #        (1280x720, raster), PATH_SIZE (640x360), FRAMES (30), PATH_SAMPLES (16), REPEATS (3), LIGHTRIG (default
 #        build/dev/lightrig). Runs under xvfb-run when there is no DISPLAY.

@@ -213,14 +213,14 @@ void Runner::renderModel(size_t begin, size_t end) {
 
 // Light linking (issue 38): what each name of the rig's links matches in this model, once per model and
 // rig; names that match nothing are also warnings (kept in the rig, which may be meant for another model).
-// Then the shaping files that did not load and the shaping the raster does not draw (issue 39).
+// Then the shaping files that did not load (issue 39).
 void Runner::reportLinks(const LoadedScene& scene) {
     const std::vector<PartNames> parts = linkParts(*scene.model, scene.rig);
     for (const QString& line : describeLinkMatches(scene.rig.lights, parts))
         err << name << ": linking: " << line << '\n';
     for (const QString& w : resolveLinks(scene.rig.lights, parts).warnings)
         warn(w);
-    for (const QString& w : shapingWarnings(scene.rig, r.options.pathTraced)) // issue 39
+    for (const QString& w : shapingWarnings(scene.rig)) // issue 39
         warn(w);
 }
 

@@ -218,6 +218,12 @@ GizmoGeometry buildGizmos(const Rig& rig, const SceneFrame& frame, const Bounds&
                                  {float(kAreaHandlePixels), float(int(GizmoShape::Square) + 8)}});
                     }
             }
+            // An IES profile (issue 39): the distribution's shape, as long as the cone's lines at its peak.
+            if (l.ies && options.ies && i < options.ies->size() && (*options.ies)[i])
+                for (const std::vector<glm::dvec3>& curve : iesOutline(
+                         l, *(*options.ies)[i], at, drawRange ? std::min(range, radius) : radius * 0.6))
+                    for (size_t k = 0; k + 1 < curve.size(); ++k)
+                        b.line(curve[k], curve[k + 1], selected ? strong : faint);
             if (l.usesCone()) {
                 const double len = drawRange ? std::min(range, radius * 3.0) : radius;
                 auto cone = [&](double halfAngleDeg, const glm::vec4& c, int spokes) {

@@ -2,12 +2,14 @@
 // double precision each frame (a few thousand vertices at most). No GL here.
 #pragma once
 
+#include "core/ies.h"
 #include "core/prepare.h"
 #include "model/model.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
+#include <memory>
 #include <vector>
 
 namespace lr::render {
@@ -29,6 +31,9 @@ struct GizmoGeometry {
 
 struct GizmoOptions {
     bool lights = true;
+    // The lights' loaded IES profiles, per rig light (scene/lightassets.h; nullptr or shorter: none): a
+    // light with one draws its distribution's shape (iesOutline).
+    const std::vector<std::shared_ptr<const IesProfile>>* ies = nullptr;
     bool grid = false;
     std::vector<int> selected; // light indices
     double iconPixels = 14.0;
@@ -60,6 +65,13 @@ struct AreaHandle {
 };
 std::vector<AreaHandle> areaHandles(const Rig& rig, const SceneFrame& frame, const Light& light);
 constexpr double kAreaHandlePixels = 9.0;
+
+// An IES light's distribution as the gizmo draws it (gizmos_ies.cpp; world space): the photometric
+// diagram's two planes, C0-C180 and C90-C270, each a closed curve of points `at + w(θ, φ) × length ×
+// I(θ, φ) / peak` for θ = 0 … 180° in `steps` steps (w the direction the profile's angles name,
+// core/iesshade.h); empty for a profile without light.
+std::vector<std::vector<glm::dvec3>> iesOutline(const Light& light, const IesProfile& profile,
+                                                const glm::dvec3& at, double length, int steps = 36);
 
 GizmoGeometry buildGizmos(const Rig& rig, const SceneFrame& frame, const Bounds& bounds,
                           const glm::dmat4& view, const GizmoOptions& options);

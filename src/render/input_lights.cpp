@@ -24,7 +24,7 @@ bool LightInput::prepare(InputFrame& f, QString*) {
     // Lights are culled against everything drawn: the model and its ground.
     const SceneFrame reach = scene.reach();
     const LinkResolution& links = scene.links();
-    m_set.update(f.gl, scene.frame(), f.frame->view, f.stats, f.shadowViews, &reach, &links);
+    m_set.update(f.gl, scene.frame(), f.frame->view, f.stats, f.shadowViews, &reach, &links, f.shaping);
     f.frame->lightCount = m_set.count();
     f.frame->linking = links.active;
     f.frame->farLights = m_set.farLights();

@@ -37,4 +37,17 @@ std::array<float, 4> packLinkTexel(std::uint32_t litMask) {
     return {float(litMask & 0xffffu), float(litMask >> 16), 0.0f, 0.0f};
 }
 
+std::array<float, 4 * kIesTexels> packIesTexels(const lighting::ShadeLight<float>& l, int layer, float norm) {
+    if (layer < 0) return {0, 0, 0, -1.0f, 0, 0, 0, 0};
+    return {l.iesNadir.x, l.iesNadir.y, l.iesNadir.z, float(layer),
+            l.iesX.x,     l.iesX.y,     l.iesX.z,     l.iesScale * norm};
+}
+
+std::array<float, 4 * kGoboTexels> packGoboTexels(const lighting::ShadeLight<float>& l, int layer, int width,
+                                                  int height, int arrayWidth, int arrayHeight) {
+    if (layer < 0 || arrayWidth <= 0 || arrayHeight <= 0) return {0, 0, 0, -1.0f, 0, 0, 0, 0, 0, 0, 0, 0};
+    return {l.axisX.x, l.axisX.y,  l.axisX.z,    float(layer),  l.axisY.x,         l.axisY.y,
+            l.axisY.z, l.goboHalf, float(width), float(height), 1.0f / arrayWidth, 1.0f / arrayHeight};
+}
+
 } // namespace lr::render

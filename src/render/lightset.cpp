@@ -5,7 +5,10 @@
 #include "programcache.h"
 #include "shadergen.h"
 #include "shadowplan.h"
+#include "shapinglayers.h"
 #include "textureunits.h"
+
+#include "core/iesshade.h"
 
 #include <algorithm>
 #include <bit>
@@ -40,14 +43,19 @@ void LightSet::setRig(const Rig& rig) {
 
 void LightSet::update(QOpenGLFunctions_3_3_Core* gl, const SceneFrame& frame, const glm::dmat4& view,
                       RenderStats* stats, const std::vector<ShadowView>* shadows, const SceneFrame* reach,
-                      const LinkResolution* links) {
+                      const LinkResolution* links, const ShapingLayers* shaping) {
     if (!m_dirty && view == m_uploadedView) return;
     const bool linking = links && links->active;
+    const RigFeatures features = rigFeatures(m_rig);
+    const LightTexelLayout layout = lightTexelLayout(linking, features.ies, features.gobo);
+    const auto layerOf = [&](std::vector<int> ShapingLayers::*layers, size_t i) {
+        return shaping && i < (shaping->*layers).size() ? (shaping->*layers)[i] : -1;
+    };
     static const std::vector<ShadowView> none;
     const std::vector<ShadowView>& casters = shadows ? *shadows : none;
     const SceneFrame sphere = reach ? *reach : frame;
     std::vector<float> data;
-    data.reserve(m_rig.lights.size() * 4 * size_t(lightTexels(linking)));
+    data.reserve(m_rig.lights.size() * 4 * size_t(layout.texels));
     std::vector<int> uploadedAs(m_rig.lights.size(), -1);
     int count = 0;
     const double scale = prepareSettings(m_rig, frame).distanceScale;
@@ -60,13 +68,16 @@ void LightSet::update(QOpenGLFunctions_3_3_Core* gl, const SceneFrame& frame, co
     for (size_t i = 0; i < m_rig.lights.size(); ++i) {
         const Light& l = m_rig.lights[i];
         if (!lightReaches(m_rig, frame, l, sphere.center, sphere.radius)) continue;
-        const lighting::ShadeLight<double> prepared = prepareLight(m_rig, frame, view, l);
+        lighting::ShadeLight<double> prepared = prepareLight(m_rig, frame, view, l);
+        const int iesLayer = features.ies ? layerOf(&ShapingLayers::iesLayer, i) : -1;
+        if (iesLayer >= 0) applyIesProfile(prepared, l, shaping->profiles[size_t(iesLayer)].get(), view);
         if (l.usesPosition() && !(glm::length(prepared.position) + surfaceReach < kFarLightDistance))
             m_farLights = true;
         m_bounds.push_back(lightBounds(prepared, scale));
         m_boundedLights += m_bounds.back().bounded ? 1 : 0;
         if (l.isArea() && !m_ltc) m_ltc = createLtcTexture(gl);
-        LightTexels t = packLight(castLight<float>(prepared));
+        const lighting::ShadeLight<float> packed = castLight<float>(prepared);
+        LightTexels t = packLight(packed);
         for (size_t k = 0; k < casters.size(); ++k)
             if (casters[k].rigIndex == int(i))
                 t[1 * 4 + 3] += float(kShadowSlotScale * (k + 1)); // type + slot
@@ -74,6 +85,18 @@ void LightSet::update(QOpenGLFunctions_3_3_Core* gl, const SceneFrame& frame, co
         if (linking) { // rig index i: the resolution is per rig light, disabled ones included
             const auto link = packLinkTexel(links->litMask[i]);
             data.insert(data.end(), link.begin(), link.end());
+        }
+        if (features.ies) {
+            const auto ies = packIesTexels(packed, iesLayer, iesLayer >= 0 ? shaping->iesNorm[i] : 1.0f);
+            data.insert(data.end(), ies.begin(), ies.end());
+        }
+        if (features.gobo) {
+            const int layer = layerOf(&ShapingLayers::goboLayer, i);
+            const GoboImage* g = layer >= 0 ? shaping->gobos[size_t(layer)].get() : nullptr;
+            const auto gobo =
+                packGoboTexels(packed, g ? layer : -1, g ? g->width : 0, g ? g->height : 0,
+                               shaping ? shaping->goboWidth : 0, shaping ? shaping->goboHeight : 0);
+            data.insert(data.end(), gobo.begin(), gobo.end());
         }
         uploadedAs[i] = count;
         ++count;

@@ -20,6 +20,7 @@ namespace lr::render {
 
 struct MeshProgram;
 struct ShadowView;
+struct ShapingLayers;
 
 // Where shade.glsl's single-inversesqrt light direction stops being exact is |toLight| = 1e15; a
 // decade of margin covers the float rounding of the view-space positions.
@@ -43,9 +44,13 @@ class LightSet {
     // `links` (SceneDescription::links(), per rig light; nullptr or inactive: no linking): when active each
     // light gets one more texel, its lit-class mask (kLinkedLightTexels, lightpack.h packLinkTexel). It
     // changes only with the rig or the model, which mark the set dirty.
+    // `shaping` (lightshapinggl.h; nullptr: none loaded): when the rig has IES profiles or gobos
+    // (RigFeatures::ies, ::gobo) each light gets their texels, naming its layers; a profile's level
+    // "profile" sets the light's colours (core/iesshade.h applyIesProfile). It changes only with the rig.
     void update(QOpenGLFunctions_3_3_Core* gl, const SceneFrame& frame, const glm::dmat4& view,
                 RenderStats* stats, const std::vector<ShadowView>* shadows = nullptr,
-                const SceneFrame* reach = nullptr, const LinkResolution* links = nullptr);
+                const SceneFrame* reach = nullptr, const LinkResolution* links = nullptr,
+                const ShapingLayers* shaping = nullptr);
     int shadowCount() const { return m_shadowCount; }
     int count() const { return m_count; }
     // Whether an uploaded point or spot light may be kFarLightDistance or more from the model's bounding

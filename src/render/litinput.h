@@ -34,6 +34,7 @@ struct FeatureKey;
 struct MeshProgram;
 struct PlanKey;
 struct ShadowView;
+struct ShapingLayers;
 
 // One frame as the inputs prepare it, in registration order: an input may read what an earlier one left
 // (the light buffer packs the shadow plan's slots).
@@ -46,6 +47,8 @@ struct InputFrame {
     RenderStats* stats = nullptr;
     // The shadow input's plan for this frame (empty without casters).
     const std::vector<ShadowView>* shadowViews = nullptr;
+    // The shaping input's layers per rig light (lightshapinggl.h), for the light buffer.
+    const ShapingLayers* shaping = nullptr;
 };
 
 class LitInput {

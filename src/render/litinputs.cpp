@@ -1,10 +1,12 @@
 // The registered lit inputs (litinput.h), one line each, in the order they prepare a frame: the ground
-// first (the lights are culled against the drawn bounds), the shadow plan before the lights (the light
-// buffer carries each caster's slot), the environment last.
+// first (the lights are culled against the drawn bounds), the shadow plan and the lights' IES profiles and
+// gobos before the lights (the light buffer carries each caster's slot and each profile's and image's
+// layer), the environment last.
 #include "input_environment.h"
 #include "input_ground.h"
 #include "input_lights.h"
 #include "input_shadows.h"
+#include "input_shaping.h"
 #include "litinput.h"
 
 namespace lr::render {
@@ -12,6 +14,7 @@ namespace lr::render {
 LitInputs::LitInputs() {
     m_inputs.push_back(std::make_unique<GroundInput>());
     m_inputs.push_back(std::make_unique<ShadowInput>());
+    m_inputs.push_back(std::make_unique<ShapingInput>());
     m_inputs.push_back(std::make_unique<LightInput>());
     m_inputs.push_back(std::make_unique<EnvironmentInput>());
 }

@@ -112,6 +112,7 @@ bool OverlayPass::run(const FrameContext& frame, PassScene& scene) {
     const SceneDescription& described = *frame.scene;
     options.grid = settings.showGrid && described.rig().ground.mode != GroundMode::Visible;
     options.selected = settings.selectedLights;
+    options.ies = &described.lightAssets().ies;
     const GizmoGeometry g =
         buildGizmos(described.rig(), described.frame(), described.bounds(), frame.view, options);
     if (g.lines.empty() && g.points.empty()) return true;

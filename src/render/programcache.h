@@ -18,15 +18,17 @@ namespace lr::render {
 // A named shader configuration (TrenchBroom's idea): which files make each stage.
 struct ShaderConfig {
     const char* name;
-    std::array<const char*, 13> vertex{}; // files under :/shaders/, in order; nullptr ends the list
-    std::array<const char*, 13> fragment{};
+    std::array<const char*, 14> vertex{}; // files under :/shaders/, in order; nullptr ends the list
+    std::array<const char*, 14> fragment{};
 };
 
 // The shading files, each the twin of a core header (colour.h, lighting.h, shadetypes.h, lighting_area.h,
 // shade.h): a program lists only those it needs. shadows.glsl is empty unless the key casts shadows
-// (LR_SHADOWS), area.glsl unless the rig has an area light; shadevertex.glsl (the fast tier) is listed only
+// (LR_SHADOWS), area.glsl unless the rig has an area light, shaping.glsl unless a light has an IES profile
+// or a gobo; shadevertex.glsl (the fast tier) is listed only
 // by the vertex-lit programs.
-#define LR_SHADING_FILES "colour.glsl", "lighting.glsl", "shadetypes.glsl", "area.glsl", "shade.glsl"
+#define LR_SHADING_FILES                                                                                     \
+    "colour.glsl", "lighting.glsl", "shadetypes.glsl", "shaping.glsl", "area.glsl", "shade.glsl"
 inline constexpr ShaderConfig kMeshShader{
     "mesh",
     {"mesh.vert"},

@@ -1,5 +1,7 @@
 #include "shadergen.h"
 
+#include "shapinglayers.h"
+
 #include "shadowplan.h"
 
 #include "core/barndoors.h"
@@ -80,11 +82,12 @@ void defineFalloffBounded(QByteArray& out) {
 
 } // namespace
 
-std::uint64_t FeatureKey::bits() const {
-    std::uint64_t b = 0;
+FeatureKey::Bits FeatureKey::bits() const {
+    Bits b{0, 0};
     int shift = 0;
-    auto put = [&](std::uint64_t v, int width) {
-        b |= v << shift;
+    auto put = [&](std::uint64_t v, int width) { // a field never straddles the two words
+        if (shift < 64 && shift + width > 64) shift = 64;
+        b[size_t(shift / 64)] |= v << (shift % 64);
         shift += width;
     };
     put(rig.lightTypes, kLightTypeCount);
@@ -121,7 +124,9 @@ std::uint64_t FeatureKey::bits() const {
     put(attributes, 1);
     put(rig.linking, 1);
     put(rig.barnDoors, 1);
-    Q_ASSERT(shift <= 64);
+    put(rig.ies, 1);
+    put(rig.gobo, 1);
+    Q_ASSERT(shift <= 128);
     return b;
 }
 
@@ -139,6 +144,8 @@ QString FeatureKey::describe() const {
     if (rig.environment) parts << QStringLiteral("environment");
     if (rig.linking) parts << QStringLiteral("linking");
     if (rig.barnDoors) parts << QStringLiteral("barn-doors");
+    if (rig.ies) parts << QStringLiteral("ies");
+    if (rig.gobo) parts << QStringLiteral("gobo");
     if (rig.shadows)
         parts << QStringLiteral("shadows") + (rig.cubeShadows ? QStringLiteral(":cube") : QString()) +
                      (rig.softShadows ? QStringLiteral(":soft") : QString());
@@ -207,6 +214,8 @@ RigFeatures rigFeatures(const Rig& rig) {
         }
         f.lightTypes |= bit(l.type);
         if (l.type == LightType::Rect && l.barnDoors && barndoors::cuts(*l.barnDoors)) f.barnDoors = true;
+        if (l.ies && (l.type == LightType::Point || l.type == LightType::Spot)) f.ies = true;
+        if (l.gobo && l.type == LightType::Spot) f.gobo = true;
         if (l.usesFalloff()) f.falloffs |= bit(l.falloff.model);
         if (l.usesCone()) f.cones |= bit(l.cone.model);
         if (l.usesSurfaceModels()) {
@@ -258,7 +267,8 @@ QByteArray basicPrelude() {
 QByteArray shaderPrelude(const FeatureKey& key) {
     QByteArray out = basicPrelude();
     out += "#define LR_SHADING 1\n";
-    out += "#define LR_LIGHT_TEXELS " + QByteArray::number(lightTexels(key.rig.linking)) + '\n';
+    const LightTexelLayout layout = lightTexelLayout(key.rig);
+    out += "#define LR_LIGHT_TEXELS " + QByteArray::number(layout.texels) + '\n';
     definePresent<LightType>(out, "LIGHT", "LIGHT", key.rig.lightTypes);
     definePresent<FalloffModel>(out, "FALLOFF", "FALLOFF", key.rig.falloffs);
     definePresent<ConeModel>(out, "CONE", "CONE", key.rig.cones);
@@ -303,6 +313,16 @@ QByteArray shaderPrelude(const FeatureKey& key) {
     if (key.rig.linking) out += "#define LR_LIGHT_LINKING 1\n";
     // Barn doors (shaders/area.glsl barnWindow): only where a rect light has them.
     if (key.rig.barnDoors) out += "#define LR_BARN_DOORS 1\n";
+    // IES profiles and gobos (shaders/shaping.glsl): only where a light has one; each names where its
+    // texels start in a light's record.
+    if (key.rig.ies)
+        out += "#define LR_IES 1\n#define LR_IES_TEXEL " + QByteArray::number(layout.ies) +
+               "\n#define LR_IES_GRID_V " + QByteArray::number(kIesGridVertical) +
+               "\n#define LR_IES_GRID_H " + QByteArray::number(kIesGridHorizontal) +
+               "\n#define LR_IES_STEP_V " + QByteArray::number(kIesGridVerticalStep, 'f', 3) +
+               "\n#define LR_IES_STEP_H " + QByteArray::number(kIesGridHorizontalStep, 'f', 3) + '\n';
+    if (key.rig.gobo)
+        out += "#define LR_GOBO 1\n#define LR_GOBO_TEXEL " + QByteArray::number(layout.gobo) + '\n';
     // The tier's approximations (docs/quality.md), as the key names them (approx::forTier keeps its own).
     const std::uint8_t approximations = approx::forTier(key.approximations, key.quality);
     const std::pair<std::uint8_t, const char*> defines[] = {{approx::kB1, "LR_B1"},

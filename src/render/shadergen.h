@@ -10,6 +10,7 @@
 
 #include <QByteArray>
 #include <QString>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <glm/mat3x3.hpp>
@@ -65,6 +66,13 @@ struct RigFeatures {
     // Some enabled rect light has barn doors that cut (issue 39, core/barndoors.h; LR_BARN_DOORS): the area
     // integrals run over the part of each rect the point sees. Without it a program's text is what it was.
     bool barnDoors = false;
+    // Some enabled point or spot light has an IES profile (LR_IES; issue 39, core/iesshade.h), some enabled
+    // spot a gobo (LR_GOBO; core/gobo.h): each light then carries kIesTexels or kGoboTexels more texels
+    // (lightTexelLayout) and the lit programs read the profile or image from a texture array
+    // (lightshapinggl.h). From the rig alone, so the light buffer (LightSet) and the keys agree; without
+    // them a program's text is what it was before shaping existed.
+    bool ies = false;
+    bool gobo = false;
     bool operator==(const RigFeatures&) const = default;
 };
 
@@ -116,13 +124,18 @@ struct FeatureKey {
     // a fifth of the helmet's frame. Other outputs leave it Clamp so that it never splits their variants.
     ToneMap toneMap = ToneMap::Clamp;
 
-    std::uint64_t bits() const; // a unique packing, for hashing and ordering
-    QString describe() const;   // "point+spot falloff:range-power cone:smooth ... tex:base,normal"
+    // A unique packing, for hashing and ordering: two words, since the fields outgrew one.
+    using Bits = std::array<std::uint64_t, 2>;
+    Bits bits() const;
+    QString describe() const; // "point+spot falloff:range-power cone:smooth ... tex:base,normal"
     bool operator==(const FeatureKey&) const = default;
 };
 
 struct FeatureKeyHash {
-    std::size_t operator()(const FeatureKey& k) const { return std::hash<std::uint64_t>()(k.bits()); }
+    std::size_t operator()(const FeatureKey& k) const {
+        const FeatureKey::Bits b = k.bits();
+        return std::hash<std::uint64_t>()(b[0] ^ (b[1] * 0x9e3779b97f4a7c15ull));
+    }
 };
 
 constexpr int kMaxShininessInt = 256;
@@ -176,6 +189,24 @@ constexpr int kLightTexels = 8;
 constexpr int kLinkedLightTexels = kLightTexels + 1;
 constexpr int lightTexels(bool linking) {
     return linking ? kLinkedLightTexels : kLightTexels;
+}
+// ... an IES profile's (RigFeatures::ies; lightpack.h packIesTexels) and a gobo's (RigFeatures::gobo;
+// packGoboTexels), after the link texel: every light of such a frame has them (layer -1: none).
+constexpr int kIesTexels = 2, kGoboTexels = 3;
+// Where each optional part of a light's record starts (-1: absent) and its texels in all.
+struct LightTexelLayout {
+    int texels = kLightTexels;
+    int link = -1, ies = -1, gobo = -1;
+};
+constexpr LightTexelLayout lightTexelLayout(bool linking, bool ies, bool gobo) {
+    LightTexelLayout l;
+    if (linking) l.link = l.texels++;
+    if (ies) l.ies = l.texels, l.texels += kIesTexels;
+    if (gobo) l.gobo = l.texels, l.texels += kGoboTexels;
+    return l;
+}
+inline LightTexelLayout lightTexelLayout(const RigFeatures& f) {
+    return lightTexelLayout(f.linking, f.ies, f.gobo);
 }
 
 // "#version 330 core" plus the enum values and the key's feature defines (the same for both stages).

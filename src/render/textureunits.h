@@ -35,6 +35,10 @@ enum class TextureUnit : GLuint {
     // 16 too: GL_MAX_TEXTURE_IMAGE_UNITS is 32 on every driver this targets.
     Ltc = 19,
     BackgroundCache = 20, // the background pass's kept environment image (passes.h BackgroundPass)
+    // The lights' IES profiles and gobo images (issue 39, lightshapinggl.h), bound only when a light has
+    // one; beyond 16 too, as Ltc.
+    Ies = 21,
+    Gobos = 22,
 };
 
 constexpr int kEnvironmentUnitsNeeded = 21; // up to BackgroundCache
@@ -72,6 +76,8 @@ inline constexpr SamplerBinding kSamplerBindings[] = {
     {"uEnvIrradiance", TextureUnit::EnvIrradiance},
     {"uEnvDfg", TextureUnit::EnvDfg},
     {"uLtc", TextureUnit::Ltc},
+    {"uIes", TextureUnit::Ies},
+    {"uGobos", TextureUnit::Gobos},
 };
 
 // GL 3.3 guarantees 16 texture image units per fragment stage: every unit but the environment's.

@@ -56,6 +56,43 @@ class TestGizmos : public QObject {
         rig.lights[0].barnDoors = BarnDoors{90.0, 0.3};
         QCOMPARE(lines(), plain);
     }
+
+    // Issue 39: an IES light draws its photometric diagram: the C0-C180 and C90-C270 planes, each point
+    // at I(θ, φ) / peak of the gizmo's length along the direction the profile's angles name (full.ies: the
+    // peak 1500 cd at the nadir of C0, 750 cd at 90° of C0, 500 cd at the nadir of C90). Turning the
+    // profile turns the diagram; a light without a loaded profile draws none.
+    void iesLightDrawsItsDistribution() {
+        QString error;
+        const auto profile = readIesFile(QStringLiteral(LIGHTRIG_TEST_DATA "/ies/full.ies"), &error);
+        QVERIFY2(profile, qPrintable(error));
+        Light l = makeLight(LightType::Point, QStringLiteral("downlight"));
+        l.direction = glm::dvec3(0, -1, 0);
+        l.ies = IesSpec{};
+        const glm::dvec3 at(1.0, 2.0, 3.0);
+        const auto curves = iesOutline(l, *profile, at, 2.0, 36);
+        QCOMPARE(int(curves.size()), 2);
+        const AreaAxes axes = areaAxes(l.direction, 0.0);
+        const auto near = [](const glm::dvec3& a, const glm::dvec3& b) { return glm::length(a - b) < 1e-9; };
+        QVERIFY(near(curves[0].front(), at + glm::dvec3(0, -2, 0)));                    // C0, θ 0: the peak
+        QVERIFY(near(curves[0][18], at + axes.x * (2.0 * 750.0 / 1500.0)));             // C0, θ 90
+        QVERIFY(near(curves[1].front(), at + glm::dvec3(0, -2.0 * 500.0 / 1500.0, 0))); // C90, θ 0
+        l.ies->rotation = 90.0;
+        const auto turned = iesOutline(l, *profile, at, 2.0, 36);
+        QVERIFY(near(turned[0][18], at + areaAxes(l.direction, 90.0).x * 1.0));
+        QVERIFY(!near(turned[0][18], curves[0][18]));
+
+        Rig rig;
+        rig.lights = {l};
+        const glm::dmat4 view = glm::lookAt(glm::dvec3(0, 0, 10), glm::dvec3(0), glm::dvec3(0, 1, 0));
+        const Bounds bounds{glm::dvec3(-1), glm::dvec3(1)};
+        GizmoOptions options;
+        const size_t plain = buildGizmos(rig, SceneFrame{}, bounds, view, options).lines.size();
+        const std::vector<std::shared_ptr<const IesProfile>> loaded{profile}, none{nullptr};
+        options.ies = &loaded;
+        QCOMPARE(buildGizmos(rig, SceneFrame{}, bounds, view, options).lines.size(), plain + 2 * 2 * 73);
+        options.ies = &none;
+        QCOMPARE(buildGizmos(rig, SceneFrame{}, bounds, view, options).lines.size(), plain);
+    }
 };
 
 QTEST_GUILESS_MAIN(TestGizmos)
