@@ -14,12 +14,16 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QScrollArea>
 #include <QSignalBlocker>
+#include <QToolButton>
 #include <QVBoxLayout>
 #include <algorithm>
 
@@ -52,6 +56,9 @@ PropertiesDock::PropertiesDock(Document* document, QWidget* parent)
     m_idle.setSingleShot(true);
     m_idle.setInterval(1000);
     connect(&m_idle, &QTimer::timeout, this, &PropertiesDock::finishGesture);
+    askOpenFile = [this](const QString& title, const QString& folder, const QString& filter) {
+        return QFileDialog::getOpenFileName(this, title, folder, filter);
+    };
     build();
     connect(m_doc, &Document::rigChanged, this, &PropertiesDock::refresh);
     connect(m_doc, &Document::selectionChanged, this, [this] {
@@ -76,6 +83,35 @@ void PropertiesDock::connectNumber(LightProperty property, NumberEdit* e) {
     connect(e, &NumberEdit::rejected, this, &PropertiesDock::showMessage);
 }
 
+// A File row: its line edit and a "…" button that chooses the file (starting in the current file's folder,
+// else the rig's), stored relative to the rig's folder when it lies there (fileFieldValue).
+QWidget* PropertiesDock::fileField(const LightPropertyInfo& row, QLineEdit* line, const char* filter) {
+    auto* browse = new QToolButton(m_panel);
+    browse->setText(QStringLiteral("…"));
+    browse->setObjectName(QString::fromLatin1(row.key) + QStringLiteral("Browse"));
+    browse->setToolTip(tr("Choose the %1 file").arg(row.displayName()));
+    const LightProperty p = row.id;
+    connect(browse, &QToolButton::clicked, this, [this, p, line, filter, name = row.displayName()] {
+        if (m_doc->selectedRows().isEmpty()) return;
+        const QString rigFolder =
+            m_doc->filePath().isEmpty() ? QDir::currentPath() : QFileInfo(m_doc->filePath()).absolutePath();
+        const QString current = line->text().trimmed();
+        const QString folder = current.isEmpty()
+                                   ? rigFolder
+                                   : QFileInfo(QDir(rigFolder).absoluteFilePath(current)).absolutePath();
+        const QString chosen = askOpenFile(tr("Choose the %1").arg(name), folder, tr(filter ? filter : ""));
+        if (chosen.isEmpty()) return;
+        apply(p, fileFieldValue(chosen, m_doc->filePath()), false);
+        refresh();
+    });
+    auto* w = new QWidget(m_panel);
+    auto* l = new QHBoxLayout(w);
+    l->setContentsMargins(0, 0, 0, 0);
+    l->addWidget(line, 1);
+    l->addWidget(browse, 0);
+    return w;
+}
+
 PropertiesDock::Field PropertiesDock::createField(const LightPropertyInfo& row) {
     const LightProperty p = row.id;
     const PropertyField how = propertyField(p);
@@ -94,6 +130,7 @@ PropertiesDock::Field PropertiesDock::createField(const LightPropertyInfo& row) 
     };
     switch (how.editor) {
     case PropertyEditor::LineEdit:
+    case PropertyEditor::File:
         f.widget = f.line = new QLineEdit(m_panel);
         f.line->setMaxLength(kMaxLightNameLength);
         connect(f.line, &QLineEdit::editingFinished, this,
@@ -110,6 +147,7 @@ PropertiesDock::Field PropertiesDock::createField(const LightPropertyInfo& row) 
                     line->setModified(false);
                     refresh();
                 });
+        if (how.editor == PropertyEditor::File) f.widget = fileField(row, f.line, how.fileFilter);
         break;
     case PropertyEditor::ComboBox:
         f.widget = f.combo = new QComboBox(m_panel);
@@ -365,6 +403,7 @@ void PropertiesDock::loadValue(const LightPropertyInfo& row, const Field& f, con
     const QVariant value = row.get(light);
     switch (propertyField(row.id).editor) {
     case PropertyEditor::LineEdit:
+    case PropertyEditor::File:
         if (!f.line->hasFocus() || f.line->text() != value.toString()) f.line->setText(value.toString());
         break;
     case PropertyEditor::ComboBox:

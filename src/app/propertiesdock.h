@@ -7,6 +7,8 @@
 // typing within one gesture merge into one step.
 #pragma once
 
+#include <functional>
+
 #include "editor/document.h"
 #include "editor/lightproperty.h"
 
@@ -40,6 +42,8 @@ class PropertiesDock : public QDockWidget {
     QString message() const; // the last refusal reason ("" when none)
     // Issue 38: the Linking section under the fields (linkingsection.h); the main window gives it the parts.
     LinkingSection* linking() const { return m_linking; }
+    // Asks for a file to open (a File field's "…" button): QFileDialog by default; tests replace it.
+    std::function<QString(const QString& title, const QString& folder, const QString& filter)> askOpenFile;
 
   public slots:
     void refresh(); // re-reads the document (called on rig and selection changes)
@@ -59,6 +63,7 @@ class PropertiesDock : public QDockWidget {
 
     void build();
     Field createField(const LightPropertyInfo& row);
+    QWidget* fileField(const LightPropertyInfo& row, QLineEdit* line, const char* filter);
     void connectNumber(LightProperty property, NumberEdit* edit);
     // Push one value for every selected light. continuous: part of a gesture that merges into one step.
     void apply(LightProperty property, const QVariant& value, bool continuous);

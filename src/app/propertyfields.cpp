@@ -1,6 +1,8 @@
 #include "propertyfields.h"
 
 #include <QCoreApplication>
+#include <QDir>
+#include <QFileInfo>
 
 namespace lr {
 
@@ -14,6 +16,10 @@ const PropertyField kFieldEditors[] = {
     {LightProperty::Temperature, PropertyEditor::OptionalNumber, 6500.0},
     {LightProperty::FalloffRange, PropertyEditor::OptionalNumber, 10.0},
     {LightProperty::ShadowResolution, PropertyEditor::PowerOfTwo}, // a spin box would step to 1025
+    {LightProperty::IesFile, PropertyEditor::File, 0.0, 0.0,
+     QT_TRANSLATE_NOOP("lr::PropertiesDock", "IES profiles (*.ies *.IES);;All files (*)")},
+    {LightProperty::GoboFile, PropertyEditor::File, 0.0, 0.0,
+     QT_TRANSLATE_NOOP("lr::PropertiesDock", "Gobo images (*.png *.exr *.PNG *.EXR);;All files (*)")},
 };
 
 PropertyEditor defaultEditor(LightValueKind kind) {
@@ -71,6 +77,13 @@ QString intensitySuffix(LightType type, ShadingModel shading) {
     const char* unit = traitsOf(type).pbrUnit;
     if (shading == ShadingModel::Pbr && unit) return QLatin1Char(' ') + QString::fromLatin1(unit);
     return tr(" (classic)");
+}
+
+QString fileFieldValue(const QString& chosen, const QString& rigPath) {
+    const QString file = QDir::cleanPath(QFileInfo(chosen).absoluteFilePath());
+    if (rigPath.isEmpty()) return file;
+    const QString relative = QFileInfo(rigPath).absoluteDir().relativeFilePath(file);
+    return relative.startsWith(QLatin1String("..")) || QDir::isAbsolutePath(relative) ? file : relative;
 }
 
 bool propertyShown(const Light& light, LightProperty property) {

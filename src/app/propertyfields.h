@@ -23,13 +23,15 @@ enum class PropertyEditor {
     Vector,         // Vec3Edit (Vector)
     FactorOrColor,  // a factor/colour QComboBox beside a NumberEdit and a ColorButton (FactorOrColor)
     PowerOfTwo,     // QComboBox of the powers of two within the row's limits (a shadow map's resolution)
+    File,           // a QLineEdit (Text) with a "…" button that chooses a file (PropertyField::fileFilter)
 };
 
 struct PropertyField {
     LightProperty property;
     PropertyEditor editor;
-    double initial = 0.0;   // OptionalNumber: the value offered when "none" is switched on
-    double sliderMin = 0.0; // LogSlider: the smallest non-zero slider value
+    double initial = 0.0;             // OptionalNumber: the value offered when "none" is switched on
+    double sliderMin = 0.0;           // LogSlider: the smallest non-zero slider value
+    const char* fileFilter = nullptr; // File: the open dialog's name filter
 };
 
 // Every property the dock shows as a field, in the order of its rows (the property table's order); not the
@@ -43,6 +45,10 @@ QString propertyFieldName(LightProperty property);
 // (candela: point, spot), " lx" (lux: directional), " nits" (cd/m²: rect, disk), " (classic)" for the rim
 // light's unitless term; under classic shading " (classic)" for every light.
 QString intensitySuffix(LightType type, ShadingModel shading);
+// The value a File field takes for the file `chosen` (absolute) in a rig saved at `rigPath` (empty:
+// untitled): relative to the rig's folder when the file lies in it or below (the rig and its files then
+// move together), else absolute (issue 39: IES profiles, gobo images).
+QString fileFieldValue(const QString& chosen, const QString& rigPath);
 // Whether the dock shows `property` for this light (LightPropertyInfo::isShown).
 bool propertyShown(const Light& light, LightProperty property);
 
