@@ -96,6 +96,7 @@ enum class LightProperty {
     IesMultiplier, // double 0 ... 1e6 (shown with a profile)
     IesLevel,      // int: 0 the profile's candela, 1 the light's intensity
     IesRotation,   // double degrees, 0 ... 360
+    IesNadir,      // point with a profile: its nadir, the light's direction (glm::dvec3, not zero)
     Any            // not a property: "several or all values of the light changed" (in RigChange only)
 };
 constexpr int kLightPropertyCount = int(LightProperty::Any);

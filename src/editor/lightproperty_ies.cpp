@@ -1,12 +1,15 @@
 // The light-property rows of an IES profile (issue 39, docs/light-shaping.md "IES profiles"): its file
-// (empty: none), multiplier, level and rotation, on point and spot lights (the types with a falloff). The
-// file is checked as the rig reader checks "ies.file"; the other three are shown only while the light has a
-// profile.
+// (empty: none), multiplier, level and rotation, on point and spot lights (the types with a falloff), and a
+// point light's nadir (its direction, which a spot edits in its Direction row). The file is checked as the
+// rig reader checks "ies.file"; the others are shown only while the light has a profile.
 #include "core/rigjson.h"
 #include "editor/lightproperty.h"
 #include "editor/lightproperty_parts.h"
+#include "editor/propertyvalue.h"
 
 #include <QCoreApplication>
+#include <cmath>
+#include <glm/geometric.hpp>
 
 namespace lr {
 
@@ -40,6 +43,13 @@ QStringList levelChoices() {
 
 bool hasProfile(const Light& l) {
     return l.ies.has_value();
+}
+
+QString checkNadir(const LightPropertyInfo& row, const QVariant& v) {
+    const auto d = propertyvalue::toVec3(v, false);
+    if (QString e = propertyvalue::checkVec3(row.displayName(), d, row.min, row.max); !e.isEmpty()) return e;
+    const double len = glm::length(*d);
+    return len > 1e-12 && std::isfinite(len) ? QString() : QStringLiteral("the IES nadir must not be zero");
 }
 
 const LightPropertyInfo kIesRows[] = {
@@ -110,6 +120,24 @@ const LightPropertyInfo kIesRows[] = {
      .set =
          [](Light& l, const QVariant& v) {
              if (l.ies) l.ies->rotation = normalizedEnvironmentRotation(number(v, l.ies->rotation));
+         }},
+    {.id = P::IesNadir,
+     .name = QT_TRANSLATE_NOOP("lr::LightProperty", "IES nadir"),
+     .label = QT_TRANSLATE_NOOP("lr::LightProperty", "IES &nadir"),
+     .key = "iesNadir",
+     .jsonField = "direction",
+     .kind = K::Vector,
+     .min = -kMaxCoordinate,
+     .max = kMaxCoordinate,
+     .usedBy = &T::usesFalloff,
+     .unless = &T::usesDirection, // a spot's nadir is its Direction row
+     .shown = hasProfile,
+     .check = checkNadir,
+     .get = [](const Light& l) { return QVariant::fromValue(l.direction); },
+     .set =
+         [](Light& l, const QVariant& v) {
+             if (auto d = propertyvalue::toVec3(v, false); d && glm::length(*d) > 0.0)
+                 l.direction = glm::normalize(*d);
          }},
 };
 

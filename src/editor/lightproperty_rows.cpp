@@ -582,7 +582,7 @@ static_assert(
         return true;
     }(),
     "the emitter size row applies to the types with a position: they must all cast shadows");
-static_assert(std::size(kLightProperties) + 1 + kGoboLightPropertyCount + 3 + 4 ==
+static_assert(std::size(kLightProperties) + 1 + kGoboLightPropertyCount + 3 + 5 ==
                   size_t(kLightPropertyCount), // + link, gobo, barn doors, IES
               "one row per LightProperty");
 

@@ -125,7 +125,8 @@ const QStringList kAllFields{"name",
                              "iesFile",
                              "iesMultiplier",
                              "iesLevel",
-                             "iesRotation"};
+                             "iesRotation",
+                             "iesNadir"};
 
 QSet<QString> visibleFields(PropertiesDock& dock) {
     QSet<QString> out;
@@ -440,7 +441,8 @@ class TestPropertiesDock : public QObject {
         QVERIFY(doc.setLightValue({0}, LightProperty::IesFile,
                                   QStringLiteral(LIGHTRIG_TEST_DATA "/ies/full.ies")));
         for (LightProperty p :
-             {LightProperty::IesMultiplier, LightProperty::IesLevel, LightProperty::IesRotation})
+             {LightProperty::IesMultiplier, LightProperty::IesLevel, LightProperty::IesRotation,
+              LightProperty::IesNadir}) // a point light's nadir too (a spot's is its Direction row)
             QVERIFY2(dock.field(p)->isVisibleTo(&dock), qPrintable(propertyFieldName(p)));
         QVERIFY(summary->isVisibleTo(&dock));
         QVERIFY2(summary->text().startsWith(QStringLiteral("Peak 1500 cd, beam ")),

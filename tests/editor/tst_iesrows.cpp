@@ -49,6 +49,30 @@ class TestIesRows : public QObject {
         doc.undoStack()->undo();
         QVERIFY(doc.rig().lights[0].ies && doc.rig().lights[0].ies->multiplier == 2.5);
     }
+
+    // A point light's nadir (its direction) is edited while it has a profile; a spot's is its Direction row,
+    // so the nadir row does not apply to it. The nadir is normalised, and zero is refused.
+    void aPointLightsNadirIsItsDirection() {
+        Document doc;
+        Rig rig;
+        rig.lights = {makeLight(LightType::Point, QStringLiteral("Down")),
+                      makeLight(LightType::Spot, QStringLiteral("Spot"))};
+        doc.newRig(rig);
+        const LightPropertyInfo* nadir = lightPropertyInfo(LightProperty::IesNadir);
+        QVERIFY(nadir && nadir->applies(doc.rig().lights[0]) && !nadir->applies(doc.rig().lights[1]));
+        QVERIFY(!nadir->isShown(doc.rig().lights[0])); // no profile yet
+        QString error;
+        QVERIFY(doc.setLightValue({0}, LightProperty::IesFile, QStringLiteral("down.ies"), &error));
+        QVERIFY(nadir->isShown(doc.rig().lights[0]));
+        QVERIFY2(doc.setLightValue({0}, LightProperty::IesNadir,
+                                   QVariant::fromValue(glm::dvec3(0.0, 0.0, -2.0)), &error),
+                 qPrintable(error));
+        QCOMPARE(doc.rig().lights[0].direction, glm::dvec3(0.0, 0.0, -1.0));
+        QVERIFY(
+            !doc.setLightValue({0}, LightProperty::IesNadir, QVariant::fromValue(glm::dvec3(0.0)), &error));
+        QVERIFY2(error.contains(QStringLiteral("must not be zero")), qPrintable(error));
+        QCOMPARE(doc.rig().lights[0].direction, glm::dvec3(0.0, 0.0, -1.0));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestIesRows)
