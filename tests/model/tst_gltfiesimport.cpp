@@ -6,6 +6,7 @@
 // the light imported without its profile.
 #include "core/ies.h"
 #include "gltflightfixtures.h"
+#include "model/upaxis.h"
 
 #include <QCryptographicHash>
 #include <QDir>
@@ -123,6 +124,22 @@ class TestGltfIesImport : public QObject {
             QString::fromLatin1(QCryptographicHash::hash(m_full, QCryptographicHash::Sha256).toHex());
         QCOMPARE(down->ies->file, QDir(m_cache.path()).filePath(hash + QStringLiteral(".ies")));
         QCOMPARE(lrtest::readFile(down->ies->file), m_full);
+    }
+
+    // The editor turns a model to another up axis (model/upaxis.h): the profile's axes turn with it.
+    void turnsWithTheModelsUpAxis() {
+        const std::shared_ptr<Model> m =
+            load(QStringLiteral("upaxis"), test::exportedScene(rigWithProfile(IesLevel::Profile)));
+        QVERIFY(m);
+        const Model turned = rotateModelUp(*m, ModelUpAxis::ZUp);
+        const glm::dmat3 r = upAxisRotation(ModelUpAxis::ZUp);
+        const Light *before = lightNamed(*m, QStringLiteral("Down")),
+                    *after = lightNamed(turned, QStringLiteral("Down"));
+        QVERIFY(before && after && before->ies && after->ies);
+        const AreaAxes a = areaAxes(before->direction, before->ies->rotation);
+        const AreaAxes b = areaAxes(after->direction, after->ies->rotation);
+        QVERIFY(glm::length(b.x - r * a.x) < 1e-9 && glm::length(b.y - r * a.y) < 1e-9);
+        QVERIFY(!near(after->ies->rotation, before->ies->rotation)); // it did have to change here
     }
 
     void relativeUriNamesTheFileItself() {
