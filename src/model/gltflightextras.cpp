@@ -1,13 +1,8 @@
-// What Assimp 5.2.5 does not read of a glTF's lights (issue 39, docs/export.md "Import"), from the file's
-// own JSON: EXT_lights_ies instances (point lights with an IES profile, which Assimp does not know) and
-// LightRig's extras.lightrig {link, gobo, barnDoors} on light nodes, which `lightrig export` writes. Runs
-// in the import worker with the rest of the import; nothing here fails it: whatever cannot be used is a
-// warning naming the file and the JSON field.
-//
-// An EXT_lights_ies node becomes a point light at the node's origin whose direction is the node's -Z (the
-// profile's nadir) and whose IES rotation puts horizontal angle 0 along the node's +X (90 along +Y), the
-// inverse of core/gltflights_ies.cpp. Level "profile", multiplier = the instance's multiplier × its
-// colour's largest component, colour = the instance's colour over that component.
+// What Assimp 5.2.5 does not read of a glTF's lights (issue 39, docs/export.md "Import"): EXT_lights_ies
+// instances and LightRig's extras.lightrig {link, gobo, barnDoors} on light nodes, in the import worker;
+// whatever cannot be used is a warning naming the file and the JSON field, never a failed import. An
+// EXT_lights_ies node is a point light at the node's origin, its nadir the node's -Z and horizontal angle 0
+// its +X (the inverse of core/gltflights_ies.cpp), level "profile".
 #include "importdetail.h"
 
 #include "core/rigjson.h"
@@ -23,7 +18,6 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat3x3.hpp>
-#include <glm/vector_relational.hpp>
 #include <optional>
 
 namespace lr::detail {
@@ -35,7 +29,7 @@ struct SceneNode {
     glm::dmat4 world;
 };
 
-// `count` numbers of a JSON array, or nullopt when it is not exactly that.
+// `N` numbers of a JSON array, or nullopt when it is not exactly that.
 template <int N> std::optional<std::array<double, N>> numbers(const QJsonValue& v) {
     const QJsonArray a = v.toArray();
     if (!v.isArray() || a.size() != N) return std::nullopt;
@@ -109,10 +103,6 @@ std::vector<SceneNode> sceneNodes(const QJsonObject& root) {
     return out;
 }
 
-QString number(double v) {
-    return QString::number(v, 'g', 6);
-}
-
 // Whether the rig format takes `light` (the check lights.cpp makes of Assimp's lights); else the reason.
 QString rigProblem(const Light& light) {
     Rig one;
@@ -164,7 +154,8 @@ std::optional<Light> iesLight(const Context& cx, const SceneNode& n, const QJson
     multiplier *= peak;
     if (multiplier > kMaxRigIntensity) {
         cx.warn(at, QStringLiteral("multiplier × colour %1 clamped to %2")
-                        .arg(number(multiplier), number(kMaxRigIntensity)));
+                        .arg(multiplier, 0, 'g', 6)
+                        .arg(kMaxRigIntensity, 0, 'g', 6));
         multiplier = kMaxRigIntensity;
     }
     l.position = glm::dvec3(n.world * glm::dvec4(0.0, 0.0, 0.0, 1.0));
