@@ -6,6 +6,7 @@
 
 #include <QByteArrayView>
 #include <QHash>
+#include <QJsonObject>
 #include <QStringList>
 #include <assimp/matrix4x4.h>
 #include <functional>
@@ -67,6 +68,35 @@ TextureTransform textureTransformFromAssimp(const aiUVTransform& t, const QStrin
 
 // lights.cpp: model.lights and model.cameras. `gltf`: the scene came from Assimp's glTF importers.
 void convertLightsAndCameras(const aiScene* scene, bool gltf, const QString& displayName, Model& model);
+// lights.cpp: the roll (degrees, -180 ... 180) that turns areaAxes(direction, 0)'s y towards `up` (its part
+// perpendicular to the direction); 0 when up is parallel to the direction, zero or not finite.
+double rollForUp(const glm::dvec3& direction, const glm::dvec3& up);
+
+// gltflightextras.cpp (issue 39, docs/export.md "Import"): what Assimp 5.2.5 does not read of a glTF's
+// lights, from its JSON (`json`: gltfJsonOf): each EXT_lights_ies instance becomes a point light with its IES
+// profile, and a light node's extras.lightrig {link, gobo, barnDoors} go onto its light (read by the rig's
+// readers). Everything that cannot be used is a warning naming the file and the JSON field; nothing fails the
+// import.
+void readGltfLightExtras(const QByteArray& json, const ModelFolder& folder, qint64 maxDataUriBytes,
+                         Model& model);
+
+// gltfiesprofile.cpp: the profile extensions.EXT_lights_ies.lights[index] of the glTF whose JSON is `root`,
+// from its uri (data: or a file relative to the glTF, under `folder`'s rule) or its bufferView, checked by
+// readIesData. `file` is what IesSpec::file names: the profile's own file, or, for an embedded one, its copy
+// in the IES cache (cacheIesProfile); empty with `error` (and `field`, the JSON path it concerns) when none.
+struct GltfIesProfile {
+    QString file;
+    QString field; // "extensions.EXT_lights_ies.lights[0].uri"
+    QString error; // "embedded profile:12: ..." (core/ies.h's reason), "data: URI whose base64 ..."
+};
+GltfIesProfile readGltfIesProfile(const QJsonObject& root, int index, const ModelFolder& folder,
+                                  qint64 maxDataUriBytes);
+// Where embedded profiles are kept: $LIGHTRIG_IES_CACHE when set, else $XDG_DATA_HOME/lightrig/ies
+// (~/.local/share/lightrig/ies), the same folder for the worker and the editor.
+QString iesCacheFolder();
+// `bytes` as <iesCacheFolder()>/<sha256 hex>.ies, written atomically once (an equal file is reused); its
+// path, or empty with *error.
+QString cacheIesProfile(const QByteArray& bytes, QString* error);
 
 // meshes.cpp: the number of pairs of vertices within Assimp's smoothing distance of each other (1e-4 of
 // a mesh's bounding-box diagonal), estimated per mesh from a grid of cells of that size: the work of

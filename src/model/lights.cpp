@@ -96,15 +96,6 @@ QString number(double v) {
     return QString::number(v, 'g', 6);
 }
 
-// The roll (degrees) that turns areaAxes(direction, 0)'s y towards `up` (its part perpendicular to the
-// direction); 0 when up is parallel to the direction, zero or not finite.
-double rollForUp(const glm::dvec3& direction, const glm::dvec3& up) {
-    const AreaAxes a = areaAxes(direction, 0.0);
-    const double x = glm::dot(up, a.x), y = glm::dot(up, a.y);
-    if (!std::isfinite(x) || !std::isfinite(y) || std::hypot(x, y) <= 1e-12 * glm::length(up)) return 0.0;
-    return std::clamp(std::atan2(x, y) * kRadToDeg, -180.0, 180.0); // y' = sin(roll) x + cos(roll) y
-}
-
 // An area light (aiLightSource_AREA: a Blender area lamp, an FBX area light) as a rect light: mSize is its
 // width along the light's right (direction × up) and its height along its up (mUp, made perpendicular to the
 // direction), which gives the roll against areaAxes' convention (core/prepare.h). Assimp says nothing of
@@ -182,6 +173,13 @@ QString gltfTypeName(aiLightSourceType type) {
 }
 
 } // namespace
+
+double rollForUp(const glm::dvec3& direction, const glm::dvec3& up) {
+    const AreaAxes a = areaAxes(direction, 0.0);
+    const double x = glm::dot(up, a.x), y = glm::dot(up, a.y);
+    if (!std::isfinite(x) || !std::isfinite(y) || std::hypot(x, y) <= 1e-12 * glm::length(up)) return 0.0;
+    return std::clamp(std::atan2(x, y) * kRadToDeg, -180.0, 180.0); // y' = sin(roll) x + cos(roll) y
+}
 
 void convertLightsAndCameras(const aiScene* scene, bool gltf, const QString& displayName, Model& model) {
     Rig& rig = model.lights;

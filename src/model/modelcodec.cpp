@@ -101,6 +101,33 @@ void writeLight(Writer& w, const Light& l) {
     for (double d : {l.area.width, l.area.height, l.area.radius, l.area.roll})
         w.pod(d);
     w.u8(l.area.twoSided);
+    // Linking and shaping (issues 38, 39), which a glTF's light nodes carry (model/gltflightextras.cpp).
+    for (const PartSet* set : {&l.link.lit, &l.link.shadow})
+        for (const QStringList* names : {&set->include, &set->exclude}) {
+            w.count(std::size_t(names->size()));
+            for (const QString& name : *names)
+                w.string(name);
+        }
+    w.u8(l.ies.has_value());
+    if (l.ies) {
+        w.string(l.ies->file);
+        w.string(l.ies->resolved);
+        w.pod(l.ies->multiplier);
+        w.u8(l.ies->level == IesLevel::Profile);
+        w.pod(l.ies->rotation);
+    }
+    w.u8(l.gobo.has_value());
+    if (l.gobo) {
+        w.string(l.gobo->file);
+        w.string(l.gobo->resolved);
+        w.pod(l.gobo->scale);
+        w.pod(l.gobo->rotation);
+    }
+    w.u8(l.barnDoors.has_value());
+    if (l.barnDoors) {
+        w.pod(l.barnDoors->angle);
+        w.pod(l.barnDoors->length);
+    }
 }
 
 // ---------------------------------------------------------------------------------------------- reading

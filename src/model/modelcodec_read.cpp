@@ -19,8 +19,8 @@ constexpr std::size_t kMinMaterialBytes =
     4 + 16 + 3 * 4 + 12 + 12 + 4 + 1 + 1 + 2 * 4 + 2 * 4 + 2 * 4 + 1 + 4 + 5 * 20;
 constexpr std::size_t kMinTextureBytes = 4 + 4 + 4 + 4;
 constexpr std::size_t kMinCameraBytes = 4 + 3 * 24 + 4 * 8;
-constexpr std::size_t kMinLightBytes =
-    4 + 1 + 1 + 24 + 8 + 1 + 8 + 24 + 24 + 1 + 5 * 8 + 1 + 3 * 8 + 1 + 1 + 24 + 1 + 24 + 8 + 4 * 8 + 1;
+constexpr std::size_t kMinLightBytes = 4 + 1 + 1 + 24 + 8 + 1 + 8 + 24 + 24 + 1 + 5 * 8 + 1 + 3 * 8 + 1 + 1 +
+                                       24 + 1 + 24 + 8 + 4 * 8 + 1 + 4 * 8 + 3;
 
 bool finiteBits(float f) {
     return (std::bit_cast<quint32>(f) & 0x7f800000u) != 0x7f800000u;
@@ -196,6 +196,47 @@ class Reader {
     QString m_error;
 };
 
+// Light::link, ies, gobo and barnDoors (issues 38, 39).
+bool readShaping(Reader& r, Light& l, const QString& at) {
+    const auto f = [&](const char* field) { return QStringLiteral("%1 %2").arg(at, QLatin1String(field)); };
+    for (PartSet* set : {&l.link.lit, &l.link.shadow})
+        for (QStringList* names : {&set->include, &set->exclude}) {
+            std::size_t n = 0;
+            if (!r.count(n, 4, f("link names"))) return false;
+            for (std::size_t i = 0; i < n; ++i) {
+                QString name;
+                if (!r.string(name, f("link name"))) return false;
+                *names << name;
+            }
+        }
+    bool has = false, profileLevel = false;
+    if (!r.flag(has, f("ies"))) return false;
+    if (has) {
+        IesSpec s;
+        if (!(r.string(s.file, f("ies file")) && r.string(s.resolved, f("ies file")) &&
+              r.number(s.multiplier, f("ies multiplier")) && r.flag(profileLevel, f("ies level")) &&
+              r.number(s.rotation, f("ies rotation"))))
+            return false;
+        s.level = profileLevel ? IesLevel::Profile : IesLevel::Light;
+        l.ies = s;
+    }
+    if (!r.flag(has, f("gobo"))) return false;
+    if (has) {
+        GoboSpec g;
+        if (!(r.string(g.file, f("gobo file")) && r.string(g.resolved, f("gobo file")) &&
+              r.number(g.scale, f("gobo scale")) && r.number(g.rotation, f("gobo rotation"))))
+            return false;
+        l.gobo = g;
+    }
+    if (!r.flag(has, f("barn doors"))) return false;
+    if (has) {
+        BarnDoors b;
+        if (!(r.number(b.angle, f("barn doors")) && r.number(b.length, f("barn doors")))) return false;
+        l.barnDoors = b;
+    }
+    return true;
+}
+
 bool readLight(Reader& r, Light& l, const QString& at) {
     const auto f = [&](const char* field) { return QStringLiteral("%1 %2").arg(at, QLatin1String(field)); };
     bool hasTemperature = false, hasAmbient = false;
@@ -222,7 +263,7 @@ bool readLight(Reader& r, Light& l, const QString& at) {
         return false;
     if (hasTemperature) l.temperature = temperature;
     if (hasAmbient) l.ambient = ambient;
-    return true;
+    return readShaping(r, l, at);
 }
 
 bool readModel(Reader& r, Model& m) {

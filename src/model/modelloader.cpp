@@ -132,7 +132,12 @@ ModelLoadResult import(const QString& path, const ModelLoadOptions& options) {
     }
     detail::convertMaterials(scene, folder, options.maxDataUriBytes, detail::materialSource(path), *model);
     detail::convertLightsAndCameras(scene, gltf, name, *model);
-    if (gltf) sortCamerasAsGltf(gltfJsonOf(folder.modelFile()), model->cameras); // glTF's numbering
+    if (gltf) {
+        const QByteArray json = gltfJsonOf(folder.modelFile());
+        sortCamerasAsGltf(json, model->cameras); // glTF's numbering
+        // Issue 39: EXT_lights_ies and LightRig's extras.lightrig on light nodes, which Assimp does not read.
+        detail::readGltfLightExtras(json, folder, options.maxDataUriBytes, *model);
+    }
     if (!progress.report(1.0)) return failure(path, QStringLiteral("cancelled"), true);
     model->loadMs = double(timer.nsecsElapsed()) / 1e6;
     ModelLoadResult result;

@@ -1,5 +1,9 @@
 #include "model/upaxis.h"
 
+#include "core/prepare.h"
+#include "core/rigjson.h"
+#include "importdetail.h"
+
 #include <algorithm>
 #include <array>
 
@@ -76,8 +80,16 @@ Model rotateModel(const Model& model, const glm::dmat3& r) {
         c.up = r * c.up;
     }
     for (Light& l : m.lights.lights) {
+        const glm::dvec3 d = l.direction;
         l.position = r * l.position;
-        l.direction = r * l.direction;
+        l.direction = r * d;
+        // Issue 39: an IES profile's or a gobo's rotation is measured about the direction from areaAxes'
+        // reference, which does not turn with the model: measured again, so that the profile turns with it.
+        const auto turned = [&](double degrees) {
+            return detail::rollForUp(r * d, r * areaAxes(d, degrees).y);
+        };
+        if (l.ies) l.ies->rotation = normalizedEnvironmentRotation(turned(l.ies->rotation));
+        if (l.gobo) l.gobo->rotation = turned(l.gobo->rotation);
     }
     return m;
 }

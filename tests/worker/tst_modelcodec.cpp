@@ -78,6 +78,14 @@ void TestModelCodec::roundTripsEveryField() {
     changed.lights.lights[4].area.roll += 1.0; // issue 16: the area shape crosses the worker too
     QVERIFY(!test::modelDifference(original, changed).isEmpty());
     changed = original;
+    changed.lights.lights[1].ies->rotation += 1.0; // issue 39: shaping and linking cross the worker too
+    QVERIFY(!test::modelDifference(original, changed).isEmpty());
+    changed = original;
+    changed.lights.lights[2].link.lit.include.removeLast();
+    QVERIFY(!test::modelDifference(original, changed).isEmpty());
+    QVERIFY(decoded->lights.lights[1].ies && decoded->lights.lights[1].ies->level == IesLevel::Profile);
+    QVERIFY(decoded->lights.lights[2].gobo && decoded->lights.lights[3].barnDoors);
+    changed = original;
     changed.meshes[1].vertices[2].tangent.w = -changed.meshes[1].vertices[2].tangent.w;
     QVERIFY(!test::modelDifference(original, changed).isEmpty());
     // Textures arrive as RGBA8888 whatever they were.

@@ -47,6 +47,14 @@ inline Light lightVariant(int i) {
     if (i % 2 == 1) l.ambient = glm::dvec3(0.01 * i, 0.02, 0.03);
     l.rimExponent = 1.0 + 0.1 * i;
     l.area = {0.5 + i, 0.25 * i, 0.125 + i, -10.0 * i, i % 2 == 0};
+    // Issues 38 and 39: linking and shaping (a glTF's light nodes carry them, model/gltflightextras.cpp).
+    if (i % 2 == 0) l.link.lit.include = {QStringLiteral("Body"), QStringLiteral("material:Gl\u00e4ss")};
+    if (i % 3 == 1) l.link.shadow.exclude = {QStringLiteral("Stand")};
+    if (i % 2 == 1)
+        l.ies = IesSpec{QStringLiteral("/p/%1.ies").arg(i), QStringLiteral("/r/%1.ies").arg(i), 0.5 + i,
+                        i % 4 == 1 ? IesLevel::Profile : IesLevel::Light, 15.0 * i};
+    if (i % 3 == 2) l.gobo = GoboSpec{QStringLiteral("g%1.png").arg(i), QString(), 0.5 + i, -20.0 * i};
+    if (i % 4 == 3) l.barnDoors = BarnDoors{30.0 + i, 0.1 * i};
     return l;
 }
 
