@@ -85,7 +85,11 @@ void setCone(const aiLight& al, bool gltf, Light& light) {
     double outer = double(al.mAngleOuterCone) * scale, inner = double(al.mAngleInnerCone) * scale;
     if (!(outer > 0.0)) outer = 45.0;
     outer = std::min(outer, 90.0);
-    inner = std::isfinite(inner) ? std::clamp(inner, 0.0, outer) : 0.0;
+    // glTF's default innerConeAngle is 0 (and the export writes 0 for a rect's stand-in spot), but the rig's
+    // smooth cone needs 0 < inner: the smallest such angle, whose cosine is 1 to 1.5e-10 (the same cone).
+    constexpr double kSmallestInner = 1e-3; // degrees
+    inner = std::isfinite(inner) ? std::clamp(inner, kSmallestInner, std::max(outer, kSmallestInner))
+                                 : kSmallestInner;
     light.cone.model = ConeModel::Smooth;
     light.cone.inner = inner;
     light.cone.outer = outer;
