@@ -185,11 +185,14 @@ class TestRenderPasses : public QObject {
             QVERIFY2(shared || !units.contains(unit), b.uniform);
             QVERIFY2(!names.contains(b.uniform), b.uniform);
             // GL 3.3 guarantees 16 units; only the environment's (checked at initialisation by
-            // EnvironmentGl: fewer units, no environment lighting) and the area lights' LTC table lie beyond.
+            // EnvironmentGl: fewer units, no environment lighting), the area lights' LTC table and the
+            // lights' IES and gobo arrays (checked by ShapingInput::initialize: fewer units, unshaped) lie
+            // beyond.
             QVERIFY2(
                 unit < 16 ||
                     (unit >= GLuint(TextureUnit::EnvSpecular) && unit < GLuint(kEnvironmentUnitsNeeded)) ||
-                    unit == GLuint(TextureUnit::Ltc),
+                    unit == GLuint(TextureUnit::Ltc) || unit == GLuint(TextureUnit::Ies) ||
+                    unit == GLuint(TextureUnit::Gobos),
                 b.uniform);
             units.insert(unit);
             names.insert(b.uniform);
