@@ -38,6 +38,8 @@ void LightSet::release(QOpenGLFunctions_3_3_Core* gl) {
 
 void LightSet::setRig(const Rig& rig) {
     m_rig = rig;
+    const RigFeatures f = rigFeatures(rig);
+    m_ies = f.ies, m_gobo = f.gobo;
     m_dirty = true;
 }
 
@@ -46,8 +48,7 @@ void LightSet::update(QOpenGLFunctions_3_3_Core* gl, const SceneFrame& frame, co
                       const LinkResolution* links, const ShapingLayers* shaping) {
     if (!m_dirty && view == m_uploadedView) return;
     const bool linking = links && links->active;
-    const RigFeatures features = rigFeatures(m_rig);
-    const LightTexelLayout layout = lightTexelLayout(linking, features.ies, features.gobo);
+    const LightTexelLayout layout = lightTexelLayout(linking, m_ies, m_gobo);
     const auto layerOf = [&](std::vector<int> ShapingLayers::*layers, size_t i) {
         return shaping && i < (shaping->*layers).size() ? (shaping->*layers)[i] : -1;
     };
@@ -69,7 +70,7 @@ void LightSet::update(QOpenGLFunctions_3_3_Core* gl, const SceneFrame& frame, co
         const Light& l = m_rig.lights[i];
         if (!lightReaches(m_rig, frame, l, sphere.center, sphere.radius)) continue;
         lighting::ShadeLight<double> prepared = prepareLight(m_rig, frame, view, l);
-        const int iesLayer = features.ies ? layerOf(&ShapingLayers::iesLayer, i) : -1;
+        const int iesLayer = m_ies ? layerOf(&ShapingLayers::iesLayer, i) : -1;
         if (iesLayer >= 0) applyIesProfile(prepared, l, shaping->profiles[size_t(iesLayer)].get(), view);
         if (l.usesPosition() && !(glm::length(prepared.position) + surfaceReach < kFarLightDistance))
             m_farLights = true;
@@ -86,11 +87,11 @@ void LightSet::update(QOpenGLFunctions_3_3_Core* gl, const SceneFrame& frame, co
             const auto link = packLinkTexel(links->litMask[i]);
             data.insert(data.end(), link.begin(), link.end());
         }
-        if (features.ies) {
+        if (m_ies) {
             const auto ies = packIesTexels(packed, iesLayer, iesLayer >= 0 ? shaping->iesNorm[i] : 1.0f);
             data.insert(data.end(), ies.begin(), ies.end());
         }
-        if (features.gobo) {
+        if (m_gobo) {
             const int layer = layerOf(&ShapingLayers::goboLayer, i);
             const GoboImage* g = layer >= 0 ? shaping->gobos[size_t(layer)].get() : nullptr;
             const auto gobo =

@@ -71,6 +71,7 @@ class LightSet {
 
   private:
     Rig m_rig;
+    bool m_ies = false, m_gobo = false; // RigFeatures::ies, ::gobo of m_rig: its lights' extra texels
     bool m_dirty = true;
     glm::dmat4 m_uploadedView{0.0};
     int m_count = 0;

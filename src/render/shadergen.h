@@ -187,9 +187,6 @@ constexpr int kLightTexels = 8;
 // ... when the frame links lights (RigFeatures::linking): texel 8 holds the light's lit-class mask as two
 // exact 16-bit halves (lightpack.h packLinkTexel). An unlinked frame packs kLightTexels as before.
 constexpr int kLinkedLightTexels = kLightTexels + 1;
-constexpr int lightTexels(bool linking) {
-    return linking ? kLinkedLightTexels : kLightTexels;
-}
 // ... an IES profile's (RigFeatures::ies; lightpack.h packIesTexels) and a gobo's (RigFeatures::gobo;
 // packGoboTexels), after the link texel: every light of such a frame has them (layer -1: none).
 constexpr int kIesTexels = 2, kGoboTexels = 3;
