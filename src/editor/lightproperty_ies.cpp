@@ -45,13 +45,6 @@ bool hasProfile(const Light& l) {
     return l.ies.has_value();
 }
 
-QString checkNadir(const LightPropertyInfo& row, const QVariant& v) {
-    const auto d = propertyvalue::toVec3(v, false);
-    if (QString e = propertyvalue::checkVec3(row.displayName(), d, row.min, row.max); !e.isEmpty()) return e;
-    const double len = glm::length(*d);
-    return len > 1e-12 && std::isfinite(len) ? QString() : QStringLiteral("the IES nadir must not be zero");
-}
-
 const LightPropertyInfo kIesRows[] = {
     {.id = P::IesFile,
      .name = QT_TRANSLATE_NOOP("lr::LightProperty", "IES profile"),
@@ -132,7 +125,7 @@ const LightPropertyInfo kIesRows[] = {
      .usedBy = &T::usesFalloff,
      .unless = &T::usesDirection, // a spot's nadir is its Direction row
      .shown = hasProfile,
-     .check = checkNadir,
+     .check = checkDirection,
      .get = [](const Light& l) { return QVariant::fromValue(l.direction); },
      .set =
          [](Light& l, const QVariant& v) {

@@ -13,5 +13,8 @@ inline constexpr std::size_t kGoboLightPropertyCount = 3;
 std::span<const LightPropertyInfo> goboLightProperties();
 std::span<const LightPropertyInfo> barnDoorLightProperties(); // lightproperty_barndoors.cpp (issue 39)
 std::span<const LightPropertyInfo> iesLightProperties();      // issue 39 (lightproperty_ies.cpp)
+// A direction row's check (a vector within the row's limits, not zero), named after the row: the light's
+// Direction and a point light's IES nadir.
+QString checkDirection(const LightPropertyInfo& row, const QVariant& v);
 
 } // namespace lr

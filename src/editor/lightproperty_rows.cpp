@@ -70,14 +70,6 @@ QString checkBool(const LightPropertyInfo& row, const QVariant& v) {
                : QStringLiteral("%1 must be true or false").arg(row.displayName());
 }
 
-QString checkDirection(const LightPropertyInfo& row, const QVariant& v) {
-    const auto d = toVec3(v, false);
-    if (QString e = checkVec3(row.displayName(), d, row.min, row.max); !e.isEmpty()) return e;
-    const double len = glm::length(*d);
-    if (!(len > 1e-12) || !std::isfinite(len)) return QStringLiteral("direction must not be zero");
-    return {};
-}
-
 QString checkSpecular(const LightPropertyInfo& row, const QVariant& v) {
     if (auto c = toVec3(v, true)) return checkVec3(QStringLiteral("specular colour"), c, row.min, row.max);
     return checkRange(QStringLiteral("specular factor"), toDouble(v), row.min, row.max, false);
@@ -587,6 +579,15 @@ static_assert(std::size(kLightProperties) + 1 + kGoboLightPropertyCount + 3 + 5 
               "one row per LightProperty");
 
 } // namespace
+
+QString checkDirection(const LightPropertyInfo& row, const QVariant& v) {
+    const auto d = propertyvalue::toVec3(v, false);
+    if (QString e = propertyvalue::checkVec3(row.displayName(), d, row.min, row.max); !e.isEmpty()) return e;
+    const double len = glm::length(*d);
+    if (!(len > 1e-12) || !std::isfinite(len))
+        return QStringLiteral("%1 must not be zero").arg(row.displayName());
+    return {};
+}
 
 std::span<const LightPropertyInfo> valueLightProperties() { // all but Link (lightproperty_link.cpp)
     return kLightProperties;
