@@ -107,6 +107,7 @@ void MainWindow::createDocks() {
     m_presetsDock->setThumbnailRenderer([this](const Rig& rig, const QSize& size) {
         return m_scene->isEmpty() ? QImage() : m_viewport->renderThumbnail(rig, size);
     });
+    m_presetsDock->setBusyCheck([this] { return m_viewport->isNavigating(); });
     connect(m_scene, &Scene::modelChanged, m_presetsDock, &PresetsDock::invalidateThumbnails);
     m_historyDock = new QDockWidget(tr("History"), this);
     m_historyDock->setObjectName(QStringLiteral("HistoryDock"));

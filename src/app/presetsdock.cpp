@@ -97,6 +97,10 @@ void PresetsDock::invalidateThumbnails() {
 
 void PresetsDock::renderNextThumbnail() {
     if (m_pending.isEmpty() || !m_renderThumbnail) return;
+    if (m_busy && m_busy()) {
+        m_thumbnailTimer.start(kBusyRetryMs);
+        return;
+    }
     const QString path = m_pending.takeFirst();
     for (int i = 0; i < m_list->count(); ++i) {
         QListWidgetItem* item = m_list->item(i);
@@ -113,7 +117,7 @@ void PresetsDock::renderNextThumbnail() {
         }
         break;
     }
-    if (!m_pending.isEmpty()) m_thumbnailTimer.start();
+    if (!m_pending.isEmpty()) m_thumbnailTimer.start(0);
 }
 
 void PresetsDock::reload() {
@@ -136,7 +140,7 @@ void PresetsDock::reload() {
                                    "in candela and lux)")
                               : tr("Classic shading (Phong / Blinn-Phong)")));
     }
-    if (!m_pending.isEmpty() && m_renderThumbnail) m_thumbnailTimer.start();
+    if (!m_pending.isEmpty() && m_renderThumbnail) m_thumbnailTimer.start(0);
 }
 
 bool PresetsDock::applyPreset(const PresetEntry& entry) {

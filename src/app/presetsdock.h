@@ -33,6 +33,11 @@ class PresetsDock : public QDockWidget {
     PresetsDock(Document* document, PresetStore* store, QWidget* parent = nullptr);
     // Also renders the thumbnails of presets that have none (built-ins), a few per event-loop pass.
     void setThumbnailRenderer(ThumbnailRenderer renderer);
+    // While it returns true (the user orbits or drags in the viewport) no thumbnail is rendered: each costs
+    // a frame or more and its own shader compiles on the GUI thread, which made the moving view stutter
+    // (issue 40). They resume kBusyRetryMs after it turns false.
+    void setBusyCheck(std::function<bool()> busy) { m_busy = std::move(busy); }
+    static constexpr int kBusyRetryMs = 500;
     // Fills `menu` with an entry per preset (kept up to date) plus "Save rig as preset…".
     void attachMenu(QMenu* menu);
     QListWidget* list() const { return m_list; }
@@ -57,6 +62,7 @@ class PresetsDock : public QDockWidget {
     QListWidget* m_list;
     QToolButton* m_delete = nullptr;
     ThumbnailRenderer m_renderThumbnail;
+    std::function<bool()> m_busy;
     QHash<QString, QIcon> m_rendered; // preset path -> thumbnail rendered on the current model
     QStringList m_pending;            // preset paths still to render
     QTimer m_thumbnailTimer;          // one thumbnail per event-loop pass

@@ -61,6 +61,22 @@ RenderSettingsDock::RenderSettingsDock(Document* document, ViewSettings* setting
         tr("Once the view is still, path-traced samples accumulate (the targets are in "
            "the Path traced box); while it changes, the raster tier chosen last is shown"),
         Qt::ToolTipRole);
+    // How the view draws while it moves (DynamicResolution): a frame rate to keep, or full size.
+    m_moving = new QComboBox(body);
+    m_moving->setObjectName(QStringLiteral("movingFrameRate"));
+    m_moving->addItem(tr("full size"), 0);
+    for (int fps : {15, 30, 60})
+        m_moving->addItem(tr("%1 fps").arg(fps), fps);
+    m_moving->setToolTip(tr("While the view moves or a light is dragged, frames are drawn smaller so that "
+                            "this many fit a second; the still view is always drawn at full size. "
+                            "\"full size\": every frame at full size, however long it takes."));
+    auto* movingLabel = new QLabel(tr("&While moving"), body);
+    movingLabel->setBuddy(m_moving);
+    int qualityRow = 0;
+    m_ui->viewLayout->getWidgetPosition(m_ui->quality, &qualityRow, nullptr);
+    m_ui->viewLayout->insertRow(qualityRow + 1, movingLabel, m_moving);
+    connect(m_moving, &QComboBox::activated, this,
+            [this](int i) { m_settings->setMovingFrameRate(m_moving->itemData(i).toInt()); });
     fillCombo<SpecularModel>(m_ui->specularModel);
     fillCombo<ViewerModel>(m_ui->viewerModel);
     installModelTooltips<SpecularModel>(m_ui->specularModel);
@@ -166,6 +182,12 @@ void RenderSettingsDock::loadView() {
     m_ui->exposureSlider->setValue(int(std::lround(o.exposure * 10.0)));
     m_ui->toneMap->setCurrentIndex(int(o.toneMap));
     m_ui->quality->setCurrentIndex(o.pathTraced ? enumCount<Quality>() : int(o.quality));
+    int moving = m_moving->findData(o.movingFrameRate);
+    if (moving < 0) { // a rate from the settings file that the list lacks: shown as it is
+        m_moving->addItem(tr("%1 fps").arg(o.movingFrameRate), o.movingFrameRate);
+        moving = m_moving->count() - 1;
+    }
+    m_moving->setCurrentIndex(moving);
     m_ui->grid->setChecked(o.grid);
     m_ui->gizmos->setChecked(o.gizmos);
     m_ui->background->setIcon(swatch(o.background));

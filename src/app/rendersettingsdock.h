@@ -9,6 +9,7 @@
 
 #include "core/prepare.h"
 
+#include <QComboBox>
 #include <QDockWidget>
 #include <QList>
 #include <QStringList>
@@ -58,6 +59,7 @@ class RenderSettingsDock : public QDockWidget {
     std::function<SceneFrame()> m_frame;
     Scene* m_scene = nullptr;
     EnvironmentBox* m_environment;
+    QComboBox* m_moving;           // "While moving": ViewOptions::movingFrameRate
     QStringList m_classicToolTips; // classicOnlyWidgets()' own tooltips, restored under classic shading
 };
 

@@ -12,6 +12,7 @@
 #include "tracedview.h"
 #include "viewsettings.h"
 
+#include <QElapsedTimer>
 #include <QFocusEvent>
 #include <QMouseEvent>
 #include <QOpenGLContext>
@@ -161,9 +162,18 @@ void Viewport::paintGL() {
     if (r.environment() != m_scene->environment()) r.setEnvironment(m_scene->environment());
     const qreal dpr = devicePixelRatioF();
     const QSize size(qMax(1, int(std::lround(width() * dpr))), qMax(1, int(std::lround(height() * dpr))));
+    // A moving frame is drawn at the scale that keeps the chosen frame rate (dynamicresolution.h), and
+    // finished here so that its time is known: the window waits for the frame to compose it anyway.
+    const int fps = m_settings->options().movingFrameRate;
+    m_moving.setBudgetMs(fps > 0 ? 1000.0 / fps : 0.0);
+    RenderSettings settings = renderSettings(true);
+    const bool timed = m_navigating && m_moving.enabled() && !(m_compare && m_compare->isActive());
+    if (timed) settings.renderScale = m_moving.scale();
+    QElapsedTimer clock;
+    clock.start();
     if (m_compare && m_compare->isActive()
             ? !paintCompare(size)
-            : !r.render(renderCamera(), size, renderSettings(true), defaultFramebufferObject())) {
+            : !r.render(renderCamera(), size, settings, defaultFramebufferObject())) {
         if (m_error != r.lastError()) {
             m_error = r.lastError();
             emit statusMessage(tr("Rendering failed: %1").arg(m_error));
@@ -173,6 +183,11 @@ void Viewport::paintGL() {
     // Path traced (tracedview.h): accumulates once this camera and size hold still.
     m_traced->viewDrawn(renderCamera(), size, m_navigating || (m_compare && m_compare->isActive()));
     const RenderStats& st = r.stats();
+    m_lastDrawnSize = st.drawnSize;
+    if (timed) {
+        glFinish();
+        m_moving.frameDrawn(double(clock.nsecsElapsed()) * 1e-6, settings.renderScale);
+    }
     emit frameRendered(st.lastGpuMs, st.lastCpuMs);
     if (m_framesRendered++ == 0) emit firstFrame();
 }

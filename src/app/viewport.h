@@ -9,6 +9,7 @@
 #pragma once
 
 #include "picking.h"
+#include "render/dynamicresolution.h"
 #include "scene/camera.h"
 #include "scene/renderlayers.h"
 
@@ -59,6 +60,10 @@ class Viewport : public QOpenGLWidget {
     bool hasRenderedFrame() const { return m_framesRendered > 0; }
     // Orbiting, panning, dollying or dragging a light right now: frames take the interactive settings.
     bool isNavigating() const { return m_navigating; }
+    // The moving frames' size (dynamicresolution.h): the scale the next one takes (tests may tell it of a
+    // frame), and the size the last frame was drawn at (empty before the first).
+    DynamicResolution& movingResolution() { return m_moving; }
+    QSize lastDrawnSize() const { return m_lastDrawnSize; }
     QString lastError() const { return m_error; }
     // The environment the viewport's renderer draws with (the Scene's, from the last frame on): tests.
     std::shared_ptr<const LoadedEnvironment> renderedEnvironment() const;
@@ -157,6 +162,8 @@ class Viewport : public QOpenGLWidget {
     bool m_navigating = false;
     QTimer* m_settle = nullptr;
     void setNavigating(bool on);
+    DynamicResolution m_moving; // ViewOptions::movingFrameRate's budget
+    QSize m_lastDrawnSize;
     bool m_shiftPress = false;
     bool m_focusedByClick = false; // focusInEvent by a mouse press, not yet seen by mousePressEvent
     bool m_pressFocused = false;   // the current press is the one that gave the viewport the focus

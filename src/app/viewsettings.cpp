@@ -51,6 +51,11 @@ void ViewSettings::setPathTraced(bool on) {
     o.pathTraced = on;
     setOptions(o);
 }
+void ViewSettings::setMovingFrameRate(int fps) {
+    auto o = m_options;
+    o.movingFrameRate = std::clamp(fps, 0, kMaxMovingFrameRate);
+    setOptions(o);
+}
 void ViewSettings::setTraceTargets(int samples, double seconds, double noise) {
     auto o = m_options;
     o.traceSamples = std::max(0, samples);
@@ -73,6 +78,8 @@ void ViewSettings::load() {
     o.grid = s.value(QStringLiteral("grid"), o.grid).toBool();
     o.gizmos = s.value(QStringLiteral("gizmos"), o.gizmos).toBool();
     o.pathTraced = s.value(QStringLiteral("pathTraced"), o.pathTraced).toBool();
+    const int fps = s.value(QStringLiteral("movingFrameRate"), o.movingFrameRate).toInt(&ok);
+    if (ok && fps >= 0 && fps <= kMaxMovingFrameRate) o.movingFrameRate = fps;
     const int samples = s.value(QStringLiteral("traceSamples"), o.traceSamples).toInt(&ok);
     if (ok && samples >= 0) o.traceSamples = samples;
     const double seconds = s.value(QStringLiteral("traceSeconds"), o.traceSeconds).toDouble(&ok);
@@ -97,6 +104,7 @@ void ViewSettings::save() const {
     s.setValue(QStringLiteral("grid"), m_options.grid);
     s.setValue(QStringLiteral("gizmos"), m_options.gizmos);
     s.setValue(QStringLiteral("pathTraced"), m_options.pathTraced);
+    s.setValue(QStringLiteral("movingFrameRate"), m_options.movingFrameRate);
     s.setValue(QStringLiteral("traceSamples"), m_options.traceSamples);
     s.setValue(QStringLiteral("traceSeconds"), m_options.traceSeconds);
     s.setValue(QStringLiteral("traceNoise"), m_options.traceNoise);

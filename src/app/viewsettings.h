@@ -12,6 +12,8 @@
 
 namespace lr {
 
+constexpr int kMaxMovingFrameRate = 120;
+
 struct ViewOptions {
     double exposure = 0.0; // EV
     ToneMap toneMap = ToneMap::Aces;
@@ -23,6 +25,9 @@ struct ViewOptions {
     // it changes it shows `quality`, the raster tier last chosen. Accumulation stops at the first target
     // reached; 0 switches a target off.
     bool pathTraced = false;
+    // While the view moves (orbit, pan, dolly, a light dragged) frames are drawn smaller so that this many
+    // fit a second (DynamicResolution); 0: always at full size, however long a frame takes.
+    int movingFrameRate = 30;
     int traceSamples = 256;    // samples per pixel
     double traceSeconds = 0.0; // seconds of tracing
     double traceNoise = 0.0;   // estimated relative noise (PathTracer::noiseEstimate) at or below this
@@ -44,6 +49,7 @@ class ViewSettings : public QObject {
     void setGrid(bool on);
     void setGizmos(bool on);
     void setPathTraced(bool on);
+    void setMovingFrameRate(int fps); // clamped to [0, kMaxMovingFrameRate]
     // Negative or non-finite values are taken as 0 (off).
     void setTraceTargets(int samples, double seconds, double noise);
 

@@ -34,7 +34,7 @@ namespace {
 const char* kUsage =
     "lightrig bench [MODEL...] [--rig RIG] [--camera-index N | --view NAME] [--lights N,...] "
     "[--light-type T,...] [--size WxH] [--shading classic|pbr] [--ground off|visible|catcher] "
-    "[--shadows on|off] [--frames N] [--msaa N] [--interactive] [--orbit DEG] [--drag] "
+    "[--shadows on|off] [--frames N] [--msaa N] [--interactive] [--orbit DEG] [--drag] [--scale S] "
     "[--quality LIST[,path] [--path-samples N] [--converged-samples N] [--bounces B] [--threads T]] "
     "[--approximations LIST] [--json OUT.json] [--chart OUT.png] [--scaling-chart OUT.png] [--groups]";
 
@@ -151,6 +151,14 @@ int runBench(const QStringList& args) {
         QStringLiteral("drag"),
         QStringLiteral("Move the rig's first light a little between timed frames, as while it is dragged: "
                        "its shadow map (if it casts) is rendered every frame, the others are kept."));
+    const QCommandLineOption scale(
+        QStringLiteral("scale"),
+        QStringLiteral(
+            "Draw every raster frame at this fraction of --size, %1..1, and stretch it to the size "
+            "(default 1): the editor's frames while the view moves. The errors are of the "
+            "stretched image.")
+            .arg(kMinRenderScale),
+        QStringLiteral("S"));
     const QCommandLineOption approximations(
         QStringLiteral("approximations"),
         QStringLiteral("The balanced and fast tiers' approximations to compile in, for measuring each "
@@ -169,8 +177,8 @@ int runBench(const QStringList& args) {
     parser.addOption(help);
     scene.addTo(parser);
     pathSet.addTo(parser);
-    parser.addOptions({lights, lightType, lightRange, frames, warmup, msaa, interactive, orbit, drag, json,
-                       chart, scalingChart, noErrors, fullReference, noUber, approximations, groups});
+    parser.addOptions({lights, lightType, lightRange, frames, warmup, msaa, interactive, orbit, drag, scale,
+                       json, chart, scalingChart, noErrors, fullReference, noUber, approximations, groups});
     parser.addPositionalArgument(QStringLiteral("MODEL"),
                                  QStringLiteral("Model files (default: the standard suite)."),
                                  QStringLiteral("[MODEL...]"));
@@ -215,6 +223,14 @@ int runBench(const QStringList& args) {
         if (!ok || !(std::abs(options.orbitDegrees) <= 360.0))
             return usage(
                 QStringLiteral("--orbit must be degrees in -360..360, got '%1'").arg(parser.value(orbit)));
+    }
+    if (parser.isSet(scale)) {
+        bool ok = false;
+        options.renderScale = parser.value(scale).toDouble(&ok);
+        if (!ok || !(options.renderScale >= kMinRenderScale && options.renderScale <= 1.0))
+            return usage(QStringLiteral("--scale must be a fraction in %1..1, got '%2'")
+                             .arg(kMinRenderScale)
+                             .arg(parser.value(scale)));
     }
     const QStringList models = parser.positionalArguments();
     std::vector<int> counts;

@@ -300,6 +300,7 @@ QJsonObject benchJson(const BenchReport& report) {
                                                 {QStringLiteral("errors"), op.errors},
                                                 {QStringLiteral("orbit_degrees"), op.orbitDegrees},
                                                 {QStringLiteral("drag_light"), op.dragLight},
+                                                {QStringLiteral("render_scale"), op.renderScale},
                                                 {QStringLiteral("uber_shader"), op.uberShader}}},
         {QStringLiteral("reference_ms"), round3(report.referenceMs)},
         {QStringLiteral("results"), results},

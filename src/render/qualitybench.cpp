@@ -31,6 +31,7 @@ RenderSettings tierSettings(const BenchOptions& o, Quality q, bool uber) {
     s.forceAllFeatures = uber;
     s.approximations = o.approximations;
     s.interactive = o.interactive;
+    s.renderScale = o.renderScale;
     return s;
 }
 

@@ -79,6 +79,9 @@ struct BenchOptions {
     // direction as much for a directional light), as while the user drags it: its shadow map, if it casts,
     // is rendered again every frame, the other lights' maps are kept.
     bool dragLight = false;
+    // Every frame of every raster tier (the timed ones and the image the errors are of) drawn at this
+    // fraction of --size and stretched to it (RenderSettings::renderScale): the editor's moving frame.
+    double renderScale = 1.0;
     bool keepImages = false; // with errors: keep each tier's image and the reference (BenchResult::image)
     std::uint8_t approximations = render::approx::kDefault; // the tiers' approximations (approximations.h)
 };

@@ -9,6 +9,7 @@
 #include "programcache.h"
 #include "readback.h"
 #include "renderplan.h"
+#include "scaledoutput.h"
 #include "targets.h"
 
 #include <QElapsedTimer>
@@ -27,7 +28,8 @@ using namespace render;
 Renderer::Renderer()
     : m_programs(std::make_unique<ProgramCache>()), m_model(std::make_unique<GpuModel>()),
       m_inputs(std::make_unique<LitInputs>()), m_targets(std::make_unique<Targets>()),
-      m_plan(std::make_unique<RenderPlan>()), m_timer(std::make_unique<GpuTimer>()) {}
+      m_scaled(std::make_unique<ScaledOutput>()), m_plan(std::make_unique<RenderPlan>()),
+      m_timer(std::make_unique<GpuTimer>()) {}
 
 Renderer::~Renderer() {
     if (!m_initialized) return;
@@ -96,6 +98,7 @@ void Renderer::releaseResources() {
     m_model->release(this);
     m_targets->release(this);
     m_targets->releaseCommon(this);
+    m_scaled->release(this);
     m_inputs->release(this);
     m_plan->release();
     m_timer->release(this);
@@ -209,6 +212,9 @@ bool Renderer::render(const ViewCamera& camera, QSize size, const RenderSettings
                       const QRect& tile) {
     if (!m_initialized) return fail(QStringLiteral("render before initialize"));
     if (size.isEmpty()) return fail(QStringLiteral("render: empty size"));
+    const QSize drawSize = scaledDrawSize(size, settings.renderScale);
+    if (drawSize != size && !tile.isValid() && !settings.hdrTarget)
+        return renderScaled(camera, size, drawSize, settings, targetFbo);
     QElapsedTimer cpu;
     cpu.start();
     FrameContext frame = frameContext(camera, size, settings, tile);
@@ -255,7 +261,19 @@ bool Renderer::render(const ViewCamera& camera, QSize size, const RenderSettings
     m_stats.shaderVariantsCompiled = m_programs->compiledCount();
     m_stats.shaderVariantsCached = m_programs->cachedCount();
     m_stats.lastCpuMs = double(cpu.nsecsElapsed()) * 1e-6;
+    m_stats.drawnSize = frame.targetSize;
     return ok;
+}
+
+bool Renderer::renderScaled(const ViewCamera& camera, QSize size, QSize drawSize,
+                            const RenderSettings& settings, GLuint targetFbo) {
+    QString error;
+    if (!m_scaled->ensure(this, drawSize, &error)) return fail(error);
+    RenderSettings inner = settings;
+    inner.renderScale = 1.0;
+    if (!render(camera, drawSize, inner, m_scaled->fbo)) return false;
+    m_scaled->present(this, targetFbo, size);
+    return true;
 }
 
 bool Renderer::readRadiance(FloatImage* out) {

@@ -53,6 +53,7 @@ struct AttributeMaterial;
 struct InputFrame;
 struct PlanKey;
 struct Targets;
+struct ScaledOutput;
 struct FrameContext;
 struct PassScene;
 } // namespace render
@@ -132,6 +133,9 @@ class Renderer : protected QOpenGLFunctions_3_3_Core {
   private:
     bool fail(const QString& message, bool log = true); // log: as a warning (not for the caller's input)
     bool ensureTargets(QSize size, int samples, GLenum colorFormat);
+    // RenderSettings::renderScale: the frame at drawSize into m_scaled, then stretched over targetFbo.
+    bool renderScaled(const ViewCamera& camera, QSize size, QSize drawSize, const RenderSettings& settings,
+                      GLuint targetFbo);
     render::FrameContext frameContext(const ViewCamera& camera, QSize size, const RenderSettings& settings,
                                       const QRect& tile) const;
     render::PassScene passScene();
@@ -153,6 +157,7 @@ class Renderer : protected QOpenGLFunctions_3_3_Core {
     std::unique_ptr<render::GpuModel> m_model;   // the GPU scene
     std::unique_ptr<render::LitInputs> m_inputs; // lights, shadow maps, environment, ground
     std::unique_ptr<render::Targets> m_targets;
+    std::unique_ptr<render::ScaledOutput> m_scaled;
     std::unique_ptr<render::RenderPlan> m_plan;
     std::unique_ptr<render::GpuTimer> m_timer;
     int m_maxSamples = 0, m_maxTargetSize = 0;

@@ -7,6 +7,7 @@
 #include "core/types.h"
 
 #include <QColor>
+#include <QSize>
 #include <QtGlobal>
 #include <vector>
 
@@ -24,6 +25,7 @@ namespace lr {
 // ~0.1 s deferred), which would freeze the editor.
 enum class ShadingPath { Auto, Forward, Deferred };
 constexpr int kDeferredMsaaMaxLights = 64;
+constexpr double kMinRenderScale = 0.125;
 
 struct RenderSettings {
     double exposureEV = 0.0;
@@ -79,6 +81,11 @@ struct RenderSettings {
     // The view or a light is being dragged: dense models draw their interaction proxy (lod.h) once it is
     // built; the full mesh otherwise.
     bool interactive = false;
+    // Draw the frame at this fraction of the output's width and height (every pass, the overlays too) and
+    // stretch it over the output with bilinear filtering (render/scaledoutput.h): the editor's frame while
+    // the view moves (dynamicresolution.h). Clamped to [kMinRenderScale, 1]; 1 (the default) draws at full
+    // size. Ignored by tiles and the HDR path (files are always rendered at their size).
+    double renderScale = 1.0;
     bool operator==(const RenderSettings&) const = default;
 };
 
@@ -118,6 +125,8 @@ struct RenderStats {
     // Wall time of this frame's map renders (0: none rendered): their own time under
     // RenderSettings::waitForShadowMaps, else only their submission.
     double shadowMapMs = 0.0;
+    // The size the last frame's passes drew at: the output's, or smaller under RenderSettings::renderScale.
+    QSize drawnSize;
 };
 
 } // namespace lr

@@ -3,6 +3,7 @@
 // highlight); the click that moves the keyboard focus from a dock's field to the viewport keeps the
 // selection; the wheel over the viewport takes the focus too, so number keys then choose standard views
 // instead of typing into the field last edited. Issue 38: Alt+click on the model links the part there.
+// Issue 40: while the view orbits, frames are drawn at the moving scale; the still frame at full size.
 #include "app/gizmointeraction.h"
 #include "app/lightsdock.h"
 #include "app/linkingsection.h"
@@ -11,7 +12,9 @@
 #include "app/numberedit.h"
 #include "app/picking.h"
 #include "app/propertiesdock.h"
+#include "app/viewsettings.h"
 #include "editor/linkmatrixmodel.h"
+#include "render/scaledoutput.h"
 #include "startwindow.h"
 
 #include <QAction>
@@ -56,12 +59,63 @@ class TestViewportClicks : public QObject {
                glm::length(a.up - b.up) < 1e-12 && a.yfovDeg == b.yfovDeg;
     }
 
+    // Presses on `background`, moves 4 times (waiting for a frame after each), releases and waits for the
+    // still frame at `full` size; *moving gets the sizes of the frames drawn while navigating.
+    void orbitOnce(QPoint background, QSize full, std::vector<QSize>* moving) {
+        moving->clear();
+        QSignalSpy frames(viewport(), &Viewport::frameRendered);
+        const auto connection = connect(viewport(), &Viewport::frameRendered, this, [&] {
+            if (viewport()->isNavigating()) moving->push_back(viewport()->lastDrawnSize());
+        });
+        QTest::mousePress(viewport(), Qt::LeftButton, Qt::NoModifier, background);
+        for (int i = 1; i <= 4; ++i) {
+            const QPointF at = QPointF(background) + QPointF(12.0 * i, 0.0);
+            QMouseEvent move(QEvent::MouseMove, at, viewport()->mapToGlobal(at), Qt::NoButton, Qt::LeftButton,
+                             Qt::NoModifier);
+            QApplication::sendEvent(viewport(), &move);
+            const int before = int(frames.count());
+            QTRY_VERIFY(frames.count() > before);
+        }
+        QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::NoModifier, background + QPoint(48, 0));
+        QTRY_VERIFY(!viewport()->isNavigating() && viewport()->lastDrawnSize() == full);
+        disconnect(connection);
+    }
+
   private slots:
     void initTestCase() {
         test::prepareEditorTest(QStringLiteral("lightrig-viewportclicks-test"));
         m_window = std::make_unique<MainWindow>();
         const QString started = test::startMainWindow(*m_window);
         QVERIFY2(started.isEmpty(), qPrintable(started));
+    }
+
+    // Issue 40: with "While moving" at a frame rate, an orbit draws its frames at the scale the controller
+    // holds (told here of a slow frame: its smallest), and the frame after the release at full size; at
+    // "full size" every moving frame is full size.
+    void orbit_drawsSmallerWhileMoving() {
+        doc()->newRig(Rig{});
+        viewport()->frameAll();
+        QPoint onModel, background;
+        modelAndBackground(&onModel, &background);
+        const qreal dpr = viewport()->devicePixelRatioF();
+        const QSize full(int(std::lround(viewport()->width() * dpr)),
+                         int(std::lround(viewport()->height() * dpr)));
+        m_window->viewSettings()->setMovingFrameRate(30);
+        viewport()->movingResolution().frameDrawn(1e5, 1.0); // a frame far over the budget
+        const double scale = viewport()->movingResolution().scale();
+        QCOMPARE(scale, DynamicResolution::kMinScale);
+        std::vector<QSize> moving;
+        orbitOnce(background, full, &moving);
+        if (QTest::currentTestFailed()) return;
+        QVERIFY(!moving.empty());
+        QCOMPARE(moving.front(), render::scaledDrawSize(full, scale));
+        m_window->viewSettings()->setMovingFrameRate(0);
+        orbitOnce(background, full, &moving);
+        if (QTest::currentTestFailed()) return;
+        QVERIFY(!moving.empty());
+        for (const QSize& s : moving)
+            QCOMPARE(s, full);
+        m_window->viewSettings()->setMovingFrameRate(30);
     }
 
     void cleanupTestCase() {

@@ -95,6 +95,9 @@ class TestBenchCli : public QObject {
         QTest::addRow("bad environment background") << QStringList{"--environment-background", "grey"};
         QTest::addRow("orbit past a turn") << QStringList{"--orbit", "400"};
         QTest::addRow("orbit word") << QStringList{"--orbit", "left"};
+        QTest::addRow("scale 0") << QStringList{"--scale", "0"}; // issue 40
+        QTest::addRow("scale past 1") << QStringList{"--scale", "1.5"};
+        QTest::addRow("scale word") << QStringList{"--scale", "half"};
         QTest::addRow("groups and json") << QStringList{"--groups", "--json", "out.json"}; // issue 37
     }
 
@@ -105,6 +108,10 @@ class TestBenchCli : public QObject {
         QVERIFY2(r.err.contains(QStringLiteral("Usage: lightrig bench")), qPrintable(show(r)));
         if (args.first() == QLatin1String("--shading"))
             QVERIFY2(r.err.contains(QStringLiteral("--shading must be \"classic\" or \"pbr\", got 'phong'")),
+                     qPrintable(show(r)));
+        if (args.first() == QLatin1String("--scale"))
+            QVERIFY2(r.err.contains(
+                         QStringLiteral("--scale must be a fraction in 0.125..1, got '%1'").arg(args[1])),
                      qPrintable(show(r)));
         if (args.first().startsWith(QLatin1String("--environment")))
             QVERIFY2(r.err.contains(args.first() + QStringLiteral(" must be ")), qPrintable(show(r)));
@@ -268,6 +275,41 @@ class TestBenchCli : public QObject {
         };
         QCOMPARE(kept({}), 3000);                                              // 3 kept, orbit 0
         QCOMPARE(kept({QStringLiteral("--orbit"), QStringLiteral("15")}), 15); // none kept, orbit 15
+    }
+
+    // Issue 40: --scale draws every frame smaller and stretches it, as the editor's moving frames; the
+    // error figures are of the stretched image, so they grow (exact alone is within a level of the
+    // reference), and the JSON records the scale.
+    void scaleMeasuresTheStretchedFrame() {
+        if (!haveDisplay()) QSKIP("needs an X display with OpenGL: run under xvfb-run -a");
+        const QString json = m_dir.filePath(QStringLiteral("scale.json"));
+        const auto run = [&](const QStringList& extra, double* scale) {
+            const Run r =
+                lightrig(QStringList{QStringLiteral(LIGHTRIG_TEST_DATA "/model/shiny.obj"),
+                                     QStringLiteral("--quality"), QStringLiteral("exact"),
+                                     QStringLiteral("--msaa"), QStringLiteral("0"), QStringLiteral("--size"),
+                                     QStringLiteral("96x64"), QStringLiteral("--frames"), QStringLiteral("2"),
+                                     QStringLiteral("--no-uber"), QStringLiteral("--json"), json} +
+                         extra);
+            const QJsonObject doc = writtenJson(r, json);
+            *scale = doc.value(QStringLiteral("options"))
+                         .toObject()
+                         .value(QStringLiteral("render_scale"))
+                         .toDouble(-1);
+            return doc.value(QStringLiteral("results"))
+                .toArray()
+                .at(0)
+                .toObject()
+                .value(QStringLiteral("max_error_levels"))
+                .toInt(-1);
+        };
+        double scale = 0.0;
+        const int full = run({}, &scale);
+        QCOMPARE(scale, 1.0);
+        QVERIFY2(full >= 0 && full <= 1, qPrintable(QString::number(full)));
+        const int half = run({QStringLiteral("--scale"), QStringLiteral("0.5")}, &scale);
+        QCOMPARE(scale, 0.5);
+        QVERIFY2(half > 1, qPrintable(QString::number(half)));
     }
 
     // lightrig re-executes itself with malloc on transparent huge pages (core/hugepages.h): the bench,
