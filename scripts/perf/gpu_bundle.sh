@@ -18,10 +18,11 @@
 #   dri/swrast_dri.so            Mesa's software DRI driver: Xvfb's GLX extension loads it
 #   scenes/DamagedHelmet.glb, scenes/add_lights.py   the helmet_Npt scenes are made there (byte-identical
 #                                to ../shared/models/bench/helmet_{1,8,64}pt.glb; saves 20 MB of transfer)
+#   scenes/localize_lights.py    makes them localised lights (gpu_run.sh LR_GPU_LOCAL)
 # Next to the tarball: glxprobe, a small GLX client (fbconfigs, visuals, a 3.3 core context's GL_RENDERER)
 # that gpu_run.sh runs first, to tell a GLX set-up problem from a LightRig one; and eglpbuffer.so, an
 # LD_PRELOAD shim for the "egldev" mode (see gpu_run.sh and the shim's comment).
-# LR_BUNDLE_CPU=1 makes the smaller bundle scripts/perf/trace_device.sh needs (the path tracer: no display,
+# LR_BUNDLE_EGL_ONLY=1 leaves Mesa out (egldev mode only; see below). LR_BUNDLE_CPU=1 makes the smaller bundle scripts/perf/trace_device.sh needs (the path tracer: no display,
 # no GL): the binary, the offscreen platform and image-format plugins, their libraries (the GL dispatch
 # libraries included, which the binary links but never calls there) and the scenes; no X server, no Mesa.
 # BUNDLE_DIR defaults to .gpubundle (ignored through .git/info/exclude; name it in the device call's carry).
@@ -55,9 +56,11 @@ else
     cp -L "$qtplugins"/xcbglintegrations/*.so "$t/plugins/xcbglintegrations/"
     cp -L /usr/bin/Xvfb /usr/bin/xkbcomp "$t/xserver/"
     cp -rL /usr/share/X11/xkb "$t/xkb"
-    cp -L "$dri/swrast_dri.so" "$t/dri/"
+    # LR_BUNDLE_EGL_ONLY=1: no Mesa (its swrast and the libLLVM it needs, ~40 MB compressed), for a GPU
+    # machine where only the "egldev" mode renders on the GPU (Xvfb then runs without GLX).
+    [ "${LR_BUNDLE_EGL_ONLY:-0}" = 1 ] || cp -L "$dri/swrast_dri.so" "$t/dri/"
 fi
-cp -L "$helmet" "$addlights" "$t/scenes/"
+cp -L "$helmet" "$addlights" "$root/scripts/perf/localize_lights.py" "$t/scenes/"
 
 # Shared libraries: the closure of ldd over every ELF file above, minus what must come from the target.
 skip='^(linux-vdso|ld-linux|libc\.so|libm\.so|libpthread|libdl\.|librt\.|libresolv|libutil\.|libanl\.|libGL\.|libGLX|libGLdispatch|libEGL|libOpenGL|libGLES|libvulkan|libstdc\+\+|libgcc_s)'

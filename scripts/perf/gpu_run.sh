@@ -13,6 +13,8 @@
 # only, never for Xvfb, whose GLX extension is Mesa's), LR_GPU_EXPECT (a string GL_RENDERER must contain, else nothing is measured: default
 # NVIDIA when LR_GPU_VENDOR=nvidia), LR_GPU_SIZES (the first is the main size), LR_GPU_LIGHTS,
 # LR_GPU_FRAMES (60), LR_GPU_BIG_FRAMES (frames for >= 1024 lights at the main size, 20),
+# LR_GPU_LOCAL (a glTF range in model units: every scene's lights become localised lights of that range on
+# a sphere around the helmet, scripts/perf/localize_lights.py, as the llvmpipe table's local_N scenes),
 # LR_GPU_NOMSAA_SIZES (sizes also timed as `--quality exact --msaa 0`, like the llvmpipe table in
 # docs/performance.md; default the last size), LR_GPU_TIMEOUT (s per bench run, 150), LR_GPU_BUDGET (s: no
 # new run starts after this, 450). Order: the main size up to the second-largest count, the other sizes,
@@ -71,6 +73,10 @@ fi
 say "scenes"
 for n in $counts; do
     python3 "$R/scenes/add_lights.py" "$R/scenes/DamagedHelmet.glb" "$R/scenes/helmet_${n}pt.glb" "$n" || exit 1
+    if [ -n "${LR_GPU_LOCAL:-}" ]; then
+        python3 "$R/scenes/localize_lights.py" "$R/scenes/helmet_${n}pt.glb" "$R/scenes/tmp.glb" "$LR_GPU_LOCAL" &&
+            mv "$R/scenes/tmp.glb" "$R/scenes/helmet_${n}pt.glb" || exit 1
+    fi
 done
 
 # lightrig's environment per mode: "glx" (Qt's xcb platform, GLX), "egldev" (xcb platform with EGL, but

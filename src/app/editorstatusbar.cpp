@@ -6,12 +6,16 @@
 #include <QToolButton>
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace lr {
 
 EditorStatusBar::EditorStatusBar(QWidget* parent)
     : QStatusBar(parent), m_rig(new QLabel(this)), m_frameTime(new QLabel(this)),
-      m_progress(new QProgressBar(this)), m_cancel(new QToolButton(this)), m_warnings(new QToolButton(this)) {
+      m_progress(new QProgressBar(this)), m_cancel(new QToolButton(this)), m_warnings(new QToolButton(this)),
+      m_frameTimeTimer(new QTimer(this)) {
+    m_frameTimeTimer->setSingleShot(true);
+    connect(m_frameTimeTimer, &QTimer::timeout, this, &EditorStatusBar::showFrameTime);
     m_frameTime->setObjectName(QStringLiteral("frameTime"));
     m_frameTime->setToolTip(tr("Time to render the last viewport frame (GPU timer query)"));
     m_frameTime->setMinimumWidth(
@@ -38,9 +42,21 @@ EditorStatusBar::EditorStatusBar(QWidget* parent)
 
 void EditorStatusBar::setFrameTime(double gpuMs, double cpuMs) {
     if (gpuMs >= 0.0 && std::isfinite(gpuMs))
-        m_frameTime->setText(tr("GPU %1 ms").arg(gpuMs, 0, 'f', 1));
+        m_pendingFrameTime = tr("GPU %1 ms").arg(gpuMs, 0, 'f', 1);
     else if (cpuMs >= 0.0 && std::isfinite(cpuMs))
-        m_frameTime->setText(tr("frame %1 ms").arg(cpuMs, 0, 'f', 1));
+        m_pendingFrameTime = tr("frame %1 ms").arg(cpuMs, 0, 'f', 1);
+    else
+        return;
+    if (!m_sinceFrameTime.isValid() || m_sinceFrameTime.elapsed() >= kFrameTimeIntervalMs)
+        showFrameTime();
+    else if (!m_frameTimeTimer->isActive())
+        m_frameTimeTimer->start(int(kFrameTimeIntervalMs - m_sinceFrameTime.elapsed()));
+}
+
+void EditorStatusBar::showFrameTime() {
+    m_frameTimeTimer->stop();
+    m_sinceFrameTime.start();
+    if (!m_pendingFrameTime.isEmpty()) m_frameTime->setText(std::exchange(m_pendingFrameTime, QString()));
 }
 
 QString EditorStatusBar::frameTimeText() const {

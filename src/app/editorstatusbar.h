@@ -4,7 +4,9 @@
 // (warningsRequested: the main window opens the Model dock on its Warnings branch).
 #pragma once
 
+#include <QElapsedTimer>
 #include <QStatusBar>
+#include <QTimer>
 
 class QLabel;
 class QProgressBar;
@@ -17,7 +19,10 @@ class EditorStatusBar : public QStatusBar {
   public:
     explicit EditorStatusBar(QWidget* parent = nullptr);
 
-    void setFrameTime(double gpuMs, double cpuMs); // gpuMs < 0: not measured
+    // gpuMs < 0: not measured. Shown at most every kFrameTimeIntervalMs (the latest value): relabelling the
+    // status bar at every frame cost the moving view 20-30 ms a frame (issue 40, the window's composition).
+    void setFrameTime(double gpuMs, double cpuMs);
+    static constexpr int kFrameTimeIntervalMs = 250;
     void setRigSummary(const QString& text);
     void showLoading(const QString& fileName);
     void setLoadProgress(double fraction); // 0..1
@@ -37,6 +42,10 @@ class EditorStatusBar : public QStatusBar {
     QProgressBar* m_progress;
     QToolButton* m_cancel;
     QToolButton* m_warnings;
+    QString m_pendingFrameTime; // the latest, not shown yet
+    QElapsedTimer m_sinceFrameTime;
+    QTimer* m_frameTimeTimer;
+    void showFrameTime();
 };
 
 } // namespace lr
