@@ -224,4 +224,21 @@ ClusterData binLights(std::span<const LightBounds> lights, const ClusterView& vi
     return d;
 }
 
+ClusterGrid clusterGridFor(int width, int height, long long maxClusters) {
+    const auto tiles = [](int pixels) {
+        return std::clamp((std::max(pixels, 1) + kClusterTilePixels - 1) / kClusterTilePixels, 1,
+                          kClusterMaxTiles);
+    };
+    ClusterGrid g;
+    g.tilesX = tiles(width);
+    g.tilesY = tiles(height);
+    const long long most = std::max<long long>(maxClusters / g.slices, 1);
+    if (static_cast<long long>(g.tilesX) * g.tilesY > most) {
+        const double shrink = std::sqrt(double(most) / (double(g.tilesX) * g.tilesY));
+        g.tilesX = std::max(1, int(std::floor(g.tilesX * shrink)));
+        g.tilesY = std::max(1, int(std::floor(g.tilesY * shrink)));
+    }
+    return g;
+}
+
 } // namespace lr::render

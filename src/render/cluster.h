@@ -79,6 +79,16 @@ struct ClusterSpan {
 ClusterSpan sphereClusters(const glm::dvec3& center, double radius, const ClusterView& view,
                            const ClusterLookup& lookup);
 
+// The grid for a target of width × height pixels: tiles of about kClusterTilePixels on a side (32 × 18 at
+// 1280×720, 96 × 54 at 3840×2160), kClusterMaxTiles at most each way. A fixed 32 × 18 made a 4K tile 120
+// pixels wide, and its list held far more lights than reach most of its pixels (issue 40: 4096 localised
+// lights at 4K on the H100).
+constexpr int kClusterTilePixels = 40;
+// maxClusters: how many clusters the range buffer may hold (one texel each: GL_MAX_TEXTURE_BUFFER_SIZE, at
+// least 65,536 in GL 3.3); fewer, larger tiles when the grid would hold more.
+constexpr int kClusterMaxTiles = 128;
+ClusterGrid clusterGridFor(int width, int height, long long maxClusters = 65536);
+
 // Bins lights[i] (index i of the uploaded light buffer) into the grid.
 ClusterData binLights(std::span<const LightBounds> lights, const ClusterView& view,
                       const ClusterGrid& grid = {});

@@ -157,7 +157,12 @@ bool LightSet::cluster(QOpenGLFunctions_3_3_Core* gl, const glm::dmat4& projecti
     cv.znear = p32 / (p22 - 1.0);
     cv.zfar = p22 > -1.0 ? p32 / (p22 + 1.0) : std::numeric_limits<double>::infinity();
     if (!(cv.znear > 0.0) || !std::isfinite(cv.znear)) return false;
-    const ClusterData data = binLights(m_bounds, cv);
+    if (m_maxTextureBuffer == 0) {
+        GLint most = 0;
+        gl->glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &most);
+        m_maxTextureBuffer = std::max<GLint>(most, 65536); // GL 3.3's minimum
+    }
+    const ClusterData data = binLights(m_bounds, cv, clusterGridFor(cv.width, cv.height, m_maxTextureBuffer));
     m_clusters.upload(gl, data);
     stats->clustered = true;
     stats->clusterLightRefs = qint64(data.indices.size());

@@ -88,6 +88,7 @@ class LightSet {
     ClusterBuffers m_clusters;
     glm::vec4 m_clusterUniforms{0.0f}; // tile scale x, y, near, slice scale
     glm::ivec3 m_clusterGrid{0};
+    long long m_maxTextureBuffer = 0; // GL_MAX_TEXTURE_BUFFER_SIZE, once (clusterGridFor)
     int m_clusterGlobal = 0;
 };
 

@@ -5,6 +5,7 @@
 #include "scene/camera.h"
 
 #include <QTest>
+#include <glm/gtc/matrix_transform.hpp>
 #include <random>
 #include <set>
 
@@ -173,6 +174,37 @@ class TestClusterBin : public QObject {
             (void)loX, (void)hiX, (void)loY, (void)hiY, (void)loZ, (void)hiZ;
         }
         QVERIFY(checked > 1000);
+    }
+
+    // Issue 40: tiles of about 40 pixels whatever the size (32 x 18 at 1280x720, as before; 96 x 54 at 4K),
+    // never more than the range buffer holds, never none.
+    void gridFollowsTheTargetSize() {
+        const ClusterGrid hd = clusterGridFor(1280, 720);
+        QCOMPARE(hd.tilesX, 32);
+        QCOMPARE(hd.tilesY, 18);
+        const ClusterGrid uhd = clusterGridFor(3840, 2160, 1 << 27);
+        QCOMPARE(uhd.tilesX, 96);
+        QCOMPARE(uhd.tilesY, 54);
+        const ClusterGrid capped = clusterGridFor(3840, 2160); // GL 3.3's 65,536 texels
+        QVERIFY2(capped.count() <= 65536 && capped.tilesX >= 32,
+                 qPrintable(QStringLiteral("%1 x %2").arg(capped.tilesX).arg(capped.tilesY)));
+        const ClusterGrid tiny = clusterGridFor(0, -5, 0);
+        QVERIFY(tiny.tilesX >= 1 && tiny.tilesY >= 1 && tiny.slices >= 1);
+        QCOMPARE(clusterGridFor(100000, 100000, 1 << 30).tilesX, kClusterMaxTiles);
+        // A 4K grid bins the same lights to the same pixels (the lookup is the shader's): spot-check that a
+        // light's clusters still cover its sphere's footprint in the finer grid.
+        ClusterView v;
+        v.projection = glm::perspective(glm::radians(45.0), 16.0 / 9.0, 0.1, 100.0);
+        v.width = 3840;
+        v.height = 2160;
+        LightBounds b;
+        b.bounded = true;
+        b.center = {0.0, 0.0, -5.0};
+        b.radius = 0.5;
+        const ClusterData d = binLights(std::span<const LightBounds>(&b, 1), v, uhd);
+        QCOMPARE(d.grid, uhd);
+        const int centre = d.lookup.index({1920.0, 1080.0}, 5.0);
+        QVERIFY(!d.cluster(centre).empty());
     }
 
     void smallLightTouchesFewClusters() {
