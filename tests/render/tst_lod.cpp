@@ -3,7 +3,6 @@
 #include "glfixture.h"
 #include "scenes.h"
 
-#include "core/imagecompare.h"
 #include "render/lod.h"
 #include "render/offscreen.h"
 
@@ -13,13 +12,6 @@ using namespace lr;
 using namespace lr::test;
 
 namespace {
-
-// Mean 8-bit difference of the r, g, b channels (core/imagecompare.h).
-double meanDifference(const QImage& a, const QImage& b) {
-    const QImage x = a.convertToFormat(QImage::Format_RGBA8888),
-                 y = b.convertToFormat(QImage::Format_RGBA8888);
-    return compareSrgb8(x.constBits(), y.constBits(), std::int64_t(x.width()) * x.height()).meanLevels;
-}
 
 std::shared_ptr<Model> denseSphere() { // 640 × 320 × 2 = 409,600 triangles
     auto m = std::make_shared<Model>(makeSphere(1.0, 640, 320));
@@ -76,7 +68,7 @@ class TestLod : public QObject {
         const qint64 drawn = gl.renderer().stats().trianglesDrawn;
         QVERIFY2(drawn > 0 && drawn <= render::kLodTargetTriangles * 3 / 2,
                  qPrintable(QString::number(drawn)));
-        const double mean = meanDifference(full, proxy);
+        const double mean = imageDifference(full, proxy).meanLevels;
         QVERIFY2(mean < 2.0, qPrintable(QStringLiteral("mean difference %1 levels").arg(mean)));
         QCOMPARE(gl.renderImage(sphereCamera(), size, still, 1, &error), full); // and back to the full mesh
     }

@@ -4,7 +4,6 @@
 #include "glfixture.h"
 #include "scenes.h"
 
-#include "core/imagecompare.h"
 #include "render/dynamicresolution.h"
 #include "render/offscreen.h"
 #include "render/scaledoutput.h"
@@ -16,12 +15,6 @@ using namespace lr;
 using namespace lr::test;
 
 namespace {
-
-ErrorFigures differenceOf(const QImage& a, const QImage& b) {
-    const QImage x = a.convertToFormat(QImage::Format_RGBA8888),
-                 y = b.convertToFormat(QImage::Format_RGBA8888);
-    return compareSrgb8(x.constBits(), y.constBits(), std::int64_t(x.width()) * x.height());
-}
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -65,7 +58,7 @@ class TestRenderScale : public QObject {
         QVERIFY2(!b.isNull(), qPrintable(error));
         QCOMPARE(b.size(), size);
         QCOMPARE(gl.renderer().stats().drawnSize, QSize(80, 60));
-        const ErrorFigures d = differenceOf(a, b);
+        const ErrorFigures d = imageDifference(a, b);
         QVERIFY2(d.maxLevels > 0, "the stretched frame is the full frame: nothing was scaled");
         QVERIFY2(d.psnrDb > 24.0 && d.meanLevels < 3.0,
                  qPrintable(QStringLiteral("PSNR %1 dB, mean %2 levels").arg(d.psnrDb).arg(d.meanLevels)));
