@@ -1,11 +1,13 @@
 // Not a test: the editor's own frames while the user orbits (issue 40), measured through the real window.
 // Opens MODEL with RIG in the main window with a WxH viewport, waits for the model, the environment and a
 // still frame, then holds the left button and moves the mouse 4 pixels every 16 ms (a hand orbiting at
-// ~150 degrees a second) for SECONDS, and prints one JSON line:
+// ~150 degrees a second) for SECONDS, and prints one JSON line. The moves are posted from a thread of
+// their own, as the window system's arrive, so one posted while a frame is drawn waits for it:
 //   frames, fps            viewport frames drawn while moving, and per second
 //   frame_ms_median/max    intervals between them
 //   input_ms_median/max    from a mouse move being posted to the viewport receiving it (what "the window
-//                          stays responsive" means: Qt delivers input between frames)
+//                          stays responsive" means: Qt delivers input between frames, so a move waits for
+//                          the frame being drawn when it came)
 //   drawn                  the sizes the moving frames were drawn at, with counts (dynamicresolution.h)
 //   still_ms               after the release, until the full-size still frame was drawn
 //   moving_frame_rate      the "While moving" setting used (0: full size)
@@ -22,11 +24,13 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QMouseEvent>
-#include <QTimer>
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <thread>
 #include <vector>
 
 using namespace lr;
@@ -43,16 +47,22 @@ double maximum(const std::vector<double>& v) {
     return v.empty() ? -1.0 : *std::max_element(v.begin(), v.end());
 }
 
-// Records when each posted mouse move reaches the viewport.
+using Clock = std::chrono::steady_clock;
+
+// Milliseconds since `start`, as a mouse event's timestamp carries them.
+quint64 msSince(Clock::time_point start) {
+    return quint64(std::chrono::duration_cast<std::chrono::milliseconds>(Clock::now() - start).count());
+}
+
+// How long each posted mouse move took to reach the viewport: the poster stamps it with its post time.
 class InputClock : public QObject {
   public:
-    QElapsedTimer clock;
-    std::vector<double> posted, latencies;
+    Clock::time_point start = Clock::now();
+    std::vector<double> latencies;
     bool eventFilter(QObject* watched, QEvent* event) override {
-        if (event->type() == QEvent::MouseMove && !posted.empty()) {
-            latencies.push_back(double(clock.nsecsElapsed()) * 1e-6 - posted.front());
-            posted.erase(posted.begin());
-        }
+        if (event->type() == QEvent::MouseMove)
+            latencies.push_back(double(msSince(start)) -
+                                double(static_cast<QMouseEvent*>(event)->timestamp()));
         return QObject::eventFilter(watched, event);
     }
 };
@@ -123,22 +133,24 @@ int main(int argc, char** argv) {
     const QPointF global = viewport->mapToGlobal(centre.toPoint());
     QTest::mousePress(viewport, Qt::LeftButton, {}, centre.toPoint());
     clock.start();
-    input.clock.start();
-    int step = 0;
-    QTimer mover;
-    mover.setInterval(16);
-    QObject::connect(&mover, &QTimer::timeout, viewport, [&] {
-        ++step;
-        const QPointF at = centre + QPointF(4.0 * (step % 200) - 400.0, 0.0);
-        input.posted.push_back(double(input.clock.nsecsElapsed()) * 1e-6);
-        QCoreApplication::postEvent(viewport, new QMouseEvent(QEvent::MouseMove, at, global + (at - centre),
-                                                              Qt::NoButton, Qt::LeftButton, Qt::NoModifier));
-    });
-    mover.start();
+    input.start = Clock::now();
     const double runMs = parser.value(seconds).toDouble() * 1000.0;
+    std::atomic<bool> moving{true};
+    std::thread hand([&] { // posting is thread-safe; the viewport receives the moves on the GUI thread
+        for (int step = 1; moving; ++step) {
+            const QPointF at = centre + QPointF(4.0 * (step % 200) - 400.0, 0.0);
+            auto* move = new QMouseEvent(QEvent::MouseMove, at, global + (at - centre), Qt::NoButton,
+                                         Qt::LeftButton, Qt::NoModifier);
+            move->setTimestamp(msSince(input.start));
+            QCoreApplication::postEvent(viewport, move);
+            std::this_thread::sleep_for(std::chrono::milliseconds(16));
+        }
+    });
     while (clock.elapsed() < runMs)
         QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
-    mover.stop();
+    moving = false;
+    hand.join();
+    QCoreApplication::processEvents(); // the moves still queued
     const double movingMs = double(clock.nsecsElapsed()) * 1e-6;
     QTest::mouseRelease(viewport, Qt::LeftButton, {}, centre.toPoint());
     QElapsedTimer still;
