@@ -84,9 +84,9 @@ ClusterSpan sphereClusters(const glm::dvec3& center, double radius, const Cluste
 // pixels wide, and its list held far more lights than reach most of its pixels (issue 40: 4096 localised
 // lights at 4K on the H100).
 constexpr int kClusterTilePixels = 40;
+constexpr int kClusterMaxTiles = 128;
 // maxClusters: how many clusters the range buffer may hold (one texel each: GL_MAX_TEXTURE_BUFFER_SIZE, at
 // least 65,536 in GL 3.3); fewer, larger tiles when the grid would hold more.
-constexpr int kClusterMaxTiles = 128;
 ClusterGrid clusterGridFor(int width, int height, long long maxClusters = 65536);
 
 // Bins lights[i] (index i of the uploaded light buffer) into the grid.
