@@ -1,6 +1,7 @@
 #include "benchreport.h"
 
 #include "benchchart.h"
+#include "benchoffers.h"
 #include "core/areaintegrate.h"
 #include "tracebench.h"
 
@@ -174,6 +175,7 @@ QString benchTable(const BenchReport& report) {
                             num(e.meanErrorLevels, 3), num(e.meanSamples, 0));
         }
     }
+    out += benchOfferLines(report);
     out += pathBenchTable(report);
     return out;
 }
@@ -261,6 +263,9 @@ QJsonObject benchJson(const BenchReport& report) {
             o.insert(QStringLiteral("area_mean_error_levels"), r.area.meanErrorLevels);
             o.insert(QStringLiteral("area_mean_samples"), r.area.meanSamples);
         }
+        const TierOffer offer = benchTierOffer(report, r);
+        o.insert(QStringLiteral("offered"), offer.offered);
+        o.insert(QStringLiteral("not_offered_why"), offer.offered ? QJsonValue() : QJsonValue(offer.why));
         if (r.hasTracedErrors) {
             o.insert(QStringLiteral("path_max_error_levels"), r.tracedErrors.maxLevels);
             o.insert(QStringLiteral("path_mean_error_levels"), r.tracedErrors.meanLevels);
@@ -285,27 +290,28 @@ QJsonObject benchJson(const BenchReport& report) {
     for (Quality q : report.options.tiers)
         tiers.append(toString(q));
     const BenchOptions& op = report.options;
-    QJsonObject doc{
-        {QStringLiteral("tool"), QStringLiteral("lightrig bench")},
-        {QStringLiteral("gl"), report.glDescription},
-        {QStringLiteral("load_average"), report.loadAverage},
-        {QStringLiteral("glibc_tunables"), report.glibcTunables},
-        {QStringLiteral("options"), QJsonObject{{QStringLiteral("width"), op.size.width()},
-                                                {QStringLiteral("height"), op.size.height()},
-                                                {QStringLiteral("warmup_frames"), op.warmupFrames},
-                                                {QStringLiteral("frames"), op.frames},
-                                                {QStringLiteral("tiers"), tiers},
-                                                {QStringLiteral("exposure_ev"), op.exposureEV},
-                                                {QStringLiteral("tonemap"), toString(op.toneMap)},
-                                                {QStringLiteral("errors"), op.errors},
-                                                {QStringLiteral("orbit_degrees"), op.orbitDegrees},
-                                                {QStringLiteral("drag_light"), op.dragLight},
-                                                {QStringLiteral("render_scale"), op.renderScale},
-                                                {QStringLiteral("uber_shader"), op.uberShader}}},
-        {QStringLiteral("reference_ms"), round3(report.referenceMs)},
-        {QStringLiteral("results"), results},
-        {QStringLiteral("path"), pathBenchJson(report)},
-        {QStringLiteral("uber_shader"), uber}};
+    QJsonObject doc{{QStringLiteral("tool"), QStringLiteral("lightrig bench")},
+                    {QStringLiteral("gl"), report.glDescription},
+                    {QStringLiteral("load_average"), report.loadAverage},
+                    {QStringLiteral("glibc_tunables"), report.glibcTunables},
+                    {QStringLiteral("options"),
+                     QJsonObject{{QStringLiteral("width"), op.size.width()},
+                                 {QStringLiteral("height"), op.size.height()},
+                                 {QStringLiteral("warmup_frames"), op.warmupFrames},
+                                 {QStringLiteral("frames"), op.frames},
+                                 {QStringLiteral("tiers"), tiers},
+                                 {QStringLiteral("exposure_ev"), op.exposureEV},
+                                 {QStringLiteral("tonemap"), toString(op.toneMap)},
+                                 {QStringLiteral("errors"), op.errors},
+                                 {QStringLiteral("orbit_degrees"), op.orbitDegrees},
+                                 {QStringLiteral("drag_light"), op.dragLight},
+                                 {QStringLiteral("interaction"), toString(benchInteraction(op))},
+                                 {QStringLiteral("render_scale"), op.renderScale},
+                                 {QStringLiteral("uber_shader"), op.uberShader}}},
+                    {QStringLiteral("reference_ms"), round3(report.referenceMs)},
+                    {QStringLiteral("results"), results},
+                    {QStringLiteral("path"), pathBenchJson(report)},
+                    {QStringLiteral("uber_shader"), uber}};
     if (benchHasShadows(report))
         doc.insert(QStringLiteral("shadow_measure"),
                    QJsonObject{{QStringLiteral("threshold_levels"), kShadowThresholdLevels},

@@ -5,6 +5,7 @@
 #include "core/lighting.h"
 #include "core/proceduralrig.h"
 #include "core/rigjson.h"
+#include "render/benchoffers.h"
 #include "render/benchreport.h"
 #include "render/reference.h"
 
@@ -259,6 +260,46 @@ class TestImageCompare : public QObject {
                 green |= c == QColor(40, 160, 70);
             }
         QVERIFY(blue && green);
+    }
+
+    // The tiers' promise under the table and in the JSON (render/benchoffers.h): the run's interaction,
+    // each cheaper tier against exact of its own scene; the über-shader's run and a scene without exact are
+    // not judged.
+    void reportSaysWhichTiersAreOffered() {
+        BenchReport report;
+        report.options.dragLight = true;
+        report.results = {result(QStringLiteral("a"), Quality::Exact, 10.0, 0.01),
+                          result(QStringLiteral("a"), Quality::Balanced, 9.0, 0.05),
+                          result(QStringLiteral("a"), Quality::Fast, 12.0, 1.5),
+                          result(QStringLiteral("a"), Quality::Exact, 30.0, 0.0, true),
+                          result(QStringLiteral("b"), Quality::Exact, 10.0, 0.01),
+                          result(QStringLiteral("b"), Quality::Fast, 4.0, 1.5),
+                          result(QStringLiteral("c"), Quality::Fast, 40.0, 1.5)};
+        QVERIFY(benchInteraction(report.options) == Interaction::Drag);
+        const QJsonObject json = benchJson(report);
+        QCOMPARE(
+            json.value(QStringLiteral("options")).toObject().value(QStringLiteral("interaction")).toString(),
+            QStringLiteral("drag"));
+        const QJsonArray results = json.value(QStringLiteral("results")).toArray();
+        const std::vector<bool> offered{true, true, false, true, true, true, true};
+        for (int i = 0; i < results.size(); ++i) {
+            const QJsonObject o = results[i].toObject();
+            QCOMPARE(o.value(QStringLiteral("offered")).toBool(), bool(offered[size_t(i)]));
+            QCOMPARE(o.value(QStringLiteral("not_offered_why")).isNull(), bool(offered[size_t(i)]));
+        }
+        const QString why = results[2].toObject().value(QStringLiteral("not_offered_why")).toString();
+        QVERIFY2(why.contains(QStringLiteral("1.20×")) && why.contains(interactionPhrase(Interaction::Drag)),
+                 qPrintable(why));
+        const QString table = benchTable(report);
+        QVERIFY2(table.contains(QStringLiteral("a: balanced 0.90× exact (at most 1×): offered; fast 1.20× "
+                                               "exact (at most 0.5×): not offered")),
+                 qPrintable(table));
+        QVERIFY2(table.contains(QStringLiteral("b: fast 0.40× exact (at most 0.5×): offered")),
+                 qPrintable(table));
+        QVERIFY2(!table.contains(QStringLiteral("c: ")), qPrintable(table));
+        report.options.orbitDegrees = 1.0;
+        QVERIFY(benchInteraction(report.options) == Interaction::Orbit);
+        QVERIFY(benchTable(report).contains(interactionPhrase(Interaction::Orbit)));
     }
 };
 

@@ -74,10 +74,31 @@ class TestQualityDock : public QObject {
         }();
         QVERIFY(use);
         QVERIFY(!use->isEnabled());
-        table->selectRow(1);
-        QVERIFY(use->isEnabled());
+
+        // Issue 40: every tier timed held still, with a light dragged and orbiting; the Offered column and
+        // the Use button follow each tier's verdict on those times.
+        const QStringList names = QualityDock::columnNames();
+        const int offeredColumn = int(names.indexOf(QStringLiteral("Offered")));
+        QVERIFY(offeredColumn > 0);
+        for (int q = 0; q < 3; ++q) {
+            const TierTimes& t = dock.times()[size_t(q)];
+            for (Interaction i : {Interaction::Still, Interaction::Drag, Interaction::Orbit})
+                QVERIFY2(t.has(i), qPrintable(toString(Quality(q)) + QLatin1Char(' ') + toString(i)));
+            QCOMPARE(t[Interaction::Still], dock.report().results[size_t(q)].msMedian);
+            const TierOffer expected = tierOffer(Quality(q), t, dock.times()[0]);
+            QCOMPARE(dock.offers()[size_t(q)].offered, expected.offered);
+            QCOMPARE(table->item(q, offeredColumn)->text(),
+                     expected.offered ? QStringLiteral("yes") : QStringLiteral("no"));
+            QCOMPARE(table->item(q, offeredColumn)->toolTip(), expected.why);
+            table->selectRow(q);
+            QCOMPARE(use->isEnabled(), expected.offered);
+        }
+        QCOMPARE(table->item(3, offeredColumn)->text(), QStringLiteral("–")); // the über-shader is no tier
+        table->selectRow(0);
+        QVERIFY(use->isEnabled()); // exact is always offered
         use->click();
-        QVERIFY(chosen && *chosen == Quality::Balanced);
+        QVERIFY(chosen && *chosen == Quality::Exact);
+        table->selectRow(1);
 
         // Issue 12 item 9: the visual comparison of the selected tier (balanced now) with the reference.
         const BenchResult& balanced = dock.report().results[1];
@@ -140,6 +161,32 @@ class TestQualityDock : public QObject {
             QCOMPARE(table->item(0, first)->text().endsWith(QLatin1Char('%')), shadows);
             QVERIFY(!table->isColumnHidden(first - 1)); // the columns before stay
         }
+    }
+
+    // Times that break the promise withdraw the tier (Use greyed out, the reason as its tooltip);
+    // clearOffers offers every tier again. Each emits offersChanged.
+    void measuredTimesDecideTheOffers() {
+        QualityDock dock;
+        dock.setTierChooser([](Quality) {});
+        QSignalSpy changed(&dock, &QualityDock::offersChanged);
+        TierTimesTable times;
+        for (int q = 0; q < 3; ++q)
+            times[size_t(q)][Interaction::Orbit] = 10.0;
+        times[size_t(Quality::Fast)][Interaction::Orbit] = 4.0;
+        times[size_t(Quality::Fast)][Interaction::Drag] = 12.0;
+        times[size_t(Quality::Exact)][Interaction::Drag] = 6.0;
+        dock.setMeasuredTimes(times);
+        QCOMPARE(changed.count(), 1);
+        QVERIFY(dock.offers()[size_t(Quality::Balanced)].offered);
+        const TierOffer fast = dock.offers()[size_t(Quality::Fast)];
+        QVERIFY(!fast.offered);
+        QVERIFY(fast.interaction == Interaction::Drag);
+        QCOMPARE(fast.ratio, 2.0);
+        dock.clearOffers();
+        QCOMPARE(changed.count(), 2);
+        for (const TierOffer& o : dock.offers())
+            QVERIFY(o.offered);
+        QVERIFY(!dock.times()[0].has(Interaction::Orbit));
     }
 
     void differenceImage_blackWhereEqual_brightWhereNot() {
