@@ -21,6 +21,7 @@
 #include <QScreen>
 #include <QSpinBox>
 #include <QSplitter>
+#include <QStatusBar>
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -31,7 +32,11 @@ namespace lr {
 namespace {
 constexpr QSize kMinChartSize(360, 230);
 constexpr int kDifferenceGain = 16;
-constexpr int kShadowColumns = 9; // the first of the shadow measure's columns (columnNames)
+constexpr int kShadowColumns = 12; // the first of the shadow measure's columns (columnNames)
+constexpr int kOfferedColumn = 5;
+// The share of the progress bar the still measurement (with the reference) takes; the two interactions
+// without errors take the rest.
+constexpr double kStillShare = 0.75;
 } // namespace
 
 QualityDock::QualityDock(QWidget* parent) : QDockWidget(tr("Quality"), parent) {
@@ -161,8 +166,7 @@ QualityDock::QualityDock(QWidget* parent) : QDockWidget(tr("Quality"), parent) {
     connect(m_run, &QPushButton::clicked, this, &QualityDock::measure);
     connect(m_stop, &QPushButton::clicked, this, &QualityDock::cancel);
     connect(m_table, &QTableWidget::itemSelectionChanged, this, [this] {
-        const int row = m_table->currentRow();
-        m_use->setEnabled(m_chooser && row >= 0 && row < int(m_report.results.size()) && !m_running);
+        setRunning(m_running); // the Use button follows the row
         updateComparison();
     });
     connect(m_use, &QPushButton::clicked, this, [this] {
@@ -183,7 +187,23 @@ void QualityDock::setRunning(bool running) {
     m_stop->setEnabled(running);
     m_sizeChoice->setEnabled(!running);
     m_frames->setEnabled(!running);
-    m_use->setEnabled(!running && m_chooser && m_table->currentRow() >= 0);
+    const int row = m_table->currentRow();
+    const bool result = row >= 0 && row < int(m_report.results.size());
+    const TierOffer offer = result ? m_offers[size_t(m_report.results[size_t(row)].quality)] : TierOffer{};
+    m_use->setEnabled(!running && m_chooser && result && offer.offered);
+    m_use->setToolTip(offer.offered ? tr("Render the viewport with the tier of the selected row")
+                                    : offer.why);
+}
+
+void QualityDock::setMeasuredTimes(const TierTimesTable& times) {
+    m_times = times;
+    m_offers = tierOffers(times);
+    setRunning(m_running);
+    emit offersChanged();
+}
+
+void QualityDock::clearOffers() {
+    setMeasuredTimes({});
 }
 
 void QualityDock::cancel() {
@@ -211,29 +231,49 @@ void QualityDock::measure() {
     m_cancelRequested = false;
     setRunning(true);
     m_progress->setValue(0);
-    const BenchProgress progress = [this](double fraction, const QString& what) {
-        m_progress->setValue(int(fraction * 1000.0));
+    double progressStart = 0.0, progressShare = kStillShare;
+    const BenchProgress progress = [&, this](double fraction, const QString& what) {
+        m_progress->setValue(int((progressStart + progressShare * fraction) * 1000.0));
         m_status->setText(what);
         QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
         return !m_cancelRequested;
     };
     BenchReport report;
     QString error;
-    const BenchStatus status = runQualityBench({request->scene}, options, &report, &error, progress);
+    BenchStatus status = runQualityBench({request->scene}, options, &report, &error, progress);
+    TierTimesTable times;
+    if (status == BenchStatus::Ok) { // the tiers' promise: a light dragged and the camera orbiting too
+        addStillTimes(report, request->scene.name, &times);
+        progressStart = kStillShare;
+        progressShare = 1.0 - kStillShare;
+        status = timeInteractions(request->scene, options, &times, &error, progress);
+    }
     setRunning(false);
     switch (status) {
-    case BenchStatus::Ok:
+    case BenchStatus::Ok: {
         m_report = report;
+        m_times = times;
+        m_offers = tierOffers(times);
         showReport();
         m_progress->setValue(1000);
+        QStringList withdrawn;
+        for (int q = 0; q < enumCount<Quality>(); ++q)
+            if (!m_offers[size_t(q)].offered) withdrawn << toString(Quality(q));
         m_status->setText(tr("%1 at %2×%3 on %4. Errors are 8-bit sRGB levels against the double-precision "
-                             "reference over the model's pixels.")
+                             "reference over the model's pixels.%5")
                               .arg(request->scene.name)
                               .arg(options.size.width())
                               .arg(options.size.height())
-                              .arg(report.glDescription));
+                              .arg(report.glDescription,
+                                   withdrawn.isEmpty()
+                                       ? QString()
+                                       : tr(" Not offered for this scene, too slow for what they give up: %1 "
+                                            "(hover Offered for why).")
+                                             .arg(withdrawn.join(QStringLiteral(", ")))));
+        setMeasuredTimes(times);
         emit finished(true, m_status->text());
         break;
+    }
     case BenchStatus::Cancelled:
         m_progress->setValue(0);
         m_status->setText(tr("Cancelled."));
@@ -250,7 +290,10 @@ void QualityDock::measure() {
 QStringList QualityDock::columnNames() {
     return {tr("Tier"),
             tr("Time per frame"),
+            tr("Dragging a light"),
+            tr("Orbiting"),
             tr("Speed"),
+            tr("Offered"),
             tr("First frame"),
             tr("Worst pixel"),
             tr("Average error"),
@@ -266,9 +309,18 @@ QStringList QualityDock::columnToolTips() {
         tr("The quality tier. exact: every light per pixel, as the double-precision model; balanced: cheaper "
            "evaluations per pixel; fast: lighting per vertex. \"exact, all models\" is exact drawn with one "
            "shader that has every light model compiled in, to show what specialised shaders save."),
-        tr("Median time to draw one frame at the measured size, in milliseconds (lower is better). Hover a "
-           "cell for the fastest and slowest frame and the processor time."),
-        tr("How many times faster than the exact tier (2.0× = twice as fast)."),
+        tr("Median time to draw one frame at the measured size with the view held still, in milliseconds "
+           "(lower is better). Hover a cell for the fastest and slowest frame and the processor time."),
+        tr("Median time per frame while the first light moves a little every frame, as while you drag it: "
+           "what the view keeps of a still frame helps, the moved light's shadow is drawn again."),
+        tr("Median time per frame while the camera turns a degree every frame, as while you orbit: nothing "
+           "the view keeps of a still frame helps."),
+        tr("How many times faster than the exact tier with the view held still (2.0× = twice as fast)."),
+        tr("Whether the tier is worth its lower accuracy for this scene: balanced must take at most exact's "
+           "time per frame and fast at most half of it, held still, with a light dragged and while "
+           "orbiting (%1% leeway for the measurement's noise). A tier that is not is greyed out in the "
+           "Render settings; hover a cell for the reason.")
+            .arg(int(kTierTimeTolerance * 100.0)),
         tr("Time to the first picture in a fresh window, in milliseconds: loading the model, uploading it, "
            "compiling the shaders and drawing."),
         tr("The largest difference from the reference on any pixel, in 8-bit colour levels (0 = identical, "
@@ -292,14 +344,24 @@ QStringList QualityDock::columnToolTips() {
 void QualityDock::showReport() {
     const QString none = QStringLiteral("–");
     auto number = [](double v, int decimals) { return QString::number(v, 'f', decimals); };
+    auto interactionCell = [&](const BenchResult& r, Interaction i) {
+        const TierTimes& t = m_times[size_t(r.quality)];
+        return r.uberShader || !t.has(i) ? none : tr("%1 ms").arg(number(t[i], 2));
+    };
     m_table->setRowCount(int(m_report.results.size()));
     for (int row = 0; row < int(m_report.results.size()); ++row) {
         const BenchResult& r = m_report.results[size_t(row)];
         const ErrorFigures& e = r.errors;
+        const TierOffer& offer = m_offers[size_t(r.quality)];
         const QStringList cells{
             r.uberShader ? tr("exact, all models") : toString(r.quality),
             tr("%1 ms").arg(number(r.msMedian, 2)),
+            interactionCell(r, Interaction::Drag),
+            interactionCell(r, Interaction::Orbit),
             r.speedUp > 0.0 ? QStringLiteral("%1×").arg(number(r.speedUp, 2)) : none,
+            r.uberShader    ? none
+            : offer.offered ? tr("yes")
+                            : tr("no"),
             tr("%1 ms").arg(number(r.firstFrameMs, 0)),
             r.hasErrors ? tr("%n level(s)", nullptr, e.maxLevels) : none,
             r.hasErrors ? number(e.meanLevels, 3) : none,
@@ -330,6 +392,7 @@ void QualityDock::showReport() {
                 .arg(number(r.msMin, 2), number(r.msMax, 2), number(r.cpuMsMedian, 1),
                      r.gpuMsMedian >= 0.0 ? tr("; GPU time %1 ms").arg(number(r.gpuMsMedian, 2))
                                           : QString()));
+        if (!r.uberShader && !offer.offered) m_table->item(row, kOfferedColumn)->setToolTip(offer.why);
     }
     const bool shadows = benchHasShadows(m_report); // the shadow columns only for rigs with casters
     for (int c = kShadowColumns; c < m_table->columnCount(); ++c)
@@ -428,6 +491,18 @@ QualityDock* addQualityDock(MainWindow* window) {
         return r;
     });
     dock->setTierChooser([window](Quality q) { window->viewSettings()->setQuality(q); });
+    // The tiers' promise (core/tieroffer.h): a tier not offered for this scene is greyed out, and the view
+    // leaves it for exact, saying why.
+    QObject::connect(dock, &QualityDock::offersChanged, window, [window, dock] {
+        window->renderSettingsDock()->setTierOffers(dock->offers());
+        const ViewOptions& view = window->viewSettings()->options();
+        const TierOffer& offer = dock->offers()[size_t(view.quality)];
+        if (offer.offered) return;
+        window->viewSettings()->setQuality(Quality::Exact);
+        window->statusBar()->showMessage(offer.why + QObject::tr(" The view now draws in exact."));
+    });
+    QObject::connect(window->scene(), &Scene::modelChanged, dock, &QualityDock::clearOffers);
+    QObject::connect(window->scene(), &Scene::environmentChanged, dock, &QualityDock::clearOffers);
     window->addDockWidget(Qt::RightDockWidgetArea, dock);
     if (QDockWidget* render = window->renderSettingsDock()) {
         window->tabifyDockWidget(render, dock);

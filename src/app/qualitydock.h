@@ -11,6 +11,7 @@
 #pragma once
 
 #include "core/quality.h"
+#include "render/interactionbench.h"
 #include "render/qualitybench.h"
 
 #include <QDockWidget>
@@ -50,6 +51,10 @@ class QualityDock : public QDockWidget {
 
     bool isRunning() const { return m_running; }
     const BenchReport& report() const { return m_report; }
+    // The last measurement's times per tier and interaction, and each tier's verdict (core/tieroffer.h);
+    // every tier offered before a measurement and after clearOffers.
+    const TierTimesTable& times() const { return m_times; }
+    const TierOffers& offers() const { return m_offers; }
     void setFrames(int frames); // timed frames per tier (default 30)
 
     // The table's columns, for the tests and the docs: header text and its tooltip.
@@ -59,9 +64,15 @@ class QualityDock : public QDockWidget {
   public slots:
     void measure(); // no-op while running
     void cancel();
+    // Times per tier and interaction (as measure() takes them, or kept from before): their verdicts
+    // replace the dock's and offersChanged is emitted.
+    void setMeasuredTimes(const TierTimesTable& times);
+    // The scene changed: the verdicts no longer hold (the table stays, for reading).
+    void clearOffers();
 
   signals:
     void finished(bool ok, const QString& message); // ok false: failed or cancelled
+    void offersChanged();
 
   private:
     void showReport();
@@ -90,6 +101,8 @@ class QualityDock : public QDockWidget {
     QImage m_differenceCache;
     int m_differenceRow = -1;
     BenchReport m_report;
+    TierTimesTable m_times;
+    TierOffers m_offers;
     QImage m_chartImage;
     bool m_running = false;
     bool m_cancelRequested = false;
@@ -97,7 +110,9 @@ class QualityDock : public QDockWidget {
 
 // Creates the Quality dock for the editor's main window (current model, render rig with solo applied,
 // viewport camera and size, exposure and tone map; "Use tier" sets the view settings' quality), docks it
-// on the right, tabified with the Render settings dock, and returns it.
+// on the right, tabified with the Render settings dock, and returns it. Its verdicts go to the Render
+// settings dock; when the view's tier is not offered, the view switches to exact and the status bar says
+// why. A new model or environment clears them.
 QualityDock* addQualityDock(MainWindow* window);
 
 } // namespace lr

@@ -15,6 +15,7 @@
 #include <QPainter>
 #include <QScrollArea>
 #include <QSignalBlocker>
+#include <QStandardItemModel>
 #include <cmath>
 
 namespace lr {
@@ -173,6 +174,15 @@ void RenderSettingsDock::setScene(Scene* scene) {
 
 RenderSettingsDock::~RenderSettingsDock() {
     finishGesture();
+}
+
+void RenderSettingsDock::setTierOffers(const TierOffers& offers) {
+    auto* items = qobject_cast<QStandardItemModel*>(m_ui->quality->model());
+    for (int q = 0; q < enumCount<Quality>() && items; ++q) {
+        const TierOffer& offer = offers[size_t(q)];
+        if (QStandardItem* item = items->item(q)) item->setEnabled(offer.offered);
+        m_ui->quality->setItemData(q, offer.offered ? QVariant() : QVariant(offer.why), Qt::ToolTipRole);
+    }
 }
 
 void RenderSettingsDock::loadView() {

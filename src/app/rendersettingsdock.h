@@ -8,6 +8,7 @@
 #pragma once
 
 #include "core/prepare.h"
+#include "render/interactionbench.h"
 
 #include <QComboBox>
 #include <QDockWidget>
@@ -45,6 +46,9 @@ class RenderSettingsDock : public QDockWidget {
     // The scene whose model's up axis the "Model up axis" box shows and sets (disabled without one).
     void setScene(Scene* scene);
     EnvironmentBox* environmentBox() const { return m_environment; } // issue 15 (environmentbox.h)
+    // The tiers' promise for the current scene (core/tieroffer.h, measured by the Quality panel): a tier
+    // not offered is greyed out in the Quality box, its tooltip the reason. Default: every tier offered.
+    void setTierOffers(const TierOffers& offers);
 
   private:
     void loadView();
