@@ -4,7 +4,7 @@
 # held still, with a light dragged (--drag) and orbiting (--orbit 1), every tier each time, then three.js
 # again, so each LightRig figure sits between two three.js runs taken within minutes. Writes one Markdown
 # table: per scene, setting and tier the median ms per frame in each interaction, its share of exact's, the
-# verdict (core/tieroffer.h: balanced at most exact's time, fast at most half, 10 % leeway), three.js's
+# verdict (core/tieroffer.h: balanced at most exact's time, fast at most half, 20 % leeway), three.js's
 # ms per frame (A / B) and the load average over the setting's runs.
 # Usage: scripts/perf/tier_front.sh [SCENE.glb...]   (default: ../shared/models/bench/helmet_8spot.glb on a
 #        ground, made by ../shared/peers/three/add_ground.py). SETTINGS="plain shadows env both" (default

@@ -24,10 +24,11 @@ QString interactionPhrase(Interaction interaction);
 // The share of exact's frame time a tier may take: exact and balanced 1, fast ½.
 double tierTimeBudget(Quality tier);
 
-// How far over its budget a tier may be before it is not offered: a median of a few dozen frames moves by
-// about this much between two runs on a shared machine (docs/performance.md), and a tier should not come
-// and go with that noise.
-constexpr double kTierTimeTolerance = 0.10;
+// How far over its budget a tier may be before it is not offered. On the 2-core llvmpipe VM the median of
+// 30 frames of one scene and tier moved by ±20 % between runs of the same command minutes apart
+// (helmet_8pt exact: 6.45–10.09 ms over nine runs, 2026-12-07, docs/quality.md), and balanced, which costs
+// about what exact does, should not come and go with that noise.
+constexpr double kTierTimeTolerance = 0.20;
 
 // One tier's median milliseconds per frame in each interaction; NaN: not measured. Values that are not
 // finite or not above 0 count as not measured.

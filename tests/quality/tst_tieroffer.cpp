@@ -47,8 +47,9 @@ class TestTierOffer : public QObject {
         const double edge = 0.5 * (1.0 + kTierTimeTolerance);
         QVERIFY(tierOffer(Quality::Fast, times(edge * 10.0 - 1e-9), times(10.0)).offered);
         QVERIFY(!tierOffer(Quality::Fast, times(edge * 10.0 + 0.01), times(10.0)).offered);
-        QVERIFY(tierOffer(Quality::Balanced, times(10.9), times(10.0)).offered);
-        QVERIFY(!tierOffer(Quality::Balanced, times(11.2), times(10.0)).offered);
+        const double balancedEdge = 10.0 * (1.0 + kTierTimeTolerance);
+        QVERIFY(tierOffer(Quality::Balanced, times(balancedEdge - 0.05), times(10.0)).offered);
+        QVERIFY(!tierOffer(Quality::Balanced, times(balancedEdge + 0.05), times(10.0)).offered);
     }
 
     // Still and orbiting are fine; a dragged light is not: one interaction is enough to withdraw it.
@@ -67,9 +68,9 @@ class TestTierOffer : public QObject {
         QVERIFY2(o.why.contains(QLatin1String("faster and more accurate")), qPrintable(o.why));
     }
 
-    // Fast at 0.8× exact: faster, but not enough to be worth its error.
+    // Fast at 0.85× exact: faster, but not enough to be worth its error.
     void slightlyFasterIsNotEnough() {
-        const TierOffer o = tierOffer(Quality::Fast, times(8.0), times(10.0));
+        const TierOffer o = tierOffer(Quality::Fast, times(8.5), times(10.0));
         QVERIFY(!o.offered);
         QVERIFY2(o.why.contains(QLatin1String("little more time")), qPrintable(o.why));
     }
