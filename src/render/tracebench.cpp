@@ -1,5 +1,6 @@
 #include "tracebench.h"
 
+#include "imageerrors.h"
 #include "scene/environmentloader.h"
 #include "scene/scenedescription.h"
 #include "trace/pathtracer.h"
@@ -15,15 +16,6 @@ namespace {
 
 QJsonValue finiteOrNull(double v) {
     return std::isfinite(v) ? QJsonValue(v) : QJsonValue(QJsonValue::Null);
-}
-
-ErrorFigures compareImages(const QImage& a, const QImage& b,
-                           const std::vector<std::uint8_t>* mask = nullptr) {
-    const QImage x = a.convertToFormat(QImage::Format_RGBA8888),
-                 y = b.convertToFormat(QImage::Format_RGBA8888);
-    const std::int64_t count = std::int64_t(x.width()) * x.height();
-    const bool masked = mask && std::int64_t(mask->size()) == count;
-    return compareSrgb8(x.constBits(), y.constBits(), count, 4, masked ? mask->data() : nullptr);
 }
 
 // 1, 2, 4, 8, … up to `samples`, and `samples` itself: doubling steps, so that the first step within
@@ -103,7 +95,7 @@ bool runPathBench(const std::vector<BenchScene>& scenes, const PathBenchOptions&
             step.samples = tracer.samplesDone();
             step.seconds = seconds;
             step.noise = tracer.noiseEstimate();
-            step.errors = compareImages(tracer.display(bo.exposureEV, bo.toneMap), truth);
+            step.errors = imageErrors(tracer.display(bo.exposureEV, bo.toneMap), truth);
             if (p.secondsTo30Db < 0.0 && step.errors.psnrDb >= 30.0) p.secondsTo30Db = seconds;
             p.steps.push_back(step);
         }
@@ -114,7 +106,7 @@ bool runPathBench(const std::vector<BenchScene>& scenes, const PathBenchOptions&
         for (size_t k = i * runs; k < std::min(report->results.size(), (i + 1) * runs); ++k) {
             BenchResult& r = report->results[k];
             if (r.scene != scene.name || r.image.isNull() || r.image.size() != truth.size()) continue;
-            r.tracedErrors = compareImages(r.image, truth, &r.covered);
+            r.tracedErrors = imageErrors(r.image, truth, &r.covered);
             r.hasTracedErrors = true;
         }
         report->path.push_back(std::move(p));

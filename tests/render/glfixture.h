@@ -2,7 +2,6 @@
 // skips with the reason) and a comparison of GPU float read-backs with the src/core double reference.
 #pragma once
 
-#include "core/imagecompare.h"
 #include "core/prepare.h"
 #include "core/shade.h"
 #include "render/floatimage.h"
@@ -10,7 +9,6 @@
 #include "support/cli.h"
 
 #include <QGuiApplication>
-#include <QImage>
 #include <QString>
 #include <QTest>
 #include <algorithm>
@@ -35,13 +33,6 @@ using lrtest::haveDisplay; // tests/support/cli.h
         QTEST_SET_MAIN_SOURCE_PATH                                                                           \
         return QTest::qExec(&tc, argc, argv);                                                                \
     }
-
-// Two 8-bit images of one size compared as core/imagecompare.h does (r, g, b; levels and PSNR).
-inline ErrorFigures imageDifference(const QImage& a, const QImage& b) {
-    const QImage x = a.convertToFormat(QImage::Format_RGBA8888),
-                 y = b.convertToFormat(QImage::Format_RGBA8888);
-    return compareSrgb8(x.constBits(), y.constBits(), std::int64_t(x.width()) * x.height());
-}
 
 // The largest per-channel |a − b| / max(1, |a|) of two images of one size (RGBA, alpha included).
 inline double maxRelativeDifference(const FloatImage& a, const FloatImage& b) {

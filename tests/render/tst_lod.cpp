@@ -3,6 +3,7 @@
 #include "glfixture.h"
 #include "scenes.h"
 
+#include "render/imageerrors.h"
 #include "render/lod.h"
 #include "render/offscreen.h"
 
@@ -68,7 +69,7 @@ class TestLod : public QObject {
         const qint64 drawn = gl.renderer().stats().trianglesDrawn;
         QVERIFY2(drawn > 0 && drawn <= render::kLodTargetTriangles * 3 / 2,
                  qPrintable(QString::number(drawn)));
-        const double mean = imageDifference(full, proxy).meanLevels;
+        const double mean = imageErrors(full, proxy).meanLevels;
         QVERIFY2(mean < 2.0, qPrintable(QStringLiteral("mean difference %1 levels").arg(mean)));
         QCOMPARE(gl.renderImage(sphereCamera(), size, still, 1, &error), full); // and back to the full mesh
     }

@@ -5,6 +5,7 @@
 #include "scenes.h"
 
 #include "render/dynamicresolution.h"
+#include "render/imageerrors.h"
 #include "render/offscreen.h"
 #include "render/scaledoutput.h"
 
@@ -58,7 +59,7 @@ class TestRenderScale : public QObject {
         QVERIFY2(!b.isNull(), qPrintable(error));
         QCOMPARE(b.size(), size);
         QCOMPARE(gl.renderer().stats().drawnSize, QSize(80, 60));
-        const ErrorFigures d = imageDifference(a, b);
+        const ErrorFigures d = imageErrors(a, b);
         QVERIFY2(d.maxLevels > 0, "the stretched frame is the full frame: nothing was scaled");
         QVERIFY2(d.psnrDb > 24.0 && d.meanLevels < 3.0,
                  qPrintable(QStringLiteral("PSNR %1 dB, mean %2 levels").arg(d.psnrDb).arg(d.meanLevels)));
