@@ -252,8 +252,7 @@ void QualityDock::measure() {
     switch (status) {
     case BenchStatus::Ok: {
         m_report = report;
-        m_times = times;
-        m_offers = tierOffers(times);
+        setMeasuredTimes(times); // the verdicts first: the table shows them
         showReport();
         m_progress->setValue(1000);
         QStringList withdrawn;
@@ -270,7 +269,6 @@ void QualityDock::measure() {
                                        : tr(" Not offered for this scene, too slow for what they give up: %1 "
                                             "(hover Offered for why).")
                                              .arg(withdrawn.join(QStringLiteral(", ")))));
-        setMeasuredTimes(times);
         emit finished(true, m_status->text());
         break;
     }
