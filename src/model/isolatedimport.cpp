@@ -7,6 +7,7 @@
 #include <QElapsedTimer>
 #include <QProcess>
 #include <algorithm>
+#include <cerrno>
 #include <cstring>
 #include <fcntl.h>
 #include <sys/mman.h>
@@ -40,6 +41,21 @@ class SharedReply {
         return m_fd;
     }
 
+#ifdef __linux__
+    // Seals the memfd against every change. Linux refuses F_SEAL_WRITE (EBUSY) while a page still has an
+    // extra reference, which a page the worker has just written can hold for a moment on another CPU (the
+    // kernel waits only briefly): then it is tried again, for up to kSealRetries × kSealRetryMs.
+    bool seal() const {
+        constexpr int kSealRetries = 20, kSealRetryMs = 10;
+        for (int attempt = 0;; ++attempt) {
+            if (::fcntl(m_fd, F_ADD_SEALS, F_SEAL_SHRINK | F_SEAL_GROW | F_SEAL_WRITE | F_SEAL_SEAL) == 0)
+                return true;
+            if (errno != EBUSY || attempt == kSealRetries) return false;
+            ::usleep(kSealRetryMs * 1000);
+        }
+    }
+#endif
+
     // Decodes the `size` bytes the worker announced. Sealing comes first, so a worker still running can
     // no longer change what is decoded.
     std::shared_ptr<Model> decode(quint64 size, qint64 maxBytes, QString* why) const {
@@ -47,8 +63,10 @@ class SharedReply {
         if (m_fd < 0) return fail(why, QStringLiteral("a shared reply that was not offered"));
         if (size < quint64(kModelCodecHeaderSize) || size > quint64(maxBytes))
             return fail(why, QStringLiteral("a shared reply of %1 bytes").arg(size));
-        if (::fcntl(m_fd, F_ADD_SEALS, F_SEAL_SHRINK | F_SEAL_GROW | F_SEAL_WRITE | F_SEAL_SEAL) != 0)
-            return fail(why, QStringLiteral("the shared reply is still open for writing"));
+        if (!seal())
+            return fail(
+                why,
+                QStringLiteral("the shared reply is still open for writing (%1)").arg(qt_error_string()));
         struct stat st {};
         if (::fstat(m_fd, &st) != 0 || quint64(st.st_size) < size)
             return fail(why, QStringLiteral("the shared reply is shorter than announced"));
