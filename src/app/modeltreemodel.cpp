@@ -46,6 +46,13 @@ QString ModelTreeModel::textureText(const Model& model, int texture) {
     return QStringLiteral("%1 (%2×%3)").arg(t.name).arg(t.image.width()).arg(t.image.height());
 }
 
+QString ModelTreeModel::samplingText(const TextureSampling& s) {
+    QString text = s.wrapS == s.wrapT ? tr("wrap %1").arg(toString(s.wrapS))
+                                      : tr("wrap S %1, T %2").arg(toString(s.wrapS), toString(s.wrapT));
+    if (s.nearestMagnification) text += tr("; magnified nearest");
+    return text;
+}
+
 QString ModelTreeModel::transformText(const TextureTransform& t) {
     if (t.isIdentity()) return {};
     return tr("offset %1, %2; rotation %3°; scale %4, %5")
@@ -94,26 +101,43 @@ void ModelTreeModel::addMaterial(int parent, const Material& m) {
         const char* role;
         int texture;
         const TextureTransform* transform;
+        const TextureSampling* sampling;
         const char* note;
     } textures[] = {
         {QT_TRANSLATE_NOOP("lr::ModelTreeModel", "base colour texture"), m.baseColorTexture,
-         &m.baseColorTransform, QT_TRANSLATE_NOOP("lr::ModelTreeModel", "sRGB")},
+         &m.baseColorTransform, &m.baseColorSampling, QT_TRANSLATE_NOOP("lr::ModelTreeModel", "sRGB")},
         {QT_TRANSLATE_NOOP("lr::ModelTreeModel", "metallic-roughness texture"), m.metallicRoughnessTexture,
-         &m.metallicRoughnessTransform,
+         &m.metallicRoughnessTransform, &m.metallicRoughnessSampling,
          QT_TRANSLATE_NOOP("lr::ModelTreeModel", "linear: G = roughness, B = metallic")},
         {QT_TRANSLATE_NOOP("lr::ModelTreeModel", "normal texture"), m.normalTexture, &m.normalTransform,
-         QT_TRANSLATE_NOOP("lr::ModelTreeModel", "linear, tangent space")},
+         &m.normalSampling, QT_TRANSLATE_NOOP("lr::ModelTreeModel", "linear, tangent space")},
         {QT_TRANSLATE_NOOP("lr::ModelTreeModel", "occlusion texture"), m.occlusionTexture,
-         &m.occlusionTransform, QT_TRANSLATE_NOOP("lr::ModelTreeModel", "linear: R = occlusion")},
+         &m.occlusionTransform, &m.occlusionSampling,
+         QT_TRANSLATE_NOOP("lr::ModelTreeModel", "linear: R = occlusion")},
         {QT_TRANSLATE_NOOP("lr::ModelTreeModel", "emissive texture"), m.emissiveTexture, &m.emissiveTransform,
-         QT_TRANSLATE_NOOP("lr::ModelTreeModel", "sRGB")},
+         &m.emissiveSampling, QT_TRANSLATE_NOOP("lr::ModelTreeModel", "sRGB")},
     };
     for (const auto& t : textures) {
         const int row = add(parent, tr(t.role), textureText(model, t.texture), tr(t.note));
-        if (t.texture >= 0)
-            if (const QString transform = transformText(*t.transform); !transform.isEmpty())
-                add(row, tr("texture transform"), transform, tr("KHR_texture_transform"));
+        if (t.texture < 0) continue;
+        if (const QString transform = transformText(*t.transform); !transform.isEmpty())
+            add(row, tr("texture transform"), transform, tr("KHR_texture_transform"));
+        if (!t.sampling->isDefault())
+            add(row, tr("sampler"), samplingText(*t.sampling),
+                tr("The glTF sampler's wrap modes and magnification filter"));
     }
+    if (m.extensions.empty()) return;
+    int notRendered = 0;
+    for (const MaterialExtension& x : m.extensions)
+        notRendered += materialExtensionRendered(x.name) ? 0 : 1;
+    const int row = add(parent, tr("extensions"),
+                        notRendered ? tr("%n not rendered", nullptr, notRendered) : tr("all rendered"),
+                        tr("The glTF material extensions the file gives this material, with their values"));
+    for (const MaterialExtension& x : m.extensions)
+        add(row, x.name, x.values,
+            materialExtensionRendered(x.name)
+                ? tr("Rendered")
+                : tr("Not rendered: the material is drawn with its core metal-rough values"));
 }
 
 void ModelTreeModel::build() {

@@ -47,6 +47,7 @@ class ModelTreeModel : public QAbstractItemModel {
     // A texture as the dock writes it: "name (W×H)", or "none" for -1, "missing" for a bad index.
     static QString textureText(const Model& model, int texture);
     static QString transformText(const TextureTransform& t); // "" for the identity
+    static QString samplingText(const TextureSampling& s);   // "wrap clamp-to-edge; magnified nearest"
 
   private:
     struct Node {

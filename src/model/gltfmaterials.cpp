@@ -1,5 +1,6 @@
-// glTF material extensions that Assimp 5.2.5's glTF importer drops (KHR_materials_emissive_strength),
-// read from the file's own JSON. preflight() has already checked the GLB header's lengths against the file.
+// glTF material extensions that Assimp 5.2.5's glTF importer drops (KHR_materials_emissive_strength) and
+// the list of every material's extensions, read from the file's own JSON. preflight() has already checked the
+// GLB header's lengths against the file.
 #include "importdetail.h"
 
 #include <QFile>
@@ -28,7 +29,7 @@ GltfMaterialExtrasByName readGltfMaterialExtras(const QString& path) {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) return {};
     const QByteArray json = gltfJson(file);
-    if (!json.contains(kEmissiveStrength)) return {}; // the common case costs one search
+    if (!json.contains("_materials_")) return {}; // the common case costs one search
     const QJsonDocument doc = QJsonDocument::fromJson(json);
     GltfMaterialExtrasByName out;
     for (const QJsonValue& v : doc.object().value(QLatin1String("materials")).toArray()) {
@@ -44,9 +45,39 @@ GltfMaterialExtrasByName readGltfMaterialExtras(const QString& path) {
                                         .toObject()
                                         .value(QLatin1String("emissiveStrength"));
         e.emissiveStrength = strength.isDouble() ? strength.toDouble() : 1.0;
+        const QJsonObject extensions = mat.value(QLatin1String("extensions")).toObject();
+        e.extensionCount = int(extensions.size());
+        for (auto it = extensions.begin(); it != extensions.end(); ++it) {
+            if (int(e.extensions.size()) >= kMaxMaterialExtensions) break;
+            QString values =
+                it.value().isObject()
+                    ? QString::fromUtf8(QJsonDocument(it.value().toObject()).toJson(QJsonDocument::Compact))
+                    : QStringLiteral("(not an object)");
+            if (values.size() > kMaxExtensionValues)
+                values = values.left(kMaxExtensionValues - 1) + QChar(0x2026);
+            e.extensions.push_back({it.key(), values});
+        }
         out.insert(mat.value(QLatin1String("name")).toString(), e);
     }
     return out;
+}
+
+QStringList readGltfVariantNames(const QByteArray& json) {
+    if (!json.contains("KHR_materials_variants")) return {};
+    const QJsonArray variants = QJsonDocument::fromJson(json)
+                                    .object()
+                                    .value(QLatin1String("extensions"))
+                                    .toObject()
+                                    .value(QLatin1String("KHR_materials_variants"))
+                                    .toObject()
+                                    .value(QLatin1String("variants"))
+                                    .toArray();
+    QStringList names;
+    for (const QJsonValue& v : variants) {
+        const QString name = v.toObject().value(QLatin1String("name")).toString();
+        names << (name.isEmpty() ? QStringLiteral("variant %1").arg(names.size()) : name);
+    }
+    return names;
 }
 
 } // namespace lr::detail

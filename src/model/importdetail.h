@@ -40,14 +40,20 @@ void convertMaterials(const aiScene* scene, const ModelFolder& folder, qint64 ma
                       MaterialSource source, Model& model);
 
 // gltfmaterials.cpp: what Assimp 5.2.5 does not read of a glTF material, per entry of its "materials"
-// array, by material name: KHR_materials_emissive_strength. Read from the file's JSON (a .gltf, or a GLB's
-// JSON chunk) only when the file names that extension; empty otherwise or when the JSON does not parse.
+// array, by material name: KHR_materials_emissive_strength, and the list of the material's extensions
+// (Material::extensions). Read from the file's JSON (a .gltf, or a GLB's JSON chunk) only when some material
+// has extensions; empty otherwise or when the JSON does not parse.
 struct GltfMaterialExtras {
     glm::vec3 emissiveFactor{0.0f}; // to tell materials of one name apart
     double emissiveStrength = 1.0;
+    std::vector<MaterialExtension> extensions;
+    int extensionCount = 0; // how many the file lists (extensions holds at most kMaxMaterialExtensions)
 };
 using GltfMaterialExtrasByName = QMultiHash<QString, GltfMaterialExtras>;
 GltfMaterialExtrasByName readGltfMaterialExtras(const QString& path);
+// The names of the file's KHR_materials_variants (`json`: gltfJsonOf), in the file's order; unnamed ones as
+// "variant N". Empty when it has none.
+QStringList readGltfVariantNames(const QByteArray& json);
 
 // materials_pbr.cpp: what one material's conversion needs to know and where its warnings go.
 struct MaterialContext {

@@ -256,10 +256,41 @@ class TextureLoader {
     std::vector<Job> m_jobs;
 };
 
+TextureWrap wrapOf(int mode) {
+    switch (mode) {
+    case aiTextureMapMode_Clamp:
+    case aiTextureMapMode_Decal:
+        return TextureWrap::ClampToEdge;
+    case aiTextureMapMode_Mirror:
+        return TextureWrap::MirroredRepeat;
+    default:
+        return TextureWrap::Repeat;
+    }
+}
+
+// The texture's sampler: wrap modes as Assimp maps them (glTF's sampler, OBJ's -clamp, ...), and glTF's
+// magnification filter (9728 NEAREST; Assimp 5.2.5 stores the sampler's value as it is).
+TextureSampling samplingOf(const aiMaterial* am, aiTextureType type) {
+    TextureSampling s;
+    int mode = aiTextureMapMode_Wrap;
+    if (am->Get(AI_MATKEY_MAPPINGMODE_U(type, 0), mode) == AI_SUCCESS) s.wrapS = wrapOf(mode);
+    if (am->Get(AI_MATKEY_MAPPINGMODE_V(type, 0), mode) == AI_SUCCESS) s.wrapT = wrapOf(mode);
+    int mag = 0;
+    if (am->Get(AI_MATKEY_GLTF_MAPPINGFILTER_MAG(type, 0), mag) == AI_SUCCESS)
+        s.nearestMagnification = mag == 9728;
+    return s;
+}
+
+// The texture reference of one role: its transform and sampling.
+struct RoleOut {
+    TextureTransform* transform;
+    TextureSampling* sampling;
+};
+
 // Loads the material's first texture of the first of `types` it has, for one role: -1 with a warning when
-// it reads a UV set other than 0 (meshes carry only TEXCOORD_0); *transform gets its UV transform.
+// it reads a UV set other than 0 (meshes carry only TEXCOORD_0); `out` gets its UV transform and sampling.
 int loadRole(const aiMaterial* am, std::initializer_list<aiTextureType> types, const char* role,
-             TextureLoader& textures, const MaterialContext& ctx, TextureTransform* transform) {
+             TextureLoader& textures, const MaterialContext& ctx, RoleOut out) {
     for (aiTextureType type : types) {
         if (am->GetTextureCount(type) == 0) continue;
         int uvSet = 0;
@@ -273,7 +304,8 @@ int loadRole(const aiMaterial* am, std::initializer_list<aiTextureType> types, c
         if (index < 0) continue;
         aiUVTransform uv;
         if (am->Get(_AI_MATKEY_UVTRANSFORM_BASE, int(type), 0, uv) == AI_SUCCESS)
-            *transform = textureTransformFromAssimp(uv, QLatin1String(role), ctx);
+            *out.transform = textureTransformFromAssimp(uv, QLatin1String(role), ctx);
+        *out.sampling = samplingOf(am, type);
         return index;
     }
     return -1;
@@ -300,8 +332,9 @@ Material convert(const aiMaterial* am, TextureLoader& textures, const MaterialCo
         m.baseColor[i] = std::max(finiteOr(m.baseColor[i], 1.0f), 0.0f);
     m.baseColor.a = std::clamp(finiteOr(m.baseColor.a, 1.0f), 0.0f, 1.0f);
     m.baseColorTexture = loadRole(am, {aiTextureType_BASE_COLOR, aiTextureType_DIFFUSE}, "base colour",
-                                  textures, ctx, &m.baseColorTransform);
-    m.normalTexture = loadRole(am, {aiTextureType_NORMALS}, "normal", textures, ctx, &m.normalTransform);
+                                  textures, ctx, {&m.baseColorTransform, &m.baseColorSampling});
+    m.normalTexture = loadRole(am, {aiTextureType_NORMALS}, "normal", textures, ctx,
+                               {&m.normalTransform, &m.normalSampling});
 
     aiColor3D e(0.0f, 0.0f, 0.0f);
     if (am->Get(AI_MATKEY_COLOR_EMISSIVE, e) == AI_SUCCESS) {
@@ -311,7 +344,7 @@ Material convert(const aiMaterial* am, TextureLoader& textures, const MaterialCo
             m.emissive[i] = std::max(finiteOr(e[unsigned(i)] * strength, 0.0f), 0.0f);
     }
     m.emissiveTexture = loadRole(am, {aiTextureType_EMISSIVE, aiTextureType_EMISSION_COLOR}, "emissive",
-                                 textures, ctx, &m.emissiveTransform);
+                                 textures, ctx, {&m.emissiveTransform, &m.emissiveSampling});
 
     aiColor3D s(1.0f, 1.0f, 1.0f);
     if (am->Get(AI_MATKEY_COLOR_SPECULAR, s) == AI_SUCCESS) {
@@ -332,8 +365,9 @@ Material convert(const aiMaterial* am, TextureLoader& textures, const MaterialCo
     // DIFFUSE_ROUGHNESS); other importers put textures they do not understand there. Other formats'
     // separate single-channel metallic and roughness maps do not fit the packed layout.
     if (ctx.source == MaterialSource::Gltf)
-        m.metallicRoughnessTexture = loadRole(am, {aiTextureType_UNKNOWN}, "metallic-roughness", textures,
-                                              ctx, &m.metallicRoughnessTransform);
+        m.metallicRoughnessTexture =
+            loadRole(am, {aiTextureType_UNKNOWN}, "metallic-roughness", textures, ctx,
+                     {&m.metallicRoughnessTransform, &m.metallicRoughnessSampling});
     else if (am->GetTextureCount(aiTextureType_METALNESS) ||
              am->GetTextureCount(aiTextureType_DIFFUSE_ROUGHNESS))
         ctx.warn(QStringLiteral("separate metallic and roughness maps are not supported (not used)"));
@@ -342,7 +376,7 @@ Material convert(const aiMaterial* am, TextureLoader& textures, const MaterialCo
                                   ctx.source == MaterialSource::Gltf
                                       ? std::initializer_list<aiTextureType>{aiTextureType_LIGHTMAP}
                                       : std::initializer_list<aiTextureType>{aiTextureType_AMBIENT_OCCLUSION},
-                                  "occlusion", textures, ctx, &m.occlusionTransform);
+                                  "occlusion", textures, ctx, {&m.occlusionTransform, &m.occlusionSampling});
     readPhysicalValues(am, ctx, m);
     return m;
 }

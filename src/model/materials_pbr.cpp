@@ -13,6 +13,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <optional>
+#include <vector>
 
 namespace lr::detail {
 
@@ -44,42 +45,82 @@ AlphaMode alphaModeOf(const aiMaterial* am, const MaterialContext& ctx) {
     return AlphaMode::Opaque;
 }
 
-// KHR_materials_emissive_strength of the glTF material this aiMaterial came from. Assimp numbers
-// materials in the order meshes reference them, not as the file does, so the material is found by its
-// name and emissive factor; when those match several materials of different strengths, none is used.
-double emissiveStrength(const Material& m, const glm::vec3& emissiveFactor, const MaterialContext& ctx) {
-    if (emissiveFactor == glm::vec3(0.0f)) return 1.0; // nothing to scale
-    // Bounded work per material: a file of many materials of one name would otherwise cost quadratic time.
+// The entries of the file's "materials" array this aiMaterial may have come from. Assimp numbers materials
+// in the order meshes reference them, not as the file does, so they are found by name and emissive factor.
+// Empty with a warning when more than kMaxSameName share the name (bounded work per material: a file of
+// many materials of one name would otherwise cost quadratic time).
+std::vector<const GltfMaterialExtras*> jsonMaterialsOf(const Material& m, const glm::vec3& emissiveFactor,
+                                                       const MaterialContext& ctx) {
     constexpr int kMaxSameName = 256;
-    std::optional<double> found;
-    bool ambiguous = false;
+    std::vector<const GltfMaterialExtras*> found;
     int seen = 0;
     for (auto it = ctx.gltfExtras.constFind(m.name); it != ctx.gltfExtras.cend() && it.key() == m.name;
          ++it) {
         if (++seen > kMaxSameName) {
-            ctx.warn(QStringLiteral("more than %1 materials share this name; KHR_materials_emissive_strength "
-                                    "not looked up (using 1)")
+            ctx.warn(QStringLiteral("more than %1 materials share this name; its glTF extensions are not "
+                                    "looked up")
                          .arg(kMaxSameName));
-            return 1.0;
+            return {};
         }
         const GltfMaterialExtras& e = it.value();
         // (Assimp's JSON reader may round a factor differently in the last bit.)
         const glm::vec3 d = glm::abs(e.emissiveFactor - emissiveFactor);
         if (std::max({d.x, d.y, d.z}) > 1e-6f * std::max(1.0f, glm::length(emissiveFactor))) continue;
-        if (found && *found != e.emissiveStrength) ambiguous = true;
-        found = e.emissiveStrength;
+        found.push_back(&e);
     }
-    if (ambiguous) {
-        ctx.warn(QStringLiteral("several materials of this name and emissive factor have different "
-                                "KHR_materials_emissive_strength values; using 1"));
-        return 1.0;
-    }
-    const double s = found.value_or(1.0);
+    return found;
+}
+
+// KHR_materials_emissive_strength of those entries; when they have different strengths, none is used.
+double emissiveStrength(const std::vector<const GltfMaterialExtras*>& entries,
+                        const glm::vec3& emissiveFactor, const MaterialContext& ctx) {
+    if (emissiveFactor == glm::vec3(0.0f) || entries.empty()) return 1.0; // nothing to scale
+    for (const GltfMaterialExtras* e : entries)
+        if (e->emissiveStrength != entries.front()->emissiveStrength) {
+            ctx.warn(QStringLiteral("several materials of this name and emissive factor have different "
+                                    "KHR_materials_emissive_strength values; using 1"));
+            return 1.0;
+        }
+    const double s = entries.front()->emissiveStrength;
     if (!std::isfinite(s) || s < 0.0) {
         ctx.warn(QStringLiteral("emissiveStrength %1 is not a finite value >= 0; using 1").arg(number(s)));
         return 1.0;
     }
     return s;
+}
+
+// Material::extensions from those entries, and a warning naming every extension LightRig does not render
+// (issue 42: never silence). When the entries list different extensions, none is listed and every one of
+// them is named.
+void readExtensions(const std::vector<const GltfMaterialExtras*>& entries, const MaterialContext& ctx,
+                    Material& m) {
+    if (entries.empty()) return;
+    QStringList notRendered;
+    bool same = true;
+    for (const GltfMaterialExtras* e : entries) {
+        same = same && e->extensions == entries.front()->extensions;
+        for (const MaterialExtension& x : e->extensions)
+            // KHR_materials_pbrSpecularGlossiness has its own warning (readPhysicalValues).
+            if (!materialExtensionRendered(x.name) &&
+                x.name != QLatin1String("KHR_materials_pbrSpecularGlossiness") &&
+                !notRendered.contains(x.name))
+                notRendered << x.name;
+    }
+    if (same)
+        m.extensions = entries.front()->extensions;
+    else
+        ctx.warn(QStringLiteral("several materials of this name and emissive factor differ in their "
+                                "extensions; none is listed"));
+    if (const int more = entries.front()->extensionCount - int(entries.front()->extensions.size()); more > 0)
+        ctx.warn(QStringLiteral("%1 more extensions than the %2 listed are not read")
+                     .arg(more)
+                     .arg(kMaxMaterialExtensions));
+    if (!notRendered.isEmpty())
+        ctx.warn(QStringLiteral("%1 not rendered: the material is drawn with its core metal-rough values "
+                                "(the Model dock lists the values)")
+                     .arg(notRendered.size() == 1
+                              ? notRendered.front() + QStringLiteral(" is")
+                              : notRendered.join(QStringLiteral(", ")) + QStringLiteral(" are")));
 }
 
 } // namespace
@@ -161,9 +202,11 @@ void readPhysicalValues(const aiMaterial* am, const MaterialContext& ctx, Materi
     if (ctx.source == MaterialSource::Gltf && !ctx.gltfExtras.empty()) {
         aiColor3D e(0.0f, 0.0f, 0.0f);
         am->Get(AI_MATKEY_COLOR_EMISSIVE, e);
-        const double s = emissiveStrength(m, glm::vec3(e.r, e.g, e.b), ctx);
+        const auto entries = jsonMaterialsOf(m, glm::vec3(e.r, e.g, e.b), ctx);
+        const double s = emissiveStrength(entries, glm::vec3(e.r, e.g, e.b), ctx);
         for (int i = 0; i < 3; ++i)
             m.emissive[i] = std::min(float(double(m.emissive[i]) * s), 1e6f);
+        readExtensions(entries, ctx, m);
     }
 }
 

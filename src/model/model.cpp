@@ -15,6 +15,9 @@ bool Model::hasPbrMaterials() const {
         if (m.pbr) return true;
     return false;
 }
+bool materialExtensionRendered(const QString& name) {
+    return name == QLatin1String("KHR_materials_emissive_strength");
+}
 std::size_t Model::vertexCount() const {
     std::size_t n = 0;
     for (const Mesh& m : meshes)

@@ -50,6 +50,36 @@ struct TextureTransform {
     bool operator==(const TextureTransform&) const = default;
 };
 
+// A glTF sampler's wrap mode along one texture axis (glTF 2.0 "samplers": wrapS, wrapT); other formats'
+// clamp maps to ClampToEdge (Assimp's decal too).
+enum class TextureWrap { Repeat, ClampToEdge, MirroredRepeat };
+template <> struct EnumNames<TextureWrap> {
+    static constexpr std::array names{"repeat", "clamp-to-edge", "mirrored-repeat"};
+};
+
+// How one texture reference is sampled: its sampler's wrap modes and magnification filter. The
+// minification filter stays the tier's (trilinear; the fast tier's nearest mip level, core/quality.h).
+struct TextureSampling {
+    TextureWrap wrapS = TextureWrap::Repeat, wrapT = TextureWrap::Repeat;
+    bool nearestMagnification = false; // magFilter NEAREST (9728): texels stay sharp when magnified
+    bool isDefault() const { return *this == TextureSampling{}; }
+    bool operator==(const TextureSampling&) const = default;
+};
+
+// One glTF material extension the file's material names ("KHR_materials_clearcoat"), with its JSON object
+// as the file writes it (compact, at most kMaxExtensionValues characters), for the Model dock. Which of them
+// LightRig renders: materialExtensionRendered.
+struct MaterialExtension {
+    QString name;
+    QString values;
+    bool operator==(const MaterialExtension&) const = default;
+};
+constexpr int kMaxExtensionValues = 512;
+constexpr int kMaxMaterialExtensions = 32; // more on one material is a warning, the rest not listed
+// Whether LightRig renders a material extension (KHR_materials_emissive_strength: folded into emissive);
+// every other one a material uses is a warning at import that names it.
+bool materialExtensionRendered(const QString& name);
+
 struct Material {
     QString name;
     glm::vec4 baseColor{1.0f}; // linear RGBA factor
@@ -73,6 +103,11 @@ struct Material {
     // One transform per texture role (base colour, normal, emissive, metal-rough, occlusion).
     TextureTransform baseColorTransform, normalTransform, emissiveTransform, metallicRoughnessTransform,
         occlusionTransform;
+    // And one sampling per role, in the same order.
+    TextureSampling baseColorSampling, normalSampling, emissiveSampling, metallicRoughnessSampling,
+        occlusionSampling;
+    // glTF: the material's extensions (those Assimp reads and those it drops alike), sorted by name.
+    std::vector<MaterialExtension> extensions;
     bool operator==(const Material&) const = default;
 };
 
@@ -93,6 +128,16 @@ inline std::array<const TextureTransform*, kTextureRoles> textureTransforms(cons
 inline std::array<TextureTransform*, kTextureRoles> textureTransforms(Material& m) {
     return {&m.baseColorTransform, &m.normalTransform, &m.emissiveTransform, &m.metallicRoughnessTransform,
             &m.occlusionTransform};
+}
+
+// The samplings, by role.
+inline std::array<const TextureSampling*, kTextureRoles> textureSamplings(const Material& m) {
+    return {&m.baseColorSampling, &m.normalSampling, &m.emissiveSampling, &m.metallicRoughnessSampling,
+            &m.occlusionSampling};
+}
+inline std::array<TextureSampling*, kTextureRoles> textureSamplings(Material& m) {
+    return {&m.baseColorSampling, &m.normalSampling, &m.emissiveSampling, &m.metallicRoughnessSampling,
+            &m.occlusionSampling};
 }
 
 struct Mesh {

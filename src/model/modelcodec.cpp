@@ -172,6 +172,16 @@ void writeBody(Writer& w, const Model& m) {
             w.pod(t->rotation);
             w.pod(t->scale);
         }
+        for (const TextureSampling* s : textureSamplings(mat)) {
+            w.enumeration(s->wrapS);
+            w.enumeration(s->wrapT);
+            w.u8(s->nearestMagnification);
+        }
+        w.count(mat.extensions.size());
+        for (const MaterialExtension& x : mat.extensions) {
+            w.string(x.name);
+            w.string(x.values);
+        }
     }
     w.count(m.textures.size());
     for (const Texture& t : m.textures) {

@@ -29,8 +29,9 @@
 namespace lr {
 
 inline constexpr char kModelCodecMagic[8] = {'L', 'R', 'M', 'O', 'D', 'E', 'L', '\0'};
-inline constexpr quint32 kModelCodecVersion = 7; // 4: PBR material fields, rig shading model; 5: Light::area;
-                                                 // 6: Mesh::node; 7: Light::link, ies, gobo, barnDoors
+inline constexpr quint32 kModelCodecVersion = 8; // 4: PBR material fields, rig shading model; 5: Light::area;
+                                                 // 6: Mesh::node; 7: Light::link, ies, gobo, barnDoors;
+                                                 // 8: Material samplings and extensions
 inline constexpr quint32 kModelCodecByteOrderMark = 0x01020304u;
 inline constexpr int kModelCodecHeaderSize = 32; // the body size is its last 8 bytes
 // Texture pixels start this far apart from the start of the encoding (zero padding before them), so that a

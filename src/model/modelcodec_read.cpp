@@ -16,7 +16,8 @@ namespace {
 // The fewest bytes each part takes (empty strings and arrays): counts are checked against them.
 constexpr std::size_t kMinMeshBytes = 4 + 4 + 8 + 8 + 4 + 1 + 1; // name, node, ...
 constexpr std::size_t kMinMaterialBytes =
-    4 + 16 + 3 * 4 + 12 + 12 + 4 + 1 + 1 + 2 * 4 + 2 * 4 + 2 * 4 + 1 + 4 + 5 * 20;
+    4 + 16 + 3 * 4 + 12 + 12 + 4 + 1 + 1 + 2 * 4 + 2 * 4 + 2 * 4 + 1 + 4 + 5 * 20 + 5 * 3 + 8;
+constexpr std::size_t kMinExtensionBytes = 4 + 4; // two empty strings
 constexpr std::size_t kMinTextureBytes = 4 + 4 + 4 + 4;
 constexpr std::size_t kMinCameraBytes = 4 + 3 * 24 + 4 * 8;
 constexpr std::size_t kMinLightBytes = 4 + 1 + 1 + 24 + 8 + 1 + 8 + 24 + 24 + 1 + 5 * 8 + 1 + 3 * 8 + 1 + 1 +
@@ -321,6 +322,23 @@ bool readModel(Reader& r, Model& m) {
             if (!r.number(t->offset, where + QStringLiteral(" texture offset")) ||
                 !r.number(t->rotation, where + QStringLiteral(" texture rotation")) ||
                 !r.number(t->scale, where + QStringLiteral(" texture scale")))
+                return false;
+        for (TextureSampling* s : textureSamplings(mat))
+            if (!r.enumeration(s->wrapS, where + QStringLiteral(" texture wrap S")) ||
+                !r.enumeration(s->wrapT, where + QStringLiteral(" texture wrap T")) ||
+                !r.flag(s->nearestMagnification, where + QStringLiteral(" texture magnification")))
+                return false;
+        std::size_t extensions = 0;
+        if (!r.count(extensions, kMinExtensionBytes, where + QStringLiteral(" extensions"))) return false;
+        if (extensions > std::size_t(kMaxMaterialExtensions))
+            return r.fail(QStringLiteral("%1 lists %2 extensions (at most %3)")
+                              .arg(where)
+                              .arg(extensions)
+                              .arg(kMaxMaterialExtensions));
+        mat.extensions.resize(extensions);
+        for (MaterialExtension& x : mat.extensions)
+            if (!r.string(x.name, where + QStringLiteral(" extension name")) ||
+                !r.string(x.values, where + QStringLiteral(" extension values")))
                 return false;
         // The importer clamps these (materials_pbr.cpp); the renderer may rely on it.
         for (auto [value, name] : {std::pair{mat.metallic, "metallic"}, std::pair{mat.roughness, "roughness"},

@@ -137,6 +137,14 @@ ModelLoadResult import(const QString& path, const ModelLoadOptions& options) {
         sortCamerasAsGltf(json, model->cameras); // glTF's numbering
         // Issue 39: EXT_lights_ies and LightRig's extras.lightrig on light nodes, which Assimp does not read.
         detail::readGltfLightExtras(json, folder, options.maxDataUriBytes, *model);
+        if (const QStringList variants = detail::readGltfVariantNames(json); !variants.isEmpty())
+            model->warnings << QStringLiteral(
+                                   "%1: KHR_materials_variants is not read: the file's %2 variants (%3) "
+                                   "are not offered; each mesh shows its default material")
+                                   .arg(name)
+                                   .arg(variants.size())
+                                   .arg(variants.mid(0, 8).join(QStringLiteral(", ")) +
+                                        (variants.size() > 8 ? QStringLiteral(", …") : QString()));
     }
     if (!progress.report(1.0)) return failure(path, QStringLiteral("cancelled"), true);
     model->loadMs = double(timer.nsecsElapsed()) / 1e6;

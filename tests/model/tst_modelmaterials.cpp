@@ -79,6 +79,7 @@ class TestModelMaterials : public QObject {
     void gltfOutOfRangeValuesAreClampedWithWarnings();
     void gltfEmissiveStrengthFindsItsMaterial();
     void undecodableTexturesNameTheirRole();
+    void gltfSamplersAndExtensionsAreRead();
     void specularGlossinessWarns();
     void textureTransformInvertsAssimpsConversion();
     void objShininessConvertsToRoughness();
@@ -243,6 +244,75 @@ void TestModelMaterials::gltfEmissiveStrengthFindsItsMaterial() {
                                QStringLiteral("different KHR_materials_emissive_strength")})
                  .size(),
              2);
+}
+
+// Issue 42: a texture's glTF sampler (wrap modes, magnification filter) reaches its role; every material
+// extension is listed with its values, and those LightRig does not render are one warning per material
+// naming them; KHR_materials_variants is a warning naming the variants.
+void TestModelMaterials::gltfSamplersAndExtensionsAreRead() {
+    QJsonObject gltf = readJson(dataFile(QStringLiteral("pbr.gltf")));
+    gltf[QStringLiteral("samplers")] = QJsonArray{QJsonObject{{QStringLiteral("wrapS"), 33071},
+                                                              {QStringLiteral("wrapT"), 33648},
+                                                              {QStringLiteral("magFilter"), 9728}}};
+    QJsonArray textures = gltf[QStringLiteral("textures")].toArray();
+    QJsonObject t0 = textures[0].toObject();
+    t0[QStringLiteral("sampler")] = 0;
+    textures[0] = t0;
+    gltf[QStringLiteral("textures")] = textures;
+    QJsonArray materials = gltf[QStringLiteral("materials")].toArray();
+    for (int i = 0; i < materials.size(); ++i) {
+        QJsonObject mat = materials[i].toObject();
+        if (mat[QStringLiteral("name")].toString() != QLatin1String("blend")) continue;
+        mat[QStringLiteral("extensions")] =
+            QJsonObject{{QStringLiteral("KHR_materials_sheen"),
+                         QJsonObject{{QStringLiteral("sheenRoughnessFactor"), 0.5}}},
+                        {QStringLiteral("KHR_materials_clearcoat"),
+                         QJsonObject{{QStringLiteral("clearcoatFactor"), 1.0}}}};
+        materials[i] = mat;
+    }
+    gltf[QStringLiteral("materials")] = materials;
+    QJsonObject root = gltf[QStringLiteral("extensions")].toObject();
+    root[QStringLiteral("KHR_materials_variants")] =
+        QJsonObject{{QStringLiteral("variants"),
+                     QJsonArray{QJsonObject{{QStringLiteral("name"), QStringLiteral("red")}},
+                                QJsonObject{{QStringLiteral("name"), QStringLiteral("blue")}}}}};
+    gltf[QStringLiteral("extensions")] = root;
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("extended.gltf"));
+    QVERIFY(writeFile(path, QJsonDocument(gltf).toJson()));
+    const auto m = mustLoad(path);
+    QVERIFY(m);
+
+    // Texture 0 is "transformed"'s base colour: clamp along S, mirrored along T, magnified nearest; its
+    // emissive texture (image 1, no sampler) keeps glTF's default.
+    const Material* xf = materialNamed(*m, QStringLiteral("transformed"));
+    QVERIFY(xf && xf->baseColorTexture >= 0 && xf->emissiveTexture >= 0);
+    QVERIFY(xf->baseColorSampling ==
+            (TextureSampling{TextureWrap::ClampToEdge, TextureWrap::MirroredRepeat, true}));
+    QVERIFY(xf->emissiveSampling.isDefault());
+    // Its emissive strength is rendered: listed, no warning.
+    QCOMPARE(xf->extensions.size(), std::size_t(1));
+    QCOMPARE(xf->extensions[0].name, QStringLiteral("KHR_materials_emissive_strength"));
+    QVERIFY(xf->extensions[0].values.contains(QLatin1String("emissiveStrength")));
+    QVERIFY(warningsWith(*m, {QStringLiteral("\"transformed\""), QStringLiteral("not rendered")}).isEmpty());
+
+    const Material* blend = materialNamed(*m, QStringLiteral("blend"));
+    QVERIFY(blend);
+    QCOMPARE(blend->extensions.size(), std::size_t(2));
+    QCOMPARE(blend->extensions[0].name, QStringLiteral("KHR_materials_clearcoat"));
+    QCOMPARE(blend->extensions[0].values, QStringLiteral("{\"clearcoatFactor\":1}"));
+    QCOMPARE(blend->extensions[1].name, QStringLiteral("KHR_materials_sheen"));
+    QCOMPARE(
+        warningsWith(*m, {QStringLiteral("extended.gltf: material \"blend\""),
+                          QStringLiteral("KHR_materials_clearcoat, KHR_materials_sheen are not rendered")})
+            .size(),
+        1);
+    QCOMPARE(warningsWith(*m, {QStringLiteral("extended.gltf"), QStringLiteral("KHR_materials_variants"),
+                               QStringLiteral("2 variants (red, blue)")})
+                 .size(),
+             1);
+    // Materials without extensions list none.
+    QVERIFY(materialNamed(*m, QStringLiteral("metalRough"))->extensions.empty());
 }
 
 // pbr.gltf with its metallic-roughness (image 1) and occlusion (image 2) images broken: not used, and the

@@ -140,6 +140,18 @@ void TestModelCodec::roundTripsEachMaterialField() {
          }},
         {"metallicRoughnessTransform", [](Material& m) { m.metallicRoughnessTransform.offset.y = -1.0f; }},
         {"occlusionTransform", [](Material& m) { m.occlusionTransform.scale.x = 0.5f; }},
+        {"baseColorSampling", [](Material& m) { m.baseColorSampling.wrapS = TextureWrap::ClampToEdge; }},
+        {"normalSampling", [](Material& m) { m.normalSampling.wrapT = TextureWrap::MirroredRepeat; }},
+        {"emissiveSampling", [](Material& m) { m.emissiveSampling.nearestMagnification = true; }},
+        {"metallicRoughnessSampling",
+         [](Material& m) { m.metallicRoughnessSampling.wrapT = TextureWrap::ClampToEdge; }},
+        {"occlusionSampling", [](Material& m) { m.occlusionSampling.wrapS = TextureWrap::MirroredRepeat; }},
+        {"extensions",
+         [](Material& m) {
+             m.extensions = {
+                 {QStringLiteral("KHR_materials_clearcoat"), QStringLiteral("{\"clearcoatFactor\":1}")},
+                 {QStringLiteral("KHR_materials_ior"), QStringLiteral("{\"ior\":1.5}")}};
+         }},
     };
     for (const auto& [field, change] : changes) {
         Model m = oneTriangle();
@@ -152,7 +164,9 @@ void TestModelCodec::roundTripsEachMaterialField() {
         QVERIFY2(decoded->materials[0] == m.materials[0], field);
     }
     // Every field of Material is listed above: its size changes when a field is added (then list it).
-    static_assert(sizeof(Material) == sizeof(QString) + 92 + 5 * sizeof(TextureTransform),
+    static_assert(sizeof(Material) == sizeof(QString) + 92 + 5 * sizeof(TextureTransform) +
+                                          5 * sizeof(TextureSampling) + 4 /* alignment */ +
+                                          sizeof(std::vector<MaterialExtension>),
                   "a Material field was added: add it to the codec and to this test");
 }
 
@@ -322,6 +336,10 @@ void TestModelCodec::rejectsInconsistentModels_data() {
         << 15 << QStringLiteral("material 0 alpha mode out of range (7)");
     QTest::newRow("negative metallic") << 16 << QStringLiteral("material 0 metallic -0.25 is outside [0, 1]");
     QTest::newRow("shading model out of range") << 17 << QStringLiteral("rig shading model out of range (2)");
+    QTest::newRow("texture wrap out of range")
+        << 18 << QStringLiteral("material 0 texture wrap T out of range (3)");
+    QTest::newRow("too many extensions")
+        << 19 << QStringLiteral("material 0 lists 33 extensions (at most 32)");
 }
 
 void TestModelCodec::rejectsInconsistentModels() {
@@ -386,6 +404,12 @@ void TestModelCodec::rejectsInconsistentModels() {
         break;
     case 17:
         m.lights.shading.model = ShadingModel(2);
+        break;
+    case 18:
+        m.materials[0].emissiveSampling.wrapT = TextureWrap(3);
+        break;
+    case 19:
+        m.materials[0].extensions.resize(kMaxMaterialExtensions + 1);
         break;
     }
     const QString error = decodeError(encodeModel(m));

@@ -101,6 +101,10 @@ inline Model fullModel() {
     m0.emissiveTransform = {{0.0f, 0.125f}, -1.2f, {1.0f, 1.0f}};
     m0.metallicRoughnessTransform = {{0.0f, 0.0f}, 3.0f, {0.5f, 0.5f}};
     m0.occlusionTransform = {{7.0f, -7.0f}, 0.0f, {4.0f, 4.0f}};
+    m0.baseColorSampling = {TextureWrap::ClampToEdge, TextureWrap::MirroredRepeat, true};
+    m0.occlusionSampling.wrapT = TextureWrap::ClampToEdge;
+    m0.extensions = {
+        {QStringLiteral("KHR_materials_sheen"), QStringLiteral("{\"sheenRoughnessFactor\":0.5}")}};
     Material m1;
     m1.name = QStringLiteral("glass");
     m1.emissiveTexture = 0;
