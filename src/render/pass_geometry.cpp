@@ -183,7 +183,7 @@ MaterialFeatures MeshPass::sampledFeatures(const GpuDraw& d, const Rig& rig, con
 }
 
 void MeshPass::bindMaterial(const FeatureKey& key, const MeshProgram& p, const GpuDraw& d, const Model& model,
-                            const Rig& rig, GLuint sampler) {
+                            const Rig& rig, const Targets& targets, bool fast) {
     static const Material defaultMaterial;
     const Material& m = d.material >= 0 ? model.materials[size_t(d.material)] : defaultMaterial;
     glUniform4fv(p.baseColor, 1, glm::value_ptr(m.baseColor));
@@ -200,17 +200,22 @@ void MeshPass::bindMaterial(const FeatureKey& key, const MeshProgram& p, const G
     if (p.metallic >= 0) glUniform1f(p.metallic, m.metallic);
     if (p.roughness >= 0) glUniform1f(p.roughness, m.roughness);
     if (p.occlusionStrength >= 0) glUniform1f(p.occlusionStrength, m.occlusionStrength);
-    const std::pair<TextureUnit, GLuint> textures[] = {
-        {TextureUnit::BaseColor, d.baseColorTexture},
-        {TextureUnit::Normal, d.normalTexture},
-        {TextureUnit::Emissive, d.emissiveTexture},
-        {TextureUnit::MetalRough, key.material.metalRoughTexture ? d.metalRoughTexture : 0},
-        {TextureUnit::Occlusion, key.material.occlusionTexture ? d.occlusionTexture : 0}};
-    for (const auto& [unit, texture] : textures) {
-        if (!texture) continue;
-        glActiveTexture(textureUnit(unit));
-        glBindTexture(GL_TEXTURE_2D, texture);
-        glBindSampler(GLuint(unit), sampler);
+    const struct {
+        TextureUnit unit;
+        GLuint texture;
+        const TextureSampling& sampling;
+    } textures[] = {{TextureUnit::BaseColor, d.baseColorTexture, m.baseColorSampling},
+                    {TextureUnit::Normal, d.normalTexture, m.normalSampling},
+                    {TextureUnit::Emissive, d.emissiveTexture, m.emissiveSampling},
+                    {TextureUnit::MetalRough, key.material.metalRoughTexture ? d.metalRoughTexture : 0,
+                     m.metallicRoughnessSampling},
+                    {TextureUnit::Occlusion, key.material.occlusionTexture ? d.occlusionTexture : 0,
+                     m.occlusionSampling}};
+    for (const auto& t : textures) {
+        if (!t.texture) continue;
+        glActiveTexture(textureUnit(t.unit));
+        glBindTexture(GL_TEXTURE_2D, t.texture);
+        glBindSampler(GLuint(t.unit), targets.materialSampler(t.sampling, fast));
     }
 }
 
@@ -277,7 +282,7 @@ bool MeshPass::drawMeshes(const FrameContext& frame, PassScene& scene,
             scene.inputs->setUniforms(this, *p, key, frame);
             if (p->exposureScale >= 0) glUniform1f(p->exposureScale, frame.exposureScale);
         }
-        bindMaterial(key, *p, *d, *model, rig, key.quality == Quality::Fast ? scene.targets->fastSampler : 0);
+        bindMaterial(key, *p, *d, *model, rig, *scene.targets, key.quality == Quality::Fast);
         if (p->linkClass >= 0) glUniform1i(p->linkClass, litClassOf(frame, scene, *d, source));
         if (key.attributes)
             glStencilFunc(GL_ALWAYS,

@@ -57,7 +57,8 @@ bool DeferredLightingPass::buildSurfaces(const FrameContext& frame, PassScene& s
             continue;
         }
         p->program->bind();
-        bindMaterial(keys[m], *p, *material.draw, *material.source->model(), frame.scene->rig(), 0);
+        bindMaterial(keys[m], *p, *material.draw, *material.source->model(), frame.scene->rig(),
+                     *scene.targets, false);
         glDrawArrays(GL_TRIANGLES, 0, 3);
         p->program->release();
     }
@@ -191,7 +192,8 @@ bool DeferredLightingPass::run(const FrameContext& frame, PassScene& scene) {
             continue;
         }
         p->program->bind();
-        if (material) bindMaterial(key, *p, *material->draw, *material->source->model(), rig, 0);
+        if (material)
+            bindMaterial(key, *p, *material->draw, *material->source->model(), rig, *scene.targets, false);
         scene.inputs->setUniforms(this, *p, key, frame);
         if (p->exposureScale >= 0) glUniform1f(p->exposureScale, frame.exposureScale);
         glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -51,10 +51,10 @@ class MeshPass : public RenderPass {
     // The draw's material features a lit program samples: no PBR textures under classic shading, no
     // occlusion texture without ambient light to scale.
     static MaterialFeatures sampledFeatures(const GpuDraw& d, const Rig& rig, const RigFeatures& shaded);
-    // The draw's material uniforms and textures for program `p` (keyed `key`), textures with `sampler`
-    // (0: each texture's own filtering).
+    // The draw's material uniforms and textures for program `p` (keyed `key`), each texture with its
+    // sampling's sampler of `targets` (`fast`: the fast tier's filtering, F4).
     void bindMaterial(const FeatureKey& key, const MeshProgram& p, const GpuDraw& d, const Model& model,
-                      const Rig& rig, GLuint sampler);
+                      const Rig& rig, const Targets& targets, bool fast);
     void unbindMaterialSamplers();
     // Light linking: the lighting class (LinkResolution::litClass) of draw `d` of `source` (nullptr: the
     // scene's model; else the ground's: SceneDescription::groundPart), 0 when the frame does not link.

@@ -1,7 +1,9 @@
 #include "targets.h"
 
+#include "model/model.h"
 #include "renderlog.h"
 
+#include <algorithm>
 #include <cstdint>
 
 namespace lr::render {
@@ -153,11 +155,20 @@ bool Targets::createSurfaces(QOpenGLFunctions_3_3_Core* gl, QString* error) {
 void Targets::createCommon(QOpenGLFunctions_3_3_Core* gl) {
     // F4 (fast tier): bilinear filtering within the nearest mip level instead of trilinear between two,
     // ~20% of DamagedHelmet's frame on llvmpipe (three 2048² textures); its error is measured with the rest.
-    gl->glGenSamplers(1, &fastSampler);
-    gl->glSamplerParameteri(fastSampler, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
-    gl->glSamplerParameteri(fastSampler, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    gl->glSamplerParameteri(fastSampler, GL_TEXTURE_WRAP_S, GL_REPEAT);
-    gl->glSamplerParameteri(fastSampler, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    static constexpr GLint kWraps[] = {GL_REPEAT, GL_CLAMP_TO_EDGE,
+                                       GL_MIRRORED_REPEAT}; // TextureWrap's order
+    for (int fast = 0; fast < 2; ++fast)
+        for (int s = 0; s < 3; ++s)
+            for (int t = 0; t < 3; ++t)
+                for (int nearest = 0; nearest < 2; ++nearest) {
+                    GLuint& sampler = materialSamplers[fast][s][t][nearest];
+                    gl->glGenSamplers(1, &sampler);
+                    gl->glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER,
+                                            fast ? GL_LINEAR_MIPMAP_NEAREST : GL_LINEAR_MIPMAP_LINEAR);
+                    gl->glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, nearest ? GL_NEAREST : GL_LINEAR);
+                    gl->glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, kWraps[s]);
+                    gl->glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, kWraps[t]);
+                }
     gl->glGenVertexArrays(1, &emptyVao);
     gl->glGenTextures(1, &slotTexture); // MeshPass::primeSamplerSlots samples it in every slot
     gl->glBindTexture(GL_TEXTURE_2D, slotTexture);
@@ -169,11 +180,18 @@ void Targets::createCommon(QOpenGLFunctions_3_3_Core* gl) {
     gl->glBindTexture(GL_TEXTURE_2D, 0);
 }
 
+GLuint Targets::materialSampler(const TextureSampling& sampling, bool fast) const {
+    return materialSamplers[fast ? 1 : 0][int(sampling.wrapS)][int(sampling.wrapT)]
+                           [sampling.nearestMagnification ? 1 : 0];
+}
+
 void Targets::releaseCommon(QOpenGLFunctions_3_3_Core* gl) {
-    gl->glDeleteSamplers(1, &fastSampler);
+    constexpr GLsizei kSamplers = GLsizei(sizeof(materialSamplers) / sizeof(GLuint));
+    gl->glDeleteSamplers(kSamplers, &materialSamplers[0][0][0][0]);
     gl->glDeleteVertexArrays(1, &emptyVao);
     gl->glDeleteTextures(1, &slotTexture);
-    fastSampler = emptyVao = slotTexture = 0;
+    emptyVao = slotTexture = 0;
+    std::fill_n(&materialSamplers[0][0][0][0], kSamplers, 0u);
 }
 
 void Targets::release(QOpenGLFunctions_3_3_Core* gl) {

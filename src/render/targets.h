@@ -11,6 +11,10 @@
 #include <QSize>
 #include <QString>
 
+namespace lr {
+struct TextureSampling;
+}
+
 namespace lr::render {
 
 struct Targets {
@@ -43,9 +47,12 @@ struct Targets {
     int surfacesRevision = -1;
 
     // What every frame uses whatever the size (createCommon, releaseCommon): an empty vertex array for
-    // full-screen triangles, the fast tier's texture filtering (F4), a 1x1 texture for
-    // MeshPass::primeSamplerSlots.
-    GLuint emptyVao = 0, fastSampler = 0, slotTexture = 0;
+    // full-screen triangles, a 1x1 texture for MeshPass::primeSamplerSlots, and the material textures'
+    // samplers: one per wrap S × wrap T × magnification filter (the glTF sampler, model.h TextureSampling)
+    // × the tier's minification (trilinear; the fast tier's F4: bilinear within the nearest mip level).
+    GLuint emptyVao = 0, slotTexture = 0;
+    GLuint materialSamplers[2][3][3][2] = {}; // [fast][wrapS][wrapT][nearest magnification]
+    GLuint materialSampler(const TextureSampling& sampling, bool fast) const;
     void createCommon(QOpenGLFunctions_3_3_Core* gl);
     void releaseCommon(QOpenGLFunctions_3_3_Core* gl);
 

@@ -2,6 +2,7 @@
 
 #include "core/colour.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -19,11 +20,6 @@ const std::array<float, 256>& srgbTable() {
     return table;
 }
 
-int wrap(int i, int n) {
-    const int m = i % n;
-    return m < 0 ? m + n : m;
-}
-
 } // namespace
 
 glm::vec2 transformUv(const TextureTransform& t, const glm::vec2& uv) {
@@ -33,7 +29,36 @@ glm::vec2 transformUv(const TextureTransform& t, const glm::vec2& uv) {
     return t.offset + glm::vec2(c * q.x + s * q.y, -s * q.x + c * q.y);
 }
 
-TextureSampler::TextureSampler(const QImage& image, bool srgb) : m_srgb(srgb) {
+float TextureSampler::reduce(float t, TextureWrap wrap) {
+    switch (wrap) {
+    case TextureWrap::ClampToEdge:
+        return std::clamp(t, 0.0f, 1.0f);
+    case TextureWrap::MirroredRepeat:
+        return t - 2.0f * std::floor(0.5f * t);
+    case TextureWrap::Repeat:
+        break;
+    }
+    return t - std::floor(t);
+}
+
+int TextureSampler::wrapIndex(int i, int n, TextureWrap wrap) {
+    switch (wrap) {
+    case TextureWrap::ClampToEdge:
+        return std::clamp(i, 0, n - 1);
+    case TextureWrap::MirroredRepeat: {
+        const int m = i % (2 * n);
+        const int r = m < 0 ? m + 2 * n : m;
+        return r < n ? r : 2 * n - 1 - r;
+    }
+    case TextureWrap::Repeat:
+        break;
+    }
+    const int m = i % n;
+    return m < 0 ? m + n : m;
+}
+
+TextureSampler::TextureSampler(const QImage& image, bool srgb, const TextureSampling& sampling)
+    : m_srgb(srgb), m_sampling(sampling) {
     if (image.isNull()) return;
     const QImage* source = &image;
     if (image.format() != QImage::Format_RGBA8888) {
@@ -47,7 +72,8 @@ TextureSampler::TextureSampler(const QImage& image, bool srgb) : m_srgb(srgb) {
 }
 
 glm::vec4 TextureSampler::texel(int x, int y) const {
-    const uchar* p = m_bits + qsizetype(wrap(y, m_height)) * m_stride + qsizetype(wrap(x, m_width)) * 4;
+    const uchar* p = m_bits + qsizetype(wrapIndex(y, m_height, m_sampling.wrapT)) * m_stride +
+                     qsizetype(wrapIndex(x, m_width, m_sampling.wrapS)) * 4;
     if (m_srgb) {
         const auto& t = srgbTable();
         return {t[p[0]], t[p[1]], t[p[2]], float(p[3]) * (1.0f / 255.0f)};
@@ -59,8 +85,10 @@ glm::vec4 TextureSampler::sample(const glm::vec2& uv) const {
     if (isNull()) return glm::vec4(1.0f);
     if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) return texel(0, 0);
     // Texel centres at (i + 0.5) / size; keep the coordinate small before the float -> int conversion.
-    const float fx = (uv.x - std::floor(uv.x)) * float(m_width) - 0.5f;
-    const float fy = (uv.y - std::floor(uv.y)) * float(m_height) - 0.5f;
+    const float fx = reduce(uv.x, m_sampling.wrapS) * float(m_width) - 0.5f;
+    const float fy = reduce(uv.y, m_sampling.wrapT) * float(m_height) - 0.5f;
+    if (m_sampling.nearestMagnification) // the pixel's many samples average what minification would
+        return texel(int(std::floor(fx + 0.5f)), int(std::floor(fy + 0.5f)));
     const float x0 = std::floor(fx), y0 = std::floor(fy);
     const float ax = fx - x0, ay = fy - y0;
     const int ix = int(x0), iy = int(y0);

@@ -13,9 +13,9 @@ namespace lr::trace {
 
 namespace {
 
-TextureSampler samplerOf(const Model& model, int index, bool srgb) {
+TextureSampler samplerOf(const Model& model, int index, bool srgb, const TextureSampling& sampling) {
     if (index < 0 || size_t(index) >= model.textures.size()) return {};
-    return TextureSampler(model.textures[size_t(index)].image, srgb);
+    return TextureSampler(model.textures[size_t(index)].image, srgb, sampling);
 }
 
 } // namespace
@@ -61,11 +61,12 @@ std::shared_ptr<const TraceScene> TraceScene::build(const SceneDescription& scen
         for (const Material& material : m->materials) {
             MaterialTextures mt;
             mt.material = &material;
-            mt.base = samplerOf(*m, material.baseColorTexture, true);
-            mt.normal = samplerOf(*m, material.normalTexture, false);
-            mt.emissive = samplerOf(*m, material.emissiveTexture, true);
-            mt.metalRough = samplerOf(*m, material.metallicRoughnessTexture, false);
-            mt.occlusion = samplerOf(*m, material.occlusionTexture, false);
+            mt.base = samplerOf(*m, material.baseColorTexture, true, material.baseColorSampling);
+            mt.normal = samplerOf(*m, material.normalTexture, false, material.normalSampling);
+            mt.emissive = samplerOf(*m, material.emissiveTexture, true, material.emissiveSampling);
+            mt.metalRough =
+                samplerOf(*m, material.metallicRoughnessTexture, false, material.metallicRoughnessSampling);
+            mt.occlusion = samplerOf(*m, material.occlusionTexture, false, material.occlusionSampling);
             t->m_allOpaque = t->m_allOpaque && material.alphaMode == AlphaMode::Opaque;
             t->m_materials.push_back(std::move(mt));
         }

@@ -234,6 +234,70 @@ class TestMaterials : public QObject {
         QVERIFY(maxRelativeDifference(radiance(other, Rig(), floatSettings()), a) <= 1e-6);
     }
 
+    // The glTF sampler's wrap modes (issue 42): scale 2 along u reads u' = 2u, beyond the image on the
+    // plane's right half. Left red, right blue: REPEAT shows red then blue again, CLAMP_TO_EDGE the right
+    // edge's blue, MIRRORED_REPEAT blue then red. In every tier (the fast one filters with its own sampler)
+    // and through the traced tier's sampler (tests/trace/tst_trace_texture.cpp) alike.
+    void wrapModesFollowTheSampler_data() {
+        QTest::addColumn<int>("wrap");
+        QTest::addColumn<int>("quality");
+        for (Quality q : {Quality::Exact, Quality::Fast}) {
+            QTest::addRow("repeat, %s", qPrintable(toString(q))) << int(TextureWrap::Repeat) << int(q);
+            QTest::addRow("clamp, %s", qPrintable(toString(q))) << int(TextureWrap::ClampToEdge) << int(q);
+            QTest::addRow("mirror, %s", qPrintable(toString(q)))
+                << int(TextureWrap::MirroredRepeat) << int(q);
+        }
+    }
+    void wrapModesFollowTheSampler() {
+        QFETCH(int, wrap);
+        QFETCH(int, quality);
+        auto m = emissivePlane(quadrants(8, Qt::red, Qt::blue, Qt::red, Qt::blue));
+        m->materials[0].emissiveTransform.scale = {2.0f, 1.0f};
+        m->materials[0].emissiveSampling.wrapS = TextureWrap(wrap);
+        RenderSettings s = floatSettings();
+        s.quality = Quality(quality);
+        const FloatImage img = radiance(m, Rig(), s);
+        const auto isRed = [&](double u) {
+            const glm::vec4 c = img.at(pixelAt(u, 0.5).x(), pixelAt(u, 0.5).y());
+            return c.r > 0.9f && c.b < 0.1f;
+        };
+        const auto isBlue = [&](double u) {
+            const glm::vec4 c = img.at(pixelAt(u, 0.5).x(), pixelAt(u, 0.5).y());
+            return c.b > 0.9f && c.r < 0.1f;
+        };
+        QVERIFY(isRed(0.1) && isBlue(0.4)); // inside the image every mode agrees
+        switch (TextureWrap(wrap)) {
+        case TextureWrap::Repeat:
+            QVERIFY(isRed(0.6) && isBlue(0.9));
+            break;
+        case TextureWrap::ClampToEdge:
+            QVERIFY(isBlue(0.6) && isBlue(0.9));
+            break;
+        case TextureWrap::MirroredRepeat:
+            QVERIFY(isBlue(0.6) && isRed(0.9));
+            break;
+        }
+    }
+
+    // A NEAREST magnification filter keeps a 2×2 texture's texels hard: no pixel blends two of them.
+    void nearestMagnificationKeepsTexelsHard() {
+        auto smooth = emissivePlane(quadrants(2, Qt::red, Qt::blue, Qt::red, Qt::blue));
+        auto hard = std::make_shared<Model>(*smooth);
+        hard->materials[0].emissiveSampling.nearestMagnification = true;
+        const FloatImage a = radiance(smooth, Rig(), floatSettings());
+        const FloatImage b = radiance(hard, Rig(), floatSettings());
+        int blended = 0, hardBlended = 0;
+        for (int x = 0; x < kSize; ++x) {
+            const glm::vec4 ca = a.at(x, kSize / 2), cb = b.at(x, kSize / 2);
+            blended += ca.r > 0.05f && ca.b > 0.05f;
+            hardBlended += cb.r > 0.05f && cb.b > 0.05f;
+            QVERIFY2(near(cb, x < kSize / 2 ? glm::vec4(1, 0, 0, cb.a) : glm::vec4(0, 0, 1, cb.a), 1e-3f),
+                     qPrintable(QStringLiteral("x %1: %2").arg(x).arg(str(cb))));
+        }
+        QVERIFY2(blended > kSize / 4, "linear magnification blends the two texels across the plane");
+        QCOMPARE(hardBlended, 0);
+    }
+
     // OPAQUE ignores alpha: a base alpha of 0.3 draws exactly what alpha 1 draws, opaque.
     void opaqueIgnoresAlpha() {
         auto solid = planeScene();
