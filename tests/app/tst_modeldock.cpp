@@ -61,6 +61,10 @@ std::shared_ptr<Model> detailedModel() {
     m.doubleSided = true;
     m.baseColorTransform.offset = glm::vec2(0.5f, 0.0f);
     m.baseColorTransform.scale = glm::vec2(2.0f, 2.0f);
+    m.metallicRoughnessSampling = {TextureWrap::ClampToEdge, TextureWrap::MirroredRepeat, true};
+    m.extensions = {
+        {QStringLiteral("KHR_materials_clearcoat"), QStringLiteral("{\"clearcoatFactor\":1}")},
+        {QStringLiteral("KHR_materials_emissive_strength"), QStringLiteral("{\"emissiveStrength\":4}")}};
     Material classic;
     classic.name = QStringLiteral("old plastic");
     classic.shininess = 40.0f;
@@ -129,20 +133,45 @@ class TestModelDock : public QObject {
         QCOMPARE(v.value(QStringLiteral("normal texture")), QStringLiteral("none"));
         QCOMPARE(v.value(QStringLiteral("emissive texture")), QStringLiteral("none"));
         // The base colour texture's KHR_texture_transform, as a row under it; identity transforms have none.
+        // The metallic-roughness texture's sampler likewise; glTF's default sampler has none.
+        int extensionRows = 0;
         for (int r = 0; r < tree.rowCount(metal); ++r) {
             const QModelIndex row = tree.index(r, 0, metal);
-            const bool base = row.data().toString() == QLatin1String("base colour texture");
-            QCOMPARE(tree.rowCount(row), base ? 1 : 0);
+            const QString name = row.data().toString();
+            const bool base = name == QLatin1String("base colour texture");
+            const bool metalRough = name == QLatin1String("metallic-roughness texture");
+            if (name == QLatin1String("extensions")) {
+                // Issue 42: every extension with its values; the ones not rendered are counted and say so.
+                ++extensionRows;
+                QCOMPARE(tree.index(r, 1, metal).data().toString(), QStringLiteral("1 not rendered"));
+                QCOMPARE(tree.rowCount(row), 2);
+                QCOMPARE(tree.index(0, 0, row).data().toString(), QStringLiteral("KHR_materials_clearcoat"));
+                QCOMPARE(tree.index(0, 1, row).data().toString(), QStringLiteral("{\"clearcoatFactor\":1}"));
+                QVERIFY(tree.index(0, 0, row)
+                            .data(Qt::ToolTipRole)
+                            .toString()
+                            .contains(QLatin1String("Not rendered")));
+                QCOMPARE(tree.index(1, 0, row).data(Qt::ToolTipRole).toString(), QStringLiteral("Rendered"));
+                continue;
+            }
+            QCOMPARE(tree.rowCount(row), base || metalRough ? 1 : 0);
             if (base)
                 QCOMPARE(tree.index(0, 1, row).data().toString(),
                          QStringLiteral("offset 0.5, 0; rotation 0°; scale 2, 2"));
+            if (metalRough) {
+                QCOMPARE(tree.index(0, 0, row).data().toString(), QStringLiteral("sampler"));
+                QCOMPARE(tree.index(0, 1, row).data().toString(),
+                         QStringLiteral("wrap S clamp-to-edge, T mirrored-repeat; magnified nearest"));
+            }
         }
+        QCOMPARE(extensionRows, 1);
         const auto classic = rows(tree, tree.index(1, 0, materials));
         QCOMPARE(classic.value(QStringLiteral("physically based values")),
                  QStringLiteral("converted from specular and shininess"));
         QCOMPARE(classic.value(QStringLiteral("shininess (classic)")), QStringLiteral("40"));
         QCOMPARE(classic.value(QStringLiteral("double-sided")), QStringLiteral("no"));
         QCOMPARE(classic.value(QStringLiteral("alpha mode")), QStringLiteral("opaque"));
+        QVERIFY(!classic.contains(QStringLiteral("extensions"))); // none listed, no row
 
         const QModelIndex textures = tree.branchIndex(ModelTreeModel::Textures);
         QCOMPARE(rows(tree, textures).value(QStringLiteral("albedo.png")), QStringLiteral("4×2"));
