@@ -321,11 +321,11 @@ float schlickToward(vec3 m, vec3 V) {
     return schlickWeight(sqrt(saturate(0.5 + 0.5 * c)));
 }
 
-// shadeAreaLightPbr's direct terms: diffuse = c_diff (1 − F0) (1 − w) D (per unit of colour), and the
+// shadeAreaLightPbr's direct terms: diffuse = c_diff (1 − 0.04) (1 − w) D (per unit of colour), and the
 // specular's LTC integral I × the lobe's norm n, split by Schlick's weight ws at the lobe's mean direction:
 // specular = F0·scaleI + biasI with scaleI = (1 − ws)·n·I, biasI = ws·n·I.
 struct AreaPbr {
-    float diffuse;  // (1 − w)·D: × c_diff (1 − F0)
+    float diffuse;  // (1 − w)·D: × c_diff (1 − F0_dielectric)
     float scaleI;   // (1 − ws)·n·I: × F0
     float biasI;    // ws·n·I
 };

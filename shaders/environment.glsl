@@ -1,7 +1,7 @@
 // Environment lighting (issue 15; docs/lighting-models.md "Environment"): what the rig's environment adds
 // at a surface, approximating the definition above `struct Environment` in src/core/environment.h (the
 // limit of one directional light per texel) with the prefiltered environment of src/render/environmentgl.h:
-//   physically based  occlusion · (c_diff (1 − F0) W · E(n)/π + L_spec(R, roughness) · (F0·A + B))
+//   physically based  occlusion · (c_diff (1 − F0_dielectric) W · E(n)/π + L_spec(R, roughness) · (F0·A + B))
 //                      (split sum; A, B, W from the table at (n·v, roughness), core/envbrdf.h);
 //   classic            albedo · E(n)/π (Lambert; half-Lambert: the SH9 with the band weights 4/3, 1, 8/15)
 //                      + ks · N_s · L_spec(R, roughness_s) (Phong / Blinn-Phong: the GGX level whose lobe
@@ -101,7 +101,7 @@ vec3 shadeEnvironment(Surface s, vec3 V) {
     float roughness = sqrt(p.alpha);  // clamped as the lights' lobe: [kMinRoughness, 1]
     float nv = nDotV > 1e-4 ? (nDotV < 1.0 ? nDotV : 1.0) : 1e-4;
     vec3 dfg = textureLod(uEnvDfg, vec2(nv, roughness), 0.0).rgb;
-    vec3 diffuse = p.cDiff * (vec3(1.0) - p.f0) * (dfg.b * kEnvInvPi) * envIrradiance(N, vec3(1.0), 1.0);
+    vec3 diffuse = p.cDiff * ((1.0 - kDielectricF0) * dfg.b * kEnvInvPi) * envIrradiance(N, vec3(1.0), 1.0);
     // The split sum prefiltered its levels with N = V = R; a rough lobe's energy leans from R towards N.
     // Its dominant direction (Lagarde & de Rousiers 2014, "Moving Frostbite to PBR", listing 22, α = p.alpha).
     float smoothness = 1.0 - p.alpha;

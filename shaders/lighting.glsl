@@ -252,7 +252,11 @@ struct PbrLobes {
     vec3 specular;
 };
 
-// One light's two lobes per unit of light: diffuse = (1 - F) c_diff / π · cosTerm, specular = F D V · N·L.
+// The diffuse lobe's weight 1 - F_dielectric, (1 - 0.04)(1 - w): the specification's mix (lighting.h).
+float dielectricDiffuseWeight(float w) { return (1.0 - kDielectricF0) * (1.0 - w); }
+
+// One light's two lobes per unit of light: diffuse = (1 - F_dielectric) c_diff / π · cosTerm,
+// specular = F D V · N·L.
 PbrLobes pbrLobes(vec3 N, vec3 L, vec3 V, vec3 cDiff, vec3 f0, float alpha, float cosTerm) {
     PbrLobes o;
     // H from two unit vectors (lighting.h): |L + V| <= 2 cannot overflow, so one inversesqrt (lighting.h
@@ -260,8 +264,9 @@ PbrLobes pbrLobes(vec3 N, vec3 L, vec3 V, vec3 cDiff, vec3 f0, float alpha, floa
     vec3 h = L + V;
     float hh = dot(h, h);
     vec3 H = hh > 1e-12 ? h * inversesqrt(hh) : N;
-    vec3 F = fresnelSchlick(f0, dot(V, H));
-    o.diffuse = (vec3(1.0) - F) * cDiff * (cosTerm * kInvPi);
+    float w = schlickWeight(dot(V, H));
+    vec3 F = f0 + (vec3(1.0) - f0) * w;
+    o.diffuse = cDiff * (dielectricDiffuseWeight(w) * cosTerm * kInvPi);
     float nDotL = dot(N, L);
     float nDotV = abs(dot(N, V));
     nDotV = nDotV > kMinNDotV ? nDotV : kMinNDotV;

@@ -165,7 +165,7 @@ PbrSurface pbrSurfaceLit(Surface s, vec3 V) {
 // What an area light adds under physically based shading (lighting_area.h shadeAreaLightPbr).
 vec3 shadeAreaLightPbr(ShadeLight l, Surface s, ShadeSettings st, vec3 V, PbrSurface p) {
     AreaPbr a = areaPbr(l, s.position, s.normal, V, p.ltc, any(greaterThan(p.cDiff, vec3(0.0))));
-    vec3 direct = l.color * (p.cDiff * (vec3(1.0) - p.f0) * a.diffuse) + l.specular * (p.f0 * a.scaleI + vec3(a.biasI));
+    vec3 direct = l.color * (p.cDiff * ((1.0 - kDielectricF0) * a.diffuse)) + l.specular * (p.f0 * a.scaleI + vec3(a.biasI));
 #ifdef LR_SHADOWS
     direct *= lrShadow(l, s, safeNormalize(l.position - s.position, s.normal), true);
 #endif

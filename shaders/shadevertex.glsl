@@ -87,8 +87,8 @@ VertexLight shadeVertex(vec3 P, vec3 N, float shininess, ShadeSettings st) {
 // per pixel. With w = (1 - V·H)^5 (Schlick's weight, F = F0 (1 - w) + w) and per light
 // a = attenuation·Sc·D·V·N·L (the specular lobe without F), the exact sums are
 //   specular = Σ a·F = F0·(A - B) + B,         A = Σ a, B = Σ a·w
-//   diffuse  = Σ attenuation·colour·(1 - F)·c_diff·cosTerm/π = c_diff·(1 - F0)·E,   E = Σ attenuation·colour·cosTerm·(1 - w)/π
-// ((1 - F) = (1 - F0)(1 - w)), so F0 and c_diff (base colour, metallic: textured) apply per pixel exactly;
+//   diffuse  = Σ attenuation·colour·(1 - F_d)·c_diff·cosTerm/π = c_diff·(1 - 0.04)·E,   E = Σ attenuation·colour·cosTerm·(1 - w)/π
+// ((1 - F_d) = (1 - 0.04)(1 - w), the dielectric's Fresnel: lighting.h), so F0 and c_diff (base colour, metallic: textured) apply per pixel exactly;
 // what is per vertex is D·V and w, evaluated with the vertex normal (no normal map), the vertex's viewer
 // and the roughness there (the factor × the metal-rough texture's coarse level), then interpolated.
 struct VertexLightPbr {
@@ -184,7 +184,7 @@ VertexLightPbr shadeVertexPbr(vec3 P, vec3 N, float roughness, ShadeSettings st)
 vec3 shadePixelPbr(Surface s, ShadeSettings st, vec3 A, vec3 B, vec3 E, vec3 ambient, vec3 added) {
     PbrSurface p = pbrSurface(s);
     float occlusion = saturate(s.occlusion);
-    return pbrSceneAmbient(s, st, p) + p.cDiff * (vec3(1.0) - p.f0) * E + p.f0 * (A - B) + B +
+    return pbrSceneAmbient(s, st, p) + p.cDiff * (1.0 - kDielectricF0) * E + p.f0 * (A - B) + B +
            p.cDiff * (ambient * occlusion) + added + s.emissive;
 }
 #endif  // LR_PBR

@@ -1,13 +1,13 @@
 // The split-sum environment BRDF (Karis 2013, "Real Shading in Unreal Engine 4"): what the glTF BRDF
-// (lighting.h's PBR block: GGX D, height-correlated Smith V, Schlick F, Lambert diffuse × (1 − F)) reflects
-// of a UNIFORM environment of radiance 1, per (n·v, roughness). The renderer uploads it once as a lookup
-// table (render/environmentgl.h) and multiplies it with the prefiltered environment
+// (lighting.h's PBR block: GGX D, height-correlated Smith V, Schlick F, Lambert diffuse × (1 − F_dielectric))
+// reflects of a UNIFORM environment of radiance 1, per (n·v, roughness). The renderer uploads it once as a
+// lookup table (render/environmentgl.h) and multiplies it with the prefiltered environment
 // (docs/lighting-models.md "Environment"). In double; no Qt, no GL.
 //
 // With w = (1 − v·h)^5 (Schlick's weight, F = F0 + (1 − F0)·w):
 //   scale   A = ∫ (1 − w) D V (n·l) dω          specular = F0·A + B   (exact in a uniform environment)
 //   bias    B = ∫ w D V (n·l) dω
-//   diffuse W = (1/π) ∫ (1 − w) (n·l) dω        diffuse  = c_diff · (1 − F0) · W   (exact likewise)
+//   diffuse W = (1/π) ∫ (1 − w) (n·l) dω        diffuse  = c_diff · (1 − 0.04) · W   (exact likewise)
 // W depends on n·v only (v·h = sqrt((1 + l·v)/2) whatever the roughness).
 #pragma once
 

@@ -432,7 +432,7 @@ Estimate EnvironmentField::integrate(const lighting::Surface<double>& s,
     const double alpha = lighting::pbrAlpha(s.roughness);
     const bool halfLambert = !pbr && m_diffuse == DiffuseModel::HalfLambert;
     // The deterministic part: k · ∫ L(ω) kernel(n·ω) dω.
-    const V k = pbr ? cDiff * (V(1.0) - f0) / kPi : s.albedo / kPi;
+    const V k = pbr ? cDiff * (1.0 - lighting::kDielectricF0) / kPi : s.albedo / kPi;
     const auto kernel = [&](double nDotL) {
         return halfLambert ? lighting::diffuseHalfLambert(nDotL) : lighting::diffuseLambert(nDotL);
     };

@@ -169,8 +169,17 @@ template <typename T> T rimTerm(Vec3<T> direction, Vec3<T> N, Vec3<T> V, T expon
 
 // ---- physically based: the glTF 2.0 metal-rough BRDF (specification, Appendix B) ----
 // α = roughness²; D Trowbridge-Reitz/GGX; V the height-correlated Smith visibility G / (4 |N·L| |N·V|);
-// F Schlick's Fresnel; diffuse (1 - F) c_diff / π. Radiance of a punctual light = f · E · N·L, where E is
-// the light's illuminance at the surface (candela / d² × falloff × cone, or lux for a directional light).
+// F Schlick's Fresnel; diffuse (1 - F_dielectric) c_diff / π. Radiance of a punctual light = f · E · N·L,
+// where E is the light's illuminance at the surface (candela / d² × falloff × cone, or lux for a
+// directional light).
+//
+// The diffuse weight is the specification's own material, mix(dielectric_brdf, metal_brdf, metallic)
+// (Appendix B.3.5, as the Khronos sample viewer and three.js evaluate it), not its simplified "final" form:
+// the diffuse lobe belongs to the dielectric alone, whose fresnel_mix weighs it by 1 - F with the
+// dielectric's F0 = 0.04, so c_diff (1 - F_dielectric) = baseColor (1 - metallic) (1 - 0.04) (1 - w). The
+// "final" form's (1 - F) with F0 = mix(0.04, baseColor, metallic) is the same at metallic 0 and 1 only;
+// on a partly metallic texel it darkened the diffuse by the metal's Fresnel. The specular lobe is the
+// same in both (F with the mixed F0, Schlick being linear in F0).
 
 inline constexpr double kPi = 3.14159265358979323846;
 // Perceptual roughness is floored here (three.js's floor; Filament's is 0.045): at 0 a punctual light's
@@ -180,6 +189,10 @@ inline constexpr double kMinRoughness = 0.0525;
 inline constexpr double kMinNDotV = 1e-5;
 // Dielectric reflectance at normal incidence (IOR 1.5).
 inline constexpr double kDielectricF0 = 0.04;
+// The diffuse lobe's weight 1 - F_dielectric for a Schlick weight w = (1 - |V·H|)^5: (1 - 0.04)(1 - w).
+template <typename T> T dielectricDiffuseWeight(T w) {
+    return T(1.0 - kDielectricF0) * (T(1) - w);
+}
 
 // α = max(roughness, kMinRoughness)²; roughness above 1 or NaN -> 1.
 template <typename T> T pbrAlpha(T roughness) {
@@ -232,7 +245,8 @@ template <typename T> Vec3<T> pbrF0(const Vec3<T>& baseColor, T metallic) {
     return Vec3<T>(T(kDielectricF0)) * (T(1) - m) + b * m;
 }
 
-// One punctual light's two lobes at the surface, per unit of light: diffuse = (1 - F) c_diff / π · cosTerm
+// One punctual light's two lobes at the surface, per unit of light: diffuse = (1 - F_dielectric) c_diff / π ·
+// cosTerm
 // (cosTerm: N·L, or the half-Lambert wrap when a light asks for it), specular = F D V · N·L. The caller
 // multiplies by the light's colour, intensity and attenuation.
 template <typename T> struct PbrLobes {
@@ -250,8 +264,9 @@ PbrLobes<T> pbrLobes(Vec3<T> N, Vec3<T> L, Vec3<T> V, const Vec3<T>& cDiff, cons
     const Vec3<T> h = L + V;
     const T hh = glm::dot(h, h);
     const Vec3<T> H = hh > T(1e-12) ? h / std::sqrt(hh) : N;
-    const Vec3<T> F = fresnelSchlick(f0, glm::dot(V, H));
-    o.diffuse = (Vec3<T>(1) - F) * cDiff * (cosTerm * T(1.0 / kPi));
+    const T w = schlickWeight(glm::dot(V, H));
+    const Vec3<T> F = f0 + (Vec3<T>(1) - f0) * w;
+    o.diffuse = cDiff * (dielectricDiffuseWeight(w) * cosTerm * T(1.0 / kPi));
     const T nDotL = glm::dot(N, L);
     if (!(nDotL > T(0))) return o; // no specular from behind (a wrapped diffuse may still light it)
     T nDotV = std::abs(glm::dot(N, V));

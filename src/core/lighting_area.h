@@ -26,8 +26,9 @@
 //     cosine's, × the lobe's norm × Schlick's Fresnel at the lobe's mean direction over the light (exact
 //     for small emitters; Hill's F0·scale + bias, the lobe's average Fresnel, made a dielectric's grazing
 //     highlight 3–10× too dim and its tail too bright).
-//   PBR diffuse's (1 − F): Schlick's weight at the polygon's mean direction (exact for small emitters).
-//   Phong: (R·ω)^n as the LTC diag(s, s, 1) around R, s² = 2/(n + 1) (same integral and peak); Blinn-Phong:
+//   PBR diffuse's (1 − F_dielectric): Schlick's weight at the polygon's mean direction (exact for small
+//   emitters). Phong: (R·ω)^n as the LTC diag(s, s, 1) around R, s² = 2/(n + 1) (same integral and peak);
+//   Blinn-Phong:
 //     the same with n/4 (the Blinn lobe's width at normal incidence).
 #pragma once
 
@@ -219,13 +220,13 @@ Vec3<T> shadeAreaLightPbr(const ShadeLight<T>& l, const Surface<T>& s, const Sha
     const Polygon<T> local = emitterPolygon(l, s.position, f);
     const Polygon<T> clipped = normalized(clipHorizon(local));
     const Vec3<T> toward = f.local(emitterToward(l, s.position));
-    // Diffuse: the form factor (or the half-Lambert wrap) × (1 − F) at the mean direction.
+    // Diffuse: the form factor (or the half-Lambert wrap) × (1 − F_dielectric) at the mean direction.
     const T D = l.diffuse == DiffuseModel::Lambert
                     ? (clipped.n >= 3 ? std::abs(polygonVector(clipped).z) * T(1.0 / kPi) : T(0))
                     : halfLambertIntegral(local, toward);
     const Vec3<T> Vl = f.local(V);
     const T w = schlickWeight(Vl, meanDirection(clipped, toward));
-    const Vec3<T> diffuse = cDiff * (Vec3<T>(1) - f0) * ((T(1) - w) * D);
+    const Vec3<T> diffuse = cDiff * (dielectricDiffuseWeight(w) * D);
     // Specular: the LTC integral × the lobe's norm (scale + bias) × Schlick's Fresnel at the lobe's mean
     // direction over the light, the polygon clipped to the surface's horizon (where the BRDF is zero) before
     // the transform and to the cosine's after it.

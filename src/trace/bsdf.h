@@ -1,5 +1,5 @@
 // The glTF 2.0 metal-rough BRDF as the path tracer samples it. Its value is core's, one definition
-// (src/core/lighting.h pbrLobes: Trowbridge-Reitz D, height-correlated Smith V, Schlick F, (1 − F)
+// (src/core/lighting.h pbrLobes: Trowbridge-Reitz D, height-correlated Smith V, Schlick F, (1 − F_dielectric)
 // c_diff / π), so the traced image, the raster and the double reference shade the same material. This
 // adds what a path tracer needs besides the value: a direction drawn from the lobes and its density.
 //   - specular: core's montecarlo::SpecularLobe, the lobe the reference's integrators sample: the half

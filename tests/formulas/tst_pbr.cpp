@@ -98,6 +98,45 @@ class TestPbr : public QObject {
         LR_NEAR_VEC(fresnelSchlick(Vec3d(0.04), 1.0), Vec3d(0.04), 1e-15);
     }
 
+    // The material is the specification's mix(dielectric_brdf, metal_brdf, metallic) (Appendix B.3.5, issue
+    // 42): the lobes at any metallic are the metallic-weighted mean of the pure dielectric's and the pure
+    // metal's, and the dielectric's diffuse is c_diff (1 − F_dielectric) / π with F0 = 0.04, written out
+    // here from B.3.5's fresnel_mix. The simplified "final" form (1 − F with the mixed F0) fails the first
+    // on a partly metallic material by the metal's Fresnel: at metallic 0.5, base 1 and V·H = 0.1 its
+    // diffuse is half the mix's.
+    void materialIsTheSpecificationsMix() {
+        Gen g(42);
+        for (int i = 0; i < 2000; ++i) {
+            const Vec3d N(0, 0, 1), L = g.around(N, g.uniform(0, kPi / 2 * 0.99)),
+                                    V = g.around(N, g.uniform(0, kPi / 2 * 0.99));
+            const Vec3d base(g.uniform(0, 1), g.uniform(0, 1), g.uniform(0, 1));
+            const double m = g.uniform(0, 1), alpha = pbrAlpha(g.uniform(0, 1)), cosTerm = glm::dot(N, L);
+            const auto lobes = [&](double metallic) {
+                return pbrLobes(N, L, V, pbrDiffuseColor(base, metallic), pbrF0(base, metallic), alpha,
+                                cosTerm);
+            };
+            const PbrLobes<double> f = lobes(m), dielectric = lobes(0.0), metal = lobes(1.0);
+            LR_NEAR_VEC(f.diffuse + f.specular,
+                        (1 - m) * (dielectric.diffuse + dielectric.specular) +
+                            m * (metal.diffuse + metal.specular),
+                        1e-12 * (1 + glm::length(f.specular)));
+            const Vec3d H = glm::normalize(L + V);
+            const double fDielectric = naiveF(kDielectricF0, glm::dot(V, H));
+            LR_NEAR_VEC(f.diffuse, base * (1 - m) * (1 - fDielectric) * cosTerm / kPi, 1e-12);
+            QCOMPARE(metal.diffuse, Vec3d(0.0)); // a metal has no diffuse lobe
+        }
+        // The "final" form differs: base 1, metallic 0.5 (mixed F0 0.52), V·H = 0.1 (Schlick's weight 0.59).
+        const Vec3d N(0, 0, 1), V = dir(84.26, 0), L = dir(84.26, 180);
+        const double vh = glm::dot(V, glm::normalize(L + V));
+        const PbrLobes<double> f =
+            pbrLobes(N, L, V, pbrDiffuseColor(Vec3d(1), 0.5), pbrF0(Vec3d(1), 0.5), 0.25, 1.0);
+        const double finalForm = 0.5 * (1 - naiveF(0.52, vh)) / kPi,
+                     mixForm = 0.5 * (1 - naiveF(0.04, vh)) / kPi;
+        LR_NEAR(f.diffuse.x, mixForm, 1e-12);
+        QVERIFY2(mixForm > 1.1 * finalForm,
+                 qPrintable(QStringLiteral("%1 vs %2").arg(mixForm).arg(finalForm)));
+    }
+
     // ∫ D(h) (n·h) dω = 2π ∫₀¹ D(μ) μ dμ = 1: the microfacets' projected area is the macro-surface's.
     void distributionIsNormalised() {
         for (double r : kRoughness) {
@@ -201,7 +240,9 @@ class TestPbr : public QObject {
                 for (int c = 0; c < 3; ++c) {
                     const double f0 = 0.04 * (1 - s.metallic) + s.albedo[c] * s.metallic;
                     const double F = naiveF(f0, glm::dot(V, H));
-                    const double diffuse = (1 - F) * s.albedo[c] * (1 - s.metallic) / kPi;
+                    // The specification's mix: the dielectric's own Fresnel (F0 0.04) weighs the diffuse.
+                    const double fDielectric = naiveF(0.04, glm::dot(V, H));
+                    const double diffuse = (1 - fDielectric) * s.albedo[c] * (1 - s.metallic) / kPi;
                     const double spec = F * naiveD(nh, a) * naiveV(nl, std::max(nv, 1e-5), a);
                     expected[c] += win * l.color[c] * (diffuse + spec) * nl;
                 }
