@@ -16,8 +16,11 @@ Bsdf::Bsdf(const glm::dvec3& n, const glm::dvec3& v, const glm::dvec3& baseColor
       m_f0(lighting::pbrF0(baseColor, metallic)), m_alpha(lighting::pbrAlpha(roughness)),
       m_specular(n, v, true, m_alpha, SpecularModel::BlinnPhong, 1.0) {
     const double nDotV = std::clamp(glm::dot(n, v), 0.0, 1.0);
-    const glm::dvec3 f = lighting::fresnelSchlick(m_f0, nDotV);
-    const double spec = luminance(f), diff = luminance(m_cDiff * (glm::dvec3(1.0) - f));
+    // The lobes' shares at normal-ish incidence (V·H ≈ N·V), to choose which to sample: the diffuse weighed
+    // by the dielectric's Fresnel as pbrLobes weighs it (the specification's mix).
+    const double w = lighting::schlickWeight(nDotV);
+    const glm::dvec3 f = m_f0 + (glm::dvec3(1.0) - m_f0) * w;
+    const double spec = luminance(f), diff = luminance(m_cDiff) * lighting::dielectricDiffuseWeight(w);
     m_pSpecular = spec + diff > 0.0 ? std::clamp(spec / (spec + diff), 0.1, 0.9) : 0.5;
     if (!(luminance(m_cDiff) > 0.0)) m_pSpecular = 1.0;
 }
