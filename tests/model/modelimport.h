@@ -9,6 +9,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QString>
+#include <QTemporaryDir>
 #include <glm/geometric.hpp>
 #include <memory>
 
@@ -37,6 +38,17 @@ inline std::shared_ptr<Model> mustLoad(const QString& path, const ModelLoadOptio
     ModelLoadResult r = loadModel(path, options);
     if (!r.ok()) qWarning("%s", qPrintable(r.error));
     return r.model;
+}
+
+// `gltf` written as `name` in `dir` and loaded; null (with the reason logged) when either fails.
+inline std::shared_ptr<Model> loadGltfJson(const QJsonObject& gltf, const QTemporaryDir& dir,
+                                           const QString& name) {
+    const QString path = dir.filePath(name);
+    if (!writeFile(path, QJsonDocument(gltf).toJson())) {
+        qWarning("cannot write %s", qPrintable(path));
+        return nullptr;
+    }
+    return mustLoad(path);
 }
 
 } // namespace lr::test

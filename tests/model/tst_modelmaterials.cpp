@@ -226,9 +226,7 @@ void TestModelMaterials::gltfEmissiveStrengthFindsItsMaterial() {
     meshes[0] = mesh;
     gltf[QStringLiteral("meshes")] = meshes;
     QTemporaryDir dir;
-    const QString path = dir.filePath(QStringLiteral("strength.gltf"));
-    QVERIFY(writeFile(path, QJsonDocument(gltf).toJson()));
-    const auto m = mustLoad(path);
+    const auto m = loadGltfJson(gltf, dir, QStringLiteral("strength.gltf"));
     QVERIFY(m);
     const auto emissive = [&](const glm::vec3& factor) {
         for (const Material& mat : m->materials)
@@ -278,9 +276,7 @@ void TestModelMaterials::gltfSamplersAndExtensionsAreRead() {
                                 QJsonObject{{QStringLiteral("name"), QStringLiteral("blue")}}}}};
     gltf[QStringLiteral("extensions")] = root;
     QTemporaryDir dir;
-    const QString path = dir.filePath(QStringLiteral("extended.gltf"));
-    QVERIFY(writeFile(path, QJsonDocument(gltf).toJson()));
-    const auto m = mustLoad(path);
+    const auto m = loadGltfJson(gltf, dir, QStringLiteral("extended.gltf"));
     QVERIFY(m);
 
     // Texture 0 is "transformed"'s base colour: clamp along S, mirrored along T, magnified nearest; its
@@ -324,9 +320,7 @@ void TestModelMaterials::undecodableTexturesNameTheirRole() {
         images[i] = QJsonObject{{QStringLiteral("uri"), QStringLiteral("data:image/png;base64,AAAA")}};
     gltf[QStringLiteral("images")] = images;
     QTemporaryDir dir;
-    const QString path = dir.filePath(QStringLiteral("broken.gltf"));
-    QVERIFY(writeFile(path, QJsonDocument(gltf).toJson()));
-    const auto m = mustLoad(path);
+    const auto m = loadGltfJson(gltf, dir, QStringLiteral("broken.gltf"));
     QVERIFY(m);
     QCOMPARE(test::modelProblems(*m), QString());
     const Material* mr = materialNamed(*m, QStringLiteral("metalRough"));
@@ -356,9 +350,7 @@ void TestModelMaterials::specularGlossinessWarns() {
     materials[1] = blend;
     gltf[QStringLiteral("materials")] = materials;
     QTemporaryDir dir;
-    const QString path = dir.filePath(QStringLiteral("specgloss.gltf"));
-    QVERIFY(writeFile(path, QJsonDocument(gltf).toJson()));
-    const auto m = mustLoad(path);
+    const auto m = loadGltfJson(gltf, dir, QStringLiteral("specgloss.gltf"));
     QVERIFY(m);
     const Material* mat = materialNamed(*m, QStringLiteral("blend"));
     QVERIFY(mat);
