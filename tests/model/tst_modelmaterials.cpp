@@ -80,6 +80,7 @@ class TestModelMaterials : public QObject {
     void gltfEmissiveStrengthFindsItsMaterial();
     void undecodableTexturesNameTheirRole();
     void gltfSamplersAndExtensionsAreRead();
+    void objClampIsClampToEdge();
     void specularGlossinessWarns();
     void textureTransformInvertsAssimpsConversion();
     void objShininessConvertsToRoughness();
@@ -309,6 +310,30 @@ void TestModelMaterials::gltfSamplersAndExtensionsAreRead() {
              1);
     // Materials without extensions list none.
     QVERIFY(materialNamed(*m, QStringLiteral("metalRough"))->extensions.empty());
+}
+
+// Other formats' wrap modes reach the sampling too: MTL's "-clamp on" is CLAMP_TO_EDGE on both axes; without
+// it the map repeats.
+void TestModelMaterials::objClampIsClampToEdge() {
+    QTemporaryDir dir;
+    for (const char* file : {"quad.obj", "checker.png"})
+        QVERIFY(QFile::copy(dataFile(QLatin1String(file)), dir.filePath(QLatin1String(file))));
+    QFile mtl(dataFile(QStringLiteral("quad.mtl")));
+    QVERIFY(mtl.open(QIODevice::ReadOnly));
+    const QByteArray text = mtl.readAll();
+    for (const bool clamp : {false, true}) {
+        QByteArray edited = text;
+        if (clamp) edited.replace("map_Kd checker.png", "map_Kd -clamp on checker.png");
+        QVERIFY(writeFile(dir.filePath(QStringLiteral("quad.mtl")), edited));
+        const auto m = mustLoad(dir.filePath(QStringLiteral("quad.obj")));
+        QVERIFY(m);
+        const Material* mat = materialNamed(*m, QStringLiteral("checker"));
+        QVERIFY(mat && mat->baseColorTexture >= 0);
+        const TextureWrap expected = clamp ? TextureWrap::ClampToEdge : TextureWrap::Repeat;
+        QVERIFY(mat->baseColorSampling.wrapS == expected);
+        QVERIFY(mat->baseColorSampling.wrapT == expected);
+        QVERIFY(!mat->baseColorSampling.nearestMagnification);
+    }
 }
 
 // pbr.gltf with its metallic-roughness (image 1) and occlusion (image 2) images broken: not used, and the
