@@ -1,9 +1,7 @@
 // glTF material extensions that Assimp 5.2.5's glTF importer drops (KHR_materials_emissive_strength) and
-// the list of every material's extensions, read from the file's own JSON. preflight() has already checked the
-// GLB header's lengths against the file.
+// the list of every material's extensions, read from the file's own JSON.
 #include "importdetail.h"
 
-#include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -14,21 +12,9 @@ namespace {
 
 constexpr char kEmissiveStrength[] = "KHR_materials_emissive_strength";
 
-// The JSON text of a .gltf, or of a GLB's JSON chunk (read alone: the binary chunk can be large).
-QByteArray gltfJson(QFile& file) {
-    const QByteArray header = file.peek(20);
-    if (!header.startsWith("glTF")) return file.readAll();
-    const qint64 length = glbJsonLength(header, file.size());
-    if (length <= 0 || !file.seek(20)) return {};
-    return file.read(length);
-}
-
 } // namespace
 
-GltfMaterialExtrasByName readGltfMaterialExtras(const QString& path) {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) return {};
-    const QByteArray json = gltfJson(file);
+GltfMaterialExtrasByName readGltfMaterialExtras(const QByteArray& json) {
     if (!json.contains("_materials_")) return {}; // the common case costs one search
     const QJsonDocument doc = QJsonDocument::fromJson(json);
     GltfMaterialExtrasByName out;
@@ -39,13 +25,11 @@ GltfMaterialExtrasByName readGltfMaterialExtras(const QString& path) {
         if (factor.size() == 3)
             for (int i = 0; i < 3; ++i)
                 e.emissiveFactor[i] = float(factor[i].toDouble());
-        const QJsonValue strength = mat.value(QLatin1String("extensions"))
-                                        .toObject()
-                                        .value(QLatin1String(kEmissiveStrength))
+        const QJsonObject extensions = mat.value(QLatin1String("extensions")).toObject();
+        const QJsonValue strength = extensions.value(QLatin1String(kEmissiveStrength))
                                         .toObject()
                                         .value(QLatin1String("emissiveStrength"));
         e.emissiveStrength = strength.isDouble() ? strength.toDouble() : 1.0;
-        const QJsonObject extensions = mat.value(QLatin1String("extensions")).toObject();
         e.extensionCount = int(extensions.size());
         for (auto it = extensions.begin(); it != extensions.end(); ++it) {
             if (int(e.extensions.size()) >= kMaxMaterialExtensions) break;

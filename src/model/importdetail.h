@@ -35,14 +35,15 @@ bool convertMeshes(const aiScene* scene, const QString& displayName, Model& mode
 enum class MaterialSource { Gltf, Fbx, Other };
 MaterialSource materialSource(const QString& path);
 
-// materials.cpp: model.materials (one per aiMaterial, never empty) and the textures they use.
+// materials.cpp: model.materials (one per aiMaterial, never empty) and the textures they use. `gltfJson`:
+// the glTF's JSON (gltfJsonOf), for what Assimp does not read (readGltfMaterialExtras); empty for others.
 void convertMaterials(const aiScene* scene, const ModelFolder& folder, qint64 maxDataUriBytes,
-                      MaterialSource source, Model& model);
+                      MaterialSource source, const QByteArray& gltfJson, Model& model);
 
 // gltfmaterials.cpp: what Assimp 5.2.5 does not read of a glTF material, per entry of its "materials"
 // array, by material name: KHR_materials_emissive_strength, and the list of the material's extensions
-// (Material::extensions). Read from the file's JSON (a .gltf, or a GLB's JSON chunk) only when some material
-// has extensions; empty otherwise or when the JSON does not parse.
+// (Material::extensions). Read from the file's JSON (`json`: gltfJsonOf) only when it names a material
+// extension; empty otherwise or when the JSON does not parse.
 struct GltfMaterialExtras {
     glm::vec3 emissiveFactor{0.0f}; // to tell materials of one name apart
     double emissiveStrength = 1.0;
@@ -50,7 +51,7 @@ struct GltfMaterialExtras {
     int extensionCount = 0; // how many the file lists (extensions holds at most kMaxMaterialExtensions)
 };
 using GltfMaterialExtrasByName = QMultiHash<QString, GltfMaterialExtras>;
-GltfMaterialExtrasByName readGltfMaterialExtras(const QString& path);
+GltfMaterialExtrasByName readGltfMaterialExtras(const QByteArray& json);
 // The names of the file's KHR_materials_variants (`json`: gltfJsonOf), in the file's order; unnamed ones as
 // "variant N". Empty when it has none.
 QStringList readGltfVariantNames(const QByteArray& json);

@@ -384,10 +384,10 @@ Material convert(const aiMaterial* am, TextureLoader& textures, const MaterialCo
 } // namespace
 
 void convertMaterials(const aiScene* scene, const ModelFolder& folder, qint64 maxDataUriBytes,
-                      MaterialSource source, Model& model) {
+                      MaterialSource source, const QByteArray& gltfJson, Model& model) {
     TextureLoader textures(scene, folder, maxDataUriBytes, model);
     MaterialContext ctx{folder.displayName(), {}, source, &model.warnings, {}};
-    if (source == MaterialSource::Gltf) ctx.gltfExtras = readGltfMaterialExtras(folder.modelFile());
+    if (source == MaterialSource::Gltf) ctx.gltfExtras = readGltfMaterialExtras(gltfJson);
     for (unsigned i = 0; i < scene->mNumMaterials && scene->mMaterials; ++i)
         model.materials.push_back(scene->mMaterials[i] ? convert(scene->mMaterials[i], textures, ctx, i)
                                                        : Material{});

@@ -130,10 +130,12 @@ ModelLoadResult import(const QString& path, const ModelLoadOptions& options) {
             reason += QStringLiteral(" (%1)").arg(model->warnings.join(QStringLiteral("; ")));
         return failure(path, reason);
     }
-    detail::convertMaterials(scene, folder, options.maxDataUriBytes, detail::materialSource(path), *model);
+    // The glTF's JSON, read once for what Assimp 5.2.5 does not read of it.
+    const QByteArray json = gltf ? gltfJsonOf(folder.modelFile()) : QByteArray();
+    detail::convertMaterials(scene, folder, options.maxDataUriBytes, detail::materialSource(path), json,
+                             *model);
     detail::convertLightsAndCameras(scene, gltf, name, *model);
     if (gltf) {
-        const QByteArray json = gltfJsonOf(folder.modelFile());
         sortCamerasAsGltf(json, model->cameras); // glTF's numbering
         // Issue 39: EXT_lights_ies and LightRig's extras.lightrig on light nodes, which Assimp does not read.
         detail::readGltfLightExtras(json, folder, options.maxDataUriBytes, *model);
